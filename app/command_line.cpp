@@ -1,0 +1,292 @@
+#include "command_line.h"
+
+#include <QCommandLineParser>
+
+#include <cmath>
+
+namespace lb {
+
+namespace {
+
+// Thrown inside the parser only; parseCommandLine() turns it into a CommandLineResult.
+struct BadOption
+{
+    QString message;
+};
+
+[[noreturn]] void fail(const QString &option, const QString &what)
+{
+    throw BadOption{QString("--%1: %2").arg(option, what)};
+}
+
+std::vector<float> numbers(const QString &option, const QString &text, int count,
+                           const char *shape)
+{
+    const QStringList parts = text.split(',');
+    if (parts.size() != count)
+        fail(option, QString("expected %1, got '%2'").arg(shape, text));
+    std::vector<float> values;
+    for (const QString &part : parts) {
+        bool ok = false;
+        const double v = part.trimmed().toDouble(&ok);
+        if (!ok || !std::isfinite(v))
+            fail(option, QString("'%1' is not a finite number (expected %2)").arg(part, shape));
+        values.push_back(float(v));
+    }
+    return values;
+}
+
+void checkRange(const QString &option, float v, float lo, float hi)
+{
+    if (v < lo || v > hi)
+        fail(option, QString("%1 is outside %2 to %3").arg(v).arg(lo).arg(hi));
+}
+
+glm::vec3 vec3Option(const QString &option, const QString &text, float lo, float hi)
+{
+    const auto v = numbers(option, text, 3, "X,Y,Z");
+    for (float x : v)
+        checkRange(option, x, lo, hi);
+    return glm::vec3(v[0], v[1], v[2]);
+}
+
+glm::vec3 colourOption(const QString &option, const QString &text)
+{
+    const auto v = numbers(option, text, 3, "R,G,B");
+    for (float x : v)
+        checkRange(option, x, 0.0f, 1.0f);
+    return glm::vec3(v[0], v[1], v[2]);
+}
+
+bool onOff(const QString &option, const QString &text)
+{
+    if (text == "on")
+        return true;
+    if (text == "off")
+        return false;
+    fail(option, QString("expected on or off, got '%1'").arg(text));
+}
+
+template <typename E>
+E word(const QString &option, const QString &text, std::optional<E> (*parse)(const QString &),
+       const QStringList &names)
+{
+    if (const auto v = parse(text))
+        return *v;
+    fail(option, QString("unknown value '%1' (expected %2)").arg(text, names.join('|')));
+}
+
+int integer(const QString &option, const QString &text, int lo, int hi)
+{
+    bool ok = false;
+    const int v = text.toInt(&ok);
+    if (!ok)
+        fail(option, QString("'%1' is not a whole number").arg(text));
+    if (v < lo || v > hi)
+        fail(option, QString("%1 is outside %2 to %3").arg(v).arg(lo).arg(hi));
+    return v;
+}
+
+struct OptionSpec
+{
+    const char *name;
+    const char *valueName;
+    const char *help;
+};
+
+const OptionSpec kOptions[] = {
+    {"render", "FILE.png", "Draw one frame offscreen into FILE.png and exit."},
+    {"probe", "X,Y", "Print the probe's JSON for pixel X,Y (origin top-left) and exit."},
+    {"size", "WxH", "Frame size for --render and --probe (default 800x600)."},
+    {"shape", "cube|sphere|torus|plane", "Object shape."},
+    {"tessellation", "N", "Subdivisions of the sphere, torus and plane (3 to 2000)."},
+    {"shading", "gouraud|phong", "Lighting per vertex (Gouraud) or per fragment (Phong)."},
+    {"specular", "phong|blinn", "Specular term: Phong (R.V) or Blinn-Phong (N.H)."},
+    {"frame", "camera|world|object", "Frame the light position is given in."},
+    {"light", "X,Y,Z,W", "Light position (W = 1) or direction towards the light (W = 0)."},
+    {"ia", "R,G,B", "Ambient intensity of the light, Ia (0 to 1)."},
+    {"id", "R,G,B", "Diffuse intensity of the light, Id (0 to 1)."},
+    {"is", "R,G,B", "Specular intensity of the light, Is (0 to 1)."},
+    {"ka", "R,G,B", "Ambient reflection of the material, Ka (0 to 1)."},
+    {"kd", "R,G,B", "Diffuse reflection of the material, Kd (0 to 1)."},
+    {"ks", "R,G,B", "Specular reflection of the material, Ks (0 to 1)."},
+    {"shininess", "S", "Specular exponent (1 to 1000)."},
+    {"projection", "perspective|orthographic", "Projection; V = -posC or (0,0,1) to match."},
+    {"camera-orbit", "YAW,PITCH", "Camera orbit in degrees (pitch -89 to 89)."},
+    {"model-rotate", "X,Y,Z", "Model rotation in degrees about X, then Y, then Z."},
+    {"model-scale", "X,Y,Z", "Model scale per axis (0.01 to 100)."},
+    {"lighting", "on|off", "Lighting model on, or the diffuse colour unlit."},
+    {"vertex-colors", "on|off", "Modulate ambient and diffuse by the vertex colours."},
+    {"texture", "on|off", "Modulate ambient and diffuse by the checker texture."},
+    {"show-light", "on|off", "Draw the light's marker."},
+    {"screenshot", "FILE.png", "Open the window, save a screenshot once it has drawn, exit."},
+    {"bench-frames", "N", "Draw N frames offscreen and print the frame rate as JSON."},
+};
+
+void parseInto(const QCommandLineParser &parser, CommandLine &cl)
+{
+    auto given = [&](const char *name) { return parser.isSet(QString::fromLatin1(name)); };
+    auto value = [&](const char *name) { return parser.value(QString::fromLatin1(name)); };
+    auto add = [&](std::function<void(Scene &)> f) { cl.sceneOverrides.push_back(std::move(f)); };
+
+    if (given("size")) {
+        const QStringList wh = value("size").split('x');
+        if (wh.size() != 2)
+            fail("size", QString("expected WxH, got '%1'").arg(value("size")));
+        cl.size = QSize(integer("size", wh[0], 1, 8192), integer("size", wh[1], 1, 8192));
+    }
+    if (given("render"))
+        cl.renderPath = value("render");
+    if (given("probe")) {
+        const QStringList xy = value("probe").split(',');
+        if (xy.size() != 2)
+            fail("probe", QString("expected X,Y, got '%1'").arg(value("probe")));
+        cl.probe = QPoint(integer("probe", xy[0], 0, cl.size.width() - 1),
+                          integer("probe", xy[1], 0, cl.size.height() - 1));
+    }
+    if (given("screenshot"))
+        cl.screenshotPath = value("screenshot");
+    if (given("bench-frames"))
+        cl.benchFrames = integer("bench-frames", value("bench-frames"), 1, 100000);
+
+    if (given("shape")) {
+        const Shape v = word("shape", value("shape"), parseShape, shapeNames());
+        add([v](Scene &s) { s.object.shape = v; });
+    }
+    if (given("tessellation")) {
+        const int v = integer("tessellation", value("tessellation"), limits::kMinTessellation,
+                              limits::kMaxTessellation);
+        add([v](Scene &s) { s.object.tessellation = v; });
+    }
+    if (given("shading")) {
+        const Shading v = word("shading", value("shading"), parseShading, shadingNames());
+        add([v](Scene &s) { s.shading.shading = v; });
+    }
+    if (given("specular")) {
+        const SpecularModel v =
+            word("specular", value("specular"), parseSpecularModel, specularModelNames());
+        add([v](Scene &s) { s.shading.specular = v; });
+    }
+    if (given("frame")) {
+        const LightFrame v = word("frame", value("frame"), parseLightFrame, lightFrameNames());
+        add([v](Scene &s) { s.light.frame = v; });
+    }
+    if (given("light")) {
+        const auto v = numbers("light", value("light"), 4, "X,Y,Z,W");
+        for (int i = 0; i < 3; ++i)
+            checkRange("light", v[std::size_t(i)], -limits::kMaxCoordinate, limits::kMaxCoordinate);
+        if (v[3] != 0.0f && v[3] != 1.0f)
+            fail("light", QString("W must be 0 (directional) or 1 (point), got %1").arg(v[3]));
+        if (v[3] == 0.0f && v[0] == 0.0f && v[1] == 0.0f && v[2] == 0.0f)
+            fail("light", "a directional light (W = 0) needs a non-zero direction");
+        const glm::vec4 p(v[0], v[1], v[2], v[3]);
+        add([p](Scene &s) { s.light.position = p; });
+    }
+    const std::pair<const char *, glm::vec3 LightColors::*> lightColours[] = {
+        {"ia", &LightColors::ia}, {"id", &LightColors::id}, {"is", &LightColors::is}};
+    for (const auto &[name, member] : lightColours) {
+        if (given(name)) {
+            const glm::vec3 c = colourOption(name, value(name));
+            add([c, member = member](Scene &s) { s.light.colors.*member = c; });
+        }
+    }
+    const std::pair<const char *, glm::vec3 Material::*> materialColours[] = {
+        {"ka", &Material::ka}, {"kd", &Material::kd}, {"ks", &Material::ks}};
+    for (const auto &[name, member] : materialColours) {
+        if (given(name)) {
+            const glm::vec3 c = colourOption(name, value(name));
+            add([c, member = member](Scene &s) { s.material.*member = c; });
+        }
+    }
+    if (given("shininess")) {
+        const float v = numbers("shininess", value("shininess"), 1, "a number")[0];
+        checkRange("shininess", v, limits::kMinShininess, limits::kMaxShininess);
+        add([v](Scene &s) { s.material.shininess = v; });
+    }
+    if (given("projection")) {
+        const Projection v =
+            word("projection", value("projection"), parseProjection, projectionNames());
+        add([v](Scene &s) { s.shading.projection = v; });
+    }
+    if (given("camera-orbit")) {
+        const auto v = numbers("camera-orbit", value("camera-orbit"), 2, "YAW,PITCH");
+        checkRange("camera-orbit", v[0], -3600.0f, 3600.0f);
+        checkRange("camera-orbit", v[1], -89.0f, 89.0f);
+        add([v](Scene &s) {
+            s.camera.yawDegrees = 0.0f;
+            s.camera.pitchDegrees = 0.0f;
+            s.camera.orbit(v[0], v[1]);
+        });
+    }
+    if (given("model-rotate")) {
+        const glm::vec3 r = vec3Option("model-rotate", value("model-rotate"), -3600.0f, 3600.0f);
+        add([r](Scene &s) { s.object.rotationDegrees = r; });
+    }
+    if (given("model-scale")) {
+        const glm::vec3 sc = vec3Option("model-scale", value("model-scale"), limits::kMinScale,
+                                        limits::kMaxScale);
+        add([sc](Scene &s) { s.object.scale = sc; });
+    }
+    const std::pair<const char *, bool ShadingSettings::*> switches[] = {
+        {"lighting", &ShadingSettings::lighting},
+        {"vertex-colors", &ShadingSettings::vertexColors},
+        {"texture", &ShadingSettings::texture}};
+    for (const auto &[name, member] : switches) {
+        if (given(name)) {
+            const bool on = onOff(name, value(name));
+            add([on, member = member](Scene &s) { s.shading.*member = on; });
+        }
+    }
+    if (given("show-light")) {
+        const bool on = onOff("show-light", value("show-light"));
+        add([on](Scene &s) { s.showLight = on; });
+    }
+}
+
+} // namespace
+
+void CommandLine::applyTo(Scene &scene) const
+{
+    for (const auto &f : sceneOverrides)
+        f(scene);
+}
+
+CommandLineResult parseCommandLine(const QStringList &arguments)
+{
+    QCommandLineParser parser;
+    parser.setApplicationDescription(
+        "lightbench: a lighting workbench for the Phong and Blinn-Phong models.\n"
+        "Without --render, --probe or --bench-frames it opens the window.");
+    const QCommandLineOption help = parser.addHelpOption();
+    for (const OptionSpec &o : kOptions)
+        parser.addOption(QCommandLineOption(QString::fromLatin1(o.name), QString::fromLatin1(o.help),
+                                            QString::fromLatin1(o.valueName)));
+
+    CommandLineResult result;
+    if (!parser.parse(arguments)) {
+        result.exitCode = 2;
+        result.message = parser.errorText() + " (see --help)";
+        return result;
+    }
+    if (parser.isSet(help)) {
+        result.message = parser.helpText();
+        return result;
+    }
+    if (!parser.positionalArguments().isEmpty()) {
+        result.exitCode = 2;
+        result.message = QString("unexpected argument '%1' (see --help)")
+                             .arg(parser.positionalArguments().first());
+        return result;
+    }
+    try {
+        CommandLine cl;
+        parseInto(parser, cl);
+        result.commandLine = std::move(cl);
+    } catch (const BadOption &bad) {
+        result.exitCode = 2;
+        result.message = bad.message;
+    }
+    return result;
+}
+
+} // namespace lb

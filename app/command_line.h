@@ -1,0 +1,43 @@
+#pragma once
+// The command line: scene options shared by the window and the headless modes, plus
+// --render, --probe, --size, --screenshot and --bench-frames. Bad values end the program with
+// exit code 2 and one line naming the option; nothing here touches OpenGL.
+
+#include "scene.h"
+
+#include <QPoint>
+#include <QSize>
+#include <QString>
+#include <QStringList>
+
+#include <functional>
+#include <optional>
+#include <vector>
+
+namespace lb {
+
+struct CommandLine
+{
+    // Each scene option given, in order; applied on top of the default or the saved scene.
+    std::vector<std::function<void(Scene &)>> sceneOverrides;
+    QString renderPath;           // --render FILE.png
+    std::optional<QPoint> probe;  // --probe X,Y
+    QSize size{800, 600};         // --size WxH
+    QString screenshotPath;       // --screenshot FILE.png (window mode: grab and quit)
+    int benchFrames = 0;          // --bench-frames N (headless timing)
+
+    bool headless() const { return !renderPath.isEmpty() || probe || benchFrames > 0; }
+    void applyTo(Scene &scene) const;
+};
+
+struct CommandLineResult
+{
+    std::optional<CommandLine> commandLine; // empty when the program should exit at once
+    int exitCode = 0;                       // 0 for --help, 2 for a bad command line
+    QString message;                        // help text, or the one-line error
+};
+
+// `arguments` starts with the program name, as QCoreApplication::arguments() does.
+CommandLineResult parseCommandLine(const QStringList &arguments);
+
+} // namespace lb

@@ -1,0 +1,114 @@
+#include "headless.h"
+
+#include "offscreen.h"
+
+#include <QElapsedTimer>
+#include <QJsonArray>
+#include <QJsonDocument>
+
+#include <cmath>
+#include <cstdio>
+
+namespace lb {
+
+namespace {
+
+double rounded(float v) { return std::round(double(v) * 1e6) / 1e6; }
+
+QJsonArray array(const glm::vec3 &v)
+{
+    return QJsonArray{rounded(v.x), rounded(v.y), rounded(v.z)};
+}
+
+QJsonArray bytes(const glm::vec3 &v)
+{
+    return QJsonArray{int(std::lround(v.x * 255.0f)), int(std::lround(v.y * 255.0f)),
+                      int(std::lround(v.z * 255.0f))};
+}
+
+void printLine(const QByteArray &line, FILE *stream)
+{
+    std::fputs(line.constData(), stream);
+    std::fputc('\n', stream);
+    std::fflush(stream);
+}
+
+} // namespace
+
+QJsonObject probeJson(const ProbeResult &probe, const QImage &frame, QPoint pixel,
+                      const Scene &scene)
+{
+    const QRgb gpu = frame.pixel(pixel);
+    QJsonObject o;
+    o["pixel"] = QJsonArray{pixel.x(), pixel.y()};
+    o["hit"] = probe.hit;
+    o["gpu"] = QJsonArray{qRed(gpu), qGreen(gpu), qBlue(gpu)};
+    o["shading"] = toString(scene.shading.shading);
+    o["specularModel"] = toString(scene.shading.specular);
+    if (!probe.hit)
+        return o;
+    const LightingTerms &t = probe.terms;
+    const QJsonArray ref = bytes(probe.reference);
+    o["reference"] = ref;
+    int worst = 0;
+    for (int c = 0; c < 3; ++c)
+        worst = std::max(worst, std::abs(o["gpu"].toArray()[c].toInt() - ref[c].toInt()));
+    o["maxDifference"] = worst;
+    o["triangle"] = qint64(probe.triangle);
+    o["position"] = array(probe.position);
+    o["normal"] = array(probe.normal);
+    o["L"] = array(t.L);
+    o["V"] = array(t.V);
+    o["H"] = array(t.H);
+    o["R"] = array(t.R);
+    o["NdotL"] = rounded(t.nDotL);
+    o[scene.shading.specular == SpecularModel::Blinn ? "NdotH" : "RdotV"] =
+        rounded(t.specularAngle);
+    o["ambient"] = array(t.ambient);
+    o["diffuse"] = array(t.diffuse);
+    o["specular"] = array(t.specular);
+    o["base"] = array(probe.base);
+    return o;
+}
+
+int runHeadless(const CommandLine &cl, const Scene &scene)
+{
+    OffscreenRenderer offscreen;
+    if (const QString error = offscreen.initialize(cl.size); !error.isEmpty()) {
+        printLine("lightbench: " + error.toUtf8(), stderr);
+        return 1;
+    }
+
+    if (cl.benchFrames > 0) {
+        offscreen.renderFrames(scene, 3); // warm-up: uploads, shader variants
+        QElapsedTimer timer;
+        timer.start();
+        offscreen.renderFrames(scene, cl.benchFrames);
+        const double seconds = double(timer.nsecsElapsed()) * 1e-9;
+        const Mesh &mesh = offscreen.renderer().meshFor(scene.object);
+        QJsonObject o;
+        o["frames"] = cl.benchFrames;
+        o["seconds"] = seconds;
+        o["fps"] = double(cl.benchFrames) / seconds;
+        o["triangles"] = qint64(mesh.triangleCount());
+        o["size"] = QString("%1x%2").arg(cl.size.width()).arg(cl.size.height());
+        printLine(QJsonDocument(o).toJson(QJsonDocument::Compact), stdout);
+    }
+
+    const QImage frame = offscreen.render(scene);
+    if (!cl.renderPath.isEmpty() && !frame.save(cl.renderPath, "PNG")) {
+        printLine("lightbench: --render: cannot write '" + cl.renderPath.toUtf8() + "'", stderr);
+        return 1;
+    }
+    if (cl.probe) {
+        const Mesh &mesh = offscreen.renderer().meshFor(scene.object);
+        const ProbeResult probe = probePixel(scene, mesh, offscreen.renderer().checkerTexture(),
+                                             cl.size, *cl.probe);
+        printLine(QJsonDocument(probeJson(probe, frame, *cl.probe, scene))
+                      .toJson(QJsonDocument::Compact),
+                  stdout);
+    }
+    return 0;
+}
+
+} // namespace lb

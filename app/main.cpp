@@ -1,0 +1,100 @@
+// lightbench: the window, or one headless frame (--render / --probe / --bench-frames).
+
+#include "command_line.h"
+#include "headless.h"
+#include "main_window.h"
+#include "viewport.h"
+
+#include <QApplication>
+#include <QGuiApplication>
+#include <QSettings>
+#include <QSurfaceFormat>
+#include <QTimer>
+
+#include <cstdio>
+
+namespace {
+
+void setDefaultGlFormat()
+{
+    QSurfaceFormat format;
+    format.setRenderableType(QSurfaceFormat::OpenGL);
+    format.setVersion(3, 3);
+    format.setProfile(QSurfaceFormat::CoreProfile);
+    format.setDepthBufferSize(24);
+    QSurfaceFormat::setDefaultFormat(format);
+}
+
+bool haveDisplay()
+{
+    return !qEnvironmentVariableIsEmpty("DISPLAY") ||
+           !qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY") ||
+           !qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM");
+}
+
+QStringList rawArguments(int argc, char **argv)
+{
+    QStringList args;
+    for (int i = 0; i < argc; ++i)
+        args << QString::fromLocal8Bit(argv[i]);
+    return args;
+}
+
+} // namespace
+
+int main(int argc, char **argv)
+{
+    // The command line is checked before Qt starts, so a bad one answers even with no display.
+    const lb::CommandLineResult parsed = lb::parseCommandLine(rawArguments(argc, argv));
+    if (!parsed.commandLine) {
+        if (parsed.exitCode == 0)
+            std::fputs(qPrintable(parsed.message), stdout);
+        else
+            std::fprintf(stderr, "lightbench: %s\n", qPrintable(parsed.message));
+        return parsed.exitCode;
+    }
+    const lb::CommandLine &cl = *parsed.commandLine;
+    if (!haveDisplay()) {
+        std::fputs("lightbench: no display; OpenGL needs an X server (try xvfb-run -a -s "
+                   "\"-screen 0 1920x1080x24\" lightbench ...)\n",
+                   stderr);
+        return 1;
+    }
+    setDefaultGlFormat();
+    QCoreApplication::setOrganizationName("lightbench");
+    QCoreApplication::setApplicationName("lightbench");
+
+    if (cl.headless()) {
+        QGuiApplication app(argc, argv);
+        lb::Scene scene; // headless frames start from the defaults, not the saved session
+        cl.applyTo(scene);
+        return lb::runHeadless(cl, scene);
+    }
+
+    QApplication app(argc, argv);
+    QSettings settings;
+    lb::MainWindow window(settings);
+    lb::Scene scene = window.document().scene();
+    cl.applyTo(scene);
+    window.document().set(scene);
+    window.show();
+
+    if (!cl.screenshotPath.isEmpty()) {
+        // Grab once the viewport has drawn and the window has settled, then quit.
+        QObject::connect(window.viewport(), &QOpenGLWidget::frameSwapped, &window, [&] {
+            QTimer::singleShot(700, &window, [&] {
+                const QString path = cl.screenshotPath;
+                if (!window.grab().save(path, "PNG")) {
+                    std::fprintf(stderr, "lightbench: --screenshot: cannot write '%s'\n",
+                                 qPrintable(path));
+                    QCoreApplication::exit(1);
+                    return;
+                }
+                std::printf("%s\n", qPrintable(path));
+                std::fflush(stdout);
+                window.close();
+            });
+        }, Qt::SingleShotConnection);
+    }
+    return app.exec();
+}

@@ -1,0 +1,166 @@
+#include "main_window.h"
+
+#include "light_panel.h"
+#include "material_panel.h"
+#include "object_panel.h"
+#include "shading_panel.h"
+#include "viewport.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QCloseEvent>
+#include <QDockWidget>
+#include <QJsonDocument>
+#include <QLabel>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QScrollArea>
+#include <QSettings>
+#include <QStatusBar>
+
+namespace lb {
+
+namespace {
+constexpr int kStateVersion = 1;
+const char *kSceneKey = "scene";
+const char *kGeometryKey = "window/geometry";
+const char *kStateKey = "window/state";
+
+// A dock whose panel scrolls when the screen is too short for it.
+QDockWidget *addDock(QMainWindow *window, const QString &title, const QString &objectName,
+                     QWidget *panel, Qt::DockWidgetArea area)
+{
+    auto *scroll = new QScrollArea;
+    scroll->setWidget(panel);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    auto *dock = new QDockWidget(title, window);
+    dock->setObjectName(objectName); // saveState() needs it
+    dock->setWidget(scroll);
+    window->addDockWidget(area, dock);
+    return dock;
+}
+} // namespace
+
+MainWindow::MainWindow(QSettings &settings, QWidget *parent)
+    : QMainWindow(parent), m_settings(settings)
+{
+    setWindowTitle(tr("lightbench"));
+    const QByteArray savedScene = m_settings.value(kSceneKey).toByteArray();
+    if (!savedScene.isEmpty())
+        m_document.set(Scene::fromJson(QJsonDocument::fromJson(savedScene).object()));
+
+    m_viewport = new Viewport(&m_document, this);
+    setCentralWidget(m_viewport);
+    m_light = new LightPanel(&m_document);
+    m_material = new MaterialPanel(&m_document);
+    m_shading = new ShadingPanel(&m_document);
+    m_object = new ObjectPanel(&m_document);
+    addDock(this, tr("Light"), "lightDock", m_light, Qt::LeftDockWidgetArea);
+    addDock(this, tr("Material"), "materialDock", m_material, Qt::LeftDockWidgetArea);
+    addDock(this, tr("Shading"), "shadingDock", m_shading, Qt::RightDockWidgetArea);
+    addDock(this, tr("Object"), "objectDock", m_object, Qt::RightDockWidgetArea);
+
+    m_glLabel = new QLabel(this);
+    statusBar()->addPermanentWidget(m_glLabel);
+    connect(m_viewport, &Viewport::glInfo, m_glLabel, &QLabel::setText);
+    buildMenus();
+
+    resize(1366, 768);
+    restoreGeometry(m_settings.value(kGeometryKey).toByteArray());
+    restoreState(m_settings.value(kStateKey).toByteArray(), kStateVersion);
+
+    m_saveTimer.setSingleShot(true);
+    m_saveTimer.setInterval(500);
+    connect(&m_saveTimer, &QTimer::timeout, this, &MainWindow::saveSettings);
+    connect(&m_document, &SceneDocument::changed, this, [this] {
+        updateStatus();
+        m_saveTimer.start();
+    });
+    updateStatus();
+}
+
+void MainWindow::buildMenus()
+{
+    auto addItem = [this](QMenu *menu, const QString &text, const QKeySequence &key,
+                            auto slot) {
+        QAction *action = menu->addAction(text);
+        action->setShortcut(key);
+        connect(action, &QAction::triggered, this, slot);
+        return action;
+    };
+
+    QMenu *file = menuBar()->addMenu(tr("&File"));
+    addItem(file, tr("Reset &Everything"), QKeySequence(tr("Ctrl+Shift+R")),
+              [this] { m_document.set(Scene{}); });
+    file->addSeparator();
+    addItem(file, tr("&Quit"), QKeySequence::Quit, [this] { close(); });
+
+    QMenu *shading = menuBar()->addMenu(tr("&Shading"));
+    addItem(shading, tr("Toggle &Gouraud / Phong"), QKeySequence(tr("G")), [this] {
+        m_document.edit([](Scene &s) {
+            s.shading.shading =
+                s.shading.shading == Shading::Phong ? Shading::Gouraud : Shading::Phong;
+        });
+    });
+    addItem(shading, tr("Toggle Phong / &Blinn-Phong specular"), QKeySequence(tr("B")), [this] {
+        m_document.edit([](Scene &s) {
+            s.shading.specular = s.shading.specular == SpecularModel::Blinn
+                                     ? SpecularModel::Phong
+                                     : SpecularModel::Blinn;
+        });
+    });
+    addItem(shading, tr("Toggle &Perspective / Orthographic"), QKeySequence(tr("P")), [this] {
+        m_document.edit([](Scene &s) {
+            s.shading.projection = s.shading.projection == Projection::Perspective
+                                       ? Projection::Orthographic
+                                       : Projection::Perspective;
+        });
+    });
+    addItem(shading, tr("Toggle &Lighting"), QKeySequence(tr("L")),
+              [this] { m_document.edit([](Scene &s) { s.shading.lighting = !s.shading.lighting; }); });
+
+    QMenu *view = menuBar()->addMenu(tr("&View"));
+    addItem(view, tr("&Reset Camera"), QKeySequence(tr("R")), [this] { m_viewport->resetCamera(); });
+    addItem(view, tr("&Auto-rotate"), QKeySequence(tr("Space")), [this] {
+        m_document.edit([](Scene &s) { s.object.autoRotate = !s.object.autoRotate; });
+    });
+    view->addSeparator();
+    for (QDockWidget *dock : findChildren<QDockWidget *>())
+        view->addAction(dock->toggleViewAction());
+
+    QMenu *help = menuBar()->addMenu(tr("&Help"));
+    addItem(help, tr("&Controls"), QKeySequence::HelpContents, [this] {
+        QMessageBox::information(
+            this, tr("Controls"),
+            tr("Left drag: orbit the camera\nRight or middle drag: pan\nWheel: zoom\n"
+               "R: reset the camera\nSpace: auto-rotate the object\n"
+               "G: Gouraud / Phong shading\nB: Phong / Blinn-Phong specular\n"
+               "P: perspective / orthographic\nL: lighting on / off\n"
+               "Ctrl+Shift+R: reset everything"));
+    });
+}
+
+void MainWindow::updateStatus()
+{
+    const Scene &s = m_document.scene();
+    statusBar()->showMessage(tr("%1 shading, %2 specular, %3 projection, light in %4 frame")
+                                 .arg(toString(s.shading.shading), toString(s.shading.specular),
+                                      toString(s.shading.projection), toString(s.light.frame)));
+}
+
+void MainWindow::saveSettings()
+{
+    m_settings.setValue(kSceneKey, QJsonDocument(m_document.scene().toJson()).toJson());
+    m_settings.setValue(kGeometryKey, saveGeometry());
+    m_settings.setValue(kStateKey, saveState(kStateVersion));
+    m_settings.sync();
+}
+
+void MainWindow::closeEvent(QCloseEvent *event)
+{
+    saveSettings();
+    event->accept();
+}
+
+} // namespace lb

@@ -1,0 +1,56 @@
+#pragma once
+// The workbench window: the viewport in the centre, the Light and Material panels docked on
+// the left, Shading and Object on the right. Scene, window layout and docks are kept in
+// QSettings and come back at the next start.
+
+#include "scene_document.h"
+
+#include <QMainWindow>
+#include <QTimer>
+
+class QLabel;
+class QSettings;
+
+namespace lb {
+
+class LightPanel;
+class MaterialPanel;
+class ObjectPanel;
+class ShadingPanel;
+class Viewport;
+
+class MainWindow : public QMainWindow
+{
+    Q_OBJECT
+public:
+    // `settings` outlives the window; the scene starts from what it holds.
+    MainWindow(QSettings &settings, QWidget *parent = nullptr);
+
+    SceneDocument &document() { return m_document; }
+    Viewport *viewport() const { return m_viewport; }
+    LightPanel *lightPanel() const { return m_light; }
+    MaterialPanel *materialPanel() const { return m_material; }
+    ShadingPanel *shadingPanel() const { return m_shading; }
+    ObjectPanel *objectPanel() const { return m_object; }
+
+    void saveSettings();
+
+protected:
+    void closeEvent(QCloseEvent *event) override;
+
+private:
+    void buildMenus();
+    void updateStatus();
+
+    QSettings &m_settings;
+    SceneDocument m_document;
+    Viewport *m_viewport;
+    LightPanel *m_light;
+    MaterialPanel *m_material;
+    ShadingPanel *m_shading;
+    ObjectPanel *m_object;
+    QLabel *m_glLabel;
+    QTimer m_saveTimer; // saves the scene shortly after each change, so a kill loses little
+};
+
+} // namespace lb

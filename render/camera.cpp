@@ -1,0 +1,61 @@
+#include "camera.h"
+
+#include <glm/common.hpp>
+#include <glm/ext/matrix_clip_space.hpp>
+#include <glm/ext/matrix_transform.hpp>
+#include <glm/trigonometric.hpp>
+
+#include <cmath>
+
+namespace lb {
+
+namespace {
+constexpr float kNear = 0.05f;
+constexpr float kFar = 100.0f;
+constexpr float kMaxPitch = 89.0f;
+} // namespace
+
+glm::vec3 OrbitCamera::eye() const
+{
+    const float yaw = glm::radians(yawDegrees);
+    const float pitch = glm::radians(pitchDegrees);
+    const glm::vec3 offset(std::cos(pitch) * std::sin(yaw), std::sin(pitch),
+                           std::cos(pitch) * std::cos(yaw));
+    return target + distance * offset;
+}
+
+glm::mat4 OrbitCamera::view() const
+{
+    return glm::lookAt(eye(), target, glm::vec3(0.0f, 1.0f, 0.0f));
+}
+
+glm::mat4 OrbitCamera::projection(float aspect, Projection kind) const
+{
+    if (kind == Projection::Perspective)
+        return glm::perspective(glm::radians(fovYDegrees), aspect, kNear, kFar);
+    const float halfHeight = distance * std::tan(glm::radians(fovYDegrees) * 0.5f);
+    const float halfWidth = halfHeight * aspect;
+    return glm::ortho(-halfWidth, halfWidth, -halfHeight, halfHeight, kNear, kFar);
+}
+
+void OrbitCamera::orbit(float dYawDegrees, float dPitchDegrees)
+{
+    yawDegrees = std::fmod(yawDegrees + dYawDegrees, 360.0f);
+    pitchDegrees = glm::clamp(pitchDegrees + dPitchDegrees, -kMaxPitch, kMaxPitch);
+}
+
+void OrbitCamera::pan(float dxView, float dyView)
+{
+    const glm::mat4 toWorld = glm::inverse(view());
+    const glm::vec3 right(toWorld[0]);
+    const glm::vec3 up(toWorld[1]);
+    const float height = 2.0f * distance * std::tan(glm::radians(fovYDegrees) * 0.5f);
+    target += (-dxView * right + dyView * up) * height;
+}
+
+void OrbitCamera::zoom(float steps)
+{
+    distance = glm::clamp(distance * std::pow(0.9f, steps), 0.2f, 50.0f);
+}
+
+} // namespace lb

@@ -1,0 +1,30 @@
+#pragma once
+// Orbit camera: it circles a target at a distance; yaw turns around world Y, pitch tilts up.
+
+#include "lighting.h"
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+
+namespace lb {
+
+struct OrbitCamera
+{
+    glm::vec3 target{0.0f};
+    float distance = 5.5f;
+    float yawDegrees = 25.0f;
+    float pitchDegrees = 20.0f;
+    float fovYDegrees = 45.0f;
+
+    glm::vec3 eye() const;
+    glm::mat4 view() const; // lookAt(eye, target, up): world -> camera
+    // Orthographic uses the view height of the perspective one at the target, so switching
+    // projection keeps the object about the same size on screen.
+    glm::mat4 projection(float aspect, Projection kind) const;
+
+    void orbit(float dYawDegrees, float dPitchDegrees);
+    void pan(float dxView, float dyView); // in units of the view height at the target
+    void zoom(float steps);               // positive steps move closer
+};
+
+} // namespace lb

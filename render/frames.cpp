@@ -1,0 +1,53 @@
+#include "frames.h"
+
+#include <glm/ext/matrix_transform.hpp>
+#include <glm/gtc/matrix_inverse.hpp>
+#include <glm/trigonometric.hpp>
+
+namespace lb {
+
+glm::mat4 modelMatrix(const ObjectSettings &object)
+{
+    const glm::vec3 r = glm::radians(object.rotationDegrees);
+    glm::mat4 m(1.0f);
+    m = glm::rotate(m, r.z, glm::vec3(0, 0, 1));
+    m = glm::rotate(m, r.y, glm::vec3(0, 1, 0));
+    m = glm::rotate(m, r.x, glm::vec3(1, 0, 0));
+    return glm::scale(m, object.scale);
+}
+
+glm::mat4 normalMatrix(const glm::mat4 &m) { return glm::inverseTranspose(m); }
+
+Frames computeFrames(const Scene &scene, float aspect)
+{
+    Frames f;
+    f.model = modelMatrix(scene.object);
+    f.view = scene.camera.view();
+    f.modelView = f.view * f.model;
+    f.normals = normalMatrix(f.modelView);
+    f.viewNormals = normalMatrix(f.view);
+    f.projection = scene.camera.projection(aspect, scene.shading.projection);
+    return f;
+}
+
+glm::vec4 lightInEye(const Frames &frames, const glm::vec4 &light, LightFrame frame)
+{
+    const bool directional = light.w == 0.0f;
+    glm::vec4 eye = light;
+    switch (frame) {
+    case LightFrame::Camera:
+        break;
+    case LightFrame::World:
+        eye = directional ? frames.viewNormals * light : frames.view * light;
+        break;
+    case LightFrame::Object:
+        eye = directional ? frames.normals * light : frames.modelView * light;
+        break;
+    }
+    // The inverse transpose of an affine matrix puts a translation term into w; a direction
+    // keeps w = 0 and a point w = 1 (the matrices here are affine).
+    eye.w = light.w;
+    return eye;
+}
+
+} // namespace lb

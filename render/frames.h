@@ -1,0 +1,33 @@
+#pragma once
+// The matrices of each frame, named as in the slides, and the light brought into eye space.
+// The renderer uploads exactly these; the probe and the tests use the same ones.
+
+#include "scene.h"
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec4.hpp>
+
+namespace lb {
+
+struct Frames
+{
+    glm::mat4 model{1.0f};
+    glm::mat4 view{1.0f};        // mView: world -> camera (lookAt)
+    glm::mat4 modelView{1.0f};   // mModelView = mView * model
+    glm::mat4 normals{1.0f};     // mNormals = inverse transpose of mModelView
+    glm::mat4 viewNormals{1.0f}; // mViewNormals = inverse transpose of mView
+    glm::mat4 projection{1.0f};  // mProjection
+};
+
+// Object transform: scale first, then rotate about X, then Y, then Z.
+glm::mat4 modelMatrix(const ObjectSettings &object);
+// The matrix that carries normals (and directions) alongside points moved by `m`.
+glm::mat4 normalMatrix(const glm::mat4 &m);
+Frames computeFrames(const Scene &scene, float aspect);
+
+// The light in eye coordinates, as the slides' variants I, II and III compute it:
+// camera: as given; world: mView for a point, mViewNormals for a direction;
+// object: mModelView for a point, mNormals for a direction. The result keeps w.
+glm::vec4 lightInEye(const Frames &frames, const glm::vec4 &light, LightFrame frame);
+
+} // namespace lb

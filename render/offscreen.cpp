@@ -1,0 +1,60 @@
+#include "offscreen.h"
+
+#include <QOpenGLFunctions>
+
+namespace lb {
+
+OffscreenRenderer::~OffscreenRenderer()
+{
+    if (m_context.isValid() && m_context.makeCurrent(&m_surface)) {
+        m_renderer.cleanup();
+        m_fbo.reset();
+        m_context.doneCurrent();
+    }
+}
+
+QString OffscreenRenderer::initialize(QSize size)
+{
+    m_size = size;
+    m_surface.setFormat(QSurfaceFormat::defaultFormat());
+    m_surface.create();
+    m_context.setFormat(QSurfaceFormat::defaultFormat());
+    if (!m_context.create())
+        return "cannot create an OpenGL context (is there an X server with OpenGL?)";
+    if (!m_context.makeCurrent(&m_surface))
+        return "cannot make the OpenGL context current";
+    const QSurfaceFormat f = m_context.format();
+    if (f.majorVersion() * 10 + f.minorVersion() < 33)
+        return QString("OpenGL 3.3 is needed, the driver gives %1.%2")
+            .arg(f.majorVersion())
+            .arg(f.minorVersion());
+    QOpenGLFramebufferObjectFormat format;
+    format.setAttachment(QOpenGLFramebufferObject::Depth);
+    format.setInternalTextureFormat(GL_RGBA8);
+    m_fbo = std::make_unique<QOpenGLFramebufferObject>(size, format);
+    if (!m_fbo->isValid())
+        return QString("cannot create a %1x%2 framebuffer").arg(size.width()).arg(size.height());
+    return m_renderer.initialize();
+}
+
+QImage OffscreenRenderer::render(const Scene &scene)
+{
+    m_context.makeCurrent(&m_surface);
+    m_fbo->bind();
+    m_renderer.render(scene, m_size);
+    QImage image = m_fbo->toImage(); // flipped to the top-left origin of --probe and QImage
+    m_fbo->release();
+    return image.convertToFormat(QImage::Format_RGB32);
+}
+
+void OffscreenRenderer::renderFrames(const Scene &scene, int frames)
+{
+    m_context.makeCurrent(&m_surface);
+    m_fbo->bind();
+    for (int i = 0; i < frames; ++i)
+        m_renderer.render(scene, m_size);
+    m_context.functions()->glFinish();
+    m_fbo->release();
+}
+
+} // namespace lb

@@ -1,0 +1,38 @@
+#pragma once
+// Renders scenes without a window: its own context, an offscreen surface and a framebuffer
+// object. Used by the command line (--render, --probe) and the GL tests. Needs a display
+// with OpenGL (an X server; Xvfb when headless).
+
+#include "renderer.h"
+
+#include <QImage>
+#include <QOffscreenSurface>
+#include <QOpenGLContext>
+#include <QOpenGLFramebufferObject>
+#include <QSize>
+
+#include <memory>
+
+namespace lb {
+
+class OffscreenRenderer
+{
+public:
+    ~OffscreenRenderer();
+    // Returns an empty string on success, or why there is no OpenGL.
+    QString initialize(QSize size);
+    QImage render(const Scene &scene);
+    // Draws `frames` frames and waits for the GPU; for the benchmarks.
+    void renderFrames(const Scene &scene, int frames);
+    Renderer &renderer() { return m_renderer; }
+    QSize size() const { return m_size; }
+
+private:
+    QOpenGLContext m_context;
+    QOffscreenSurface m_surface;
+    std::unique_ptr<QOpenGLFramebufferObject> m_fbo;
+    Renderer m_renderer;
+    QSize m_size;
+};
+
+} // namespace lb

@@ -1,0 +1,134 @@
+#include "probe.h"
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
+
+#include <limits>
+#include <optional>
+
+namespace lb {
+
+namespace {
+
+struct Hit
+{
+    float t;
+    glm::vec3 barycentric;
+};
+
+// Möller-Trumbore; both faces count, as the renderer does not cull.
+std::optional<Hit> intersect(const glm::vec3 &origin, const glm::vec3 &dir, const glm::vec3 &a,
+                             const glm::vec3 &b, const glm::vec3 &c)
+{
+    const glm::vec3 e1 = b - a, e2 = c - a;
+    const glm::vec3 p = glm::cross(dir, e2);
+    const float det = glm::dot(e1, p);
+    if (std::abs(det) < 1e-12f)
+        return std::nullopt;
+    const float inv = 1.0f / det;
+    const glm::vec3 s = origin - a;
+    const float u = glm::dot(s, p) * inv;
+    if (u < 0.0f || u > 1.0f)
+        return std::nullopt;
+    const glm::vec3 q = glm::cross(s, e1);
+    const float v = glm::dot(dir, q) * inv;
+    if (v < 0.0f || u + v > 1.0f)
+        return std::nullopt;
+    const float t = glm::dot(e2, q) * inv;
+    if (t <= 0.0f)
+        return std::nullopt;
+    return Hit{t, glm::vec3(1.0f - u - v, u, v)};
+}
+
+template <typename T>
+T interpolate(const std::vector<T> &values, const std::uint32_t *tri, const glm::vec3 &w)
+{
+    return w.x * values[tri[0]] + w.y * values[tri[1]] + w.z * values[tri[2]];
+}
+
+} // namespace
+
+LightingInputs lightingInputs(const Scene &scene, const Frames &frames)
+{
+    LightingInputs in;
+    in.lightEye = lightInEye(frames, scene.light.position, scene.light.frame);
+    in.material = scene.material;
+    in.colors = scene.light.colors;
+    in.specular = scene.shading.specular;
+    in.projection = scene.shading.projection;
+    return in;
+}
+
+ProbeResult probePixel(const Scene &scene, const Mesh &mesh, const CheckerTexture &texture,
+                       QSize size, QPoint pixel)
+{
+    ProbeResult r;
+    if (size.isEmpty() || mesh.indices.empty())
+        return r;
+    const Frames frames = computeFrames(scene, float(size.width()) / float(size.height()));
+
+    // The pixel centre on the near and far planes, back through the projection.
+    const float ndcX = 2.0f * (float(pixel.x()) + 0.5f) / float(size.width()) - 1.0f;
+    const float ndcY = 1.0f - 2.0f * (float(pixel.y()) + 0.5f) / float(size.height());
+    const glm::mat4 unproject = glm::inverse(frames.projection);
+    glm::vec4 nearP = unproject * glm::vec4(ndcX, ndcY, -1.0f, 1.0f);
+    glm::vec4 farP = unproject * glm::vec4(ndcX, ndcY, 1.0f, 1.0f);
+    const glm::vec3 origin = glm::vec3(nearP) / nearP.w;
+    const glm::vec3 dir = glm::vec3(farP) / farP.w - origin;
+
+    std::vector<glm::vec3> eyePositions(mesh.vertexCount());
+    for (std::size_t i = 0; i < mesh.vertexCount(); ++i)
+        eyePositions[i] = glm::vec3(frames.modelView * glm::vec4(mesh.positions[i], 1.0f));
+
+    float nearest = std::numeric_limits<float>::max();
+    for (std::size_t tri = 0; tri < mesh.triangleCount(); ++tri) {
+        const std::uint32_t *idx = &mesh.indices[tri * 3];
+        const auto hit =
+            intersect(origin, dir, eyePositions[idx[0]], eyePositions[idx[1]], eyePositions[idx[2]]);
+        if (hit && hit->t < nearest) {
+            nearest = hit->t;
+            r.hit = true;
+            r.triangle = tri;
+            r.barycentric = hit->barycentric;
+        }
+    }
+    if (!r.hit)
+        return r;
+
+    const std::uint32_t *tri = &mesh.indices[r.triangle * 3];
+    const glm::vec3 &w = r.barycentric;
+    const glm::mat3 normals(frames.normals);
+    auto eyeNormal = [&](const glm::vec3 &n) { return normals * n; };
+
+    r.position = interpolate(eyePositions, tri, w);
+    r.normal = glm::normalize(eyeNormal(interpolate(mesh.normals, tri, w)));
+    if (scene.shading.vertexColors)
+        r.base *= interpolate(mesh.colors, tri, w);
+    if (scene.shading.texture)
+        r.base *= texture.sample(interpolate(mesh.uvs, tri, w));
+
+    const LightingInputs in = lightingInputs(scene, frames);
+    r.terms = evaluateLighting(r.position, r.normal, in);
+
+    glm::vec3 colour;
+    if (!scene.shading.lighting) {
+        colour = unlitColor(scene.material, r.base);
+    } else if (scene.shading.shading == Shading::Phong) {
+        colour = shadedColor(r.terms.ambient + r.terms.diffuse, r.terms.specular, r.base);
+    } else {
+        // Gouraud: the model at each vertex, interpolated over the triangle.
+        glm::vec3 ambientDiffuse(0.0f), specular(0.0f);
+        for (int k = 0; k < 3; ++k) {
+            const LightingTerms v =
+                evaluateLighting(eyePositions[tri[k]], eyeNormal(mesh.normals[tri[k]]), in);
+            ambientDiffuse += w[k] * (v.ambient + v.diffuse);
+            specular += w[k] * v.specular;
+        }
+        colour = shadedColor(ambientDiffuse, specular, r.base);
+    }
+    r.reference = glm::clamp(colour, 0.0f, 1.0f);
+    return r;
+}
+
+} // namespace lb

@@ -1,0 +1,36 @@
+#pragma once
+// The probe: which surface point a pixel shows, and what the lighting model says that pixel
+// must be. A ray through the pixel's centre finds the triangle; its barycentric weights are
+// the perspective-correct ones, so Gouraud's interpolation can be repeated on the CPU.
+
+#include "checker_texture.h"
+#include "frames.h"
+#include "lighting.h"
+#include "mesh.h"
+#include "scene.h"
+
+#include <QPointF>
+#include <QSize>
+
+namespace lb {
+
+struct ProbeResult
+{
+    bool hit = false;
+    std::size_t triangle = 0;
+    glm::vec3 barycentric{0.0f};
+    glm::vec3 position{0.0f}; // eye coordinates
+    glm::vec3 normal{0.0f};   // unit, eye coordinates
+    LightingTerms terms;      // the model evaluated at this point (the Phong-shading view)
+    glm::vec3 base{1.0f};     // vertex colour x texture, white where switched off
+    glm::vec3 reference{0.0f}; // the pixel in the active shading mode, clamped to [0, 1]
+};
+
+LightingInputs lightingInputs(const Scene &scene, const Frames &frames);
+
+// `pixel` is in framebuffer pixels from the top-left corner; (x + 0.5, y + 0.5) is the centre
+// GL samples. The frame is `size` pixels large.
+ProbeResult probePixel(const Scene &scene, const Mesh &mesh, const CheckerTexture &texture,
+                       QSize size, QPoint pixel);
+
+} // namespace lb

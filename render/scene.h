@@ -1,0 +1,94 @@
+#pragma once
+// The scene model: everything the panels, the command line and the renderer agree on.
+// Plain data; SceneDocument (scene_document.h) wraps it with a "changed" signal.
+
+#include "camera.h"
+#include "lighting.h"
+
+#include <QJsonObject>
+#include <QString>
+#include <QStringList>
+
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include <optional>
+
+namespace lb {
+
+enum class LightFrame { Camera, World, Object };
+enum class Shading { Gouraud, Phong };
+enum class Shape { Cube, Sphere, Torus, Plane };
+
+struct Light
+{
+    glm::vec4 position{0.0f, 1.8f, 1.3f, 1.0f}; // the slides' lightPosition; w = 0 or 1
+    LightFrame frame = LightFrame::World;       // the slides' complete shaders use world (II)
+    LightColors colors;
+};
+
+struct ShadingSettings
+{
+    Shading shading = Shading::Phong;
+    SpecularModel specular = SpecularModel::Blinn; // the slides' complete shaders use H
+    Projection projection = Projection::Perspective;
+    bool lighting = true;
+    bool vertexColors = false;
+    bool texture = false;
+};
+
+struct ObjectSettings
+{
+    Shape shape = Shape::Sphere;
+    int tessellation = 16; // coarse on purpose: Gouraud and Phong visibly differ
+    glm::vec3 rotationDegrees{0.0f};
+    glm::vec3 scale{1.0f};
+    bool autoRotate = false;
+};
+
+struct Scene
+{
+    Light light;
+    Material material;
+    ShadingSettings shading;
+    ObjectSettings object;
+    OrbitCamera camera;
+    bool showLight = true; // draw the light's marker (unlit sphere or arrow)
+
+    QJsonObject toJson() const;
+    // Missing or ill-typed fields keep their defaults.
+    static Scene fromJson(const QJsonObject &json);
+};
+
+bool operator==(const Scene &a, const Scene &b);
+inline bool operator!=(const Scene &a, const Scene &b) { return !(a == b); }
+
+// Limits shared by the panels and the command line.
+namespace limits {
+constexpr int kMinTessellation = 3;
+constexpr int kMaxTessellation = 2000;
+constexpr float kMinShininess = 1.0f;
+constexpr float kMaxShininess = 1000.0f;
+constexpr float kMaxCoordinate = 1000.0f;
+constexpr float kMinScale = 0.01f;
+constexpr float kMaxScale = 100.0f;
+} // namespace limits
+
+// Names used on the command line, in JSON and in the panels' combo boxes.
+QString toString(LightFrame v);
+QString toString(Shading v);
+QString toString(SpecularModel v);
+QString toString(Projection v);
+QString toString(Shape v);
+std::optional<LightFrame> parseLightFrame(const QString &s);
+std::optional<Shading> parseShading(const QString &s);
+std::optional<SpecularModel> parseSpecularModel(const QString &s);
+std::optional<Projection> parseProjection(const QString &s);
+std::optional<Shape> parseShape(const QString &s);
+QStringList lightFrameNames();
+QStringList shadingNames();
+QStringList specularModelNames();
+QStringList projectionNames();
+QStringList shapeNames();
+
+} // namespace lb

@@ -1,0 +1,30 @@
+#version 330 core
+// Gouraud shading, fragment stage: the interpolated vertex colour is the pixel's colour
+// (modulated by the vertex colour and the texture when those are on).
+
+in vec3 fAmbientDiffuse;
+in vec3 fSpecular;
+in vec3 fColor;
+in vec2 fTexCoord;
+
+uniform vec3 materialDif; // Kd, shown as is when lighting is off
+uniform bool uEnableLighting;
+uniform bool uEnableVertexColor;
+uniform bool uEnableTexture;
+uniform sampler2D uSampler;
+
+out vec4 fragColor;
+
+void main()
+{
+    vec3 base = vec3(1.0);
+    if (uEnableVertexColor)
+        base *= fColor;
+    if (uEnableTexture)
+        base *= texture(uSampler, fTexCoord).rgb;
+    if (!uEnableLighting) {
+        fragColor = vec4(materialDif * base, 1.0);
+        return;
+    }
+    fragColor = vec4(base * fAmbientDiffuse + fSpecular, 1.0);
+}

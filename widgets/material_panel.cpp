@@ -1,0 +1,84 @@
+#include "material_panel.h"
+
+#include "color_edit.h"
+
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QPushButton>
+#include <QSignalBlocker>
+#include <QSlider>
+
+#include <cmath>
+
+namespace lb {
+
+namespace {
+glm::vec3 Material::*const kColourMembers[3] = {&Material::ka, &Material::kd, &Material::ks};
+const double kLogRange = std::log(double(limits::kMaxShininess) / limits::kMinShininess);
+} // namespace
+
+int MaterialPanel::sliderPosition(float shininess)
+{
+    const double t = std::log(double(shininess) / limits::kMinShininess) / kLogRange;
+    return int(std::lround(std::clamp(t, 0.0, 1.0) * kSliderSteps));
+}
+
+float MaterialPanel::shininessAt(int position)
+{
+    return float(limits::kMinShininess * std::exp(kLogRange * position / kSliderSteps));
+}
+
+MaterialPanel::MaterialPanel(SceneDocument *document, QWidget *parent)
+    : ScenePanel(document, parent)
+{
+    auto *form = new QFormLayout(this);
+    form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
+    const char *symbols[3] = {"Ka", "Kd", "Ks"};
+    const char *uniforms[3] = {"materialAmb", "materialDif", "materialSpe"};
+    const char *terms[3] = {"ambient", "diffuse", "specular"};
+    for (int i = 0; i < 3; ++i) {
+        auto *colour = new ColorEdit(symbols[i], this);
+        colour->setToolTip(tr("%1 (%2): the material's %3 reflection coefficients")
+                               .arg(symbols[i], uniforms[i], terms[i]));
+        connect(colour, &ColorEdit::colorChanged, this, [this, i](const glm::vec3 &c) {
+            edit([&](Scene &s) { s.material.*kColourMembers[i] = c; });
+        });
+        m_colors[std::size_t(i)] = colour;
+        form->addRow(symbols[i], colour);
+    }
+
+    const QString tip = tr("shininess: the specular exponent n in (R.V)^n or (N.H)^n; higher "
+                           "gives a smaller, sharper highlight");
+    m_slider = new QSlider(Qt::Horizontal, this);
+    m_slider->setRange(0, kSliderSteps);
+    m_slider->setToolTip(tip);
+    m_box = makeSpin(limits::kMinShininess, limits::kMaxShininess, 1, 1.0, tip);
+    connect(m_slider, &QSlider::valueChanged, this, [this](int position) {
+        edit([&](Scene &s) { s.material.shininess = shininessAt(position); });
+    });
+    connect(m_box, &QDoubleSpinBox::valueChanged, this,
+            [this](double v) { edit([&](Scene &s) { s.material.shininess = float(v); }); });
+    auto *row = new QHBoxLayout;
+    row->addWidget(m_slider, 1);
+    row->addWidget(m_box);
+    form->addRow(tr("Shininess"), row);
+
+    auto *reset = new QPushButton(tr("Reset material"), this);
+    reset->setToolTip(tr("The slides' red plastic: Ka = Kd = (1, 0, 0), Ks = (1, 1, 1), n = 6"));
+    connect(reset, &QPushButton::clicked, this,
+            [this] { edit([](Scene &s) { s.material = Material{}; }); });
+    form->addRow(reset);
+    refreshNow();
+}
+
+void MaterialPanel::refresh(const Scene &scene)
+{
+    for (int i = 0; i < 3; ++i)
+        m_colors[std::size_t(i)]->setColor(scene.material.*kColourMembers[i]);
+    const QSignalBlocker b1(m_slider), b2(m_box);
+    m_slider->setValue(sliderPosition(scene.material.shininess));
+    m_box->setValue(double(scene.material.shininess));
+}
+
+} // namespace lb

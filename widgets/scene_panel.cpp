@@ -1,0 +1,35 @@
+#include "scene_panel.h"
+
+#include <QComboBox>
+#include <QDoubleSpinBox>
+
+namespace lb {
+
+ScenePanel::ScenePanel(SceneDocument *document, QWidget *parent)
+    : QWidget(parent), m_document(document)
+{
+    connect(document, &SceneDocument::changed, this, [this] { refresh(m_document->scene()); });
+}
+
+QDoubleSpinBox *ScenePanel::makeSpin(double lo, double hi, int decimals, double step,
+                                     const QString &toolTip)
+{
+    auto *spin = new QDoubleSpinBox(this);
+    spin->setRange(lo, hi);
+    spin->setDecimals(decimals);
+    spin->setSingleStep(step);
+    spin->setToolTip(toolTip);
+    spin->setAccessibleName(toolTip.section(':', 0, 0));
+    spin->setKeyboardTracking(false); // typing "1.25" edits once, not four times
+    return spin;
+}
+
+QComboBox *ScenePanel::makeCombo(const QStringList &labels, const QString &toolTip)
+{
+    auto *combo = new QComboBox(this);
+    combo->addItems(labels);
+    combo->setToolTip(toolTip);
+    return combo;
+}
+
+} // namespace lb

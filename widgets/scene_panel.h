@@ -1,0 +1,34 @@
+#pragma once
+// Base of the dock panels: each edits the SceneDocument and shows its values again whenever
+// the document changes (from the panel itself, another panel, the camera or a reset).
+
+#include "scene_document.h"
+
+#include <QWidget>
+
+class QDoubleSpinBox;
+class QComboBox;
+
+namespace lb {
+
+class ScenePanel : public QWidget
+{
+    Q_OBJECT
+public:
+    explicit ScenePanel(SceneDocument *document, QWidget *parent = nullptr);
+
+protected:
+    // Shows the scene's values in the controls; must not emit edits (block signals).
+    virtual void refresh(const Scene &scene) = 0;
+    // Runs refresh() once the derived constructor has built its controls.
+    void refreshNow() { refresh(m_document->scene()); }
+    template <typename F> void edit(F &&change) { m_document->edit(std::forward<F>(change)); }
+
+    QDoubleSpinBox *makeSpin(double lo, double hi, int decimals, double step,
+                             const QString &toolTip);
+    QComboBox *makeCombo(const QStringList &labels, const QString &toolTip);
+
+    SceneDocument *m_document;
+};
+
+} // namespace lb

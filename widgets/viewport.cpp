@@ -1,0 +1,127 @@
+#include "viewport.h"
+
+#include <QMouseEvent>
+#include <QOpenGLContext>
+#include <QPainter>
+#include <QWheelEvent>
+
+#include <cmath>
+
+namespace lb {
+
+namespace {
+constexpr float kDegreesPerPixel = 0.4f;
+constexpr float kAutoRotateDegreesPerSecond = 30.0f;
+} // namespace
+
+Viewport::Viewport(SceneDocument *document, QWidget *parent)
+    : QOpenGLWidget(parent), m_document(document)
+{
+    setMinimumSize(320, 240);
+    setFocusPolicy(Qt::StrongFocus);
+    setToolTip(tr("Left drag: orbit - right or middle drag: pan - wheel: zoom - R: reset view"));
+    connect(document, &SceneDocument::changed, this, [this] {
+        syncAnimation();
+        update();
+    });
+    m_animation.setInterval(16);
+    connect(&m_animation, &QTimer::timeout, this, &Viewport::advanceAnimation);
+    syncAnimation();
+}
+
+Viewport::~Viewport()
+{
+    makeCurrent();
+    cleanup();
+    doneCurrent();
+}
+
+void Viewport::cleanup() { m_renderer.cleanup(); }
+
+void Viewport::initializeGL()
+{
+    // A reparented viewport gets a new context: drop what belonged to the old one first.
+    m_renderer.cleanup();
+    connect(context(), &QOpenGLContext::aboutToBeDestroyed, this,
+            [this] {
+                makeCurrent();
+                cleanup();
+                doneCurrent();
+            },
+            Qt::UniqueConnection);
+    m_error = m_renderer.initialize();
+    const QSurfaceFormat f = context()->format();
+    auto *gl = context()->functions();
+    emit glInfo(QString("OpenGL %1.%2, %3")
+                    .arg(f.majorVersion())
+                    .arg(f.minorVersion())
+                    .arg(reinterpret_cast<const char *>(gl->glGetString(GL_RENDERER))));
+}
+
+void Viewport::paintGL()
+{
+    if (!m_error.isEmpty()) {
+        QPainter painter(this);
+        painter.fillRect(rect(), Qt::black);
+        painter.setPen(Qt::white);
+        painter.drawText(rect().adjusted(12, 12, -12, -12), Qt::TextWordWrap,
+                         tr("The renderer could not start:\n%1").arg(m_error));
+        return;
+    }
+    m_renderer.render(m_document->scene(), size() * devicePixelRatio());
+}
+
+void Viewport::resetCamera()
+{
+    m_document->edit([](Scene &s) { s.camera = OrbitCamera{}; });
+}
+
+void Viewport::mousePressEvent(QMouseEvent *event)
+{
+    m_lastMouse = event->position().toPoint();
+    setFocus();
+}
+
+void Viewport::mouseMoveEvent(QMouseEvent *event)
+{
+    const QPoint now = event->position().toPoint();
+    const QPoint delta = now - m_lastMouse;
+    m_lastMouse = now;
+    if (event->buttons() & Qt::LeftButton) {
+        m_document->edit([&](Scene &s) {
+            s.camera.orbit(-kDegreesPerPixel * float(delta.x()), kDegreesPerPixel * float(delta.y()));
+        });
+    } else if (event->buttons() & (Qt::RightButton | Qt::MiddleButton)) {
+        const float h = float(std::max(height(), 1));
+        m_document->edit(
+            [&](Scene &s) { s.camera.pan(float(delta.x()) / h, float(delta.y()) / h); });
+    }
+}
+
+void Viewport::wheelEvent(QWheelEvent *event)
+{
+    const float steps = float(event->angleDelta().y()) / 120.0f;
+    m_document->edit([&](Scene &s) { s.camera.zoom(steps); });
+}
+
+void Viewport::syncAnimation()
+{
+    const bool on = m_document->scene().object.autoRotate;
+    if (on && !m_animation.isActive()) {
+        m_clock.start();
+        m_animation.start();
+    } else if (!on) {
+        m_animation.stop();
+    }
+}
+
+void Viewport::advanceAnimation()
+{
+    const float seconds = float(m_clock.restart()) / 1000.0f;
+    m_document->edit([&](Scene &s) {
+        float &y = s.object.rotationDegrees.y;
+        y = std::fmod(y + kAutoRotateDegreesPerSecond * seconds, 360.0f);
+    });
+}
+
+} // namespace lb
