@@ -43,8 +43,8 @@ QJsonObject probeJson(const ProbeResult &probe, const QImage &frame, QPoint pixe
     o["pixel"] = QJsonArray{pixel.x(), pixel.y()};
     o["hit"] = probe.hit;
     o["gpu"] = QJsonArray{qRed(gpu), qGreen(gpu), qBlue(gpu)};
-    o["shading"] = toString(scene.shading.shading);
-    o["specularModel"] = toString(scene.shading.specular);
+    o["shading"] = toName(scene.shading.shading);
+    o["specularModel"] = toName(scene.shading.specular);
     if (!probe.hit)
         return o;
     const LightingTerms &t = probe.terms;

@@ -3,27 +3,17 @@
 #include "command_line.h"
 #include "headless.h"
 #include "main_window.h"
+#include "offscreen.h"
 #include "viewport.h"
 
 #include <QApplication>
 #include <QGuiApplication>
 #include <QSettings>
-#include <QSurfaceFormat>
 #include <QTimer>
 
 #include <cstdio>
 
 namespace {
-
-void setDefaultGlFormat()
-{
-    QSurfaceFormat format;
-    format.setRenderableType(QSurfaceFormat::OpenGL);
-    format.setVersion(3, 3);
-    format.setProfile(QSurfaceFormat::CoreProfile);
-    format.setDepthBufferSize(24);
-    QSurfaceFormat::setDefaultFormat(format);
-}
 
 bool haveDisplay()
 {
@@ -60,7 +50,7 @@ int main(int argc, char **argv)
                    stderr);
         return 1;
     }
-    setDefaultGlFormat();
+    lb::setDefaultGlFormat();
     QCoreApplication::setOrganizationName("lightbench");
     QCoreApplication::setApplicationName("lightbench");
 

@@ -145,8 +145,8 @@ void MainWindow::updateStatus()
 {
     const Scene &s = m_document.scene();
     statusBar()->showMessage(tr("%1 shading, %2 specular, %3 projection, light in %4 frame")
-                                 .arg(toString(s.shading.shading), toString(s.shading.specular),
-                                      toString(s.shading.projection), toString(s.light.frame)));
+                                 .arg(toName(s.shading.shading), toName(s.shading.specular),
+                                      toName(s.shading.projection), toName(s.light.frame)));
 }
 
 void MainWindow::saveSettings()

@@ -4,6 +4,16 @@
 
 namespace lb {
 
+void setDefaultGlFormat()
+{
+    QSurfaceFormat format;
+    format.setRenderableType(QSurfaceFormat::OpenGL);
+    format.setVersion(3, 3);
+    format.setProfile(QSurfaceFormat::CoreProfile);
+    format.setDepthBufferSize(24);
+    QSurfaceFormat::setDefaultFormat(format);
+}
+
 OffscreenRenderer::~OffscreenRenderer()
 {
     if (m_context.isValid() && m_context.makeCurrent(&m_surface)) {

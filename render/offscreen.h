@@ -15,6 +15,10 @@
 
 namespace lb {
 
+// OpenGL 3.3 core with a depth buffer, for every context the process makes. Call before the
+// first window or context is created.
+void setDefaultGlFormat();
+
 class OffscreenRenderer
 {
 public:

@@ -97,11 +97,11 @@ void readEnum(const QJsonObject &o, const char *key, const NameTable<E, N> &tabl
 
 } // namespace
 
-QString toString(LightFrame v) { return nameOf(kFrames, v); }
-QString toString(Shading v) { return nameOf(kShadings, v); }
-QString toString(SpecularModel v) { return nameOf(kSpeculars, v); }
-QString toString(Projection v) { return nameOf(kProjections, v); }
-QString toString(Shape v) { return nameOf(kShapes, v); }
+QString toName(LightFrame v) { return nameOf(kFrames, v); }
+QString toName(Shading v) { return nameOf(kShadings, v); }
+QString toName(SpecularModel v) { return nameOf(kSpeculars, v); }
+QString toName(Projection v) { return nameOf(kProjections, v); }
+QString toName(Shape v) { return nameOf(kShapes, v); }
 std::optional<LightFrame> parseLightFrame(const QString &s) { return valueOf(kFrames, s); }
 std::optional<Shading> parseShading(const QString &s) { return valueOf(kShadings, s); }
 std::optional<SpecularModel> parseSpecularModel(const QString &s) { return valueOf(kSpeculars, s); }
@@ -117,7 +117,7 @@ QJsonObject Scene::toJson() const
 {
     QJsonObject l;
     l["position"] = toArray(&light.position.x, 4);
-    l["frame"] = toString(light.frame);
+    l["frame"] = toName(light.frame);
     l["ia"] = toArray(&light.colors.ia.x, 3);
     l["id"] = toArray(&light.colors.id.x, 3);
     l["is"] = toArray(&light.colors.is.x, 3);
@@ -129,15 +129,15 @@ QJsonObject Scene::toJson() const
     m["shininess"] = double(material.shininess);
 
     QJsonObject s;
-    s["shading"] = toString(shading.shading);
-    s["specular"] = toString(shading.specular);
-    s["projection"] = toString(shading.projection);
+    s["shading"] = toName(shading.shading);
+    s["specular"] = toName(shading.specular);
+    s["projection"] = toName(shading.projection);
     s["lighting"] = shading.lighting;
     s["vertexColors"] = shading.vertexColors;
     s["texture"] = shading.texture;
 
     QJsonObject ob;
-    ob["shape"] = toString(object.shape);
+    ob["shape"] = toName(object.shape);
     ob["tessellation"] = object.tessellation;
     ob["rotation"] = toArray(&object.rotationDegrees.x, 3);
     ob["scale"] = toArray(&object.scale.x, 3);

@@ -75,11 +75,11 @@ constexpr float kMaxScale = 100.0f;
 } // namespace limits
 
 // Names used on the command line, in JSON and in the panels' combo boxes.
-QString toString(LightFrame v);
-QString toString(Shading v);
-QString toString(SpecularModel v);
-QString toString(Projection v);
-QString toString(Shape v);
+QString toName(LightFrame v);
+QString toName(Shading v);
+QString toName(SpecularModel v);
+QString toName(Projection v);
+QString toName(Shape v);
 std::optional<LightFrame> parseLightFrame(const QString &s);
 std::optional<Shading> parseShading(const QString &s);
 std::optional<SpecularModel> parseSpecularModel(const QString &s);

@@ -33,13 +33,16 @@ uniform sampler2D uSampler;
 out vec4 fragColor;
 
 // The light in the camera frame: variants I (camera), II (world) and III (object).
+// An inverse transpose carries the matrix's translation into w, so w is put back: a
+// direction must stay a direction (w = 0) after mViewNormals or mNormals.
 vec4 lightInCamera()
 {
+    vec4 light = lightPosition;
     if (uLightFrame == 1)
-        return lightPosition.w == 0.0 ? mViewNormals * lightPosition : mView * lightPosition;
-    if (uLightFrame == 2)
-        return lightPosition.w == 0.0 ? mNormals * lightPosition : mModelView * lightPosition;
-    return lightPosition;
+        light = lightPosition.w == 0.0 ? mViewNormals * lightPosition : mView * lightPosition;
+    else if (uLightFrame == 2)
+        light = lightPosition.w == 0.0 ? mNormals * lightPosition : mModelView * lightPosition;
+    return vec4(light.xyz, lightPosition.w);
 }
 
 void main()

@@ -29,25 +29,20 @@ Viewport::Viewport(SceneDocument *document, QWidget *parent)
     syncAnimation();
 }
 
-Viewport::~Viewport()
+Viewport::~Viewport() { releaseGl(); }
+
+void Viewport::releaseGl()
 {
     makeCurrent();
-    cleanup();
+    m_renderer.cleanup();
     doneCurrent();
 }
-
-void Viewport::cleanup() { m_renderer.cleanup(); }
 
 void Viewport::initializeGL()
 {
     // A reparented viewport gets a new context: drop what belonged to the old one first.
     m_renderer.cleanup();
-    connect(context(), &QOpenGLContext::aboutToBeDestroyed, this,
-            [this] {
-                makeCurrent();
-                cleanup();
-                doneCurrent();
-            },
+    connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, &Viewport::releaseGl,
             Qt::UniqueConnection);
     m_error = m_renderer.initialize();
     const QSurfaceFormat f = context()->format();

@@ -35,7 +35,7 @@ protected:
     void wheelEvent(QWheelEvent *event) override;
 
 private:
-    void cleanup();
+    void releaseGl(); // with the context made current: the renderer's GL objects go
     void syncAnimation();
     void advanceAnimation();
 

@@ -1,0 +1,108 @@
+// The lightbench executable as a user scripts it: exit codes, messages, PNG and probe JSON.
+#include <QImage>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QJsonArray>
+#include <QProcess>
+#include <QTemporaryDir>
+#include <QTest>
+
+namespace {
+struct Run
+{
+    int exitCode;
+    QByteArray out, err;
+};
+
+Run run(const QStringList &args, const QProcessEnvironment &env = QProcessEnvironment::systemEnvironment())
+{
+    QProcess p;
+    p.setProcessEnvironment(env);
+    p.start(LIGHTBENCH_EXE, args);
+    if (!p.waitForFinished(60000))
+        return {-1, {}, "timed out"};
+    return {p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -2, p.readAllStandardOutput(),
+            p.readAllStandardError()};
+}
+} // namespace
+
+class TestCliProcess : public QObject
+{
+    Q_OBJECT
+private:
+    QTemporaryDir m_dir;
+
+private slots:
+    void renderWritesAnImageOfTheGivenSize()
+    {
+        const QString png = m_dir.filePath("frame.png");
+        const Run r = run({"--render", png, "--size", "200x150", "--shape", "torus"});
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        const QImage img(png);
+        QCOMPARE(img.size(), QSize(200, 150));
+        QVERIFY(img.pixel(100, 75) != img.pixel(2, 2)); // the torus is there, not background
+    }
+
+    void probePrintsTheModelAtThePixel()
+    {
+        const Run r = run({"--probe", "400,300", "--shading", "gouraud", "--show-light", "off"});
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        const QJsonObject o = QJsonDocument::fromJson(r.out).object();
+        QVERIFY(o["hit"].toBool());
+        for (const char *key : {"gpu", "reference", "position", "normal", "L", "V", "H", "R",
+                                "ambient", "diffuse", "specular"})
+            QVERIFY2(o[key].isArray() && o[key].toArray().size() == 3, key);
+        for (int c = 0; c < 3; ++c)
+            QVERIFY(std::abs(o["gpu"][c].toInt() - o["reference"][c].toInt()) <= 2);
+        // The background has no surface.
+        const Run miss = run({"--probe", "2,2"});
+        QCOMPARE(QJsonDocument::fromJson(miss.out).object()["hit"].toBool(true), false);
+    }
+
+    void badValuesExitWithCode2AndOneLine_data()
+    {
+        QTest::addColumn<QStringList>("args");
+        QTest::addColumn<QString>("option");
+        QTest::newRow("w = 0.5") << QStringList{"--light", "1,2,3,0.5"} << "--light";
+        QTest::newRow("missing number") << QStringList{"--ka", "1,0"} << "--ka";
+        QTest::newRow("nan") << QStringList{"--shininess", "nan"} << "--shininess";
+        QTest::newRow("unknown word") << QStringList{"--shape", "teapot"} << "--shape";
+        QTest::newRow("size 0") << QStringList{"--size", "0x0"} << "--size";
+        QTest::newRow("size 100000") << QStringList{"--size", "100000x10"} << "--size";
+        QTest::newRow("unknown option") << QStringList{"--frobnicate"} << "frobnicate";
+    }
+
+    void badValuesExitWithCode2AndOneLine()
+    {
+        QFETCH(QStringList, args);
+        QFETCH(QString, option);
+        const QString png = m_dir.filePath("never.png");
+        const Run r = run(args + QStringList{"--render", png});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY(r.out.isEmpty());
+        QCOMPARE(r.err.count('\n'), 1);
+        QVERIFY2(r.err.contains(option.toUtf8()), r.err.constData());
+        QVERIFY(!QFile::exists(png));
+    }
+
+    void noDisplayIsAMessageNotACrash()
+    {
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.remove("DISPLAY");
+        env.remove("WAYLAND_DISPLAY");
+        env.remove("QT_QPA_PLATFORM");
+        const Run r = run({"--render", m_dir.filePath("x.png")}, env);
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY(r.err.contains("display"));
+    }
+
+    void helpExitsWithZero()
+    {
+        const Run r = run({"--help"});
+        QCOMPARE(r.exitCode, 0);
+        QVERIFY(r.out.contains("--probe"));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestCliProcess)
+#include "test_cli_process.moc"

@@ -1,0 +1,127 @@
+// Command line: every option reaches the scene; every bad value is refused with exit code 2
+// and a message that names the option.
+#include "command_line.h"
+
+#include <QTest>
+
+using namespace lb;
+
+namespace {
+CommandLineResult parse(const QString &args)
+{
+    return parseCommandLine(QStringList{"lightbench"} + args.split(' ', Qt::SkipEmptyParts));
+}
+Scene applied(const QString &args)
+{
+    const CommandLineResult r = parse(args);
+    Scene s;
+    if (r.commandLine)
+        r.commandLine->applyTo(s);
+    return s;
+}
+} // namespace
+
+class TestCommandLine : public QObject
+{
+    Q_OBJECT
+private slots:
+    void optionsReachTheScene()
+    {
+        const Scene s = applied("--shape torus --tessellation 30 --shading gouraud --specular phong "
+                                "--frame camera --light 1,-2,3,0 --ia 0.1,0.2,0.3 --id 0,0,1 "
+                                "--is 0.5,0.5,0.5 --ka 0,1,0 --kd 1,1,0 --ks 0.2,0.2,0.2 "
+                                "--shininess 250 --projection orthographic --camera-orbit 30,-10 "
+                                "--model-rotate 10,20,30 --model-scale 2,1,0.5 --lighting off "
+                                "--vertex-colors on --texture on --show-light off");
+        QCOMPARE(s.object.shape, Shape::Torus);
+        QCOMPARE(s.object.tessellation, 30);
+        QCOMPARE(s.shading.shading, Shading::Gouraud);
+        QCOMPARE(s.shading.specular, SpecularModel::Phong);
+        QCOMPARE(s.light.frame, LightFrame::Camera);
+        QCOMPARE(s.light.position, glm::vec4(1, -2, 3, 0));
+        QCOMPARE(s.light.colors.ia, glm::vec3(0.1f, 0.2f, 0.3f));
+        QCOMPARE(s.light.colors.id, glm::vec3(0, 0, 1));
+        QCOMPARE(s.light.colors.is, glm::vec3(0.5f));
+        QCOMPARE(s.material.ka, glm::vec3(0, 1, 0));
+        QCOMPARE(s.material.kd, glm::vec3(1, 1, 0));
+        QCOMPARE(s.material.ks, glm::vec3(0.2f));
+        QCOMPARE(s.material.shininess, 250.0f);
+        QCOMPARE(s.shading.projection, Projection::Orthographic);
+        QCOMPARE(s.camera.yawDegrees, 30.0f);
+        QCOMPARE(s.camera.pitchDegrees, -10.0f);
+        QCOMPARE(s.object.rotationDegrees, glm::vec3(10, 20, 30));
+        QCOMPARE(s.object.scale, glm::vec3(2, 1, 0.5f));
+        QVERIFY(!s.shading.lighting);
+        QVERIFY(s.shading.vertexColors);
+        QVERIFY(s.shading.texture);
+        QVERIFY(!s.showLight);
+    }
+
+    void renderProbeAndSize()
+    {
+        const CommandLineResult r = parse("--render out.png --size 320x200 --probe 319,199");
+        QVERIFY(r.commandLine);
+        QCOMPARE(r.commandLine->renderPath, QString("out.png"));
+        QCOMPARE(r.commandLine->size, QSize(320, 200));
+        QCOMPARE(*r.commandLine->probe, QPoint(319, 199));
+        QVERIFY(r.commandLine->headless());
+        QVERIFY(!parse("--shape cube").commandLine->headless());
+        QCOMPARE(parse("--render x.png").commandLine->size, QSize(800, 600));
+    }
+
+    void help()
+    {
+        const CommandLineResult r = parse("--help");
+        QCOMPARE(r.exitCode, 0);
+        QVERIFY(!r.commandLine);
+        QVERIFY(r.message.contains("--probe"));
+        QVERIFY(r.message.contains("--camera-orbit"));
+    }
+
+    void badValues_data()
+    {
+        QTest::addColumn<QString>("args");
+        QTest::addColumn<QString>("named"); // what the message must name
+        QTest::newRow("missing number") << "--light 1,2,3" << "--light";
+        QTest::newRow("empty number") << "--ka 1,,0" << "--ka";
+        QTest::newRow("nan") << "--shininess nan" << "--shininess";
+        QTest::newRow("inf") << "--light inf,0,0,1" << "--light";
+        QTest::newRow("w = 0.5") << "--light 1,2,3,0.5" << "--light";
+        QTest::newRow("zero direction") << "--light 0,0,0,0" << "--light";
+        QTest::newRow("unknown shape") << "--shape teapot" << "--shape";
+        QTest::newRow("unknown shading") << "--shading flat" << "--shading";
+        QTest::newRow("unknown frame") << "--frame screen" << "--frame";
+        QTest::newRow("unknown specular") << "--specular cook" << "--specular";
+        QTest::newRow("unknown projection") << "--projection fisheye" << "--projection";
+        QTest::newRow("size 0") << "--render a.png --size 0x600" << "--size";
+        QTest::newRow("size 100000") << "--render a.png --size 100000x100000" << "--size";
+        QTest::newRow("size words") << "--size big" << "--size";
+        QTest::newRow("colour above 1") << "--id 2,0,0" << "--id";
+        QTest::newRow("negative colour") << "--is -1,0,0" << "--is";
+        QTest::newRow("shininess 0") << "--shininess 0" << "--shininess";
+        QTest::newRow("shininess 5000") << "--shininess 5000" << "--shininess";
+        QTest::newRow("scale 0") << "--model-scale 0,1,1" << "--model-scale";
+        QTest::newRow("pitch 120") << "--camera-orbit 0,120" << "--camera-orbit";
+        QTest::newRow("probe outside") << "--probe 800,10" << "--probe";
+        QTest::newRow("probe words") << "--probe a,b" << "--probe";
+        QTest::newRow("lighting maybe") << "--lighting maybe" << "--lighting";
+        QTest::newRow("tessellation 1") << "--tessellation 1" << "--tessellation";
+        QTest::newRow("unknown option") << "--teapot" << "teapot";
+        QTest::newRow("missing value") << "--shape" << "shape";
+        QTest::newRow("stray argument") << "sphere" << "sphere";
+    }
+
+    void badValues()
+    {
+        QFETCH(QString, args);
+        QFETCH(QString, named);
+        const CommandLineResult r = parse(args);
+        QVERIFY(!r.commandLine);
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.message.contains(named), qPrintable(r.message));
+        QVERIFY2(!r.message.contains('\n'), qPrintable(r.message));
+    }
+};
+
+QTEST_APPLESS_MAIN(TestCommandLine)
+#include "test_command_line.moc"
