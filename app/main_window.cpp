@@ -144,9 +144,15 @@ void MainWindow::buildMenus()
 void MainWindow::updateStatus()
 {
     const Scene &s = m_document.scene();
-    statusBar()->showMessage(tr("%1 shading, %2 specular, %3 projection, light in %4 frame")
-                                 .arg(toName(s.shading.shading), toName(s.shading.specular),
-                                      toName(s.shading.projection), toName(s.light.frame)));
+    const QString shading = s.shading.shading == Shading::Phong ? tr("Phong shading (per fragment)")
+                                                                : tr("Gouraud shading (per vertex)");
+    const QString specular = s.shading.specular == SpecularModel::Blinn
+                                 ? tr("Blinn-Phong specular (N\u00b7H)")
+                                 : tr("Phong specular (R\u00b7V)");
+    const QString light = s.light.position.w == 0.0f ? tr("directional light") : tr("point light");
+    statusBar()->showMessage(QString("%1  |  %2  |  %3 in the %4 frame  |  %5 projection")
+                                 .arg(shading, specular, light, toName(s.light.frame),
+                                      toName(s.shading.projection)));
 }
 
 void MainWindow::saveSettings()

@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# Frames per second at 1280x720 under Xvfb (Mesa llvmpipe here), for the default scene and a
+# generated 1M-triangle torus. Each figure is the median of RUNS processes; each process
+# draws FRAMES frames offscreen through the same renderer as the window (--bench-frames).
+# Usage: bench/fps.sh [RUNS] [FRAMES]   (builds first, like scripts/run)
+set -euo pipefail
+source "$(dirname "${BASH_SOURCE[0]}")/../scripts/setup.sh"
+RUNS=${1:-7}
+FRAMES=${2:-30}
+if [[ -z "${LIGHTBENCH_IN_XVFB:-}" ]]; then
+    ensure_packages
+    build -DBUILD_TESTING=OFF >/dev/null
+    # One Xvfb for every case, so that they are measured side by side.
+    LIGHTBENCH_IN_XVFB=1 exec xvfb-run -a -s "$XVFB_SCREEN" bash "$0" "$RUNS" "$FRAMES"
+fi
+exe="$BUILD_DIR/app/lightbench"
+
+measure() { # name, lightbench options...
+    local name=$1; shift
+    local fps=()
+    for ((i = 0; i < RUNS; i++)); do
+        fps+=("$("$exe" --size 1280x720 --bench-frames "$FRAMES" "$@" |
+                 sed -E 's/.*"fps":([0-9.e+-]+).*/\1/')")
+    done
+    local median
+    median=$(printf '%s\n' "${fps[@]}" | sort -g | awk '{a[NR]=$1} END {print a[int((NR+1)/2)]}')
+    local tris
+    tris=$("$exe" --size 64x64 --bench-frames 1 "$@" | sed -E 's/.*"triangles":([0-9]+).*/\1/')
+    printf '| %s | %s | %.1f | %s |\n' "$name" "$tris" "$median" "$(printf '%.1f ' "${fps[@]}")"
+}
+
+echo "| scene | triangles | median fps | all runs |"
+echo "|---|---|---|---|"
+measure "default (sphere, Phong shading)"
+measure "default, Gouraud" --shading gouraud
+measure "torus 1M triangles, Phong shading" --shape torus --tessellation 500
+measure "torus 1M triangles, Gouraud" --shape torus --tessellation 500 --shading gouraud

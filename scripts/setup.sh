@@ -1,0 +1,38 @@
+# Sourced by scripts/run and scripts/test: installs the Debian packages that are missing
+# (apt-get, only when something is missing), then configures and builds with CMake (Release).
+
+ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+BUILD_DIR=${LIGHTBENCH_BUILD_DIR:-$ROOT/build}
+XVFB_SCREEN="-screen 0 1920x1080x24"
+
+# qt6-qpa-plugins holds the xcb platform; xvfb + xauth + Mesa give OpenGL without a display.
+PACKAGES=(cmake g++ make qt6-base-dev libqt6opengl6-dev qt6-qpa-plugins libglm-dev
+          xvfb xauth libgl1-mesa-dri fonts-dejavu-core)
+
+ensure_packages() {
+    local missing=()
+    for p in "${PACKAGES[@]}"; do
+        dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "ok installed" || missing+=("$p")
+    done
+    [[ ${#missing[@]} -eq 0 ]] && return 0
+    echo "lightbench: installing ${missing[*]}" >&2
+    local sudo=()
+    if [[ $(id -u) -ne 0 ]]; then
+        command -v sudo >/dev/null || { echo "lightbench: need root or sudo to install ${missing[*]}" >&2; exit 1; }
+        sudo=(sudo)
+    fi
+    "${sudo[@]}" apt-get update -qq
+    DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -qq --no-install-recommends \
+        "${missing[@]}" >&2
+}
+
+build() {
+    cmake -S "$ROOT" -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null
+    cmake --build "$BUILD_DIR" -j"$(nproc)"
+}
+
+# Qt warns on every start without a runtime directory (containers, CI); give it a private one.
+if [[ -z "${XDG_RUNTIME_DIR:-}" ]]; then
+    export XDG_RUNTIME_DIR="/tmp/lightbench-runtime-$(id -u)"
+    mkdir -p "$XDG_RUNTIME_DIR" && chmod 700 "$XDG_RUNTIME_DIR"
+fi
