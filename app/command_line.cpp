@@ -19,8 +19,7 @@ struct BadOption
     throw BadOption{QString("--%1: %2").arg(option, what)};
 }
 
-std::vector<float> numbers(const QString &option, const QString &text, int count,
-                           const char *shape)
+std::vector<float> numbers(const QString &option, const QString &text, int count, const char *shape)
 {
     const QStringList parts = text.split(',');
     if (parts.size() != count)
@@ -223,8 +222,8 @@ void parseInto(const QCommandLineParser &parser, CommandLine &cl)
         add([r](Scene &s) { s.object.rotationDegrees = r; });
     }
     if (given("model-scale")) {
-        const glm::vec3 sc = vec3Option("model-scale", value("model-scale"), limits::kMinScale,
-                                        limits::kMaxScale);
+        const glm::vec3 sc =
+            vec3Option("model-scale", value("model-scale"), limits::kMinScale, limits::kMaxScale);
         add([sc](Scene &s) { s.object.scale = sc; });
     }
     const std::pair<const char *, bool ShadingSettings::*> switches[] = {
@@ -259,7 +258,8 @@ CommandLineResult parseCommandLine(const QStringList &arguments)
         "Without --render, --probe or --bench-frames it opens the window.");
     const QCommandLineOption help = parser.addHelpOption();
     for (const OptionSpec &o : kOptions)
-        parser.addOption(QCommandLineOption(QString::fromLatin1(o.name), QString::fromLatin1(o.help),
+        parser.addOption(QCommandLineOption(QString::fromLatin1(o.name),
+                                            QString::fromLatin1(o.help),
                                             QString::fromLatin1(o.valueName)));
 
     CommandLineResult result;

@@ -20,11 +20,11 @@ struct CommandLine
 {
     // Each scene option given, in order; applied on top of the default or the saved scene.
     std::vector<std::function<void(Scene &)>> sceneOverrides;
-    QString renderPath;           // --render FILE.png
-    std::optional<QPoint> probe;  // --probe X,Y
-    QSize size{800, 600};         // --size WxH
-    QString screenshotPath;       // --screenshot FILE.png (window mode: grab and quit)
-    int benchFrames = 0;          // --bench-frames N (headless timing)
+    QString renderPath;          // --render FILE.png
+    std::optional<QPoint> probe; // --probe X,Y
+    QSize size{800, 600};        // --size WxH
+    QString screenshotPath;      // --screenshot FILE.png (window mode: grab and quit)
+    int benchFrames = 0;         // --bench-frames N (headless timing)
 
     bool headless() const { return !renderPath.isEmpty() || probe || benchFrames > 0; }
     void applyTo(Scene &scene) const;

@@ -13,7 +13,10 @@ namespace lb {
 
 namespace {
 
-double rounded(float v) { return std::round(double(v) * 1e6) / 1e6; }
+double rounded(float v)
+{
+    return std::round(double(v) * 1e6) / 1e6;
+}
 
 QJsonArray array(const glm::vec3 &v)
 {
@@ -102,11 +105,11 @@ int runHeadless(const CommandLine &cl, const Scene &scene)
     }
     if (cl.probe) {
         const Mesh &mesh = offscreen.renderer().meshFor(scene.object);
-        const ProbeResult probe = probePixel(scene, mesh, offscreen.renderer().checkerTexture(),
-                                             cl.size, *cl.probe);
-        printLine(QJsonDocument(probeJson(probe, frame, *cl.probe, scene))
-                      .toJson(QJsonDocument::Compact),
-                  stdout);
+        const ProbeResult probe =
+            probePixel(scene, mesh, offscreen.renderer().checkerTexture(), cl.size, *cl.probe);
+        printLine(
+            QJsonDocument(probeJson(probe, frame, *cl.probe, scene)).toJson(QJsonDocument::Compact),
+            stdout);
     }
     return 0;
 }

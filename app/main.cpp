@@ -71,20 +71,23 @@ int main(int argc, char **argv)
 
     if (!cl.screenshotPath.isEmpty()) {
         // Grab once the viewport has drawn and the window has settled, then quit.
-        QObject::connect(window.viewport(), &QOpenGLWidget::frameSwapped, &window, [&] {
-            QTimer::singleShot(700, &window, [&] {
-                const QString path = cl.screenshotPath;
-                if (!window.grab().save(path, "PNG")) {
-                    std::fprintf(stderr, "lightbench: --screenshot: cannot write '%s'\n",
-                                 qPrintable(path));
-                    QCoreApplication::exit(1);
-                    return;
-                }
-                std::printf("%s\n", qPrintable(path));
-                std::fflush(stdout);
-                window.close();
-            });
-        }, Qt::SingleShotConnection);
+        QObject::connect(
+            window.viewport(), &QOpenGLWidget::frameSwapped, &window,
+            [&] {
+                QTimer::singleShot(700, &window, [&] {
+                    const QString path = cl.screenshotPath;
+                    if (!window.grab().save(path, "PNG")) {
+                        std::fprintf(stderr, "lightbench: --screenshot: cannot write '%s'\n",
+                                     qPrintable(path));
+                        QCoreApplication::exit(1);
+                        return;
+                    }
+                    std::printf("%s\n", qPrintable(path));
+                    std::fflush(stdout);
+                    window.close();
+                });
+            },
+            Qt::SingleShotConnection);
     }
     return app.exec();
 }

@@ -82,8 +82,7 @@ MainWindow::MainWindow(QSettings &settings, QWidget *parent)
 
 void MainWindow::buildMenus()
 {
-    auto addItem = [this](QMenu *menu, const QString &text, const QKeySequence &key,
-                            auto slot) {
+    auto addItem = [this](QMenu *menu, const QString &text, const QKeySequence &key, auto slot) {
         QAction *action = menu->addAction(text);
         action->setShortcut(key);
         connect(action, &QAction::triggered, this, slot);
@@ -92,7 +91,7 @@ void MainWindow::buildMenus()
 
     QMenu *file = menuBar()->addMenu(tr("&File"));
     addItem(file, tr("Reset &Everything"), QKeySequence(tr("Ctrl+Shift+R")),
-              [this] { m_document.set(Scene{}); });
+            [this] { m_document.set(Scene{}); });
     file->addSeparator();
     addItem(file, tr("&Quit"), QKeySequence::Quit, [this] { close(); });
 
@@ -105,9 +104,8 @@ void MainWindow::buildMenus()
     });
     addItem(shading, tr("Toggle Phong / &Blinn-Phong specular"), QKeySequence(tr("B")), [this] {
         m_document.edit([](Scene &s) {
-            s.shading.specular = s.shading.specular == SpecularModel::Blinn
-                                     ? SpecularModel::Phong
-                                     : SpecularModel::Blinn;
+            s.shading.specular = s.shading.specular == SpecularModel::Blinn ? SpecularModel::Phong
+                                                                            : SpecularModel::Blinn;
         });
     });
     addItem(shading, tr("Toggle &Perspective / Orthographic"), QKeySequence(tr("P")), [this] {
@@ -117,11 +115,13 @@ void MainWindow::buildMenus()
                                        : Projection::Perspective;
         });
     });
-    addItem(shading, tr("Toggle &Lighting"), QKeySequence(tr("L")),
-              [this] { m_document.edit([](Scene &s) { s.shading.lighting = !s.shading.lighting; }); });
+    addItem(shading, tr("Toggle &Lighting"), QKeySequence(tr("L")), [this] {
+        m_document.edit([](Scene &s) { s.shading.lighting = !s.shading.lighting; });
+    });
 
     QMenu *view = menuBar()->addMenu(tr("&View"));
-    addItem(view, tr("&Reset Camera"), QKeySequence(tr("R")), [this] { m_viewport->resetCamera(); });
+    addItem(view, tr("&Reset Camera"), QKeySequence(tr("R")),
+            [this] { m_viewport->resetCamera(); });
     addItem(view, tr("&Auto-rotate"), QKeySequence(tr("Space")), [this] {
         m_document.edit([](Scene &s) { s.object.autoRotate = !s.object.autoRotate; });
     });
@@ -144,15 +144,16 @@ void MainWindow::buildMenus()
 void MainWindow::updateStatus()
 {
     const Scene &s = m_document.scene();
-    const QString shading = s.shading.shading == Shading::Phong ? tr("Phong shading (per fragment)")
-                                                                : tr("Gouraud shading (per vertex)");
+    const QString shading = s.shading.shading == Shading::Phong
+                                ? tr("Phong shading (per fragment)")
+                                : tr("Gouraud shading (per vertex)");
     const QString specular = s.shading.specular == SpecularModel::Blinn
                                  ? tr("Blinn-Phong specular (N\u00b7H)")
                                  : tr("Phong specular (R\u00b7V)");
     const QString light = s.light.position.w == 0.0f ? tr("directional light") : tr("point light");
-    statusBar()->showMessage(QString("%1  |  %2  |  %3 in the %4 frame  |  %5 projection")
-                                 .arg(shading, specular, light, toName(s.light.frame),
-                                      toName(s.shading.projection)));
+    statusBar()->showMessage(
+        QString("%1  |  %2  |  %3 in the %4 frame  |  %5 projection")
+            .arg(shading, specular, light, toName(s.light.frame), toName(s.shading.projection)));
 }
 
 void MainWindow::saveSettings()

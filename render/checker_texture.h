@@ -12,8 +12,8 @@ namespace lb {
 class CheckerTexture
 {
 public:
-    static constexpr int kSize = 64;   // texels per side
-    static constexpr int kSquare = 8;  // texels per checker square
+    static constexpr int kSize = 64;  // texels per side
+    static constexpr int kSquare = 8; // texels per checker square
     CheckerTexture();
 
     const QImage &image() const { return m_image; } // RGBA8888, row 0 = t of 0

@@ -16,7 +16,10 @@ glm::mat4 modelMatrix(const ObjectSettings &object)
     return glm::scale(m, object.scale);
 }
 
-glm::mat4 normalMatrix(const glm::mat4 &m) { return glm::inverseTranspose(m); }
+glm::mat4 normalMatrix(const glm::mat4 &m)
+{
+    return glm::inverseTranspose(m);
+}
 
 Frames computeFrames(const Scene &scene, float aspect)
 {

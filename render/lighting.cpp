@@ -1,7 +1,7 @@
 #include "lighting.h"
 
-#include <glm/geometric.hpp>
 #include <glm/exponential.hpp>
+#include <glm/geometric.hpp>
 
 namespace lb {
 
@@ -33,8 +33,7 @@ LightingTerms evaluateLighting(const glm::vec3 &positionEye, const glm::vec3 &no
     t.R = glm::reflect(-t.L, t.N);
 
     t.nDotL = glm::dot(t.L, t.N);
-    t.specularAngle = in.specular == SpecularModel::Blinn ? glm::dot(t.N, t.H)
-                                                          : glm::dot(t.R, t.V);
+    t.specularAngle = in.specular == SpecularModel::Blinn ? glm::dot(t.N, t.H) : glm::dot(t.R, t.V);
 
     const Material &m = in.material;
     t.ambient = in.colors.ia * m.ka;
@@ -52,6 +51,9 @@ glm::vec3 shadedColor(const glm::vec3 &ambientPlusDiffuse, const glm::vec3 &spec
     return base * ambientPlusDiffuse + specular;
 }
 
-glm::vec3 unlitColor(const Material &material, const glm::vec3 &base) { return material.kd * base; }
+glm::vec3 unlitColor(const Material &material, const glm::vec3 &base)
+{
+    return material.kd * base;
+}
 
 } // namespace lb

@@ -84,8 +84,8 @@ ProbeResult probePixel(const Scene &scene, const Mesh &mesh, const CheckerTextur
     float nearest = std::numeric_limits<float>::max();
     for (std::size_t tri = 0; tri < mesh.triangleCount(); ++tri) {
         const std::uint32_t *idx = &mesh.indices[tri * 3];
-        const auto hit =
-            intersect(origin, dir, eyePositions[idx[0]], eyePositions[idx[1]], eyePositions[idx[2]]);
+        const auto hit = intersect(origin, dir, eyePositions[idx[0]], eyePositions[idx[1]],
+                                   eyePositions[idx[2]]);
         if (hit && hit->t < nearest) {
             nearest = hit->t;
             r.hit = true;

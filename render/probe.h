@@ -19,10 +19,10 @@ struct ProbeResult
     bool hit = false;
     std::size_t triangle = 0;
     glm::vec3 barycentric{0.0f};
-    glm::vec3 position{0.0f}; // eye coordinates
-    glm::vec3 normal{0.0f};   // unit, eye coordinates
-    LightingTerms terms;      // the model evaluated at this point (the Phong-shading view)
-    glm::vec3 base{1.0f};     // vertex colour x texture, white where switched off
+    glm::vec3 position{0.0f};  // eye coordinates
+    glm::vec3 normal{0.0f};    // unit, eye coordinates
+    LightingTerms terms;       // the model evaluated at this point (the Phong-shading view)
+    glm::vec3 base{1.0f};      // vertex colour x texture, white where switched off
     glm::vec3 reference{0.0f}; // the pixel in the active shading mode, clamped to [0, 1]
 };
 

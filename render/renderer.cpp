@@ -26,9 +26,8 @@ QString readResource(const QString &path)
 // Builds a built-in program from shaders/ (compiled into the resources).
 GLuint builtInProgram(QOpenGLExtraFunctions &gl, const QString &name, QString &error)
 {
-    const ProgramBuild build =
-        buildProgram(gl, readResource(":/shaders/" + name + ".vert"),
-                     readResource(":/shaders/" + name + ".frag"));
+    const ProgramBuild build = buildProgram(gl, readResource(":/shaders/" + name + ".vert"),
+                                            readResource(":/shaders/" + name + ".frag"));
     if (!build.ok())
         error += "built-in shader '" + name + "' failed: " + build.log + '\n';
     return build.program;

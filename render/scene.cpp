@@ -97,21 +97,66 @@ void readEnum(const QJsonObject &o, const char *key, const NameTable<E, N> &tabl
 
 } // namespace
 
-QString toName(LightFrame v) { return nameOf(kFrames, v); }
-QString toName(Shading v) { return nameOf(kShadings, v); }
-QString toName(SpecularModel v) { return nameOf(kSpeculars, v); }
-QString toName(Projection v) { return nameOf(kProjections, v); }
-QString toName(Shape v) { return nameOf(kShapes, v); }
-std::optional<LightFrame> parseLightFrame(const QString &s) { return valueOf(kFrames, s); }
-std::optional<Shading> parseShading(const QString &s) { return valueOf(kShadings, s); }
-std::optional<SpecularModel> parseSpecularModel(const QString &s) { return valueOf(kSpeculars, s); }
-std::optional<Projection> parseProjection(const QString &s) { return valueOf(kProjections, s); }
-std::optional<Shape> parseShape(const QString &s) { return valueOf(kShapes, s); }
-QStringList lightFrameNames() { return namesOf(kFrames); }
-QStringList shadingNames() { return namesOf(kShadings); }
-QStringList specularModelNames() { return namesOf(kSpeculars); }
-QStringList projectionNames() { return namesOf(kProjections); }
-QStringList shapeNames() { return namesOf(kShapes); }
+QString toName(LightFrame v)
+{
+    return nameOf(kFrames, v);
+}
+QString toName(Shading v)
+{
+    return nameOf(kShadings, v);
+}
+QString toName(SpecularModel v)
+{
+    return nameOf(kSpeculars, v);
+}
+QString toName(Projection v)
+{
+    return nameOf(kProjections, v);
+}
+QString toName(Shape v)
+{
+    return nameOf(kShapes, v);
+}
+std::optional<LightFrame> parseLightFrame(const QString &s)
+{
+    return valueOf(kFrames, s);
+}
+std::optional<Shading> parseShading(const QString &s)
+{
+    return valueOf(kShadings, s);
+}
+std::optional<SpecularModel> parseSpecularModel(const QString &s)
+{
+    return valueOf(kSpeculars, s);
+}
+std::optional<Projection> parseProjection(const QString &s)
+{
+    return valueOf(kProjections, s);
+}
+std::optional<Shape> parseShape(const QString &s)
+{
+    return valueOf(kShapes, s);
+}
+QStringList lightFrameNames()
+{
+    return namesOf(kFrames);
+}
+QStringList shadingNames()
+{
+    return namesOf(kShadings);
+}
+QStringList specularModelNames()
+{
+    return namesOf(kSpeculars);
+}
+QStringList projectionNames()
+{
+    return namesOf(kProjections);
+}
+QStringList shapeNames()
+{
+    return namesOf(kShapes);
+}
 
 QJsonObject Scene::toJson() const
 {
@@ -191,8 +236,8 @@ Scene Scene::fromJson(const QJsonObject &json)
     const QJsonObject ob = json.value("object").toObject();
     readEnum(ob, "shape", kShapes, sc.object.shape);
     readNumber(ob, "tessellation", sc.object.tessellation);
-    sc.object.tessellation = std::clamp(sc.object.tessellation, limits::kMinTessellation,
-                                        limits::kMaxTessellation);
+    sc.object.tessellation =
+        std::clamp(sc.object.tessellation, limits::kMinTessellation, limits::kMaxTessellation);
     readArray(ob, "rotation", &sc.object.rotationDegrees.x, 3);
     readArray(ob, "scale", &sc.object.scale.x, 3);
     sc.object.scale = glm::clamp(sc.object.scale, limits::kMinScale, limits::kMaxScale);

@@ -61,7 +61,10 @@ struct Scene
 };
 
 bool operator==(const Scene &a, const Scene &b);
-inline bool operator!=(const Scene &a, const Scene &b) { return !(a == b); }
+inline bool operator!=(const Scene &a, const Scene &b)
+{
+    return !(a == b);
+}
 
 // Limits shared by the panels and the command line.
 namespace limits {

@@ -13,7 +13,7 @@ namespace lb {
 
 namespace {
 glm::vec3 LightColors::*const kColourMembers[3] = {&LightColors::ia, &LightColors::id,
-                                                    &LightColors::is};
+                                                   &LightColors::is};
 }
 
 LightPanel::LightPanel(SceneDocument *document, QWidget *parent) : ScenePanel(document, parent)
@@ -46,10 +46,11 @@ LightPanel::LightPanel(SceneDocument *document, QWidget *parent) : ScenePanel(do
     });
     form->addRow(tr("Type"), m_w);
 
-    m_frame = makeCombo({tr("Camera: moves with the eye"), tr("World: fixed in the scene"),
-                         tr("Object: turns with the model")},
-                        tr("Frame lightPosition is given in. Camera: used as is (variant I); "
-                           "world: mView / mViewNormals (II); object: mModelView / mNormals (III)"));
+    m_frame =
+        makeCombo({tr("Camera: moves with the eye"), tr("World: fixed in the scene"),
+                   tr("Object: turns with the model")},
+                  tr("Frame lightPosition is given in. Camera: used as is (variant I); "
+                     "world: mView / mViewNormals (II); object: mModelView / mNormals (III)"));
     connect(m_frame, &QComboBox::currentIndexChanged, this,
             [this](int index) { edit([&](Scene &s) { s.light.frame = LightFrame(index); }); });
     form->addRow(tr("Frame"), m_frame);
@@ -60,7 +61,9 @@ LightPanel::LightPanel(SceneDocument *document, QWidget *parent) : ScenePanel(do
         auto *colour = new ColorEdit(symbols[i], this);
         colour->setToolTip(tr("%1 (%2): the light's %3 intensity")
                                .arg(symbols[i], uniforms[i],
-                                    i == 0 ? tr("ambient") : i == 1 ? tr("diffuse") : tr("specular")));
+                                    i == 0   ? tr("ambient")
+                                    : i == 1 ? tr("diffuse")
+                                             : tr("specular")));
         connect(colour, &ColorEdit::colorChanged, this, [this, i](const glm::vec3 &c) {
             edit([&](Scene &s) { s.light.colors.*kColourMembers[i] = c; });
         });
@@ -70,7 +73,8 @@ LightPanel::LightPanel(SceneDocument *document, QWidget *parent) : ScenePanel(do
 
     auto *reset = new QPushButton(tr("Reset light"), this);
     reset->setToolTip(tr("The slides' light: (0, 1.8, 1.3, 1) in world coordinates"));
-    connect(reset, &QPushButton::clicked, this, [this] { edit([](Scene &s) { s.light = Light{}; }); });
+    connect(reset, &QPushButton::clicked, this,
+            [this] { edit([](Scene &s) { s.light = Light{}; }); });
     form->addRow(reset);
     refreshNow();
 }

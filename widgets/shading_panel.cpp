@@ -3,12 +3,12 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QFormLayout>
+#include <QPushButton>
 #include <QSignalBlocker>
 
 namespace lb {
 
-ShadingPanel::ShadingPanel(SceneDocument *document, QWidget *parent)
-    : ScenePanel(document, parent)
+ShadingPanel::ShadingPanel(SceneDocument *document, QWidget *parent) : ScenePanel(document, parent)
 {
     auto *form = new QFormLayout(this);
     form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
@@ -43,8 +43,7 @@ ShadingPanel::ShadingPanel(SceneDocument *document, QWidget *parent)
         form->addRow(check);
         return check;
     };
-    m_lighting = makeCheck(tr("Lighting"),
-                           tr("uEnableLighting: off shows Kd unlit (key L)"),
+    m_lighting = makeCheck(tr("Lighting"), tr("uEnableLighting: off shows Kd unlit (key L)"),
                            &ShadingSettings::lighting);
     m_vertexColors = makeCheck(tr("Vertex colours"),
                                tr("Multiply ambient and diffuse by the vertex colour (vColor)"),
@@ -53,6 +52,12 @@ ShadingPanel::ShadingPanel(SceneDocument *document, QWidget *parent)
                           tr("uEnableTexture: multiply ambient and diffuse by the checker "
                              "texture (uSampler)"),
                           &ShadingSettings::texture);
+
+    auto *reset = new QPushButton(tr("Reset shading"), this);
+    reset->setToolTip(tr("Phong shading, Blinn-Phong specular, perspective, lighting on"));
+    connect(reset, &QPushButton::clicked, this,
+            [this] { edit([](Scene &s) { s.shading = ShadingSettings{}; }); });
+    form->addRow(reset);
     refreshNow();
 }
 

@@ -29,7 +29,10 @@ Viewport::Viewport(SceneDocument *document, QWidget *parent)
     syncAnimation();
 }
 
-Viewport::~Viewport() { releaseGl(); }
+Viewport::~Viewport()
+{
+    releaseGl();
+}
 
 void Viewport::releaseGl()
 {
@@ -84,7 +87,8 @@ void Viewport::mouseMoveEvent(QMouseEvent *event)
     m_lastMouse = now;
     if (event->buttons() & Qt::LeftButton) {
         m_document->edit([&](Scene &s) {
-            s.camera.orbit(-kDegreesPerPixel * float(delta.x()), kDegreesPerPixel * float(delta.y()));
+            s.camera.orbit(-kDegreesPerPixel * float(delta.x()),
+                           kDegreesPerPixel * float(delta.y()));
         });
     } else if (event->buttons() & (Qt::RightButton | Qt::MiddleButton)) {
         const float h = float(std::max(height(), 1));

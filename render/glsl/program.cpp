@@ -50,8 +50,10 @@ GLuint compile(QOpenGLExtraFunctions &gl, GLenum stage, const QString &source, Q
 const std::vector<std::pair<const char *, AttributeSlot>> &attributeBindings()
 {
     static const std::vector<std::pair<const char *, AttributeSlot>> bindings{
-        {"vPosition", kPositionSlot}, {"vNormal", kNormalSlot},
-        {"vColor", kColorSlot},       {"vTexCoord", kTexCoordSlot},
+        {"vPosition", kPositionSlot},
+        {"vNormal", kNormalSlot},
+        {"vColor", kColorSlot},
+        {"vTexCoord", kTexCoordSlot},
     };
     return bindings;
 }

@@ -12,7 +12,12 @@ namespace lb {
 
 // Fixed attribute slots, bound by name before linking so every program reads the renderer's
 // buffers the same way.
-enum AttributeSlot : GLuint { kPositionSlot = 0, kNormalSlot = 1, kColorSlot = 2, kTexCoordSlot = 3 };
+enum AttributeSlot : GLuint {
+    kPositionSlot = 0,
+    kNormalSlot = 1,
+    kColorSlot = 2,
+    kTexCoordSlot = 3
+};
 
 struct ProgramBuild
 {

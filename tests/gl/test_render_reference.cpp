@@ -63,8 +63,11 @@ Comparison compareWithReference(OffscreenRenderer &offscreen, const Scene &scene
                 c.worstAt = QPoint(x, y);
                 const QRgb g = frame.pixel(x, y);
                 c.worstText = QString("gpu (%1,%2,%3) reference (%4,%5,%6)")
-                                  .arg(qRed(g)).arg(qGreen(g)).arg(qBlue(g))
-                                  .arg(p.reference.r * 255).arg(p.reference.g * 255)
+                                  .arg(qRed(g))
+                                  .arg(qGreen(g))
+                                  .arg(qBlue(g))
+                                  .arg(p.reference.r * 255)
+                                  .arg(p.reference.g * 255)
                                   .arg(p.reference.b * 255);
             }
         }
@@ -110,14 +113,16 @@ private:
         const Comparison c = compareWithReference(m_offscreen, scene, frame);
         QVERIFY2(c.compared >= minCompared,
                  qPrintable(QString("only %1 pixels compared").arg(c.compared)));
-        qInfo("%d pixels compared (%d with a highlight), worst %d/255", c.compared,
-              c.withSpecular, c.worst);
+        qInfo("%d pixels compared (%d with a highlight), worst %d/255", c.compared, c.withSpecular,
+              c.worst);
         QVERIFY2(c.withSpecular >= minSpecular,
                  qPrintable(QString("only %1 pixels with a highlight").arg(c.withSpecular)));
         if (c.worst > kTolerance) {
             const QString path = saveForInspection(frame, name);
             QFAIL(qPrintable(QString("pixel (%1, %2) is off by %3/255: %4; frame in %5")
-                                 .arg(c.worstAt.x()).arg(c.worstAt.y()).arg(c.worst)
+                                 .arg(c.worstAt.x())
+                                 .arg(c.worstAt.y())
+                                 .arg(c.worst)
                                  .arg(c.worstText, path)));
         }
     }
@@ -141,12 +146,12 @@ private slots:
                 for (int fr = 0; fr < 3; ++fr)
                     for (float w : {0.0f, 1.0f})
                         for (int pr = 0; pr < 2; ++pr)
-                            QTest::newRow(qPrintable(
-                                QString("%1 %2 %3 w=%4 %5")
-                                    .arg(toName(Shading(sh)), toName(SpecularModel(sp)),
-                                         toName(LightFrame(fr)))
-                                    .arg(w)
-                                    .arg(toName(Projection(pr)))))
+                            QTest::newRow(
+                                qPrintable(QString("%1 %2 %3 w=%4 %5")
+                                               .arg(toName(Shading(sh)), toName(SpecularModel(sp)),
+                                                    toName(LightFrame(fr)))
+                                               .arg(w)
+                                               .arg(toName(Projection(pr)))))
                                 << sh << sp << fr << w << pr;
     }
 
@@ -162,8 +167,8 @@ private slots:
         s.shading.specular = SpecularModel(specular);
         s.shading.projection = Projection(projection);
         s.light.frame = LightFrame(frame);
-        s.light.position = w == 0.0f ? glm::vec4(1.0f, 1.5f, 2.0f, 0.0f)
-                                     : glm::vec4(1.5f, 2.0f, 2.5f, 1.0f);
+        s.light.position =
+            w == 0.0f ? glm::vec4(1.0f, 1.5f, 2.0f, 0.0f) : glm::vec4(1.5f, 2.0f, 2.5f, 1.0f);
         s.material.shininess = 20;
         expectMatch(s, QTest::currentDataTag(), 100, 3);
     }
@@ -225,8 +230,10 @@ private slots:
         s.shading.shading = Shading::Gouraud;
         const QImage gouraud = m_offscreen.render(s);
         const int diff = std::abs(qGreen(gouraud.pixel(peak)) - qGreen(phong.pixel(peak)));
-        QVERIFY2(diff >= 20, qPrintable(QString("only %1/255 apart at (%2, %3)")
-                                            .arg(diff).arg(peak.x()).arg(peak.y())));
+        QVERIFY2(
+            diff >= 20,
+            qPrintable(
+                QString("only %1/255 apart at (%2, %3)").arg(diff).arg(peak.x()).arg(peak.y())));
         // And each is what the reference says for its own mode there.
         const Mesh &mesh = m_offscreen.renderer().meshFor(s.object);
         for (Shading mode : {Shading::Phong, Shading::Gouraud}) {

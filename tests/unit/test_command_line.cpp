@@ -27,12 +27,13 @@ class TestCommandLine : public QObject
 private slots:
     void optionsReachTheScene()
     {
-        const Scene s = applied("--shape torus --tessellation 30 --shading gouraud --specular phong "
-                                "--frame camera --light 1,-2,3,0 --ia 0.1,0.2,0.3 --id 0,0,1 "
-                                "--is 0.5,0.5,0.5 --ka 0,1,0 --kd 1,1,0 --ks 0.2,0.2,0.2 "
-                                "--shininess 250 --projection orthographic --camera-orbit 30,-10 "
-                                "--model-rotate 10,20,30 --model-scale 2,1,0.5 --lighting off "
-                                "--vertex-colors on --texture on --show-light off");
+        const Scene s =
+            applied("--shape torus --tessellation 30 --shading gouraud --specular phong "
+                    "--frame camera --light 1,-2,3,0 --ia 0.1,0.2,0.3 --id 0,0,1 "
+                    "--is 0.5,0.5,0.5 --ka 0,1,0 --kd 1,1,0 --ks 0.2,0.2,0.2 "
+                    "--shininess 250 --projection orthographic --camera-orbit 30,-10 "
+                    "--model-rotate 10,20,30 --model-scale 2,1,0.5 --lighting off "
+                    "--vertex-colors on --texture on --show-light off");
         QCOMPARE(s.object.shape, Shape::Torus);
         QCOMPARE(s.object.tessellation, 30);
         QCOMPARE(s.shading.shading, Shading::Gouraud);
@@ -82,33 +83,60 @@ private slots:
     {
         QTest::addColumn<QString>("args");
         QTest::addColumn<QString>("named"); // what the message must name
-        QTest::newRow("missing number") << "--light 1,2,3" << "--light";
-        QTest::newRow("empty number") << "--ka 1,,0" << "--ka";
-        QTest::newRow("nan") << "--shininess nan" << "--shininess";
-        QTest::newRow("inf") << "--light inf,0,0,1" << "--light";
-        QTest::newRow("w = 0.5") << "--light 1,2,3,0.5" << "--light";
-        QTest::newRow("zero direction") << "--light 0,0,0,0" << "--light";
-        QTest::newRow("unknown shape") << "--shape teapot" << "--shape";
-        QTest::newRow("unknown shading") << "--shading flat" << "--shading";
-        QTest::newRow("unknown frame") << "--frame screen" << "--frame";
-        QTest::newRow("unknown specular") << "--specular cook" << "--specular";
-        QTest::newRow("unknown projection") << "--projection fisheye" << "--projection";
-        QTest::newRow("size 0") << "--render a.png --size 0x600" << "--size";
-        QTest::newRow("size 100000") << "--render a.png --size 100000x100000" << "--size";
-        QTest::newRow("size words") << "--size big" << "--size";
-        QTest::newRow("colour above 1") << "--id 2,0,0" << "--id";
-        QTest::newRow("negative colour") << "--is -1,0,0" << "--is";
-        QTest::newRow("shininess 0") << "--shininess 0" << "--shininess";
-        QTest::newRow("shininess 5000") << "--shininess 5000" << "--shininess";
-        QTest::newRow("scale 0") << "--model-scale 0,1,1" << "--model-scale";
-        QTest::newRow("pitch 120") << "--camera-orbit 0,120" << "--camera-orbit";
-        QTest::newRow("probe outside") << "--probe 800,10" << "--probe";
-        QTest::newRow("probe words") << "--probe a,b" << "--probe";
-        QTest::newRow("lighting maybe") << "--lighting maybe" << "--lighting";
-        QTest::newRow("tessellation 1") << "--tessellation 1" << "--tessellation";
-        QTest::newRow("unknown option") << "--teapot" << "teapot";
-        QTest::newRow("missing value") << "--shape" << "shape";
-        QTest::newRow("stray argument") << "sphere" << "sphere";
+        QTest::newRow("missing number") << "--light 1,2,3"
+                                        << "--light";
+        QTest::newRow("empty number") << "--ka 1,,0"
+                                      << "--ka";
+        QTest::newRow("nan") << "--shininess nan"
+                             << "--shininess";
+        QTest::newRow("inf") << "--light inf,0,0,1"
+                             << "--light";
+        QTest::newRow("w = 0.5") << "--light 1,2,3,0.5"
+                                 << "--light";
+        QTest::newRow("zero direction") << "--light 0,0,0,0"
+                                        << "--light";
+        QTest::newRow("unknown shape") << "--shape teapot"
+                                       << "--shape";
+        QTest::newRow("unknown shading") << "--shading flat"
+                                         << "--shading";
+        QTest::newRow("unknown frame") << "--frame screen"
+                                       << "--frame";
+        QTest::newRow("unknown specular") << "--specular cook"
+                                          << "--specular";
+        QTest::newRow("unknown projection") << "--projection fisheye"
+                                            << "--projection";
+        QTest::newRow("size 0") << "--render a.png --size 0x600"
+                                << "--size";
+        QTest::newRow("size 100000") << "--render a.png --size 100000x100000"
+                                     << "--size";
+        QTest::newRow("size words") << "--size big"
+                                    << "--size";
+        QTest::newRow("colour above 1") << "--id 2,0,0"
+                                        << "--id";
+        QTest::newRow("negative colour") << "--is -1,0,0"
+                                         << "--is";
+        QTest::newRow("shininess 0") << "--shininess 0"
+                                     << "--shininess";
+        QTest::newRow("shininess 5000") << "--shininess 5000"
+                                        << "--shininess";
+        QTest::newRow("scale 0") << "--model-scale 0,1,1"
+                                 << "--model-scale";
+        QTest::newRow("pitch 120") << "--camera-orbit 0,120"
+                                   << "--camera-orbit";
+        QTest::newRow("probe outside") << "--probe 800,10"
+                                       << "--probe";
+        QTest::newRow("probe words") << "--probe a,b"
+                                     << "--probe";
+        QTest::newRow("lighting maybe") << "--lighting maybe"
+                                        << "--lighting";
+        QTest::newRow("tessellation 1") << "--tessellation 1"
+                                        << "--tessellation";
+        QTest::newRow("unknown option") << "--teapot"
+                                        << "teapot";
+        QTest::newRow("missing value") << "--shape"
+                                       << "shape";
+        QTest::newRow("stray argument") << "sphere"
+                                        << "sphere";
     }
 
     void badValues()

@@ -88,21 +88,21 @@ private slots:
         QTest::addColumn<glm::vec4>("light");
         QTest::addColumn<glm::vec4>("expected");
         // Camera on +Z at distance 4, model turned 90 degrees about Y and scaled 2x along X.
-        QTest::newRow("camera point") << int(LightFrame::Camera) << glm::vec4(1, 2, 3, 1)
-                                      << glm::vec4(1, 2, 3, 1);
-        QTest::newRow("camera direction") << int(LightFrame::Camera) << glm::vec4(0, 1, 0, 0)
-                                          << glm::vec4(0, 1, 0, 0);
+        QTest::newRow("camera point")
+            << int(LightFrame::Camera) << glm::vec4(1, 2, 3, 1) << glm::vec4(1, 2, 3, 1);
+        QTest::newRow("camera direction")
+            << int(LightFrame::Camera) << glm::vec4(0, 1, 0, 0) << glm::vec4(0, 1, 0, 0);
         // World: the slides' light (0, 1.8, 1.3) seen from (0, 0, 4).
         QTest::newRow("world point") << int(LightFrame::World) << glm::vec4(0, 1.8f, 1.3f, 1)
                                      << glm::vec4(0, 1.8f, -2.7f, 1);
-        QTest::newRow("world direction") << int(LightFrame::World) << glm::vec4(0, 1, 1, 0)
-                                         << glm::vec4(0, 1, 1, 0);
+        QTest::newRow("world direction")
+            << int(LightFrame::World) << glm::vec4(0, 1, 1, 0) << glm::vec4(0, 1, 1, 0);
         // Object: x of the object points along -Z of the world after the turn, and is doubled.
-        QTest::newRow("object point") << int(LightFrame::Object) << glm::vec4(1, 0, 0, 1)
-                                      << glm::vec4(0, 0, -6, 1);
+        QTest::newRow("object point")
+            << int(LightFrame::Object) << glm::vec4(1, 0, 0, 1) << glm::vec4(0, 0, -6, 1);
         // A direction goes by the inverse transpose: the 2x scale halves it along that axis.
-        QTest::newRow("object direction") << int(LightFrame::Object) << glm::vec4(1, 0, 0, 0)
-                                          << glm::vec4(0, 0, -0.5f, 0);
+        QTest::newRow("object direction")
+            << int(LightFrame::Object) << glm::vec4(1, 0, 0, 0) << glm::vec4(0, 0, -0.5f, 0);
     }
 
     void lightInEye()
@@ -116,8 +116,8 @@ private slots:
         const Frames f = computeFrames(s, 1);
         const glm::vec4 eye = lb::lightInEye(f, light, LightFrame(frame));
         if (!near(eye, expected))
-            QFAIL(qPrintable(QString("got (%1, %2, %3, %4)")
-                                 .arg(eye.x).arg(eye.y).arg(eye.z).arg(eye.w)));
+            QFAIL(qPrintable(
+                QString("got (%1, %2, %3, %4)").arg(eye.x).arg(eye.y).arg(eye.z).arg(eye.w)));
     }
 
     void worldLightStaysInTheSceneWhenTheCameraOrbits()

@@ -34,9 +34,9 @@ private slots:
     void lightVectorForPointAndDirection()
     {
         const glm::vec3 p(0, 0, -4);
-        QVERIFY(near(lightVector({0, 0, 1, 0}, p), {0, 0, 1}));   // a direction: as given
-        QVERIFY(near(lightVector({0, 3, -4, 1}, p), {0, 1, 0}));  // a point: towards it
-        QVERIFY(near(lightVector({0, 0, 10, 0}, p), {0, 0, 1}));  // directions are normalised
+        QVERIFY(near(lightVector({0, 0, 1, 0}, p), {0, 0, 1}));  // a direction: as given
+        QVERIFY(near(lightVector({0, 3, -4, 1}, p), {0, 1, 0})); // a point: towards it
+        QVERIFY(near(lightVector({0, 0, 10, 0}, p), {0, 0, 1})); // directions are normalised
     }
 
     void viewVectorFollowsProjection()
@@ -49,10 +49,11 @@ private slots:
     {
         // Light, eye and normal all along +Z: N.L = N.H = R.V = 1.
         for (SpecularModel m : {SpecularModel::Phong, SpecularModel::Blinn}) {
-            const LightingTerms t = evaluateLighting({0, 0, -3}, {0, 0, 1}, inputs({0, 0, 1, 0}, m));
-            QVERIFY(near(t.ambient, glm::vec3(0.2f, 0, 0)));   // Ia * Ka
-            QVERIFY(near(t.diffuse, glm::vec3(0.7f, 0, 0)));   // Id * Kd
-            QVERIFY(near(t.specular, glm::vec3(1.0f)));        // Is * Ks * 1^n
+            const LightingTerms t =
+                evaluateLighting({0, 0, -3}, {0, 0, 1}, inputs({0, 0, 1, 0}, m));
+            QVERIFY(near(t.ambient, glm::vec3(0.2f, 0, 0))); // Ia * Ka
+            QVERIFY(near(t.diffuse, glm::vec3(0.7f, 0, 0))); // Id * Kd
+            QVERIFY(near(t.specular, glm::vec3(1.0f)));      // Is * Ks * 1^n
             QCOMPARE(t.nDotL, 1.0f);
         }
     }

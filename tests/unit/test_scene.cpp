@@ -97,9 +97,9 @@ private slots:
         const Mesh cube = makeCube();
         for (std::size_t t = 0; t < cube.triangleCount(); ++t) {
             const auto *i = &cube.indices[t * 3];
-            const glm::vec3 face = glm::normalize(
-                glm::cross(cube.positions[i[1]] - cube.positions[i[0]],
-                           cube.positions[i[2]] - cube.positions[i[0]]));
+            const glm::vec3 face =
+                glm::normalize(glm::cross(cube.positions[i[1]] - cube.positions[i[0]],
+                                          cube.positions[i[2]] - cube.positions[i[0]]));
             for (int k = 0; k < 3; ++k)
                 QVERIFY(std::abs(std::abs(glm::dot(face, cube.normals[i[k]])) - 1.0f) < 1e-5f);
         }

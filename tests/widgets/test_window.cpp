@@ -65,8 +65,8 @@ private:
 private slots:
     void init()
     {
-        m_settings = std::make_unique<QSettings>(m_dir.filePath("settings.ini"),
-                                                 QSettings::IniFormat);
+        m_settings =
+            std::make_unique<QSettings>(m_dir.filePath("settings.ini"), QSettings::IniFormat);
         m_settings->clear();
         m_window = std::make_unique<MainWindow>(*m_settings);
         m_window->show();
@@ -179,8 +179,8 @@ private slots:
             "orbit");
         QVERIFY(std::abs(scene().camera.yawDegrees - yaw) > 10.0f);
         const float distance = scene().camera.distance;
-        QWheelEvent wheel(QPointF(50, 50), v->mapToGlobal(QPointF(50, 50)), QPoint(), QPoint(0, 240),
-                          Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
+        QWheelEvent wheel(QPointF(50, 50), v->mapToGlobal(QPointF(50, 50)), QPoint(),
+                          QPoint(0, 240), Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
         QApplication::sendEvent(v, &wheel);
         QVERIFY(scene().camera.distance < distance);
         QTest::keyClick(m_window.get(), Qt::Key_R);
