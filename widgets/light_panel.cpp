@@ -6,7 +6,6 @@
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QHBoxLayout>
-#include <QPushButton>
 #include <QSignalBlocker>
 
 namespace lb {
@@ -71,11 +70,9 @@ LightPanel::LightPanel(SceneDocument *document, QWidget *parent) : ScenePanel(do
         form->addRow(symbols[i], colour);
     }
 
-    auto *reset = new QPushButton(tr("Reset light"), this);
-    reset->setToolTip(tr("The slides' light: (0, 1.8, 1.3, 1) in world coordinates"));
-    connect(reset, &QPushButton::clicked, this,
-            [this] { edit([](Scene &s) { s.light = Light{}; }); });
-    form->addRow(reset);
+    addResetButton(form, tr("Reset light"),
+                   tr("The slides' light: (0, 1.8, 1.3, 1) in world coordinates"),
+                   [](Scene &s) { s.light = Light{}; });
     refreshNow();
 }
 

@@ -5,7 +5,6 @@
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QHBoxLayout>
-#include <QPushButton>
 #include <QSignalBlocker>
 #include <QSlider>
 
@@ -64,11 +63,9 @@ MaterialPanel::MaterialPanel(SceneDocument *document, QWidget *parent)
     row->addWidget(m_box);
     form->addRow(tr("Shininess"), row);
 
-    auto *reset = new QPushButton(tr("Reset material"), this);
-    reset->setToolTip(tr("The slides' red plastic: Ka = Kd = (1, 0, 0), Ks = (1, 1, 1), n = 6"));
-    connect(reset, &QPushButton::clicked, this,
-            [this] { edit([](Scene &s) { s.material = Material{}; }); });
-    form->addRow(reset);
+    addResetButton(form, tr("Reset material"),
+                   tr("The slides' red plastic: Ka = Kd = (1, 0, 0), Ks = (1, 1, 1), n = 6"),
+                   [](Scene &s) { s.material = Material{}; });
     refreshNow();
 }
 

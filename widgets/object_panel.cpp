@@ -5,7 +5,6 @@
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QHBoxLayout>
-#include <QPushButton>
 #include <QSignalBlocker>
 #include <QSpinBox>
 
@@ -65,10 +64,9 @@ ObjectPanel::ObjectPanel(SceneDocument *document, QWidget *parent) : ScenePanel(
             [this](bool on) { edit([&](Scene &s) { s.object.autoRotate = on; }); });
     form->addRow(m_autoRotate);
 
-    auto *reset = new QPushButton(tr("Reset object"), this);
-    connect(reset, &QPushButton::clicked, this,
-            [this] { edit([](Scene &s) { s.object = ObjectSettings{}; }); });
-    form->addRow(reset);
+    addResetButton(form, tr("Reset object"),
+                   tr("The coarse unit sphere, untransformed, not rotating"),
+                   [](Scene &s) { s.object = ObjectSettings{}; });
     refreshNow();
 }
 

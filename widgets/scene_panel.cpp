@@ -2,6 +2,8 @@
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QPushButton>
 
 namespace lb {
 
@@ -30,6 +32,15 @@ QComboBox *ScenePanel::makeCombo(const QStringList &labels, const QString &toolT
     combo->addItems(labels);
     combo->setToolTip(toolTip);
     return combo;
+}
+
+void ScenePanel::addResetButton(QFormLayout *form, const QString &text, const QString &toolTip,
+                                std::function<void(Scene &)> reset)
+{
+    auto *button = new QPushButton(text, this);
+    button->setToolTip(toolTip);
+    connect(button, &QPushButton::clicked, this, [this, reset] { m_document->edit(reset); });
+    form->addRow(button);
 }
 
 } // namespace lb

@@ -6,8 +6,11 @@
 
 #include <QWidget>
 
+#include <functional>
+
 class QDoubleSpinBox;
 class QComboBox;
+class QFormLayout;
 
 namespace lb {
 
@@ -27,6 +30,9 @@ protected:
     QDoubleSpinBox *makeSpin(double lo, double hi, int decimals, double step,
                              const QString &toolTip);
     QComboBox *makeCombo(const QStringList &labels, const QString &toolTip);
+    // A "Reset ..." button at the bottom of the panel that applies `reset` to the scene.
+    void addResetButton(QFormLayout *form, const QString &text, const QString &toolTip,
+                        std::function<void(Scene &)> reset);
 
     SceneDocument *m_document;
 };

@@ -3,7 +3,6 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QFormLayout>
-#include <QPushButton>
 #include <QSignalBlocker>
 
 namespace lb {
@@ -53,11 +52,9 @@ ShadingPanel::ShadingPanel(SceneDocument *document, QWidget *parent) : ScenePane
                              "texture (uSampler)"),
                           &ShadingSettings::texture);
 
-    auto *reset = new QPushButton(tr("Reset shading"), this);
-    reset->setToolTip(tr("Phong shading, Blinn-Phong specular, perspective, lighting on"));
-    connect(reset, &QPushButton::clicked, this,
-            [this] { edit([](Scene &s) { s.shading = ShadingSettings{}; }); });
-    form->addRow(reset);
+    addResetButton(form, tr("Reset shading"),
+                   tr("Phong shading, Blinn-Phong specular, perspective, lighting on"),
+                   [](Scene &s) { s.shading = ShadingSettings{}; });
     refreshNow();
 }
 

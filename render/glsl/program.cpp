@@ -6,22 +6,28 @@ namespace lb {
 
 namespace {
 
+// Reads an info log of `length` bytes (terminator included) through `read`.
+template <typename Read> QString infoLog(GLint length, Read read)
+{
+    QByteArray log(std::max(length, 1), '\0');
+    read(GLsizei(log.size()), log.data());
+    return QString::fromUtf8(log.constData()).trimmed();
+}
+
 QString shaderLog(QOpenGLExtraFunctions &gl, GLuint shader)
 {
     GLint length = 0;
     gl.glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
-    QByteArray log(std::max(length, 1), '\0');
-    gl.glGetShaderInfoLog(shader, length, nullptr, log.data());
-    return QString::fromUtf8(log.constData()).trimmed();
+    return infoLog(length,
+                   [&](GLsizei n, char *buf) { gl.glGetShaderInfoLog(shader, n, nullptr, buf); });
 }
 
 QString programLog(QOpenGLExtraFunctions &gl, GLuint program)
 {
     GLint length = 0;
     gl.glGetProgramiv(program, GL_INFO_LOG_LENGTH, &length);
-    QByteArray log(std::max(length, 1), '\0');
-    gl.glGetProgramInfoLog(program, length, nullptr, log.data());
-    return QString::fromUtf8(log.constData()).trimmed();
+    return infoLog(length,
+                   [&](GLsizei n, char *buf) { gl.glGetProgramInfoLog(program, n, nullptr, buf); });
 }
 
 // Returns the shader, or 0 with the log appended to `log`.
