@@ -75,7 +75,10 @@ MainWindow::MainWindow(QSettings &settings, QWidget *parent)
     connect(&m_saveTimer, &QTimer::timeout, this, &MainWindow::saveSettings);
     connect(&m_document, &SceneDocument::changed, this, [this] {
         updateStatus();
-        m_saveTimer.start();
+        // Not restarted on every change: auto-rotate edits the scene 60 times a second,
+        // and a timer restarted that often would never fire.
+        if (!m_saveTimer.isActive())
+            m_saveTimer.start();
     });
     updateStatus();
 }

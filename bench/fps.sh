@@ -9,7 +9,7 @@ RUNS=${1:-7}
 FRAMES=${2:-30}
 if [[ -z "${LIGHTBENCH_IN_XVFB:-}" ]]; then
     ensure_packages
-    build -DBUILD_TESTING=OFF >/dev/null
+    build lightbench >/dev/null
     # One Xvfb for every case, so that they are measured side by side.
     LIGHTBENCH_IN_XVFB=1 exec xvfb-run -a -s "$XVFB_SCREEN" bash "$0" "$RUNS" "$FRAMES"
 fi

@@ -26,9 +26,10 @@ ensure_packages() {
         "${missing[@]}" >&2
 }
 
+# build [TARGET]: configures once (tests included) and builds TARGET, or everything.
 build() {
-    cmake -S "$ROOT" -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null
-    cmake --build "$BUILD_DIR" -j"$(nproc)"
+    cmake -S "$ROOT" -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=ON >/dev/null
+    cmake --build "$BUILD_DIR" -j"$(nproc)" ${1:+--target "$1"}
 }
 
 # Qt warns on every start without a runtime directory (containers, CI); give it a private one.

@@ -143,10 +143,12 @@ private slots:
         QCOMPARE(scene().object.tessellation, 64);
     }
 
-    void autoRotateTurnsTheModel()
+    void autoRotateTurnsTheModelAndTheSessionIsStillSaved()
     {
         m_window->objectPanel()->autoRotateCheck()->setChecked(true);
         QTRY_VERIFY(scene().object.rotationDegrees.y > 3.0f);
+        // While it turns, the scene still reaches the settings (a kill loses little).
+        QTRY_VERIFY(m_settings->value("scene").toByteArray().contains("\"autoRotate\": true"));
         m_window->objectPanel()->autoRotateCheck()->setChecked(false);
     }
 
