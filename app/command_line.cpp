@@ -1,6 +1,7 @@
 #include "command_line.h"
 
 #include <QCommandLineParser>
+#include <QFile>
 
 #include <cmath>
 
@@ -120,7 +121,20 @@ const OptionSpec kOptions[] = {
     {"show-light", "on|off", "Draw the light's marker."},
     {"screenshot", "FILE.png", "Open the window, save a screenshot once it has drawn, exit."},
     {"bench-frames", "N", "Draw N frames offscreen and print the frame rate as JSON."},
+    {"vertex", "FILE", "Vertex shader to draw with instead of the built-in one (with --fragment)."},
+    {"fragment", "FILE", "Fragment shader to draw with (with --vertex)."},
+    {"check", "",
+     "Compile and link --vertex and --fragment, print each diagnostic as "
+     "FILE:LINE:COLUMN: error|warning: message; exit 0 if it links, 1 if not."},
 };
+
+QString readShader(const char *option, const QString &path)
+{
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly))
+        fail(option, QString("cannot read '%1': %2").arg(path, file.errorString()));
+    return QString::fromUtf8(file.readAll());
+}
 
 void parseInto(const QCommandLineParser &parser, CommandLine &cl)
 {
@@ -147,6 +161,17 @@ void parseInto(const QCommandLineParser &parser, CommandLine &cl)
         cl.screenshotPath = value("screenshot");
     if (given("bench-frames"))
         cl.benchFrames = integer("bench-frames", value("bench-frames"), 1, 100000);
+    if (given("vertex") != given("fragment"))
+        fail(given("vertex") ? "vertex" : "fragment", "--vertex and --fragment go together");
+    if (given("vertex")) {
+        cl.vertexPath = value("vertex");
+        cl.fragmentPath = value("fragment");
+        cl.vertexSource = readShader("vertex", cl.vertexPath);
+        cl.fragmentSource = readShader("fragment", cl.fragmentPath);
+    }
+    cl.check = given("check");
+    if (cl.check && !cl.hasUserProgram())
+        fail("check", "needs --vertex FILE and --fragment FILE");
 
     if (given("shape")) {
         const Shape v = word("shape", value("shape"), parseShape, shapeNames());

@@ -25,8 +25,13 @@ struct CommandLine
     QSize size{800, 600};        // --size WxH
     QString screenshotPath;      // --screenshot FILE.png (window mode: grab and quit)
     int benchFrames = 0;         // --bench-frames N (headless timing)
+    // --vertex FILE --fragment FILE: the user's program instead of the built-in pair.
+    QString vertexPath, fragmentPath;
+    QString vertexSource, fragmentSource;
+    bool check = false; // --check: compile and link them, print diagnostics, exit 0 or 1
 
-    bool headless() const { return !renderPath.isEmpty() || probe || benchFrames > 0; }
+    bool hasUserProgram() const { return !vertexPath.isEmpty(); }
+    bool headless() const { return !renderPath.isEmpty() || probe || benchFrames > 0 || check; }
     void applyTo(Scene &scene) const;
 };
 

@@ -1,5 +1,6 @@
 #include "headless.h"
 
+#include "glsl/diagnostics.h"
 #include "offscreen.h"
 
 #include <QElapsedTimer>
@@ -74,12 +75,31 @@ QJsonObject probeJson(const ProbeResult &probe, const QImage &frame, QPoint pixe
     return o;
 }
 
+QString formatDiagnostic(const Diagnostic &d, const CommandLine &cl)
+{
+    // Link messages belong to both files; they are given on the vertex shader's name.
+    const QString &file = d.stage == ShaderStage::Fragment ? cl.fragmentPath : cl.vertexPath;
+    const QString prefix = d.stage == ShaderStage::Link ? "link: " : "";
+    return QString("%1:%2:%3: %4: %5%6")
+        .arg(file)
+        .arg(d.line)
+        .arg(d.column)
+        .arg(d.severity == Diagnostic::Severity::Error ? "error" : "warning", prefix, d.message);
+}
+
 int runHeadless(const CommandLine &cl, const Scene &scene)
 {
     OffscreenRenderer offscreen;
     if (const QString error = offscreen.initialize(cl.size); !error.isEmpty()) {
         printLine("lightbench: " + error.toUtf8(), stderr);
         return 1;
+    }
+    if (cl.hasUserProgram()) {
+        const ProgramBuild build = offscreen.useProgram(cl.vertexSource, cl.fragmentSource);
+        for (const Diagnostic &d : build.diagnostics)
+            printLine(formatDiagnostic(d, cl).toUtf8(), cl.check ? stdout : stderr);
+        if (cl.check || !build.ok())
+            return build.ok() ? 0 : 1;
     }
 
     if (cl.benchFrames > 0) {

@@ -2,6 +2,7 @@
 // --render, --probe and --bench-frames: one offscreen frame (or many), no window.
 
 #include "command_line.h"
+#include "glsl/diagnostics.h"
 #include "probe.h"
 
 #include <QImage>
@@ -9,10 +10,14 @@
 
 namespace lb {
 
-// Returns the process exit code: 0 done, 1 when OpenGL or writing the file failed.
+// Returns the process exit code: 0 done; 1 when OpenGL, the user's program (--vertex,
+// --fragment) or writing the file failed, and for --check when the program does not link.
 int runHeadless(const CommandLine &commandLine, const Scene &scene);
 
 // The probe's JSON for one pixel: what the GPU drew beside what the reference says.
+// FILE:LINE:COLUMN: error|warning: message (column 0 when the driver gives none).
+QString formatDiagnostic(const Diagnostic &diagnostic, const CommandLine &commandLine);
+
 QJsonObject probeJson(const ProbeResult &probe, const QImage &frame, QPoint pixel,
                       const Scene &scene);
 

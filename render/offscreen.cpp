@@ -57,6 +57,13 @@ QImage OffscreenRenderer::render(const Scene &scene)
     return image.convertToFormat(QImage::Format_RGB32);
 }
 
+ProgramBuild OffscreenRenderer::useProgram(const QString &vertexSource,
+                                           const QString &fragmentSource)
+{
+    m_context.makeCurrent(&m_surface);
+    return m_renderer.setUserProgram(vertexSource, fragmentSource);
+}
+
 void OffscreenRenderer::renderFrames(const Scene &scene, int frames)
 {
     m_context.makeCurrent(&m_surface);

@@ -26,6 +26,8 @@ public:
     // Returns an empty string on success, or why there is no OpenGL.
     QString initialize(QSize size);
     QImage render(const Scene &scene);
+    // Draws the object with the user's program from now on, if it links (Renderer).
+    ProgramBuild useProgram(const QString &vertexSource, const QString &fragmentSource);
     // Draws `frames` frames and waits for the GPU; for the benchmarks.
     void renderFrames(const Scene &scene, int frames);
     Renderer &renderer() { return m_renderer; }

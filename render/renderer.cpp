@@ -23,16 +23,6 @@ QString readResource(const QString &path)
     return QString::fromUtf8(f.readAll());
 }
 
-// Builds a built-in program from shaders/ (compiled into the resources).
-GLuint builtInProgram(QOpenGLExtraFunctions &gl, const QString &name, QString &error)
-{
-    const ProgramBuild build = buildProgram(gl, readResource(":/shaders/" + name + ".vert"),
-                                            readResource(":/shaders/" + name + ".frag"));
-    if (!build.ok())
-        error += "built-in shader '" + name + "' failed: " + build.log + '\n';
-    return build.program;
-}
-
 // A marker's matrix in eye space: +Z of the arrow along `forward`, starting at `origin`.
 glm::mat4 orientAlong(const glm::vec3 &origin, const glm::vec3 &forward, float length)
 {
@@ -53,9 +43,9 @@ QString Renderer::initialize()
 {
     initializeOpenGLFunctions();
     QString error;
-    m_gouraud = builtInProgram(*this, "gouraud", error);
-    m_phong = builtInProgram(*this, "phong", error);
-    m_unlit = builtInProgram(*this, "unlit", error);
+    m_gouraud = builtIn("gouraud", error);
+    m_phong = builtIn("phong", error);
+    m_unlit = builtIn("unlit", error);
     if (!error.isEmpty())
         return error;
 
@@ -86,12 +76,53 @@ void Renderer::cleanup()
     destroy(m_markerSphere);
     destroy(m_markerArrow);
     m_objectUploaded = false;
-    glDeleteProgram(m_gouraud);
-    glDeleteProgram(m_phong);
-    glDeleteProgram(m_unlit);
+    for (Program *p : {&m_gouraud, &m_phong, &m_unlit, &m_user})
+        release(*p);
     glDeleteTextures(1, &m_texture);
-    m_gouraud = m_phong = m_unlit = m_texture = 0;
+    m_texture = 0;
     m_initialized = false;
+}
+
+Renderer::Program Renderer::builtIn(const QString &name, QString &error)
+{
+    ProgramBuild build = buildProgram(*this, readResource(":/shaders/" + name + ".vert"),
+                                      readResource(":/shaders/" + name + ".frag"));
+    if (!build.ok())
+        error += "built-in shader '" + name + "' failed:\n" + build.log();
+    return Program{build.program, std::move(build.uniforms)};
+}
+
+void Renderer::release(Program &program)
+{
+    glDeleteProgram(program.id);
+    program = Program{};
+}
+
+ProgramBuild Renderer::setUserProgram(const QString &vertexSource, const QString &fragmentSource)
+{
+    ProgramBuild build = buildProgram(*this, vertexSource, fragmentSource);
+    if (build.ok()) {
+        release(m_user);
+        m_user = Program{build.program, build.uniforms};
+    }
+    return build;
+}
+
+void Renderer::clearUserProgram()
+{
+    release(m_user);
+}
+
+const Renderer::Program &Renderer::objectProgram(const Scene &scene) const
+{
+    if (m_user.id)
+        return m_user;
+    return scene.shading.shading == Shading::Gouraud ? m_gouraud : m_phong;
+}
+
+const std::vector<ActiveUniform> &Renderer::activeUniforms(const Scene &scene) const
+{
+    return objectProgram(scene).uniforms;
 }
 
 const Mesh &Renderer::meshFor(const ObjectSettings &object)
@@ -107,12 +138,18 @@ const Mesh &Renderer::meshFor(const ObjectSettings &object)
 
 void Renderer::upload(GpuMesh &gpu, const Mesh &mesh)
 {
+    // Normals go up with w = 0, so a shader that declares vNormal as vec4 (the slides do)
+    // reads a direction; positions go up as vec3 and GL supplies w = 1.
+    std::vector<glm::vec4> normals;
+    normals.reserve(mesh.normals.size());
+    for (const glm::vec3 &n : mesh.normals)
+        normals.emplace_back(n, 0.0f);
     if (!gpu.vao.isCreated())
         gpu.vao.create();
     gpu.vao.bind();
-    const void *data[4] = {mesh.positions.data(), mesh.normals.data(), mesh.colors.data(),
+    const void *data[4] = {mesh.positions.data(), normals.data(), mesh.colors.data(),
                            mesh.uvs.data()};
-    const int sizes[4] = {3, 3, 3, 2};
+    const int sizes[4] = {3, 4, 3, 2};
     const GLuint locations[4] = {kPositionSlot, kNormalSlot, kColorSlot, kTexCoordSlot};
     for (int i = 0; i < 4; ++i) {
         QOpenGLBuffer &buffer = gpu.attributes[std::size_t(i)];
@@ -147,36 +184,101 @@ void Renderer::draw(GpuMesh &gpu)
     gpu.vao.release();
 }
 
-void Renderer::setLightingUniforms(GLuint program, const Scene &scene, const Frames &frames)
+void Renderer::setUniforms(const Program &program, const Scene &scene, const Frames &frames)
 {
-    auto loc = [&](const char *name) { return glGetUniformLocation(program, name); };
-    auto mat4 = [&](const char *name, const glm::mat4 &m) {
-        glUniformMatrix4fv(loc(name), 1, GL_FALSE, glm::value_ptr(m));
+    // Each value goes out in the type the shader declared: a normal matrix declared mat3
+    // (the exercise's uNormalMatrix) gets the upper 3x3, a vec3 light position gets xyz.
+    auto matrix = [this](const ActiveUniform &u, const glm::mat4 &m) {
+        if (u.type == GL_FLOAT_MAT4)
+            glUniformMatrix4fv(u.location, 1, GL_FALSE, glm::value_ptr(m));
+        else if (u.type == GL_FLOAT_MAT3)
+            glUniformMatrix3fv(u.location, 1, GL_FALSE, glm::value_ptr(glm::mat3(m)));
     };
-    auto vec3 = [&](const char *name, const glm::vec3 &v) {
-        glUniform3fv(loc(name), 1, glm::value_ptr(v));
+    auto vector = [this](const ActiveUniform &u, const glm::vec4 &v) {
+        if (u.type == GL_FLOAT_VEC4)
+            glUniform4fv(u.location, 1, glm::value_ptr(v));
+        else if (u.type == GL_FLOAT_VEC3)
+            glUniform3fv(u.location, 1, glm::value_ptr(v));
+        else if (u.type == GL_FLOAT)
+            glUniform1f(u.location, v.x);
     };
-    mat4("mModelView", frames.modelView);
-    mat4("mNormals", frames.normals);
-    mat4("mView", frames.view);
-    mat4("mViewNormals", frames.viewNormals);
-    mat4("mProjection", frames.projection);
-
-    glUniform4fv(loc("lightPosition"), 1, glm::value_ptr(scene.light.position));
-    glUniform1i(loc("uLightFrame"), int(scene.light.frame));
-    vec3("lightAmb", scene.light.colors.ia);
-    vec3("lightDif", scene.light.colors.id);
-    vec3("lightSpe", scene.light.colors.is);
-    vec3("materialAmb", scene.material.ka);
-    vec3("materialDif", scene.material.kd);
-    vec3("materialSpe", scene.material.ks);
-    glUniform1f(loc("shininess"), scene.material.shininess);
-    glUniform1i(loc("uSpecularModel"), scene.shading.specular == SpecularModel::Blinn ? 1 : 0);
-    glUniform1i(loc("uProjection"), scene.shading.projection == Projection::Perspective ? 0 : 1);
-    glUniform1i(loc("uEnableLighting"), scene.shading.lighting);
-    glUniform1i(loc("uEnableVertexColor"), scene.shading.vertexColors);
-    glUniform1i(loc("uEnableTexture"), scene.shading.texture);
-    glUniform1i(loc("uSampler"), 0);
+    auto number = [this](const ActiveUniform &u, int v) {
+        if (u.type == GL_FLOAT)
+            glUniform1f(u.location, float(v));
+        else if (u.type == GL_INT || u.type == GL_BOOL || u.type == GL_SAMPLER_2D)
+            glUniform1i(u.location, v);
+    };
+    const Light &light = scene.light;
+    const Material &material = scene.material;
+    for (const ActiveUniform &u : program.uniforms) {
+        if (!u.semantic)
+            continue;
+        switch (*u.semantic) {
+        case Semantic::ModelView:
+            matrix(u, frames.modelView);
+            break;
+        case Semantic::Normals:
+            matrix(u, frames.normals);
+            break;
+        case Semantic::View:
+            matrix(u, frames.view);
+            break;
+        case Semantic::ViewNormals:
+            matrix(u, frames.viewNormals);
+            break;
+        case Semantic::Projection:
+            matrix(u, frames.projection);
+            break;
+        case Semantic::LightPosition:
+            vector(u, light.position);
+            break;
+        case Semantic::LightPositionEye:
+            vector(u, lightInEye(frames, light.position, light.frame));
+            break;
+        case Semantic::LightAmbient:
+            vector(u, glm::vec4(light.colors.ia, 1.0f));
+            break;
+        case Semantic::LightDiffuse:
+            vector(u, glm::vec4(light.colors.id, 1.0f));
+            break;
+        case Semantic::LightSpecular:
+            vector(u, glm::vec4(light.colors.is, 1.0f));
+            break;
+        case Semantic::MaterialAmbient:
+            vector(u, glm::vec4(material.ka, 1.0f));
+            break;
+        case Semantic::MaterialDiffuse:
+            vector(u, glm::vec4(material.kd, 1.0f));
+            break;
+        case Semantic::MaterialSpecular:
+            vector(u, glm::vec4(material.ks, 1.0f));
+            break;
+        case Semantic::Shininess:
+            vector(u, glm::vec4(material.shininess));
+            break;
+        case Semantic::LightFrame:
+            number(u, int(light.frame));
+            break;
+        case Semantic::SpecularModel:
+            number(u, scene.shading.specular == SpecularModel::Blinn ? 1 : 0);
+            break;
+        case Semantic::ProjectionKind:
+            number(u, scene.shading.projection == Projection::Perspective ? 0 : 1);
+            break;
+        case Semantic::EnableLighting:
+            number(u, scene.shading.lighting);
+            break;
+        case Semantic::EnableVertexColor:
+            number(u, scene.shading.vertexColors);
+            break;
+        case Semantic::EnableTexture:
+            number(u, scene.shading.texture);
+            break;
+        case Semantic::Sampler:
+            number(u, 0);
+            break;
+        }
+    }
 }
 
 void Renderer::drawLightMarker(const Scene &scene, const Frames &frames)
@@ -199,12 +301,12 @@ void Renderer::drawLightMarker(const Scene &scene, const Frames &frames)
     const float peak = glm::max(id.x, glm::max(id.y, id.z));
     const glm::vec3 colour = peak > 0.0f ? id / peak : glm::vec3(1.0f);
 
-    glUseProgram(m_unlit);
-    glUniformMatrix4fv(glGetUniformLocation(m_unlit, "mModelView"), 1, GL_FALSE,
+    glUseProgram(m_unlit.id);
+    glUniformMatrix4fv(glGetUniformLocation(m_unlit.id, "mModelView"), 1, GL_FALSE,
                        glm::value_ptr(modelView));
-    glUniformMatrix4fv(glGetUniformLocation(m_unlit, "mProjection"), 1, GL_FALSE,
+    glUniformMatrix4fv(glGetUniformLocation(m_unlit.id, "mProjection"), 1, GL_FALSE,
                        glm::value_ptr(frames.projection));
-    glUniform3fv(glGetUniformLocation(m_unlit, "uColor"), 1, glm::value_ptr(colour));
+    glUniform3fv(glGetUniformLocation(m_unlit.id, "uColor"), 1, glm::value_ptr(colour));
     draw(*marker);
 }
 
@@ -225,9 +327,9 @@ void Renderer::render(const Scene &scene, QSize pixels)
     glDepthFunc(GL_LESS);
 
     const Frames frames = computeFrames(scene, float(pixels.width()) / float(pixels.height()));
-    const GLuint program = scene.shading.shading == Shading::Gouraud ? m_gouraud : m_phong;
-    glUseProgram(program);
-    setLightingUniforms(program, scene, frames);
+    const Program &program = objectProgram(scene);
+    glUseProgram(program.id);
+    setUniforms(program, scene, frames);
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, m_texture);
     draw(m_object);

@@ -4,6 +4,7 @@
 
 #include "checker_texture.h"
 #include "frames.h"
+#include "glsl/program.h"
 #include "mesh.h"
 #include "scene.h"
 
@@ -34,6 +35,15 @@ public:
     // Draws into the bound framebuffer, which is `pixels` large.
     void render(const Scene &scene, QSize pixels);
 
+    // Builds a program from the user's sources. When it links it replaces the user program
+    // (the object is drawn with it instead of the built-in pair); when it does not, whatever
+    // drew before keeps drawing. Returns the build with its diagnostics either way.
+    ProgramBuild setUserProgram(const QString &vertexSource, const QString &fragmentSource);
+    void clearUserProgram();
+    bool hasUserProgram() const { return m_user.id != 0; }
+    // The active uniforms of the program that draws the object for `scene`.
+    const std::vector<ActiveUniform> &activeUniforms(const Scene &scene) const;
+
     // The CPU mesh of the scene's object, as drawn (built when the shape changes).
     const Mesh &meshFor(const ObjectSettings &object);
     const CheckerTexture &checkerTexture() const { return m_checker; }
@@ -50,11 +60,19 @@ private:
     void upload(GpuMesh &gpu, const Mesh &mesh);
     void destroy(GpuMesh &gpu);
     void draw(GpuMesh &gpu);
-    void setLightingUniforms(GLuint program, const Scene &scene, const Frames &frames);
+    struct Program
+    {
+        GLuint id = 0;
+        std::vector<ActiveUniform> uniforms;
+    };
+    Program builtIn(const QString &name, QString &error);
+    void release(Program &program);
+    const Program &objectProgram(const Scene &scene) const;
+    void setUniforms(const Program &program, const Scene &scene, const Frames &frames);
     void drawLightMarker(const Scene &scene, const Frames &frames);
 
     bool m_initialized = false;
-    GLuint m_gouraud = 0, m_phong = 0, m_unlit = 0;
+    Program m_gouraud, m_phong, m_unlit, m_user;
     GLuint m_texture = 0;
     CheckerTexture m_checker;
 

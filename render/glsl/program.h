@@ -1,11 +1,15 @@
 #pragma once
 // Building a GLSL program with raw GL calls. QOpenGLShader rewrites the source it is given
-// (design.md), so user and built-in shaders alike go to glShaderSource untouched.
+// (design.md), so user and built-in shaders alike go to glShaderSource as prepareSource()
+// leaves them (dialect.h), and the driver's messages come back on the user's lines.
+
+#include "diagnostics.h"
+#include "semantics.h"
 
 #include <QOpenGLExtraFunctions>
 #include <QString>
 
-#include <utility>
+#include <optional>
 #include <vector>
 
 namespace lb {
@@ -19,17 +23,37 @@ enum AttributeSlot : GLuint {
     kTexCoordSlot = 3
 };
 
-struct ProgramBuild
+struct ActiveUniform
 {
-    GLuint program = 0; // 0 when compiling or linking failed
-    QString log;        // the driver's messages, stage by stage
-    bool ok() const { return program != 0; }
+    QString name; // without "[0]"
+    GLenum type = 0;
+    GLint size = 1; // array length
+    GLint location = -1;
+    std::optional<Semantic> semantic;
 };
 
-// The attribute names bound to each slot (the slides' names first).
-const std::vector<std::pair<const char *, AttributeSlot>> &attributeBindings();
+struct ProgramBuild
+{
+    GLuint program = 0; // 0 when compiling or linking failed; the caller owns it otherwise
+    std::vector<Diagnostic> diagnostics;
+    std::vector<ActiveUniform> uniforms; // the linked program's active uniforms
+    bool ok() const { return program != 0; }
+    bool hasErrors() const;
+    QString log() const; // the diagnostics as text, one per line
+};
 
-// Compiles both stages and links them. The caller owns the returned program.
+// The names bound to each slot: the slides', the exercise's and common generic ones.
+struct AttributeBinding
+{
+    const char *name;
+    AttributeSlot slot;
+};
+const std::vector<AttributeBinding> &attributeBindings();
+
+// Longer sources are refused with a message rather than handed to the driver.
+constexpr int kMaxSourceCharacters = 1024 * 1024;
+
+// Compiles both stages and links them.
 ProgramBuild buildProgram(QOpenGLExtraFunctions &gl, const QString &vertexSource,
                           const QString &fragmentSource);
 

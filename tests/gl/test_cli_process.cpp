@@ -97,6 +97,36 @@ private slots:
         QVERIFY(r.err.contains("display"));
     }
 
+    void checkPrintsFileLineColumn()
+    {
+        const QString vert = m_dir.filePath("ok.vert"), frag = m_dir.filePath("bad.frag");
+        QFile v(vert), f(frag);
+        QVERIFY(v.open(QIODevice::WriteOnly) && f.open(QIODevice::WriteOnly));
+        v.write("attribute vec4 vPosition;\nvoid main() { gl_Position = vPosition; }\n");
+        f.write("precision mediump float;\nvoid main() {\n  gl_FragColor = vec4(undeclared);\n}\n");
+        v.close();
+        f.close();
+        const Run bad = run({"--check", "--vertex", vert, "--fragment", frag});
+        QCOMPARE(bad.exitCode, 1);
+        QVERIFY2(bad.out.startsWith((frag + ":3:").toUtf8()), bad.out.constData());
+        QVERIFY(bad.out.contains(": error: "));
+        // The same program for --render: no image, the diagnostics on stderr, exit 1.
+        const QString png = m_dir.filePath("user.png");
+        const Run render = run({"--render", png, "--vertex", vert, "--fragment", frag});
+        QCOMPARE(render.exitCode, 1);
+        QVERIFY(render.err.contains((frag + ":3:").toUtf8()));
+        QVERIFY(!QFile::exists(png));
+
+        QVERIFY(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
+        f.write("precision mediump float;\nvoid main() { gl_FragColor = vec4(1.0); }\n");
+        f.close();
+        const Run good = run({"--check", "--vertex", vert, "--fragment", frag});
+        QCOMPARE(good.exitCode, 0);
+        QVERIFY2(good.out.isEmpty(), good.out.constData());
+        QCOMPARE(run({"--render", png, "--vertex", vert, "--fragment", frag}).exitCode, 0);
+        QVERIFY(QFile::exists(png));
+    }
+
     void helpExitsWithZero()
     {
         const Run r = run({"--help"});

@@ -1,103 +1,12 @@
 // Frames rendered offscreen by the built-in shaders, pixel by pixel against the CPU reference
 // (render/lighting through render/probe). A failing case writes its frame to test-output/.
-#include "offscreen.h"
-#include "probe.h"
+#include "reference_compare.h"
 
-#include <QDir>
 #include <QGuiApplication>
-#include <QRegularExpression>
 #include <QTest>
 
-#include <glm/geometric.hpp>
-
 using namespace lb;
-
-namespace {
-
-constexpr int kTolerance = 2; // per channel, out of 255
-const QSize kSize(320, 240);
-
-struct Comparison
-{
-    int compared = 0;
-    int withSpecular = 0; // samples where the highlight contributes visibly
-    int worst = 0;
-    QPoint worstAt;
-    QString worstText;
-};
-
-int channelDifference(QRgb gpu, const glm::vec3 &reference)
-{
-    const int r = int(std::lround(reference.r * 255)), g = int(std::lround(reference.g * 255)),
-              b = int(std::lround(reference.b * 255));
-    return std::max({std::abs(qRed(gpu) - r), std::abs(qGreen(gpu) - g), std::abs(qBlue(gpu) - b)});
-}
-
-// Compares a grid of pixels. Pixels on a silhouette or a crease (a neighbour two pixels away
-// misses the object or sees another face) are skipped: there the rasteriser and the ray may
-// rightly pick different triangles.
-Comparison compareWithReference(OffscreenRenderer &offscreen, const Scene &scene,
-                                const QImage &frame, int step = 5)
-{
-    const Mesh &mesh = offscreen.renderer().meshFor(scene.object);
-    const CheckerTexture &texture = offscreen.renderer().checkerTexture();
-    Comparison c;
-    for (int y = 3; y < kSize.height() - 3; y += step) {
-        for (int x = 3; x < kSize.width() - 3; x += step) {
-            const ProbeResult p = probePixel(scene, mesh, texture, kSize, QPoint(x, y));
-            if (!p.hit)
-                continue;
-            bool interior = true;
-            for (const QPoint d : {QPoint(2, 0), QPoint(-2, 0), QPoint(0, 2), QPoint(0, -2)}) {
-                const ProbeResult n = probePixel(scene, mesh, texture, kSize, QPoint(x, y) + d);
-                interior = interior && n.hit && glm::dot(n.normal, p.normal) > 0.98f;
-            }
-            if (!interior)
-                continue;
-            ++c.compared;
-            if (p.terms.specular.r > 0.05f)
-                ++c.withSpecular;
-            const int diff = channelDifference(frame.pixel(x, y), p.reference);
-            if (diff > c.worst) {
-                c.worst = diff;
-                c.worstAt = QPoint(x, y);
-                const QRgb g = frame.pixel(x, y);
-                c.worstText = QString("gpu (%1,%2,%3) reference (%4,%5,%6)")
-                                  .arg(qRed(g))
-                                  .arg(qGreen(g))
-                                  .arg(qBlue(g))
-                                  .arg(p.reference.r * 255)
-                                  .arg(p.reference.g * 255)
-                                  .arg(p.reference.b * 255);
-            }
-        }
-    }
-    return c;
-}
-
-QString saveForInspection(const QImage &frame, const QString &name)
-{
-    QDir().mkpath("test-output");
-    QString file = name;
-    file.replace(QRegularExpression("[^A-Za-z0-9_-]+"), "_");
-    const QString path = QDir("test-output").absoluteFilePath(file + ".png");
-    frame.save(path);
-    return path;
-}
-
-// A scene where the normal matrix matters: rotated and scaled non-uniformly.
-Scene testScene()
-{
-    Scene s;
-    s.showLight = false;
-    s.object.tessellation = 24;
-    s.object.rotationDegrees = {20, 30, 0};
-    s.object.scale = {1.2f, 0.8f, 1.0f};
-    s.camera.distance = 3.8f; // the object fills most of the small frame
-    return s;
-}
-
-} // namespace
+using namespace lb::test;
 
 class TestRenderReference : public QObject
 {
@@ -105,26 +14,11 @@ class TestRenderReference : public QObject
 private:
     OffscreenRenderer m_offscreen;
 
-    // minSpecular: how many compared pixels must show the highlight, so that a case whose
-    // highlight is out of view cannot pass by testing only ambient and diffuse.
     void expectMatch(const Scene &scene, const QString &name, int minCompared, int minSpecular)
     {
-        const QImage frame = m_offscreen.render(scene);
-        const Comparison c = compareWithReference(m_offscreen, scene, frame);
-        QVERIFY2(c.compared >= minCompared,
-                 qPrintable(QString("only %1 pixels compared").arg(c.compared)));
-        qInfo("%d pixels compared (%d with a highlight), worst %d/255", c.compared, c.withSpecular,
-              c.worst);
-        QVERIFY2(c.withSpecular >= minSpecular,
-                 qPrintable(QString("only %1 pixels with a highlight").arg(c.withSpecular)));
-        if (c.worst > kTolerance) {
-            const QString path = saveForInspection(frame, name);
-            QFAIL(qPrintable(QString("pixel (%1, %2) is off by %3/255: %4; frame in %5")
-                                 .arg(c.worstAt.x())
-                                 .arg(c.worstAt.y())
-                                 .arg(c.worst)
-                                 .arg(c.worstText, path)));
-        }
+        const QString failure =
+            checkAgainstReference(m_offscreen, scene, name, minCompared, minSpecular);
+        QVERIFY2(failure.isEmpty(), qPrintable(failure));
     }
 
 private slots:

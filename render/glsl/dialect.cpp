@@ -1,0 +1,50 @@
+#include "dialect.h"
+
+#include <QRegularExpression>
+
+namespace lb {
+
+// Blanks out comments so that a "#version" inside one is not taken for the directive.
+QString withoutComments(const QString &source)
+{
+    QString out = source;
+    for (int i = 0; i + 1 < out.size(); ++i) {
+        if (out[i] == '/' && out[i + 1] == '/') {
+            while (i < out.size() && out[i] != '\n')
+                out[i++] = ' ';
+        } else if (out[i] == '/' && out[i + 1] == '*') {
+            const int end = out.indexOf("*/", i + 2);
+            const int stop = end < 0 ? out.size() : end + 2;
+            for (; i < stop; ++i)
+                if (out[i] != '\n')
+                    out[i] = ' ';
+        }
+    }
+    return out;
+}
+
+bool writesFragmentColour(const QString &fragmentSource)
+{
+    static const QRegularExpression writes(R"(\bgl_Frag(Color|Data)\b|(^|[;\s)])out\s+\w+\s+\w+)");
+    return writes.match(withoutComments(fragmentSource)).hasMatch();
+}
+
+PreparedSource prepareSource(const QString &source)
+{
+    static const QRegularExpression directive(R"(^[ \t]*#[ \t]*version[ \t]+([^\n]*?)[ \t]*$)",
+                                              QRegularExpression::MultilineOption);
+    PreparedSource p;
+    const QRegularExpressionMatch m = directive.match(withoutComments(source));
+    if (m.hasMatch()) {
+        p.text = source;
+        p.version = m.captured(1).simplified();
+        return p;
+    }
+    p.dialect = Dialect::WebGL1Implicit;
+    p.version = "100";
+    p.text = "#version 100\n" + source;
+    p.linesAdded = 1;
+    return p;
+}
+
+} // namespace lb

@@ -1,0 +1,31 @@
+#pragma once
+// Which GLSL a source is written in, and what the driver is handed. A source without
+// #version is a WebGL 1 shader (GLSL ES 1.00), as browsers treat it: it gets "#version 100"
+// in front, which core-profile drivers with ARB_ES2_compatibility accept (design.md), so
+// attribute, varying, gl_FragColor, texture2D and precision work as pasted. Anything with
+// #version runs as written.
+
+#include <QString>
+
+namespace lb {
+
+enum class Dialect { WebGL1Implicit, Versioned };
+
+struct PreparedSource
+{
+    QString text;       // what glShaderSource gets
+    int linesAdded = 0; // lines put before the user's line 1; diagnostics subtract them
+    Dialect dialect = Dialect::Versioned;
+    QString version; // "100", "300 es", "330 core"...; "100" for the implicit dialect
+};
+
+PreparedSource prepareSource(const QString &source);
+
+// The source with comments blanked out (line structure kept), for simple textual checks.
+QString withoutComments(const QString &source);
+
+// Whether a fragment shader writes a colour at all: gl_FragColor, gl_FragData or an out
+// variable. A program without one links, but draws an undefined colour.
+bool writesFragmentColour(const QString &fragmentSource);
+
+} // namespace lb

@@ -1,0 +1,38 @@
+#pragma once
+// The table of semantic names: which uniform names the workbench feeds from the panels, in
+// the slides' spelling (mModelView, lightAmb...), the exercise's (uModelViewMatrix,
+// uLightPosition...) and the built-in shaders' switches. Attribute names are in program.cpp.
+
+#include <QString>
+
+#include <optional>
+
+namespace lb {
+
+enum class Semantic {
+    ModelView,         // mat4: mModelView, uModelViewMatrix
+    Normals,           // mat4 or mat3: mNormals, uNormalMatrix (inverse transpose of model-view)
+    View,              // mat4: mView
+    ViewNormals,       // mat4 or mat3: mViewNormals
+    Projection,        // mat4: mProjection, uProjectionMatrix
+    LightPosition,     // vec4/vec3: lightPosition, as given in the panel's frame (with w)
+    LightPositionEye,  // vec3/vec4: uLightPosition, in camera coordinates (the exercise's)
+    LightAmbient,      // lightAmb: Ia
+    LightDiffuse,      // lightDif, uLightColor: Id
+    LightSpecular,     // lightSpe: Is
+    MaterialAmbient,   // materialAmb: Ka
+    MaterialDiffuse,   // materialDif: Kd
+    MaterialSpecular,  // materialSpe: Ks
+    Shininess,         // shininess
+    LightFrame,        // uLightFrame: 0 camera, 1 world, 2 object
+    SpecularModel,     // uSpecularModel: 0 Phong, 1 Blinn-Phong
+    ProjectionKind,    // uProjection: 0 perspective, 1 orthographic
+    EnableLighting,    // uEnableLighting
+    EnableVertexColor, // uEnableVertexColor
+    EnableTexture,     // uEnableTexture
+    Sampler,           // uSampler: the checker texture on unit 0
+};
+
+std::optional<Semantic> semanticOf(const QString &uniformName);
+
+} // namespace lb

@@ -1,0 +1,101 @@
+#include "reference_compare.h"
+
+#include <QDir>
+#include <QRegularExpression>
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace lb::test {
+
+int channelDifference(QRgb gpu, const glm::vec3 &reference)
+{
+    const int r = int(std::lround(reference.r * 255)), g = int(std::lround(reference.g * 255)),
+              b = int(std::lround(reference.b * 255));
+    return std::max({std::abs(qRed(gpu) - r), std::abs(qGreen(gpu) - g), std::abs(qBlue(gpu) - b)});
+}
+
+Comparison compareWithReference(OffscreenRenderer &offscreen, const Scene &scene,
+                                const QImage &frame, int step)
+{
+    const Mesh &mesh = offscreen.renderer().meshFor(scene.object);
+    const CheckerTexture &texture = offscreen.renderer().checkerTexture();
+    const QSize size = frame.size();
+    Comparison c;
+    for (int y = 3; y < size.height() - 3; y += step) {
+        for (int x = 3; x < size.width() - 3; x += step) {
+            const ProbeResult p = probePixel(scene, mesh, texture, size, QPoint(x, y));
+            if (!p.hit)
+                continue;
+            bool interior = true;
+            for (const QPoint d : {QPoint(2, 0), QPoint(-2, 0), QPoint(0, 2), QPoint(0, -2)}) {
+                const ProbeResult n = probePixel(scene, mesh, texture, size, QPoint(x, y) + d);
+                interior = interior && n.hit && glm::dot(n.normal, p.normal) > 0.98f;
+            }
+            if (!interior)
+                continue;
+            ++c.compared;
+            if (p.terms.specular.r > 0.05f)
+                ++c.withSpecular;
+            const int diff = channelDifference(frame.pixel(x, y), p.reference);
+            if (diff > c.worst) {
+                c.worst = diff;
+                c.worstAt = QPoint(x, y);
+                const QRgb g = frame.pixel(x, y);
+                c.worstText = QString("gpu (%1,%2,%3) reference (%4,%5,%6)")
+                                  .arg(qRed(g))
+                                  .arg(qGreen(g))
+                                  .arg(qBlue(g))
+                                  .arg(p.reference.r * 255)
+                                  .arg(p.reference.g * 255)
+                                  .arg(p.reference.b * 255);
+            }
+        }
+    }
+    return c;
+}
+
+QString saveForInspection(const QImage &frame, const QString &name)
+{
+    QDir().mkpath("test-output");
+    QString file = name;
+    file.replace(QRegularExpression("[^A-Za-z0-9_-]+"), "_");
+    const QString path = QDir("test-output").absoluteFilePath(file + ".png");
+    frame.save(path);
+    return path;
+}
+
+QString checkAgainstReference(OffscreenRenderer &offscreen, const Scene &scene, const QString &name,
+                              int minCompared, int minSpecular, int tolerance)
+{
+    const QImage frame = offscreen.render(scene);
+    const Comparison c = compareWithReference(offscreen, scene, frame);
+    qInfo("%s: %d pixels compared (%d with a highlight), worst %d/255", qPrintable(name),
+          c.compared, c.withSpecular, c.worst);
+    if (c.compared < minCompared)
+        return QString("only %1 pixels compared").arg(c.compared);
+    if (c.withSpecular < minSpecular)
+        return QString("only %1 pixels with a highlight").arg(c.withSpecular);
+    if (c.worst <= tolerance)
+        return {};
+    return QString("pixel (%1, %2) is off by %3/255: %4; frame in %5")
+        .arg(c.worstAt.x())
+        .arg(c.worstAt.y())
+        .arg(c.worst)
+        .arg(c.worstText, saveForInspection(frame, name));
+}
+
+Scene testScene()
+{
+    Scene s;
+    s.showLight = false;
+    s.object.tessellation = 24;
+    s.object.rotationDegrees = {20, 30, 0};
+    s.object.scale = {1.2f, 0.8f, 1.0f};
+    s.camera.distance = 3.8f; // the object fills most of the small frame
+    return s;
+}
+
+} // namespace lb::test

@@ -1,0 +1,46 @@
+#pragma once
+// Test support: a rendered frame against the CPU reference, pixel by pixel.
+#include "offscreen.h"
+#include "probe.h"
+
+#include <QImage>
+#include <QPoint>
+#include <QString>
+
+namespace lb::test {
+
+constexpr int kTolerance = 2; // per channel, out of 255
+inline const QSize kSize(320, 240);
+
+struct Comparison
+{
+    int compared = 0;
+    int withSpecular = 0; // samples where the highlight contributes visibly
+    int worst = 0;
+    QPoint worstAt;
+    QString worstText;
+};
+
+// The largest channel difference between a pixel and a reference colour (0-1), in 1/255.
+int channelDifference(QRgb gpu, const glm::vec3 &reference);
+
+// Compares a grid of pixels. Pixels on a silhouette or a crease (a neighbour two pixels away
+// misses the object or sees a surface turned by more than ~11 degrees) are skipped: there
+// the rasteriser and the ray may rightly pick different triangles.
+Comparison compareWithReference(OffscreenRenderer &offscreen, const Scene &scene,
+                                const QImage &frame, int step = 5);
+
+// Renders `scene` and compares it; returns an empty string, or what failed (the frame is then
+// saved for inspection and its path is part of the message). minSpecular: how many compared
+// pixels must show the highlight, so that a case whose highlight is out of view cannot pass
+// by testing only ambient and diffuse.
+QString checkAgainstReference(OffscreenRenderer &offscreen, const Scene &scene, const QString &name,
+                              int minCompared, int minSpecular, int tolerance = kTolerance);
+
+// Writes the frame to test-output/NAME.png for a person to look at; returns the path.
+QString saveForInspection(const QImage &frame, const QString &name);
+
+// A scene where the normal matrix matters: rotated and scaled non-uniformly, no light marker.
+Scene testScene();
+
+} // namespace lb::test

@@ -1,0 +1,118 @@
+// GLSL handled as text: dialect detection and driver logs mapped to the user's lines.
+// The Mesa lines are real llvmpipe output; the others are the documented forms.
+#include "glsl/diagnostics.h"
+#include "glsl/dialect.h"
+
+#include <QTest>
+
+using namespace lb;
+using Severity = Diagnostic::Severity;
+
+class TestGlslText : public QObject
+{
+    Q_OBJECT
+private slots:
+    void driverLogs_data()
+    {
+        QTest::addColumn<QString>("log");
+        QTest::addColumn<int>("linesAdded");
+        QTest::addColumn<int>("line");
+        QTest::addColumn<int>("column");
+        QTest::addColumn<bool>("error");
+        QTest::addColumn<QString>("message");
+        QTest::newRow("mesa syntax")
+            << "0:6(1): error: syntax error, unexpected '}', expecting ',' or ';'" << 0 << 6 << 1
+            << true << "syntax error, unexpected '}', expecting ',' or ';'";
+        QTest::newRow("mesa behind #version 100")
+            << "0:7(1): error: syntax error, unexpected '}', expecting ',' or ';'" << 1 << 6 << 1
+            << true << "syntax error, unexpected '}', expecting ',' or ';'";
+        QTest::newRow("mesa undeclared")
+            << "0:4(40): error: `z' undeclared" << 0 << 4 << 40 << true << "`z' undeclared";
+        QTest::newRow("mesa preprocessor")
+            << "0:2(77): preprocessor error: syntax error, unexpected HASH_TOKEN" << 1 << 1 << 77
+            << true << "syntax error, unexpected HASH_TOKEN";
+        QTest::newRow("mesa warning") << "0:3(10): warning: `x' used uninitialized" << 0 << 3 << 10
+                                      << false << "`x' used uninitialized";
+        QTest::newRow("mesa link") << "error: fragment shader lacks `main'" << 0 << 0 << 0 << true
+                                   << "fragment shader lacks `main'";
+        QTest::newRow("mesa link, no severity")
+            << "Too many vertex shader default uniform block components" << 0 << 0 << 0 << true
+            << "Too many vertex shader default uniform block components";
+        QTest::newRow("nvidia error")
+            << "0(12) : error C0000: syntax error, unexpected '}' at token \"}\"" << 0 << 12 << 0
+            << true << "syntax error, unexpected '}' at token \"}\"";
+        QTest::newRow("nvidia warning behind prefix")
+            << "0(8) : warning C7533: global variable gl_FragColor is deprecated" << 1 << 7 << 0
+            << false << "global variable gl_FragColor is deprecated";
+        QTest::newRow("amd/apple error") << "ERROR: 0:12: 'foo' : undeclared identifier" << 0 << 12
+                                         << 0 << true << "'foo' : undeclared identifier";
+        QTest::newRow("amd/apple warning") << "WARNING: 0:3: 'extension' : not supported" << 0 << 3
+                                           << 0 << false << "'extension' : not supported";
+        QTest::newRow("line in the prefix maps to line 1")
+            << "0:1(1): error: bad version" << 1 << 1 << 1 << true << "bad version";
+    }
+
+    void driverLogs()
+    {
+        QFETCH(QString, log);
+        QFETCH(int, linesAdded);
+        QFETCH(int, line);
+        QFETCH(int, column);
+        QFETCH(bool, error);
+        QFETCH(QString, message);
+        const auto d = parseDriverLog(log, ShaderStage::Fragment, linesAdded);
+        QCOMPARE(int(d.size()), 1);
+        QCOMPARE(d[0].line, line);
+        QCOMPARE(d[0].column, column);
+        QCOMPARE(d[0].severity == Severity::Error, error);
+        QCOMPARE(d[0].message, message);
+        QCOMPARE(d[0].stage, ShaderStage::Fragment);
+    }
+
+    void multiLineLogsAndNvidiaHeadings()
+    {
+        const QString log = "Vertex info\n-----------\n0(3) : error C1008: undefined variable "
+                            "\"x\"\n\n0(5) : warning C7050: \"y\" might be used before being "
+                            "initialized\n";
+        const auto d = parseDriverLog(log, ShaderStage::Link);
+        QCOMPARE(int(d.size()), 2);
+        QCOMPARE(d[0].line, 3);
+        QCOMPARE(d[1].line, 5);
+        QCOMPARE(d[1].severity, Severity::Warning);
+        QVERIFY(parseDriverLog("\n  \n", ShaderStage::Vertex).empty());
+    }
+
+    void dialects()
+    {
+        PreparedSource p = prepareSource("attribute vec4 vPosition;\nvoid main() {}\n");
+        QCOMPARE(p.dialect, Dialect::WebGL1Implicit);
+        QCOMPARE(p.linesAdded, 1);
+        QVERIFY(p.text.startsWith("#version 100\nattribute vec4 vPosition;"));
+
+        p = prepareSource("// a comment\n#version 300 es\nprecision mediump float;\n");
+        QCOMPARE(p.dialect, Dialect::Versioned);
+        QCOMPARE(p.version, QString("300 es"));
+        QCOMPARE(p.linesAdded, 0);
+        QCOMPARE(p.text, QString("// a comment\n#version 300 es\nprecision mediump float;\n"));
+
+        p = prepareSource("  #  version   330   core\nvoid main() {}");
+        QCOMPARE(p.version, QString("330 core"));
+
+        // A #version inside a comment is no directive.
+        p = prepareSource("/* #version 330 core */\n// #version 450\nvoid main() {}");
+        QCOMPARE(p.dialect, Dialect::WebGL1Implicit);
+    }
+
+    void fragmentOutputs()
+    {
+        QVERIFY(writesFragmentColour("void main() { gl_FragColor = vec4(1.0); }"));
+        QVERIFY(writesFragmentColour("void main() { gl_FragData[0] = vec4(1.0); }"));
+        QVERIFY(writesFragmentColour("#version 330 core\nout vec4 colour;\nvoid main() {}"));
+        QVERIFY(writesFragmentColour("layout(location = 0) out vec4 c;\nvoid main() {}"));
+        QVERIFY(!writesFragmentColour("precision mediump float;\nvoid main() { }"));
+        QVERIFY(!writesFragmentColour("void main() { /* gl_FragColor = vec4(1.0); */ }"));
+    }
+};
+
+QTEST_APPLESS_MAIN(TestGlslText)
+#include "test_glsl_text.moc"
