@@ -1,6 +1,7 @@
 // User programs: the reference files' shaders typed in as they stand compile, link and draw
 // what the model says; bad sources give a message on the right line and the last good
 // program keeps drawing.
+#include "glsl/presets.h"
 #include "reference_compare.h"
 
 #include <QFile>
@@ -74,8 +75,10 @@ private slots:
         QFETCH(QString, name);
         QFETCH(int, shading);
         QFETCH(int, tolerance);
-        const ProgramBuild build = m_offscreen.useProgram(fixture("slides/" + name + ".vert"),
-                                                          fixture("slides/" + name + ".frag"));
+        // The Presets menu's copies: the slides' code as printed, under a comment header.
+        const Preset preset{name, ":/shaders/presets/slides_" + name};
+        const ProgramBuild build =
+            m_offscreen.useProgram(preset.vertexSource(), preset.fragmentSource());
         QVERIFY2(build.ok(), qPrintable(build.log()));
         QVERIFY2(build.diagnostics.empty(), qPrintable(build.log()));
         // The slides' constants are the default scene: their light (0, 1.8, 1.3, 1) in world
@@ -86,6 +89,15 @@ private slots:
         const QString failure =
             checkAgainstReference(m_offscreen, s, "slides " + name, 100, 5, tolerance);
         QVERIFY2(failure.isEmpty(), qPrintable(failure));
+    }
+
+    void everyPresetBuilds()
+    {
+        for (const Preset &p : presets()) {
+            const ProgramBuild build = m_offscreen.useProgram(p.vertexSource(), p.fragmentSource());
+            QVERIFY2(build.ok() && build.diagnostics.empty(),
+                     qPrintable(p.name + ": " + build.log()));
+        }
     }
 
     void exerciseNamesAndMat3NormalMatrix()

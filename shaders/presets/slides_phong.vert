@@ -1,3 +1,5 @@
+// The lecture's complete Phong-shading vertex shader ("Iluminação nos fragmentos"), as
+// printed: L and V are computed per vertex and interpolated; V = (0,0,1) is the parallel one.
 const vec4 lightPosition = vec4(0.0, 1.8, 1.3, 1.0);
 
 attribute vec4 vPosition;    // vertex position in modelling coordinates

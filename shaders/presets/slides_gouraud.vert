@@ -1,3 +1,5 @@
+// The lecture's complete Gouraud vertex shader ("Iluminação nos vértices"), as printed:
+// WebGL 1, no #version, constants for the light and the material.
 const vec4 lightPosition = vec4(0.0, 1.8, 1.3, 1.0);
 
 const vec3 materialAmb = vec3(1.0, 0.0, 0.0);

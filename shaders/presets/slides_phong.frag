@@ -1,3 +1,4 @@
+// The lecture's Phong-shading fragment shader, as printed (WebGL 1).
 precision mediump float;
 
 varying vec3 fPosition;

@@ -1,0 +1,118 @@
+#include "shader_editor.h"
+
+#include "glsl_lexer.h"
+
+#include <Qsci/qsciapis.h>
+#include <Qsci/qscistyle.h>
+#include <Qsci/qscistyledtext.h>
+
+#include <QFontDatabase>
+
+#include <map>
+
+namespace lb {
+
+namespace {
+enum Marker { kErrorMarker = 0, kWarningMarker = 1 };
+enum Indicator { kErrorSquiggle = 0, kWarningSquiggle = 1 };
+const QColor kErrorColour("#c62828"), kWarningColour("#b26a00");
+} // namespace
+
+ShaderEditor::ShaderEditor(QWidget *parent) : QsciScintilla(parent)
+{
+    auto *lexer = new GlslLexer(this);
+    auto *apis = new QsciAPIs(lexer);
+    for (const QString &word : GlslLexer::completionWords())
+        apis->add(word);
+    apis->prepare();
+    setLexer(lexer);
+
+    setUtf8(true);
+    setMarginType(0, NumberMargin);
+    setMarginWidth(0, "00000");
+    setMarginType(1, SymbolMargin);
+    setMarginWidth(1, 14);
+    setMarginSensitivity(1, false);
+    setBraceMatching(SloppyBraceMatch);
+    setAutoIndent(true);
+    setIndentationsUseTabs(false);
+    setIndentationWidth(4);
+    setTabWidth(4);
+    setCaretLineVisible(true);
+    setCaretLineBackgroundColor(QColor("#f3f6fb"));
+    // Completion from the GLSL words and every word already in the file (its declarations).
+    setAutoCompletionSource(AcsAll);
+    setAutoCompletionThreshold(2);
+    setAutoCompletionCaseSensitivity(true);
+
+    markerDefine(Circle, kErrorMarker);
+    setMarkerBackgroundColor(kErrorColour, kErrorMarker);
+    setMarkerForegroundColor(kErrorColour, kErrorMarker);
+    markerDefine(RightTriangle, kWarningMarker);
+    setMarkerBackgroundColor(kWarningColour, kWarningMarker);
+    setMarkerForegroundColor(kWarningColour, kWarningMarker);
+    indicatorDefine(SquiggleIndicator, kErrorSquiggle);
+    setIndicatorForegroundColor(kErrorColour, kErrorSquiggle);
+    indicatorDefine(SquiggleIndicator, kWarningSquiggle);
+    setIndicatorForegroundColor(kWarningColour, kWarningSquiggle);
+    setAnnotationDisplay(AnnotationBoxed);
+}
+
+void ShaderEditor::clearDiagnostics()
+{
+    markerDeleteAll();
+    clearAnnotations();
+    const int last = lines() - 1;
+    clearIndicatorRange(0, 0, last, lineLength(last), kErrorSquiggle);
+    clearIndicatorRange(0, 0, last, lineLength(last), kWarningSquiggle);
+    m_markedLines = 0;
+}
+
+void ShaderEditor::showDiagnostics(const std::vector<Diagnostic> &diagnostics)
+{
+    clearDiagnostics();
+    static const QFont small = [] {
+        QFont f = QFontDatabase::systemFont(QFontDatabase::FixedFont);
+        f.setPointSizeF(f.pointSizeF() * 0.9);
+        return f;
+    }();
+    static const QsciStyle errorStyle(-1, "error", kErrorColour, QColor("#fdecea"), small);
+    static const QsciStyle warningStyle(-1, "warning", kWarningColour, QColor("#fff4e0"), small);
+
+    // Several messages on one line share one annotation.
+    std::map<int, std::pair<QString, bool>> notes; // line -> text, has an error
+    for (const Diagnostic &d : diagnostics) {
+        if (d.line < 1 || d.line > lines())
+            continue;
+        const int line = d.line - 1;
+        const bool error = d.severity == Diagnostic::Severity::Error;
+        auto &[text, hasError] = notes[line];
+        text += (text.isEmpty() ? "" : "\n") + QString(error ? "error: " : "warning: ") + d.message;
+        hasError = hasError || error;
+        if (d.column > 0) {
+            // Underline from the column to the end of the word there.
+            const QString lineText = this->text(line);
+            int end = d.column - 1;
+            while (end < lineText.size() && (lineText[end].isLetterOrNumber() || lineText[end] == '_'))
+                ++end;
+            end = std::max(end, d.column);
+            fillIndicatorRange(line, d.column - 1, line, end,
+                               error ? kErrorSquiggle : kWarningSquiggle);
+        }
+    }
+    for (const auto &[line, note] : notes) {
+        markerAdd(line, note.second ? kErrorMarker : kWarningMarker);
+        annotate(line, QsciStyledText(note.first, note.second ? errorStyle : warningStyle));
+    }
+    m_markedLines = int(notes.size());
+}
+
+void ShaderEditor::goTo(int line, int column)
+{
+    const int l = std::max(0, line - 1);
+    setCursorPosition(l, std::max(0, column - 1));
+    ensureLineVisible(l);
+    setFocus();
+}
+
+} // namespace lb

@@ -1,0 +1,29 @@
+#pragma once
+// One shader's source: GLSL highlighting, line numbers, brace matching, auto-indent,
+// completion (GLSL words and the names in the file), and the driver's diagnostics shown where
+// the user looks: a margin marker, the message under the line, a squiggle at the column.
+
+#include "glsl/diagnostics.h"
+
+#include <Qsci/qsciscintilla.h>
+
+#include <vector>
+
+namespace lb {
+
+class ShaderEditor : public QsciScintilla
+{
+    Q_OBJECT
+public:
+    explicit ShaderEditor(QWidget *parent = nullptr);
+
+    void showDiagnostics(const std::vector<Diagnostic> &diagnostics);
+    void clearDiagnostics();
+    int markedLineCount() const { return m_markedLines; } // lines carrying a marker
+    void goTo(int line, int column); // 1-based; column 0 = start of the line
+
+private:
+    int m_markedLines = 0;
+};
+
+} // namespace lb
