@@ -1,5 +1,7 @@
 #include "main_window.h"
 
+#include "editor_panel.h"
+#include "glsl/presets.h"
 #include "light_panel.h"
 #include "material_panel.h"
 #include "object_panel.h"
@@ -21,7 +23,7 @@
 namespace lb {
 
 namespace {
-constexpr int kStateVersion = 1;
+constexpr int kStateVersion = 2; // 2: the editor dock
 const char *kSceneKey = "scene";
 const char *kGeometryKey = "window/geometry";
 const char *kStateKey = "window/state";
@@ -58,8 +60,22 @@ MainWindow::MainWindow(QSettings &settings, QWidget *parent)
     m_object = new ObjectPanel(&m_document);
     addDock(this, tr("Light"), "lightDock", m_light, Qt::LeftDockWidgetArea);
     addDock(this, tr("Material"), "materialDock", m_material, Qt::LeftDockWidgetArea);
-    addDock(this, tr("Shading"), "shadingDock", m_shading, Qt::RightDockWidgetArea);
-    addDock(this, tr("Object"), "objectDock", m_object, Qt::RightDockWidgetArea);
+    QDockWidget *shadingDock =
+        addDock(this, tr("Shading"), "shadingDock", m_shading, Qt::LeftDockWidgetArea);
+    QDockWidget *objectDock =
+        addDock(this, tr("Object"), "objectDock", m_object, Qt::LeftDockWidgetArea);
+    tabifyDockWidget(shadingDock, objectDock);
+    shadingDock->raise();
+
+    m_editor = new EditorPanel;
+    auto *editorDock = new QDockWidget(tr("Shader editor"), this);
+    editorDock->setObjectName("editorDock");
+    editorDock->setWidget(m_editor);
+    addDockWidget(Qt::RightDockWidgetArea, editorDock);
+    resizeDocks({editorDock}, {520}, Qt::Horizontal);
+    connect(m_editor, &EditorPanel::compileRequested, m_viewport, &Viewport::compileProgram);
+    connect(m_viewport, &Viewport::programBuilt, m_editor, &EditorPanel::showBuild);
+    m_editor->loadPreset(builtInPreset(m_document.scene().shading.shading == Shading::Gouraud));
 
     m_glLabel = new QLabel(this);
     statusBar()->addPermanentWidget(m_glLabel);
@@ -75,6 +91,7 @@ MainWindow::MainWindow(QSettings &settings, QWidget *parent)
     connect(&m_saveTimer, &QTimer::timeout, this, &MainWindow::saveSettings);
     connect(&m_document, &SceneDocument::changed, this, [this] {
         updateStatus();
+        m_editor->followShading(m_document.scene().shading.shading == Shading::Gouraud);
         // Not restarted on every change: auto-rotate edits the scene 60 times a second,
         // and a timer restarted that often would never fire.
         if (!m_saveTimer.isActive())

@@ -13,6 +13,7 @@ class QSettings;
 
 namespace lb {
 
+class EditorPanel;
 class LightPanel;
 class MaterialPanel;
 class ObjectPanel;
@@ -32,6 +33,7 @@ public:
     MaterialPanel *materialPanel() const { return m_material; }
     ShadingPanel *shadingPanel() const { return m_shading; }
     ObjectPanel *objectPanel() const { return m_object; }
+    EditorPanel *editorPanel() const { return m_editor; }
 
     void saveSettings();
 
@@ -49,6 +51,7 @@ private:
     MaterialPanel *m_material;
     ShadingPanel *m_shading;
     ObjectPanel *m_object;
+    EditorPanel *m_editor;
     QLabel *m_glLabel;
     QTimer m_saveTimer; // saves the scene shortly after each change, so a kill loses little
 };

@@ -48,6 +48,13 @@ void Viewport::initializeGL()
     connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, &Viewport::releaseGl,
             Qt::UniqueConnection);
     m_error = m_renderer.initialize();
+    if (m_error.isEmpty()) {
+        if (m_pending)
+            buildNow(m_pendingVertex, m_pendingFragment);
+        else if (!m_goodVertex.isEmpty())
+            m_renderer.setUserProgram(m_goodVertex, m_goodFragment);
+        m_pending = false;
+    }
     const QSurfaceFormat f = context()->format();
     auto *gl = context()->functions();
     emit glInfo(QString("OpenGL %1.%2, %3")
@@ -67,6 +74,52 @@ void Viewport::paintGL()
         return;
     }
     m_renderer.render(m_document->scene(), size() * devicePixelRatio());
+    if (!m_banner.isEmpty())
+        paintBanner();
+}
+
+void Viewport::compileProgram(const QString &vertexSource, const QString &fragmentSource)
+{
+    if (!m_renderer.isInitialized()) {
+        m_pendingVertex = vertexSource;
+        m_pendingFragment = fragmentSource;
+        m_pending = true;
+        return;
+    }
+    makeCurrent();
+    buildNow(vertexSource, fragmentSource);
+    doneCurrent();
+}
+
+void Viewport::buildNow(const QString &vertexSource, const QString &fragmentSource)
+{
+    const ProgramBuild build = m_renderer.setUserProgram(vertexSource, fragmentSource);
+    if (build.ok()) {
+        m_goodVertex = vertexSource;
+        m_goodFragment = fragmentSource;
+        m_banner.clear();
+    } else {
+        m_banner = m_renderer.hasUserProgram()
+                       ? tr("The shader has errors (see the editor): the last good program is "
+                            "drawing")
+                       : tr("The shader has errors (see the editor): the built-in program is "
+                            "drawing");
+    }
+    update();
+    emit programBuilt(build);
+}
+
+void Viewport::paintBanner()
+{
+    QPainter painter(this);
+    QFont font = painter.font();
+    font.setPointSizeF(font.pointSizeF() * 0.95);
+    painter.setFont(font);
+    const int h = painter.fontMetrics().height() + 10;
+    painter.fillRect(QRect(0, 0, width(), h), QColor(120, 20, 20, 190));
+    painter.setPen(Qt::white);
+    painter.drawText(QRect(8, 0, width() - 16, h), Qt::AlignVCenter | Qt::AlignLeft,
+                     painter.fontMetrics().elidedText(m_banner, Qt::ElideRight, width() - 16));
 }
 
 void Viewport::resetCamera()

@@ -23,9 +23,15 @@ public:
 
     void resetCamera();
     QString renderError() const { return m_error; }
+    QString banner() const { return m_banner; }
+
+    // Builds the user's program (now, or once the context exists) and reports it through
+    // programBuilt(). When it fails, the last good program keeps drawing under a banner.
+    void compileProgram(const QString &vertexSource, const QString &fragmentSource);
 
 signals:
     void glInfo(const QString &info); // the driver, once the context exists
+    void programBuilt(const lb::ProgramBuild &build);
 
 protected:
     void initializeGL() override;
@@ -36,12 +42,20 @@ protected:
 
 private:
     void releaseGl(); // with the context made current: the renderer's GL objects go
+    void buildNow(const QString &vertexSource, const QString &fragmentSource);
+    void paintBanner();
     void syncAnimation();
     void advanceAnimation();
 
     SceneDocument *m_document;
     Renderer m_renderer;
     QString m_error;
+    QString m_banner;
+    // The last sources that linked, built again when the widget gets a new context, and the
+    // ones asked for before there was a context.
+    QString m_goodVertex, m_goodFragment;
+    QString m_pendingVertex, m_pendingFragment;
+    bool m_pending = false;
     QPoint m_lastMouse;
     QTimer m_animation;
     QElapsedTimer m_clock;

@@ -1,11 +1,14 @@
 // The main window driven as a user drives it: a control moves, the scene changes, and the
 // viewport draws something different. Settings are kept in a temporary file.
 #include "color_edit.h"
+#include "editor_panel.h"
+#include "glsl/presets.h"
 #include "light_panel.h"
 #include "main_window.h"
 #include "material_panel.h"
 #include "object_panel.h"
 #include "offscreen.h"
+#include "shader_editor.h"
 #include "shading_panel.h"
 #include "viewport.h"
 
@@ -13,11 +16,15 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QLabel>
+#include <QListWidget>
+#include <QMenu>
 #include <QMouseEvent>
 #include <QPushButton>
 #include <QSettings>
 #include <QSlider>
 #include <QSpinBox>
+#include <QTabWidget>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -201,6 +208,102 @@ private slots:
         QVERIFY(scene() == before);
         QCOMPARE(m_window->materialPanel()->shininessBox()->value(), 77.0);
         QCOMPARE(m_window->shadingPanel()->shadingCombo()->currentIndex(), 0);
+    }
+
+    void editorStartsWithTheProgramOnScreen()
+    {
+        EditorPanel *e = m_window->editorPanel();
+        QVERIFY(e->source(ShaderStage::Fragment).contains("uSpecularModel")); // built-in Phong
+        QTRY_VERIFY(e->statusLabel()->text().contains("linked"));
+        // G switches to Gouraud: the untouched built-in follows.
+        QTest::keyClick(m_window.get(), Qt::Key_G);
+        QTRY_VERIFY(e->source(ShaderStage::Vertex).contains("fAmbientDiffuse"));
+    }
+
+    void anErrorKeepsTheLastGoodProgramUntilFixed()
+    {
+        EditorPanel *e = m_window->editorPanel();
+        Viewport *v = m_window->viewport();
+        // Both stages in WebGL 1, so that line numbers cross the implicit "#version 100".
+        e->loadPreset(presets()[3]);
+        QVERIFY(e->source(ShaderStage::Vertex).contains("attribute vec4 vPosition"));
+        QTRY_VERIFY(e->statusLabel()->text().contains("linked"));
+        const QImage good = frame();
+        ShaderEditor *fragment = e->editor(ShaderStage::Fragment);
+        const QString original = fragment->text();
+
+        // A typo on the editor's line 5 of a WebGL 1 shader (no #version).
+        const QString broken = "precision mediump float;\n"
+                               "uniform vec3 materialDif; // the Material panel's Kd\n"
+                               "void main()\n"
+                               "{\n"
+                               "    gl_FragColor = vec4(materialDif * 0.5, 1.0)\n"
+                               "}\n";
+        fragment->setText(broken); // live: compiles after the pause
+        QTRY_VERIFY(e->statusLabel()->text().contains("error"));
+        QVERIFY(!v->banner().isEmpty());
+        QCOMPARE(fragment->markedLineCount(), 1);
+        QVERIFY(fragment->annotation(5).contains("error")); // 0-based: line 6, the brace
+        QVERIFY(e->diagnosticsList()->count() >= 1);
+        QVERIFY(e->diagnosticsList()->item(0)->text().contains("fragment 6:"));
+        // Below the banner strip at the top, the picture is exactly the last good one.
+        const QRect belowBanner(0, 40, good.width(), good.height() - 40);
+        QVERIFY2(imageDifference(frame().copy(belowBanner), good.copy(belowBanner)) == 0,
+                 "the last good program must keep drawing");
+        QCOMPARE(fragment->text(), broken); // the user's text is untouched
+
+        // Clicking the message goes to its line.
+        e->diagnosticsList()->setCurrentRow(0);
+        emit e->diagnosticsList()->itemClicked(e->diagnosticsList()->item(0));
+        int line = 0, column = 0;
+        fragment->getCursorPosition(&line, &column);
+        QCOMPARE(line, 5);
+
+        // The fix brings the new program with no other action: half-bright flat red.
+        fragment->insertAt(";", 4, fragment->text(4).indexOf(")\n") + 1);
+        QTRY_VERIFY(e->statusLabel()->text().contains("linked"));
+        QVERIFY(v->banner().isEmpty());
+        QCOMPARE(fragment->markedLineCount(), 0);
+        const QImage fixed = frame();
+        const QRgb centre = fixed.pixel(fixed.width() / 2, fixed.height() / 2);
+        QVERIFY(std::abs(qRed(centre) - 128) <= 1 && qGreen(centre) == 0);
+        fragment->setText(original);
+    }
+
+    void manualCompileWithCtrlEnter()
+    {
+        EditorPanel *e = m_window->editorPanel();
+        e->liveCheck()->setChecked(false);
+        ShaderEditor *fragment = e->editor(ShaderStage::Fragment);
+        QTRY_VERIFY(e->statusLabel()->text().contains("linked"));
+        // The built-in vertex stage is GLSL 330 core; the fragment must be too to link.
+        fragment->setText("#version 330 core\nout vec4 c;\nvoid main() { c = vec4(0.0, 1.0, 0.0, "
+                          "1.0); }\n");
+        QTest::qWait(400); // past any pause: nothing compiles by itself
+        QRgb centre = frame().pixel(frame().width() / 2, frame().height() / 2);
+        QVERIFY(qGreen(centre) != 255);
+        e->findChild<QTabWidget *>()->setCurrentWidget(fragment); // typing happens in a shown tab
+        fragment->setFocus();
+        QTest::keyClick(fragment, Qt::Key_Return, Qt::ControlModifier);
+        QTRY_VERIFY(qGreen(frame().pixel(frame().width() / 2, frame().height() / 2)) == 255);
+        e->liveCheck()->setChecked(true);
+    }
+
+    void presetsLoadAndDraw()
+    {
+        EditorPanel *e = m_window->editorPanel();
+        QCOMPARE(e->presetsMenu()->actions().size(), int(presets().size()));
+        for (QAction *a : e->presetsMenu()->actions()) {
+            const QImage before = frame();
+            a->trigger();
+            QTRY_VERIFY2(e->statusLabel()->text().contains("linked"), qPrintable(a->text()));
+            QVERIFY(e->diagnosticsList()->count() == 0);
+            Q_UNUSED(before);
+        }
+        // The toon preset draws something the built-in does not.
+        e->presetsMenu()->actions().first()->trigger();
+        QTRY_VERIFY(e->statusLabel()->text().contains("linked"));
+        expectNewImage([&] { e->presetsMenu()->actions().last()->trigger(); }, "toon");
     }
 
     void resetButtonsRestoreDefaults()

@@ -1,0 +1,214 @@
+#include "editor_panel.h"
+
+#include "glsl/presets.h"
+#include "shader_editor.h"
+
+#include <QCheckBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QListWidget>
+#include <QMenu>
+#include <QShortcut>
+#include <QSpinBox>
+#include <QSplitter>
+#include <QTabWidget>
+#include <QToolButton>
+#include <QVBoxLayout>
+
+namespace lb {
+
+namespace {
+constexpr int kDefaultPauseMs = 150;
+}
+
+EditorPanel::EditorPanel(QWidget *parent) : QWidget(parent)
+{
+    auto *layout = new QVBoxLayout(this);
+    layout->setContentsMargins(4, 4, 4, 4);
+
+    auto *bar = new QHBoxLayout;
+    auto *presetButton = new QToolButton(this);
+    presetButton->setText(tr("Presets"));
+    presetButton->setPopupMode(QToolButton::InstantPopup);
+    m_presets = new QMenu(presetButton);
+    for (const Preset &p : presets())
+        m_presets->addAction(p.name, this, [this, &p] { loadPreset(p); });
+    presetButton->setMenu(m_presets);
+    presetButton->setToolTip(tr("The built-in programs, the slides' shaders as printed, toon"));
+    bar->addWidget(presetButton);
+
+    auto *compile = new QToolButton(this);
+    compile->setText(tr("Compile"));
+    compile->setToolTip(tr("Compile and link now (Ctrl+Enter)"));
+    connect(compile, &QToolButton::clicked, this, &EditorPanel::compileNow);
+    bar->addWidget(compile);
+
+    m_live = new QCheckBox(tr("Live"), this);
+    m_live->setChecked(true);
+    m_live->setToolTip(tr("Recompile after a pause in typing; off: only on Ctrl+Enter"));
+    bar->addWidget(m_live);
+    m_delay = new QSpinBox(this);
+    m_delay->setRange(0, 5000);
+    m_delay->setSingleStep(50);
+    m_delay->setSuffix(tr(" ms"));
+    m_delay->setValue(kDefaultPauseMs);
+    m_delay->setToolTip(tr("The pause after the last key before a live recompile"));
+    connect(m_live, &QCheckBox::toggled, m_delay, &QSpinBox::setEnabled);
+    bar->addWidget(m_delay);
+
+    m_find = new QLineEdit(this);
+    m_find->setPlaceholderText(tr("Find (Ctrl+F)"));
+    m_find->setClearButtonEnabled(true);
+    connect(m_find, &QLineEdit::returnPressed, this, [this] {
+        auto *e = static_cast<ShaderEditor *>(m_tabs->currentWidget());
+        e->findFirst(m_find->text(), false, false, false, true);
+    });
+    bar->addWidget(m_find, 1);
+    layout->addLayout(bar);
+
+    m_tabs = new QTabWidget(this);
+    m_vertex = new ShaderEditor(this);
+    m_fragment = new ShaderEditor(this);
+    m_tabs->addTab(m_vertex, tr("Vertex"));
+    m_tabs->addTab(m_fragment, tr("Fragment"));
+    m_list = new QListWidget(this);
+    m_list->setToolTip(tr("Click a message to go to its line"));
+    // The status line sits above the messages; its text never widens the dock (a dock that
+    // grew on an error would shrink the viewport under the user's eyes).
+    m_status = new QLabel(this);
+    m_status->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+    auto *messages = new QWidget(this);
+    auto *messagesLayout = new QVBoxLayout(messages);
+    messagesLayout->setContentsMargins(0, 0, 0, 0);
+    messagesLayout->addWidget(m_status);
+    messagesLayout->addWidget(m_list);
+    auto *split = new QSplitter(Qt::Vertical, this);
+    split->addWidget(m_tabs);
+    split->addWidget(messages);
+    split->setStretchFactor(0, 5);
+    split->setStretchFactor(1, 1);
+    layout->addWidget(split, 1);
+
+    m_pause.setSingleShot(true);
+    connect(&m_pause, &QTimer::timeout, this, &EditorPanel::compileNow);
+    for (ShaderEditor *e : {m_vertex, m_fragment})
+        connect(e, &ShaderEditor::textChanged, this, &EditorPanel::onEdited);
+    connect(m_list, &QListWidget::itemActivated, this,
+            [this](QListWidgetItem *item) { jumpTo(m_list->row(item)); });
+    connect(m_list, &QListWidget::itemClicked, this,
+            [this](QListWidgetItem *item) { jumpTo(m_list->row(item)); });
+
+    for (const char *key : {"Ctrl+Return", "Ctrl+Enter"}) {
+        auto *s = new QShortcut(QKeySequence(tr(key)), this, this, &EditorPanel::compileNow);
+        s->setContext(Qt::WidgetWithChildrenShortcut);
+    }
+    auto *find = new QShortcut(QKeySequence::Find, this);
+    find->setContext(Qt::WidgetWithChildrenShortcut);
+    connect(find, &QShortcut::activated, this, [this] {
+        m_find->setFocus();
+        m_find->selectAll();
+    });
+}
+
+ShaderEditor *EditorPanel::editor(ShaderStage stage) const
+{
+    return stage == ShaderStage::Fragment ? m_fragment : m_vertex;
+}
+
+QString EditorPanel::source(ShaderStage stage) const
+{
+    return editor(stage)->text();
+}
+
+void EditorPanel::setSources(const QString &vertex, const QString &fragment)
+{
+    m_loading = true;
+    m_vertex->setText(vertex);
+    m_fragment->setText(fragment);
+    m_loading = false;
+    m_builtInVertex.clear();
+    m_builtInFragment.clear();
+    compileNow();
+}
+
+void EditorPanel::loadPreset(const Preset &preset)
+{
+    setSources(preset.vertexSource(), preset.fragmentSource());
+    for (bool gouraud : {false, true}) {
+        if (&builtInPreset(gouraud) == &preset) {
+            m_builtInVertex = source(ShaderStage::Vertex);
+            m_builtInFragment = source(ShaderStage::Fragment);
+            m_builtInIsGouraud = gouraud;
+        }
+    }
+}
+
+void EditorPanel::followShading(bool gouraud)
+{
+    const bool untouched = !m_builtInVertex.isEmpty() &&
+                           source(ShaderStage::Vertex) == m_builtInVertex &&
+                           source(ShaderStage::Fragment) == m_builtInFragment;
+    if (untouched && gouraud != m_builtInIsGouraud)
+        loadPreset(builtInPreset(gouraud));
+}
+
+void EditorPanel::onEdited()
+{
+    if (m_loading)
+        return;
+    if (m_live->isChecked())
+        m_pause.start(m_delay->value());
+}
+
+void EditorPanel::compileNow()
+{
+    m_pause.stop();
+    emit compileRequested(source(ShaderStage::Vertex), source(ShaderStage::Fragment));
+}
+
+void EditorPanel::showBuild(const ProgramBuild &build)
+{
+    m_shown = build.diagnostics;
+    std::vector<Diagnostic> perStage[2];
+    m_list->clear();
+    int errors = 0, warnings = 0;
+    for (const Diagnostic &d : m_shown) {
+        const bool error = d.severity == Diagnostic::Severity::Error;
+        (error ? errors : warnings)++;
+        if (d.stage != ShaderStage::Link)
+            perStage[d.stage == ShaderStage::Fragment].push_back(d);
+        const QString where =
+            d.line > 0 ? QString("%1 %2:%3").arg(stageName(d.stage)).arg(d.line).arg(d.column)
+                       : stageName(d.stage);
+        auto *item = new QListWidgetItem(
+            QString("%1  %2: %3").arg(where, error ? tr("error") : tr("warning"), d.message),
+            m_list);
+        item->setForeground(error ? QColor("#c62828") : QColor("#8a5a00"));
+    }
+    m_vertex->showDiagnostics(perStage[0]);
+    m_fragment->showDiagnostics(perStage[1]);
+    m_tabs->setTabText(0, perStage[0].empty() ? tr("Vertex") : tr("Vertex \u25cf"));
+    m_tabs->setTabText(1, perStage[1].empty() ? tr("Fragment") : tr("Fragment \u25cf"));
+    if (build.ok())
+        m_status->setText(
+            warnings ? tr("<span style='color:#8a5a00'>linked, %n warning(s)</span>", "", warnings)
+                     : tr("<span style='color:#2e7d32'>linked</span>"));
+    else
+        m_status->setText(
+            tr("<span style='color:#c62828'>%n error(s): last good program drawing</span>", "",
+               errors));
+}
+
+void EditorPanel::jumpTo(int row)
+{
+    if (row < 0 || row >= int(m_shown.size()))
+        return;
+    const Diagnostic &d = m_shown[std::size_t(row)];
+    if (d.stage == ShaderStage::Link)
+        return;
+    m_tabs->setCurrentWidget(editor(d.stage));
+    editor(d.stage)->goTo(d.line, d.column);
+}
+
+} // namespace lb
