@@ -1,6 +1,7 @@
 // lightbench: the window, or one headless frame (--render / --probe / --bench-frames).
 
 #include "command_line.h"
+#include "editor_panel.h"
 #include "headless.h"
 #include "main_window.h"
 #include "offscreen.h"
@@ -67,6 +68,8 @@ int main(int argc, char **argv)
     lb::Scene scene = window.document().scene();
     cl.applyTo(scene);
     window.document().set(scene);
+    if (cl.hasUserProgram()) // the window opens them in the editor
+        window.editorPanel()->setSources(cl.vertexSource, cl.fragmentSource);
     window.show();
 
     if (!cl.screenshotPath.isEmpty()) {

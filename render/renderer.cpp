@@ -338,6 +338,9 @@ void Renderer::render(const Scene &scene, QSize pixels)
     if (scene.showLight)
         drawLightMarker(scene, frames);
     glUseProgram(0);
+    // Leave the depth test off, as Qt's own GL painting (QOpenGLWidget composition, QPainter)
+    // expects to find it.
+    glDisable(GL_DEPTH_TEST);
 }
 
 } // namespace lb

@@ -1,5 +1,6 @@
 #include "viewport.h"
 
+#include <QLabel>
 #include <QMouseEvent>
 #include <QOpenGLContext>
 #include <QPainter>
@@ -24,6 +25,12 @@ Viewport::Viewport(SceneDocument *document, QWidget *parent)
         syncAnimation();
         update();
     });
+    // A child widget over the GL picture: Qt composes it, and its text is drawn by the raster
+    // engine, so it stays crisp and appears in window grabs.
+    m_banner = new QLabel(this);
+    m_banner->setStyleSheet("QLabel { background: rgba(120, 20, 20, 200); color: white; "
+                            "padding: 4px 8px; }");
+    m_banner->hide();
     m_animation.setInterval(16);
     connect(&m_animation, &QTimer::timeout, this, &Viewport::advanceAnimation);
     syncAnimation();
@@ -74,8 +81,6 @@ void Viewport::paintGL()
         return;
     }
     m_renderer.render(m_document->scene(), size() * devicePixelRatio());
-    if (!m_banner.isEmpty())
-        paintBanner();
 }
 
 void Viewport::compileProgram(const QString &vertexSource, const QString &fragmentSource)
@@ -97,29 +102,33 @@ void Viewport::buildNow(const QString &vertexSource, const QString &fragmentSour
     if (build.ok()) {
         m_goodVertex = vertexSource;
         m_goodFragment = fragmentSource;
-        m_banner.clear();
+        setBanner({});
     } else {
-        m_banner = m_renderer.hasUserProgram()
-                       ? tr("The shader has errors (see the editor): the last good program is "
-                            "drawing")
-                       : tr("The shader has errors (see the editor): the built-in program is "
-                            "drawing");
+        setBanner(m_renderer.hasUserProgram()
+                      ? tr("The shader has errors (see the editor): the last good program is "
+                           "drawing")
+                      : tr("The shader has errors (see the editor): the built-in program is "
+                           "drawing"));
     }
     update();
     emit programBuilt(build);
 }
 
-void Viewport::paintBanner()
+QString Viewport::banner() const
 {
-    QPainter painter(this);
-    QFont font = painter.font();
-    font.setPointSizeF(font.pointSizeF() * 0.95);
-    painter.setFont(font);
-    const int h = painter.fontMetrics().height() + 10;
-    painter.fillRect(QRect(0, 0, width(), h), QColor(120, 20, 20, 190));
-    painter.setPen(Qt::white);
-    painter.drawText(QRect(8, 0, width() - 16, h), Qt::AlignVCenter | Qt::AlignLeft,
-                     painter.fontMetrics().elidedText(m_banner, Qt::ElideRight, width() - 16));
+    return m_banner->isVisible() ? m_banner->text() : QString();
+}
+
+void Viewport::setBanner(const QString &text)
+{
+    m_banner->setText(text);
+    m_banner->setVisible(!text.isEmpty());
+    m_banner->setGeometry(0, 0, width(), m_banner->sizeHint().height());
+}
+
+void Viewport::resizeGL(int, int)
+{
+    m_banner->setGeometry(0, 0, width(), m_banner->sizeHint().height());
 }
 
 void Viewport::resetCamera()

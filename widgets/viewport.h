@@ -12,6 +12,8 @@
 #include <QPoint>
 #include <QTimer>
 
+class QLabel;
+
 namespace lb {
 
 class Viewport : public QOpenGLWidget
@@ -23,7 +25,7 @@ public:
 
     void resetCamera();
     QString renderError() const { return m_error; }
-    QString banner() const { return m_banner; }
+    QString banner() const; // the message over the picture; empty when there is none
 
     // Builds the user's program (now, or once the context exists) and reports it through
     // programBuilt(). When it fails, the last good program keeps drawing under a banner.
@@ -36,6 +38,7 @@ signals:
 protected:
     void initializeGL() override;
     void paintGL() override;
+    void resizeGL(int w, int h) override;
     void mousePressEvent(QMouseEvent *event) override;
     void mouseMoveEvent(QMouseEvent *event) override;
     void wheelEvent(QWheelEvent *event) override;
@@ -43,14 +46,14 @@ protected:
 private:
     void releaseGl(); // with the context made current: the renderer's GL objects go
     void buildNow(const QString &vertexSource, const QString &fragmentSource);
-    void paintBanner();
+    void setBanner(const QString &text);
     void syncAnimation();
     void advanceAnimation();
 
     SceneDocument *m_document;
     Renderer m_renderer;
     QString m_error;
-    QString m_banner;
+    QLabel *m_banner;
     // The last sources that linked, built again when the widget gets a new context, and the
     // ones asked for before there was a context.
     QString m_goodVertex, m_goodFragment;
