@@ -6,6 +6,7 @@
 #include "material_panel.h"
 #include "object_panel.h"
 #include "shading_panel.h"
+#include "uniform_panel.h"
 #include "viewport.h"
 
 #include <QAction>
@@ -65,6 +66,10 @@ MainWindow::MainWindow(QSettings &settings, QWidget *parent)
     QDockWidget *objectDock =
         addDock(this, tr("Object"), "objectDock", m_object, Qt::LeftDockWidgetArea);
     tabifyDockWidget(shadingDock, objectDock);
+    m_uniforms = new UniformPanel(&m_document);
+    QDockWidget *uniformDock =
+        addDock(this, tr("Shader uniforms"), "uniformDock", m_uniforms, Qt::LeftDockWidgetArea);
+    tabifyDockWidget(objectDock, uniformDock);
     shadingDock->raise();
 
     m_editor = new EditorPanel;
@@ -75,6 +80,7 @@ MainWindow::MainWindow(QSettings &settings, QWidget *parent)
     resizeDocks({editorDock}, {520}, Qt::Horizontal);
     connect(m_editor, &EditorPanel::compileRequested, m_viewport, &Viewport::compileProgram);
     connect(m_viewport, &Viewport::programBuilt, m_editor, &EditorPanel::showBuild);
+    connect(m_viewport, &Viewport::programBuilt, this, &MainWindow::showProgramUsage);
     m_editor->loadPreset(builtInPreset(m_document.scene().shading.shading == Shading::Gouraud));
 
     m_glLabel = new QLabel(this);
@@ -159,6 +165,21 @@ void MainWindow::buildMenus()
                "P: perspective / orthographic\nL: lighting on / off\n"
                "Ctrl+Shift+R: reset everything"));
     });
+}
+
+void MainWindow::showProgramUsage(const ProgramBuild &build)
+{
+    if (!build.ok())
+        return; // the last good program, and what it reads, stay
+    std::set<Semantic> read;
+    for (const ActiveUniform &u : build.uniforms)
+        if (u.semantic)
+            read.insert(*u.semantic);
+    for (ScenePanel *panel :
+         {static_cast<ScenePanel *>(m_light), static_cast<ScenePanel *>(m_material),
+          static_cast<ScenePanel *>(m_shading)})
+        panel->showUsage(read);
+    m_uniforms->setUniforms(build.uniforms);
 }
 
 void MainWindow::updateStatus()

@@ -3,6 +3,7 @@
 // the left, Shading and Object on the right. Scene, window layout and docks are kept in
 // QSettings and come back at the next start.
 
+#include "glsl/program.h"
 #include "scene_document.h"
 
 #include <QMainWindow>
@@ -18,6 +19,7 @@ class LightPanel;
 class MaterialPanel;
 class ObjectPanel;
 class ShadingPanel;
+class UniformPanel;
 class Viewport;
 
 class MainWindow : public QMainWindow
@@ -34,6 +36,7 @@ public:
     ShadingPanel *shadingPanel() const { return m_shading; }
     ObjectPanel *objectPanel() const { return m_object; }
     EditorPanel *editorPanel() const { return m_editor; }
+    UniformPanel *uniformPanel() const { return m_uniforms; }
 
     void saveSettings();
 
@@ -43,6 +46,7 @@ protected:
 private:
     void buildMenus();
     void updateStatus();
+    void showProgramUsage(const ProgramBuild &build);
 
     QSettings &m_settings;
     SceneDocument m_document;
@@ -52,6 +56,7 @@ private:
     ShadingPanel *m_shading;
     ObjectPanel *m_object;
     EditorPanel *m_editor;
+    UniformPanel *m_uniforms;
     QLabel *m_glLabel;
     QTimer m_saveTimer; // saves the scene shortly after each change, so a kill loses little
 };

@@ -211,8 +211,10 @@ void Renderer::setUniforms(const Program &program, const Scene &scene, const Fra
     const Light &light = scene.light;
     const Material &material = scene.material;
     for (const ActiveUniform &u : program.uniforms) {
-        if (!u.semantic)
+        if (!u.semantic) {
+            setShaderValue(u, scene);
             continue;
+        }
         switch (*u.semantic) {
         case Semantic::ModelView:
             matrix(u, frames.modelView);
@@ -278,6 +280,28 @@ void Renderer::setUniforms(const Program &program, const Scene &scene, const Fra
             number(u, 0);
             break;
         }
+    }
+}
+
+void Renderer::setShaderValue(const ActiveUniform &u, const Scene &scene)
+{
+    const auto it = scene.shaderValues.find(u.name);
+    const int n = u.components();
+    if (it == scene.shaderValues.end() || n == 0 || int(it->second.size()) != n)
+        return; // the program keeps the value it has (its initializer, at first)
+    const std::vector<float> &v = it->second;
+    if (u.isInteger()) {
+        const GLint i[4] = {GLint(v[0]), n > 1 ? GLint(v[1]) : 0, n > 2 ? GLint(v[2]) : 0,
+                            n > 3 ? GLint(v[3]) : 0};
+        const decltype(&QOpenGLExtraFunctions::glUniform1iv) set[4] = {
+            &QOpenGLExtraFunctions::glUniform1iv, &QOpenGLExtraFunctions::glUniform2iv,
+            &QOpenGLExtraFunctions::glUniform3iv, &QOpenGLExtraFunctions::glUniform4iv};
+        (this->*set[n - 1])(u.location, 1, i);
+    } else {
+        const decltype(&QOpenGLExtraFunctions::glUniform1fv) set[4] = {
+            &QOpenGLExtraFunctions::glUniform1fv, &QOpenGLExtraFunctions::glUniform2fv,
+            &QOpenGLExtraFunctions::glUniform3fv, &QOpenGLExtraFunctions::glUniform4fv};
+        (this->*set[n - 1])(u.location, 1, v.data());
     }
 }
 

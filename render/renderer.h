@@ -69,6 +69,7 @@ private:
     void release(Program &program);
     const Program &objectProgram(const Scene &scene) const;
     void setUniforms(const Program &program, const Scene &scene, const Frames &frames);
+    void setShaderValue(const ActiveUniform &uniform, const Scene &scene);
     void drawLightMarker(const Scene &scene, const Frames &frames);
 
     bool m_initialized = false;

@@ -61,17 +61,19 @@ QJsonArray toArray(const float *v, int n)
     return a;
 }
 
-// Reads n numbers into v when the field is an array of n finite numbers; otherwise keeps v.
-void readArray(const QJsonObject &o, const char *key, float *v, int n)
+// Reads n numbers into v when the field is an array of n finite numbers; otherwise keeps v
+// and returns false.
+bool readArray(const QJsonObject &o, const QString &key, float *v, int n)
 {
-    const QJsonArray a = o.value(QLatin1String(key)).toArray();
+    const QJsonArray a = o.value(key).toArray();
     if (a.size() != n)
-        return;
+        return false;
     for (int i = 0; i < n; ++i)
         if (!a[i].isDouble() || !std::isfinite(a[i].toDouble()))
-            return;
+            return false;
     for (int i = 0; i < n; ++i)
         v[i] = float(a[i].toDouble());
+    return true;
 }
 
 template <typename T> void readNumber(const QJsonObject &o, const char *key, T &v)
@@ -202,6 +204,10 @@ QJsonObject Scene::toJson() const
     root["object"] = ob;
     root["camera"] = c;
     root["showLight"] = showLight;
+    QJsonObject values;
+    for (const auto &[name, v] : shaderValues)
+        values[name] = toArray(v.data(), int(v.size()));
+    root["shaderValues"] = values;
     return root;
 }
 
@@ -253,6 +259,13 @@ Scene Scene::fromJson(const QJsonObject &json)
     sc.camera.orbit(0.0f, 0.0f);
 
     readBool(json, "showLight", sc.showLight);
+    const QJsonObject values = json.value("shaderValues").toObject();
+    for (auto it = values.begin(); it != values.end(); ++it) {
+        const int n = int(it.value().toArray().size());
+        std::vector<float> v(std::size_t(std::clamp(n, 1, 4)), 0.0f);
+        if (n >= 1 && n <= 4 && readArray(values, it.key(), v.data(), n))
+            sc.shaderValues[it.key()] = v;
+    }
     return sc;
 }
 

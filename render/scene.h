@@ -12,7 +12,9 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include <map>
 #include <optional>
+#include <vector>
 
 namespace lb {
 
@@ -54,6 +56,9 @@ struct Scene
     ObjectSettings object;
     OrbitCamera camera;
     bool showLight = true; // draw the light's marker (unlit sphere or arrow)
+    // Values of the user shader's own uniforms (those no panel feeds), by name; they outlive
+    // recompiles and restarts. 1 to 4 numbers each.
+    std::map<QString, std::vector<float>> shaderValues;
 
     QJsonObject toJson() const;
     // Missing or ill-typed fields keep their defaults.

@@ -28,6 +28,8 @@ LightPanel::LightPanel(SceneDocument *document, QWidget *parent) : ScenePanel(do
         connect(spin, &QDoubleSpinBox::valueChanged, this,
                 [this, i](double v) { edit([&](Scene &s) { s.light.position[i] = float(v); }); });
         m_xyz[std::size_t(i)] = spin;
+        feeds(spin, {Semantic::LightPosition, Semantic::LightPositionEye},
+              "lightPosition or uLightPosition");
         xyzRow->addWidget(spin);
     }
     form->addRow(tr("Position"), xyzRow);
@@ -43,6 +45,8 @@ LightPanel::LightPanel(SceneDocument *document, QWidget *parent) : ScenePanel(do
                 s.light.position.z = 1.0f;
         });
     });
+    feeds(m_w, {Semantic::LightPosition, Semantic::LightPositionEye},
+          "lightPosition or uLightPosition");
     form->addRow(tr("Type"), m_w);
 
     m_frame =
@@ -52,6 +56,8 @@ LightPanel::LightPanel(SceneDocument *document, QWidget *parent) : ScenePanel(do
                      "world: mView / mViewNormals (II); object: mModelView / mNormals (III)"));
     connect(m_frame, &QComboBox::currentIndexChanged, this,
             [this](int index) { edit([&](Scene &s) { s.light.frame = LightFrame(index); }); });
+    feeds(m_frame, {Semantic::LightFrame, Semantic::LightPositionEye},
+          "uLightFrame or uLightPosition");
     form->addRow(tr("Frame"), m_frame);
 
     const char *symbols[3] = {"Ia", "Id", "Is"};
@@ -67,6 +73,9 @@ LightPanel::LightPanel(SceneDocument *document, QWidget *parent) : ScenePanel(do
             edit([&](Scene &s) { s.light.colors.*kColourMembers[i] = c; });
         });
         m_colors[std::size_t(i)] = colour;
+        const Semantic semantics[3] = {Semantic::LightAmbient, Semantic::LightDiffuse,
+                                       Semantic::LightSpecular};
+        feeds(colour, {semantics[i]}, i == 1 ? "lightDif or uLightColor" : uniforms[i]);
         form->addRow(symbols[i], colour);
     }
 

@@ -44,6 +44,9 @@ MaterialPanel::MaterialPanel(SceneDocument *document, QWidget *parent)
             edit([&](Scene &s) { s.material.*kColourMembers[i] = c; });
         });
         m_colors[std::size_t(i)] = colour;
+        const Semantic semantics[3] = {Semantic::MaterialAmbient, Semantic::MaterialDiffuse,
+                                       Semantic::MaterialSpecular};
+        feeds(colour, {semantics[i]}, uniforms[i]);
         form->addRow(symbols[i], colour);
     }
 
@@ -58,6 +61,8 @@ MaterialPanel::MaterialPanel(SceneDocument *document, QWidget *parent)
     });
     connect(m_box, &QDoubleSpinBox::valueChanged, this,
             [this](double v) { edit([&](Scene &s) { s.material.shininess = float(v); }); });
+    feeds(m_slider, {Semantic::Shininess}, "shininess");
+    feeds(m_box, {Semantic::Shininess}, "shininess");
     auto *row = new QHBoxLayout;
     row->addWidget(m_slider, 1);
     row->addWidget(m_box);

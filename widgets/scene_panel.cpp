@@ -34,6 +34,26 @@ QComboBox *ScenePanel::makeCombo(const QStringList &labels, const QString &toolT
     return combo;
 }
 
+void ScenePanel::feeds(QWidget *control, std::vector<Semantic> semantics, const QString &names)
+{
+    m_uses.push_back({control, std::move(semantics), names, control->toolTip()});
+}
+
+void ScenePanel::showUsage(const std::set<Semantic> &read)
+{
+    for (const Use &use : m_uses) {
+        bool used = false;
+        for (Semantic s : use.semantics)
+            used = used || read.count(s) > 0;
+        use.control->setEnabled(used);
+        use.control->setToolTip(
+            used ? use.toolTip
+                 : tr("Unused: the program on screen has no uniform %1 (a constant in the "
+                      "shader, perhaps), so this control changes nothing.\n\n%2")
+                       .arg(use.names, use.toolTip));
+    }
+}
+
 void ScenePanel::addResetButton(QFormLayout *form, const QString &text, const QString &toolTip,
                                 std::function<void(Scene &)> reset)
 {

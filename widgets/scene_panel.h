@@ -2,11 +2,14 @@
 // Base of the dock panels: each edits the SceneDocument and shows its values again whenever
 // the document changes (from the panel itself, another panel, the camera or a reset).
 
+#include "glsl/semantics.h"
 #include "scene_document.h"
 
 #include <QWidget>
 
 #include <functional>
+#include <set>
+#include <vector>
 
 class QDoubleSpinBox;
 class QComboBox;
@@ -20,7 +23,14 @@ class ScenePanel : public QWidget
 public:
     explicit ScenePanel(SceneDocument *document, QWidget *parent = nullptr);
 
+    // Greys out the controls whose uniforms the program on screen does not read, and says
+    // why in their tooltip (a student who hard-coded a const sees why a slider does nothing).
+    void showUsage(const std::set<Semantic> &read);
+
 protected:
+    // `control` feeds the program through any of `semantics` (uniforms named `names`).
+    void feeds(QWidget *control, std::vector<Semantic> semantics, const QString &names);
+
     // Shows the scene's values in the controls; must not emit edits (block signals).
     virtual void refresh(const Scene &scene) = 0;
     // Runs refresh() once the derived constructor has built its controls.
@@ -35,6 +45,16 @@ protected:
                         std::function<void(Scene &)> reset);
 
     SceneDocument *m_document;
+
+private:
+    struct Use
+    {
+        QWidget *control;
+        std::vector<Semantic> semantics;
+        QString names;
+        QString toolTip; // as written by the panel
+    };
+    std::vector<Use> m_uses;
 };
 
 } // namespace lb

@@ -25,12 +25,15 @@ ShadingPanel::ShadingPanel(SceneDocument *document, QWidget *parent) : ScenePane
                               "H = normalize(L + V), the half vector (key B)"));
     connect(m_specular, &QComboBox::currentIndexChanged, this,
             [this](int i) { edit([&](Scene &s) { s.shading.specular = SpecularModel(i); }); });
+    feeds(m_specular, {Semantic::SpecularModel}, "uSpecularModel");
     form->addRow(tr("Specular"), m_specular);
 
     m_projection = makeCombo({tr("Perspective: V = -posC"), tr("Orthographic: V = (0,0,1)")},
                              tr("mProjection, and the view vector V that matches it (key P)"));
     connect(m_projection, &QComboBox::currentIndexChanged, this,
             [this](int i) { edit([&](Scene &s) { s.shading.projection = Projection(i); }); });
+    feeds(m_projection, {Semantic::Projection, Semantic::ProjectionKind},
+          "mProjection or uProjectionMatrix");
     form->addRow(tr("Projection"), m_projection);
 
     auto makeCheck = [this, form](const QString &label, const QString &tip,
@@ -51,6 +54,9 @@ ShadingPanel::ShadingPanel(SceneDocument *document, QWidget *parent) : ScenePane
                           tr("uEnableTexture: multiply ambient and diffuse by the checker "
                              "texture (uSampler)"),
                           &ShadingSettings::texture);
+    feeds(m_lighting, {Semantic::EnableLighting}, "uEnableLighting");
+    feeds(m_vertexColors, {Semantic::EnableVertexColor}, "uEnableVertexColor");
+    feeds(m_texture, {Semantic::EnableTexture}, "uEnableTexture");
 
     addResetButton(form, tr("Reset shading"),
                    tr("Phong shading, Blinn-Phong specular, perspective, lighting on"),

@@ -12,8 +12,14 @@ QString readResource(const QString &path)
 }
 } // namespace
 
-QString Preset::vertexSource() const { return readResource(resource + ".vert"); }
-QString Preset::fragmentSource() const { return readResource(resource + ".frag"); }
+QString Preset::vertexSource() const
+{
+    return readResource(resource + ".vert");
+}
+QString Preset::fragmentSource() const
+{
+    return readResource(resource + ".frag");
+}
 
 const std::vector<Preset> &presets()
 {
@@ -22,11 +28,14 @@ const std::vector<Preset> &presets()
         {"Built-in: Gouraud shading (per vertex)", ":/shaders/gouraud"},
         {"Slides: Gouraud, WebGL 1 as printed", ":/shaders/presets/slides_gouraud"},
         {"Slides: Phong shading, WebGL 1 as printed", ":/shaders/presets/slides_phong"},
-        {"Toon (the exercise's \"like Zelda\"), WebGL 1", ":/shaders/presets/toon"},
+        {"Toon (the exercise's \"like Zelda\"), GLSL 3.30", ":/shaders/presets/toon"},
     };
     return list;
 }
 
-const Preset &builtInPreset(bool gouraud) { return presets()[gouraud ? 1 : 0]; }
+const Preset &builtInPreset(bool gouraud)
+{
+    return presets()[gouraud ? 1 : 0];
+}
 
 } // namespace lb

@@ -102,12 +102,66 @@ std::vector<ActiveUniform> activeUniforms(QOpenGLExtraFunctions &gl, GLuint prog
         if (u.name.endsWith("[0]"))
             u.name.chop(3);
         u.semantic = semanticOf(u.name);
+        if (const int n = u.components(); n > 0) {
+            if (u.isInteger()) {
+                GLint v[4] = {};
+                gl.glGetUniformiv(program, u.location, v);
+                u.initial.assign(v, v + n);
+            } else {
+                GLfloat v[4] = {};
+                gl.glGetUniformfv(program, u.location, v);
+                u.initial.assign(v, v + n);
+            }
+        }
         uniforms.push_back(u);
     }
     return uniforms;
 }
 
 } // namespace
+
+int ActiveUniform::components() const
+{
+    if (size != 1 || location < 0)
+        return 0;
+    switch (type) {
+    case GL_FLOAT:
+    case GL_INT:
+    case GL_BOOL:
+        return 1;
+    case GL_FLOAT_VEC2:
+    case GL_INT_VEC2:
+    case GL_BOOL_VEC2:
+        return 2;
+    case GL_FLOAT_VEC3:
+    case GL_INT_VEC3:
+    case GL_BOOL_VEC3:
+        return 3;
+    case GL_FLOAT_VEC4:
+    case GL_INT_VEC4:
+    case GL_BOOL_VEC4:
+        return 4;
+    default:
+        return 0;
+    }
+}
+
+bool ActiveUniform::isInteger() const
+{
+    switch (type) {
+    case GL_INT:
+    case GL_INT_VEC2:
+    case GL_INT_VEC3:
+    case GL_INT_VEC4:
+    case GL_BOOL:
+    case GL_BOOL_VEC2:
+    case GL_BOOL_VEC3:
+    case GL_BOOL_VEC4:
+        return true;
+    default:
+        return false;
+    }
+}
 
 bool ProgramBuild::hasErrors() const
 {

@@ -30,6 +30,13 @@ struct ActiveUniform
     GLint size = 1; // array length
     GLint location = -1;
     std::optional<Semantic> semantic;
+    // The value right after linking (its initializer, or 0), for the generated controls.
+    std::vector<float> initial;
+
+    // How many numbers a generated control edits: 1 to 4 for float/int/bool and vectors;
+    // 0 for what gets no control (matrices, samplers, arrays).
+    int components() const;
+    bool isInteger() const; // int, ivecN, bool, bvecN
 };
 
 struct ProgramBuild

@@ -1,11 +1,11 @@
-// Toon shading: the diffuse term in a few flat bands, a hard-edged highlight and a dark
-// rim where the surface turns away from the eye. bands and rimWidth are not panel values:
-// the workbench makes a control for each of them.
-precision mediump float;
-
-varying vec3 fPosition;
-varying vec3 fNormal;
-varying vec3 fLight;
+#version 330 core
+// Toon shading: the diffuse term in a few flat bands, a hard-edged highlight and a dark rim
+// where the surface turns away from the eye. bands, rimWidth and outlineColour are not panel
+// values: the workbench makes a control for each (Shader uniforms), starting from the
+// initializers below.
+in vec3 fPosition;
+in vec3 fNormal;
+in vec3 fLight;
 
 uniform vec3 lightAmb;
 uniform vec3 lightDif;
@@ -15,8 +15,11 @@ uniform vec3 materialDif;
 uniform vec3 materialSpe;
 uniform float shininess;
 
-uniform float bands;    // how many diffuse bands (try 2 to 5)
-uniform float rimWidth; // 0 = no outline, 0.4 = a thick one
+uniform float bands = 3.0;                  // how many diffuse bands
+uniform float rimWidth = 0.35;              // 0: no outline
+uniform vec3 outlineColour = vec3(0.05, 0.03, 0.02);
+
+out vec4 fragColor;
 
 void main()
 {
@@ -34,5 +37,5 @@ void main()
 
     vec3 colour = lightAmb * materialAmb + diffuse * lightDif * materialDif
                 + highlight * lightSpe * materialSpe;
-    gl_FragColor = vec4(mix(colour, vec3(0.05), rim), 1.0);
+    fragColor = vec4(mix(colour, outlineColour, rim), 1.0);
 }

@@ -1,8 +1,9 @@
-// Toon shading, the exercise's Aufgabe 4 ("like Zelda"), in the slides' WebGL 1 style.
-// The vertex stage carries position, normal and light vector in the camera frame; the
-// light is given in world coordinates (the slides' variant II) by the Light panel.
-attribute vec4 vPosition;
-attribute vec4 vNormal;
+#version 330 core
+// Toon shading, the exercise's Aufgabe 4 ("like Zelda"). The vertex stage carries position,
+// normal and light vector in the camera frame; the light is given in world coordinates (the
+// slides' variant II) by the Light panel.
+in vec4 vPosition;
+in vec4 vNormal;
 
 uniform mat4 mModelView;
 uniform mat4 mNormals;
@@ -11,9 +12,9 @@ uniform mat4 mViewNormals;
 uniform mat4 mProjection;
 uniform vec4 lightPosition;
 
-varying vec3 fPosition;
-varying vec3 fNormal;
-varying vec3 fLight;
+out vec3 fPosition;
+out vec3 fNormal;
+out vec3 fLight;
 
 void main()
 {

@@ -28,6 +28,8 @@ private slots:
         s.object.tessellation = 40;
         s.object.scale = {2, 1, 0.5f};
         s.camera.orbit(10, 10);
+        s.shaderValues["bands"] = {6.0f};
+        s.shaderValues["tint"] = {0.1f, 0.2f, 0.3f, 1.0f};
         const Scene back = Scene::fromJson(s.toJson());
         QVERIFY(back == s);
         QVERIFY(back != Scene{});
@@ -49,6 +51,9 @@ private slots:
         object["scale"] = QJsonArray{0, 1, 1};
         json["object"] = object;
         json["camera"] = 7;
+        json["shaderValues"] = QJsonObject{{"five", QJsonArray{1, 2, 3, 4, 5}},
+                                           {"word", QJsonArray{"x"}},
+                                           {"ok", QJsonArray{2.5}}};
 
         const Scene s = Scene::fromJson(json);
         const Scene defaults;
@@ -59,6 +64,8 @@ private slots:
         QCOMPARE(s.object.tessellation, limits::kMinTessellation);
         QCOMPARE(s.object.scale.x, limits::kMinScale);
         QCOMPARE(s.camera.distance, defaults.camera.distance);
+        QCOMPARE(int(s.shaderValues.size()), 1);
+        QCOMPARE(s.shaderValues.at("ok"), std::vector<float>{2.5f});
         QVERIFY(Scene::fromJson(QJsonObject{}) == defaults);
     }
 

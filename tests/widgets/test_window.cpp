@@ -10,6 +10,7 @@
 #include "offscreen.h"
 #include "shader_editor.h"
 #include "shading_panel.h"
+#include "uniform_panel.h"
 #include "viewport.h"
 
 #include <QApplication>
@@ -304,6 +305,54 @@ private slots:
         e->presetsMenu()->actions().first()->trigger();
         QTRY_VERIFY(e->statusLabel()->text().contains("linked"));
         expectNewImage([&] { e->presetsMenu()->actions().last()->trigger(); }, "toon");
+    }
+
+    void ownUniformsGetControlsThatSurviveRecompiles()
+    {
+        EditorPanel *e = m_window->editorPanel();
+        e->loadPreset(presets().back()); // toon: bands, rimWidth, outlineColour
+        QTRY_VERIFY(e->statusLabel()->text().contains("linked"));
+        UniformPanel *u = m_window->uniformPanel();
+        QCOMPARE(u->controlCount(), 3);
+        QVERIFY(u->findChild<ColorEdit *>()); // outlineColour gets a colour picker
+        // The control starts from the shader's initializer.
+        QList<QDoubleSpinBox *> boxes;
+        for (QDoubleSpinBox *b : u->findChildren<QDoubleSpinBox *>())
+            if (b->toolTip().isEmpty() && b->parentWidget()->toolTip().contains("float bands"))
+                boxes << b;
+        QCOMPARE(boxes.size(), 1);
+        QCOMPARE(boxes[0]->value(), 3.0);
+        expectNewImage([&] { boxes[0]->setValue(6.0); }, "six bands");
+        QCOMPARE(scene().shaderValues.at("bands"), std::vector<float>{6.0f});
+
+        // A recompile (a comment added) keeps the value, in the scene and on screen.
+        const QImage six = frame();
+        ShaderEditor *fragment = e->editor(ShaderStage::Fragment);
+        fragment->append("\n// edited\n");
+        e->compileNow();
+        QTRY_VERIFY(e->statusLabel()->text().contains("linked"));
+        QCOMPARE(imageDifference(frame(), six), 0);
+        QCOMPARE(scene().shaderValues.at("bands"), std::vector<float>{6.0f});
+    }
+
+    void controlsTheProgramDoesNotReadAreMarkedUnused()
+    {
+        EditorPanel *e = m_window->editorPanel();
+        ShadingPanel *shading = m_window->shadingPanel();
+        // The slides' Gouraud shader hard-codes its material as constants.
+        e->loadPreset(presets()[2]);
+        QTRY_VERIFY(e->statusLabel()->text().contains("linked"));
+        ColorEdit *kd = m_window->materialPanel()->colorEdit(1);
+        QVERIFY(!kd->isEnabled());
+        QVERIFY(kd->toolTip().contains("materialDif"));
+        QVERIFY(kd->toolTip().startsWith("Unused"));
+        QVERIFY(!shading->specularCombo()->isEnabled());
+        QVERIFY(m_window->lightPanel()->coordinate(0)->isEnabled() == false); // a const too
+        // The built-in program reads them all.
+        e->loadPreset(builtInPreset(false));
+        QTRY_VERIFY(kd->isEnabled());
+        QVERIFY(shading->specularCombo()->isEnabled());
+        QVERIFY(!kd->toolTip().startsWith("Unused"));
     }
 
     void resetButtonsRestoreDefaults()
