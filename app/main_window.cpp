@@ -13,6 +13,7 @@
 #include <QApplication>
 #include <QCloseEvent>
 #include <QDockWidget>
+#include <QFileDialog>
 #include <QJsonDocument>
 #include <QLabel>
 #include <QMenuBar>
@@ -81,7 +82,12 @@ MainWindow::MainWindow(QSettings &settings, QWidget *parent)
     connect(m_editor, &EditorPanel::compileRequested, m_viewport, &Viewport::compileProgram);
     connect(m_viewport, &Viewport::programBuilt, m_editor, &EditorPanel::showBuild);
     connect(m_viewport, &Viewport::programBuilt, this, &MainWindow::showProgramUsage);
-    m_editor->loadPreset(builtInPreset(m_document.scene().shading.shading == Shading::Gouraud));
+    if (!m_editor->restoreState(m_settings))
+        m_editor->loadPreset(builtInPreset(m_document.scene().shading.shading == Shading::Gouraud));
+    connect(m_editor, &EditorPanel::edited, this, [this] {
+        if (!m_saveTimer.isActive())
+            m_saveTimer.start();
+    });
 
     m_glLabel = new QLabel(this);
     statusBar()->addPermanentWidget(m_glLabel);
@@ -116,6 +122,31 @@ void MainWindow::buildMenus()
     };
 
     QMenu *file = menuBar()->addMenu(tr("&File"));
+    const QString filter = tr("Shader pairs (*.vert *.frag);;All files (*)");
+    auto report = [this](const QString &error) {
+        if (!error.isEmpty())
+            QMessageBox::warning(this, tr("Shader files"), error);
+    };
+    addItem(file, tr("&Open Shaders..."), QKeySequence::Open, [this, filter, report] {
+        const QStringList paths = QFileDialog::getOpenFileNames(
+            this, tr("Open a shader pair (NAME.vert and NAME.frag)"), {}, filter);
+        if (!paths.isEmpty())
+            report(m_editor->openFiles(paths));
+    });
+    auto saveAs = [this, filter, report] {
+        const QString path = QFileDialog::getSaveFileName(
+            this, tr("Save the shader pair as NAME.vert and NAME.frag"), {}, filter);
+        if (!path.isEmpty())
+            report(m_editor->saveAs(path));
+    };
+    addItem(file, tr("&Save Shaders"), QKeySequence::Save, [this, saveAs, report] {
+        if (m_editor->filePath(ShaderStage::Vertex).isEmpty())
+            saveAs();
+        else
+            report(m_editor->save());
+    });
+    addItem(file, tr("Save Shaders &As..."), QKeySequence(tr("Ctrl+Shift+S")), saveAs);
+    file->addSeparator();
     addItem(file, tr("Reset &Everything"), QKeySequence(tr("Ctrl+Shift+R")),
             [this] { m_document.set(Scene{}); });
     file->addSeparator();
@@ -202,6 +233,7 @@ void MainWindow::saveSettings()
     m_settings.setValue(kSceneKey, QJsonDocument(m_document.scene().toJson()).toJson());
     m_settings.setValue(kGeometryKey, saveGeometry());
     m_settings.setValue(kStateKey, saveState(kStateVersion));
+    m_editor->saveState(m_settings);
     m_settings.sync();
 }
 

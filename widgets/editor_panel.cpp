@@ -4,11 +4,16 @@
 #include "shader_editor.h"
 
 #include <QCheckBox>
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
 #include <QListWidget>
 #include <QMenu>
+#include <QSaveFile>
+#include <QSettings>
 #include <QShortcut>
 #include <QSpinBox>
 #include <QSplitter>
@@ -20,7 +25,26 @@ namespace lb {
 
 namespace {
 constexpr int kDefaultPauseMs = 150;
+
+int index(ShaderStage stage)
+{
+    return stage == ShaderStage::Fragment ? 1 : 0;
 }
+
+QString partnerOf(const QString &path)
+{
+    const QFileInfo info(path);
+    const QString other = info.suffix() == "vert" ? "frag" : "vert";
+    return info.dir().filePath(info.completeBaseName() + "." + other);
+}
+
+ShaderStage stageOfFile(const QString &path)
+{
+    const QString suffix = QFileInfo(path).suffix().toLower();
+    return suffix == "frag" || suffix == "fs" || suffix == "fsh" ? ShaderStage::Fragment
+                                                                 : ShaderStage::Vertex;
+}
+} // namespace
 
 EditorPanel::EditorPanel(QWidget *parent) : QWidget(parent)
 {
@@ -92,8 +116,11 @@ EditorPanel::EditorPanel(QWidget *parent) : QWidget(parent)
 
     m_pause.setSingleShot(true);
     connect(&m_pause, &QTimer::timeout, this, &EditorPanel::compileNow);
-    for (ShaderEditor *e : {m_vertex, m_fragment})
+    for (ShaderEditor *e : {m_vertex, m_fragment}) {
         connect(e, &ShaderEditor::textChanged, this, &EditorPanel::onEdited);
+        connect(e, &ShaderEditor::modificationChanged, this, &EditorPanel::updateTitles);
+    }
+    connect(&m_watcher, &QFileSystemWatcher::fileChanged, this, &EditorPanel::fileChangedOnDisk);
     connect(m_list, &QListWidget::itemActivated, this,
             [this](QListWidgetItem *item) { jumpTo(m_list->row(item)); });
     connect(m_list, &QListWidget::itemClicked, this,
@@ -126,10 +153,18 @@ void EditorPanel::setSources(const QString &vertex, const QString &fragment)
     m_loading = true;
     m_vertex->setText(vertex);
     m_fragment->setText(fragment);
+    m_vertex->setModified(false);
+    m_fragment->setModified(false);
+    m_restoredUnsaved[0] = m_restoredUnsaved[1] = false;
     m_loading = false;
     m_builtInVertex.clear();
     m_builtInFragment.clear();
+    m_paths[0].clear();
+    m_paths[1].clear();
+    watch();
+    updateTitles();
     compileNow();
+    emit edited();
 }
 
 void EditorPanel::loadPreset(const Preset &preset)
@@ -159,6 +194,180 @@ void EditorPanel::onEdited()
         return;
     if (m_live->isChecked())
         m_pause.start(m_delay->value());
+    emit edited();
+}
+
+QString EditorPanel::filePath(ShaderStage stage) const
+{
+    return m_paths[index(stage)];
+}
+
+bool EditorPanel::isModified(ShaderStage stage) const
+{
+    return editor(stage)->isModified() || m_restoredUnsaved[index(stage)];
+}
+
+bool EditorPanel::isModified() const
+{
+    return isModified(ShaderStage::Vertex) || isModified(ShaderStage::Fragment);
+}
+
+void EditorPanel::updateTitles()
+{
+    for (ShaderStage stage : {ShaderStage::Vertex, ShaderStage::Fragment}) {
+        const int i = index(stage);
+        QString title = i ? tr("Fragment") : tr("Vertex");
+        if (!m_paths[i].isEmpty())
+            title += " - " + QFileInfo(m_paths[i]).fileName();
+        if (isModified(stage) && !m_paths[i].isEmpty())
+            title += " *";
+        if (editor(stage)->markedLineCount() > 0)
+            title += " \u25cf";
+        m_tabs->setTabText(i, title);
+        m_tabs->setTabToolTip(i, m_paths[i]);
+    }
+}
+
+void EditorPanel::watch()
+{
+    if (!m_watcher.files().isEmpty())
+        m_watcher.removePaths(m_watcher.files());
+    for (const QString &p : m_paths)
+        if (!p.isEmpty() && QFileInfo::exists(p))
+            m_watcher.addPath(p);
+}
+
+QString EditorPanel::openFiles(const QStringList &paths)
+{
+    QString chosen[2];
+    for (const QString &p : paths)
+        chosen[index(stageOfFile(p))] = p;
+    for (int i = 0; i < 2; ++i) // a single file brings its partner when there is one
+        if (chosen[i].isEmpty() && !chosen[1 - i].isEmpty() &&
+            QFileInfo::exists(partnerOf(chosen[1 - i])))
+            chosen[i] = partnerOf(chosen[1 - i]);
+    QString text[2] = {source(ShaderStage::Vertex), source(ShaderStage::Fragment)};
+    for (int i = 0; i < 2; ++i) {
+        if (chosen[i].isEmpty())
+            continue;
+        QFile f(chosen[i]);
+        if (!f.open(QIODevice::ReadOnly))
+            return tr("Cannot open %1: %2").arg(chosen[i], f.errorString());
+        text[i] = QString::fromUtf8(f.readAll());
+    }
+    const QString keep[2] = {m_paths[0], m_paths[1]};
+    setSources(text[0], text[1]);
+    for (int i = 0; i < 2; ++i)
+        m_paths[i] = chosen[i].isEmpty() ? keep[i] : QFileInfo(chosen[i]).absoluteFilePath();
+    watch();
+    updateTitles();
+    emit edited();
+    return {};
+}
+
+QString EditorPanel::writeFile(ShaderStage stage, const QString &path)
+{
+    QSaveFile f(path);
+    if (!f.open(QIODevice::WriteOnly) || f.write(source(stage).toUtf8()) < 0 || !f.commit())
+        return tr("Cannot save %1: %2").arg(path, f.errorString());
+    m_paths[index(stage)] = QFileInfo(path).absoluteFilePath();
+    editor(stage)->setModified(false);
+    m_restoredUnsaved[index(stage)] = false;
+    return {};
+}
+
+QString EditorPanel::save()
+{
+    if (m_paths[0].isEmpty() || m_paths[1].isEmpty())
+        return tr("The shaders have no files yet: use Save As");
+    m_watcher.blockSignals(true); // our own write is no change from outside
+    QString error = writeFile(ShaderStage::Vertex, m_paths[0]);
+    if (error.isEmpty())
+        error = writeFile(ShaderStage::Fragment, m_paths[1]);
+    watch();
+    m_watcher.blockSignals(false);
+    updateTitles();
+    emit edited();
+    return error;
+}
+
+QString EditorPanel::saveAs(const QString &anyPath)
+{
+    const QFileInfo info(anyPath);
+    const QString base = info.suffix() == "vert" || info.suffix() == "frag"
+                             ? info.dir().filePath(info.completeBaseName())
+                             : info.absoluteFilePath();
+    m_paths[0] = base + ".vert";
+    m_paths[1] = base + ".frag";
+    return save();
+}
+
+void EditorPanel::fileChangedOnDisk(const QString &path)
+{
+    for (ShaderStage stage : {ShaderStage::Vertex, ShaderStage::Fragment}) {
+        if (m_paths[index(stage)] != path)
+            continue;
+        QFile f(path);
+        if (!f.open(QIODevice::ReadOnly)) {
+            m_status->setText(tr("%1 is gone from the disk; your text is kept").arg(path));
+        } else if (isModified(stage)) {
+            m_status->setText(tr("%1 changed on disk; your unsaved edits are kept (Open it "
+                                 "again to take the disk's version)")
+                                  .arg(QFileInfo(path).fileName()));
+        } else {
+            const QString text = QString::fromUtf8(f.readAll());
+            if (text != source(stage)) {
+                m_loading = true;
+                editor(stage)->setText(text);
+                editor(stage)->setModified(false);
+                m_loading = false;
+                compileNow();
+            }
+        }
+    }
+    watch(); // editors that save by renaming replace the watched file
+}
+
+void EditorPanel::saveState(QSettings &settings) const
+{
+    settings.beginGroup("editor");
+    settings.setValue("vertex", source(ShaderStage::Vertex));
+    settings.setValue("fragment", source(ShaderStage::Fragment));
+    settings.setValue("vertexPath", m_paths[0]);
+    settings.setValue("fragmentPath", m_paths[1]);
+    settings.setValue("vertexModified", isModified(ShaderStage::Vertex));
+    settings.setValue("fragmentModified", isModified(ShaderStage::Fragment));
+    const bool builtIn = !m_builtInVertex.isEmpty() &&
+                         source(ShaderStage::Vertex) == m_builtInVertex &&
+                         source(ShaderStage::Fragment) == m_builtInFragment;
+    settings.setValue("builtIn", builtIn ? (m_builtInIsGouraud ? "gouraud" : "phong") : "");
+    settings.setValue("live", m_live->isChecked());
+    settings.setValue("pauseMs", m_delay->value());
+    settings.endGroup();
+}
+
+bool EditorPanel::restoreState(QSettings &settings)
+{
+    settings.beginGroup("editor");
+    m_live->setChecked(settings.value("live", true).toBool());
+    m_delay->setValue(settings.value("pauseMs", kDefaultPauseMs).toInt());
+    const bool saved = settings.contains("vertex");
+    const QString builtIn = settings.value("builtIn").toString();
+    if (saved && !builtIn.isEmpty()) {
+        loadPreset(builtInPreset(builtIn == "gouraud"));
+    } else if (saved) {
+        setSources(settings.value("vertex").toString(), settings.value("fragment").toString());
+        m_paths[0] = settings.value("vertexPath").toString();
+        m_paths[1] = settings.value("fragmentPath").toString();
+        m_restoredUnsaved[0] = settings.value("vertexModified").toBool();
+        m_restoredUnsaved[1] = settings.value("fragmentModified").toBool();
+        watch();
+        updateTitles();
+        if (isModified())
+            m_status->setText(tr("Your unsaved shader edits from the last session are back"));
+    }
+    settings.endGroup();
+    return saved;
 }
 
 void EditorPanel::compileNow()
@@ -188,8 +397,7 @@ void EditorPanel::showBuild(const ProgramBuild &build)
     }
     m_vertex->showDiagnostics(perStage[0]);
     m_fragment->showDiagnostics(perStage[1]);
-    m_tabs->setTabText(0, perStage[0].empty() ? tr("Vertex") : tr("Vertex \u25cf"));
-    m_tabs->setTabText(1, perStage[1].empty() ? tr("Fragment") : tr("Fragment \u25cf"));
+    updateTitles();
     if (build.ok())
         m_status->setText(
             warnings ? tr("<span style='color:#8a5a00'>linked, %n warning(s)</span>", "", warnings)

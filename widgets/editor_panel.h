@@ -5,6 +5,7 @@
 
 #include "glsl/program.h"
 
+#include <QFileSystemWatcher>
 #include <QTimer>
 #include <QWidget>
 
@@ -13,6 +14,7 @@ class QLabel;
 class QLineEdit;
 class QListWidget;
 class QMenu;
+class QSettings;
 class QSpinBox;
 class QTabWidget;
 
@@ -42,16 +44,35 @@ public:
     // Gouraud/Phong choice; once edited it is the user's program and stays.
     void followShading(bool gouraud);
 
+    // Files: a pair NAME.vert + NAME.frag. open() takes one or both; the missing partner of a
+    // single file is looked for beside it. Returns an empty string, or what went wrong.
+    QString openFiles(const QStringList &paths);
+    QString save();                         // to the files the pair came from
+    QString saveAs(const QString &anyPath); // NAME.vert/NAME.frag (or NAME) -> both files
+    QString filePath(ShaderStage stage) const;
+    bool isModified() const;
+    bool isModified(ShaderStage stage) const;
+
+    // The sources, their files and modified flags; written within half a second of every
+    // edit, so that a crash or a kill loses nothing, and read back at the next start.
+    void saveState(QSettings &settings) const;
+    bool restoreState(QSettings &settings); // false when there was nothing to restore
+
 public slots:
     void compileNow();
     void showBuild(const lb::ProgramBuild &build);
 
 signals:
     void compileRequested(const QString &vertex, const QString &fragment);
+    void edited(); // the text changed: time to autosave
 
 private:
     void onEdited();
     void jumpTo(int row);
+    void updateTitles();
+    void watch();
+    void fileChangedOnDisk(const QString &path);
+    QString writeFile(ShaderStage stage, const QString &path);
 
     QTabWidget *m_tabs;
     ShaderEditor *m_vertex;
@@ -67,6 +88,10 @@ private:
     QString m_builtInVertex, m_builtInFragment; // the built-in shown, while untouched
     bool m_builtInIsGouraud = false;
     bool m_loading = false;
+    QString m_paths[2]; // vertex, fragment; empty when not from a file
+    // Unsaved edits restored from the last session (Scintilla can only clear its own flag).
+    bool m_restoredUnsaved[2] = {false, false};
+    QFileSystemWatcher m_watcher;
 };
 
 } // namespace lb

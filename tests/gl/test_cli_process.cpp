@@ -127,6 +127,42 @@ private slots:
         QVERIFY(QFile::exists(png));
     }
 
+    void shaderEditsSurviveAKill()
+    {
+        QTemporaryDir config;
+        const QString vert = m_dir.filePath("kill.vert"), frag = m_dir.filePath("kill.frag");
+        QFile v(vert), f(frag);
+        QVERIFY(v.open(QIODevice::WriteOnly) && f.open(QIODevice::WriteOnly));
+        v.write(
+            "attribute vec4 vPosition; // marker-7f3a\nvoid main() { gl_Position = vPosition; }\n");
+        f.write("precision mediump float;\nvoid main() { gl_FragColor = vec4(1.0); }\n");
+        v.close();
+        f.close();
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.insert("XDG_CONFIG_HOME", config.path());
+        QProcess window;
+        window.setProcessEnvironment(env);
+        window.start(LIGHTBENCH_EXE, {"--vertex", vert, "--fragment", frag});
+        QVERIFY(window.waitForStarted());
+        const QString conf = config.filePath("lightbench/lightbench.conf");
+        auto saved = [&] {
+            QFile c(conf);
+            return c.open(QIODevice::ReadOnly) && c.readAll().contains("marker-7f3a");
+        };
+        QTRY_VERIFY_WITH_TIMEOUT(saved(), 20000);
+        window.kill(); // SIGKILL: no close event, no last save
+        QVERIFY(window.waitForFinished());
+        QVERIFY(saved());
+        // The next start comes up with them (and the window opens and draws).
+        QProcess again;
+        again.setProcessEnvironment(env);
+        again.start(LIGHTBENCH_EXE, {"--screenshot", config.filePath("after.png")});
+        QVERIFY(again.waitForFinished(60000));
+        QCOMPARE(again.exitCode(), 0);
+        QVERIFY(QFile::exists(config.filePath("after.png")));
+        QVERIFY(saved());
+    }
+
     void helpExitsWithZero()
     {
         const Run r = run({"--help"});

@@ -17,6 +17,8 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QFile>
+#include <QFileInfo>
 #include <QLabel>
 #include <QListWidget>
 #include <QMenu>
@@ -353,6 +355,83 @@ private slots:
         QTRY_VERIFY(kd->isEnabled());
         QVERIFY(shading->specularCombo()->isEnabled());
         QVERIFY(!kd->toolTip().startsWith("Unused"));
+    }
+
+    void saveAsWritesThePairAndSaveClearsTheMarker()
+    {
+        EditorPanel *e = m_window->editorPanel();
+        QTabWidget *tabs = e->findChild<QTabWidget *>();
+        ShaderEditor *fragment = e->editor(ShaderStage::Fragment);
+        fragment->append("// mine\n");
+        const QString base = m_dir.filePath("pair");
+        QCOMPARE(e->saveAs(base + ".frag"), QString());
+        for (const char *suffix : {".vert", ".frag"}) {
+            QFile f(base + suffix);
+            QVERIFY(f.open(QIODevice::ReadOnly));
+            const ShaderStage stage =
+                QByteArray(suffix) == ".vert" ? ShaderStage::Vertex : ShaderStage::Fragment;
+            QCOMPARE(QString::fromUtf8(f.readAll()), e->source(stage));
+        }
+        QVERIFY(tabs->tabText(1).contains("pair.frag"));
+        QVERIFY(!tabs->tabText(1).contains('*'));
+        fragment->append("// more\n");
+        QVERIFY(tabs->tabText(1).endsWith('*') || tabs->tabText(1).contains("* "));
+        QCOMPARE(e->save(), QString());
+        QVERIFY(!tabs->tabText(1).contains('*'));
+        QVERIFY(!e->isModified());
+        // A file that cannot be written gives a message and keeps the text.
+        const QString text = e->source(ShaderStage::Vertex);
+        QVERIFY(!e->saveAs("/nonexistent/dir/x.vert").isEmpty());
+        QCOMPARE(e->source(ShaderStage::Vertex), text);
+    }
+
+    void openFindsThePartnerAndFollowsTheDisk()
+    {
+        const Preset &slides = presets()[3];
+        const QString vert = m_dir.filePath("lecture.vert"), frag = m_dir.filePath("lecture.frag");
+        auto write = [](const QString &path, const QString &text) {
+            QFile f(path);
+            QVERIFY(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
+            f.write(text.toUtf8());
+        };
+        write(vert, slides.vertexSource());
+        write(frag, slides.fragmentSource());
+        EditorPanel *e = m_window->editorPanel();
+        QCOMPARE(e->openFiles({frag}), QString()); // the .vert comes along
+        QCOMPARE(e->filePath(ShaderStage::Vertex), QFileInfo(vert).absoluteFilePath());
+        QCOMPARE(e->source(ShaderStage::Vertex), slides.vertexSource());
+        QTRY_VERIFY(e->statusLabel()->text().contains("linked"));
+
+        // Another editor changes the file: the unmodified tab follows and recompiles.
+        const QString greener = slides.fragmentSource().replace(
+            "gl_FragColor = vec4(ambientColor + diffuse + specular, 1.0);",
+            "gl_FragColor = vec4(0.0, 1.0, 0.0, 1.0);");
+        write(frag, greener);
+        QTRY_COMPARE(e->source(ShaderStage::Fragment), greener);
+        QTRY_VERIFY(qGreen(frame().pixel(frame().width() / 2, frame().height() / 2)) == 255);
+
+        // With unsaved edits in the tab, the disk does not overwrite them.
+        e->editor(ShaderStage::Fragment)->append("// my edit\n");
+        const QString mine = e->source(ShaderStage::Fragment);
+        write(frag, slides.fragmentSource());
+        QTRY_VERIFY(e->statusLabel()->text().contains("changed on disk"));
+        QCOMPARE(e->source(ShaderStage::Fragment), mine);
+
+        QVERIFY(e->openFiles({m_dir.filePath("missing.vert")}).contains("Cannot open"));
+        QCOMPARE(e->source(ShaderStage::Fragment), mine);
+    }
+
+    void unsavedEditsComeBackAfterARestart()
+    {
+        EditorPanel *e = m_window->editorPanel();
+        e->editor(ShaderStage::Vertex)->append("// unsaved work\n");
+        // Autosaved within half a second, without closing the window (as before a kill).
+        QTRY_VERIFY(m_settings->value("editor/vertex").toString().contains("// unsaved work"));
+        const QString text = e->source(ShaderStage::Vertex);
+        m_window.reset(); // no close event: like a crash, nothing more is written
+        m_window = std::make_unique<MainWindow>(*m_settings);
+        QCOMPARE(m_window->editorPanel()->source(ShaderStage::Vertex), text);
+        QVERIFY(m_window->editorPanel()->isModified());
     }
 
     void resetButtonsRestoreDefaults()
