@@ -121,6 +121,7 @@ const OptionSpec kOptions[] = {
     {"show-light", "on|off", "Draw the light's marker."},
     {"screenshot", "FILE.png", "Open the window, save a screenshot once it has drawn, exit."},
     {"bench-frames", "N", "Draw N frames offscreen and print the frame rate as JSON."},
+    {"bench-edits", "N", "Open the window, time N shader edits to the screen, print JSON, exit."},
     {"vertex", "FILE", "Vertex shader to draw with instead of the built-in one (with --fragment)."},
     {"fragment", "FILE", "Fragment shader to draw with (with --vertex)."},
     {"check", "",
@@ -161,6 +162,8 @@ void parseInto(const QCommandLineParser &parser, CommandLine &cl)
         cl.screenshotPath = value("screenshot");
     if (given("bench-frames"))
         cl.benchFrames = integer("bench-frames", value("bench-frames"), 1, 100000);
+    if (given("bench-edits"))
+        cl.benchEdits = integer("bench-edits", value("bench-edits"), 1, 10000);
     if (given("vertex") != given("fragment"))
         fail(given("vertex") ? "vertex" : "fragment", "--vertex and --fragment go together");
     if (given("vertex")) {

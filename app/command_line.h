@@ -29,6 +29,8 @@ struct CommandLine
     QString vertexPath, fragmentPath;
     QString vertexSource, fragmentSource;
     bool check = false; // --check: compile and link them, print diagnostics, exit 0 or 1
+    int benchEdits = 0; // --bench-edits N (window: edit-to-pixels timing; --vertex/--fragment
+                        // add a second pair to time)
 
     bool hasUserProgram() const { return !vertexPath.isEmpty(); }
     bool headless() const { return !renderPath.isEmpty() || probe || benchFrames > 0 || check; }

@@ -1,6 +1,7 @@
 // lightbench: the window, or one headless frame (--render / --probe / --bench-frames).
 
 #include "command_line.h"
+#include "edit_bench.h"
 #include "editor_panel.h"
 #include "headless.h"
 #include "main_window.h"
@@ -68,6 +69,14 @@ int main(int argc, char **argv)
     lb::Scene scene = window.document().scene();
     cl.applyTo(scene);
     window.document().set(scene);
+    if (cl.benchEdits > 0) {
+        window.show();
+        QTimer::singleShot(500, &window, [&] {
+            QCoreApplication::exit(
+                lb::runEditBench(window, cl.benchEdits, cl.vertexSource, cl.fragmentSource));
+        });
+        return app.exec();
+    }
     if (cl.hasUserProgram()) // the window opens them in the editor
         window.editorPanel()->setSources(cl.vertexSource, cl.fragmentSource);
     window.show();

@@ -3,6 +3,7 @@
 #include <QLabel>
 #include <QMouseEvent>
 #include <QOpenGLContext>
+#include <QOpenGLExtraFunctions>
 #include <QPainter>
 #include <QWheelEvent>
 
@@ -94,6 +95,16 @@ void Viewport::compileProgram(const QString &vertexSource, const QString &fragme
     makeCurrent();
     buildNow(vertexSource, fragmentSource);
     doneCurrent();
+}
+
+double Viewport::rawBuildMilliseconds(const QString &vertexSource, const QString &fragmentSource,
+                                      bool draw)
+{
+    makeCurrent();
+    const double ms =
+        lb::rawBuildMilliseconds(*context()->extraFunctions(), vertexSource, fragmentSource, draw);
+    doneCurrent();
+    return ms;
 }
 
 void Viewport::buildNow(const QString &vertexSource, const QString &fragmentSource)

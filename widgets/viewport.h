@@ -30,6 +30,9 @@ public:
     // Builds the user's program (now, or once the context exists) and reports it through
     // programBuilt(). When it fails, the last good program keeps drawing under a banner.
     void compileProgram(const QString &vertexSource, const QString &fragmentSource);
+    // For the benchmark: the bare compile and link of these sources in this context (ms).
+    double rawBuildMilliseconds(const QString &vertexSource, const QString &fragmentSource,
+                                bool draw = false);
 
 signals:
     void glInfo(const QString &info); // the driver, once the context exists

@@ -3,6 +3,7 @@
 #include "dialect.h"
 
 #include <QByteArray>
+#include <QElapsedTimer>
 
 namespace lb {
 
@@ -198,6 +199,42 @@ const std::vector<AttributeBinding> &attributeBindings()
         {"aTexCoord", kTexCoordSlot},
     };
     return bindings;
+}
+
+double rawBuildMilliseconds(QOpenGLExtraFunctions &gl, const QString &vertexSource,
+                            const QString &fragmentSource, bool draw)
+{
+    const QByteArray sources[2] = {vertexSource.toUtf8(), fragmentSource.toUtf8()};
+    QElapsedTimer timer;
+    timer.start();
+    const GLuint program = gl.glCreateProgram();
+    GLuint shaders[2];
+    for (int i = 0; i < 2; ++i) {
+        shaders[i] = gl.glCreateShader(i ? GL_FRAGMENT_SHADER : GL_VERTEX_SHADER);
+        const char *text = sources[i].constData();
+        gl.glShaderSource(shaders[i], 1, &text, nullptr);
+        gl.glCompileShader(shaders[i]);
+        gl.glAttachShader(program, shaders[i]);
+    }
+    gl.glLinkProgram(program);
+    GLint status = GL_FALSE;
+    gl.glGetProgramiv(program, GL_LINK_STATUS, &status); // waits for a driver that links late
+    if (draw) {
+        GLuint vao = 0;
+        gl.glGenVertexArrays(1, &vao);
+        gl.glBindVertexArray(vao);
+        gl.glUseProgram(program);
+        gl.glDrawArrays(GL_TRIANGLES, 0, 3);
+        gl.glFinish();
+        gl.glUseProgram(0);
+        gl.glBindVertexArray(0);
+        gl.glDeleteVertexArrays(1, &vao);
+    }
+    const double ms = double(timer.nsecsElapsed()) * 1e-6;
+    for (GLuint shader : shaders)
+        gl.glDeleteShader(shader);
+    gl.glDeleteProgram(program);
+    return ms;
 }
 
 ProgramBuild buildProgram(QOpenGLExtraFunctions &gl, const QString &vertexSource,

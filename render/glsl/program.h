@@ -57,6 +57,13 @@ struct AttributeBinding
 };
 const std::vector<AttributeBinding> &attributeBindings();
 
+// The bare cost of building: glShaderSource, glCompileShader (both stages), glLinkProgram,
+// nothing else; for the editor's benchmark (bench/edit.sh). Milliseconds.
+// With `draw`, also one draw call with the new program and a glFinish: drivers such as
+// llvmpipe generate the machine code at the first draw, not at link time.
+double rawBuildMilliseconds(QOpenGLExtraFunctions &gl, const QString &vertexSource,
+                            const QString &fragmentSource, bool draw = false);
+
 // Longer sources are refused with a message rather than handed to the driver.
 constexpr int kMaxSourceCharacters = 1024 * 1024;
 
