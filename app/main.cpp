@@ -77,8 +77,8 @@ int main(int argc, char **argv)
         });
         return app.exec();
     }
-    if (cl.hasUserProgram()) // the window opens them in the editor
-        window.editorPanel()->setSources(cl.vertexSource, cl.fragmentSource);
+    if (cl.hasUserProgram()) // the window opens them in the editor, as File > Open would
+        window.editorPanel()->openFiles({cl.vertexPath, cl.fragmentPath});
     window.show();
 
     if (!cl.screenshotPath.isEmpty()) {

@@ -85,6 +85,7 @@ MainWindow::MainWindow(QSettings &settings, QWidget *parent)
     if (!m_editor->restoreState(m_settings))
         m_editor->loadPreset(builtInPreset(m_document.scene().shading.shading == Shading::Gouraud));
     connect(m_editor, &EditorPanel::edited, this, [this] {
+        updateStatus();
         if (!m_saveTimer.isActive())
             m_saveTimer.start();
     });
@@ -216,16 +217,15 @@ void MainWindow::showProgramUsage(const ProgramBuild &build)
 void MainWindow::updateStatus()
 {
     const Scene &s = m_document.scene();
-    const QString shading = s.shading.shading == Shading::Phong
-                                ? tr("Phong shading (per fragment)")
-                                : tr("Gouraud shading (per vertex)");
-    const QString specular = s.shading.specular == SpecularModel::Blinn
-                                 ? tr("Blinn-Phong specular (N\u00b7H)")
-                                 : tr("Phong specular (R\u00b7V)");
     const QString light = s.light.position.w == 0.0f ? tr("directional light") : tr("point light");
+    QString program = tr("Program: %1").arg(m_editor->programName());
+    if (m_editor->showsBuiltIn()) // the Shading panel's choices apply
+        program += s.shading.specular == SpecularModel::Blinn
+                       ? tr(", Blinn-Phong specular (N\u00b7H)")
+                       : tr(", Phong specular (R\u00b7V)");
     statusBar()->showMessage(
-        QString("%1  |  %2  |  %3 in the %4 frame  |  %5 projection")
-            .arg(shading, specular, light, toName(s.light.frame), toName(s.shading.projection)));
+        QString("%1  |  %2 in the %3 frame  |  %4 projection")
+            .arg(program, light, toName(s.light.frame), toName(s.shading.projection)));
 }
 
 void MainWindow::saveSettings()

@@ -159,6 +159,7 @@ void EditorPanel::setSources(const QString &vertex, const QString &fragment)
     m_loading = false;
     m_builtInVertex.clear();
     m_builtInFragment.clear();
+    m_origin = tr("your shaders");
     m_paths[0].clear();
     m_paths[1].clear();
     watch();
@@ -170,6 +171,7 @@ void EditorPanel::setSources(const QString &vertex, const QString &fragment)
 void EditorPanel::loadPreset(const Preset &preset)
 {
     setSources(preset.vertexSource(), preset.fragmentSource());
+    m_origin = preset.name;
     for (bool gouraud : {false, true}) {
         if (&builtInPreset(gouraud) == &preset) {
             m_builtInVertex = source(ShaderStage::Vertex);
@@ -177,14 +179,25 @@ void EditorPanel::loadPreset(const Preset &preset)
             m_builtInIsGouraud = gouraud;
         }
     }
+    emit edited(); // again, now that the name and the built-in are known
+}
+
+bool EditorPanel::showsBuiltIn() const
+{
+    return !m_builtInVertex.isEmpty() && source(ShaderStage::Vertex) == m_builtInVertex &&
+           source(ShaderStage::Fragment) == m_builtInFragment;
+}
+
+QString EditorPanel::programName() const
+{
+    if (showsBuiltIn())
+        return m_origin;
+    return isModified() || !m_builtInVertex.isEmpty() ? tr("%1 (edited)").arg(m_origin) : m_origin;
 }
 
 void EditorPanel::followShading(bool gouraud)
 {
-    const bool untouched = !m_builtInVertex.isEmpty() &&
-                           source(ShaderStage::Vertex) == m_builtInVertex &&
-                           source(ShaderStage::Fragment) == m_builtInFragment;
-    if (untouched && gouraud != m_builtInIsGouraud)
+    if (showsBuiltIn() && gouraud != m_builtInIsGouraud)
         loadPreset(builtInPreset(gouraud));
 }
 
@@ -259,6 +272,7 @@ QString EditorPanel::openFiles(const QStringList &paths)
     setSources(text[0], text[1]);
     for (int i = 0; i < 2; ++i)
         m_paths[i] = chosen[i].isEmpty() ? keep[i] : QFileInfo(chosen[i]).absoluteFilePath();
+    m_origin = QFileInfo(m_paths[0].isEmpty() ? m_paths[1] : m_paths[0]).completeBaseName();
     watch();
     updateTitles();
     emit edited();
@@ -299,6 +313,7 @@ QString EditorPanel::saveAs(const QString &anyPath)
                              : info.absoluteFilePath();
     m_paths[0] = base + ".vert";
     m_paths[1] = base + ".frag";
+    m_origin = QFileInfo(base).fileName();
     return save();
 }
 
@@ -361,6 +376,7 @@ bool EditorPanel::restoreState(QSettings &settings)
         m_paths[1] = settings.value("fragmentPath").toString();
         m_restoredUnsaved[0] = settings.value("vertexModified").toBool();
         m_restoredUnsaved[1] = settings.value("fragmentModified").toBool();
+        m_origin = settings.value("origin", m_origin).toString();
         watch();
         updateTitles();
         if (isModified())

@@ -50,6 +50,9 @@ public:
     QString save();                         // to the files the pair came from
     QString saveAs(const QString &anyPath); // NAME.vert/NAME.frag (or NAME) -> both files
     QString filePath(ShaderStage stage) const;
+    // What is in the editor, in words: a preset's name, the file, "edited" when changed.
+    QString programName() const;
+    bool showsBuiltIn() const; // an untouched built-in program, following the Shading panel
     bool isModified() const;
     bool isModified(ShaderStage stage) const;
 
@@ -89,6 +92,7 @@ private:
     bool m_builtInIsGouraud = false;
     bool m_loading = false;
     QString m_paths[2]; // vertex, fragment; empty when not from a file
+    QString m_origin;   // the preset or file the text came from
     // Unsaved edits restored from the last session (Scintilla can only clear its own flag).
     bool m_restoredUnsaved[2] = {false, false};
     QFileSystemWatcher m_watcher;
