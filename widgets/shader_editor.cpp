@@ -2,11 +2,12 @@
 
 #include "glsl_lexer.h"
 
-#include <Qsci/qsciapis.h>
 #include <Qsci/qscistyle.h>
 #include <Qsci/qscistyledtext.h>
 
 #include <QFontDatabase>
+#include <QRegularExpression>
+#include <QSet>
 
 #include <map>
 
@@ -20,12 +21,7 @@ const QColor kErrorColour("#c62828"), kWarningColour("#b26a00");
 
 ShaderEditor::ShaderEditor(QWidget *parent) : QsciScintilla(parent)
 {
-    auto *lexer = new GlslLexer(this);
-    auto *apis = new QsciAPIs(lexer);
-    for (const QString &word : GlslLexer::completionWords())
-        apis->add(word);
-    apis->prepare();
-    setLexer(lexer);
+    setLexer(new GlslLexer(this));
 
     setUtf8(true);
     setMarginType(0, NumberMargin);
@@ -40,10 +36,10 @@ ShaderEditor::ShaderEditor(QWidget *parent) : QsciScintilla(parent)
     setTabWidth(4);
     setCaretLineVisible(true);
     setCaretLineBackgroundColor(QColor("#f3f6fb"));
-    // Completion from the GLSL words and every word already in the file (its declarations).
-    setAutoCompletionSource(AcsAll);
-    setAutoCompletionThreshold(2);
-    setAutoCompletionCaseSensitivity(true);
+    // Completion from the GLSL words and every name already in the file (its declarations).
+    setAutoCompletionSource(AcsNone);
+    connect(this, &QsciScintillaBase::SCN_CHARADDED, this, &ShaderEditor::offerCompletion);
+    connect(this, &QsciScintilla::userListActivated, this, &ShaderEditor::acceptCompletion);
 
     markerDefine(Circle, kErrorMarker);
     setMarkerBackgroundColor(kErrorColour, kErrorMarker);
@@ -93,7 +89,8 @@ void ShaderEditor::showDiagnostics(const std::vector<Diagnostic> &diagnostics)
             // Underline from the column to the end of the word there.
             const QString lineText = this->text(line);
             int end = d.column - 1;
-            while (end < lineText.size() && (lineText[end].isLetterOrNumber() || lineText[end] == '_'))
+            while (end < lineText.size() &&
+                   (lineText[end].isLetterOrNumber() || lineText[end] == '_'))
                 ++end;
             end = std::max(end, d.column);
             fillIndicatorRange(line, d.column - 1, line, end,
@@ -105,6 +102,64 @@ void ShaderEditor::showDiagnostics(const std::vector<Diagnostic> &diagnostics)
         annotate(line, QsciStyledText(note.first, note.second ? errorStyle : warningStyle));
     }
     m_markedLines = int(notes.size());
+}
+
+namespace {
+constexpr int kCompletionList = 1;
+constexpr int kMinPrefix = 2;
+
+bool isIdentifierCharacter(QChar c)
+{
+    return c.isLetterOrNumber() || c == '_';
+}
+} // namespace
+
+void ShaderEditor::offerCompletion(int character)
+{
+    if (!isIdentifierCharacter(QChar(character)))
+        return;
+    int line = 0, index = 0;
+    getCursorPosition(&line, &index);
+    const QString lineText = text(line);
+    int start = index;
+    while (start > 0 && isIdentifierCharacter(lineText[start - 1]))
+        --start;
+    const QString prefix = lineText.mid(start, index - start);
+    if (prefix.size() < kMinPrefix || prefix[0].isDigit())
+        return;
+
+    static const QRegularExpression identifier(R"(\b[A-Za-z_]\w*\b)");
+    QSet<QString> seen;
+    QStringList candidates;
+    auto consider = [&](const QString &word) {
+        if (word.size() > prefix.size() && word.startsWith(prefix) && !seen.contains(word)) {
+            seen.insert(word);
+            candidates << word;
+        }
+    };
+    for (const QString &word : GlslLexer::completionWords())
+        consider(word);
+    auto it = identifier.globalMatch(text());
+    while (it.hasNext())
+        consider(it.next().captured());
+    if (candidates.isEmpty())
+        return;
+    candidates.sort();
+    showUserList(kCompletionList, candidates);
+}
+
+void ShaderEditor::acceptCompletion(int id, const QString &word)
+{
+    if (id != kCompletionList)
+        return;
+    int line = 0, index = 0;
+    getCursorPosition(&line, &index);
+    const QString lineText = text(line);
+    int start = index;
+    while (start > 0 && isIdentifierCharacter(lineText[start - 1]))
+        --start;
+    setSelection(line, start, line, index);
+    replaceSelectedText(word);
 }
 
 void ShaderEditor::goTo(int line, int column)

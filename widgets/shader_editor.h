@@ -20,9 +20,14 @@ public:
     void showDiagnostics(const std::vector<Diagnostic> &diagnostics);
     void clearDiagnostics();
     int markedLineCount() const { return m_markedLines; } // lines carrying a marker
-    void goTo(int line, int column); // 1-based; column 0 = start of the line
+    void goTo(int line, int column);                      // 1-based; column 0 = start of the line
 
 private:
+    // Completion without QsciAPIs: its preparation runs on a thread that crashes when the
+    // editor is destroyed first. The candidates are few; the GUI thread finds them at once.
+    void offerCompletion(int character);
+    void acceptCompletion(int id, const QString &word);
+
     int m_markedLines = 0;
 };
 

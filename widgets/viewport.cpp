@@ -39,6 +39,10 @@ Viewport::Viewport(SceneDocument *document, QWidget *parent)
 
 Viewport::~Viewport()
 {
+    // The base class destroys the context after this body has run; by then the renderer is
+    // gone, so the context must not call back into releaseGl().
+    if (context())
+        disconnect(context(), nullptr, this, nullptr);
     releaseGl();
 }
 

@@ -434,6 +434,36 @@ private slots:
         QVERIFY(m_window->editorPanel()->isModified());
     }
 
+    void completionOffersGlslWordsAndTheFilesNames()
+    {
+        EditorPanel *e = m_window->editorPanel();
+        ShaderEditor *fragment = e->editor(ShaderStage::Fragment);
+        e->liveCheck()->setChecked(false);
+        e->findChild<QTabWidget *>()->setCurrentWidget(fragment);
+        fragment->setText("uniform float myShininess;\nvoid main() { float x = my");
+        fragment->setCursorPosition(1, fragment->text(1).size());
+        fragment->setFocus();
+        QTest::keyClicks(fragment, "S");
+        QVERIFY(fragment->isListActive());
+        QTest::keyClick(fragment, Qt::Key_Return);
+        QVERIFY2(fragment->text(1).endsWith("myShininess"), qPrintable(fragment->text(1)));
+        QTest::keyClicks(fragment, " + normali");
+        QVERIFY(fragment->isListActive());
+        QTest::keyClick(fragment, Qt::Key_Return);
+        QVERIFY2(fragment->text(1).endsWith("normalize"), qPrintable(fragment->text(1)));
+        e->liveCheck()->setChecked(true);
+    }
+
+    void editorsComeAndGoWithoutCrashing()
+    {
+        // QScintilla's QsciAPIs prepared completion on a thread that crashed when the editor
+        // went first; the editors must survive being made and dropped at once.
+        for (int i = 0; i < 30; ++i) {
+            ShaderEditor editor;
+            editor.setText("void main() {}\n");
+        }
+    }
+
     void resetButtonsRestoreDefaults()
     {
         m_window->materialPanel()->shininessBox()->setValue(500);
