@@ -118,13 +118,7 @@ void ShaderEditor::offerCompletion(int character)
 {
     if (!isIdentifierCharacter(QChar(character)))
         return;
-    int line = 0, index = 0;
-    getCursorPosition(&line, &index);
-    const QString lineText = text(line);
-    int start = index;
-    while (start > 0 && isIdentifierCharacter(lineText[start - 1]))
-        --start;
-    const QString prefix = lineText.mid(start, index - start);
+    const QString prefix = wordBeforeCursor().text;
     if (prefix.size() < kMinPrefix || prefix[0].isDigit())
         return;
 
@@ -152,14 +146,21 @@ void ShaderEditor::acceptCompletion(int id, const QString &word)
 {
     if (id != kCompletionList)
         return;
-    int line = 0, index = 0;
-    getCursorPosition(&line, &index);
-    const QString lineText = text(line);
-    int start = index;
-    while (start > 0 && isIdentifierCharacter(lineText[start - 1]))
-        --start;
-    setSelection(line, start, line, index);
+    const WordBeforeCursor w = wordBeforeCursor();
+    setSelection(w.line, w.start, w.line, w.end);
     replaceSelectedText(word);
+}
+
+ShaderEditor::WordBeforeCursor ShaderEditor::wordBeforeCursor() const
+{
+    WordBeforeCursor w;
+    getCursorPosition(&w.line, &w.end);
+    const QString lineText = text(w.line);
+    w.start = w.end;
+    while (w.start > 0 && isIdentifierCharacter(lineText[w.start - 1]))
+        --w.start;
+    w.text = lineText.mid(w.start, w.end - w.start);
+    return w;
 }
 
 void ShaderEditor::goTo(int line, int column)

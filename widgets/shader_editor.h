@@ -27,6 +27,12 @@ private:
     // editor is destroyed first. The candidates are few; the GUI thread finds them at once.
     void offerCompletion(int character);
     void acceptCompletion(int id, const QString &word);
+    struct WordBeforeCursor
+    {
+        int line = 0, start = 0, end = 0; // end is the cursor
+        QString text;
+    };
+    WordBeforeCursor wordBeforeCursor() const;
 
     int m_markedLines = 0;
 };
