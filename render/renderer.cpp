@@ -1,8 +1,7 @@
 #include "renderer.h"
 
+#include "glsl/presets.h"
 #include "glsl/program.h"
-
-#include <QFile>
 
 #include <glm/common.hpp>
 #include <glm/ext/matrix_transform.hpp>
@@ -14,14 +13,6 @@ namespace lb {
 namespace {
 
 constexpr glm::vec3 kBackground{0.16f, 0.17f, 0.19f};
-
-QString readResource(const QString &path)
-{
-    QFile f(path);
-    if (!f.open(QIODevice::ReadOnly))
-        return {};
-    return QString::fromUtf8(f.readAll());
-}
 
 // A marker's matrix in eye space: +Z of the arrow along `forward`, starting at `origin`.
 glm::mat4 orientAlong(const glm::vec3 &origin, const glm::vec3 &forward, float length)
@@ -85,8 +76,8 @@ void Renderer::cleanup()
 
 Renderer::Program Renderer::builtIn(const QString &name, QString &error)
 {
-    ProgramBuild build = buildProgram(*this, readResource(":/shaders/" + name + ".vert"),
-                                      readResource(":/shaders/" + name + ".frag"));
+    const Preset pair{name, ":/shaders/" + name};
+    ProgramBuild build = buildProgram(*this, pair.vertexSource(), pair.fragmentSource());
     if (!build.ok())
         error += "built-in shader '" + name + "' failed:\n" + build.log();
     return Program{build.program, std::move(build.uniforms)};
