@@ -31,7 +31,6 @@ public:
     // Draws `frames` frames and waits for the GPU; for the benchmarks.
     void renderFrames(const Scene &scene, int frames);
     Renderer &renderer() { return m_renderer; }
-    QSize size() const { return m_size; }
 
 private:
     QOpenGLContext m_context;

@@ -83,6 +83,14 @@ Renderer::Program Renderer::builtIn(const QString &name, QString &error)
     return Program{build.program, std::move(build.uniforms)};
 }
 
+GLint Renderer::uniformLocation(const Program &program, const char *name)
+{
+    for (const ActiveUniform &u : program.uniforms) // reflected at link time: no GL call
+        if (u.name == QLatin1String(name))
+            return u.location;
+    return -1;
+}
+
 void Renderer::release(Program &program)
 {
     glDeleteProgram(program.id);
@@ -99,21 +107,11 @@ ProgramBuild Renderer::setUserProgram(const QString &vertexSource, const QString
     return build;
 }
 
-void Renderer::clearUserProgram()
-{
-    release(m_user);
-}
-
 const Renderer::Program &Renderer::objectProgram(const Scene &scene) const
 {
     if (m_user.id)
         return m_user;
     return scene.shading.shading == Shading::Gouraud ? m_gouraud : m_phong;
-}
-
-const std::vector<ActiveUniform> &Renderer::activeUniforms(const Scene &scene) const
-{
-    return objectProgram(scene).uniforms;
 }
 
 const Mesh &Renderer::meshFor(const ObjectSettings &object)
@@ -317,11 +315,11 @@ void Renderer::drawLightMarker(const Scene &scene, const Frames &frames)
     const glm::vec3 colour = peak > 0.0f ? id / peak : glm::vec3(1.0f);
 
     glUseProgram(m_unlit.id);
-    glUniformMatrix4fv(glGetUniformLocation(m_unlit.id, "mModelView"), 1, GL_FALSE,
+    glUniformMatrix4fv(uniformLocation(m_unlit, "mModelView"), 1, GL_FALSE,
                        glm::value_ptr(modelView));
-    glUniformMatrix4fv(glGetUniformLocation(m_unlit.id, "mProjection"), 1, GL_FALSE,
+    glUniformMatrix4fv(uniformLocation(m_unlit, "mProjection"), 1, GL_FALSE,
                        glm::value_ptr(frames.projection));
-    glUniform3fv(glGetUniformLocation(m_unlit.id, "uColor"), 1, glm::value_ptr(colour));
+    glUniform3fv(uniformLocation(m_unlit, "uColor"), 1, glm::value_ptr(colour));
     draw(*marker);
 }
 

@@ -39,10 +39,7 @@ public:
     // (the object is drawn with it instead of the built-in pair); when it does not, whatever
     // drew before keeps drawing. Returns the build with its diagnostics either way.
     ProgramBuild setUserProgram(const QString &vertexSource, const QString &fragmentSource);
-    void clearUserProgram();
     bool hasUserProgram() const { return m_user.id != 0; }
-    // The active uniforms of the program that draws the object for `scene`.
-    const std::vector<ActiveUniform> &activeUniforms(const Scene &scene) const;
 
     // The CPU mesh of the scene's object, as drawn (built when the shape changes).
     const Mesh &meshFor(const ObjectSettings &object);
@@ -67,6 +64,7 @@ private:
     };
     Program builtIn(const QString &name, QString &error);
     void release(Program &program);
+    static GLint uniformLocation(const Program &program, const char *name);
     const Program &objectProgram(const Scene &scene) const;
     void setUniforms(const Program &program, const Scene &scene, const Frames &frames);
     void setShaderValue(const ActiveUniform &uniform, const Scene &scene);

@@ -55,9 +55,11 @@ const char *GlslLexer::keywords(int set) const
     return nullptr;
 }
 
-QStringList GlslLexer::completionWords()
+const QStringList &GlslLexer::completionWords()
 {
-    return (QString(kKeywords) + ' ' + kBuiltIns).split(' ', Qt::SkipEmptyParts);
+    static const QStringList words =
+        (QString(kKeywords) + ' ' + kBuiltIns).split(' ', Qt::SkipEmptyParts);
+    return words;
 }
 
 } // namespace lb

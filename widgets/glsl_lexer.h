@@ -15,7 +15,7 @@ public:
     const char *keywords(int set) const override;
 
     // Every keyword and built-in, for completion.
-    static QStringList completionWords();
+    static const QStringList &completionWords();
 };
 
 } // namespace lb
