@@ -108,7 +108,7 @@ int runHeadless(const CommandLine &cl, const Scene &scene)
         timer.start();
         offscreen.renderFrames(scene, cl.benchFrames);
         const double seconds = double(timer.nsecsElapsed()) * 1e-9;
-        const Mesh &mesh = offscreen.renderer().meshFor(scene.object);
+        const Mesh &mesh = offscreen.objectMesh(scene);
         QJsonObject o;
         o["frames"] = cl.benchFrames;
         o["seconds"] = seconds;
@@ -124,9 +124,9 @@ int runHeadless(const CommandLine &cl, const Scene &scene)
         return 1;
     }
     if (cl.probe) {
-        const Mesh &mesh = offscreen.renderer().meshFor(scene.object);
+        const Mesh &mesh = offscreen.objectMesh(scene);
         const ProbeResult probe =
-            probePixel(scene, mesh, offscreen.renderer().checkerTexture(), cl.size, *cl.probe);
+            probePixel(scene, mesh, offscreen.renderer().texture(), cl.size, *cl.probe);
         printLine(
             QJsonDocument(probeJson(probe, frame, *cl.probe, scene)).toJson(QJsonDocument::Compact),
             stdout);

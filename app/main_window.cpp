@@ -4,6 +4,8 @@
 #include "glsl/presets.h"
 #include "light_panel.h"
 #include "material_panel.h"
+#include "mesh_actions.h"
+#include "object_loader.h"
 #include "object_panel.h"
 #include "shading_panel.h"
 #include "uniform_panel.h"
@@ -56,6 +58,9 @@ MainWindow::MainWindow(QSettings &settings, QWidget *parent)
 
     m_viewport = new Viewport(&m_document, this);
     setCentralWidget(m_viewport);
+    m_loader = new ObjectLoader(&m_document, this);
+    connect(m_loader, &ObjectLoader::meshReady, m_viewport, &Viewport::setObject);
+    m_viewport->setObject(m_loader->mesh(), m_loader->texture());
     m_light = new LightPanel(&m_document);
     m_material = new MaterialPanel(&m_document);
     m_shading = new ShadingPanel(&m_document);
@@ -90,6 +95,13 @@ MainWindow::MainWindow(QSettings &settings, QWidget *parent)
             m_saveTimer.start();
     });
 
+    m_meshActions = new MeshActions(this, &m_document, m_loader, m_settings);
+    connect(m_meshActions, &MeshActions::shaderFilesDropped, this,
+            [this](const QStringList &paths) {
+                if (const QString error = m_editor->openFiles(paths); !error.isEmpty())
+                    QMessageBox::warning(this, tr("Shader files"), error);
+            });
+    connect(m_object, &ObjectPanel::openMeshRequested, m_meshActions, &MeshActions::showOpenDialog);
     m_glLabel = new QLabel(this);
     statusBar()->addPermanentWidget(m_glLabel);
     connect(m_viewport, &Viewport::glInfo, m_glLabel, &QLabel::setText);
@@ -148,10 +160,15 @@ void MainWindow::buildMenus()
     });
     addItem(file, tr("Save Shaders &As..."), QKeySequence(tr("Ctrl+Shift+S")), saveAs);
     file->addSeparator();
+    QMenu *edit = new QMenu(tr("&Edit"), this); // filled below, shown after File
+    QMenu *view = new QMenu(tr("&View"), this);
+    m_meshActions->addToMenus(file, edit, view);
+    file->addSeparator();
     addItem(file, tr("Reset &Everything"), QKeySequence(tr("Ctrl+Shift+R")),
             [this] { m_document.set(Scene{}); });
     file->addSeparator();
     addItem(file, tr("&Quit"), QKeySequence::Quit, [this] { close(); });
+    menuBar()->addMenu(edit);
 
     QMenu *shading = menuBar()->addMenu(tr("&Shading"));
     addItem(shading, tr("Toggle &Gouraud / Phong"), QKeySequence(tr("G")), [this] {
@@ -177,7 +194,7 @@ void MainWindow::buildMenus()
         m_document.edit([](Scene &s) { s.shading.lighting = !s.shading.lighting; });
     });
 
-    QMenu *view = menuBar()->addMenu(tr("&View"));
+    menuBar()->addMenu(view);
     addItem(view, tr("&Reset Camera"), QKeySequence(tr("R")),
             [this] { m_viewport->resetCamera(); });
     addItem(view, tr("&Auto-rotate"), QKeySequence(tr("Space")), [this] {
@@ -193,6 +210,7 @@ void MainWindow::buildMenus()
             this, tr("Controls"),
             tr("Left drag: orbit the camera\nRight or middle drag: pan\nWheel: zoom\n"
                "R: reset the camera\nSpace: auto-rotate the object\n"
+               "N: show normals as lines\nCtrl+M: open a mesh (or drop one on the window)\n"
                "G: Gouraud / Phong shading\nB: Phong / Blinn-Phong specular\n"
                "P: perspective / orthographic\nL: lighting on / off\n"
                "Ctrl+Shift+R: reset everything"));

@@ -17,6 +17,8 @@ namespace lb {
 class EditorPanel;
 class LightPanel;
 class MaterialPanel;
+class MeshActions;
+class ObjectLoader;
 class ObjectPanel;
 class ShadingPanel;
 class UniformPanel;
@@ -37,6 +39,8 @@ public:
     ObjectPanel *objectPanel() const { return m_object; }
     EditorPanel *editorPanel() const { return m_editor; }
     UniformPanel *uniformPanel() const { return m_uniforms; }
+    ObjectLoader *objectLoader() const { return m_loader; }
+    MeshActions *meshActions() const { return m_meshActions; }
 
     void saveSettings();
 
@@ -57,6 +61,8 @@ private:
     ObjectPanel *m_object;
     EditorPanel *m_editor;
     UniformPanel *m_uniforms;
+    ObjectLoader *m_loader;
+    MeshActions *m_meshActions;
     QLabel *m_glLabel;
     QTimer m_saveTimer; // saves the scene shortly after each change, so a kill loses little
 };

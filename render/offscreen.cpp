@@ -47,8 +47,20 @@ QString OffscreenRenderer::initialize(QSize size)
     return m_renderer.initialize();
 }
 
+const Mesh &OffscreenRenderer::objectMesh(const Scene &scene)
+{
+    const MeshFile *file = scene.object.meshPath.isEmpty() ? nullptr : m_file.get();
+    const ObjectMeshKey key = objectMeshKey(scene.object, file);
+    if (key != m_key || !m_renderer.objectMesh()) {
+        m_renderer.setObject(buildObjectMesh(scene.object, file), file ? file->texture : nullptr);
+        m_key = key;
+    }
+    return *m_renderer.objectMesh();
+}
+
 QImage OffscreenRenderer::render(const Scene &scene)
 {
+    objectMesh(scene);
     m_context.makeCurrent(&m_surface);
     m_fbo->bind();
     m_renderer.render(scene, m_size);
@@ -66,6 +78,7 @@ ProgramBuild OffscreenRenderer::useProgram(const QString &vertexSource,
 
 void OffscreenRenderer::renderFrames(const Scene &scene, int frames)
 {
+    objectMesh(scene);
     m_context.makeCurrent(&m_surface);
     m_fbo->bind();
     for (int i = 0; i < frames; ++i)

@@ -3,6 +3,8 @@
 // object. Used by the command line (--render, --probe) and the GL tests. Needs a display
 // with OpenGL (an X server; Xvfb when headless).
 
+#include "import/mesh_file.h"
+#include "object_mesh.h"
 #include "renderer.h"
 
 #include <QImage>
@@ -12,6 +14,7 @@
 #include <QSize>
 
 #include <memory>
+#include <optional>
 
 namespace lb {
 
@@ -31,6 +34,10 @@ public:
     // Draws `frames` frames and waits for the GPU; for the benchmarks.
     void renderFrames(const Scene &scene, int frames);
     Renderer &renderer() { return m_renderer; }
+    // The loaded file the scene's object names (--mesh); nullptr draws the shapes.
+    void setMeshFile(std::shared_ptr<const MeshFile> file) { m_file = std::move(file); }
+    // The mesh drawn for `scene`, built when the object settings ask for another one.
+    const Mesh &objectMesh(const Scene &scene);
 
 private:
     QOpenGLContext m_context;
@@ -38,6 +45,8 @@ private:
     std::unique_ptr<QOpenGLFramebufferObject> m_fbo;
     Renderer m_renderer;
     QSize m_size;
+    std::shared_ptr<const MeshFile> m_file;
+    std::optional<ObjectMeshKey> m_key;
 };
 
 } // namespace lb

@@ -60,8 +60,8 @@ LightingInputs lightingInputs(const Scene &scene, const Frames &frames)
     return in;
 }
 
-ProbeResult probePixel(const Scene &scene, const Mesh &mesh, const CheckerTexture &texture,
-                       QSize size, QPoint pixel)
+ProbeResult probePixel(const Scene &scene, const Mesh &mesh, const Texture &texture, QSize size,
+                       QPoint pixel)
 {
     ProbeResult r;
     if (size.isEmpty() || mesh.indices.empty())
@@ -103,10 +103,13 @@ ProbeResult probePixel(const Scene &scene, const Mesh &mesh, const CheckerTextur
 
     r.position = interpolate(eyePositions, tri, w);
     r.normal = glm::normalize(eyeNormal(interpolate(mesh.normals, tri, w)));
-    if (scene.shading.vertexColors)
+    // A mesh without colours reads white, one without texture coordinates (0, 0): the
+    // constant attribute values the renderer gives the GPU.
+    if (scene.shading.vertexColors && !mesh.colors.empty())
         r.base *= interpolate(mesh.colors, tri, w);
     if (scene.shading.texture)
-        r.base *= texture.sample(interpolate(mesh.uvs, tri, w));
+        r.base *=
+            texture.sample(mesh.uvs.empty() ? glm::vec2(0.0f) : interpolate(mesh.uvs, tri, w));
 
     const LightingInputs in = lightingInputs(scene, frames);
     r.terms = evaluateLighting(r.position, r.normal, in);

@@ -37,22 +37,11 @@ QString Renderer::initialize()
     m_gouraud = builtIn("gouraud", error);
     m_phong = builtIn("phong", error);
     m_unlit = builtIn("unlit", error);
+    m_normals = builtIn("normals", error, "unlit");
     if (!error.isEmpty())
         return error;
 
-    const QImage &img = m_checker.image();
-    glGenTextures(1, &m_texture);
-    glBindTexture(GL_TEXTURE_2D, m_texture);
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, img.width(), img.height(), 0, GL_RGBA,
-                 GL_UNSIGNED_BYTE, img.constBits());
-    // Plain bilinear without mipmaps: CheckerTexture::sample() repeats exactly this lookup.
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
-    glBindTexture(GL_TEXTURE_2D, 0);
-
+    m_checkerId = uploadTexture(m_checker.image());
     upload(m_markerSphere, makeSphere(16, 8));
     upload(m_markerArrow, makeArrow(24));
     m_initialized = true;
@@ -66,18 +55,38 @@ void Renderer::cleanup()
     destroy(m_object);
     destroy(m_markerSphere);
     destroy(m_markerArrow);
-    m_objectUploaded = false;
-    for (Program *p : {&m_gouraud, &m_phong, &m_unlit, &m_user})
+    m_objectUploaded = m_objectTextureUploaded = false;
+    for (Program *p : {&m_gouraud, &m_phong, &m_unlit, &m_normals, &m_user})
         release(*p);
-    glDeleteTextures(1, &m_texture);
-    m_texture = 0;
+    for (GLuint *id : {&m_checkerId, &m_objectTextureId}) {
+        glDeleteTextures(1, id);
+        *id = 0;
+    }
     m_initialized = false;
 }
 
-Renderer::Program Renderer::builtIn(const QString &name, QString &error)
+GLuint Renderer::uploadTexture(const QImage &image)
+{
+    GLuint id = 0;
+    glGenTextures(1, &id);
+    glBindTexture(GL_TEXTURE_2D, id);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, image.width(), image.height(), 0, GL_RGBA,
+                 GL_UNSIGNED_BYTE, image.constBits());
+    // Plain bilinear without mipmaps: Texture::sample() repeats exactly this lookup.
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    return id;
+}
+
+Renderer::Program Renderer::builtIn(const QString &name, QString &error, const QString &fragment)
 {
     const Preset pair{name, ":/shaders/" + name};
-    ProgramBuild build = buildProgram(*this, pair.vertexSource(), pair.fragmentSource());
+    const Preset fragmentPair{name, ":/shaders/" + (fragment.isEmpty() ? name : fragment)};
+    ProgramBuild build = buildProgram(*this, pair.vertexSource(), fragmentPair.fragmentSource());
     if (!build.ok())
         error += "built-in shader '" + name + "' failed:\n" + build.log();
     return Program{build.program, std::move(build.uniforms)};
@@ -114,15 +123,14 @@ const Renderer::Program &Renderer::objectProgram(const Scene &scene) const
     return scene.shading.shading == Shading::Gouraud ? m_gouraud : m_phong;
 }
 
-const Mesh &Renderer::meshFor(const ObjectSettings &object)
+void Renderer::setObject(std::shared_ptr<const Mesh> mesh, std::shared_ptr<const Texture> texture)
 {
-    if (object.shape != m_objectShape || object.tessellation != m_objectTessellation) {
-        m_objectMesh = makeShape(object.shape, object.tessellation);
-        m_objectShape = object.shape;
-        m_objectTessellation = object.tessellation;
+    if (mesh != m_objectMesh)
         m_objectUploaded = false;
-    }
-    return m_objectMesh;
+    m_objectMesh = std::move(mesh);
+    if (texture != m_objectTexture)
+        m_objectTextureUploaded = false;
+    m_objectTexture = std::move(texture);
 }
 
 void Renderer::upload(GpuMesh &gpu, const Mesh &mesh)
@@ -133,22 +141,40 @@ void Renderer::upload(GpuMesh &gpu, const Mesh &mesh)
     normals.reserve(mesh.normals.size());
     for (const glm::vec3 &n : mesh.normals)
         normals.emplace_back(n, 0.0f);
-    if (!gpu.vao.isCreated())
-        gpu.vao.create();
-    gpu.vao.bind();
+    const std::size_t n = mesh.vertexCount();
+    gpu.colors = mesh.colors.size() == n;
+    gpu.uvs = mesh.uvs.size() == n;
+    gpu.vertexCount = GLsizei(n);
     const void *data[4] = {mesh.positions.data(), normals.data(), mesh.colors.data(),
                            mesh.uvs.data()};
+    const bool present[4] = {true, normals.size() == n, gpu.colors, gpu.uvs};
     const int sizes[4] = {3, 4, 3, 2};
     const GLuint locations[4] = {kPositionSlot, kNormalSlot, kColorSlot, kTexCoordSlot};
+    for (QOpenGLVertexArrayObject *vao : {&gpu.vao, &gpu.normalLines})
+        if (!vao->isCreated())
+            vao->create();
     for (int i = 0; i < 4; ++i) {
         QOpenGLBuffer &buffer = gpu.attributes[std::size_t(i)];
         if (!buffer.isCreated())
             buffer.create();
         buffer.bind();
-        buffer.allocate(data[i], int(mesh.vertexCount() * std::size_t(sizes[i]) * sizeof(float)));
-        glEnableVertexAttribArray(locations[i]);
-        glVertexAttribPointer(locations[i], sizes[i], GL_FLOAT, GL_FALSE, 0, nullptr);
+        buffer.allocate(present[i] ? data[i] : nullptr,
+                        present[i] ? int(n * std::size_t(sizes[i]) * sizeof(float)) : 0);
+        gpu.vao.bind();
+        if (present[i]) {
+            glEnableVertexAttribArray(locations[i]);
+            glVertexAttribPointer(locations[i], sizes[i], GL_FLOAT, GL_FALSE, 0, nullptr);
+        } else {
+            glDisableVertexAttribArray(locations[i]);
+        }
+        if (i < 2) { // the normal lines read positions and normals once per line
+            gpu.normalLines.bind();
+            glEnableVertexAttribArray(locations[i]);
+            glVertexAttribPointer(locations[i], sizes[i], GL_FLOAT, GL_FALSE, 0, nullptr);
+            glVertexAttribDivisor(locations[i], 1);
+        }
     }
+    gpu.vao.bind();
     if (!gpu.indices.isCreated())
         gpu.indices.create();
     gpu.indices.bind();
@@ -163,11 +189,17 @@ void Renderer::destroy(GpuMesh &gpu)
         b.destroy();
     gpu.indices.destroy();
     gpu.vao.destroy();
-    gpu.indexCount = 0;
+    gpu.normalLines.destroy();
+    gpu.indexCount = gpu.vertexCount = 0;
 }
 
 void Renderer::draw(GpuMesh &gpu)
 {
+    // Constant values for the arrays a mesh lacks: the reference (probe.cpp) reads the same.
+    if (!gpu.colors)
+        glVertexAttrib4f(kColorSlot, 1.0f, 1.0f, 1.0f, 1.0f);
+    if (!gpu.uvs)
+        glVertexAttrib4f(kTexCoordSlot, 0.0f, 0.0f, 0.0f, 1.0f);
     gpu.vao.bind();
     glDrawElements(GL_TRIANGLES, gpu.indexCount, GL_UNSIGNED_INT, nullptr);
     gpu.vao.release();
@@ -323,14 +355,39 @@ void Renderer::drawLightMarker(const Scene &scene, const Frames &frames)
     draw(*marker);
 }
 
+void Renderer::drawNormals(const Scene &scene, const Frames &frames)
+{
+    const glm::vec3 lineColour(1.0f, 0.82f, 0.2f);
+    glUseProgram(m_normals.id);
+    glUniformMatrix4fv(uniformLocation(m_normals, "mModelView"), 1, GL_FALSE,
+                       glm::value_ptr(frames.modelView));
+    glUniformMatrix4fv(uniformLocation(m_normals, "mNormals"), 1, GL_FALSE,
+                       glm::value_ptr(frames.normals));
+    glUniformMatrix4fv(uniformLocation(m_normals, "mProjection"), 1, GL_FALSE,
+                       glm::value_ptr(frames.projection));
+    const glm::vec3 &s = scene.object.scale;
+    glUniform1f(uniformLocation(m_normals, "uLineLength"), 0.08f * (s.x + s.y + s.z) / 3.0f);
+    glUniform3fv(uniformLocation(m_normals, "uColor"), 1, glm::value_ptr(lineColour));
+    m_object.normalLines.bind();
+    glDrawArraysInstanced(GL_LINES, 0, 2, m_object.vertexCount);
+    m_object.normalLines.release();
+}
+
 void Renderer::render(const Scene &scene, QSize pixels)
 {
     if (!m_initialized || pixels.isEmpty())
         return;
-    const Mesh &mesh = meshFor(scene.object);
     if (!m_objectUploaded) {
-        upload(m_object, mesh);
+        if (m_objectMesh)
+            upload(m_object, *m_objectMesh);
+        else
+            destroy(m_object);
         m_objectUploaded = true;
+    }
+    if (!m_objectTextureUploaded) {
+        glDeleteTextures(1, &m_objectTextureId);
+        m_objectTextureId = m_objectTexture ? uploadTexture(m_objectTexture->image()) : 0;
+        m_objectTextureUploaded = true;
     }
 
     glViewport(0, 0, pixels.width(), pixels.height());
@@ -344,9 +401,12 @@ void Renderer::render(const Scene &scene, QSize pixels)
     glUseProgram(program.id);
     setUniforms(program, scene, frames);
     glActiveTexture(GL_TEXTURE0);
-    glBindTexture(GL_TEXTURE_2D, m_texture);
-    draw(m_object);
+    glBindTexture(GL_TEXTURE_2D, m_objectTexture ? m_objectTextureId : m_checkerId);
+    if (m_object.indexCount > 0)
+        draw(m_object);
     glBindTexture(GL_TEXTURE_2D, 0);
+    if (scene.object.showNormals && m_object.vertexCount > 0)
+        drawNormals(scene, frames);
 
     if (scene.showLight)
         drawLightMarker(scene, frames);

@@ -2,11 +2,11 @@
 // Draws a scene into the current framebuffer with the built-in programs. Owns every GPU
 // object it creates; call cleanup() with the context current before the context goes away.
 
-#include "checker_texture.h"
 #include "frames.h"
 #include "glsl/program.h"
 #include "mesh.h"
 #include "scene.h"
+#include "texture.h"
 
 #include <QOpenGLBuffer>
 #include <QOpenGLExtraFunctions>
@@ -41,28 +41,36 @@ public:
     ProgramBuild setUserProgram(const QString &vertexSource, const QString &fragmentSource);
     bool hasUserProgram() const { return m_user.id != 0; }
 
-    // The CPU mesh of the scene's object, as drawn (built when the shape changes).
-    const Mesh &meshFor(const ObjectSettings &object);
-    const CheckerTexture &checkerTexture() const { return m_checker; }
+    // The object's mesh (object_mesh.h builds it) and the texture the texture switch puts on
+    // it (nullptr: the checker). Uploaded by the next render(). Without a mesh, render()
+    // draws only the background and the light.
+    void setObject(std::shared_ptr<const Mesh> mesh, std::shared_ptr<const Texture> texture);
+    const Mesh *objectMesh() const { return m_objectMesh.get(); }
+    const Texture &texture() const { return m_objectTexture ? *m_objectTexture : m_checker; }
 
 private:
     struct GpuMesh
     {
         QOpenGLVertexArrayObject vao;
+        QOpenGLVertexArrayObject normalLines; // positions and normals, one instance each
         std::array<QOpenGLBuffer, 4> attributes;
         QOpenGLBuffer indices{QOpenGLBuffer::IndexBuffer};
         GLsizei indexCount = 0;
+        GLsizei vertexCount = 0;
+        bool colors = false, uvs = false; // absent arrays read as white and (0, 0)
     };
 
     void upload(GpuMesh &gpu, const Mesh &mesh);
     void destroy(GpuMesh &gpu);
     void draw(GpuMesh &gpu);
+    void drawNormals(const Scene &scene, const Frames &frames);
+    GLuint uploadTexture(const QImage &image);
     struct Program
     {
         GLuint id = 0;
         std::vector<ActiveUniform> uniforms;
     };
-    Program builtIn(const QString &name, QString &error);
+    Program builtIn(const QString &name, QString &error, const QString &fragment = {});
     void release(Program &program);
     static GLint uniformLocation(const Program &program, const char *name);
     const Program &objectProgram(const Scene &scene) const;
@@ -71,14 +79,13 @@ private:
     void drawLightMarker(const Scene &scene, const Frames &frames);
 
     bool m_initialized = false;
-    Program m_gouraud, m_phong, m_unlit, m_user;
-    GLuint m_texture = 0;
-    CheckerTexture m_checker;
+    Program m_gouraud, m_phong, m_unlit, m_normals, m_user;
+    GLuint m_checkerId = 0, m_objectTextureId = 0;
+    Texture m_checker;
 
-    Mesh m_objectMesh;
-    Shape m_objectShape = Shape::Sphere;
-    int m_objectTessellation = -1; // -1: no mesh built yet
-    bool m_objectUploaded = false;
+    std::shared_ptr<const Mesh> m_objectMesh;
+    std::shared_ptr<const Texture> m_objectTexture;
+    bool m_objectUploaded = false, m_objectTextureUploaded = true;
     GpuMesh m_object, m_markerSphere, m_markerArrow;
 };
 

@@ -27,6 +27,8 @@ constexpr NameTable<Shape, 4> kShapes{{{Shape::Cube, "cube"},
                                        {Shape::Sphere, "sphere"},
                                        {Shape::Torus, "torus"},
                                        {Shape::Plane, "plane"}}};
+constexpr NameTable<NormalMode, 3> kNormalModes{
+    {{NormalMode::File, "file"}, {NormalMode::Smooth, "smooth"}, {NormalMode::Flat, "flat"}}};
 
 template <typename E, std::size_t N> QString nameOf(const NameTable<E, N> &table, E value)
 {
@@ -119,6 +121,10 @@ QString toName(Shape v)
 {
     return nameOf(kShapes, v);
 }
+QString toName(NormalMode v)
+{
+    return nameOf(kNormalModes, v);
+}
 std::optional<LightFrame> parseLightFrame(const QString &s)
 {
     return valueOf(kFrames, s);
@@ -139,6 +145,10 @@ std::optional<Shape> parseShape(const QString &s)
 {
     return valueOf(kShapes, s);
 }
+std::optional<NormalMode> parseNormalMode(const QString &s)
+{
+    return valueOf(kNormalModes, s);
+}
 QStringList lightFrameNames()
 {
     return namesOf(kFrames);
@@ -158,6 +168,10 @@ QStringList projectionNames()
 QStringList shapeNames()
 {
     return namesOf(kShapes);
+}
+QStringList normalModeNames()
+{
+    return namesOf(kNormalModes);
 }
 
 QJsonObject Scene::toJson() const
@@ -189,6 +203,11 @@ QJsonObject Scene::toJson() const
     ob["rotation"] = toArray(&object.rotationDegrees.x, 3);
     ob["scale"] = toArray(&object.scale.x, 3);
     ob["autoRotate"] = object.autoRotate;
+    ob["mesh"] = object.meshPath;
+    ob["normals"] = toName(object.normals);
+    ob["creaseAngle"] = double(object.creaseDegrees);
+    ob["showNormals"] = object.showNormals;
+    ob["adoptFileMaterial"] = object.adoptFileMaterial;
 
     QJsonObject c;
     c["target"] = toArray(&camera.target.x, 3);
@@ -248,6 +267,13 @@ Scene Scene::fromJson(const QJsonObject &json)
     readArray(ob, "scale", &sc.object.scale.x, 3);
     sc.object.scale = glm::clamp(sc.object.scale, limits::kMinScale, limits::kMaxScale);
     readBool(ob, "autoRotate", sc.object.autoRotate);
+    if (ob.value("mesh").isString())
+        sc.object.meshPath = ob.value("mesh").toString();
+    readEnum(ob, "normals", kNormalModes, sc.object.normals);
+    readNumber(ob, "creaseAngle", sc.object.creaseDegrees);
+    sc.object.creaseDegrees = std::clamp(sc.object.creaseDegrees, 0.0f, limits::kMaxCreaseDegrees);
+    readBool(ob, "showNormals", sc.object.showNormals);
+    readBool(ob, "adoptFileMaterial", sc.object.adoptFileMaterial);
 
     const QJsonObject c = json.value("camera").toObject();
     readArray(c, "target", &sc.camera.target.x, 3);

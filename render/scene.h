@@ -21,6 +21,9 @@ namespace lb {
 enum class LightFrame { Camera, World, Object };
 enum class Shading { Gouraud, Phong };
 enum class Shape { Cube, Sphere, Torus, Plane };
+// Where the object's normals come from: the mesh's own (generated smooth when it has none),
+// or generated smooth (within the crease angle) or flat, whatever the mesh has.
+enum class NormalMode { File, Smooth, Flat };
 
 struct Light
 {
@@ -43,6 +46,11 @@ struct ObjectSettings
 {
     Shape shape = Shape::Sphere;
     int tessellation = 16; // coarse on purpose: Gouraud and Phong visibly differ
+    QString meshPath;      // a mesh file drawn instead of the shape; empty: the shape
+    NormalMode normals = NormalMode::File;
+    float creaseDegrees = 30.0f;    // generated smooth normals don't blend across sharper edges
+    bool showNormals = false;       // draw each vertex normal as a short line
+    bool adoptFileMaterial = false; // a mesh file's material replaces Ka, Kd, Ks, shininess
     glm::vec3 rotationDegrees{0.0f};
     glm::vec3 scale{1.0f};
     bool autoRotate = false;
@@ -80,6 +88,7 @@ constexpr float kMaxShininess = 1000.0f;
 constexpr float kMaxCoordinate = 1000.0f;
 constexpr float kMinScale = 0.01f;
 constexpr float kMaxScale = 100.0f;
+constexpr float kMaxCreaseDegrees = 180.0f;
 } // namespace limits
 
 // Names used on the command line, in JSON and in the panels' combo boxes.
@@ -88,15 +97,18 @@ QString toName(Shading v);
 QString toName(SpecularModel v);
 QString toName(Projection v);
 QString toName(Shape v);
+QString toName(NormalMode v);
 std::optional<LightFrame> parseLightFrame(const QString &s);
 std::optional<Shading> parseShading(const QString &s);
 std::optional<SpecularModel> parseSpecularModel(const QString &s);
 std::optional<Projection> parseProjection(const QString &s);
 std::optional<Shape> parseShape(const QString &s);
+std::optional<NormalMode> parseNormalMode(const QString &s);
 QStringList lightFrameNames();
 QStringList shadingNames();
 QStringList specularModelNames();
 QStringList projectionNames();
 QStringList shapeNames();
+QStringList normalModeNames();
 
 } // namespace lb

@@ -1,5 +1,6 @@
 #pragma once
-// Object: the shape and its tessellation, rotation and (possibly non-uniform) scale per axis,
+// Object: the shape or mesh file and its tessellation, normals (the file's, smooth within a
+// crease angle, or flat; shown as lines), rotation and (possibly non-uniform) scale per axis,
 // and auto-rotate.
 
 #include "scene_panel.h"
@@ -24,6 +25,13 @@ public:
     QDoubleSpinBox *rotation(int i) const { return m_rotation[std::size_t(i)]; }
     QDoubleSpinBox *scale(int i) const { return m_scale[std::size_t(i)]; }
     QCheckBox *autoRotateCheck() const { return m_autoRotate; }
+    QComboBox *normalsCombo() const { return m_normals; }
+    QDoubleSpinBox *creaseBox() const { return m_crease; }
+    QCheckBox *showNormalsCheck() const { return m_showNormals; }
+    QCheckBox *adoptMaterialCheck() const { return m_adoptMaterial; }
+
+signals:
+    void openMeshRequested(); // the "Open..." button: the window shows its file dialog
 
 protected:
     void refresh(const Scene &scene) override;
@@ -34,6 +42,10 @@ private:
     std::array<QDoubleSpinBox *, 3> m_rotation{};
     std::array<QDoubleSpinBox *, 3> m_scale{};
     QCheckBox *m_autoRotate;
+    QComboBox *m_normals;
+    QDoubleSpinBox *m_crease;
+    QCheckBox *m_showNormals;
+    QCheckBox *m_adoptMaterial;
 };
 
 } // namespace lb

@@ -146,6 +146,12 @@ void Viewport::resizeGL(int, int)
     m_banner->setGeometry(0, 0, width(), m_banner->sizeHint().height());
 }
 
+void Viewport::setObject(std::shared_ptr<const Mesh> mesh, std::shared_ptr<const Texture> texture)
+{
+    m_renderer.setObject(std::move(mesh), std::move(texture)); // uploaded by the next paint
+    update();
+}
+
 void Viewport::resetCamera()
 {
     m_document->edit([](Scene &s) { s.camera = OrbitCamera{}; });

@@ -24,6 +24,10 @@ public:
     ~Viewport() override;
 
     void resetCamera();
+    // The mesh to draw from now on (ObjectLoader builds it) and its texture (nullptr: the
+    // checker).
+    void setObject(std::shared_ptr<const Mesh> mesh, std::shared_ptr<const Texture> texture);
+    const Renderer &renderer() const { return m_renderer; }
     QString renderError() const { return m_error; }
     QString banner() const; // the message over the picture; empty when there is none
 

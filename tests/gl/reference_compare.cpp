@@ -20,8 +20,8 @@ int channelDifference(QRgb gpu, const glm::vec3 &reference)
 Comparison compareWithReference(OffscreenRenderer &offscreen, const Scene &scene,
                                 const QImage &frame, int step)
 {
-    const Mesh &mesh = offscreen.renderer().meshFor(scene.object);
-    const CheckerTexture &texture = offscreen.renderer().checkerTexture();
+    const Mesh &mesh = offscreen.objectMesh(scene);
+    const Texture &texture = offscreen.renderer().texture();
     const QSize size = frame.size();
     Comparison c;
     for (int y = 3; y < size.height() - 3; y += step) {

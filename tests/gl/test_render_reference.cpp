@@ -129,11 +129,11 @@ private slots:
             qPrintable(
                 QString("only %1/255 apart at (%2, %3)").arg(diff).arg(peak.x()).arg(peak.y())));
         // And each is what the reference says for its own mode there.
-        const Mesh &mesh = m_offscreen.renderer().meshFor(s.object);
+        const Mesh &mesh = m_offscreen.objectMesh(s);
         for (Shading mode : {Shading::Phong, Shading::Gouraud}) {
             s.shading.shading = mode;
             const ProbeResult p =
-                probePixel(s, mesh, m_offscreen.renderer().checkerTexture(), kSize, peak);
+                probePixel(s, mesh, m_offscreen.renderer().texture(), kSize, peak);
             const QImage &img = mode == Shading::Phong ? phong : gouraud;
             QVERIFY(p.hit);
             QVERIFY(channelDifference(img.pixel(peak), p.reference) <= kTolerance);

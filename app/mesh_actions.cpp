@@ -1,0 +1,174 @@
+#include "mesh_actions.h"
+
+#include "load_progress.h"
+#include "preferences_dialog.h"
+#include "recent_files.h"
+
+#include <QDragEnterEvent>
+#include <QDropEvent>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QLabel>
+#include <QMainWindow>
+#include <QMenu>
+#include <QMessageBox>
+#include <QMimeData>
+#include <QSettings>
+#include <QStatusBar>
+
+namespace lb {
+
+namespace {
+
+const char *kMemoryKey = "import/memoryLimitMB";
+const char *kTimeKey = "import/timeLimitSeconds";
+const char *kRecentKey = "recentMeshes";
+const char *kDialogDirKey = "import/lastDirectory";
+
+bool isShaderFile(const QString &path)
+{
+    const QString suffix = QFileInfo(path).suffix().toLower();
+    return suffix == "vert" || suffix == "frag";
+}
+
+} // namespace
+
+MeshActions::MeshActions(QMainWindow *window, SceneDocument *document, ObjectLoader *loader,
+                         QSettings &settings)
+    : QObject(window), m_window(window), m_document(document), m_loader(loader),
+      m_settings(settings)
+{
+    ImportLimits limits;
+    limits.memoryMB =
+        std::max<qint64>(64, m_settings.value(kMemoryKey, limits.memoryMB).toLongLong());
+    limits.seconds = std::clamp(m_settings.value(kTimeKey, limits.seconds).toInt(), 1, 3600);
+    m_loader->setLimits(limits);
+
+    m_progress = new LoadProgress(window);
+    m_summary = new QLabel(window);
+    window->statusBar()->addPermanentWidget(m_progress);
+    window->statusBar()->addPermanentWidget(m_summary);
+    m_recent = new RecentFiles(tr("Open &Recent Mesh"), settings, kRecentKey, window);
+    connect(m_recent, &RecentFiles::fileChosen, this, &MeshActions::open);
+
+    connect(m_progress, &LoadProgress::cancelRequested, loader, &ObjectLoader::cancel);
+    connect(loader, &ObjectLoader::loadStarted, this, [this](const QString &path) {
+        m_pendingPath = path;
+        m_progress->start(QFileInfo(path).fileName());
+    });
+    connect(loader, &ObjectLoader::loadProgress, m_progress, &LoadProgress::setProgress);
+    connect(loader, &ObjectLoader::loadFinished, this, &MeshActions::finished);
+    connect(loader, &ObjectLoader::meshReady, this,
+            [this] { m_summary->setText(m_loader->summary()); });
+    m_summary->setText(m_loader->summary());
+
+    window->setAcceptDrops(true);
+    window->installEventFilter(this);
+}
+
+void MeshActions::addToMenus(QMenu *file, QMenu *edit, QMenu *view)
+{
+    QAction *open = file->addAction(tr("Open &Mesh..."), this, &MeshActions::showOpenDialog);
+    open->setShortcut(QKeySequence(tr("Ctrl+M")));
+    file->addMenu(m_recent);
+
+    QAction *preferences =
+        edit->addAction(tr("&Preferences..."), this, &MeshActions::showPreferences);
+    preferences->setShortcut(QKeySequence::Preferences);
+    if (preferences->shortcut().isEmpty())
+        preferences->setShortcut(QKeySequence(tr("Ctrl+,")));
+
+    QAction *normals = view->addAction(tr("Show &Normals"), this, [this] {
+        m_document->edit([](Scene &s) { s.object.showNormals = !s.object.showNormals; });
+    });
+    normals->setShortcut(QKeySequence(tr("N")));
+}
+
+QString MeshActions::fileFilter() const
+{
+    const QStringList patterns = ImportProcess::filePatterns();
+    QString filter;
+    if (!patterns.isEmpty())
+        filter = tr("Meshes Assimp reads (%1);;").arg(patterns.join(' '));
+    return filter + tr("All files (*)");
+}
+
+void MeshActions::showOpenDialog()
+{
+    const QString path = QFileDialog::getOpenFileName(
+        m_window, tr("Open a mesh"), m_settings.value(kDialogDirKey).toString(), fileFilter());
+    if (path.isEmpty())
+        return;
+    m_settings.setValue(kDialogDirKey, QFileInfo(path).absolutePath());
+    open(path);
+}
+
+void MeshActions::open(const QString &path)
+{
+    m_loader->open(QFileInfo(path).absoluteFilePath());
+}
+
+void MeshActions::showPreferences()
+{
+    PreferencesDialog dialog(m_loader->limits(), m_window);
+    if (dialog.exec() != QDialog::Accepted)
+        return;
+    const ImportLimits limits = dialog.limits();
+    m_settings.setValue(kMemoryKey, limits.memoryMB);
+    m_settings.setValue(kTimeKey, limits.seconds);
+    m_loader->setLimits(limits);
+}
+
+void MeshActions::finished(bool ok, const QString &message)
+{
+    m_progress->stop();
+    if (ok) {
+        m_recent->add(m_pendingPath);
+        m_summary->setText(message);
+        m_window->statusBar()->showMessage(tr("Loaded %1").arg(message), 5000);
+        return;
+    }
+    if (message == tr("Loading cancelled")) {
+        m_window->statusBar()->showMessage(message, 5000);
+        return;
+    }
+    // Not modal for the application: the window stays usable behind the message.
+    if (m_errorBox)
+        m_errorBox->close();
+    m_errorBox = new QMessageBox(QMessageBox::Warning, tr("Mesh not loaded"),
+                                 tr("The mesh could not be loaded; the previous one stays."),
+                                 QMessageBox::Ok, m_window);
+    m_errorBox->setInformativeText(message);
+    m_errorBox->setAttribute(Qt::WA_DeleteOnClose);
+    m_errorBox->setWindowModality(Qt::NonModal);
+    m_errorBox->show();
+    m_window->statusBar()->showMessage(message, 10000);
+}
+
+bool MeshActions::eventFilter(QObject *watched, QEvent *event)
+{
+    if (watched != m_window)
+        return false;
+    if (event->type() == QEvent::DragEnter) {
+        auto *drag = static_cast<QDragEnterEvent *>(event);
+        if (drag->mimeData()->hasUrls()) {
+            drag->acceptProposedAction();
+            return true;
+        }
+    } else if (event->type() == QEvent::Drop) {
+        auto *drop = static_cast<QDropEvent *>(event);
+        QStringList shaders, meshes;
+        for (const QUrl &url : drop->mimeData()->urls())
+            if (url.isLocalFile())
+                (isShaderFile(url.toLocalFile()) ? shaders : meshes) << url.toLocalFile();
+        if (!shaders.isEmpty())
+            emit shaderFilesDropped(shaders);
+        if (!meshes.isEmpty())
+            open(meshes.first()); // one object at a time
+        drop->acceptProposedAction();
+        return true;
+    }
+    return false;
+}
+
+} // namespace lb

@@ -1,0 +1,64 @@
+#pragma once
+// The window's mesh controls around ObjectLoader: File > Open Mesh and Open Recent Mesh,
+// files dropped on the window, the status bar's load progress (with Cancel) and mesh summary,
+// load errors, View > Show Normals, and the import limits (Edit > Preferences, kept in
+// QSettings; the command line can override them for one session).
+
+#include "object_loader.h"
+
+#include <QMessageBox>
+#include <QObject>
+#include <QPointer>
+
+class QLabel;
+class QMainWindow;
+class QMenu;
+class QSettings;
+
+namespace lb {
+
+class LoadProgress;
+class RecentFiles;
+
+class MeshActions : public QObject
+{
+    Q_OBJECT
+public:
+    MeshActions(QMainWindow *window, SceneDocument *document, ObjectLoader *loader,
+                QSettings &settings);
+
+    void addToMenus(QMenu *file, QMenu *edit, QMenu *view);
+    void showOpenDialog();
+    void open(const QString &path);
+    void showPreferences();
+    // Limits for this session only (--import-memory-limit): the preferences keep theirs.
+    void setSessionLimits(const ImportLimits &limits) { m_loader->setLimits(limits); }
+
+    LoadProgress *progress() const { return m_progress; }
+    RecentFiles *recent() const { return m_recent; }
+    QLabel *summaryLabel() const { return m_summary; }
+    // The message box of the last failed load, while it is open.
+    QMessageBox *errorBox() const { return m_errorBox; }
+
+signals:
+    void shaderFilesDropped(const QStringList &paths);
+
+protected:
+    bool eventFilter(QObject *watched, QEvent *event) override; // drops on the window
+
+private:
+    void finished(bool ok, const QString &message);
+    QString fileFilter() const;
+
+    QMainWindow *m_window;
+    SceneDocument *m_document;
+    ObjectLoader *m_loader;
+    QSettings &m_settings;
+    LoadProgress *m_progress;
+    QLabel *m_summary;
+    RecentFiles *m_recent;
+    QPointer<QMessageBox> m_errorBox;
+    QString m_pendingPath; // the file being loaded, for the recent list
+};
+
+} // namespace lb

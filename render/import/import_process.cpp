@@ -1,0 +1,330 @@
+#include "import_process.h"
+
+#include <QBuffer>
+#include <QCoreApplication>
+#include <QDir>
+#include <QEventLoop>
+#include <QFileInfo>
+#include <QImageReader>
+#include <QStandardPaths>
+
+#include <algorithm>
+#include <csignal>
+#include <cstring>
+
+#include <unistd.h>
+
+namespace lb {
+
+namespace {
+
+constexpr qsizetype kStderrKept = 4096;
+
+QString signalName(int signal)
+{
+    switch (signal) {
+    case SIGSEGV:
+        return "a segmentation fault";
+    case SIGABRT:
+        return "an abort";
+    case SIGBUS:
+        return "a bus error";
+    case SIGFPE:
+        return "an arithmetic error";
+    case SIGILL:
+        return "an illegal instruction";
+    default:
+        return QString("signal %1 (%2)").arg(signal).arg(QString::fromLocal8Bit(strsignal(signal)));
+    }
+}
+
+// The diffuse texture a file names: as written, beside the model, or by its name alone
+// beside the model (files made on Windows carry their author's absolute paths).
+QString findTexture(const QString &modelPath, QString name)
+{
+    name.replace('\\', '/');
+    const QDir dir = QFileInfo(modelPath).absoluteDir();
+    for (const QString &candidate :
+         {name, dir.filePath(name), dir.filePath(QFileInfo(name).fileName())})
+        if (!candidate.isEmpty() && QFileInfo(candidate).isFile())
+            return candidate;
+    return {};
+}
+
+} // namespace
+
+qint64 ImportLimits::defaultMemoryMB()
+{
+    const long pages = sysconf(_SC_PHYS_PAGES);
+    const long pageSize = sysconf(_SC_PAGE_SIZE);
+    if (pages <= 0 || pageSize <= 0)
+        return 4096;
+    return qint64(pages) * qint64(pageSize) / 2 / (1 << 20);
+}
+
+ImportProcess::ImportProcess(QObject *parent) : QObject(parent)
+{
+    qRegisterMetaType<lb::ImportResult>();
+    m_deadline.setSingleShot(true);
+    connect(&m_deadline, &QTimer::timeout, this, [this] {
+        m_timedOut = true;
+        m_process.kill();
+    });
+    connect(&m_process, &QProcess::readyReadStandardOutput, this, &ImportProcess::readOutput);
+    connect(&m_process, &QProcess::readyReadStandardError, this, [this] {
+        m_stderr += m_process.readAllStandardError();
+        if (m_stderr.size() > kStderrKept)
+            m_stderr = m_stderr.right(kStderrKept);
+    });
+    connect(&m_process, &QProcess::finished, this, &ImportProcess::processFinished);
+    connect(&m_process, &QProcess::errorOccurred, this, [this](QProcess::ProcessError error) {
+        if (error == QProcess::FailedToStart && m_running)
+            finish({nullptr,
+                    QString("%1: cannot start the import helper '%2': %3")
+                        .arg(QFileInfo(m_path).fileName(), m_process.program(),
+                             m_process.errorString()),
+                    false});
+    });
+}
+
+ImportProcess::~ImportProcess()
+{
+    if (m_process.state() != QProcess::NotRunning) {
+        m_process.disconnect(this);
+        m_process.kill();
+        m_process.waitForFinished(2000);
+    }
+}
+
+QString ImportProcess::helperPath()
+{
+    const QString fromEnvironment = qEnvironmentVariable("LIGHTBENCH_IMPORT_HELPER");
+    if (!fromEnvironment.isEmpty())
+        return fromEnvironment;
+    const QString beside = QCoreApplication::applicationDirPath() + "/lightbench-import";
+    if (QFileInfo(beside).isExecutable())
+        return beside;
+    const QString onPath = QStandardPaths::findExecutable("lightbench-import");
+    return onPath.isEmpty() ? beside : onPath;
+}
+
+QStringList ImportProcess::filePatterns()
+{
+    static QStringList patterns = [] {
+        QProcess helper;
+        helper.start(helperPath(), {"--formats"});
+        if (!helper.waitForFinished(10000) || helper.exitCode() != 0)
+            return QStringList();
+        return QString::fromUtf8(helper.readAllStandardOutput())
+            .trimmed()
+            .split(';', Qt::SkipEmptyParts);
+    }();
+    return patterns;
+}
+
+void ImportProcess::start(const QString &path, const ImportLimits &limits)
+{
+    if (m_running)
+        cancel();
+    m_path = path;
+    m_limits = limits;
+    m_running = true;
+    m_cancelled = m_timedOut = false;
+    m_stderr.clear();
+    m_clock.start();
+    m_reader = std::make_unique<WireReader>();
+    m_reader->onProgress = [this](double fraction, const QString &stage) {
+        emit progress(fraction, stage);
+    };
+
+    const QFileInfo info(path);
+    QString problem;
+    if (!info.exists())
+        problem = "no such file";
+    else if (!info.isFile())
+        problem = "not a file";
+    else if (!info.isReadable())
+        problem = "not readable (permissions)";
+    else if (info.size() == 0)
+        problem = "the file is empty";
+    if (!problem.isEmpty()) {
+        // Queued, so that callers always hear of the result after start() returned.
+        QMetaObject::invokeMethod(
+            this,
+            [this, problem] {
+                finish({nullptr, m_path + ": " + problem, false});
+            },
+            Qt::QueuedConnection);
+        return;
+    }
+    QStringList arguments;
+    if (limits.memoryMB > 0)
+        arguments << "--memory-limit" << QString::number(limits.memoryMB);
+    if (limits.seconds > 0) {
+        arguments << "--time-limit" << QString::number(limits.seconds);
+        m_deadline.start(limits.seconds * 1000);
+    }
+    arguments << info.absoluteFilePath();
+    m_process.start(helperPath(), arguments, QIODevice::ReadOnly);
+}
+
+void ImportProcess::cancel()
+{
+    if (!m_running)
+        return;
+    m_cancelled = true;
+    if (m_process.state() != QProcess::NotRunning) {
+        m_process.kill();
+        m_process.waitForFinished(2000); // finished() arrives from here
+    }
+}
+
+void ImportProcess::readOutput()
+{
+    if (!m_reader) { // output after the result was given: nobody listens any more
+        m_process.readAllStandardOutput();
+        return;
+    }
+    char buffer[1 << 16];
+    for (;;) {
+        const qint64 n = m_process.read(buffer, sizeof buffer);
+        if (n <= 0)
+            break;
+        if (!m_reader->feed(buffer, n) && m_reader->malformed()) {
+            m_process.kill(); // a helper writing nonsense has nothing more to say
+            break;
+        }
+    }
+}
+
+void ImportProcess::processFinished(int exitCode, QProcess::ExitStatus status)
+{
+    if (!m_running)
+        return;
+    readOutput();
+    m_deadline.stop();
+    const QString name = m_path;
+    if (m_cancelled) {
+        finish({nullptr, name + ": cancelled", true});
+    } else if (m_timedOut) {
+        finish({nullptr,
+                QString("%1: gave up after %2 s (the import time limit)")
+                    .arg(name)
+                    .arg(m_limits.seconds),
+                false});
+    } else if (status == QProcess::NormalExit && exitCode == 0 && m_reader->complete()) {
+        finish({meshFile(), {}, false});
+    } else {
+        finish({nullptr, name + ": " + describeFailure(exitCode, status), false});
+    }
+}
+
+QString ImportProcess::describeFailure(int exitCode, QProcess::ExitStatus status) const
+{
+    if (m_reader->failed())
+        return m_reader->error();
+    if (status == QProcess::CrashExit) {
+        if (exitCode == SIGXCPU)
+            return QString("gave up after %1 s of CPU time (the import time limit)")
+                .arg(m_limits.seconds);
+        if (exitCode == SIGKILL)
+            return "the import helper was killed (by the system, for memory?)";
+        return "the importer crashed with " + signalName(exitCode) +
+               " while reading this file; the workbench is fine";
+    }
+    if (exitCode == wire::kExitOutOfMemory)
+        return QString("out of memory: reading this file needs more than the import memory "
+                       "limit (%1 MB)")
+            .arg(m_limits.memoryMB);
+    QString detail = QString::fromLocal8Bit(m_stderr).trimmed();
+    if (!detail.isEmpty())
+        detail = ": " + detail.split('\n').last();
+    return QString("the import helper stopped (exit code %1) before sending the whole mesh%2")
+        .arg(exitCode)
+        .arg(detail);
+}
+
+std::shared_ptr<MeshFile> ImportProcess::meshFile()
+{
+    auto file = std::make_shared<MeshFile>();
+    file->path = m_path;
+    file->mesh = std::make_shared<const Mesh>(m_reader->takeMesh());
+    const QMap<QString, QString> &info = m_reader->info();
+    file->meshes = info.value("meshes").toInt();
+    file->skippedFaces = info.value("skippedFaces").toLongLong();
+    file->nonFinitePositions = info.value("nonFinite").toLongLong();
+    file->readSeconds = info.value("seconds").toDouble();
+    file->helperPeakKB = info.value("peakKB").toLongLong();
+
+    if (const auto &m = m_reader->material()) {
+        if (m->present & wire::kHasAmbient)
+            file->material.ka = glm::vec3(m->ka[0], m->ka[1], m->ka[2]);
+        if (m->present & wire::kHasDiffuse)
+            file->material.kd = glm::vec3(m->kd[0], m->kd[1], m->kd[2]);
+        if (m->present & wire::kHasSpecular)
+            file->material.ks = glm::vec3(m->ks[0], m->ks[1], m->ks[2]);
+        if (m->present & wire::kHasShininess)
+            file->material.shininess = m->shininess;
+    }
+
+    QImage image;
+    if (const auto &h = m_reader->textureHeader()) {
+        const QByteArray &bytes = m_reader->textureBytes();
+        if (h->width == 0) {
+            QBuffer buffer(const_cast<QByteArray *>(&bytes));
+            QImageReader reader(&buffer);
+            image = reader.read();
+            if (image.isNull())
+                file->textureProblem = "embedded texture unreadable: " + reader.errorString();
+        } else {
+            // Assimp's texels are B, G, R, A in memory: QImage's ARGB32 on this machine.
+            image = QImage(reinterpret_cast<const uchar *>(bytes.constData()), int(h->width),
+                           int(h->height), QImage::Format_ARGB32)
+                        .copy();
+        }
+    } else if (!m_reader->texturePath().isEmpty()) {
+        const QString found = findTexture(m_path, m_reader->texturePath());
+        if (found.isEmpty()) {
+            file->textureProblem = "texture '" + m_reader->texturePath() + "' not found";
+        } else {
+            QImageReader reader(found);
+            image = reader.read();
+            if (image.isNull())
+                file->textureProblem = "texture '" + found + "': " + reader.errorString();
+        }
+    }
+    if (!image.isNull()) {
+        if (file->mesh->uvs.empty())
+            file->textureProblem = "the file has a texture but no texture coordinates";
+        else
+            file->texture = std::make_shared<const Texture>(Texture::fromImage(image));
+    }
+    file->seconds = double(m_clock.nsecsElapsed()) * 1e-9;
+    return file;
+}
+
+void ImportProcess::finish(ImportResult result)
+{
+    if (!m_running)
+        return;
+    m_running = false;
+    m_deadline.stop();
+    m_reader.reset();
+    emit finished(result);
+}
+
+ImportResult ImportProcess::import(const QString &path, const ImportLimits &limits)
+{
+    ImportProcess process;
+    ImportResult result;
+    QEventLoop loop;
+    connect(&process, &ImportProcess::finished, &loop, [&](const ImportResult &r) {
+        result = r;
+        loop.quit();
+    });
+    process.start(path, limits);
+    loop.exec();
+    return result;
+}
+
+} // namespace lb

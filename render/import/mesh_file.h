@@ -1,0 +1,50 @@
+#pragma once
+// A mesh file as the import helper read it: the mesh (centred, scaled to fit the view, all
+// node transforms applied), what else the file had (material, diffuse texture) and figures
+// about the load. The workbench never touches the file with Assimp itself; see wire.h.
+
+#include "lighting.h"
+#include "mesh.h"
+#include "texture.h"
+
+#include <QString>
+#include <QStringList>
+
+#include <glm/vec3.hpp>
+
+#include <memory>
+#include <optional>
+
+namespace lb {
+
+// The file's material, as far as it has one.
+struct FileMaterial
+{
+    std::optional<glm::vec3> ka, kd, ks;
+    std::optional<float> shininess;
+    bool empty() const { return !ka && !kd && !ks && !shininess; }
+};
+
+// `current` with whatever the file has, brought into the panels' ranges.
+Material adoptMaterial(const Material &current, const FileMaterial &file);
+
+struct MeshFile
+{
+    QString path;
+    std::shared_ptr<const Mesh> mesh; // normals only when the file has usable ones
+    FileMaterial material;
+    std::shared_ptr<const Texture> texture; // the diffuse texture, when it could be read
+    QString textureProblem;                 // why a texture the file names is not used
+    int meshes = 0;                         // mesh instances merged into `mesh`
+    qint64 skippedFaces = 0;                // points, lines and faces with bad indices
+    qint64 nonFinitePositions = 0;          // NaN or infinite positions, put at the centre
+    double readSeconds = 0;                 // Assimp's reading, inside the helper
+    double seconds = 0;                     // the whole load as the workbench saw it
+    qint64 helperPeakKB = 0;                // the helper's peak resident memory
+
+    bool hasNormals() const { return mesh && !mesh->normals.empty(); }
+    // Short remarks for the status bar: what was skipped or could not be used.
+    QStringList remarks() const;
+};
+
+} // namespace lb

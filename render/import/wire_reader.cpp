@@ -1,0 +1,224 @@
+#include "wire_reader.h"
+
+#include <algorithm>
+#include <cstring>
+#include <new>
+
+namespace lb {
+
+namespace {
+
+constexpr std::uint64_t kMaxSmallRecord = 1 << 20;     // progress, error, info, paths
+constexpr std::uint64_t kMaxTextureRecord = 512 << 20; // an embedded texture
+
+template <typename T> T read(const QByteArray &bytes)
+{
+    T value;
+    std::memcpy(&value, bytes.constData(), sizeof value);
+    return value;
+}
+
+} // namespace
+
+bool WireReader::fail(const QString &why)
+{
+    if (m_state != State::Failed) {
+        m_error = why;
+        m_malformed = true;
+    }
+    m_state = State::Failed;
+    m_targets.clear();
+    m_mesh = Mesh{};
+    return false;
+}
+
+bool WireReader::feed(const char *data, qint64 size)
+{
+    while (size > 0) {
+        switch (m_state) {
+        case State::Failed:
+            return false;
+        case State::Done:
+            return fail("the import stream goes on after its end");
+        case State::Magic:
+        case State::Header:
+        case State::MeshHeader: {
+            const qint64 need = m_state == State::Magic    ? qint64(sizeof wire::kMagic)
+                                : m_state == State::Header ? qint64(sizeof(wire::RecordHeader))
+                                                           : qint64(sizeof(wire::MeshHeader));
+            const qint64 take = std::min(size, need - qint64(m_pending.size()));
+            m_pending.append(data, take);
+            data += take;
+            size -= take;
+            if (m_pending.size() < need)
+                break;
+            if (m_state == State::Magic) {
+                if (std::memcmp(m_pending.constData(), wire::kMagic, sizeof wire::kMagic) != 0)
+                    return fail("the import helper wrote something that is not a mesh stream");
+                m_pending.clear();
+                m_state = State::Header;
+            } else if (m_state == State::Header) {
+                m_header = read<wire::RecordHeader>(m_pending);
+                m_pending.clear();
+                m_payloadLeft = m_header.size;
+                const auto type = wire::Record(m_header.type);
+                if (type == wire::Record::Mesh) {
+                    if (m_haveMesh)
+                        return fail("the import stream holds two meshes");
+                    if (m_header.size < sizeof(wire::MeshHeader) ||
+                        m_header.size > wire::kMaxRecordBytes)
+                        return fail("the import stream announces a mesh of a bad size");
+                    m_state = State::MeshHeader;
+                    break;
+                }
+                const std::uint64_t limit =
+                    type == wire::Record::TextureData ? kMaxTextureRecord : kMaxSmallRecord;
+                if (m_header.size > limit)
+                    return fail("the import stream holds a record too large to be right");
+                m_state = State::Payload;
+                if (m_payloadLeft == 0 && !finishRecord())
+                    return false;
+            } else {
+                if (!startMesh())
+                    return false;
+            }
+            break;
+        }
+        case State::Payload: {
+            const qint64 take = qint64(std::min<std::uint64_t>(std::uint64_t(size), m_payloadLeft));
+            m_pending.append(data, take);
+            data += take;
+            size -= take;
+            m_payloadLeft -= std::uint64_t(take);
+            if (m_payloadLeft == 0 && !finishRecord())
+                return false;
+            break;
+        }
+        case State::MeshArrays: {
+            Target &t = m_targets[m_target];
+            const std::uint64_t take =
+                std::min<std::uint64_t>(std::uint64_t(size), t.size - m_targetOffset);
+            std::memcpy(t.data + m_targetOffset, data, take);
+            data += take;
+            size -= qint64(take);
+            m_targetOffset += take;
+            m_meshReceived += take;
+            if (m_targetOffset == t.size) {
+                m_targetOffset = 0;
+                ++m_target;
+            }
+            if (onProgress && (m_target == m_targets.size() || (m_meshReceived & 0xffffff) < take))
+                onProgress(0.85 + 0.15 * double(m_meshReceived) / double(m_meshBytes), "receiving");
+            if (m_target == m_targets.size()) {
+                for (const std::uint32_t i : m_mesh.indices)
+                    if (i >= m_mesh.positions.size())
+                        return fail("the import stream holds an index past the last vertex");
+                m_targets.clear();
+                m_haveMesh = true;
+                m_state = State::Header;
+            }
+            break;
+        }
+        }
+    }
+    return m_state != State::Failed;
+}
+
+bool WireReader::startMesh()
+{
+    const auto h = read<wire::MeshHeader>(m_pending);
+    m_pending.clear();
+    const std::uint64_t perVertex = 12 + (h.flags & wire::kHasNormals ? 12 : 0) +
+                                    (h.flags & wire::kHasColors ? 12 : 0) +
+                                    (h.flags & wire::kHasUvs ? 8 : 0);
+    if (h.vertexCount == 0 || h.vertexCount > wire::kMaxVertices || h.indexCount == 0 ||
+        h.indexCount % 3 != 0 || h.indexCount > wire::kMaxRecordBytes / 4 ||
+        h.vertexCount * perVertex + h.indexCount * 4 + sizeof h != m_header.size)
+        return fail("the import stream announces a mesh whose sizes don't add up");
+    try {
+        const std::size_t n = std::size_t(h.vertexCount);
+        m_mesh.positions.resize(n);
+        m_targets = {{reinterpret_cast<char *>(m_mesh.positions.data()), n * 12}};
+        if (h.flags & wire::kHasNormals) {
+            m_mesh.normals.resize(n);
+            m_targets.push_back({reinterpret_cast<char *>(m_mesh.normals.data()), n * 12});
+        }
+        if (h.flags & wire::kHasColors) {
+            m_mesh.colors.resize(n);
+            m_targets.push_back({reinterpret_cast<char *>(m_mesh.colors.data()), n * 12});
+        }
+        if (h.flags & wire::kHasUvs) {
+            m_mesh.uvs.resize(n);
+            m_targets.push_back({reinterpret_cast<char *>(m_mesh.uvs.data()), n * 8});
+        }
+        m_mesh.indices.resize(std::size_t(h.indexCount));
+        m_targets.push_back({reinterpret_cast<char *>(m_mesh.indices.data()), h.indexCount * 4});
+    } catch (const std::bad_alloc &) {
+        return fail(QString("not enough memory for a mesh of %1 vertices and %2 triangles")
+                        .arg(h.vertexCount)
+                        .arg(h.indexCount / 3));
+    }
+    m_target = 0;
+    m_targetOffset = 0;
+    m_meshBytes = m_header.size - sizeof h;
+    m_meshReceived = 0;
+    m_state = State::MeshArrays;
+    return true;
+}
+
+bool WireReader::finishRecord()
+{
+    const QByteArray payload = std::exchange(m_pending, {});
+    m_state = State::Header;
+    switch (wire::Record(m_header.type)) {
+    case wire::Record::Progress:
+        if (payload.size() < qsizetype(sizeof(float)))
+            return fail("the import stream holds a short progress record");
+        if (onProgress)
+            onProgress(std::clamp(double(read<float>(payload)), 0.0, 1.0),
+                       QString::fromUtf8(payload.mid(sizeof(float))));
+        return true;
+    case wire::Record::Error:
+        m_error = QString::fromUtf8(payload).trimmed();
+        if (m_error.isEmpty())
+            m_error = "the import failed without saying why";
+        m_state = State::Failed;
+        return false;
+    case wire::Record::Info:
+        for (const QByteArray &line : payload.split('\n')) {
+            const qsizetype eq = line.indexOf('=');
+            if (eq > 0)
+                m_info[QString::fromUtf8(line.left(eq))] = QString::fromUtf8(line.mid(eq + 1));
+        }
+        return true;
+    case wire::Record::Material:
+        if (payload.size() != qsizetype(sizeof(wire::MaterialRecord)))
+            return fail("the import stream holds a material of the wrong size");
+        m_material = read<wire::MaterialRecord>(payload);
+        return true;
+    case wire::Record::TexturePath:
+        m_texturePath = QString::fromUtf8(payload);
+        return true;
+    case wire::Record::TextureData: {
+        if (payload.size() < qsizetype(sizeof(wire::TextureHeader)))
+            return fail("the import stream holds a short texture");
+        const auto h = read<wire::TextureHeader>(payload);
+        const std::uint64_t bytes = std::uint64_t(payload.size()) - sizeof h;
+        if ((h.width || h.height) && std::uint64_t(h.width) * h.height * 4 != bytes)
+            return fail("the import stream holds a texture whose size doesn't add up");
+        m_textureHeader = h;
+        m_textureBytes = payload.mid(sizeof h);
+        return true;
+    }
+    case wire::Record::End:
+        if (!m_haveMesh)
+            return fail("the import stream ended without a mesh");
+        m_state = State::Done;
+        return true;
+    case wire::Record::Mesh:
+        break;
+    }
+    return fail(QString("the import stream holds a record of unknown type %1").arg(m_header.type));
+}
+
+} // namespace lb

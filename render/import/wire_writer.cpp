@@ -1,0 +1,81 @@
+#include "wire_writer.h"
+
+#include <cerrno>
+#include <cstring>
+
+#include <unistd.h>
+
+namespace lb::wire {
+
+namespace {
+constexpr std::size_t kBufferBytes = 1 << 20;
+}
+
+Writer::Writer(int fd) : m_fd(fd)
+{
+    m_buffer.reserve(kBufferBytes);
+    write(kMagic, sizeof kMagic);
+}
+
+Writer::~Writer()
+{
+    flush();
+}
+
+void Writer::record(Record type, const void *payload, std::size_t size)
+{
+    begin(type, size);
+    write(payload, size);
+}
+
+void Writer::begin(Record type, std::uint64_t size)
+{
+    RecordHeader header;
+    header.type = std::uint32_t(type);
+    header.size = size;
+    write(&header, sizeof header);
+}
+
+void Writer::write(const void *data, std::size_t size)
+{
+    if (size >= kBufferBytes) { // large arrays go out directly
+        flush();
+        const char *p = static_cast<const char *>(data);
+        while (m_ok && size > 0) {
+            const ssize_t n = ::write(m_fd, p, size);
+            if (n < 0 && errno == EINTR)
+                continue;
+            if (n <= 0) {
+                m_ok = false;
+                break;
+            }
+            p += n;
+            size -= std::size_t(n);
+        }
+        return;
+    }
+    if (m_buffer.size() + size > kBufferBytes)
+        flush();
+    const char *p = static_cast<const char *>(data);
+    m_buffer.insert(m_buffer.end(), p, p + size);
+}
+
+void Writer::flush()
+{
+    const char *p = m_buffer.data();
+    std::size_t left = m_buffer.size();
+    while (m_ok && left > 0) {
+        const ssize_t n = ::write(m_fd, p, left);
+        if (n < 0 && errno == EINTR)
+            continue;
+        if (n <= 0) {
+            m_ok = false;
+            break;
+        }
+        p += n;
+        left -= std::size_t(n);
+    }
+    m_buffer.clear();
+}
+
+} // namespace lb::wire

@@ -1,0 +1,37 @@
+#pragma once
+// Writes the import stream (wire.h) to a file descriptor through a buffer. Used by the
+// helper only; plain C++.
+
+#include "wire.h"
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace lb::wire {
+
+class Writer
+{
+public:
+    explicit Writer(int fd);
+    ~Writer();
+    Writer(const Writer &) = delete;
+    Writer &operator=(const Writer &) = delete;
+
+    // A whole record at once.
+    void record(Record type, const void *payload, std::size_t size);
+    void text(Record type, const std::string &text) { record(type, text.data(), text.size()); }
+    // A record whose payload follows in write() calls that add up to `size` bytes.
+    void begin(Record type, std::uint64_t size);
+    void write(const void *data, std::size_t size);
+    void flush();
+    // False once a write failed (the reader went away); later writes are dropped.
+    bool ok() const { return m_ok; }
+
+private:
+    int m_fd;
+    bool m_ok = true;
+    std::vector<char> m_buffer;
+};
+
+} // namespace lb::wire

@@ -1,0 +1,162 @@
+#include "mesh_normals.h"
+
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+namespace lb {
+
+namespace {
+
+// Index of the first vertex at each vertex's position (exact float equality; -0 equals 0).
+std::vector<std::uint32_t> weldPositions(const std::vector<glm::vec3> &positions)
+{
+    const std::size_t n = positions.size();
+    std::size_t capacity = 16;
+    while (capacity < 2 * n)
+        capacity *= 2;
+    constexpr std::uint32_t kEmpty = 0xffffffffu;
+    std::vector<std::uint32_t> table(capacity, kEmpty);
+    std::vector<std::uint32_t> first(n);
+    auto bits = [](float f) {
+        std::uint32_t u;
+        f = f == 0.0f ? 0.0f : f;
+        std::memcpy(&u, &f, sizeof u);
+        return u;
+    };
+    for (std::size_t v = 0; v < n; ++v) {
+        const glm::vec3 &p = positions[v];
+        std::uint64_t h = bits(p.x) * 0x9E3779B97F4A7C15ull;
+        h ^= (h >> 29) + bits(p.y) * 0xBF58476D1CE4E5B9ull;
+        h ^= (h >> 31) + bits(p.z) * 0x94D049BB133111EBull;
+        h ^= h >> 32;
+        for (std::size_t slot = h & (capacity - 1);; slot = (slot + 1) & (capacity - 1)) {
+            if (table[slot] == kEmpty) {
+                table[slot] = std::uint32_t(v);
+                first[v] = std::uint32_t(v);
+                break;
+            }
+            if (positions[table[slot]] == p) {
+                first[v] = table[slot];
+                break;
+            }
+        }
+    }
+    return first;
+}
+
+float cornerAngle(const glm::vec3 &at, const glm::vec3 &a, const glm::vec3 &b)
+{
+    const glm::vec3 u = a - at, v = b - at;
+    const float lu = glm::length(u), lv = glm::length(v);
+    if (lu == 0.0f || lv == 0.0f)
+        return 0.0f;
+    return std::acos(std::clamp(glm::dot(u, v) / (lu * lv), -1.0f, 1.0f));
+}
+
+} // namespace
+
+std::optional<Mesh> withGeneratedNormals(const Mesh &mesh, float creaseDegrees,
+                                         const std::atomic_bool *cancel)
+{
+    auto cancelled = [cancel] { return cancel && cancel->load(std::memory_order_relaxed); };
+    const std::size_t vertexCount = mesh.vertexCount();
+    const std::size_t cornerCount = mesh.indices.size() - mesh.indices.size() % 3;
+    const std::size_t triangleCount = cornerCount / 3;
+
+    // Unit face normals and each corner's angle.
+    std::vector<glm::vec3> faceNormal(triangleCount);
+    std::vector<float> angle(cornerCount);
+    for (std::size_t t = 0; t < triangleCount; ++t) {
+        const glm::vec3 &a = mesh.positions[mesh.indices[3 * t]];
+        const glm::vec3 &b = mesh.positions[mesh.indices[3 * t + 1]];
+        const glm::vec3 &c = mesh.positions[mesh.indices[3 * t + 2]];
+        const glm::vec3 n = glm::cross(b - a, c - a);
+        const float length = glm::length(n);
+        faceNormal[t] = length > 0.0f && std::isfinite(length) ? n / length : glm::vec3(0.0f);
+        angle[3 * t] = cornerAngle(a, b, c);
+        angle[3 * t + 1] = cornerAngle(b, c, a);
+        angle[3 * t + 2] = cornerAngle(c, a, b);
+    }
+    if (cancelled())
+        return std::nullopt;
+
+    // The corners at each position, grouped (counting sort by the position's first vertex).
+    const std::vector<std::uint32_t> position = weldPositions(mesh.positions);
+    std::vector<std::uint32_t> start(vertexCount + 1, 0);
+    for (std::size_t c = 0; c < cornerCount; ++c)
+        ++start[position[mesh.indices[c]] + 1];
+    for (std::size_t v = 0; v < vertexCount; ++v)
+        start[v + 1] += start[v];
+    std::vector<std::uint32_t> corners(cornerCount);
+    {
+        std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+        for (std::size_t c = 0; c < cornerCount; ++c)
+            corners[fill[position[mesh.indices[c]]]++] = std::uint32_t(c);
+    }
+    if (cancelled())
+        return std::nullopt;
+
+    // A small tolerance keeps coplanar triangles together at 0 degrees despite rounding.
+    const float threshold = std::cos(glm::radians(std::clamp(creaseDegrees, 0.0f, 180.0f))) - 1e-5f;
+    Mesh out;
+    out.positions.reserve(vertexCount);
+    out.normals.reserve(vertexCount);
+    const bool colors = mesh.colors.size() == vertexCount;
+    const bool uvs = mesh.uvs.size() == vertexCount;
+    std::vector<std::uint32_t> outIndex(cornerCount);
+    std::vector<glm::vec3> sums;
+    std::vector<std::uint32_t> made; // output vertices of the current position
+    for (std::size_t group = 0; group < vertexCount; ++group) {
+        const std::uint32_t *begin = corners.data() + start[group];
+        const std::uint32_t *end = corners.data() + start[group + 1];
+        if (begin == end)
+            continue;
+        if ((group & 0xffff) == 0 && cancelled())
+            return std::nullopt;
+        glm::vec3 all(0.0f);
+        for (const std::uint32_t *c = begin; c != end; ++c)
+            all += angle[*c] * faceNormal[*c / 3];
+        made.clear();
+        for (const std::uint32_t *c = begin; c != end; ++c) {
+            const glm::vec3 &own = faceNormal[*c / 3];
+            glm::vec3 sum(0.0f);
+            if (threshold <= -1.0f || own == glm::vec3(0.0f)) {
+                sum = all; // fully smooth, or a degenerate triangle takes its neighbours'
+            } else {
+                for (const std::uint32_t *d = begin; d != end; ++d)
+                    if (glm::dot(own, faceNormal[*d / 3]) >= threshold)
+                        sum += angle[*d] * faceNormal[*d / 3];
+            }
+            const float length = glm::length(sum);
+            const glm::vec3 normal = length > 0.0f ? sum / length : glm::vec3(0.0f, 0.0f, 1.0f);
+            // Share an output vertex with an earlier corner at this position that has the
+            // same normal, colour and texture coordinates.
+            const std::uint32_t vertex = mesh.indices[*c];
+            std::uint32_t index = std::uint32_t(out.positions.size());
+            for (const std::uint32_t m : made)
+                if (out.normals[m] == normal && (!colors || out.colors[m] == mesh.colors[vertex]) &&
+                    (!uvs || out.uvs[m] == mesh.uvs[vertex])) {
+                    index = m;
+                    break;
+                }
+            if (index == out.positions.size()) {
+                out.positions.push_back(mesh.positions[vertex]);
+                out.normals.push_back(normal);
+                if (colors)
+                    out.colors.push_back(mesh.colors[vertex]);
+                if (uvs)
+                    out.uvs.push_back(mesh.uvs[vertex]);
+                made.push_back(index);
+            }
+            outIndex[*c] = index;
+        }
+    }
+    out.indices = std::move(outIndex);
+    return out;
+}
+
+} // namespace lb

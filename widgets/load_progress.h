@@ -1,0 +1,37 @@
+#pragma once
+// The status bar's progress for a mesh load: a bar and a Cancel button, shown only when the
+// load takes longer than half a second, so quick loads don't flicker.
+
+#include <QTimer>
+#include <QWidget>
+
+class QLabel;
+class QProgressBar;
+class QPushButton;
+
+namespace lb {
+
+class LoadProgress : public QWidget
+{
+    Q_OBJECT
+public:
+    static constexpr int kShowAfterMs = 500;
+    explicit LoadProgress(QWidget *parent = nullptr);
+
+    void start(const QString &name);
+    void setProgress(double fraction, const QString &stage);
+    void stop();
+    QPushButton *cancelButton() const { return m_cancel; }
+
+signals:
+    void cancelRequested();
+
+private:
+    QLabel *m_label;
+    QProgressBar *m_bar;
+    QPushButton *m_cancel;
+    QTimer m_showTimer;
+    QString m_name;
+};
+
+} // namespace lb

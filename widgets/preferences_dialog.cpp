@@ -1,0 +1,62 @@
+#include "preferences_dialog.h"
+
+#include <QDialogButtonBox>
+#include <QFormLayout>
+#include <QLabel>
+#include <QPushButton>
+#include <QSpinBox>
+
+namespace lb {
+
+PreferencesDialog::PreferencesDialog(const ImportLimits &limits, QWidget *parent) : QDialog(parent)
+{
+    setWindowTitle(tr("Preferences"));
+    auto *form = new QFormLayout(this);
+    auto *intro = new QLabel(tr("Mesh files are read by a helper process (lightbench-import). "
+                                "When it needs more memory or time than this, it is stopped "
+                                "and the file gets a message; the workbench carries on."),
+                             this);
+    intro->setWordWrap(true);
+    form->addRow(intro);
+
+    m_memory = new QSpinBox(this);
+    m_memory->setRange(64, int(std::min<qint64>(ImportLimits::defaultMemoryMB() * 2, 1 << 30)));
+    m_memory->setSingleStep(256);
+    m_memory->setSuffix(tr(" MB"));
+    m_memory->setToolTip(tr("The helper's address-space limit. Default: half of this machine's "
+                            "memory (%1 MB). Also --import-memory-limit MB")
+                             .arg(ImportLimits::defaultMemoryMB()));
+    form->addRow(tr("Import memory limit"), m_memory);
+
+    m_time = new QSpinBox(this);
+    m_time->setRange(1, 3600);
+    m_time->setSuffix(tr(" s"));
+    m_time->setToolTip(
+        tr("A load that takes longer is stopped. Default: %1 s").arg(ImportLimits{}.seconds));
+    form->addRow(tr("Import time limit"), m_time);
+
+    auto *buttons = new QDialogButtonBox(
+        QDialogButtonBox::Ok | QDialogButtonBox::Cancel | QDialogButtonBox::RestoreDefaults, this);
+    connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
+    connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
+    connect(buttons->button(QDialogButtonBox::RestoreDefaults), &QPushButton::clicked, this,
+            [this] { showLimits(ImportLimits{}); });
+    form->addRow(buttons);
+    showLimits(limits);
+}
+
+void PreferencesDialog::showLimits(const ImportLimits &limits)
+{
+    m_memory->setValue(int(limits.memoryMB));
+    m_time->setValue(limits.seconds);
+}
+
+ImportLimits PreferencesDialog::limits() const
+{
+    ImportLimits l;
+    l.memoryMB = m_memory->value();
+    l.seconds = m_time->value();
+    return l;
+}
+
+} // namespace lb
