@@ -2,6 +2,7 @@
 
 #include <QCommandLineParser>
 #include <QFile>
+#include <QFileInfo>
 
 #include <cmath>
 
@@ -100,6 +101,15 @@ const OptionSpec kOptions[] = {
     {"size", "WxH", "Frame size for --render and --probe (default 800x600)."},
     {"shape", "cube|sphere|torus|plane", "Object shape."},
     {"tessellation", "N", "Subdivisions of the sphere, torus and plane (3 to 2000)."},
+    {"mesh", "FILE", "Draw a mesh file (any format Assimp reads) instead of the shape."},
+    {"normals", "file|smooth|flat",
+     "Normals: the mesh's own (generated smooth when it has none), smooth or flat."},
+    {"crease-angle", "DEGREES", "Generated smooth normals stop at sharper edges (0 to 180)."},
+    {"show-normals", "on|off", "Draw each vertex normal as a short line."},
+    {"file-material", "on|off", "Take Ka, Kd, Ks and shininess from the mesh file."},
+    {"import-memory-limit", "MB",
+     "Memory limit of the import helper (default: half of physical memory)."},
+    {"import-time-limit", "SECONDS", "Time limit of the import helper (default 300)."},
     {"shading", "gouraud|phong", "Lighting per vertex (Gouraud) or per fragment (Phong)."},
     {"specular", "phong|blinn", "Specular term: Phong (R.V) or Blinn-Phong (N.H)."},
     {"frame", "camera|world|object", "Frame the light position is given in."},
@@ -176,9 +186,34 @@ void parseInto(const QCommandLineParser &parser, CommandLine &cl)
     if (cl.check && !cl.hasUserProgram())
         fail("check", "needs --vertex FILE and --fragment FILE");
 
+    if (given("import-memory-limit"))
+        cl.importMemoryMB =
+            integer("import-memory-limit", value("import-memory-limit"), 16, 1 << 30);
+    if (given("import-time-limit"))
+        cl.importSeconds = integer("import-time-limit", value("import-time-limit"), 1, 86400);
+    if (given("mesh")) {
+        if (value("mesh").isEmpty())
+            fail("mesh", "needs a file name");
+        const QString path = QFileInfo(value("mesh")).absoluteFilePath();
+        add([path](Scene &s) { s.object.meshPath = path; });
+    }
+    if (given("normals")) {
+        const NormalMode v = word("normals", value("normals"), parseNormalMode, normalModeNames());
+        add([v](Scene &s) { s.object.normals = v; });
+    }
+    if (given("crease-angle")) {
+        const float v = numbers("crease-angle", value("crease-angle"), 1, "a number")[0];
+        checkRange("crease-angle", v, 0.0f, limits::kMaxCreaseDegrees);
+        add([v](Scene &s) { s.object.creaseDegrees = v; });
+    }
     if (given("shape")) {
+        if (given("mesh"))
+            fail("shape", "a shape or a --mesh file, not both");
         const Shape v = word("shape", value("shape"), parseShape, shapeNames());
-        add([v](Scene &s) { s.object.shape = v; });
+        add([v](Scene &s) {
+            s.object.shape = v;
+            s.object.meshPath.clear(); // also when the saved session showed a file
+        });
     }
     if (given("tessellation")) {
         const int v = integer("tessellation", value("tessellation"), limits::kMinTessellation,
@@ -264,6 +299,15 @@ void parseInto(const QCommandLineParser &parser, CommandLine &cl)
             add([on, member = member](Scene &s) { s.shading.*member = on; });
         }
     }
+    const std::pair<const char *, bool ObjectSettings::*> objectSwitches[] = {
+        {"show-normals", &ObjectSettings::showNormals},
+        {"file-material", &ObjectSettings::adoptFileMaterial}};
+    for (const auto &[name, member] : objectSwitches) {
+        if (given(name)) {
+            const bool on = onOff(name, value(name));
+            add([on, member = member](Scene &s) { s.object.*member = on; });
+        }
+    }
     if (given("show-light")) {
         const bool on = onOff("show-light", value("show-light"));
         add([on](Scene &s) { s.showLight = on; });
@@ -271,6 +315,16 @@ void parseInto(const QCommandLineParser &parser, CommandLine &cl)
 }
 
 } // namespace
+
+ImportLimits CommandLine::importLimits() const
+{
+    ImportLimits limits;
+    if (importMemoryMB)
+        limits.memoryMB = *importMemoryMB;
+    if (importSeconds)
+        limits.seconds = *importSeconds;
+    return limits;
+}
 
 void CommandLine::applyTo(Scene &scene) const
 {

@@ -3,6 +3,7 @@
 // --render, --probe, --size, --screenshot and --bench-frames. Bad values end the program with
 // exit code 2 and one line naming the option; nothing here touches OpenGL.
 
+#include "import/import_process.h"
 #include "scene.h"
 
 #include <QPoint>
@@ -31,6 +32,11 @@ struct CommandLine
     bool check = false; // --check: compile and link them, print diagnostics, exit 0 or 1
     int benchEdits = 0; // --bench-edits N (window: edit-to-pixels timing; --vertex/--fragment
                         // add a second pair to time)
+    // --import-memory-limit MB, --import-time-limit S; unset: the preferences' (window) or
+    // the defaults (headless).
+    std::optional<qint64> importMemoryMB;
+    std::optional<int> importSeconds;
+    ImportLimits importLimits() const;
 
     bool hasUserProgram() const { return !vertexPath.isEmpty(); }
     bool headless() const { return !renderPath.isEmpty() || probe || benchFrames > 0 || check; }

@@ -13,6 +13,7 @@
 #include <cstring>
 #include <string>
 
+#include <fcntl.h>
 #include <signal.h>
 #include <sys/prctl.h>
 #include <sys/resource.h>
@@ -82,6 +83,9 @@ int main(int argc, char **argv)
     // goes to stderr instead of corrupting the stream.
     const int stream = dup(STDOUT_FILENO);
     dup2(STDERR_FILENO, STDOUT_FILENO);
+    // A 1 MiB pipe (the unprivileged maximum) instead of 64 KiB: 16 times fewer round trips
+    // between the two processes for a big mesh. Fails harmlessly when stdout is no pipe.
+    fcntl(stream, F_SETPIPE_SZ, 1 << 20);
     lb::wire::Writer out(stream);
     return lb::importToStream(path, out, memoryMB);
 }

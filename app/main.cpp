@@ -5,6 +5,8 @@
 #include "editor_panel.h"
 #include "headless.h"
 #include "main_window.h"
+#include "mesh_actions.h"
+#include "object_loader.h"
 #include "offscreen.h"
 #include "viewport.h"
 
@@ -66,6 +68,12 @@ int main(int argc, char **argv)
     QApplication app(argc, argv);
     QSettings settings;
     lb::MainWindow window(settings);
+    if (cl.importMemoryMB || cl.importSeconds) {
+        lb::ImportLimits limits = window.objectLoader()->limits();
+        limits.memoryMB = cl.importMemoryMB.value_or(limits.memoryMB);
+        limits.seconds = cl.importSeconds.value_or(limits.seconds);
+        window.meshActions()->setSessionLimits(limits);
+    }
     lb::Scene scene = window.document().scene();
     cl.applyTo(scene);
     window.document().set(scene);
@@ -82,24 +90,29 @@ int main(int argc, char **argv)
     window.show();
 
     if (!cl.screenshotPath.isEmpty()) {
-        // Grab once the viewport has drawn and the window has settled, then quit.
+        // Grab once the viewport has drawn, the mesh is in and the window has settled, then
+        // quit.
+        auto *settle = new QTimer(&window);
+        settle->setInterval(700);
         QObject::connect(
-            window.viewport(), &QOpenGLWidget::frameSwapped, &window,
-            [&] {
-                QTimer::singleShot(700, &window, [&] {
-                    const QString path = cl.screenshotPath;
-                    if (!window.grab().save(path, "PNG")) {
-                        std::fprintf(stderr, "lightbench: --screenshot: cannot write '%s'\n",
-                                     qPrintable(path));
-                        QCoreApplication::exit(1);
-                        return;
-                    }
-                    std::printf("%s\n", qPrintable(path));
-                    std::fflush(stdout);
-                    window.close();
-                });
-            },
+            window.viewport(), &QOpenGLWidget::frameSwapped, settle, [settle] { settle->start(); },
             Qt::SingleShotConnection);
+        QObject::connect(settle, &QTimer::timeout, &window, [&, settle] {
+            const lb::ObjectLoader *loader = window.objectLoader();
+            if (loader->isLoading() || loader->isBuilding())
+                return; // the timer fires again
+            settle->stop();
+            const QString path = cl.screenshotPath;
+            if (!window.grab().save(path, "PNG")) {
+                std::fprintf(stderr, "lightbench: --screenshot: cannot write '%s'\n",
+                             qPrintable(path));
+                QCoreApplication::exit(1);
+                return;
+            }
+            std::printf("%s\n", qPrintable(path));
+            std::fflush(stdout);
+            window.close();
+        });
     }
     return app.exec();
 }

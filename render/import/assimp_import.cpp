@@ -365,8 +365,10 @@ std::string outOfMemory(long long limitMB)
 int importToStream(const std::string &path, wire::Writer &out, long long memoryLimitMB)
 {
     try {
-        Assimp::Importer importer;
-        auto *progress = new Progress(out); // the importer owns and deletes it
+        // Never deleted: the helper exits right after this, and the system takes the pages
+        // back faster than the importer frees a big scene's million small face arrays.
+        Assimp::Importer &importer = *new Assimp::Importer;
+        auto *progress = new Progress(out); // the importer owns it
         importer.SetProgressHandler(progress);
         // Plain reading plus triangulation: joining identical vertices costs ~6x the time
         // and 5x the memory on big files, and normals are the workbench's job.

@@ -126,6 +126,10 @@ void ImportProcess::start(const QString &path, const ImportLimits &limits)
 {
     if (m_running)
         cancel();
+    if (m_process.state() != QProcess::NotRunning) { // a helper still exiting after its End
+        m_process.kill();
+        m_process.waitForFinished(2000);
+    }
     m_path = path;
     m_limits = limits;
     m_running = true;
@@ -195,6 +199,9 @@ void ImportProcess::readOutput()
             break;
         }
     }
+    // The whole mesh is in: no need to wait for the helper to exit.
+    if (m_reader->complete() && m_running && !m_cancelled)
+        finish({meshFile(), {}, false}); // processFinished() ignores the exit that follows
 }
 
 void ImportProcess::processFinished(int exitCode, QProcess::ExitStatus status)
