@@ -75,13 +75,14 @@ Mesh makeSphere(int slices, int stacks)
     stacks = std::max(stacks, 2);
     Mesh mesh;
     // Rows run from the north pole down; the seam and the poles repeat vertices so that each
-    // has its own texture coordinate.
+    // has its own texture coordinate. The repeats sit at exactly the same position (sin(pi)
+    // is not 0 in floats), so normal generation sees one surface there.
     for (int r = 0; r <= stacks; ++r) {
         const float theta = kPi * float(r) / float(stacks);
+        const float ring = r == 0 || r == stacks ? 0.0f : std::sin(theta);
         for (int c = 0; c <= slices; ++c) {
-            const float phi = kTwoPi * float(c) / float(slices);
-            const glm::vec3 p(std::sin(theta) * std::sin(phi), std::cos(theta),
-                              std::sin(theta) * std::cos(phi));
+            const float phi = kTwoPi * float(c % slices) / float(slices);
+            const glm::vec3 p(ring * std::sin(phi), std::cos(theta), ring * std::cos(phi));
             mesh.positions.push_back(p);
             mesh.normals.push_back(p);
             mesh.uvs.emplace_back(float(c) / float(slices), 1.0f - float(r) / float(stacks));
@@ -102,10 +103,10 @@ Mesh makeTorus(int ringSegments, int tubeSegments, float major, float minor)
     mesh.normals.reserve(n);
     mesh.uvs.reserve(n);
     for (int r = 0; r <= ringSegments; ++r) {
-        const float u = kTwoPi * float(r) / float(ringSegments);
+        const float u = kTwoPi * float(r % ringSegments) / float(ringSegments); // seams meet
         const glm::vec3 ringDir(std::sin(u), 0.0f, std::cos(u));
         for (int t = 0; t <= tubeSegments; ++t) {
-            const float v = kTwoPi * float(t) / float(tubeSegments);
+            const float v = kTwoPi * float(t % tubeSegments) / float(tubeSegments);
             const glm::vec3 normal = std::cos(v) * ringDir + glm::vec3(0, std::sin(v), 0);
             mesh.positions.push_back(major * ringDir + minor * normal);
             mesh.normals.push_back(normal);

@@ -108,7 +108,11 @@ std::optional<Mesh> withGeneratedNormals(const Mesh &mesh, float creaseDegrees,
             const glm::vec3 &c = mesh.positions[mesh.indices[3 * t + 2]];
             const glm::vec3 n = glm::cross(b - a, c - a);
             const float length = glm::length(n);
-            faceNormal[t] = length > 0.0f && std::isfinite(length) ? n / length : glm::vec3(0.0f);
+            // A sliver whose area is rounding noise has no direction worth averaging.
+            const float edge =
+                std::max({glm::dot(b - a, b - a), glm::dot(c - b, c - b), glm::dot(a - c, a - c)});
+            faceNormal[t] =
+                length > 1e-6f * edge && std::isfinite(length) ? n / length : glm::vec3(0.0f);
             angle[3 * t] = cornerAngle(a, b, c);
             angle[3 * t + 1] = cornerAngle(b, c, a);
             angle[3 * t + 2] = cornerAngle(c, a, b);

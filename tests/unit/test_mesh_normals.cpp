@@ -1,0 +1,151 @@
+// Normal generation: flat, smooth within a crease angle, across seams, on big meshes (which
+// run on several threads), and on degenerate input.
+#include "mesh.h"
+#include "mesh_normals.h"
+
+#include <QTest>
+
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+using namespace lb;
+
+namespace {
+
+Mesh withoutNormals(Mesh mesh)
+{
+    mesh.normals.clear();
+    return mesh;
+}
+
+// The smallest cosine between a corner's normal and its own triangle's normal (the UV
+// sphere's pole triangles have no area and no normal of their own: skipped).
+float worstFlatness(const Mesh &m)
+{
+    float worst = 1.0f;
+    for (std::size_t t = 0; t < m.triangleCount(); ++t) {
+        const glm::vec3 &a = m.positions[m.indices[3 * t]], &b = m.positions[m.indices[3 * t + 1]],
+                        &c = m.positions[m.indices[3 * t + 2]];
+        const glm::vec3 n = glm::cross(b - a, c - a);
+        if (glm::length(n) == 0.0f)
+            continue;
+        for (int k = 0; k < 3; ++k)
+            worst = std::min(worst, glm::dot(m.normals[m.indices[3 * t + k]], glm::normalize(n)));
+    }
+    return worst;
+}
+
+} // namespace
+
+class TestMeshNormals : public QObject
+{
+    Q_OBJECT
+private slots:
+    void cubeGetsFlatNormalsPerpendicularToItsFaces()
+    {
+        const auto m = withGeneratedNormals(withoutNormals(makeCube()), 30.0f);
+        QVERIFY(m);
+        QCOMPARE(m->normals.size(), m->positions.size());
+        QVERIFY(worstFlatness(*m) > 0.99999f);
+        QCOMPARE(m->vertexCount(), std::size_t(24)); // 4 per face, shared within the face
+        for (const glm::vec3 &n : m->normals) {      // axis-aligned unit vectors
+            QVERIFY(std::abs(glm::length(n) - 1.0f) < 1e-5f);
+            QVERIFY(std::abs(std::abs(n.x) + std::abs(n.y) + std::abs(n.z) - 1.0f) < 1e-5f);
+        }
+    }
+
+    void sphereGetsNormalsAlongTheRadius()
+    {
+        const auto m = withGeneratedNormals(withoutNormals(makeSphere(32, 16)), 30.0f);
+        QVERIFY(m);
+        float worst = 1.0f;
+        for (std::size_t v = 0; v < m->vertexCount(); ++v)
+            worst = std::min(worst, glm::dot(m->normals[v], glm::normalize(m->positions[v])));
+        QVERIFY2(worst > 0.995f, qPrintable(QString::number(worst)));
+    }
+
+    void creaseZeroIsFlat()
+    {
+        const auto m = withGeneratedNormals(withoutNormals(makeSphere(16, 8)), 0.0f);
+        QVERIFY(m);
+        QVERIFY(worstFlatness(*m) > 0.99999f);
+    }
+
+    void crease180IsFullySmooth()
+    {
+        // Every cube corner: three faces, each 90 degrees at the corner, so the diagonal. (The
+        // cube's faces have their own texture coordinates, which would keep them apart.)
+        Mesh cube = withoutNormals(makeCube());
+        cube.uvs.clear();
+        const auto m = withGeneratedNormals(cube, 180.0f);
+        QVERIFY(m);
+        QCOMPARE(m->vertexCount(), std::size_t(8));
+        for (std::size_t v = 0; v < m->vertexCount(); ++v)
+            QVERIFY(glm::dot(m->normals[v], glm::normalize(m->positions[v])) > 0.99999f);
+    }
+
+    void creaseSplitsOnlySharperEdges()
+    {
+        // Cube edges are 90 degrees: 89 keeps them flat, 91 smooths them.
+        QVERIFY(worstFlatness(*withGeneratedNormals(withoutNormals(makeCube()), 89.0f)) > 0.9999f);
+        QVERIFY(worstFlatness(*withGeneratedNormals(withoutNormals(makeCube()), 91.0f)) < 0.6f);
+    }
+
+    void seamsAreSmoothedButKeepTheirAttributes()
+    {
+        // Two triangles folded along x = 0 by 20 degrees, the shared edge duplicated with other
+        // texture coordinates (a UV seam).
+        Mesh m;
+        const float s = std::sin(glm::radians(20.0f)), c = std::cos(glm::radians(20.0f));
+        m.positions = {{0, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, 0, 0}, {0, 1, 0}, {c, 0, -s}};
+        m.uvs = {{0, 0}, {0, 1}, {1, 0}, {0.5f, 0}, {0.5f, 1}, {1, 1}};
+        m.indices = {0, 2, 1, 3, 4, 5};
+        const auto smooth = withGeneratedNormals(m, 30.0f);
+        QVERIFY(smooth);
+        QCOMPARE(smooth->vertexCount(), std::size_t(6)); // the seam's uvs differ: kept apart
+        QVERIFY(glm::dot(smooth->normals[smooth->indices[0]], smooth->normals[smooth->indices[3]]) >
+                0.99999f); // ...but lit as one surface
+        const auto creased = withGeneratedNormals(m, 10.0f);
+        QVERIFY(glm::dot(creased->normals[creased->indices[0]],
+                         creased->normals[creased->indices[3]]) < 0.95f);
+    }
+
+    void bigMeshesMatchTheAnalyticNormals()
+    {
+        // 360k triangles: generated on several threads and joined.
+        const Mesh torus = makeTorus(600, 150);
+        QVERIFY(torus.triangleCount() > 100'000);
+        const auto m = withGeneratedNormals(withoutNormals(torus), 30.0f);
+        QVERIFY(m);
+        QCOMPARE(m->triangleCount(), torus.triangleCount());
+        float worst = 1.0f;
+        for (std::size_t i = 0; i < torus.indices.size(); ++i)
+            worst = std::min(worst,
+                             glm::dot(m->normals[m->indices[i]], torus.normals[torus.indices[i]]));
+        QVERIFY2(worst > 0.999f, qPrintable(QString::number(worst)));
+        for (std::size_t i = 0; i < m->indices.size(); ++i)
+            QVERIFY(m->positions[m->indices[i]] == torus.positions[torus.indices[i]]);
+    }
+
+    void degenerateInputGivesUnitNormals()
+    {
+        Mesh m;
+        m.positions = {{1, 1, 1}, {1, 1, 1}, {1, 1, 1}, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+        m.indices = {0, 1, 2, 3, 4, 5, 0}; // a point triangle, a good one, a stray index
+        const auto out = withGeneratedNormals(m, 30.0f);
+        QVERIFY(out);
+        QCOMPARE(out->indices.size(), std::size_t(6));
+        for (const glm::vec3 &n : out->normals)
+            QVERIFY(std::abs(glm::length(n) - 1.0f) < 1e-5f);
+        QVERIFY(withGeneratedNormals(Mesh{}, 30.0f)->indices.empty());
+    }
+
+    void cancelStops()
+    {
+        std::atomic_bool cancel{true};
+        QVERIFY(!withGeneratedNormals(makeTorus(600, 150), 30.0f, &cancel));
+    }
+};
+
+QTEST_APPLESS_MAIN(TestMeshNormals)
+#include "test_mesh_normals.moc"
