@@ -29,6 +29,7 @@ public:
     // Stops a running open(): the helper is killed, a build in progress dropped.
     void cancel();
     bool isLoading() const { return m_loading; }
+    qint64 helperPid() const { return m_import.helperPid(); } // 0 when no helper runs
     void setLimits(const ImportLimits &limits) { m_limits = limits; }
     const ImportLimits &limits() const { return m_limits; }
 

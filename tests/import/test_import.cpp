@@ -1,0 +1,330 @@
+// Mesh files through the path the window uses (ObjectLoader -> ImportProcess -> the helper
+// lightbench-import): Debian's assimp-testmodels corpus, broken files of our own, and helpers
+// that crash, hang or write nonsense. The test process must never crash, every failure must
+// come with a message naming the file, and memory must stay bounded.
+#include "import/import_process.h"
+#include "object_loader.h"
+
+#include <QDirIterator>
+#include <QElapsedTimer>
+#include <QFile>
+#include <QImage>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <csignal>
+
+#include <sys/resource.h>
+#include <unistd.h>
+
+using namespace lb;
+
+namespace {
+
+const QString kCorpus = "/usr/share/assimp/models";
+
+struct Outcome
+{
+    bool ok = false;
+    QString message;
+};
+
+// Opens `path` as File > Open Mesh does and waits for the answer.
+Outcome load(ObjectLoader &loader, const QString &path, int timeoutMs = 60000)
+{
+    QSignalSpy finished(&loader, &ObjectLoader::loadFinished);
+    loader.open(path);
+    if (finished.isEmpty() && !finished.wait(timeoutMs))
+        return {false, "no answer within the timeout"};
+    return {finished.first()[0].toBool(), finished.first()[1].toString()};
+}
+
+void write(const QString &path, const QByteArray &bytes)
+{
+    QFile f(path);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write(bytes);
+}
+
+long selfPeakKB()
+{
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    return usage.ru_maxrss;
+}
+
+long childrenPeakKB()
+{
+    rusage usage{};
+    getrusage(RUSAGE_CHILDREN, &usage);
+    return usage.ru_maxrss;
+}
+
+// A helper stand-in: a shell script doing `body`.
+QString fakeHelper(const QTemporaryDir &dir, const QString &name, const QString &body)
+{
+    const QString path = dir.filePath(name);
+    QFile f(path);
+    f.open(QIODevice::WriteOnly);
+    f.write(("#!/bin/sh\n" + body + "\n").toUtf8());
+    f.close();
+    f.setPermissions(QFile::ReadOwner | QFile::WriteOwner | QFile::ExeOwner);
+    return path;
+}
+
+class HelperOverride
+{
+public:
+    explicit HelperOverride(const QString &path) : m_saved(qgetenv("LIGHTBENCH_IMPORT_HELPER"))
+    {
+        qputenv("LIGHTBENCH_IMPORT_HELPER", path.toLocal8Bit());
+    }
+    ~HelperOverride() { qputenv("LIGHTBENCH_IMPORT_HELPER", m_saved); }
+
+private:
+    QByteArray m_saved;
+};
+
+bool processExists(qint64 pid)
+{
+    return pid > 0 && ::kill(pid_t(pid), 0) == 0;
+}
+
+} // namespace
+
+class TestImport : public QObject
+{
+    Q_OBJECT
+private:
+    QTemporaryDir m_dir;
+
+private slots:
+    void initTestCase() { QVERIFY2(m_dir.isValid(), "no temporary directory"); }
+
+    void wholeCorpusWithoutACrash()
+    {
+        QVERIFY2(QFileInfo(kCorpus).isDir(),
+                 "the assimp-testmodels package is missing (scripts/setup.sh installs it)");
+        SceneDocument document;
+        ObjectLoader loader(&document);
+        ImportLimits limits;
+        limits.memoryMB = 1024;
+        limits.seconds = 60;
+        loader.setLimits(limits);
+
+        int loaded = 0, failed = 0, files = 0;
+        QElapsedTimer clock;
+        clock.start();
+        QDirIterator it(kCorpus, QDir::Files, QDirIterator::Subdirectories);
+        QStringList paths;
+        while (it.hasNext())
+            paths << it.next();
+        paths.sort();
+        for (const QString &path : paths) {
+            ++files;
+            const std::shared_ptr<const Mesh> before = loader.mesh();
+            const Outcome o = load(loader, path);
+            if (o.ok) {
+                ++loaded;
+                QCOMPARE(document.scene().object.meshPath, path);
+                QVERIFY(loader.mesh() && loader.mesh()->triangleCount() > 0);
+                for (std::uint32_t i : loader.mesh()->indices)
+                    QVERIFY(i < loader.mesh()->vertexCount());
+            } else {
+                ++failed;
+                QVERIFY2(o.message.startsWith(path + ": ") && o.message.size() > path.size() + 4,
+                         qPrintable(path + " gave no message: " + o.message));
+                QVERIFY2(!o.message.contains("no answer"), qPrintable(o.message));
+                QCOMPARE(loader.mesh(), before); // the previous mesh stays
+            }
+        }
+        qInfo("corpus: %d files, %d loaded, %d refused with a message, %.1f s; peak memory: "
+              "this process %ld MB, largest helper %ld MB",
+              files, loaded, failed, double(clock.elapsed()) / 1000.0, selfPeakKB() / 1024,
+              childrenPeakKB() / 1024);
+        QVERIFY(files > 500);
+        QVERIFY(loaded > 250); // most of the corpus is valid
+        QVERIFY(failed > 50);  // ...and some of it is broken on purpose
+        QVERIFY2(selfPeakKB() < 1024 * 1024, "the workbench side grew past 1 GB");
+        QVERIFY2(childrenPeakKB() <= limits.memoryMB * 1024, "a helper outgrew its limit");
+    }
+
+    void claimOf350BillionVerticesIsOutOfMemory()
+    {
+        const QString path = kCorpus + "/invalid/OutOfMemory.off";
+        ImportLimits limits;
+        limits.memoryMB = 256;
+        const ImportResult r = ImportProcess::import(path, limits);
+        QVERIFY(!r.ok());
+        QVERIFY2(r.error.contains("out of memory") && r.error.contains("256 MB"),
+                 qPrintable(r.error));
+    }
+
+    void brokenFilesOfOurOwn_data()
+    {
+        QTest::addColumn<QString>("name");
+        QTest::addColumn<QByteArray>("bytes");
+        QTest::addColumn<QString>("expected"); // part of the message
+
+        QTest::newRow("empty") << "empty.obj" << QByteArray() << "empty";
+        const QByteArray ply = "ply\nformat binary_little_endian 1.0\nelement vertex 3\n"
+                               "property float x\nproperty float y\nproperty float z\n"
+                               "element face 1\nproperty list uchar int vertex_indices\n"
+                               "end_header\n";
+        QTest::newRow("truncated ply") << "cut.ply" << (ply + QByteArray(20, '\0')) << ":";
+        QTest::newRow("no triangles")
+            << "points.obj" << QByteArray("v 0 0 0\nv 1 0 0\nv 0 1 0\nl 1 2\n") << ":";
+        QTest::newRow("garbage") << "noise.obj" << QByteArray(4096, '\x9c') << ":";
+        QTest::newRow("text as stl") << "letter.stl" << QByteArray("Dear teacher,\n") << ":";
+        QTest::newRow("bad indices")
+            << "far.obj" << QByteArray("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 99\n") << ":";
+    }
+
+    void brokenFilesOfOurOwn()
+    {
+        QFETCH(QString, name);
+        QFETCH(QByteArray, bytes);
+        QFETCH(QString, expected);
+        const QString path = m_dir.filePath(name);
+        write(path, bytes);
+        SceneDocument document;
+        ObjectLoader loader(&document);
+        const auto shape = loader.mesh();
+        const Outcome o = load(loader, path);
+        QVERIFY2(!o.ok, qPrintable(o.message));
+        QVERIFY2(o.message.startsWith(path + ": ") && o.message.contains(expected),
+                 qPrintable(o.message));
+        QCOMPARE(loader.mesh(), shape);
+        QVERIFY(document.scene().object.meshPath.isEmpty());
+    }
+
+    void missingFileAndDirectory()
+    {
+        SceneDocument document;
+        ObjectLoader loader(&document);
+        QVERIFY(load(loader, m_dir.filePath("nowhere.obj")).message.contains("no such file"));
+        QVERIFY(load(loader, m_dir.path()).message.contains("not a file"));
+    }
+
+    void notANumberPositionsLoadWithARemark()
+    {
+        const QString path = m_dir.filePath("nan.obj");
+        write(path, "v 0 0 0\nv 1 0 0\nv 0 1 0\nv nan 0 0\nf 1 2 3\nf 1 2 4\n");
+        const ImportResult r = ImportProcess::import(path);
+        QVERIFY2(r.ok(), qPrintable(r.error));
+        for (const glm::vec3 &p : r.file->mesh->positions)
+            QVERIFY(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z));
+        QVERIFY(r.file->remarks().join(' ').contains("not numbers"));
+    }
+
+    void materialAndTextureComeAlong()
+    {
+        QImage texture(4, 4, QImage::Format_RGB32);
+        texture.fill(QColor(10, 200, 30));
+        QVERIFY(texture.save(m_dir.filePath("green.png")));
+        write(m_dir.filePath("quad.mtl"), "newmtl paint\nKa 0.1 0.1 0.1\nKd 0.2 0.4 0.6\n"
+                                          "Ks 0.5 0.5 0.5\nNs 50\nmap_Kd green.png\n");
+        write(m_dir.filePath("quad.obj"), "mtllib quad.mtl\nv -1 -1 0\nv 1 -1 0\nv 1 1 0\n"
+                                          "v -1 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
+                                          "usemtl paint\nf 1/1 2/2 3/3\nf 1/1 3/3 4/4\n");
+        SceneDocument document;
+        document.edit([](Scene &s) { s.object.adoptFileMaterial = true; });
+        ObjectLoader loader(&document);
+        const Outcome o = load(loader, m_dir.filePath("quad.obj"));
+        QVERIFY2(o.ok, qPrintable(o.message));
+        const Material &m = document.scene().material;
+        QVERIFY(glm::all(
+            glm::lessThan(glm::abs(m.kd - glm::vec3(0.2f, 0.4f, 0.6f)), glm::vec3(1e-5f))));
+        QCOMPARE(m.shininess, 50.0f);
+        QVERIFY(loader.texture());
+        const glm::vec3 texel = loader.texture()->sample({0.5f, 0.5f});
+        QVERIFY(std::abs(texel.g - 200.0f / 255.0f) < 1e-3f);
+        QVERIFY(!loader.file()->hasNormals()); // none in the file: generated
+        QCOMPARE(loader.mesh()->normals.size(), loader.mesh()->vertexCount());
+
+        // The texture gone: the mesh still loads, the message says what is missing.
+        QFile::remove(m_dir.filePath("green.png"));
+        const Outcome again = load(loader, m_dir.filePath("quad.obj"));
+        QVERIFY(again.ok);
+        QVERIFY2(again.message.contains("green.png' not found"), qPrintable(again.message));
+    }
+
+    void normalsSwitchWithoutReloading()
+    {
+        SceneDocument document;
+        ObjectLoader loader(&document);
+        QVERIFY(load(loader, kCorpus + "/PLY/cube.ply").ok);
+        const MeshFile *file = loader.file();
+        QSignalSpy started(&loader, &ObjectLoader::loadStarted);
+        for (NormalMode mode : {NormalMode::Flat, NormalMode::Smooth, NormalMode::File}) {
+            const auto before = loader.mesh();
+            document.edit([mode](Scene &s) {
+                s.object.normals = mode;
+                s.object.creaseDegrees = 180.0f;
+            });
+            QTRY_VERIFY(loader.mesh() != before || mode == NormalMode::File);
+        }
+        QCOMPARE(loader.file(), file);
+        QCOMPARE(started.count(), 0); // the helper was not asked again
+    }
+
+    void helperThatCrashes()
+    {
+        HelperOverride helper(fakeHelper(m_dir, "crash.sh", "kill -SEGV $$"));
+        const ImportResult r = ImportProcess::import(kCorpus + "/PLY/cube.ply");
+        QVERIFY(!r.ok());
+        QVERIFY2(r.error.contains("crashed") && r.error.contains("segmentation"),
+                 qPrintable(r.error));
+    }
+
+    void helperThatWritesNonsense()
+    {
+        HelperOverride helper(fakeHelper(m_dir, "chatty.sh", "echo 'loading, please wait...'"));
+        const ImportResult r = ImportProcess::import(kCorpus + "/PLY/cube.ply");
+        QVERIFY(!r.ok());
+        QVERIFY2(r.error.contains("not a mesh stream"), qPrintable(r.error));
+    }
+
+    void helperThatIsMissing()
+    {
+        HelperOverride helper(m_dir.filePath("no-such-helper"));
+        const ImportResult r = ImportProcess::import(kCorpus + "/PLY/cube.ply");
+        QVERIFY(!r.ok());
+        QVERIFY2(r.error.contains("cannot start the import helper"), qPrintable(r.error));
+    }
+
+    void helperThatHangsMeetsTheTimeLimit()
+    {
+        HelperOverride helper(fakeHelper(m_dir, "hang.sh", "exec sleep 600"));
+        ImportLimits limits;
+        limits.seconds = 1;
+        QElapsedTimer clock;
+        clock.start();
+        const ImportResult r = ImportProcess::import(kCorpus + "/PLY/cube.ply", limits);
+        QVERIFY(!r.ok());
+        QVERIFY2(r.error.contains("gave up after 1 s"), qPrintable(r.error));
+        QVERIFY(clock.elapsed() < 5000);
+    }
+
+    void cancelStopsTheHelper()
+    {
+        HelperOverride helper(fakeHelper(m_dir, "slow.sh", "exec sleep 600"));
+        SceneDocument document;
+        ObjectLoader loader(&document);
+        QSignalSpy finished(&loader, &ObjectLoader::loadFinished);
+        loader.open(kCorpus + "/PLY/cube.ply");
+        QTRY_VERIFY(loader.helperPid() > 0);
+        const qint64 pid = loader.helperPid();
+        QVERIFY(processExists(pid));
+        loader.cancel();
+        QTRY_COMPARE(finished.count(), 1);
+        QCOMPARE(finished.first()[0].toBool(), false);
+        QVERIFY(finished.first()[1].toString().contains("cancelled"));
+        QVERIFY(!loader.isLoading());
+        QTRY_VERIFY(!processExists(pid));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestImport)
+#include "test_import.moc"

@@ -1,0 +1,183 @@
+// The workbench's side of the import stream: whatever the helper writes (a whole mesh,
+// a stream cut anywhere, flipped bytes, lying sizes), the reader gives a checked mesh or an
+// error, never a crash or an index past the last vertex.
+#include "import/wire.h"
+#include "import/wire_reader.h"
+
+#include <QRandomGenerator>
+#include <QTest>
+
+#include <cstring>
+
+using namespace lb;
+
+namespace {
+
+template <typename T> void append(QByteArray &bytes, const T &value)
+{
+    bytes.append(reinterpret_cast<const char *>(&value), sizeof value);
+}
+
+void record(QByteArray &bytes, wire::Record type, const QByteArray &payload)
+{
+    wire::RecordHeader h;
+    h.type = std::uint32_t(type);
+    h.size = std::uint64_t(payload.size());
+    append(bytes, h);
+    bytes += payload;
+}
+
+// A two-triangle quad with normals, as the helper writes it.
+QByteArray quadStream(std::uint32_t badIndex = 0)
+{
+    QByteArray mesh;
+    wire::MeshHeader h;
+    h.vertexCount = 4;
+    h.indexCount = 6;
+    h.flags = wire::kHasNormals;
+    append(mesh, h);
+    const float positions[12] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
+    const float normals[12] = {0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1};
+    const std::uint32_t indices[6] = {0, 1, 2, 0, 2, badIndex ? badIndex : 3};
+    mesh.append(reinterpret_cast<const char *>(positions), sizeof positions);
+    mesh.append(reinterpret_cast<const char *>(normals), sizeof normals);
+    mesh.append(reinterpret_cast<const char *>(indices), sizeof indices);
+
+    QByteArray s(wire::kMagic, sizeof wire::kMagic);
+    QByteArray progress;
+    append(progress, 0.5f);
+    progress += "reading";
+    record(s, wire::Record::Progress, progress);
+    record(s, wire::Record::Mesh, mesh);
+    record(s, wire::Record::Info, "meshes=1\nseconds=0.01\n");
+    record(s, wire::Record::End, {});
+    return s;
+}
+
+} // namespace
+
+class TestWireReader : public QObject
+{
+    Q_OBJECT
+private slots:
+    void readsAWholeStream()
+    {
+        WireReader r;
+        double lastProgress = -1;
+        r.onProgress = [&](double f, const QString &) { lastProgress = f; };
+        QVERIFY(r.feed(quadStream().constData(), quadStream().size()));
+        QVERIFY(r.complete());
+        QCOMPARE(lastProgress, 1.0); // the mesh arrived in full
+        QCOMPARE(r.info().value("meshes"), QString("1"));
+        const Mesh m = r.takeMesh();
+        QCOMPARE(m.vertexCount(), std::size_t(4));
+        QCOMPARE(m.indices, (std::vector<std::uint32_t>{0, 1, 2, 0, 2, 3}));
+        QCOMPARE(m.normals.size(), std::size_t(4));
+        QVERIFY(m.colors.empty() && m.uvs.empty());
+        QCOMPARE(m.positions[2], glm::vec3(1, 1, 0));
+    }
+
+    void readsByteByByte()
+    {
+        const QByteArray s = quadStream();
+        WireReader r;
+        for (char c : s)
+            QVERIFY(r.feed(&c, 1));
+        QVERIFY(r.complete());
+        QCOMPARE(r.takeMesh().triangleCount(), std::size_t(2));
+    }
+
+    void aStreamCutAnywhereIsNeverComplete()
+    {
+        const QByteArray s = quadStream();
+        for (int cut = 0; cut < s.size(); ++cut) {
+            WireReader r;
+            r.feed(s.constData(), cut);
+            QVERIFY2(!r.complete(), qPrintable(QString("cut at %1").arg(cut)));
+        }
+    }
+
+    void refusesAnIndexPastTheLastVertex()
+    {
+        WireReader r;
+        const QByteArray s = quadStream(4);
+        QVERIFY(!r.feed(s.constData(), s.size()));
+        QVERIFY(r.malformed());
+        QVERIFY2(r.error().contains("index"), qPrintable(r.error()));
+    }
+
+    void refusesSizesThatDontAddUp()
+    {
+        // A vertex count the payload cannot hold, and one of 2^40 (must fail before
+        // allocating anything).
+        for (std::uint64_t vertices : {std::uint64_t(5), std::uint64_t(1) << 40}) {
+            QByteArray s = quadStream();
+            // magic, progress record (header, float, "reading"), mesh record header
+            const int at = int(sizeof wire::kMagic) + int(sizeof(wire::RecordHeader)) + 4 + 7 +
+                           int(sizeof(wire::RecordHeader));
+            std::memcpy(s.data() + at, &vertices, sizeof vertices);
+            WireReader r;
+            QVERIFY(!r.feed(s.constData(), s.size()));
+            QVERIFY2(r.error().contains("don't add up"), qPrintable(r.error()));
+        }
+    }
+
+    void refusesOtherStreams()
+    {
+        const QByteArray notAStream = "hello, I am a helper gone wrong\n";
+        WireReader r;
+        QVERIFY(!r.feed(notAStream.constData(), notAStream.size()));
+        QVERIFY(r.error().contains("not a mesh stream"));
+
+        QByteArray twoMeshes = quadStream();
+        twoMeshes.chop(int(sizeof(wire::RecordHeader))); // drop End, add the mesh again
+        const QByteArray again = quadStream();
+        twoMeshes += again.mid(int(sizeof wire::kMagic));
+        WireReader r2;
+        QVERIFY(!r2.feed(twoMeshes.constData(), twoMeshes.size()));
+
+        QByteArray unknown(wire::kMagic, sizeof wire::kMagic);
+        record(unknown, wire::Record(99), "x");
+        WireReader r3;
+        QVERIFY(!r3.feed(unknown.constData(), unknown.size()));
+        QVERIFY(r3.error().contains("unknown"));
+
+        QByteArray endWithoutMesh(wire::kMagic, sizeof wire::kMagic);
+        record(endWithoutMesh, wire::Record::End, {});
+        WireReader r4;
+        QVERIFY(!r4.feed(endWithoutMesh.constData(), endWithoutMesh.size()));
+    }
+
+    void passesTheHelpersErrorOn()
+    {
+        QByteArray s(wire::kMagic, sizeof wire::kMagic);
+        record(s, wire::Record::Error, "PLY: unexpected end of file");
+        WireReader r;
+        QVERIFY(!r.feed(s.constData(), s.size()));
+        QVERIFY(!r.malformed());
+        QCOMPARE(r.error(), QString("PLY: unexpected end of file"));
+    }
+
+    void flippedBytesNeverGiveABadMesh()
+    {
+        const QByteArray good = quadStream();
+        QRandomGenerator random(1234);
+        for (int round = 0; round < 5000; ++round) {
+            QByteArray s = good;
+            const int flips = 1 + int(random.bounded(4));
+            for (int i = 0; i < flips; ++i)
+                s[int(random.bounded(s.size()))] = char(random.bounded(256));
+            WireReader r;
+            r.feed(s.constData(), s.size());
+            if (!r.complete())
+                continue;
+            const Mesh m = r.takeMesh();
+            for (std::uint32_t index : m.indices)
+                QVERIFY(index < m.vertexCount());
+            QCOMPARE(m.indices.size() % 3, std::size_t(0));
+        }
+    }
+};
+
+QTEST_APPLESS_MAIN(TestWireReader)
+#include "test_wire_reader.moc"
