@@ -7,12 +7,15 @@ XVFB_SCREEN="-screen 0 1920x1080x24"
 
 # qt6-qpa-plugins holds the xcb platform; xvfb + xauth + Mesa give OpenGL without a display.
 PACKAGES=(cmake g++ make qt6-base-dev libqt6opengl6-dev qt6-qpa-plugins libglm-dev
-          libqscintilla2-qt6-dev
+          libqscintilla2-qt6-dev libassimp-dev
           xvfb xauth libgl1-mesa-dri fonts-dejavu-core)
+# Only the tests need these: Debian's corpus of ~600 model files, valid and broken.
+TEST_PACKAGES=(assimp-testmodels)
 
+# ensure_packages [EXTRA...]: installs whatever of PACKAGES and EXTRA is missing.
 ensure_packages() {
     local missing=()
-    for p in "${PACKAGES[@]}"; do
+    for p in "${PACKAGES[@]}" "$@"; do
         dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "ok installed" || missing+=("$p")
     done
     [[ ${#missing[@]} -eq 0 ]] && return 0

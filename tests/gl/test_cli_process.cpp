@@ -71,6 +71,50 @@ private slots:
         QTest::newRow("size 0") << QStringList{"--size", "0x0"} << "--size";
         QTest::newRow("size 100000") << QStringList{"--size", "100000x10"} << "--size";
         QTest::newRow("unknown option") << QStringList{"--frobnicate"} << "frobnicate";
+        QTest::newRow("crease 200") << QStringList{"--crease-angle", "200"} << "--crease-angle";
+        QTest::newRow("normals word") << QStringList{"--normals", "wobbly"} << "--normals";
+        QTest::newRow("mesh and shape")
+            << QStringList{"--mesh", "a.obj", "--shape", "cube"} << "--shape";
+        QTest::newRow("memory 0") << QStringList{"--import-memory-limit", "0"}
+                                  << "--import-memory-limit";
+    }
+
+    void meshFileRendersAndProbes()
+    {
+        const QString png = m_dir.filePath("mesh.png");
+        const Run r = run({"--mesh", "/usr/share/assimp/models/PLY/cube.ply", "--render", png,
+                           "--size", "200x150", "--probe", "100,75", "--show-light", "off"});
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        QCOMPARE(QImage(png).size(), QSize(200, 150));
+        const QJsonObject o = QJsonDocument::fromJson(r.out).object();
+        QVERIFY(o["hit"].toBool());
+        QVERIFY(o["maxDifference"].toInt() <= 2);
+    }
+
+    void meshThatCannotLoadExitsWithOne_data()
+    {
+        QTest::addColumn<QStringList>("args");
+        QTest::addColumn<QString>("message");
+        const QString models = "/usr/share/assimp/models/";
+        QTest::newRow("missing") << QStringList{"--mesh", "/nowhere/teapot.obj"}
+                                 << "/nowhere/teapot.obj: no such file";
+        QTest::newRow("350 billion vertices")
+            << QStringList{"--mesh", models + "invalid/OutOfMemory.off", "--import-memory-limit",
+                           "300"}
+            << "out of memory: reading this file needs more than the import memory limit (300 MB)";
+        QTest::newRow("malformed") << QStringList{"--mesh", models + "invalid/malformed.obj"}
+                                   << "malformed.obj: OBJ: Invalid face index.";
+    }
+
+    void meshThatCannotLoadExitsWithOne()
+    {
+        QFETCH(QStringList, args);
+        QFETCH(QString, message);
+        const QString png = m_dir.filePath("never.png");
+        const Run r = run(args + QStringList{"--render", png});
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.err.contains(message.toUtf8()), r.err.constData());
+        QVERIFY(!QFile::exists(png));
     }
 
     void badValuesExitWithCode2AndOneLine()

@@ -1,0 +1,136 @@
+// Mesh files drawn by the built-in shaders, pixel by pixel against the CPU reference: the
+// file's own normals, generated smooth and flat ones, node transforms and the fit to the view,
+// the file's diffuse texture; and the normal lines.
+#include "import/import_process.h"
+#include "reference_compare.h"
+
+#include <QFile>
+#include <QGuiApplication>
+#include <QTemporaryDir>
+#include <QTest>
+
+using namespace lb;
+using namespace lb::test;
+
+namespace {
+const QString kCorpus = "/usr/share/assimp/models";
+}
+
+class TestMeshFiles : public QObject
+{
+    Q_OBJECT
+private:
+    OffscreenRenderer m_offscreen;
+    QTemporaryDir m_dir;
+
+    Scene sceneWith(const QString &path)
+    {
+        const ImportResult r = ImportProcess::import(path);
+        if (!r.ok())
+            qFatal("%s", qPrintable(r.error));
+        m_offscreen.setMeshFile(r.file);
+        Scene s = testScene();
+        s.object.meshPath = r.file->path;
+        return s;
+    }
+
+private slots:
+    void initTestCase()
+    {
+        const QString error = m_offscreen.initialize(kSize);
+        QVERIFY2(error.isEmpty(), qPrintable(error));
+        QVERIFY(m_dir.isValid());
+    }
+
+    void filesMatchTheReference_data()
+    {
+        QTest::addColumn<QString>("file");
+        QTest::addColumn<int>("normals");
+        QTest::addColumn<int>("shading");
+        QTest::addColumn<int>("minCompared");
+        const std::pair<const char *, int> files[] = {
+            {"PLY/cube.ply", 400},
+            {"OBJ/WusonOBJ.obj", 25},
+            {"glTF2/BoxTextured-glTF/BoxTextured.gltf", 400}};
+        for (const auto &[file, minCompared] : files)
+            for (int n = 0; n < 3; ++n)
+                for (int sh = 0; sh < 2; ++sh)
+                    QTest::newRow(qPrintable(
+                        QString("%1 %2 %3").arg(file, toName(NormalMode(n)), toName(Shading(sh)))))
+                        << QString(file) << n << sh << minCompared;
+    }
+
+    void filesMatchTheReference()
+    {
+        QFETCH(QString, file);
+        QFETCH(int, normals);
+        QFETCH(int, shading);
+        QFETCH(int, minCompared);
+        Scene s = sceneWith(kCorpus + "/" + file);
+        s.object.normals = NormalMode(normals);
+        s.shading.shading = Shading(shading);
+        s.light.position = glm::vec4(1.0f, 2.0f, 3.0f, 1.0f);
+        s.material.shininess = 10;
+        const QString failure =
+            checkAgainstReference(m_offscreen, s, QTest::currentDataTag(), minCompared, 0);
+        QVERIFY2(failure.isEmpty(), qPrintable(failure));
+    }
+
+    void theFilesTextureMatchesTheReference()
+    {
+        // A quad in front of the camera with a 2x2 texture of four colours, bilinear between.
+        QImage texture(2, 2, QImage::Format_RGB32);
+        texture.setPixelColor(0, 0, QColor(250, 40, 40));
+        texture.setPixelColor(1, 0, QColor(40, 250, 40));
+        texture.setPixelColor(0, 1, QColor(40, 40, 250));
+        texture.setPixelColor(1, 1, QColor(250, 250, 40));
+        QVERIFY(texture.save(m_dir.filePath("four.png")));
+        QFile mtl(m_dir.filePath("quad.mtl"));
+        QVERIFY(mtl.open(QIODevice::WriteOnly));
+        mtl.write("newmtl four\nKd 1 1 1\nmap_Kd four.png\n");
+        mtl.close();
+        QFile obj(m_dir.filePath("quad.obj"));
+        QVERIFY(obj.open(QIODevice::WriteOnly));
+        obj.write("mtllib quad.mtl\nv -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\n"
+                  "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nvn 0 0 1\nusemtl four\n"
+                  "f 1/1/1 2/2/1 3/3/1\nf 1/1/1 3/3/1 4/4/1\n");
+        obj.close();
+        Scene s = sceneWith(m_dir.filePath("quad.obj"));
+        s.object.rotationDegrees = glm::vec3(0.0f);
+        s.object.scale = glm::vec3(1.0f);
+        s.camera.yawDegrees = s.camera.pitchDegrees = 0.0f;
+        s.shading.texture = true;
+        const QString failure = checkAgainstReference(m_offscreen, s, "textured quad", 400, 0);
+        QVERIFY2(failure.isEmpty(), qPrintable(failure));
+        QCOMPARE(m_offscreen.renderer().texture().image().width(), 2); // the file's, no checker
+        // Top left of the picture is the image's top left (t = 1 is the top row of the file).
+        const QImage frame = m_offscreen.render(s);
+        const QRgb topLeft = frame.pixel(kSize.width() / 2 - 60, kSize.height() / 2 - 60);
+        QVERIFY2(qRed(topLeft) > qGreen(topLeft) && qRed(topLeft) > qBlue(topLeft),
+                 qPrintable(QString::number(topLeft, 16)));
+    }
+
+    void normalLinesAreDrawnWhenAsked()
+    {
+        Scene s = sceneWith(kCorpus + "/PLY/cube.ply");
+        auto yellowish = [](const QImage &img) {
+            int n = 0;
+            for (int y = 0; y < img.height(); ++y)
+                for (int x = 0; x < img.width(); ++x) {
+                    const QRgb p = img.pixel(x, y);
+                    n += qRed(p) > 200 && qGreen(p) > 160 && qBlue(p) < 90;
+                }
+            return n;
+        };
+        s.material.kd = s.material.ka = glm::vec3(0.2f, 0.2f, 0.8f); // a blue cube
+        s.object.showNormals = false;
+        const int without = yellowish(m_offscreen.render(s));
+        s.object.showNormals = true;
+        const int with = yellowish(m_offscreen.render(s));
+        QCOMPARE(without, 0);
+        QVERIFY2(with > 20, qPrintable(QString::number(with)));
+    }
+};
+
+QTEST_MAIN(TestMeshFiles)
+#include "test_mesh_files.moc"
