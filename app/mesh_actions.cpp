@@ -125,7 +125,6 @@ void MeshActions::finished(bool ok, const QString &message)
     if (ok) {
         m_recent->add(m_pendingPath);
         m_summary->setText(message);
-        m_window->statusBar()->showMessage(tr("Loaded %1").arg(message), 5000);
         return;
     }
     if (message == tr("Loading cancelled")) {

@@ -366,7 +366,7 @@ void Renderer::drawNormals(const Scene &scene, const Frames &frames)
     glUniformMatrix4fv(uniformLocation(m_normals, "mProjection"), 1, GL_FALSE,
                        glm::value_ptr(frames.projection));
     const glm::vec3 &s = scene.object.scale;
-    glUniform1f(uniformLocation(m_normals, "uLineLength"), 0.08f * (s.x + s.y + s.z) / 3.0f);
+    glUniform1f(uniformLocation(m_normals, "uLineLength"), 0.05f * (s.x + s.y + s.z) / 3.0f);
     glUniform3fv(uniformLocation(m_normals, "uColor"), 1, glm::value_ptr(lineColour));
     m_object.normalLines.bind();
     glDrawArraysInstanced(GL_LINES, 0, 2, m_object.vertexCount);

@@ -32,12 +32,14 @@ void LoadProgress::start(const QString &name)
 {
     m_name = name;
     m_label->setText(tr("Loading %1...").arg(name));
+    m_bar->setRange(0, 0); // busy until the helper reports how far it is
     m_bar->setValue(0);
     m_showTimer.start();
 }
 
 void LoadProgress::setProgress(double fraction, const QString &stage)
 {
+    m_bar->setRange(0, 1000);
     m_bar->setValue(int(fraction * 1000.0));
     m_label->setText(tr("Loading %1: %2").arg(m_name, stage));
 }

@@ -50,9 +50,9 @@ ShadingPanel::ShadingPanel(SceneDocument *document, QWidget *parent) : ScenePane
     m_vertexColors = makeCheck(tr("Vertex colours"),
                                tr("Multiply ambient and diffuse by the vertex colour (vColor)"),
                                &ShadingSettings::vertexColors);
-    m_texture = makeCheck(tr("Checker texture"),
-                          tr("uEnableTexture: multiply ambient and diffuse by the checker "
-                             "texture (uSampler)"),
+    m_texture = makeCheck(tr("Texture"),
+                          tr("uEnableTexture: multiply ambient and diffuse by the texture "
+                             "(uSampler): the mesh file's diffuse texture, or the checker"),
                           &ShadingSettings::texture);
     feeds(m_lighting, {Semantic::EnableLighting}, "uEnableLighting");
     feeds(m_vertexColors, {Semantic::EnableVertexColor}, "uEnableVertexColor");
