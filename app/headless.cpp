@@ -11,6 +11,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include <sys/resource.h>
+
 namespace lb {
 
 namespace {
@@ -143,6 +145,13 @@ int runHeadless(const CommandLine &cl, const Scene &requested)
         o["fps"] = double(cl.benchFrames) / seconds;
         o["triangles"] = qint64(mesh.triangleCount());
         o["size"] = QString("%1x%2").arg(cl.size.width()).arg(cl.size.height());
+        rusage usage{};
+        getrusage(RUSAGE_SELF, &usage);
+        o["peakMB"] = double(usage.ru_maxrss) / 1024.0; // this process, not the helper
+        if (imported.ok()) {
+            o["loadSeconds"] = imported.file->seconds;
+            o["helperPeakMB"] = double(imported.file->helperPeakKB) / 1024.0;
+        }
         printLine(QJsonDocument(o).toJson(QJsonDocument::Compact), stdout);
     }
 
