@@ -3,11 +3,11 @@
 // must be. A ray through the pixel's centre finds the triangle; its barycentric weights are
 // the perspective-correct ones, so Gouraud's interpolation can be repeated on the CPU.
 
-#include "texture.h"
 #include "frames.h"
 #include "lighting.h"
 #include "mesh.h"
 #include "scene.h"
+#include "texture.h"
 
 #include <QPointF>
 #include <QSize>
@@ -30,7 +30,7 @@ LightingInputs lightingInputs(const Scene &scene, const Frames &frames);
 
 // `pixel` is in framebuffer pixels from the top-left corner; (x + 0.5, y + 0.5) is the centre
 // GL samples. The frame is `size` pixels large.
-ProbeResult probePixel(const Scene &scene, const Mesh &mesh, const Texture &texture,
-                       QSize size, QPoint pixel);
+ProbeResult probePixel(const Scene &scene, const Mesh &mesh, const Texture &texture, QSize size,
+                       QPoint pixel);
 
 } // namespace lb
