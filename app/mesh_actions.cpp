@@ -9,6 +9,7 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QLabel>
+#include <QLocale>
 #include <QMainWindow>
 #include <QMenu>
 #include <QMessageBox>
@@ -84,6 +85,24 @@ void MeshActions::addToMenus(QMenu *file, QMenu *edit, QMenu *view)
     normals->setShortcut(QKeySequence(tr("N")));
 }
 
+void MeshActions::showSummary()
+{
+    // The status bar gets the short form, so the program's line beside it stays readable;
+    // the whole summary (vertices, what was skipped) is the tooltip.
+    const std::shared_ptr<const Mesh> mesh = m_loader->mesh();
+    if (!mesh)
+        return;
+    const MeshFile *file = m_loader->file();
+    QString shortForm =
+        tr("%1: %2 triangles")
+            .arg(file ? QFileInfo(file->path).fileName() : toName(m_document->scene().object.shape),
+                 QLocale().toString(qulonglong(mesh->triangleCount())));
+    if (file)
+        shortForm += tr(", %1 s").arg(file->seconds, 0, 'f', 2);
+    m_summary->setText(shortForm);
+    m_summary->setToolTip(m_loader->summary());
+}
+
 QString MeshActions::fileFilter() const
 {
     const QStringList patterns = ImportProcess::filePatterns();
@@ -124,7 +143,7 @@ void MeshActions::finished(bool ok, const QString &message)
     m_progress->stop();
     if (ok) {
         m_recent->add(m_pendingPath);
-        m_summary->setText(message);
+        showSummary();
         return;
     }
     if (message == tr("Loading cancelled")) {

@@ -48,6 +48,7 @@ protected:
 
 private:
     void finished(bool ok, const QString &message);
+    void showSummary();
     QString fileFilter() const;
 
     QMainWindow *m_window;

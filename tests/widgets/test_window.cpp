@@ -494,7 +494,7 @@ private slots:
         QVERIFY2(ok, qPrintable(message));
         QCOMPARE(scene().object.meshPath, kCube);
         QVERIFY(imageDifference(sphere, frame()) > 10);
-        const QString summary = m_window->meshActions()->summaryLabel()->text();
+        const QString summary = m_window->meshActions()->summaryLabel()->toolTip();
         QVERIFY2(summary.startsWith("cube.ply: ") && summary.contains("triangles") &&
                      summary.contains("loaded in"),
                  qPrintable(summary));
