@@ -41,6 +41,7 @@ ObjectLoader::ObjectLoader(SceneDocument *document, QObject *parent)
                 emit loadProgress(0.9 * fraction, stage); // the build takes the last tenth
             });
     connect(&m_import, &ImportProcess::finished, this, &ObjectLoader::imported);
+    m_adopting = document->scene().object.adoptFileMaterial;
     sync();
 }
 
@@ -115,6 +116,14 @@ void ObjectLoader::imported(const ImportResult &result)
 
 void ObjectLoader::sync()
 {
+    // Ticking "Use the mesh file's material" with a file on screen takes its material now.
+    const bool adopt = m_document->scene().object.adoptFileMaterial;
+    if (adopt && !m_adopting && m_file && m_file->path == m_document->scene().object.meshPath) {
+        m_adopting = adopt;
+        const FileMaterial material = m_file->material;
+        m_document->edit([&](Scene &s) { s.material = adoptMaterial(s.material, material); });
+    }
+    m_adopting = adopt;
     if (m_job)
         return; // one build at a time; finishBuild() syncs again with the newest scene
     const ObjectSettings &object = m_document->scene().object;

@@ -73,6 +73,7 @@ private:
     QThreadPool m_pool;
     std::shared_ptr<Job> m_job; // the build in flight; one at a time
     bool m_loading = false;
+    bool m_adopting = false; // the scene's adoptFileMaterial as last seen
     QString m_loadingPath;
     std::shared_ptr<const MeshFile> m_file;
     std::shared_ptr<const Mesh> m_mesh;

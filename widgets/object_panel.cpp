@@ -71,9 +71,9 @@ ObjectPanel::ObjectPanel(SceneDocument *document, QWidget *parent) : ScenePanel(
             [this](bool on) { edit([&](Scene &s) { s.object.showNormals = on; }); });
     form->addRow(m_showNormals);
     m_adoptMaterial = new QCheckBox(tr("Use the mesh file's material"), this);
-    m_adoptMaterial->setToolTip(tr("When a mesh file is loaded, its ambient, diffuse and "
-                                   "specular colours and shininess replace Ka, Kd, Ks and "
-                                   "shininess"));
+    m_adoptMaterial->setToolTip(tr("The mesh file's ambient, diffuse and specular colours "
+                                   "and shininess replace Ka, Kd, Ks and shininess: now, and "
+                                   "whenever a file is loaded"));
     connect(m_adoptMaterial, &QCheckBox::toggled, this,
             [this](bool on) { edit([&](Scene &s) { s.object.adoptFileMaterial = on; }); });
     form->addRow(m_adoptMaterial);

@@ -243,6 +243,14 @@ private slots:
         QVERIFY(!loader.file()->hasNormals()); // none in the file: generated
         QCOMPARE(loader.mesh()->normals.size(), loader.mesh()->vertexCount());
 
+        // Ticked after the load, the option takes the file's material at once.
+        document.edit([](Scene &s) {
+            s.object.adoptFileMaterial = false;
+            s.material = Material{};
+        });
+        document.edit([](Scene &s) { s.object.adoptFileMaterial = true; });
+        QCOMPARE(document.scene().material.shininess, 50.0f);
+
         // The texture gone: the mesh still loads, the message says what is missing.
         QFile::remove(m_dir.filePath("green.png"));
         const Outcome again = load(loader, m_dir.filePath("quad.obj"));
