@@ -152,6 +152,22 @@ Mesh makeShape(Shape shape, int tessellation)
     return makeSphere(tessellation, tessellation / 2);
 }
 
+std::size_t shapeTriangleCount(Shape shape, int tessellation)
+{
+    const std::size_t t = std::size_t(std::max(tessellation, 3));
+    switch (shape) {
+    case Shape::Cube:
+        return 12;
+    case Shape::Sphere:
+        return 2 * t * std::max<std::size_t>(2, t / 2); // the grid's quads, poles included
+    case Shape::Torus:
+        return 2 * (2 * t) * t;
+    case Shape::Plane:
+        return 2 * t * t;
+    }
+    return 0;
+}
+
 Mesh makeArrow(int segments)
 {
     Mesh mesh;

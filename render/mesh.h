@@ -34,6 +34,8 @@ Mesh makeTorus(int ringSegments, int tubeSegments, float major = 0.7f, float min
 Mesh makePlane(int divisions);
 // The object panel's shape at the given tessellation (the cube ignores it).
 Mesh makeShape(Shape shape, int tessellation);
+// How many triangles makeShape() makes, without making them.
+std::size_t shapeTriangleCount(Shape shape, int tessellation);
 // Arrow of length 1 from the origin along +Z (shaft and cone), for a directional light.
 Mesh makeArrow(int segments);
 

@@ -11,24 +11,6 @@ namespace {
 // is on screen in the same frame.
 constexpr std::size_t kBuildInlineTriangles = 100'000;
 
-std::size_t triangleEstimate(const ObjectSettings &object, const MeshFile *file)
-{
-    if (file)
-        return file->mesh->triangleCount();
-    const std::size_t t = std::size_t(object.tessellation);
-    switch (object.shape) {
-    case Shape::Cube:
-        return 12;
-    case Shape::Sphere:
-        return t * t;
-    case Shape::Torus:
-        return 4 * t * t;
-    case Shape::Plane:
-        return 2 * t * t;
-    }
-    return t * t;
-}
-
 } // namespace
 
 ObjectLoader::ObjectLoader(SceneDocument *document, QObject *parent)
@@ -158,7 +140,9 @@ void ObjectLoader::startBuild(const ObjectSettings &object, std::shared_ptr<cons
     job->key = objectMeshKey(object, job->file.get());
     job->commit = commit;
     m_job = job;
-    if (triangleEstimate(object, job->file.get()) <= kBuildInlineTriangles) {
+    const std::size_t triangles = job->file ? job->file->mesh->triangleCount()
+                                            : shapeTriangleCount(object.shape, object.tessellation);
+    if (triangles <= kBuildInlineTriangles) {
         job->mesh = buildObjectMesh(job->object, job->file.get());
         finishBuild(job);
         return;

@@ -4,6 +4,14 @@
 
 namespace lb {
 
+namespace {
+// Flat normals are smooth ones that stop at every edge.
+float creaseOf(const ObjectSettings &object)
+{
+    return object.normals == NormalMode::Flat ? 0.0f : object.creaseDegrees;
+}
+} // namespace
+
 bool ObjectMeshKey::operator==(const ObjectMeshKey &o) const
 {
     return shape == o.shape && tessellation == o.tessellation && meshPath == o.meshPath &&
@@ -20,7 +28,7 @@ ObjectMeshKey objectMeshKey(const ObjectSettings &object, const MeshFile *file)
         key.tessellation = object.shape == Shape::Cube ? 0 : object.tessellation;
     }
     key.normals = object.normals;
-    key.creaseDegrees = object.normals == NormalMode::Flat ? 0.0f : object.creaseDegrees;
+    key.creaseDegrees = creaseOf(object);
     return key;
 }
 
@@ -32,8 +40,7 @@ std::shared_ptr<const Mesh> buildObjectMesh(const ObjectSettings &object, const 
              : std::make_shared<const Mesh>(makeShape(object.shape, object.tessellation));
     if (object.normals == NormalMode::File && !base->normals.empty())
         return base;
-    const float crease = object.normals == NormalMode::Flat ? 0.0f : object.creaseDegrees;
-    std::optional<Mesh> generated = withGeneratedNormals(*base, crease, cancel);
+    std::optional<Mesh> generated = withGeneratedNormals(*base, creaseOf(object), cancel);
     if (!generated)
         return nullptr;
     return std::make_shared<const Mesh>(std::move(*generated));

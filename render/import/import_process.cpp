@@ -81,8 +81,7 @@ ImportProcess::ImportProcess(QObject *parent) : QObject(parent)
         if (error == QProcess::FailedToStart && m_running)
             finish({nullptr,
                     QString("%1: cannot start the import helper '%2': %3")
-                        .arg(QFileInfo(m_path).fileName(), m_process.program(),
-                             m_process.errorString()),
+                        .arg(m_path, m_process.program(), m_process.errorString()),
                     false});
     });
 }

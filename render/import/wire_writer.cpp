@@ -40,18 +40,7 @@ void Writer::write(const void *data, std::size_t size)
 {
     if (size >= kBufferBytes) { // large arrays go out directly
         flush();
-        const char *p = static_cast<const char *>(data);
-        while (m_ok && size > 0) {
-            const ssize_t n = ::write(m_fd, p, size);
-            if (n < 0 && errno == EINTR)
-                continue;
-            if (n <= 0) {
-                m_ok = false;
-                break;
-            }
-            p += n;
-            size -= std::size_t(n);
-        }
+        writeAll(static_cast<const char *>(data), size);
         return;
     }
     if (m_buffer.size() + size > kBufferBytes)
@@ -62,20 +51,23 @@ void Writer::write(const void *data, std::size_t size)
 
 void Writer::flush()
 {
-    const char *p = m_buffer.data();
-    std::size_t left = m_buffer.size();
-    while (m_ok && left > 0) {
-        const ssize_t n = ::write(m_fd, p, left);
+    writeAll(m_buffer.data(), m_buffer.size());
+    m_buffer.clear();
+}
+
+void Writer::writeAll(const char *p, std::size_t size)
+{
+    while (m_ok && size > 0) {
+        const ssize_t n = ::write(m_fd, p, size);
         if (n < 0 && errno == EINTR)
             continue;
         if (n <= 0) {
-            m_ok = false;
+            m_ok = false; // the reader went away
             break;
         }
         p += n;
-        left -= std::size_t(n);
+        size -= std::size_t(n);
     }
-    m_buffer.clear();
 }
 
 } // namespace lb::wire

@@ -29,6 +29,8 @@ public:
     bool ok() const { return m_ok; }
 
 private:
+    void writeAll(const char *p, std::size_t size);
+
     int m_fd;
     bool m_ok = true;
     std::vector<char> m_buffer;

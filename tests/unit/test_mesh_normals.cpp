@@ -1,5 +1,6 @@
 // Normal generation: flat, smooth within a crease angle, across seams, on big meshes (which
-// run on several threads), and on degenerate input.
+// run on several threads), and on degenerate input; and the shapes' triangle counts, which
+// decide whether a mesh is built on a worker thread.
 #include "mesh.h"
 #include "mesh_normals.h"
 
@@ -138,6 +139,13 @@ private slots:
         for (const glm::vec3 &n : out->normals)
             QVERIFY(std::abs(glm::length(n) - 1.0f) < 1e-5f);
         QVERIFY(withGeneratedNormals(Mesh{}, 30.0f)->indices.empty());
+    }
+
+    void shapeTriangleCountsAreExact()
+    {
+        for (Shape shape : {Shape::Cube, Shape::Sphere, Shape::Torus, Shape::Plane})
+            for (int t : {3, 4, 7, 16, 101})
+                QCOMPARE(shapeTriangleCount(shape, t), makeShape(shape, t).triangleCount());
     }
 
     void cancelStops()
