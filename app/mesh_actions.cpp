@@ -59,9 +59,8 @@ MeshActions::MeshActions(QMainWindow *window, SceneDocument *document, ObjectLoa
     });
     connect(loader, &ObjectLoader::loadProgress, m_progress, &LoadProgress::setProgress);
     connect(loader, &ObjectLoader::loadFinished, this, &MeshActions::finished);
-    connect(loader, &ObjectLoader::meshReady, this,
-            [this] { m_summary->setText(m_loader->summary()); });
-    m_summary->setText(m_loader->summary());
+    connect(loader, &ObjectLoader::meshReady, this, &MeshActions::showSummary);
+    showSummary();
 
     window->setAcceptDrops(true);
     window->installEventFilter(this);

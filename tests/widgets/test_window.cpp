@@ -504,6 +504,9 @@ private slots:
         m_window->objectPanel()->shapeCombo()->setCurrentIndex(int(Shape::Torus));
         QVERIFY(scene().object.meshPath.isEmpty());
         QTRY_VERIFY(m_window->meshActions()->summaryLabel()->text().startsWith("torus: "));
+        // The status bar has the short form; the whole summary is the tooltip.
+        QVERIFY(!m_window->meshActions()->summaryLabel()->text().contains("vertices"));
+        QVERIFY(m_window->meshActions()->summaryLabel()->toolTip().contains("vertices"));
     }
 
     void badMeshKeepsThePreviousOneAndSaysWhy()
