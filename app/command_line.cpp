@@ -231,7 +231,7 @@ void parseInto(const QCommandLineParser &parser, CommandLine &cl)
     }
     if (given("frame")) {
         const LightFrame v = word("frame", value("frame"), parseLightFrame, lightFrameNames());
-        add([v](Scene &s) { s.light.frame = v; });
+        add([v](Scene &s) { s.lights[0].frame = v; });
     }
     if (given("light")) {
         const auto v = numbers("light", value("light"), 4, "X,Y,Z,W");
@@ -242,14 +242,14 @@ void parseInto(const QCommandLineParser &parser, CommandLine &cl)
         if (v[3] == 0.0f && v[0] == 0.0f && v[1] == 0.0f && v[2] == 0.0f)
             fail("light", "a directional light (W = 0) needs a non-zero direction");
         const glm::vec4 p(v[0], v[1], v[2], v[3]);
-        add([p](Scene &s) { s.light.position = p; });
+        add([p](Scene &s) { s.lights[0].position = p; });
     }
     const std::pair<const char *, glm::vec3 LightColors::*> lightColours[] = {
         {"ia", &LightColors::ia}, {"id", &LightColors::id}, {"is", &LightColors::is}};
     for (const auto &[name, member] : lightColours) {
         if (given(name)) {
             const glm::vec3 c = colourOption(name, value(name));
-            add([c, member = member](Scene &s) { s.light.colors.*member = c; });
+            add([c, member = member](Scene &s) { s.lights[0].colors.*member = c; });
         }
     }
     const std::pair<const char *, glm::vec3 Material::*> materialColours[] = {

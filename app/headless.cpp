@@ -58,7 +58,6 @@ QJsonObject probeJson(const ProbeResult &probe, const QImage &frame, QPoint pixe
     o["specularModel"] = toName(scene.shading.specular);
     if (!probe.hit)
         return o;
-    const LightingTerms &t = probe.terms;
     const QJsonArray ref = bytes(probe.reference);
     o["reference"] = ref;
     int worst = 0;
@@ -68,16 +67,28 @@ QJsonObject probeJson(const ProbeResult &probe, const QImage &frame, QPoint pixe
     o["triangle"] = qint64(probe.triangle);
     o["position"] = array(probe.position);
     o["normal"] = array(probe.normal);
-    o["L"] = array(t.L);
-    o["V"] = array(t.V);
-    o["H"] = array(t.H);
-    o["R"] = array(t.R);
-    o["NdotL"] = rounded(t.nDotL);
-    o[scene.shading.specular == SpecularModel::Blinn ? "NdotH" : "RdotV"] =
-        rounded(t.specularAngle);
-    o["ambient"] = array(t.ambient);
-    o["diffuse"] = array(t.diffuse);
-    o["specular"] = array(t.specular);
+    o["V"] = array(viewVector(probe.position, scene.shading.projection));
+    // Each enabled light's vectors and terms; the sums below are what the pixel shows.
+    QJsonArray lights;
+    for (const ProbeLight &light : probe.lights) {
+        const LightingTerms &t = light.terms;
+        QJsonObject l;
+        l["light"] = light.index + 1;
+        l["L"] = array(t.L);
+        l["H"] = array(t.H);
+        l["R"] = array(t.R);
+        l["NdotL"] = rounded(t.nDotL);
+        l[scene.shading.specular == SpecularModel::Blinn ? "NdotH" : "RdotV"] =
+            rounded(t.specularAngle);
+        l["ambient"] = array(t.ambient);
+        l["diffuse"] = array(t.diffuse);
+        l["specular"] = array(t.specular);
+        lights.append(l);
+    }
+    o["lights"] = lights;
+    o["ambient"] = array(probe.total.ambient);
+    o["diffuse"] = array(probe.total.diffuse);
+    o["specular"] = array(probe.total.specular);
     o["base"] = array(probe.base);
     return o;
 }

@@ -235,15 +235,22 @@ void MainWindow::showProgramUsage(const ProgramBuild &build)
 void MainWindow::updateStatus()
 {
     const Scene &s = m_document.scene();
-    const QString light = s.light.position.w == 0.0f ? tr("directional light") : tr("point light");
+    // One light: what it is and its frame; several: how many are on.
+    int on = 0;
+    for (const Light &l : s.lights)
+        on += l.enabled ? 1 : 0;
+    const Light &first = s.lights[0];
+    QString light = tr("%1 lights on").arg(on);
+    if (on == 1 && first.enabled)
+        light = (first.position.w == 0.0f ? tr("directional light") : tr("point light")) +
+                tr(" in the %1 frame").arg(toName(first.frame));
     QString program = tr("Program: %1").arg(m_editor->programName());
     if (m_editor->showsBuiltIn()) // the Shading panel's choices apply
         program += s.shading.specular == SpecularModel::Blinn
                        ? tr(", Blinn-Phong specular (N\u00b7H)")
                        : tr(", Phong specular (R\u00b7V)");
     statusBar()->showMessage(
-        QString("%1  |  %2 in the %3 frame  |  %4 projection")
-            .arg(program, light, toName(s.light.frame), toName(s.shading.projection)));
+        QString("%1  |  %2  |  %3 projection").arg(program, light, toName(s.shading.projection)));
 }
 
 void MainWindow::saveSettings()

@@ -54,6 +54,19 @@ glm::vec3 viewVector(const glm::vec3 &positionEye, Projection projection);
 LightingTerms evaluateLighting(const glm::vec3 &positionEye, const glm::vec3 &normalEye,
                                const LightingInputs &in);
 
+// Lights add up: the sum of the ambient, diffuse and specular terms of each light.
+struct LightingSum
+{
+    glm::vec3 ambient{0.0f}, diffuse{0.0f}, specular{0.0f};
+    LightingSum &operator+=(const LightingTerms &t)
+    {
+        ambient += t.ambient;
+        diffuse += t.diffuse;
+        specular += t.specular;
+        return *this;
+    }
+};
+
 // The colour the model gives, before the framebuffer clamps it: the base colour (vertex colour
 // and/or texture, white when off) modulates ambient and diffuse; specular is the light's own.
 glm::vec3 shadedColor(const glm::vec3 &ambientPlusDiffuse, const glm::vec3 &specular,

@@ -49,12 +49,13 @@ T interpolate(const std::vector<T> &values, const std::uint32_t *tri, const glm:
 
 } // namespace
 
-LightingInputs lightingInputs(const Scene &scene, const Frames &frames)
+LightingInputs lightingInputs(const Scene &scene, const Frames &frames, int index)
 {
+    const Light &light = scene.lights[std::size_t(index)];
     LightingInputs in;
-    in.lightEye = lightInEye(frames, scene.light.position, scene.light.frame);
+    in.lightEye = lightInEye(frames, light.position, light.frame);
     in.material = scene.material;
-    in.colors = scene.light.colors;
+    in.colors = light.colors;
     in.specular = scene.shading.specular;
     in.projection = scene.shading.projection;
     return in;
@@ -111,20 +112,28 @@ ProbeResult probePixel(const Scene &scene, const Mesh &mesh, const Texture &text
         r.base *=
             texture.sample(mesh.uvs.empty() ? glm::vec2(0.0f) : interpolate(mesh.uvs, tri, w));
 
-    const LightingInputs in = lightingInputs(scene, frames);
-    r.terms = evaluateLighting(r.position, r.normal, in);
+    for (int i = 0; i < kMaxLights; ++i) {
+        if (!scene.lights[std::size_t(i)].enabled)
+            continue;
+        ProbeLight light{i, lightingInputs(scene, frames, i), {}};
+        light.terms = evaluateLighting(r.position, r.normal, light.inputs);
+        r.total += light.terms;
+        r.lights.push_back(light);
+    }
 
     glm::vec3 colour;
     if (!scene.shading.lighting) {
         colour = unlitColor(scene.material, r.base);
     } else if (scene.shading.shading == Shading::Phong) {
-        colour = shadedColor(r.terms.ambient + r.terms.diffuse, r.terms.specular, r.base);
+        colour = shadedColor(r.total.ambient + r.total.diffuse, r.total.specular, r.base);
     } else {
         // Gouraud: the model at each vertex, interpolated over the triangle.
         glm::vec3 ambientDiffuse(0.0f), specular(0.0f);
         for (int k = 0; k < 3; ++k) {
-            const LightingTerms v =
-                evaluateLighting(eyePositions[tri[k]], eyeNormal(mesh.normals[tri[k]]), in);
+            LightingSum v;
+            for (const ProbeLight &light : r.lights)
+                v += evaluateLighting(eyePositions[tri[k]], eyeNormal(mesh.normals[tri[k]]),
+                                      light.inputs);
             ambientDiffuse += w[k] * (v.ambient + v.diffuse);
             specular += w[k] * v.specular;
         }

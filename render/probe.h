@@ -14,19 +14,29 @@
 
 namespace lb {
 
+// One enabled light's part in a probed point.
+struct ProbeLight
+{
+    int index = 0; // 0 for light 1
+    LightingInputs inputs;
+    LightingTerms terms; // the model at the point for this light (the Phong-shading view)
+};
+
 struct ProbeResult
 {
     bool hit = false;
     std::size_t triangle = 0;
     glm::vec3 barycentric{0.0f};
-    glm::vec3 position{0.0f};  // eye coordinates
-    glm::vec3 normal{0.0f};    // unit, eye coordinates
-    LightingTerms terms;       // the model evaluated at this point (the Phong-shading view)
-    glm::vec3 base{1.0f};      // vertex colour x texture, white where switched off
-    glm::vec3 reference{0.0f}; // the pixel in the active shading mode, clamped to [0, 1]
+    glm::vec3 position{0.0f};       // eye coordinates
+    glm::vec3 normal{0.0f};         // unit, eye coordinates
+    std::vector<ProbeLight> lights; // each enabled light's vectors and terms
+    LightingSum total;              // their sum at this point (the Phong-shading view)
+    glm::vec3 base{1.0f};           // vertex colour x texture, white where switched off
+    glm::vec3 reference{0.0f};      // the pixel in the active shading mode, clamped to [0, 1]
 };
 
-LightingInputs lightingInputs(const Scene &scene, const Frames &frames);
+// The model's inputs for light `index`, brought into eye coordinates.
+LightingInputs lightingInputs(const Scene &scene, const Frames &frames, int index);
 
 // `pixel` is in framebuffer pixels from the top-left corner; (x + 0.5, y + 0.5) is the centre
 // GL samples. The frame is `size` pixels large.

@@ -4,6 +4,8 @@
 #include "glsl/program.h"
 
 #include <glm/common.hpp>
+
+#include <algorithm>
 #include <glm/ext/matrix_transform.hpp>
 #include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
@@ -208,28 +210,27 @@ void Renderer::draw(GpuMesh &gpu)
 void Renderer::setUniforms(const Program &program, const Scene &scene, const Frames &frames)
 {
     // Each value goes out in the type the shader declared: a normal matrix declared mat3
-    // (the exercise's uNormalMatrix) gets the upper 3x3, a vec3 light position gets xyz.
+    // (the exercise's uNormalMatrix) gets the upper 3x3, a vec3 light position gets xyz, an
+    // int or a bool the first number.
     auto matrix = [this](const ActiveUniform &u, const glm::mat4 &m) {
         if (u.type == GL_FLOAT_MAT4)
             glUniformMatrix4fv(u.location, 1, GL_FALSE, glm::value_ptr(m));
         else if (u.type == GL_FLOAT_MAT3)
             glUniformMatrix3fv(u.location, 1, GL_FALSE, glm::value_ptr(glm::mat3(m)));
     };
-    auto vector = [this](const ActiveUniform &u, const glm::vec4 &v) {
-        if (u.type == GL_FLOAT_VEC4)
-            glUniform4fv(u.location, 1, glm::value_ptr(v));
-        else if (u.type == GL_FLOAT_VEC3)
-            glUniform3fv(u.location, 1, glm::value_ptr(v));
-        else if (u.type == GL_FLOAT)
-            glUniform1f(u.location, v.x);
+    auto vector = [this](const ActiveUniform &u, const glm::vec4 &v) { setVectors(u, &v, 1); };
+    // A light's value for each element of an array (light 1 for a plain uniform). A light
+    // switched off goes out black, so a shader that ignores uLightEnabled still adds nothing.
+    auto perLight = [&](const ActiveUniform &u, auto value) {
+        std::array<glm::vec4, kMaxLights> values;
+        const int n = std::clamp(int(u.size), 1, kMaxLights);
+        for (int i = 0; i < n; ++i)
+            values[std::size_t(i)] = value(scene.lights[std::size_t(i)]);
+        setVectors(u, values.data(), n);
     };
-    auto number = [this](const ActiveUniform &u, int v) {
-        if (u.type == GL_FLOAT)
-            glUniform1f(u.location, float(v));
-        else if (u.type == GL_INT || u.type == GL_BOOL || u.type == GL_SAMPLER_2D)
-            glUniform1i(u.location, v);
+    auto colour = [](const Light &l, const glm::vec3 &c) {
+        return glm::vec4(l.enabled ? c : glm::vec3(0.0f), 1.0f);
     };
-    const Light &light = scene.light;
     const Material &material = scene.material;
     for (const ActiveUniform &u : program.uniforms) {
         if (!u.semantic) {
@@ -253,19 +254,25 @@ void Renderer::setUniforms(const Program &program, const Scene &scene, const Fra
             matrix(u, frames.projection);
             break;
         case Semantic::LightPosition:
-            vector(u, light.position);
+            perLight(u, [](const Light &l) { return l.position; });
             break;
         case Semantic::LightPositionEye:
-            vector(u, lightInEye(frames, light.position, light.frame));
+            perLight(u, [&](const Light &l) { return lightInEye(frames, l.position, l.frame); });
             break;
         case Semantic::LightAmbient:
-            vector(u, glm::vec4(light.colors.ia, 1.0f));
+            perLight(u, [&](const Light &l) { return colour(l, l.colors.ia); });
             break;
         case Semantic::LightDiffuse:
-            vector(u, glm::vec4(light.colors.id, 1.0f));
+            perLight(u, [&](const Light &l) { return colour(l, l.colors.id); });
             break;
         case Semantic::LightSpecular:
-            vector(u, glm::vec4(light.colors.is, 1.0f));
+            perLight(u, [&](const Light &l) { return colour(l, l.colors.is); });
+            break;
+        case Semantic::LightFrame:
+            perLight(u, [](const Light &l) { return glm::vec4(float(int(l.frame))); });
+            break;
+        case Semantic::LightEnabled:
+            perLight(u, [](const Light &l) { return glm::vec4(l.enabled ? 1.0f : 0.0f); });
             break;
         case Semantic::MaterialAmbient:
             vector(u, glm::vec4(material.ka, 1.0f));
@@ -279,28 +286,56 @@ void Renderer::setUniforms(const Program &program, const Scene &scene, const Fra
         case Semantic::Shininess:
             vector(u, glm::vec4(material.shininess));
             break;
-        case Semantic::LightFrame:
-            number(u, int(light.frame));
-            break;
         case Semantic::SpecularModel:
-            number(u, scene.shading.specular == SpecularModel::Blinn ? 1 : 0);
+            vector(u, glm::vec4(scene.shading.specular == SpecularModel::Blinn ? 1.0f : 0.0f));
             break;
         case Semantic::ProjectionKind:
-            number(u, scene.shading.projection == Projection::Perspective ? 0 : 1);
+            vector(u, glm::vec4(scene.shading.projection == Projection::Perspective ? 0.0f : 1.0f));
             break;
         case Semantic::EnableLighting:
-            number(u, scene.shading.lighting);
+            vector(u, glm::vec4(scene.shading.lighting ? 1.0f : 0.0f));
             break;
         case Semantic::EnableVertexColor:
-            number(u, scene.shading.vertexColors);
+            vector(u, glm::vec4(scene.shading.vertexColors ? 1.0f : 0.0f));
             break;
         case Semantic::EnableTexture:
-            number(u, scene.shading.texture);
+            vector(u, glm::vec4(scene.shading.texture ? 1.0f : 0.0f));
             break;
         case Semantic::Sampler:
-            number(u, 0);
+            vector(u, glm::vec4(0.0f));
             break;
         }
+    }
+}
+
+void Renderer::setVectors(const ActiveUniform &u, const glm::vec4 *v, int n)
+{
+    std::array<GLfloat, 4 * kMaxLights> f{};
+    std::array<GLint, kMaxLights> i{};
+    n = std::min(n, kMaxLights);
+    switch (u.type) {
+    case GL_FLOAT_VEC4:
+        glUniform4fv(u.location, n, glm::value_ptr(v[0]));
+        break;
+    case GL_FLOAT_VEC3:
+        for (int k = 0; k < n; ++k)
+            std::copy_n(glm::value_ptr(v[k]), 3, &f[std::size_t(3 * k)]);
+        glUniform3fv(u.location, n, f.data());
+        break;
+    case GL_FLOAT:
+        for (int k = 0; k < n; ++k)
+            f[std::size_t(k)] = v[k].x;
+        glUniform1fv(u.location, n, f.data());
+        break;
+    case GL_INT:
+    case GL_BOOL:
+    case GL_SAMPLER_2D:
+        for (int k = 0; k < n; ++k)
+            i[std::size_t(k)] = GLint(v[k].x);
+        glUniform1iv(u.location, n, i.data());
+        break;
+    default:
+        break; // a type this value cannot fill: the shader keeps what it has
     }
 }
 
@@ -326,9 +361,9 @@ void Renderer::setShaderValue(const ActiveUniform &u, const Scene &scene)
     }
 }
 
-void Renderer::drawLightMarker(const Scene &scene, const Frames &frames)
+void Renderer::drawLightMarker(const Light &lightSettings, const Frames &frames)
 {
-    const glm::vec4 light = lightInEye(frames, scene.light.position, scene.light.frame);
+    const glm::vec4 light = lightInEye(frames, lightSettings.position, lightSettings.frame);
     glm::mat4 modelView;
     GpuMesh *marker = nullptr;
     if (light.w != 0.0f) {
@@ -342,7 +377,7 @@ void Renderer::drawLightMarker(const Scene &scene, const Frames &frames)
         marker = &m_markerArrow;
     }
     // The marker takes the light's diffuse colour at full brightness, so it stays visible.
-    const glm::vec3 id = scene.light.colors.id;
+    const glm::vec3 id = lightSettings.colors.id;
     const float peak = glm::max(id.x, glm::max(id.y, id.z));
     const glm::vec3 colour = peak > 0.0f ? id / peak : glm::vec3(1.0f);
 
@@ -409,7 +444,9 @@ void Renderer::render(const Scene &scene, QSize pixels)
         drawNormals(scene, frames);
 
     if (scene.showLight)
-        drawLightMarker(scene, frames);
+        for (const Light &light : scene.lights)
+            if (light.enabled)
+                drawLightMarker(light, frames);
     glUseProgram(0);
     // Leave the depth test off, as Qt's own GL painting (QOpenGLWidget composition, QPainter)
     // expects to find it.

@@ -76,7 +76,9 @@ private:
     const Program &objectProgram(const Scene &scene) const;
     void setUniforms(const Program &program, const Scene &scene, const Frames &frames);
     void setShaderValue(const ActiveUniform &uniform, const Scene &scene);
-    void drawLightMarker(const Scene &scene, const Frames &frames);
+    // Up to n values into a uniform (an array's first n elements), in its declared type.
+    void setVectors(const ActiveUniform &uniform, const glm::vec4 *values, int n);
+    void drawLightMarker(const Light &light, const Frames &frames);
 
     bool m_initialized = false;
     Program m_gouraud, m_phong, m_unlit, m_normals, m_user;

@@ -12,6 +12,7 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include <array>
 #include <map>
 #include <optional>
 #include <vector>
@@ -24,13 +25,24 @@ enum class Shape { Cube, Sphere, Torus, Plane };
 // Where the object's normals come from: the mesh's own (generated smooth when it has none),
 // or generated smooth (within the crease angle) or flat, whatever the mesh has.
 enum class NormalMode { File, Smooth, Flat };
+// Two programs on one camera: A (the editor's program) and B (a built-in one).
+enum class CompareMode { Off, SideBySide, Wipe, Difference };
 
 struct Light
 {
     glm::vec4 position{0.0f, 1.8f, 1.3f, 1.0f}; // the slides' lightPosition; w = 0 or 1
     LightFrame frame = LightFrame::World;       // the slides' complete shaders use world (II)
     LightColors colors;
+    bool enabled = true; // a light switched off adds nothing and goes to shaders as black
 };
+
+// Up to four lights add up. Light 1 is the slides' light; a shader that declares one light
+// (lightPosition, not lightPosition[4]) reads light 1.
+constexpr int kMaxLights = 4;
+using Lights = std::array<Light, kMaxLights>;
+// Light 1 on with the slides' values; 2 to 4 off, placed and coloured so that switching one
+// on shows where it is (no ambient of their own: one ambient term is the slides' model).
+Lights defaultLights();
 
 struct ShadingSettings
 {
@@ -56,21 +68,33 @@ struct ObjectSettings
     bool autoRotate = false;
 };
 
+struct CompareSettings
+{
+    CompareMode mode = CompareMode::Off;
+    float wipe = 0.5f; // the wipe's position across the viewport, 0 to 1
+    // Side B is the built-in program with its own shading and specular choices; the rest of
+    // the scene is shared. Gouraud by default, so that A = Phong shows the difference at once.
+    Shading shading = Shading::Gouraud;
+    SpecularModel specular = SpecularModel::Blinn;
+};
+
 struct Scene
 {
-    Light light;
+    Lights lights = defaultLights();
     Material material;
     ShadingSettings shading;
     ObjectSettings object;
     OrbitCamera camera;
-    bool showLight = true; // draw the light's marker (unlit sphere or arrow)
+    bool showLight = true; // draw the lights' markers (unlit sphere or arrow)
+    CompareSettings compare;
     // Values of the user shader's own uniforms (those no panel feeds), by name; they outlive
     // recompiles and restarts. 1 to 4 numbers each.
     std::map<QString, std::vector<float>> shaderValues;
 
     QJsonObject toJson() const;
-    // Missing or ill-typed fields keep their defaults.
-    static Scene fromJson(const QJsonObject &json);
+    // Missing or ill-typed fields keep their defaults. Those present but not used (unknown,
+    // ill-typed or out of range) are added to `ignored` as paths such as "lights[2].frame".
+    static Scene fromJson(const QJsonObject &json, QStringList *ignored = nullptr);
 };
 
 bool operator==(const Scene &a, const Scene &b);
@@ -98,17 +122,20 @@ QString toName(SpecularModel v);
 QString toName(Projection v);
 QString toName(Shape v);
 QString toName(NormalMode v);
+QString toName(CompareMode v);
 std::optional<LightFrame> parseLightFrame(const QString &s);
 std::optional<Shading> parseShading(const QString &s);
 std::optional<SpecularModel> parseSpecularModel(const QString &s);
 std::optional<Projection> parseProjection(const QString &s);
 std::optional<Shape> parseShape(const QString &s);
 std::optional<NormalMode> parseNormalMode(const QString &s);
+std::optional<CompareMode> parseCompareMode(const QString &s);
 QStringList lightFrameNames();
 QStringList shadingNames();
 QStringList specularModelNames();
 QStringList projectionNames();
 QStringList shapeNames();
 QStringList normalModeNames();
+QStringList compareModeNames();
 
 } // namespace lb

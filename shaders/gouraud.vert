@@ -13,11 +13,14 @@ uniform mat4 mView;        // world -> camera, from lookAt()
 uniform mat4 mViewNormals; // inverse transpose of mView
 uniform mat4 mProjection;  // projection matrix
 
-uniform vec4 lightPosition; // w = 0: direction towards the light; w = 1: position
-uniform int uLightFrame;    // frame lightPosition is given in: 0 camera, 1 world, 2 object
-uniform vec3 lightAmb;      // Ia
-uniform vec3 lightDif;      // Id
-uniform vec3 lightSpe;      // Is
+// Up to four lights; element i is light i + 1 of the Light panel. Their terms add up.
+#define MAX_LIGHTS 4
+uniform bool uLightEnabled[MAX_LIGHTS];
+uniform vec4 lightPosition[MAX_LIGHTS]; // w = 0: direction towards the light; w = 1: position
+uniform int uLightFrame[MAX_LIGHTS];    // frame of lightPosition: 0 camera, 1 world, 2 object
+uniform vec3 lightAmb[MAX_LIGHTS];      // Ia
+uniform vec3 lightDif[MAX_LIGHTS];      // Id
+uniform vec3 lightSpe[MAX_LIGHTS];      // Is
 uniform vec3 materialAmb;   // Ka
 uniform vec3 materialDif;   // Kd
 uniform vec3 materialSpe;   // Ks
@@ -35,38 +38,52 @@ out vec2 fTexCoord;
 // The light in the camera frame: variants I (camera), II (world) and III (object).
 // An inverse transpose carries the matrix's translation into w, so w is put back: a
 // direction must stay a direction (w = 0) after mViewNormals or mNormals.
-vec4 lightInCamera()
+vec4 lightInCamera(int i)
 {
-    vec4 light = lightPosition;
-    if (uLightFrame == 1)
-        light = lightPosition.w == 0.0 ? mViewNormals * lightPosition : mView * lightPosition;
-    else if (uLightFrame == 2)
-        light = lightPosition.w == 0.0 ? mNormals * lightPosition : mModelView * lightPosition;
-    return vec4(light.xyz, lightPosition.w);
+    vec4 p = lightPosition[i];
+    vec4 light = p;
+    if (uLightFrame[i] == 1)
+        light = p.w == 0.0 ? mViewNormals * p : mView * p;
+    else if (uLightFrame[i] == 2)
+        light = p.w == 0.0 ? mNormals * p : mModelView * p;
+    return vec4(light.xyz, p.w);
+}
+
+// One light's terms at P (camera frame), added to the sums.
+void addLight(int i, vec3 P, vec3 N, vec3 V, inout vec3 ambientDiffuse, inout vec3 specular)
+{
+    vec4 light = lightInCamera(i);
+    vec3 L = light.w == 0.0 ? normalize(light.xyz) : normalize(light.xyz - P);
+    vec3 H = normalize(L + V);
+    // The slides write reflect(L, N), but GLSL's reflect() mirrors an incident direction that
+    // points at the surface; L points away from it, so the mirrored light ray is reflect(-L, N).
+    vec3 R = reflect(-L, N);
+
+    vec3 ambient = lightAmb[i] * materialAmb;
+    float diffuseFactor = max(dot(L, N), 0.0); // no light from behind
+    vec3 diffuse = diffuseFactor * (lightDif[i] * materialDif);
+    float specularAngle = uSpecularModel == 1 ? dot(N, H) : dot(R, V);
+    vec3 spec = pow(max(specularAngle, 0.0), shininess) * (lightSpe[i] * materialSpe);
+    if (dot(L, N) < 0.0)
+        spec = vec3(0.0); // light on the back of the face: no highlight
+
+    ambientDiffuse += ambient + diffuse;
+    specular += spec;
 }
 
 void main()
 {
     vec3 posC = (mModelView * vPosition).xyz;
 
-    vec4 light = lightInCamera();
-    vec3 L = light.w == 0.0 ? normalize(light.xyz) : normalize(light.xyz - posC);
     vec3 V = uProjection == 0 ? normalize(-posC) : vec3(0.0, 0.0, 1.0);
     vec3 N = normalize((mNormals * vec4(vNormal, 0.0)).xyz);
-    vec3 H = normalize(L + V);
-    // The slides write reflect(L, N), but GLSL's reflect() mirrors an incident direction that
-    // points at the surface; L points away from it, so the mirrored light ray is reflect(-L, N).
-    vec3 R = reflect(-L, N);
+    vec3 ambientDiffuse = vec3(0.0);
+    vec3 specular = vec3(0.0);
+    for (int i = 0; i < MAX_LIGHTS; ++i)
+        if (uLightEnabled[i])
+            addLight(i, posC, N, V, ambientDiffuse, specular);
 
-    vec3 ambient = lightAmb * materialAmb;
-    float diffuseFactor = max(dot(L, N), 0.0); // no light from behind
-    vec3 diffuse = diffuseFactor * (lightDif * materialDif);
-    float specularAngle = uSpecularModel == 1 ? dot(N, H) : dot(R, V);
-    vec3 specular = pow(max(specularAngle, 0.0), shininess) * (lightSpe * materialSpe);
-    if (dot(L, N) < 0.0)
-        specular = vec3(0.0); // light on the back of the face: no highlight
-
-    fAmbientDiffuse = ambient + diffuse;
+    fAmbientDiffuse = ambientDiffuse;
     fSpecular = specular;
     fColor = vColor;
     fTexCoord = vTexCoord;

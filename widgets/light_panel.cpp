@@ -2,11 +2,13 @@
 
 #include "color_edit.h"
 
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QSignalBlocker>
+#include <QTabBar>
 
 namespace lb {
 
@@ -19,14 +21,35 @@ LightPanel::LightPanel(SceneDocument *document, QWidget *parent) : ScenePanel(do
 {
     auto *form = new QFormLayout(this);
     form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
+    m_tabs = new QTabBar(this);
+    m_tabs->setExpanding(false);
+    m_tabs->setDrawBase(false);
+    for (int i = 0; i < kMaxLights; ++i)
+        m_tabs->addTab(tr("Light %1").arg(i + 1));
+    m_tabs->setToolTip(tr("Up to four lights; their terms add up. A shader that declares one "
+                          "light (not an array) reads light 1"));
+    connect(m_tabs, &QTabBar::currentChanged, this, [this] { refreshNow(); });
+    form->addRow(m_tabs);
+
+    m_enabled = new QCheckBox(tr("On"), this);
+    m_enabled->setToolTip(tr("uLightEnabled[i]: a light switched off adds nothing (its colours "
+                             "go to shaders as black)"));
+    connect(m_enabled, &QCheckBox::toggled, this,
+            [this](bool on) { edit([&](Scene &s) { current(s).enabled = on; }); });
+    feeds(m_enabled,
+          {Semantic::LightEnabled, Semantic::LightAmbient, Semantic::LightDiffuse,
+           Semantic::LightSpecular},
+          "uLightEnabled or the light's colours");
+    form->addRow(tr("Light"), m_enabled);
     const char *axes[3] = {"x", "y", "z"};
     auto *xyzRow = new QHBoxLayout;
     for (int i = 0; i < 3; ++i) {
         QDoubleSpinBox *spin =
             makeSpin(-limits::kMaxCoordinate, limits::kMaxCoordinate, 2, 0.1,
                      tr("lightPosition.%1: the light's %1 in the chosen frame").arg(axes[i]));
-        connect(spin, &QDoubleSpinBox::valueChanged, this,
-                [this, i](double v) { edit([&](Scene &s) { s.light.position[i] = float(v); }); });
+        connect(spin, &QDoubleSpinBox::valueChanged, this, [this, i](double v) {
+            edit([&](Scene &s) { current(s).position[i] = float(v); });
+        });
         m_xyz[std::size_t(i)] = spin;
         feeds(spin, {Semantic::LightPosition, Semantic::LightPositionEye},
               "lightPosition or uLightPosition");
@@ -39,10 +62,10 @@ LightPanel::LightPanel(SceneDocument *document, QWidget *parent) : ScenePanel(do
                        "direction towards a light at infinity"));
     connect(m_w, &QComboBox::currentIndexChanged, this, [this](int index) {
         edit([&](Scene &s) {
-            s.light.position.w = index == 0 ? 1.0f : 0.0f;
+            current(s).position.w = index == 0 ? 1.0f : 0.0f;
             // A directional light needs a direction.
-            if (s.light.position.w == 0.0f && glm::vec3(s.light.position) == glm::vec3(0.0f))
-                s.light.position.z = 1.0f;
+            if (current(s).position.w == 0.0f && glm::vec3(current(s).position) == glm::vec3(0.0f))
+                current(s).position.z = 1.0f;
         });
     });
     feeds(m_w, {Semantic::LightPosition, Semantic::LightPositionEye},
@@ -55,7 +78,7 @@ LightPanel::LightPanel(SceneDocument *document, QWidget *parent) : ScenePanel(do
                   tr("Frame lightPosition is given in. Camera: used as is (variant I); "
                      "world: mView / mViewNormals (II); object: mModelView / mNormals (III)"));
     connect(m_frame, &QComboBox::currentIndexChanged, this,
-            [this](int index) { edit([&](Scene &s) { s.light.frame = LightFrame(index); }); });
+            [this](int index) { edit([&](Scene &s) { current(s).frame = LightFrame(index); }); });
     feeds(m_frame, {Semantic::LightFrame, Semantic::LightPositionEye},
           "uLightFrame or uLightPosition");
     form->addRow(tr("Frame"), m_frame);
@@ -70,7 +93,7 @@ LightPanel::LightPanel(SceneDocument *document, QWidget *parent) : ScenePanel(do
                                     : i == 1 ? tr("diffuse")
                                              : tr("specular")));
         connect(colour, &ColorEdit::colorChanged, this, [this, i](const glm::vec3 &c) {
-            edit([&](Scene &s) { s.light.colors.*kColourMembers[i] = c; });
+            edit([&](Scene &s) { current(s).colors.*kColourMembers[i] = c; });
         });
         m_colors[std::size_t(i)] = colour;
         const Semantic semantics[3] = {Semantic::LightAmbient, Semantic::LightDiffuse,
@@ -80,21 +103,42 @@ LightPanel::LightPanel(SceneDocument *document, QWidget *parent) : ScenePanel(do
     }
 
     addResetButton(form, tr("Reset light"),
-                   tr("The slides' light: (0, 1.8, 1.3, 1) in world coordinates"),
-                   [](Scene &s) { s.light = Light{}; });
+                   tr("This light's defaults; light 1's are the slides' (0, 1.8, 1.3, 1) in "
+                      "world coordinates"),
+                   [this](Scene &s) { current(s) = defaultLights()[std::size_t(currentLight())]; });
     refreshNow();
+}
+
+int LightPanel::currentLight() const
+{
+    return std::clamp(m_tabs->currentIndex(), 0, kMaxLights - 1);
+}
+
+void LightPanel::setCurrentLight(int index)
+{
+    m_tabs->setCurrentIndex(index);
 }
 
 void LightPanel::refresh(const Scene &scene)
 {
+    // Lights that are off have grey tabs.
+    for (int i = 0; i < kMaxLights; ++i)
+        m_tabs->setTabTextColor(i, scene.lights[std::size_t(i)].enabled
+                                       ? palette().color(QPalette::WindowText)
+                                       : palette().color(QPalette::Disabled, QPalette::WindowText));
+    const Light &light = scene.lights[std::size_t(currentLight())];
+    {
+        const QSignalBlocker block(m_enabled);
+        m_enabled->setChecked(light.enabled);
+    }
     for (int i = 0; i < 3; ++i) {
         const QSignalBlocker block(m_xyz[std::size_t(i)]);
-        m_xyz[std::size_t(i)]->setValue(double(scene.light.position[i]));
-        m_colors[std::size_t(i)]->setColor(scene.light.colors.*kColourMembers[i]);
+        m_xyz[std::size_t(i)]->setValue(double(light.position[i]));
+        m_colors[std::size_t(i)]->setColor(light.colors.*kColourMembers[i]);
     }
     const QSignalBlocker b1(m_w), b2(m_frame);
-    m_w->setCurrentIndex(scene.light.position.w == 0.0f ? 1 : 0);
-    m_frame->setCurrentIndex(int(scene.light.frame));
+    m_w->setCurrentIndex(light.position.w == 0.0f ? 1 : 0);
+    m_frame->setCurrentIndex(int(light.frame));
 }
 
 } // namespace lb

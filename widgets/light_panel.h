@@ -1,11 +1,14 @@
 #pragma once
-// Light: position (x, y, z) and w, the frame it is given in, and Ia, Id, Is.
+// Lights: up to four, one at a time (the tabs): on/off, position (x, y, z) and w, the frame it
+// is given in, and Ia, Id, Is.
 
 #include "scene_panel.h"
 
 #include <array>
 
+class QCheckBox;
 class QComboBox;
+class QTabBar;
 class QDoubleSpinBox;
 
 namespace lb {
@@ -18,6 +21,10 @@ class LightPanel : public ScenePanel
 public:
     explicit LightPanel(SceneDocument *document, QWidget *parent = nullptr);
 
+    QTabBar *lightTabs() const { return m_tabs; }
+    int currentLight() const; // 0 for light 1
+    void setCurrentLight(int index);
+    QCheckBox *enabledCheck() const { return m_enabled; }
     QDoubleSpinBox *coordinate(int i) const { return m_xyz[std::size_t(i)]; }
     QComboBox *wCombo() const { return m_w; }
     QComboBox *frameCombo() const { return m_frame; }
@@ -27,6 +34,10 @@ protected:
     void refresh(const Scene &scene) override;
 
 private:
+    Light &current(Scene &scene) const { return scene.lights[std::size_t(currentLight())]; }
+
+    QTabBar *m_tabs;
+    QCheckBox *m_enabled;
     std::array<QDoubleSpinBox *, 3> m_xyz{};
     QComboBox *m_w;
     QComboBox *m_frame;

@@ -26,6 +26,7 @@ std::optional<Semantic> semanticOf(const QString &uniformName)
         {"materialSpe", Semantic::MaterialSpecular},
         {"shininess", Semantic::Shininess},
         {"uLightFrame", Semantic::LightFrame},
+        {"uLightEnabled", Semantic::LightEnabled},
         {"uSpecularModel", Semantic::SpecularModel},
         {"uProjection", Semantic::ProjectionKind},
         {"uEnableLighting", Semantic::EnableLighting},

@@ -2,6 +2,8 @@
 // The table of semantic names: which uniform names the workbench feeds from the panels, in
 // the slides' spelling (mModelView, lightAmb...), the exercise's (uModelViewMatrix,
 // uLightPosition...) and the built-in shaders' switches. Attribute names are in program.cpp.
+// The light's names may be arrays (lightPosition[4]): element i is light i + 1; a plain
+// uniform is light 1.
 
 #include <QString>
 
@@ -25,6 +27,7 @@ enum class Semantic {
     MaterialSpecular,  // materialSpe: Ks
     Shininess,         // shininess
     LightFrame,        // uLightFrame: 0 camera, 1 world, 2 object
+    LightEnabled,      // uLightEnabled: the light's on/off switch
     SpecularModel,     // uSpecularModel: 0 Phong, 1 Blinn-Phong
     ProjectionKind,    // uProjection: 0 perspective, 1 orthographic
     EnableLighting,    // uEnableLighting

@@ -17,6 +17,18 @@ int channelDifference(QRgb gpu, const glm::vec3 &reference)
     return std::max({std::abs(qRed(gpu) - r), std::abs(qGreen(gpu) - g), std::abs(qBlue(gpu) - b)});
 }
 
+int largestDifference(const QImage &a, const QImage &b)
+{
+    int worst = 0;
+    for (int y = 0; y < std::min(a.height(), b.height()); ++y)
+        for (int x = 0; x < std::min(a.width(), b.width()); ++x) {
+            const QRgb p = a.pixel(x, y), q = b.pixel(x, y);
+            worst = std::max({worst, std::abs(qRed(p) - qRed(q)), std::abs(qGreen(p) - qGreen(q)),
+                              std::abs(qBlue(p) - qBlue(q))});
+        }
+    return worst;
+}
+
 Comparison compareWithReference(OffscreenRenderer &offscreen, const Scene &scene,
                                 const QImage &frame, int step)
 {
@@ -37,7 +49,7 @@ Comparison compareWithReference(OffscreenRenderer &offscreen, const Scene &scene
             if (!interior)
                 continue;
             ++c.compared;
-            if (p.terms.specular.r > 0.05f)
+            if (p.total.specular.r > 0.05f)
                 ++c.withSpecular;
             const int diff = channelDifference(frame.pixel(x, y), p.reference);
             if (diff > c.worst) {

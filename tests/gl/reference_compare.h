@@ -24,6 +24,9 @@ struct Comparison
 // The largest channel difference between a pixel and a reference colour (0-1), in 1/255.
 int channelDifference(QRgb gpu, const glm::vec3 &reference);
 
+// The largest channel difference between two frames of one size, in 1/255.
+int largestDifference(const QImage &a, const QImage &b);
+
 // Compares a grid of pixels. Pixels on a silhouette or a crease (a neighbour two pixels away
 // misses the object or sees a surface turned by more than ~11 degrees) are skipped: there
 // the rasteriser and the ray may rightly pick different triangles.

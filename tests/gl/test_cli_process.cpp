@@ -50,9 +50,16 @@ private slots:
         QVERIFY2(r.exitCode == 0, r.err.constData());
         const QJsonObject o = QJsonDocument::fromJson(r.out).object();
         QVERIFY(o["hit"].toBool());
-        for (const char *key : {"gpu", "reference", "position", "normal", "L", "V", "H", "R",
-                                "ambient", "diffuse", "specular"})
+        for (const char *key :
+             {"gpu", "reference", "position", "normal", "V", "ambient", "diffuse", "specular"})
             QVERIFY2(o[key].isArray() && o[key].toArray().size() == 3, key);
+        // One light by default; its vectors and terms are listed under "lights".
+        QCOMPARE(o["lights"].toArray().size(), 1);
+        const QJsonObject light = o["lights"][0].toObject();
+        QCOMPARE(light["light"].toInt(), 1);
+        for (const char *key : {"L", "H", "R", "ambient", "diffuse", "specular"})
+            QVERIFY2(light[key].isArray() && light[key].toArray().size() == 3, key);
+        QCOMPARE(light["specular"], o["specular"]);
         for (int c = 0; c < 3; ++c)
             QVERIFY(std::abs(o["gpu"][c].toInt() - o["reference"][c].toInt()) <= 2);
         // The background has no surface.

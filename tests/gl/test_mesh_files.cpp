@@ -69,7 +69,7 @@ private slots:
         Scene s = sceneWith(kCorpus + "/" + file);
         s.object.normals = NormalMode(normals);
         s.shading.shading = Shading(shading);
-        s.light.position = glm::vec4(1.0f, 2.0f, 3.0f, 1.0f);
+        s.lights[0].position = glm::vec4(1.0f, 2.0f, 3.0f, 1.0f);
         s.material.shininess = 10;
         const QString failure =
             checkAgainstReference(m_offscreen, s, QTest::currentDataTag(), minCompared, 0);

@@ -60,8 +60,8 @@ private slots:
         s.shading.shading = Shading(shading);
         s.shading.specular = SpecularModel(specular);
         s.shading.projection = Projection(projection);
-        s.light.frame = LightFrame(frame);
-        s.light.position =
+        s.lights[0].frame = LightFrame(frame);
+        s.lights[0].position =
             w == 0.0f ? glm::vec4(1.0f, 1.5f, 2.0f, 0.0f) : glm::vec4(1.5f, 2.0f, 2.5f, 1.0f);
         s.material.shininess = 20;
         expectMatch(s, QTest::currentDataTag(), 100, 3);
@@ -107,6 +107,57 @@ private slots:
         expectMatch(s, what, s.object.shape == Shape::Cube ? 60 : 100, lit ? 1 : 0);
     }
 
+    void fourLightsMatchTheReference_data()
+    {
+        QTest::addColumn<int>("shading");
+        QTest::addColumn<int>("specular");
+        for (int sh = 0; sh < 2; ++sh)
+            for (int sp = 0; sp < 2; ++sp)
+                QTest::newRow(qPrintable(toName(Shading(sh)) + " " + toName(SpecularModel(sp))))
+                    << sh << sp;
+    }
+
+    void fourLightsMatchTheReference()
+    {
+        QFETCH(int, shading);
+        QFETCH(int, specular);
+        Scene s = testScene();
+        s.shading.shading = Shading(shading);
+        s.shading.specular = SpecularModel(specular);
+        s.material.shininess = 30;
+        // One light in each frame, points and directions, coloured apart so that each one's
+        // share shows; dim enough that the sum rarely saturates.
+        const glm::vec4 positions[4] = {{1.5f, 2.0f, 2.5f, 1.0f},
+                                        {-2.0f, 0.5f, 1.0f, 0.0f},
+                                        {0.5f, -1.5f, 2.0f, 1.0f},
+                                        {0.0f, 0.3f, 1.0f, 0.0f}};
+        const LightFrame frames[4] = {LightFrame::World, LightFrame::Object, LightFrame::Camera,
+                                      LightFrame::Camera};
+        for (int i = 0; i < kMaxLights; ++i) {
+            Light &l = s.lights[std::size_t(i)];
+            l.enabled = true;
+            l.position = positions[i];
+            l.frame = frames[i];
+            l.colors.ia = glm::vec3(0.03f);
+            l.colors.id =
+                glm::vec3(i == 1 ? 0.1f : 0.35f, i == 2 ? 0.1f : 0.3f, i == 0 ? 0.1f : 0.3f);
+            l.colors.is = glm::vec3(0.4f);
+        }
+        expectMatch(s, QString("four lights ") + QTest::currentDataTag(), 100, 3);
+    }
+
+    void aLightSwitchedOffAddsNothing()
+    {
+        Scene one = testScene();
+        Scene two = one;
+        two.lights[1].enabled = false;
+        two.lights[1].colors = LightColors{}; // bright, but off
+        const QImage a = m_offscreen.render(one);
+        QCOMPARE(largestDifference(a, m_offscreen.render(two)), 0);
+        two.lights[1].enabled = true;
+        QVERIFY(largestDifference(a, m_offscreen.render(two)) > 20); // and on, it shows
+    }
+
     void gouraudAndPhongDifferAtTheHighlight()
     {
         Scene s; // the default scene: the coarse sphere of the window
@@ -143,9 +194,10 @@ private slots:
     void lightMarkerIsDrawnUnlit()
     {
         Scene s;
-        s.light.frame = LightFrame::Camera;
-        s.light.position = {0, 0, -2.5f, 1}; // in front of the camera, between it and the sphere
-        s.light.colors.id = {0.0f, 0.35f, 0.7f};
+        s.lights[0].frame = LightFrame::Camera;
+        s.lights[0].position = {0, 0, -2.5f,
+                                1}; // in front of the camera, between it and the sphere
+        s.lights[0].colors.id = {0.0f, 0.35f, 0.7f};
         const QImage frame = m_offscreen.render(s);
         // The marker's colour is Id at full brightness: (0, 0.5, 1).
         const QRgb centre = frame.pixel(kSize.width() / 2, kSize.height() / 2);

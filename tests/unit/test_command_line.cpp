@@ -38,11 +38,11 @@ private slots:
         QCOMPARE(s.object.tessellation, 30);
         QCOMPARE(s.shading.shading, Shading::Gouraud);
         QCOMPARE(s.shading.specular, SpecularModel::Phong);
-        QCOMPARE(s.light.frame, LightFrame::Camera);
-        QCOMPARE(s.light.position, glm::vec4(1, -2, 3, 0));
-        QCOMPARE(s.light.colors.ia, glm::vec3(0.1f, 0.2f, 0.3f));
-        QCOMPARE(s.light.colors.id, glm::vec3(0, 0, 1));
-        QCOMPARE(s.light.colors.is, glm::vec3(0.5f));
+        QCOMPARE(s.lights[0].frame, LightFrame::Camera);
+        QCOMPARE(s.lights[0].position, glm::vec4(1, -2, 3, 0));
+        QCOMPARE(s.lights[0].colors.ia, glm::vec3(0.1f, 0.2f, 0.3f));
+        QCOMPARE(s.lights[0].colors.id, glm::vec3(0, 0, 1));
+        QCOMPARE(s.lights[0].colors.is, glm::vec3(0.5f));
         QCOMPARE(s.material.ka, glm::vec3(0, 1, 0));
         QCOMPARE(s.material.kd, glm::vec3(1, 1, 0));
         QCOMPARE(s.material.ks, glm::vec3(0.2f));

@@ -16,9 +16,9 @@ private slots:
     void jsonRoundTrip()
     {
         Scene s;
-        s.light.position = {1, -2, 3, 0};
-        s.light.frame = LightFrame::Object;
-        s.light.colors.is = {0.1f, 0.2f, 0.3f};
+        s.lights[0].position = {1, -2, 3, 0};
+        s.lights[0].frame = LightFrame::Object;
+        s.lights[0].colors.is = {0.1f, 0.2f, 0.3f};
         s.material.shininess = 123;
         s.shading.shading = Shading::Gouraud;
         s.shading.specular = SpecularModel::Phong;
@@ -35,14 +35,48 @@ private slots:
         QVERIFY(back != Scene{});
     }
 
-    void badFieldsKeepTheirDefaults()
+    void severalLightsRoundTrip()
+    {
+        Scene s;
+        s.lights[2].enabled = true;
+        s.lights[2].frame = LightFrame::Camera;
+        s.lights[3].position = {0, 1, 0, 0};
+        s.compare.mode = CompareMode::Wipe;
+        s.compare.wipe = 0.25f;
+        s.compare.specular = SpecularModel::Phong;
+        const Scene back = Scene::fromJson(s.toJson());
+        QVERIFY(back == s);
+        QVERIFY(back.lights[2].enabled);
+        QCOMPARE(back.compare.wipe, 0.25f);
+    }
+
+    void versionOneLightIsLightOne()
+    {
+        // Version 1 (and the settings it left) held one light under "light".
+        QJsonObject json;
+        json["light"] = QJsonObject{{"position", QJsonArray{1, 2, 3, 0}}, {"frame", "camera"}};
+        QStringList ignored;
+        const Scene s = Scene::fromJson(json, &ignored);
+        QCOMPARE(s.lights[0].position, glm::vec4(1, 2, 3, 0));
+        QCOMPARE(s.lights[0].frame, LightFrame::Camera);
+        QVERIFY(s.lights[0].enabled);
+        QVERIFY(!s.lights[1].enabled);
+        QVERIFY2(ignored.isEmpty(), qPrintable(ignored.join(", ")));
+    }
+
+    void badFieldsKeepTheirDefaultsAndAreNamed()
     {
         QJsonObject json = Scene{}.toJson();
-        QJsonObject light = json["light"].toObject();
+        QJsonArray lights = json["lights"].toArray();
+        QJsonObject light = lights[0].toObject();
         light["position"] = QJsonArray{1, 2, 3, 0.5}; // w must be 0 or 1
         light["frame"] = "sideways";
         light["ia"] = QJsonArray{1, "x", 0};
-        json["light"] = light;
+        light["colour"] = "red"; // no such field
+        lights[0] = light;
+        lights[1] = 12;
+        lights.append(QJsonObject{}); // a fifth light
+        json["lights"] = lights;
         QJsonObject material = json["material"].toObject();
         material["shininess"] = 1e9;
         json["material"] = material;
@@ -51,15 +85,17 @@ private slots:
         object["scale"] = QJsonArray{0, 1, 1};
         json["object"] = object;
         json["camera"] = 7;
+        json["future"] = true;
         json["shaderValues"] = QJsonObject{{"five", QJsonArray{1, 2, 3, 4, 5}},
                                            {"word", QJsonArray{"x"}},
                                            {"ok", QJsonArray{2.5}}};
 
-        const Scene s = Scene::fromJson(json);
+        QStringList ignored;
+        const Scene s = Scene::fromJson(json, &ignored);
         const Scene defaults;
-        QCOMPARE(s.light.position.w, 1.0f);
-        QCOMPARE(s.light.frame, defaults.light.frame);
-        QCOMPARE(s.light.colors.ia, defaults.light.colors.ia);
+        QCOMPARE(s.lights[0].position, defaults.lights[0].position);
+        QCOMPARE(s.lights[0].frame, defaults.lights[0].frame);
+        QCOMPARE(s.lights[0].colors.ia, defaults.lights[0].colors.ia);
         QCOMPARE(s.material.shininess, limits::kMaxShininess);
         QCOMPARE(s.object.tessellation, limits::kMinTessellation);
         QCOMPARE(s.object.scale.x, limits::kMinScale);
@@ -67,6 +103,15 @@ private slots:
         QCOMPARE(int(s.shaderValues.size()), 1);
         QCOMPARE(s.shaderValues.at("ok"), std::vector<float>{2.5f});
         QVERIFY(Scene::fromJson(QJsonObject{}) == defaults);
+
+        const QString all = ignored.join('\n');
+        for (const char *path :
+             {"lights[0].position", "lights[0].frame", "lights[0].ia", "lights[0].colour",
+              "lights[1] (not an object)", "lights[4]", "material.shininess", "object.tessellation",
+              "object.scale", "camera (not an object)", "future (unknown field)",
+              "shaderValues.five", "shaderValues.word"})
+            QVERIFY2(all.contains(QLatin1String(path)), path);
+        QCOMPARE(ignored.size(), 13);
     }
 
     void namesRoundTrip()

@@ -149,17 +149,29 @@ private slots:
     {
         LightPanel *p = m_window->lightPanel();
         expectNewImage([&] { p->coordinate(0)->setValue(-2.0); }, "light x");
-        QCOMPARE(scene().light.position.x, -2.0f);
+        QCOMPARE(scene().lights[0].position.x, -2.0f);
         expectNewImage([&] { p->wCombo()->setCurrentIndex(1); }, "directional");
-        QCOMPARE(scene().light.position.w, 0.0f);
+        QCOMPARE(scene().lights[0].position.w, 0.0f);
         expectNewImage([&] { p->frameCombo()->setCurrentIndex(0); }, "camera frame");
-        QCOMPARE(scene().light.frame, LightFrame::Camera);
+        QCOMPARE(scene().lights[0].frame, LightFrame::Camera);
         // The model is not transformed yet, so object and world frame agree until it turns.
         m_window->objectPanel()->rotation(1)->setValue(90);
         expectNewImage([&] { p->frameCombo()->setCurrentIndex(2); }, "object frame");
-        QCOMPARE(scene().light.frame, LightFrame::Object);
+        QCOMPARE(scene().lights[0].frame, LightFrame::Object);
         expectNewImage([&] { p->colorEdit(2)->channel(0)->setValue(0.0); }, "Is red");
-        QCOMPARE(scene().light.colors.is.r, 0.0f);
+        QCOMPARE(scene().lights[0].colors.is.r, 0.0f);
+
+        // Light 3: its own values in the same controls; switching it on adds its light.
+        p->setCurrentLight(2);
+        QVERIFY(!p->enabledCheck()->isChecked());
+        QCOMPARE(p->coordinate(0)->value(), double(defaultLights()[2].position.x));
+        expectNewImage([&] { p->enabledCheck()->setChecked(true); }, "light 3 on");
+        QVERIFY(scene().lights[2].enabled);
+        expectNewImage([&] { p->coordinate(1)->setValue(1.0); }, "light 3 y");
+        QCOMPARE(scene().lights[2].position.y, 1.0f);
+        QCOMPARE(scene().lights[0].position.x, -2.0f); // light 1 kept its own
+        p->setCurrentLight(0);
+        QCOMPARE(p->coordinate(0)->value(), -2.0);
     }
 
     void objectControlsChangeSceneAndPixels()

@@ -1,0 +1,326 @@
+// Scene <-> JSON. Writing gives every field; reading takes what it can use and names the rest.
+
+#include "scene.h"
+
+#include <QJsonArray>
+
+#include <glm/common.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace lb {
+
+namespace {
+
+QJsonArray toArray(const float *v, int n)
+{
+    QJsonArray a;
+    for (int i = 0; i < n; ++i)
+        a.append(double(v[i]));
+    return a;
+}
+
+QJsonObject lightJson(const Light &light)
+{
+    QJsonObject l;
+    l["enabled"] = light.enabled;
+    l["position"] = toArray(&light.position.x, 4);
+    l["frame"] = toName(light.frame);
+    l["ia"] = toArray(&light.colors.ia.x, 3);
+    l["id"] = toArray(&light.colors.id.x, 3);
+    l["is"] = toArray(&light.colors.is.x, 3);
+    return l;
+}
+
+// Reads fields into a Scene, keeping the default of each field it cannot use and naming it
+// ("object.tessellation", "lights[2].frame") in `ignored`: unknown keys, wrong types, values
+// out of range (those are clamped) and words it does not know.
+class Reader
+{
+public:
+    explicit Reader(QStringList *ignored) : m_ignored(ignored) {}
+
+    void ignore(const QString &path, const char *why)
+    {
+        if (m_ignored)
+            m_ignored->append(QString("%1 (%2)").arg(path, QLatin1String(why)));
+    }
+
+    // The object under `key`; an absent key gives an empty object, a non-object is ignored.
+    QJsonObject object(const QJsonObject &o, const QString &key, const QString &path)
+    {
+        const QJsonValue v = o.value(key);
+        if (v.isUndefined())
+            return {};
+        if (!v.isObject())
+            ignore(path, "not an object");
+        return v.toObject();
+    }
+
+    // Names each key of `o` that `known` (the same object as written) lacks.
+    void unknownKeys(const QJsonObject &o, const QJsonObject &known, const QString &path)
+    {
+        for (auto it = o.begin(); it != o.end(); ++it)
+            if (!known.contains(it.key()))
+                ignore(join(path, it.key()), "unknown field");
+    }
+
+    void numbers(const QJsonObject &o, const QString &key, const QString &path, float *v, int n,
+                 float lo, float hi)
+    {
+        const QJsonValue j = o.value(key);
+        if (j.isUndefined())
+            return;
+        const QJsonArray a = j.toArray();
+        bool ok = j.isArray() && a.size() == n;
+        for (int i = 0; ok && i < n; ++i)
+            ok = a[i].isDouble() && std::isfinite(a[i].toDouble());
+        if (!ok) {
+            ignore(join(path, key), n == 1 ? "not a number" : "not an array of numbers");
+            return;
+        }
+        bool clamped = false;
+        for (int i = 0; i < n; ++i) {
+            const double d = a[i].toDouble();
+            v[i] = float(std::clamp(d, double(lo), double(hi)));
+            clamped = clamped || double(v[i]) != d;
+        }
+        if (clamped)
+            ignore(join(path, key), "out of range, clamped");
+    }
+
+    template <typename T>
+    void number(const QJsonObject &o, const QString &key, const QString &path, T &v, T lo, T hi)
+    {
+        const QJsonValue j = o.value(key);
+        if (j.isUndefined())
+            return;
+        if (!j.isDouble() || !std::isfinite(j.toDouble())) {
+            ignore(join(path, key), "not a number");
+            return;
+        }
+        const double d = j.toDouble();
+        const double c = std::clamp(d, double(lo), double(hi));
+        v = T(c);
+        if (c != d || double(v) != c)
+            ignore(join(path, key), "out of range, clamped");
+    }
+
+    void boolean(const QJsonObject &o, const QString &key, const QString &path, bool &v)
+    {
+        const QJsonValue j = o.value(key);
+        if (j.isBool())
+            v = j.toBool();
+        else if (!j.isUndefined())
+            ignore(join(path, key), "not true or false");
+    }
+
+    template <typename E>
+    void word(const QJsonObject &o, const QString &key, const QString &path,
+              std::optional<E> (*parse)(const QString &), E &v)
+    {
+        const QJsonValue j = o.value(key);
+        if (j.isUndefined())
+            return;
+        if (const auto parsed = parse(j.toString()))
+            v = *parsed;
+        else
+            ignore(join(path, key), "unknown value");
+    }
+
+    void text(const QJsonObject &o, const QString &key, const QString &path, QString &v)
+    {
+        const QJsonValue j = o.value(key);
+        if (j.isString())
+            v = j.toString();
+        else if (!j.isUndefined())
+            ignore(join(path, key), "not a string");
+    }
+
+    static QString join(const QString &path, const QString &key)
+    {
+        return path.isEmpty() ? key : path + "." + key;
+    }
+
+private:
+    QStringList *m_ignored;
+};
+
+void readLight(Reader &r, const QJsonObject &l, const QString &path, Light &light)
+{
+    r.unknownKeys(l, lightJson(light), path);
+    r.boolean(l, "enabled", path, light.enabled);
+    const float c = limits::kMaxCoordinate;
+    const Light before = light;
+    r.numbers(l, "position", path, &light.position.x, 4, -c, c);
+    if (light.position.w != 0.0f && light.position.w != 1.0f) {
+        r.ignore(Reader::join(path, "position"), "w must be 0 or 1");
+        light.position = before.position;
+    } else if (light.position == glm::vec4(0.0f)) {
+        r.ignore(Reader::join(path, "position"), "a direction of length 0");
+        light.position = before.position;
+    }
+    r.word(l, "frame", path, parseLightFrame, light.frame);
+    r.numbers(l, "ia", path, &light.colors.ia.x, 3, 0.0f, 1.0f);
+    r.numbers(l, "id", path, &light.colors.id.x, 3, 0.0f, 1.0f);
+    r.numbers(l, "is", path, &light.colors.is.x, 3, 0.0f, 1.0f);
+}
+
+} // namespace
+
+QJsonObject Scene::toJson() const
+{
+    QJsonArray ls;
+    for (const Light &light : lights)
+        ls.append(lightJson(light));
+
+    QJsonObject m;
+    m["ka"] = toArray(&material.ka.x, 3);
+    m["kd"] = toArray(&material.kd.x, 3);
+    m["ks"] = toArray(&material.ks.x, 3);
+    m["shininess"] = double(material.shininess);
+
+    QJsonObject s;
+    s["shading"] = toName(shading.shading);
+    s["specular"] = toName(shading.specular);
+    s["projection"] = toName(shading.projection);
+    s["lighting"] = shading.lighting;
+    s["vertexColors"] = shading.vertexColors;
+    s["texture"] = shading.texture;
+
+    QJsonObject ob;
+    ob["shape"] = toName(object.shape);
+    ob["tessellation"] = object.tessellation;
+    ob["rotation"] = toArray(&object.rotationDegrees.x, 3);
+    ob["scale"] = toArray(&object.scale.x, 3);
+    ob["autoRotate"] = object.autoRotate;
+    ob["mesh"] = object.meshPath;
+    ob["normals"] = toName(object.normals);
+    ob["creaseAngle"] = double(object.creaseDegrees);
+    ob["showNormals"] = object.showNormals;
+    ob["adoptFileMaterial"] = object.adoptFileMaterial;
+
+    QJsonObject c;
+    c["target"] = toArray(&camera.target.x, 3);
+    c["distance"] = double(camera.distance);
+    c["yaw"] = double(camera.yawDegrees);
+    c["pitch"] = double(camera.pitchDegrees);
+
+    QJsonObject cmp;
+    cmp["mode"] = toName(compare.mode);
+    cmp["wipe"] = double(compare.wipe);
+    cmp["shading"] = toName(compare.shading);
+    cmp["specular"] = toName(compare.specular);
+
+    QJsonObject root;
+    root["lights"] = ls;
+    root["material"] = m;
+    root["shading"] = s;
+    root["object"] = ob;
+    root["camera"] = c;
+    root["compare"] = cmp;
+    root["showLight"] = showLight;
+    QJsonObject values;
+    for (const auto &[name, v] : shaderValues)
+        values[name] = toArray(v.data(), int(v.size()));
+    root["shaderValues"] = values;
+    return root;
+}
+
+Scene Scene::fromJson(const QJsonObject &json, QStringList *ignored)
+{
+    Scene sc;
+    Reader r(ignored);
+    const QJsonObject known = sc.toJson();
+    QJsonObject knownRoot = known;
+    knownRoot["light"] = QJsonObject(); // version 1 had a single light
+    r.unknownKeys(json, knownRoot, {});
+
+    // Version 1 files and settings hold one light under "light".
+    if (json.contains("light"))
+        readLight(r, r.object(json, "light", "light"), "light", sc.lights[0]);
+    if (json.contains("lights")) {
+        const QJsonValue v = json.value("lights");
+        const QJsonArray ls = v.toArray();
+        if (!v.isArray())
+            r.ignore("lights", "not an array");
+        for (int i = 0; i < int(ls.size()); ++i) {
+            const QString path = QString("lights[%1]").arg(i);
+            if (i >= kMaxLights)
+                r.ignore(path, "at most 4 lights");
+            else if (!ls[i].isObject())
+                r.ignore(path, "not an object");
+            else
+                readLight(r, ls[i].toObject(), path, sc.lights[std::size_t(i)]);
+        }
+    }
+
+    const QJsonObject m = r.object(json, "material", "material");
+    r.unknownKeys(m, known["material"].toObject(), "material");
+    r.numbers(m, "ka", "material", &sc.material.ka.x, 3, 0.0f, 1.0f);
+    r.numbers(m, "kd", "material", &sc.material.kd.x, 3, 0.0f, 1.0f);
+    r.numbers(m, "ks", "material", &sc.material.ks.x, 3, 0.0f, 1.0f);
+    r.number(m, "shininess", "material", sc.material.shininess, limits::kMinShininess,
+             limits::kMaxShininess);
+
+    const QJsonObject s = r.object(json, "shading", "shading");
+    r.unknownKeys(s, known["shading"].toObject(), "shading");
+    r.word(s, "shading", "shading", parseShading, sc.shading.shading);
+    r.word(s, "specular", "shading", parseSpecularModel, sc.shading.specular);
+    r.word(s, "projection", "shading", parseProjection, sc.shading.projection);
+    r.boolean(s, "lighting", "shading", sc.shading.lighting);
+    r.boolean(s, "vertexColors", "shading", sc.shading.vertexColors);
+    r.boolean(s, "texture", "shading", sc.shading.texture);
+
+    const QJsonObject ob = r.object(json, "object", "object");
+    r.unknownKeys(ob, known["object"].toObject(), "object");
+    r.word(ob, "shape", "object", parseShape, sc.object.shape);
+    r.number(ob, "tessellation", "object", sc.object.tessellation, limits::kMinTessellation,
+             limits::kMaxTessellation);
+    r.numbers(ob, "rotation", "object", &sc.object.rotationDegrees.x, 3, -3600.0f, 3600.0f);
+    r.numbers(ob, "scale", "object", &sc.object.scale.x, 3, limits::kMinScale, limits::kMaxScale);
+    r.boolean(ob, "autoRotate", "object", sc.object.autoRotate);
+    r.text(ob, "mesh", "object", sc.object.meshPath);
+    r.word(ob, "normals", "object", parseNormalMode, sc.object.normals);
+    r.number(ob, "creaseAngle", "object", sc.object.creaseDegrees, 0.0f, limits::kMaxCreaseDegrees);
+    r.boolean(ob, "showNormals", "object", sc.object.showNormals);
+    r.boolean(ob, "adoptFileMaterial", "object", sc.object.adoptFileMaterial);
+
+    const QJsonObject c = r.object(json, "camera", "camera");
+    r.unknownKeys(c, known["camera"].toObject(), "camera");
+    const float far = limits::kMaxCoordinate;
+    r.numbers(c, "target", "camera", &sc.camera.target.x, 3, -far, far);
+    r.number(c, "distance", "camera", sc.camera.distance, 0.0f, far);
+    r.number(c, "yaw", "camera", sc.camera.yawDegrees, -3600.0f, 3600.0f);
+    r.number(c, "pitch", "camera", sc.camera.pitchDegrees, -90.0f, 90.0f);
+    // Re-apply the camera's own limits to whatever the file held.
+    sc.camera.zoom(0.0f);
+    sc.camera.orbit(0.0f, 0.0f);
+
+    const QJsonObject cmp = r.object(json, "compare", "compare");
+    r.unknownKeys(cmp, known["compare"].toObject(), "compare");
+    r.word(cmp, "mode", "compare", parseCompareMode, sc.compare.mode);
+    r.number(cmp, "wipe", "compare", sc.compare.wipe, 0.0f, 1.0f);
+    r.word(cmp, "shading", "compare", parseShading, sc.compare.shading);
+    r.word(cmp, "specular", "compare", parseSpecularModel, sc.compare.specular);
+
+    r.boolean(json, "showLight", {}, sc.showLight);
+    const QJsonObject values = r.object(json, "shaderValues", "shaderValues");
+    for (auto it = values.begin(); it != values.end(); ++it) {
+        const QJsonArray a = it.value().toArray();
+        const int n = int(a.size());
+        std::vector<float> v(std::size_t(std::clamp(n, 1, 4)), 0.0f);
+        QStringList bad;
+        Reader one(&bad);
+        if (n >= 1 && n <= 4)
+            one.numbers(values, it.key(), {}, v.data(), n, -3.4e38f, 3.4e38f);
+        if (n >= 1 && n <= 4 && bad.isEmpty())
+            sc.shaderValues[it.key()] = v;
+        else
+            r.ignore("shaderValues." + it.key(), "not 1 to 4 numbers");
+    }
+    return sc;
+}
+
+} // namespace lb
