@@ -1,0 +1,120 @@
+#include "scene_file.h"
+
+#include "glsl/program.h"
+
+#include <QFile>
+#include <QFileInfo>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QSaveFile>
+
+namespace lb {
+
+namespace {
+
+const char *kFormat = "lightbench-scene";
+
+} // namespace
+
+QByteArray sceneFileBytes(const SceneFile &file, const QDir &dir)
+{
+    QJsonObject root = file.scene.toJson();
+    QJsonObject object = root["object"].toObject();
+    if (!file.scene.object.meshPath.isEmpty())
+        object["mesh"] = dir.relativeFilePath(file.scene.object.meshPath);
+    root["object"] = object;
+    root["format"] = kFormat;
+    root["version"] = kSceneFileVersion;
+    if (file.program)
+        root["program"] = QJsonObject{{"name", file.program->name},
+                                      {"vertex", file.program->vertex},
+                                      {"fragment", file.program->fragment}};
+    return QJsonDocument(root).toJson(QJsonDocument::Indented);
+}
+
+SceneFileRead parseSceneFile(const QByteArray &bytes, const QDir &dir, const QString &name)
+{
+    SceneFileRead read;
+    QJsonParseError parseError;
+    const QJsonDocument document = QJsonDocument::fromJson(bytes, &parseError);
+    if (parseError.error != QJsonParseError::NoError) {
+        read.error = QString("%1: not a scene file: %2 at byte %3")
+                         .arg(name, parseError.errorString())
+                         .arg(parseError.offset);
+        return read;
+    }
+    if (!document.isObject()) {
+        read.error = QString("%1: not a scene file: the JSON is not an object").arg(name);
+        return read;
+    }
+    QJsonObject root = document.object();
+
+    // A file from a newer lightbench is read for what this one knows.
+    const QJsonValue format = root.take("format");
+    if (!format.isUndefined() && format != QJsonValue(kFormat))
+        read.ignored << QString("format (expected \"%1\")").arg(kFormat);
+    const QJsonValue version = root.take("version");
+    if (!version.isDouble() || version.toDouble() < 1)
+        read.ignored
+            << QString("version (missing or not a number; read as %1)").arg(kSceneFileVersion);
+    else if (version.toDouble() > kSceneFileVersion)
+        read.ignored << QString("version %1 (newer than this lightbench's %2: what it does not "
+                                "know is left out)")
+                            .arg(version.toDouble())
+                            .arg(kSceneFileVersion);
+
+    SceneFile file;
+    const QJsonValue program = root.take("program");
+    if (program.isObject()) {
+        const QJsonObject p = program.toObject();
+        const QJsonValue vertex = p["vertex"], fragment = p["fragment"];
+        if (vertex.isString() && fragment.isString() &&
+            vertex.toString().size() <= kMaxSourceCharacters &&
+            fragment.toString().size() <= kMaxSourceCharacters)
+            file.program =
+                ProgramText{p["name"].toString(), vertex.toString(), fragment.toString()};
+        else
+            read.ignored << "program (needs vertex and fragment sources as strings)";
+    } else if (!program.isUndefined() && !program.isNull()) {
+        read.ignored << "program (not an object)";
+    }
+
+    file.scene = Scene::fromJson(root, &read.ignored);
+    QString &mesh = file.scene.object.meshPath;
+    if (!mesh.isEmpty())
+        mesh = QDir::cleanPath(dir.absoluteFilePath(mesh));
+    read.file = file;
+    return read;
+}
+
+SceneFileRead readSceneFile(const QString &path)
+{
+    SceneFileRead read;
+    const QFileInfo info(path);
+    QFile f(path);
+    if (!info.exists())
+        read.error = QString("%1: no such file").arg(path);
+    else if (!info.isFile())
+        read.error = QString("%1: not a file").arg(path);
+    else if (info.size() > kMaxSceneFileBytes)
+        read.error = QString("%1: %2 MB is too large for a scene file (at most %3 MB)")
+                         .arg(path)
+                         .arg(info.size() / (1024 * 1024))
+                         .arg(kMaxSceneFileBytes / (1024 * 1024));
+    else if (!f.open(QIODevice::ReadOnly))
+        read.error = QString("%1: %2").arg(path, f.errorString());
+    else
+        read = parseSceneFile(f.readAll(), info.absoluteDir(), path);
+    return read;
+}
+
+QString writeSceneFile(const QString &path, const SceneFile &file)
+{
+    QSaveFile f(path);
+    if (!f.open(QIODevice::WriteOnly) ||
+        f.write(sceneFileBytes(file, QFileInfo(path).absoluteDir())) < 0 || !f.commit())
+        return QString("%1: %2").arg(path, f.errorString());
+    return {};
+}
+
+} // namespace lb

@@ -1,0 +1,55 @@
+#pragma once
+// Scene files: one versioned JSON document that reproduces the view, to hand out. It holds
+// the scene (lights, material, shading, object, camera, the shader's own uniform values,
+// compare settings), the program's sources inline, and the mesh's path relative to the file.
+//
+// {"format": "lightbench-scene", "version": 2, "program": {...}, "lights": [...], ...}
+
+#include "scene.h"
+
+#include <QByteArray>
+#include <QDir>
+#include <QString>
+#include <QStringList>
+
+#include <optional>
+
+namespace lb {
+
+constexpr int kSceneFileVersion = 2; // 1: the settings' single-light scene, no program
+constexpr qint64 kMaxSceneFileBytes = 64 * 1024 * 1024;
+
+// The program drawn with: its name (a preset, a file, "edited") and both sources.
+struct ProgramText
+{
+    QString name;
+    QString vertex, fragment;
+    bool operator==(const ProgramText &o) const
+    {
+        return name == o.name && vertex == o.vertex && fragment == o.fragment;
+    }
+};
+
+struct SceneFile
+{
+    Scene scene; // the mesh path is absolute here
+    // Absent: the built-in program of the scene's shading (it follows Gouraud / Phong).
+    std::optional<ProgramText> program;
+};
+
+struct SceneFileRead
+{
+    std::optional<SceneFile> file; // empty when the file cannot be used at all
+    QString error;                 // why, as "PATH: message"
+    QStringList ignored;           // what was read but not used, for one message
+};
+
+// The document; a mesh inside `dir` (or below, or beside) is written relative to it.
+QByteArray sceneFileBytes(const SceneFile &file, const QDir &dir);
+// Parses a document; relative mesh paths are taken relative to `dir`. `name` prefixes errors.
+SceneFileRead parseSceneFile(const QByteArray &bytes, const QDir &dir, const QString &name);
+SceneFileRead readSceneFile(const QString &path);
+// Writes atomically (QSaveFile); returns an empty string or "PATH: message".
+QString writeSceneFile(const QString &path, const SceneFile &file);
+
+} // namespace lb

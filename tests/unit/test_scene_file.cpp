@@ -1,0 +1,261 @@
+// Scene files: what is saved opens as the same scene; mangled files never crash and never
+// give values outside the model's limits.
+#include "scene_file.h"
+
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QRandomGenerator>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <cmath>
+
+using namespace lb;
+
+namespace {
+
+SceneFile sampleFile(const QDir &dir)
+{
+    SceneFile f;
+    f.scene.lights[1].enabled = true;
+    f.scene.lights[1].frame = LightFrame::Object;
+    f.scene.material.shininess = 42;
+    f.scene.shading.shading = Shading::Gouraud;
+    f.scene.object.meshPath = dir.filePath("meshes/bunny.ply");
+    f.scene.object.normals = NormalMode::Flat;
+    f.scene.camera.orbit(30, -10);
+    f.scene.compare.mode = CompareMode::SideBySide;
+    f.scene.shaderValues["bands"] = {4.0f};
+    f.program = ProgramText{"toon (edited)", "void main() { gl_Position = vec4(0.0); }",
+                            "void main() { gl_FragColor = vec4(1.0); }"};
+    return f;
+}
+
+// Every value the model holds is one it could have been given by the panels.
+QString outsideLimits(const Scene &s)
+{
+    for (const Light &l : s.lights) {
+        if (l.position.w != 0.0f && l.position.w != 1.0f)
+            return "light w";
+        for (int i = 0; i < 4; ++i)
+            if (!std::isfinite(l.position[i]) || std::abs(l.position[i]) > limits::kMaxCoordinate)
+                return "light position";
+        for (const glm::vec3 &c : {l.colors.ia, l.colors.id, l.colors.is})
+            for (int i = 0; i < 3; ++i)
+                if (!(c[i] >= 0.0f && c[i] <= 1.0f))
+                    return "light colour";
+    }
+    if (!(s.material.shininess >= limits::kMinShininess &&
+          s.material.shininess <= limits::kMaxShininess))
+        return "shininess";
+    if (s.object.tessellation < limits::kMinTessellation ||
+        s.object.tessellation > limits::kMaxTessellation)
+        return "tessellation";
+    for (int i = 0; i < 3; ++i)
+        if (!(s.object.scale[i] >= limits::kMinScale && s.object.scale[i] <= limits::kMaxScale))
+            return "scale";
+    if (!(s.compare.wipe >= 0.0f && s.compare.wipe <= 1.0f))
+        return "wipe";
+    if (!std::isfinite(s.camera.distance) || s.camera.distance <= 0.0f)
+        return "camera distance";
+    return {};
+}
+
+QJsonValue randomValue(QRandomGenerator &rng)
+{
+    switch (rng.bounded(9)) {
+    case 0:
+        return QJsonValue();
+    case 1:
+        return rng.bounded(2) == 1;
+    case 2:
+        return rng.bounded(2000) - 1000.0;
+    case 3:
+        return 1e300 * (rng.bounded(2) ? 1 : -1);
+    case 4:
+        return "phong";
+    case 5:
+        return QString(rng.bounded(40), QChar(0x41 + rng.bounded(26)));
+    case 6:
+        return QJsonArray{1, 2, 3, rng.bounded(3)};
+    case 7:
+        return QJsonArray{"x", QJsonObject{}, 0.5};
+    default:
+        return QJsonObject{{"position", QJsonArray{0, 0, 0, 0}}, {"enabled", 3}};
+    }
+}
+
+// Replaces, removes or adds one value somewhere in the tree.
+QJsonValue mangle(const QJsonValue &v, QRandomGenerator &rng, int depth)
+{
+    if (depth > 0 && rng.bounded(4) == 0)
+        return randomValue(rng);
+    if (v.isObject()) {
+        QJsonObject o = v.toObject();
+        const QStringList keys = o.keys();
+        if (!keys.isEmpty()) {
+            const QString key = keys[int(rng.bounded(keys.size()))];
+            switch (rng.bounded(5)) {
+            case 0:
+                o.remove(key);
+                break;
+            case 1:
+                o["unknown" + QString::number(rng.bounded(10))] = randomValue(rng);
+                break;
+            default:
+                o[key] = mangle(o[key], rng, depth + 1);
+            }
+        }
+        return o;
+    }
+    if (v.isArray()) {
+        QJsonArray a = v.toArray();
+        if (a.isEmpty() || rng.bounded(5) == 0)
+            a.append(randomValue(rng));
+        else {
+            const int i = int(rng.bounded(a.size()));
+            a[i] = mangle(a[i], rng, depth + 1);
+        }
+        return a;
+    }
+    return randomValue(rng);
+}
+
+} // namespace
+
+class TestSceneFile : public QObject
+{
+    Q_OBJECT
+private slots:
+    void savedSceneOpensTheSame()
+    {
+        QTemporaryDir tmp;
+        const QDir dir(tmp.path());
+        const SceneFile f = sampleFile(dir);
+        const QString path = dir.filePath("lesson.json");
+        QCOMPARE(writeSceneFile(path, f), QString());
+        const SceneFileRead read = readSceneFile(path);
+        QVERIFY2(read.error.isEmpty(), qPrintable(read.error));
+        QVERIFY2(read.ignored.isEmpty(), qPrintable(read.ignored.join(", ")));
+        QVERIFY(read.file->scene == f.scene);
+        QVERIFY(read.file->program == f.program);
+
+        // The mesh is written relative to the file, so a folder handed out keeps working.
+        QFile raw(path);
+        QVERIFY(raw.open(QIODevice::ReadOnly));
+        const QJsonObject json = QJsonDocument::fromJson(raw.readAll()).object();
+        QCOMPARE(json["object"]["mesh"].toString(), QString("meshes/bunny.ply"));
+        QCOMPARE(json["version"].toInt(), kSceneFileVersion);
+        QCOMPARE(json["program"]["fragment"].toString(), f.program->fragment);
+        const QDir moved("/elsewhere/class");
+        const SceneFileRead there = parseSceneFile(sceneFileBytes(f, dir), moved, "moved.json");
+        QCOMPARE(there.file->scene.object.meshPath, QString("/elsewhere/class/meshes/bunny.ply"));
+
+        // No program: the built-in one, which follows the shading choice.
+        SceneFile builtIn = f;
+        builtIn.program.reset();
+        QVERIFY(!parseSceneFile(sceneFileBytes(builtIn, dir), dir, "b").file->program);
+    }
+
+    void filesThatAreNotScenesAreRefused_data()
+    {
+        QTest::addColumn<QByteArray>("bytes");
+        QTest::addColumn<QString>("message");
+        QTest::newRow("empty") << QByteArray() << "not a scene file";
+        QTest::newRow("text") << QByteArray("hello") << "not a scene file";
+        QTest::newRow("truncated") << QByteArray("{\"lights\": [") << "not a scene file";
+        QTest::newRow("array") << QByteArray("[1, 2]") << "the JSON is not an object";
+        QTest::newRow("binary") << QByteArray("\x89PNG\r\n\x1a\n\0\0", 10) << "not a scene file";
+    }
+
+    void filesThatAreNotScenesAreRefused()
+    {
+        QFETCH(QByteArray, bytes);
+        QFETCH(QString, message);
+        const SceneFileRead read = parseSceneFile(bytes, QDir("/tmp"), "x.json");
+        QVERIFY(!read.file);
+        QVERIFY2(read.error.startsWith("x.json: ") && read.error.contains(message),
+                 qPrintable(read.error));
+    }
+
+    void missingFilesAndFoldersAreNamed()
+    {
+        QCOMPARE(readSceneFile("/nowhere/a.json").error, QString("/nowhere/a.json: no such file"));
+        QCOMPARE(readSceneFile("/tmp").error, QString("/tmp: not a file"));
+    }
+
+    void newerAndUnknownPartsAreListed()
+    {
+        QJsonObject json = QJsonDocument::fromJson(sceneFileBytes(SceneFile{}, QDir())).object();
+        json["version"] = 7;
+        json["hologram"] = QJsonObject{{"on", true}};
+        json["program"] = QJsonObject{{"vertex", 12}};
+        QJsonObject material = json["material"].toObject();
+        material["shininess"] = 77;
+        json["material"] = material;
+        const SceneFileRead read = parseSceneFile(QJsonDocument(json).toJson(), QDir(), "new.json");
+        QVERIFY(read.file);
+        QCOMPARE(read.file->scene.material.shininess, 77.0f); // what it knows is used
+        QCOMPARE(read.ignored.size(), 3);
+        QVERIFY(read.ignored[0].startsWith("version 7 (newer"));
+        QVERIFY(read.ignored.join(' ').contains("hologram (unknown field)"));
+        QVERIFY(read.ignored.join(' ').contains("program (needs vertex and fragment"));
+    }
+
+    void thousandsOfMangledFilesNeverCrash()
+    {
+        QRandomGenerator rng(20261122);
+        const QByteArray good = sceneFileBytes(sampleFile(QDir("/tmp")), QDir("/tmp"));
+        const QJsonObject tree = QJsonDocument::fromJson(good).object();
+        int opened = 0, refused = 0, listed = 0;
+        for (int i = 0; i < 4000; ++i) {
+            QByteArray bytes;
+            if (i % 4 == 0) { // bytes: flips, cuts, insertions
+                bytes = good;
+                for (int k = 0, n = 1 + int(rng.bounded(8)); k < n; ++k) {
+                    const int at = int(rng.bounded(bytes.size()));
+                    switch (rng.bounded(3)) {
+                    case 0:
+                        bytes[at] = char(rng.bounded(256));
+                        break;
+                    case 1:
+                        bytes.truncate(at);
+                        break;
+                    default:
+                        bytes.insert(at, "[{\"\":-1e999}]");
+                    }
+                    if (bytes.isEmpty())
+                        break;
+                }
+            } else { // structure: values replaced, keys removed or added, several times
+                QJsonValue v = tree;
+                for (int k = 0, n = 1 + int(rng.bounded(6)); k < n; ++k)
+                    v = mangle(v, rng, 0);
+                bytes = v.isObject() ? QJsonDocument(v.toObject()).toJson()
+                                     : QJsonDocument(QJsonArray{v}).toJson();
+            }
+            const SceneFileRead read = parseSceneFile(bytes, QDir("/tmp"), "m.json");
+            if (!read.file) {
+                QVERIFY(!read.error.isEmpty());
+                ++refused;
+                continue;
+            }
+            ++opened;
+            listed += read.ignored.isEmpty() ? 0 : 1;
+            const QString bad = outsideLimits(read.file->scene);
+            QVERIFY2(bad.isEmpty(), qPrintable(bad + " in\n" + QString::fromUtf8(bytes)));
+            // What was read saves and reads back as itself.
+            const SceneFileRead again =
+                parseSceneFile(sceneFileBytes(*read.file, QDir("/tmp")), QDir("/tmp"), "again");
+            QVERIFY(again.file && again.file->scene == read.file->scene);
+            QVERIFY(again.ignored.isEmpty());
+        }
+        qInfo("4000 mangled files: %d opened (%d with a list of what was ignored), %d refused",
+              opened, listed, refused);
+        QVERIFY(opened > 1000 && refused > 100 && listed > 1000);
+    }
+};
+
+QTEST_APPLESS_MAIN(TestSceneFile)
+#include "test_scene_file.moc"
