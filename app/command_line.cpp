@@ -96,6 +96,12 @@ struct OptionSpec
 };
 
 const OptionSpec kOptions[] = {
+    {"scene", "FILE.json",
+     "Start from a scene file (lights, material, shading, object, camera, program, compare); "
+     "the other options override it."},
+    {"save-scene", "FILE.json",
+     "Write the scene (with --scene and every option applied) to FILE.json; exit unless "
+     "--render, --probe or --bench-frames is given too."},
     {"render", "FILE.png", "Draw one frame offscreen into FILE.png and exit."},
     {"probe", "X,Y", "Print the probe's JSON for pixel X,Y (origin top-left) and exit."},
     {"size", "WxH", "Frame size for --render and --probe (default 800x600)."},
@@ -181,6 +187,26 @@ void parseInto(const QCommandLineParser &parser, CommandLine &cl)
         cl.fragmentPath = value("fragment");
         cl.vertexSource = readShader("vertex", cl.vertexPath);
         cl.fragmentSource = readShader("fragment", cl.fragmentPath);
+    }
+    if (given("scene")) {
+        cl.scenePath = value("scene");
+        SceneFileRead read = readSceneFile(cl.scenePath);
+        if (!read.file)
+            fail("scene", read.error);
+        cl.sceneFile = std::move(read.file);
+        cl.sceneIgnored = read.ignored;
+        if (!given("vertex") && cl.sceneFile->program) {
+            cl.programFromScene = true;
+            cl.vertexPath = cl.scenePath + " (vertex)";
+            cl.fragmentPath = cl.scenePath + " (fragment)";
+            cl.vertexSource = cl.sceneFile->program->vertex;
+            cl.fragmentSource = cl.sceneFile->program->fragment;
+        }
+    }
+    if (given("save-scene")) {
+        cl.saveScenePath = value("save-scene");
+        if (cl.saveScenePath.isEmpty())
+            fail("save-scene", "needs a file name");
     }
     cl.check = given("check");
     if (cl.check && !cl.hasUserProgram())
@@ -330,6 +356,22 @@ void CommandLine::applyTo(Scene &scene) const
 {
     for (const auto &f : sceneOverrides)
         f(scene);
+}
+
+Scene CommandLine::headlessScene() const
+{
+    Scene scene = sceneFile ? sceneFile->scene : Scene{};
+    applyTo(scene);
+    return scene;
+}
+
+std::optional<ProgramText> CommandLine::program() const
+{
+    if (programFromScene)
+        return sceneFile->program;
+    if (hasUserProgram())
+        return ProgramText{QFileInfo(vertexPath).completeBaseName(), vertexSource, fragmentSource};
+    return std::nullopt;
 }
 
 CommandLineResult parseCommandLine(const QStringList &arguments)

@@ -5,6 +5,7 @@
 
 #include "import/import_process.h"
 #include "scene.h"
+#include "scene_file.h"
 
 #include <QPoint>
 #include <QSize>
@@ -19,6 +20,14 @@ namespace lb {
 
 struct CommandLine
 {
+    // --scene FILE: the scene to start from (every other scene option overrides it), read
+    // while parsing; what it ignored is listed once on stderr. Its program is the user
+    // program unless --vertex/--fragment are given.
+    QString scenePath;
+    std::optional<SceneFile> sceneFile;
+    QStringList sceneIgnored;
+    QString saveScenePath; // --save-scene FILE: write the resulting scene, then go on or exit
+    bool programFromScene = false;
     // Each scene option given, in order; applied on top of the default or the saved scene.
     std::vector<std::function<void(Scene &)>> sceneOverrides;
     QString renderPath;          // --render FILE.png
@@ -39,8 +48,17 @@ struct CommandLine
     ImportLimits importLimits() const;
 
     bool hasUserProgram() const { return !vertexPath.isEmpty(); }
-    bool headless() const { return !renderPath.isEmpty() || probe || benchFrames > 0 || check; }
+    bool headless() const
+    {
+        return !renderPath.isEmpty() || probe || benchFrames > 0 || check ||
+               !saveScenePath.isEmpty();
+    }
+    // The scene options given, on top of `scene`.
     void applyTo(Scene &scene) const;
+    // Headless: the scene file's scene (or the defaults) with the options applied.
+    Scene headlessScene() const;
+    // The program for --save-scene: --vertex/--fragment, the scene file's, or none.
+    std::optional<ProgramText> program() const;
 };
 
 struct CommandLineResult

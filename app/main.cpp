@@ -58,10 +58,23 @@ int main(int argc, char **argv)
     QCoreApplication::setOrganizationName("lightbench");
     QCoreApplication::setApplicationName("lightbench");
 
+    if (!cl.sceneIgnored.isEmpty())
+        std::fprintf(stderr, "lightbench: %s: ignored: %s\n", qPrintable(cl.scenePath),
+                     qPrintable(cl.sceneIgnored.join("; ")));
     if (cl.headless()) {
         QGuiApplication app(argc, argv);
-        lb::Scene scene; // headless frames start from the defaults, not the saved session
-        cl.applyTo(scene);
+        // Headless frames start from the scene file or the defaults, not the saved session.
+        const lb::Scene scene = cl.headlessScene();
+        if (!cl.saveScenePath.isEmpty()) {
+            const QString error =
+                lb::writeSceneFile(cl.saveScenePath, lb::SceneFile{scene, cl.program()});
+            if (!error.isEmpty()) {
+                std::fprintf(stderr, "lightbench: --save-scene: %s\n", qPrintable(error));
+                return 1;
+            }
+            if (cl.renderPath.isEmpty() && !cl.probe && cl.benchFrames == 0 && !cl.check)
+                return 0;
+        }
         return lb::runHeadless(cl, scene);
     }
 

@@ -143,4 +143,13 @@ ProbeResult probePixel(const Scene &scene, const Mesh &mesh, const Texture &text
     return r;
 }
 
+ProbeResult probeFramePixel(const Scene &scene, const Mesh &mesh, const Texture &texture,
+                            QSize frame, QPoint pixel, PixelView *view)
+{
+    const PixelView v = viewOfPixel(scene, frame, pixel);
+    if (view)
+        *view = v;
+    return probePixel(sceneOfSide(scene, v.sideB), mesh, texture, v.size, v.pixel);
+}
+
 } // namespace lb

@@ -3,6 +3,7 @@
 // must be. A ray through the pixel's centre finds the triangle; its barycentric weights are
 // the perspective-correct ones, so Gouraud's interpolation can be repeated on the CPU.
 
+#include "compare.h"
 #include "frames.h"
 #include "lighting.h"
 #include "mesh.h"
@@ -42,5 +43,11 @@ LightingInputs lightingInputs(const Scene &scene, const Frames &frames, int inde
 // GL samples. The frame is `size` pixels large.
 ProbeResult probePixel(const Scene &scene, const Mesh &mesh, const Texture &texture, QSize size,
                        QPoint pixel);
+
+// The same for a pixel of a whole frame that may show two sides of a comparison: the side
+// the pixel shows, probed in that side's own view (the difference view probes side A).
+// `view` (optional) receives which side and where.
+ProbeResult probeFramePixel(const Scene &scene, const Mesh &mesh, const Texture &texture,
+                            QSize frame, QPoint pixel, PixelView *view = nullptr);
 
 } // namespace lb

@@ -40,12 +40,17 @@ QString Renderer::initialize()
     m_phong = builtIn("phong", error);
     m_unlit = builtIn("unlit", error);
     m_normals = builtIn("normals", error, "unlit");
+    m_differenceProgram = builtIn("difference", error);
     if (!error.isEmpty())
         return error;
 
     m_checkerId = uploadTexture(m_checker.image());
     upload(m_markerSphere, makeSphere(16, 8));
     upload(m_markerArrow, makeArrow(24));
+    Mesh screen;
+    screen.positions = {{-1.0f, -1.0f, 0.0f}, {3.0f, -1.0f, 0.0f}, {-1.0f, 3.0f, 0.0f}};
+    screen.indices = {0, 1, 2};
+    upload(m_screenTriangle, screen);
     m_initialized = true;
     return {};
 }
@@ -57,8 +62,11 @@ void Renderer::cleanup()
     destroy(m_object);
     destroy(m_markerSphere);
     destroy(m_markerArrow);
+    m_sideFbo[0].reset();
+    m_sideFbo[1].reset();
+    destroy(m_screenTriangle);
     m_objectUploaded = m_objectTextureUploaded = false;
-    for (Program *p : {&m_gouraud, &m_phong, &m_unlit, &m_normals, &m_user})
+    for (Program *p : {&m_gouraud, &m_phong, &m_unlit, &m_normals, &m_differenceProgram, &m_user})
         release(*p);
     for (GLuint *id : {&m_checkerId, &m_objectTextureId}) {
         glDeleteTextures(1, id);
@@ -120,8 +128,11 @@ ProgramBuild Renderer::setUserProgram(const QString &vertexSource, const QString
 
 const Renderer::Program &Renderer::objectProgram(const Scene &scene) const
 {
-    if (m_user.id)
-        return m_user;
+    return m_user.id ? m_user : builtInProgram(scene);
+}
+
+const Renderer::Program &Renderer::builtInProgram(const Scene &scene) const
+{
     return scene.shading.shading == Shading::Gouraud ? m_gouraud : m_phong;
 }
 
@@ -425,14 +436,55 @@ void Renderer::render(const Scene &scene, QSize pixels)
         m_objectTextureUploaded = true;
     }
 
-    glViewport(0, 0, pixels.width(), pixels.height());
+    const QRect whole(QPoint(0, 0), pixels);
+    const Program &a = objectProgram(scene);
+    const Scene sceneB = sceneOfSide(scene, true);
+    const Program &b = builtInProgram(sceneB);
+    const int divider = dividerColumn(scene, pixels);
+    glEnable(GL_SCISSOR_TEST);
+    switch (scene.compare.mode) {
+    case CompareMode::Off:
+        drawView(scene, a, whole, whole, pixels.height());
+        break;
+    case CompareMode::SideBySide:
+        for (bool sideB : {false, true}) {
+            const QRect view = viewRect(scene, pixels, sideB);
+            drawView(sideB ? sceneB : scene, sideB ? b : a, view, view, pixels.height());
+        }
+        drawDivider(divider, pixels);
+        break;
+    case CompareMode::Wipe:
+        drawView(scene, a, whole, QRect(0, 0, divider, pixels.height()), pixels.height());
+        drawView(sceneB, b, whole, QRect(divider, 0, pixels.width() - divider, pixels.height()),
+                 pixels.height());
+        drawDivider(divider, pixels);
+        break;
+    case CompareMode::Difference:
+        drawDifference(scene, pixels);
+        break;
+    }
+    glDisable(GL_SCISSOR_TEST);
+    glUseProgram(0);
+    // Leave the depth test off, as Qt's own GL painting (QOpenGLWidget composition, QPainter)
+    // expects to find it.
+    glDisable(GL_DEPTH_TEST);
+}
+
+void Renderer::drawView(const Scene &scene, const Program &program, QRect view, QRect clip,
+                        int frameHeight)
+{
+    // GL counts rows from the bottom.
+    glViewport(view.x(), frameHeight - view.y() - view.height(), view.width(), view.height());
+    glScissor(clip.x(), frameHeight - clip.y() - clip.height(), std::max(clip.width(), 0),
+              clip.height());
     glClearColor(kBackground.r, kBackground.g, kBackground.b, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    if (view.isEmpty() || clip.isEmpty())
+        return;
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
 
-    const Frames frames = computeFrames(scene, float(pixels.width()) / float(pixels.height()));
-    const Program &program = objectProgram(scene);
+    const Frames frames = computeFrames(scene, float(view.width()) / float(view.height()));
     glUseProgram(program.id);
     setUniforms(program, scene, frames);
     glActiveTexture(GL_TEXTURE0);
@@ -447,10 +499,84 @@ void Renderer::render(const Scene &scene, QSize pixels)
         for (const Light &light : scene.lights)
             if (light.enabled)
                 drawLightMarker(light, frames);
-    glUseProgram(0);
-    // Leave the depth test off, as Qt's own GL painting (QOpenGLWidget composition, QPainter)
-    // expects to find it.
     glDisable(GL_DEPTH_TEST);
+}
+
+void Renderer::drawDivider(int column, QSize frame)
+{
+    // A 2-pixel light line between the sides.
+    glScissor(std::clamp(column - 1, 0, frame.width()), 0, 2, frame.height());
+    glClearColor(0.85f, 0.85f, 0.85f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+}
+
+void Renderer::drawDifference(const Scene &scene, QSize pixels)
+{
+    GLint target = 0; // the caller's framebuffer (QOpenGLWidget's is not 0)
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
+    const QRect whole(QPoint(0, 0), pixels);
+    for (int side = 0; side < 2; ++side) {
+        auto &fbo = m_sideFbo[side];
+        if (!fbo || fbo->size() != pixels) {
+            QOpenGLFramebufferObjectFormat format;
+            format.setAttachment(QOpenGLFramebufferObject::Depth);
+            fbo = std::make_unique<QOpenGLFramebufferObject>(pixels, format);
+        }
+        fbo->bind();
+        const Scene sideScene = sceneOfSide(scene, side == 1);
+        drawView(sideScene, side == 1 ? builtInProgram(sideScene) : objectProgram(scene), whole,
+                 whole, pixels.height());
+    }
+    measureDifference(pixels);
+
+    glBindFramebuffer(GL_FRAMEBUFFER, GLuint(target));
+    glViewport(0, 0, pixels.width(), pixels.height());
+    glScissor(0, 0, pixels.width(), pixels.height());
+    glUseProgram(m_differenceProgram.id);
+    for (int side = 0; side < 2; ++side) {
+        glActiveTexture(GL_TEXTURE0 + GLenum(side));
+        glBindTexture(GL_TEXTURE_2D, m_sideFbo[side]->texture());
+        glUniform1i(uniformLocation(m_differenceProgram, side ? "uB" : "uA"), side);
+    }
+    glUniform1f(uniformLocation(m_differenceProgram, "uScale"), kDifferenceScale);
+    glUniform2f(uniformLocation(m_differenceProgram, "uPixels"), float(pixels.width()),
+                float(pixels.height()));
+    draw(m_screenTriangle);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, 0);
+}
+
+void Renderer::measureDifference(QSize pixels)
+{
+    // Both sides back to the CPU: the largest difference is a number for the user, and a
+    // GPU reduction for one number per frame is not worth its code at these sizes.
+    const std::size_t n = std::size_t(pixels.width()) * std::size_t(pixels.height()) * 4;
+    std::vector<std::uint8_t> side[2] = {std::vector<std::uint8_t>(n),
+                                         std::vector<std::uint8_t>(n)};
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    for (int s = 0; s < 2; ++s) {
+        m_sideFbo[s]->bind();
+        glReadPixels(0, 0, pixels.width(), pixels.height(), GL_RGBA, GL_UNSIGNED_BYTE,
+                     side[s].data());
+    }
+    DifferenceStats stats;
+    stats.valid = true;
+    std::size_t differing = 0;
+    for (std::size_t i = 0; i < n; i += 4) {
+        int d = 0;
+        for (std::size_t c = 0; c < 3; ++c)
+            d = std::max(d, std::abs(int(side[0][i + c]) - int(side[1][i + c])));
+        differing += d > 0 ? 1 : 0;
+        if (d > stats.largest) {
+            stats.largest = d;
+            const int p = int(i / 4);
+            // Rows come bottom-up from GL.
+            stats.at = QPoint(p % pixels.width(), pixels.height() - 1 - p / pixels.width());
+        }
+    }
+    stats.differing = double(differing) / double(n / 4);
+    m_difference = stats;
 }
 
 } // namespace lb

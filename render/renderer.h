@@ -2,6 +2,7 @@
 // Draws a scene into the current framebuffer with the built-in programs. Owns every GPU
 // object it creates; call cleanup() with the context current before the context goes away.
 
+#include "compare.h"
 #include "frames.h"
 #include "glsl/program.h"
 #include "mesh.h"
@@ -10,6 +11,7 @@
 
 #include <QOpenGLBuffer>
 #include <QOpenGLExtraFunctions>
+#include <QOpenGLFramebufferObject>
 #include <QOpenGLVertexArrayObject>
 #include <QSize>
 
@@ -32,8 +34,11 @@ public:
     void cleanup();
     bool isInitialized() const { return m_initialized; }
 
-    // Draws into the bound framebuffer, which is `pixels` large.
+    // Draws into the bound framebuffer, which is `pixels` large: one view, or two sides of
+    // a comparison (compare.h) side by side, across a wipe, or as their difference.
     void render(const Scene &scene, QSize pixels);
+    // What the last difference view measured (valid only after one was drawn).
+    const DifferenceStats &difference() const { return m_difference; }
 
     // Builds a program from the user's sources. When it links it replaces the user program
     // (the object is drawn with it instead of the built-in pair); when it does not, whatever
@@ -74,6 +79,14 @@ private:
     void release(Program &program);
     static GLint uniformLocation(const Program &program, const char *name);
     const Program &objectProgram(const Scene &scene) const;
+    const Program &builtInProgram(const Scene &scene) const;
+    // One side: cleared and drawn in `view` (top-left origin in a frame `frame` high), only
+    // inside `clip`.
+    void drawView(const Scene &scene, const Program &program, QRect view, QRect clip,
+                  int frameHeight);
+    void drawDivider(int column, QSize frame);
+    void drawDifference(const Scene &scene, QSize pixels);
+    void measureDifference(QSize pixels);
     void setUniforms(const Program &program, const Scene &scene, const Frames &frames);
     void setShaderValue(const ActiveUniform &uniform, const Scene &scene);
     // Up to n values into a uniform (an array's first n elements), in its declared type.
@@ -81,7 +94,7 @@ private:
     void drawLightMarker(const Light &light, const Frames &frames);
 
     bool m_initialized = false;
-    Program m_gouraud, m_phong, m_unlit, m_normals, m_user;
+    Program m_gouraud, m_phong, m_unlit, m_normals, m_differenceProgram, m_user;
     GLuint m_checkerId = 0, m_objectTextureId = 0;
     Texture m_checker;
 
@@ -89,6 +102,10 @@ private:
     std::shared_ptr<const Texture> m_objectTexture;
     bool m_objectUploaded = false, m_objectTextureUploaded = true;
     GpuMesh m_object, m_markerSphere, m_markerArrow;
+    // The difference view draws each side into its own framebuffer first.
+    std::unique_ptr<QOpenGLFramebufferObject> m_sideFbo[2];
+    GpuMesh m_screenTriangle; // covers the viewport: the difference pass draws it
+    DifferenceStats m_difference;
 };
 
 } // namespace lb

@@ -35,15 +35,20 @@ Comparison compareWithReference(OffscreenRenderer &offscreen, const Scene &scene
     const Mesh &mesh = offscreen.objectMesh(scene);
     const Texture &texture = offscreen.renderer().texture();
     const QSize size = frame.size();
+    // A compared frame may show two sides; the divider between them is no surface.
+    const int divider = dividerColumn(scene, size);
+    auto probe = [&](QPoint pixel) { return probeFramePixel(scene, mesh, texture, size, pixel); };
     Comparison c;
     for (int y = 3; y < size.height() - 3; y += step) {
         for (int x = 3; x < size.width() - 3; x += step) {
-            const ProbeResult p = probePixel(scene, mesh, texture, size, QPoint(x, y));
+            if (divider >= 0 && std::abs(x - divider) <= 3)
+                continue;
+            const ProbeResult p = probe(QPoint(x, y));
             if (!p.hit)
                 continue;
             bool interior = true;
             for (const QPoint d : {QPoint(2, 0), QPoint(-2, 0), QPoint(0, 2), QPoint(0, -2)}) {
-                const ProbeResult n = probePixel(scene, mesh, texture, size, QPoint(x, y) + d);
+                const ProbeResult n = probe(QPoint(x, y) + d);
                 interior = interior && n.hit && glm::dot(n.normal, p.normal) > 0.98f;
             }
             if (!interior)

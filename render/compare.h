@@ -1,0 +1,44 @@
+#pragma once
+// Compare views: two programs on one camera. Side A is the program on screen (the editor's),
+// side B the built-in program with the compare settings' shading and specular model. This
+// file says where each side is drawn; the renderer draws them, the probe reads them back.
+
+#include "scene.h"
+
+#include <QPoint>
+#include <QRect>
+#include <QSize>
+
+namespace lb {
+
+// |A - B| at or above this (out of 1) is white in the difference view's heat map.
+constexpr float kDifferenceScale = 64.0f / 255.0f;
+
+// The scene side B draws: the same scene with the compare settings' shading choices.
+Scene sceneOfSide(const Scene &scene, bool sideB);
+
+// The rectangle a side draws into (top-left origin): the left or right half side by side,
+// the whole frame otherwise (the wipe shows each side on its part of it).
+QRect viewRect(const Scene &scene, QSize frame, bool sideB);
+// Side by side: the column where B starts; wipe: the wipe's column; -1 otherwise.
+int dividerColumn(const Scene &scene, QSize frame);
+
+// Which side a pixel of the frame shows, and where it lies in that side's own view.
+struct PixelView
+{
+    bool sideB = false;
+    QSize size;   // the side's view
+    QPoint pixel; // in the side's view, top-left origin
+};
+PixelView viewOfPixel(const Scene &scene, QSize frame, QPoint pixel);
+
+// The largest channel difference between the sides, as the difference view measures it.
+struct DifferenceStats
+{
+    bool valid = false;
+    int largest = 0;        // out of 255
+    QPoint at;              // where (top-left origin), the first such pixel
+    double differing = 0.0; // the fraction of pixels that differ at all
+};
+
+} // namespace lb
