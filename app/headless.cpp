@@ -171,13 +171,23 @@ int runHeadless(const CommandLine &cl, const Scene &requested)
         printLine("lightbench: --render: cannot write '" + cl.renderPath.toUtf8() + "'", stderr);
         return 1;
     }
+    if (scene.compare.mode == CompareMode::Difference) {
+        const DifferenceStats &d = offscreen.renderer().difference();
+        QJsonObject o;
+        o["largestDifference"] = d.largest;
+        o["at"] = QJsonArray{d.at.x(), d.at.y()};
+        o["differing"] = std::round(d.differing * 1e6) / 1e6;
+        printLine(QJsonDocument(o).toJson(QJsonDocument::Compact), stdout);
+    }
     if (cl.probe) {
         const Mesh &mesh = offscreen.objectMesh(scene);
+        PixelView view;
         const ProbeResult probe =
-            probePixel(scene, mesh, offscreen.renderer().texture(), cl.size, *cl.probe);
-        printLine(
-            QJsonDocument(probeJson(probe, frame, *cl.probe, scene)).toJson(QJsonDocument::Compact),
-            stdout);
+            probeFramePixel(scene, mesh, offscreen.renderer().texture(), cl.size, *cl.probe, &view);
+        QJsonObject o = probeJson(probe, frame, *cl.probe, sceneOfSide(scene, view.sideB));
+        if (scene.compare.mode != CompareMode::Off)
+            o["side"] = view.sideB ? "B" : "A";
+        printLine(QJsonDocument(o).toJson(QJsonDocument::Compact), stdout);
     }
     return 0;
 }

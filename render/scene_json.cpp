@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 
 namespace lb {
 
@@ -103,8 +104,9 @@ public:
         const double d = j.toDouble();
         const double c = std::clamp(d, double(lo), double(hi));
         v = T(c);
-        if (c != d || double(v) != c)
-            ignore(join(path, key), "out of range, clamped");
+        const bool fraction = std::is_integral_v<T> && double(v) != c;
+        if (c != d || fraction)
+            ignore(join(path, key), fraction ? "not a whole number" : "out of range, clamped");
     }
 
     void boolean(const QJsonObject &o, const QString &key, const QString &path, bool &v)

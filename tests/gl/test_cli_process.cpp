@@ -67,6 +67,101 @@ private slots:
         QCOMPARE(QJsonDocument::fromJson(miss.out).object()["hit"].toBool(true), false);
     }
 
+    void savedSceneRendersTheSameFrame()
+    {
+        // Options -> --save-scene -> --scene: the same picture, the program included.
+        const QString scene = m_dir.filePath("lesson.json");
+        const QString data = LB_TEST_DATA;
+        const QStringList options{"--shape",        "torus",
+                                  "--shading",      "gouraud",
+                                  "--light",        "1,2,3,1",
+                                  "--kd",           "0.2,0.6,0.9",
+                                  "--camera-orbit", "30,20",
+                                  "--vertex",       data + "/exercise_diffuse.vert",
+                                  "--fragment",     data + "/exercise_diffuse.frag",
+                                  "--size",         "200x150"};
+        const Run saved = run(QStringList{"--save-scene", scene} + options);
+        QVERIFY2(saved.exitCode == 0, saved.err.constData());
+        const QString direct = m_dir.filePath("direct.png"), fromFile = m_dir.filePath("file.png");
+        QCOMPARE(run(QStringList{"--render", direct} + options).exitCode, 0);
+        const Run r = run({"--scene", scene, "--render", fromFile, "--size", "200x150"});
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        QVERIFY(!r.err.contains("ignored"));
+        const QImage a(direct), b(fromFile);
+        QCOMPARE(a.size(), b.size());
+        int worst = 0;
+        for (int y = 0; y < a.height(); ++y)
+            for (int x = 0; x < a.width(); ++x)
+                worst = std::max(worst, std::abs(qGray(a.pixel(x, y)) - qGray(b.pixel(x, y))));
+        QVERIFY2(worst <= 1, qPrintable(QString("%1/255 apart").arg(worst)));
+        // Options after the scene override it.
+        const QString other = m_dir.filePath("other.png");
+        QCOMPARE(run({"--scene", scene, "--render", other, "--size", "200x150", "--shape", "cube"})
+                     .exitCode,
+                 0);
+        QVERIFY(QImage(other) != b);
+    }
+
+    void badSceneFilesAreRefusedOrReadInPart()
+    {
+        const QString notJson = m_dir.filePath("notes.json");
+        QFile f(notJson);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write("these are my notes, not a scene");
+        f.close();
+        Run r = run({"--scene", notJson, "--render", m_dir.filePath("x.png")});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("--scene: " + notJson.toUtf8() + ": not a scene file"),
+                 r.err.constData());
+        r = run({"--scene", "/nowhere/scene.json"});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY(r.err.contains("/nowhere/scene.json: no such file"));
+
+        const QString odd = m_dir.filePath("odd.json");
+        QFile g(odd);
+        QVERIFY(g.open(QIODevice::WriteOnly));
+        g.write(R"({"version": 9, "material": {"shininess": "shiny", "kd": [0, 0, 1]},
+                    "sparkles": 3})");
+        g.close();
+        const QString png = m_dir.filePath("odd.png");
+        r = run({"--scene", odd, "--render", png, "--size", "200x150"});
+        QCOMPARE(r.exitCode, 0);
+        QByteArray line; // one line lists everything ignored
+        for (const QByteArray &l : r.err.split('\n'))
+            if (l.contains("ignored"))
+                line = line.isEmpty() ? l : "more than one line";
+        QVERIFY2(line.startsWith("lightbench: " + odd.toUtf8() + ": ignored: version 9"),
+                 r.err.constData());
+        QVERIFY(line.contains("material.shininess (not a number)"));
+        QVERIFY(line.contains("sparkles (unknown field)"));
+        const QRgb centre = QImage(png).pixel(100, 75);
+        QVERIFY(qBlue(centre) > qRed(centre)); // kd was read
+    }
+
+    void differenceRenderPrintsTheLargestDifference()
+    {
+        const QString scene = m_dir.filePath("diff.json");
+        QVERIFY(run({"--save-scene", scene, "--show-light", "off"}).exitCode == 0);
+        QFile f(scene);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        QJsonObject json = QJsonDocument::fromJson(f.readAll()).object();
+        f.close();
+        QJsonObject compare = json["compare"].toObject();
+        compare["mode"] = "difference";
+        compare["shading"] = "gouraud";
+        json["compare"] = compare;
+        QVERIFY(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
+        f.write(QJsonDocument(json).toJson());
+        f.close();
+        const Run r = run({"--scene", scene, "--render", m_dir.filePath("diff.png")});
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        const QJsonObject o = QJsonDocument::fromJson(r.out).object();
+        QVERIFY2(o["largestDifference"].toInt() >= 20, r.out.constData());
+        const Run same =
+            run({"--scene", scene, "--render", m_dir.filePath("same.png"), "--shading", "gouraud"});
+        QCOMPARE(QJsonDocument::fromJson(same.out).object()["largestDifference"].toInt(-1), 0);
+    }
+
     void badValuesExitWithCode2AndOneLine_data()
     {
         QTest::addColumn<QStringList>("args");
