@@ -8,6 +8,7 @@
 #include "mesh_actions.h"
 #include "object_loader.h"
 #include "offscreen.h"
+#include "scene_actions.h"
 #include "viewport.h"
 
 #include <QApplication>
@@ -58,7 +59,7 @@ int main(int argc, char **argv)
     QCoreApplication::setOrganizationName("lightbench");
     QCoreApplication::setApplicationName("lightbench");
 
-    if (!cl.sceneIgnored.isEmpty())
+    if (!cl.sceneIgnored.isEmpty() && cl.headless()) // the window shows them in a message
         std::fprintf(stderr, "lightbench: %s: ignored: %s\n", qPrintable(cl.scenePath),
                      qPrintable(cl.sceneIgnored.join("; ")));
     if (cl.headless()) {
@@ -87,6 +88,10 @@ int main(int argc, char **argv)
         limits.seconds = cl.importSeconds.value_or(limits.seconds);
         window.meshActions()->setSessionLimits(limits);
     }
+    // A scene file opens as File > Open Scene would (its message included); the options
+    // given beside it apply on top.
+    if (!cl.scenePath.isEmpty())
+        window.sceneActions()->open(cl.scenePath);
     lb::Scene scene = window.document().scene();
     cl.applyTo(scene);
     window.document().set(scene);
@@ -98,7 +103,7 @@ int main(int argc, char **argv)
         });
         return app.exec();
     }
-    if (cl.hasUserProgram()) // the window opens them in the editor, as File > Open would
+    if (cl.hasUserProgram() && !cl.programFromScene) // opened as File > Open Shaders would
         window.editorPanel()->openFiles({cl.vertexPath, cl.fragmentPath});
     window.show();
 

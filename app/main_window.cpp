@@ -7,6 +7,7 @@
 #include "mesh_actions.h"
 #include "object_loader.h"
 #include "object_panel.h"
+#include "scene_actions.h"
 #include "shading_panel.h"
 #include "uniform_panel.h"
 #include "viewport.h"
@@ -101,6 +102,8 @@ MainWindow::MainWindow(QSettings &settings, QWidget *parent)
                 if (const QString error = m_editor->openFiles(paths); !error.isEmpty())
                     QMessageBox::warning(this, tr("Shader files"), error);
             });
+    m_sceneActions = new SceneActions(this, &m_document, m_editor, m_viewport, m_settings);
+    connect(m_meshActions, &MeshActions::sceneFileDropped, m_sceneActions, &SceneActions::open);
     connect(m_object, &ObjectPanel::openMeshRequested, m_meshActions, &MeshActions::showOpenDialog);
     m_glLabel = new QLabel(this);
     statusBar()->addPermanentWidget(m_glLabel);
@@ -135,6 +138,8 @@ void MainWindow::buildMenus()
     };
 
     QMenu *file = menuBar()->addMenu(tr("&File"));
+    m_sceneActions->addToMenu(file);
+    file->addSeparator();
     const QString filter = tr("Shader pairs (*.vert *.frag);;All files (*)");
     auto report = [this](const QString &error) {
         if (!error.isEmpty())
@@ -193,6 +198,11 @@ void MainWindow::buildMenus()
     addItem(shading, tr("Toggle &Lighting"), QKeySequence(tr("L")), [this] {
         m_document.edit([](Scene &s) { s.shading.lighting = !s.shading.lighting; });
     });
+    addItem(shading, tr("&Compare: Off / Side by Side / Wipe / Difference"), QKeySequence(tr("C")),
+            [this] {
+                m_document.edit(
+                    [](Scene &s) { s.compare.mode = CompareMode((int(s.compare.mode) + 1) % 4); });
+            });
 
     menuBar()->addMenu(view);
     addItem(view, tr("&Reset Camera"), QKeySequence(tr("R")),
@@ -211,8 +221,11 @@ void MainWindow::buildMenus()
             tr("Left drag: orbit the camera\nRight or middle drag: pan\nWheel: zoom\n"
                "R: reset the camera\nSpace: auto-rotate the object\n"
                "N: show normals as lines\nCtrl+M: open a mesh (or drop one on the window)\n"
+               "Ctrl+Shift+O / Ctrl+Alt+S: open / save a scene\n"
+               "Ctrl+E: export the view as an image\nCtrl+Shift+C: copy the view\n"
                "G: Gouraud / Phong shading\nB: Phong / Blinn-Phong specular\n"
                "P: perspective / orthographic\nL: lighting on / off\n"
+               "C: compare off / side by side / wipe / difference (drag the wipe's line)\n"
                "Ctrl+Shift+R: reset everything"));
     });
 }

@@ -20,6 +20,7 @@ class MaterialPanel;
 class MeshActions;
 class ObjectLoader;
 class ObjectPanel;
+class SceneActions;
 class ShadingPanel;
 class UniformPanel;
 class Viewport;
@@ -41,6 +42,7 @@ public:
     UniformPanel *uniformPanel() const { return m_uniforms; }
     ObjectLoader *objectLoader() const { return m_loader; }
     MeshActions *meshActions() const { return m_meshActions; }
+    SceneActions *sceneActions() const { return m_sceneActions; }
 
     void saveSettings();
 
@@ -63,6 +65,7 @@ private:
     UniformPanel *m_uniforms;
     ObjectLoader *m_loader;
     MeshActions *m_meshActions;
+    SceneActions *m_sceneActions;
     QLabel *m_glLabel;
     QTimer m_saveTimer; // saves the scene shortly after each change, so a kill loses little
 };

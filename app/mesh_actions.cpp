@@ -174,10 +174,21 @@ bool MeshActions::eventFilter(QObject *watched, QEvent *event)
         }
     } else if (event->type() == QEvent::Drop) {
         auto *drop = static_cast<QDropEvent *>(event);
-        QStringList shaders, meshes;
-        for (const QUrl &url : drop->mimeData()->urls())
-            if (url.isLocalFile())
-                (isShaderFile(url.toLocalFile()) ? shaders : meshes) << url.toLocalFile();
+        QStringList shaders, meshes, scenes;
+        for (const QUrl &url : drop->mimeData()->urls()) {
+            const QString path = url.toLocalFile();
+            if (!url.isLocalFile())
+                continue;
+            if (QFileInfo(path).suffix().toLower() == "json")
+                scenes << path;
+            else
+                (isShaderFile(path) ? shaders : meshes) << path;
+        }
+        if (!scenes.isEmpty()) { // a scene brings its own mesh and shaders
+            emit sceneFileDropped(scenes.first());
+            drop->acceptProposedAction();
+            return true;
+        }
         if (!shaders.isEmpty())
             emit shaderFilesDropped(shaders);
         if (!meshes.isEmpty())

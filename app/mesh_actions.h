@@ -42,6 +42,7 @@ public:
 
 signals:
     void shaderFilesDropped(const QStringList &paths);
+    void sceneFileDropped(const QString &path);
 
 protected:
     bool eventFilter(QObject *watched, QEvent *event) override; // drops on the window

@@ -27,7 +27,7 @@ Frames computeFrames(const Scene &scene, float aspect)
     f.model = modelMatrix(scene.object);
     f.view = scene.camera.view();
     f.modelView = f.view * f.model;
-    f.normals = normalMatrix(f.modelView);
+    f.normals = scene.shading.normalsByModelView ? f.modelView : normalMatrix(f.modelView);
     f.viewNormals = normalMatrix(f.view);
     f.projection = scene.camera.projection(aspect, scene.shading.projection);
     return f;

@@ -52,6 +52,9 @@ struct ShadingSettings
     bool lighting = true;
     bool vertexColors = false;
     bool texture = false;
+    // Wrong on purpose, to show why: normals transformed by the model-view itself instead of
+    // its inverse transpose (they tilt under a non-uniform scale).
+    bool normalsByModelView = false;
 };
 
 struct ObjectSettings

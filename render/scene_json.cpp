@@ -84,8 +84,9 @@ public:
         bool clamped = false;
         for (int i = 0; i < n; ++i) {
             const double d = a[i].toDouble();
-            v[i] = float(std::clamp(d, double(lo), double(hi)));
-            clamped = clamped || double(v[i]) != d;
+            const double c = std::clamp(d, double(lo), double(hi));
+            v[i] = float(c);
+            clamped = clamped || c != d;
         }
         if (clamped)
             ignore(join(path, key), "out of range, clamped");
@@ -190,6 +191,7 @@ QJsonObject Scene::toJson() const
     s["lighting"] = shading.lighting;
     s["vertexColors"] = shading.vertexColors;
     s["texture"] = shading.texture;
+    s["normalsByModelView"] = shading.normalsByModelView;
 
     QJsonObject ob;
     ob["shape"] = toName(object.shape);
@@ -274,6 +276,7 @@ Scene Scene::fromJson(const QJsonObject &json, QStringList *ignored)
     r.boolean(s, "lighting", "shading", sc.shading.lighting);
     r.boolean(s, "vertexColors", "shading", sc.shading.vertexColors);
     r.boolean(s, "texture", "shading", sc.shading.texture);
+    r.boolean(s, "normalsByModelView", "shading", sc.shading.normalsByModelView);
 
     const QJsonObject ob = r.object(json, "object", "object");
     r.unknownKeys(ob, known["object"].toObject(), "object");

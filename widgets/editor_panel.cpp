@@ -195,6 +195,27 @@ QString EditorPanel::programName() const
     return isModified() || !m_builtInVertex.isEmpty() ? tr("%1 (edited)").arg(m_origin) : m_origin;
 }
 
+std::optional<ProgramText> EditorPanel::program() const
+{
+    if (showsBuiltIn())
+        return std::nullopt;
+    return ProgramText{programName(), source(ShaderStage::Vertex), source(ShaderStage::Fragment)};
+}
+
+void EditorPanel::setProgram(const std::optional<ProgramText> &program, bool gouraud)
+{
+    if (!program) {
+        loadPreset(builtInPreset(gouraud));
+        return;
+    }
+    setSources(program->vertex, program->fragment);
+    m_origin = program->name.isEmpty() ? tr("the scene's shaders") : program->name;
+    if (m_origin.endsWith(tr(" (edited)"))) // the name a saved edit got; it is edited again
+        m_origin.chop(tr(" (edited)").size());
+    updateTitles();
+    emit edited();
+}
+
 void EditorPanel::followShading(bool gouraud)
 {
     if (showsBuiltIn() && gouraud != m_builtInIsGouraud)

@@ -4,6 +4,7 @@
 // Ctrl+Enter, or only on demand; the diagnostics in a list below (click to jump); presets.
 
 #include "glsl/program.h"
+#include "scene_file.h"
 
 #include <QFileSystemWatcher>
 #include <QTimer>
@@ -53,6 +54,10 @@ public:
     // What is in the editor, in words: a preset's name, the file, "edited" when changed.
     QString programName() const;
     bool showsBuiltIn() const; // an untouched built-in program, following the Shading panel
+    // The program for a scene file: none while the built-in one shows untouched.
+    std::optional<ProgramText> program() const;
+    // A scene file's program; none: the built-in program of the shading mode.
+    void setProgram(const std::optional<ProgramText> &program, bool gouraud);
     bool isModified() const;
     bool isModified(ShaderStage stage) const;
 

@@ -3,7 +3,11 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QFormLayout>
+#include <QLabel>
 #include <QSignalBlocker>
+#include <QSlider>
+
+#include <cmath>
 
 namespace lb {
 
@@ -57,23 +61,69 @@ ShadingPanel::ShadingPanel(SceneDocument *document, QWidget *parent) : ScenePane
     feeds(m_lighting, {Semantic::EnableLighting}, "uEnableLighting");
     feeds(m_vertexColors, {Semantic::EnableVertexColor}, "uEnableVertexColor");
     feeds(m_texture, {Semantic::EnableTexture}, "uEnableTexture");
+    m_normalsByModelView = makeCheck(
+        tr("Normals by the model-view (wrong)"),
+        tr("Transform normals by mModelView instead of its inverse transpose, to see why the "
+           "normal matrix exists: under a non-uniform scale the normals tilt"),
+        &ShadingSettings::normalsByModelView);
+    feeds(m_normalsByModelView, {Semantic::Normals}, "mNormals or uNormalMatrix");
+
+    auto *compareTitle = new QLabel(tr("<b>Compare</b> with a built-in program"), this);
+    compareTitle->setToolTip(tr("Side A is the program on screen (the editor's); side B is the "
+                                "built-in program with the choices below; one camera"));
+    form->addRow(compareTitle);
+    m_compareMode = makeCombo({tr("Off"), tr("Side by side"), tr("Wipe"), tr("Difference |A - B|")},
+                              tr("Side by side: A left, B right; wipe: drag the line in the view; "
+                                 "difference: |A - B| as a heat map (key C cycles)"));
+    connect(m_compareMode, &QComboBox::currentIndexChanged, this,
+            [this](int i) { edit([&](Scene &s) { s.compare.mode = CompareMode(i); }); });
+    form->addRow(tr("View"), m_compareMode);
+    m_compareShading = makeCombo({tr("B: Gouraud"), tr("B: Phong")},
+                                 tr("Side B's shading: per vertex or per fragment"));
+    connect(m_compareShading, &QComboBox::currentIndexChanged, this,
+            [this](int i) { edit([&](Scene &s) { s.compare.shading = Shading(i); }); });
+    form->addRow(tr("B shading"), m_compareShading);
+    m_compareSpecular =
+        makeCombo({tr("B: Phong (R·V)"), tr("B: Blinn-Phong (N·H)")}, tr("Side B's specular term"));
+    connect(m_compareSpecular, &QComboBox::currentIndexChanged, this,
+            [this](int i) { edit([&](Scene &s) { s.compare.specular = SpecularModel(i); }); });
+    form->addRow(tr("B specular"), m_compareSpecular);
+    m_wipe = new QSlider(Qt::Horizontal, this);
+    m_wipe->setRange(0, 1000);
+    m_wipe->setToolTip(tr("Where the wipe divides A (left) from B (right)"));
+    connect(m_wipe, &QSlider::valueChanged, this,
+            [this](int v) { edit([&](Scene &s) { s.compare.wipe = float(v) / 1000.0f; }); });
+    form->addRow(tr("Wipe"), m_wipe);
 
     addResetButton(form, tr("Reset shading"),
                    tr("Phong shading, Blinn-Phong specular, perspective, lighting on"),
-                   [](Scene &s) { s.shading = ShadingSettings{}; });
+                   [](Scene &s) {
+                       s.shading = ShadingSettings{};
+                       s.compare = CompareSettings{};
+                   });
     refreshNow();
 }
 
 void ShadingPanel::refresh(const Scene &scene)
 {
     const QSignalBlocker b1(m_shading), b2(m_specular), b3(m_projection), b4(m_lighting),
-        b5(m_vertexColors), b6(m_texture);
+        b5(m_vertexColors), b6(m_texture), b7(m_normalsByModelView), b8(m_compareMode),
+        b9(m_compareShading), b10(m_compareSpecular), b11(m_wipe);
     m_shading->setCurrentIndex(int(scene.shading.shading));
     m_specular->setCurrentIndex(int(scene.shading.specular));
     m_projection->setCurrentIndex(int(scene.shading.projection));
     m_lighting->setChecked(scene.shading.lighting);
     m_vertexColors->setChecked(scene.shading.vertexColors);
     m_texture->setChecked(scene.shading.texture);
+    m_normalsByModelView->setChecked(scene.shading.normalsByModelView);
+    m_compareMode->setCurrentIndex(int(scene.compare.mode));
+    m_compareShading->setCurrentIndex(int(scene.compare.shading));
+    m_compareSpecular->setCurrentIndex(int(scene.compare.specular));
+    m_wipe->setValue(int(std::lround(scene.compare.wipe * 1000.0f)));
+    const bool comparing = scene.compare.mode != CompareMode::Off;
+    m_compareShading->setEnabled(comparing);
+    m_compareSpecular->setEnabled(comparing);
+    m_wipe->setEnabled(scene.compare.mode == CompareMode::Wipe);
 }
 
 } // namespace lb

@@ -1,10 +1,12 @@
 #pragma once
-// Shading: Gouraud or Phong, the specular term, the projection, and the three switches.
+// Shading: Gouraud or Phong, the specular term, the projection, the switches, and the
+// comparison with a built-in program (side by side, wipe, difference; compare.h).
 
 #include "scene_panel.h"
 
 class QCheckBox;
 class QComboBox;
+class QSlider;
 
 namespace lb {
 
@@ -20,6 +22,11 @@ public:
     QCheckBox *lightingCheck() const { return m_lighting; }
     QCheckBox *vertexColorsCheck() const { return m_vertexColors; }
     QCheckBox *textureCheck() const { return m_texture; }
+    QCheckBox *normalsByModelViewCheck() const { return m_normalsByModelView; }
+    QComboBox *compareModeCombo() const { return m_compareMode; }
+    QComboBox *compareShadingCombo() const { return m_compareShading; }
+    QComboBox *compareSpecularCombo() const { return m_compareSpecular; }
+    QSlider *wipeSlider() const { return m_wipe; }
 
 protected:
     void refresh(const Scene &scene) override;
@@ -31,6 +38,11 @@ private:
     QCheckBox *m_lighting;
     QCheckBox *m_vertexColors;
     QCheckBox *m_texture;
+    QCheckBox *m_normalsByModelView;
+    QComboBox *m_compareMode;
+    QComboBox *m_compareShading;
+    QComboBox *m_compareSpecular;
+    QSlider *m_wipe;
 };
 
 } // namespace lb

@@ -4,9 +4,11 @@
 #include <QMouseEvent>
 #include <QOpenGLContext>
 #include <QOpenGLExtraFunctions>
+#include <QOpenGLFramebufferObject>
 #include <QPainter>
 #include <QWheelEvent>
 
+#include <algorithm>
 #include <cmath>
 
 namespace lb {
@@ -21,6 +23,7 @@ Viewport::Viewport(SceneDocument *document, QWidget *parent)
 {
     setMinimumSize(320, 240);
     setFocusPolicy(Qt::StrongFocus);
+    setMouseTracking(true); // the cursor changes over the wipe's line
     setToolTip(tr("Left drag: orbit - right or middle drag: pan - wheel: zoom - R: reset view"));
     connect(document, &SceneDocument::changed, this, [this] {
         syncAnimation();
@@ -32,6 +35,10 @@ Viewport::Viewport(SceneDocument *document, QWidget *parent)
     m_banner->setStyleSheet("QLabel { background: rgba(120, 20, 20, 200); color: white; "
                             "padding: 4px 8px; }");
     m_banner->hide();
+    m_compareLabel = new QLabel(this);
+    m_compareLabel->setStyleSheet("QLabel { background: rgba(0, 0, 0, 170); color: white; "
+                                  "padding: 3px 6px; }");
+    m_compareLabel->hide();
     m_animation.setInterval(16);
     connect(&m_animation, &QTimer::timeout, this, &Viewport::advanceAnimation);
     syncAnimation();
@@ -86,6 +93,59 @@ void Viewport::paintGL()
         return;
     }
     m_renderer.render(m_document->scene(), size() * devicePixelRatio());
+    updateCompareLabel();
+}
+
+QString Viewport::compareText() const
+{
+    const Scene &s = m_document->scene();
+    const QString b =
+        tr("B: built-in %1, %2")
+            .arg(s.compare.shading == Shading::Gouraud ? tr("Gouraud") : tr("Phong"),
+                 s.compare.specular == SpecularModel::Blinn ? tr("Blinn-Phong (N\u00b7H)")
+                                                            : tr("Phong (R\u00b7V)"));
+    switch (s.compare.mode) {
+    case CompareMode::Off:
+        return {};
+    case CompareMode::SideBySide:
+    case CompareMode::Wipe:
+        return tr("A (left): the program on screen  |  %1 (right)").arg(b);
+    case CompareMode::Difference: {
+        const DifferenceStats &d = m_renderer.difference();
+        if (!d.valid)
+            return tr("|A - B|: not drawn yet");
+        return tr("|A - B| against %1: largest %2/255 at (%3, %4), %5% of pixels differ; "
+                  "scale 0 (black) to %6/255 (white)")
+            .arg(b)
+            .arg(d.largest)
+            .arg(d.at.x())
+            .arg(d.at.y())
+            .arg(d.differing * 100.0, 0, 'f', 1)
+            .arg(int(std::lround(kDifferenceScale * 255.0f)));
+    }
+    }
+    return {};
+}
+
+void Viewport::updateCompareLabel()
+{
+    const QString text = compareText();
+    m_compareLabel->setText(text);
+    m_compareLabel->setVisible(!text.isEmpty());
+    if (text.isEmpty())
+        return;
+    m_compareLabel->setMaximumWidth(width());
+    m_compareLabel->setWordWrap(true);
+    m_compareLabel->adjustSize();
+    m_compareLabel->move(0, height() - m_compareLabel->height());
+}
+
+bool Viewport::nearWipe(QPoint position) const
+{
+    const Scene &s = m_document->scene();
+    if (s.compare.mode != CompareMode::Wipe)
+        return false;
+    return std::abs(position.x() - int(std::lround(s.compare.wipe * float(width())))) <= 6;
 }
 
 void Viewport::compileProgram(const QString &vertexSource, const QString &fragmentSource)
@@ -144,12 +204,32 @@ void Viewport::setBanner(const QString &text)
 void Viewport::resizeGL(int, int)
 {
     m_banner->setGeometry(0, 0, width(), m_banner->sizeHint().height());
+    updateCompareLabel();
 }
 
 void Viewport::setObject(std::shared_ptr<const Mesh> mesh, std::shared_ptr<const Texture> texture)
 {
     m_renderer.setObject(std::move(mesh), std::move(texture)); // uploaded by the next paint
     update();
+}
+
+QImage Viewport::renderImage(QSize pixels)
+{
+    if (!m_renderer.isInitialized() || pixels.isEmpty())
+        return {};
+    makeCurrent();
+    QOpenGLFramebufferObjectFormat format;
+    format.setAttachment(QOpenGLFramebufferObject::Depth);
+    QOpenGLFramebufferObject fbo(pixels, format);
+    QImage image;
+    if (fbo.isValid()) {
+        fbo.bind();
+        m_renderer.render(m_document->scene(), pixels);
+        image = fbo.toImage();
+        fbo.release();
+    }
+    doneCurrent();
+    return image;
 }
 
 void Viewport::resetCamera()
@@ -160,7 +240,13 @@ void Viewport::resetCamera()
 void Viewport::mousePressEvent(QMouseEvent *event)
 {
     m_lastMouse = event->position().toPoint();
+    m_draggingWipe = event->button() == Qt::LeftButton && nearWipe(m_lastMouse);
     setFocus();
+}
+
+void Viewport::mouseReleaseEvent(QMouseEvent *)
+{
+    m_draggingWipe = false;
 }
 
 void Viewport::mouseMoveEvent(QMouseEvent *event)
@@ -168,6 +254,13 @@ void Viewport::mouseMoveEvent(QMouseEvent *event)
     const QPoint now = event->position().toPoint();
     const QPoint delta = now - m_lastMouse;
     m_lastMouse = now;
+    // The wipe's line follows the mouse while dragged; near it the cursor says so.
+    setCursor(m_draggingWipe || nearWipe(now) ? Qt::SplitHCursor : Qt::ArrowCursor);
+    if (m_draggingWipe) {
+        const float x = float(now.x()) / float(std::max(width(), 1));
+        m_document->edit([&](Scene &s) { s.compare.wipe = std::clamp(x, 0.0f, 1.0f); });
+        return;
+    }
     if (event->buttons() & Qt::LeftButton) {
         m_document->edit([&](Scene &s) {
             s.camera.orbit(-kDegreesPerPixel * float(delta.x()),

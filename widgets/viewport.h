@@ -24,12 +24,18 @@ public:
     ~Viewport() override;
 
     void resetCamera();
+    // The scene as the viewport draws it, rendered offscreen at any size (Export Image);
+    // a null image when there is no OpenGL.
+    QImage renderImage(QSize pixels);
     // The mesh to draw from now on (ObjectLoader builds it) and its texture (nullptr: the
     // checker).
     void setObject(std::shared_ptr<const Mesh> mesh, std::shared_ptr<const Texture> texture);
     const Renderer &renderer() const { return m_renderer; }
     QString renderError() const { return m_error; }
     QString banner() const; // the message over the picture; empty when there is none
+    // What the compare view shows, in words (sides, or the largest difference); empty when
+    // compare is off.
+    QString compareText() const;
 
     // Builds the user's program (now, or once the context exists) and reports it through
     // programBuilt(). When it fails, the last good program keeps drawing under a banner.
@@ -48,12 +54,15 @@ protected:
     void resizeGL(int w, int h) override;
     void mousePressEvent(QMouseEvent *event) override;
     void mouseMoveEvent(QMouseEvent *event) override;
+    void mouseReleaseEvent(QMouseEvent *event) override;
     void wheelEvent(QWheelEvent *event) override;
 
 private:
     void releaseGl(); // with the context made current: the renderer's GL objects go
     void buildNow(const QString &vertexSource, const QString &fragmentSource);
     void setBanner(const QString &text);
+    void updateCompareLabel();
+    bool nearWipe(QPoint position) const;
     void syncAnimation();
     void advanceAnimation();
 
@@ -61,6 +70,8 @@ private:
     Renderer m_renderer;
     QString m_error;
     QLabel *m_banner;
+    QLabel *m_compareLabel;
+    bool m_draggingWipe = false;
     // The last sources that linked, built again when the widget gets a new context, and the
     // ones asked for before there was a context.
     QString m_goodVertex, m_goodFragment;

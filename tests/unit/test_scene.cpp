@@ -40,6 +40,7 @@ private slots:
         Scene s;
         s.lights[2].enabled = true;
         s.lights[2].frame = LightFrame::Camera;
+        s.lights[2].colors.id = {0.2f, 0.7f, 0.9f}; // not exact in a float either
         s.lights[3].position = {0, 1, 0, 0};
         s.compare.mode = CompareMode::Wipe;
         s.compare.wipe = 0.3f; // not exact in a float: no "out of range" for that

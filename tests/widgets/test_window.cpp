@@ -12,6 +12,7 @@
 #include "object_panel.h"
 #include "offscreen.h"
 #include "recent_files.h"
+#include "scene_actions.h"
 #include "shader_editor.h"
 #include "shading_panel.h"
 #include "uniform_panel.h"
@@ -110,6 +111,118 @@ private slots:
     }
 
     void cleanup() { m_window.reset(); }
+
+    void savedSceneOpensAsTheSameImage()
+    {
+        // A scene with a program of the student's own, two lights and a changed camera.
+        m_window->editorPanel()->loadPreset(presets().back()); // toon
+        m_window->document().edit([](Scene &s) {
+            s.lights[1].enabled = true;
+            s.material.kd = {0.2f, 0.5f, 0.9f};
+            s.camera.orbit(25, 10);
+        });
+        const QImage before = frame();
+        const Scene saved = scene();
+        const auto program = m_window->editorPanel()->program();
+        QVERIFY(program);
+        const QString path = m_dir.filePath("lesson.json");
+        QCOMPARE(m_window->sceneActions()->save(path), QString());
+        QVERIFY(m_window->windowTitle().startsWith("lesson.json"));
+
+        m_window->document().set(Scene{});
+        m_window->editorPanel()->loadPreset(builtInPreset(false));
+        QVERIFY(imageDifference(before, frame()) > 10);
+
+        QVERIFY(m_window->sceneActions()->open(path));
+        QVERIFY(scene() == saved);
+        QVERIFY(m_window->editorPanel()->program()->vertex == program->vertex);
+        QVERIFY(!m_window->sceneActions()->messageBox()); // nothing was ignored
+        QVERIFY(imageDifference(before, frame()) <= 1);
+        QCOMPARE(m_window->sceneActions()->recent()->files().first(),
+                 QFileInfo(path).absoluteFilePath());
+    }
+
+    void badSceneFileChangesNothing()
+    {
+        m_window->document().edit([](Scene &s) { s.material.shininess = 77; });
+        const Scene before = scene();
+        const QString path = m_dir.filePath("broken.json");
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write("{\"lights\": [{\"enabled\": tru");
+        f.close();
+        QVERIFY(!m_window->sceneActions()->open(path));
+        QVERIFY(scene() == before);
+        QMessageBox *box = m_window->sceneActions()->messageBox();
+        QVERIFY(box && box->isVisible());
+        QVERIFY2(box->informativeText().startsWith(path + ": not a scene file"),
+                 qPrintable(box->informativeText()));
+        box->close();
+
+        // Half-usable: opens, and one message lists what was ignored.
+        QVERIFY(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
+        f.write(R"({"version": 1, "material": {"shininess": -4, "kd": "red"}, "wobble": 1})");
+        f.close();
+        QVERIFY(m_window->sceneActions()->open(path));
+        QCOMPARE(scene().material.shininess, limits::kMinShininess);
+        box = m_window->sceneActions()->messageBox();
+        QVERIFY(box && box->isVisible());
+        const QString listed = box->informativeText();
+        QVERIFY2(listed.contains("material.kd (not an array of numbers)") &&
+                     listed.contains("material.shininess (out of range, clamped)") &&
+                     listed.contains("wobble (unknown field)"),
+                 qPrintable(listed));
+    }
+
+    void everyExampleOpensAndDraws()
+    {
+        for (const auto &[text, resource] : SceneActions::examples()) {
+            const QImage before = frame();
+            QVERIFY2(m_window->sceneActions()->open(resource), qPrintable(resource));
+            QVERIFY2(!m_window->sceneActions()->messageBox(), qPrintable(resource));
+            QVERIFY2(m_window->viewport()->banner().isEmpty(), qPrintable(resource));
+            QVERIFY2(imageDifference(before, frame()) > 10, qPrintable(resource));
+        }
+    }
+
+    void exportWritesTheChosenSize()
+    {
+        const QString path = m_dir.filePath("view.png");
+        QCOMPARE(m_window->sceneActions()->exportImage(path, QSize(1000, 400)), QString());
+        QCOMPARE(QImage(path).size(), QSize(1000, 400));
+        QVERIFY(
+            !m_window->sceneActions()->exportImage("/nowhere/view.png", QSize(10, 10)).isEmpty());
+    }
+
+    void compareControlsSplitTheView()
+    {
+        ShadingPanel *p = m_window->shadingPanel();
+        QVERIFY(!p->compareShadingCombo()->isEnabled());
+        expectNewImage([&] { p->compareModeCombo()->setCurrentIndex(1); }, "side by side");
+        QCOMPARE(scene().compare.mode, CompareMode::SideBySide);
+        QVERIFY(m_window->viewport()->compareText().contains("B: built-in Gouraud"));
+        expectNewImage([&] { p->compareModeCombo()->setCurrentIndex(3); }, "difference");
+        frame();
+        QVERIFY2(m_window->viewport()->compareText().contains("largest"),
+                 qPrintable(m_window->viewport()->compareText()));
+        QVERIFY(m_window->viewport()->renderer().difference().largest >= 20);
+        // B = A: nothing differs.
+        p->compareShadingCombo()->setCurrentIndex(1);
+        frame();
+        QCOMPARE(m_window->viewport()->renderer().difference().largest, 0);
+        // The wipe follows a drag of its line.
+        p->compareModeCombo()->setCurrentIndex(2);
+        Viewport *v = m_window->viewport();
+        const QPoint line(v->width() / 2, v->height() / 2);
+        QTest::mousePress(v, Qt::LeftButton, {}, line);
+        QMouseEvent move(QEvent::MouseMove, QPointF(v->width() / 4, line.y()),
+                         v->mapToGlobal(QPointF(v->width() / 4, line.y())), Qt::NoButton,
+                         Qt::LeftButton, {});
+        QApplication::sendEvent(v, &move);
+        QTest::mouseRelease(v, Qt::LeftButton, {}, QPoint(v->width() / 4, line.y()));
+        QVERIFY(std::abs(scene().compare.wipe - 0.25f) < 0.01f);
+        QCOMPARE(scene().camera.yawDegrees, Scene{}.camera.yawDegrees); // no orbit meanwhile
+    }
 
     void materialColourChangesSceneAndPixels()
     {

@@ -1,0 +1,208 @@
+#include "scene_actions.h"
+
+#include "editor_panel.h"
+#include "export_size_dialog.h"
+#include "recent_files.h"
+#include "scene_document.h"
+#include "viewport.h"
+
+#include <QApplication>
+#include <QClipboard>
+#include <QDir>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QImageWriter>
+#include <QMainWindow>
+#include <QMenu>
+#include <QSettings>
+#include <QStatusBar>
+
+namespace lb {
+
+namespace {
+const char *kRecentKey = "recentScenes";
+const char *kDirKey = "scenes/lastDirectory";
+const char *kExportSizeKey = "export/size";
+const QString kFilter = QObject::tr("Scenes (*.json);;All files (*)");
+} // namespace
+
+SceneActions::SceneActions(QMainWindow *window, SceneDocument *document, EditorPanel *editor,
+                           Viewport *viewport, QSettings &settings)
+    : QObject(window), m_window(window), m_document(document), m_editor(editor),
+      m_viewport(viewport), m_settings(settings)
+{
+    m_recent = new RecentFiles(tr("Open Recent S&cene"), settings, kRecentKey, window);
+    connect(m_recent, &RecentFiles::fileChosen, this, &SceneActions::open);
+}
+
+QList<QPair<QString, QString>> SceneActions::examples()
+{
+    return {{tr("Gouraud vs Phong (the slides)"), ":/examples/gouraud_vs_phong.json"},
+            {tr("Phong vs Blinn-Phong specular"), ":/examples/phong_vs_blinn.json"},
+            {tr("The three light frames"), ":/examples/light_frames.json"},
+            {tr("The normal matrix"), ":/examples/normal_matrix.json"},
+            {tr("Toon shading"), ":/examples/toon.json"}};
+}
+
+void SceneActions::addToMenu(QMenu *file)
+{
+    QAction *open = file->addAction(tr("Open S&cene..."), this, &SceneActions::showOpenDialog);
+    open->setShortcut(QKeySequence(tr("Ctrl+Shift+O")));
+    file->addMenu(m_recent);
+    QMenu *examples = file->addMenu(tr("E&xamples"));
+    for (const auto &[text, resource] : SceneActions::examples())
+        examples->addAction(text, this, [this, resource = resource] { this->open(resource); });
+    QAction *save = file->addAction(tr("Save Sc&ene"), this, [this] {
+        if (m_path.isEmpty())
+            showSaveDialog();
+        else
+            this->save(m_path);
+    });
+    save->setShortcut(QKeySequence(tr("Ctrl+Alt+S")));
+    file->addAction(tr("Save Scene As..."), this, &SceneActions::showSaveDialog);
+    file->addSeparator();
+    QAction *exportImage =
+        file->addAction(tr("E&xport Image..."), this, &SceneActions::showExportDialog);
+    exportImage->setShortcut(QKeySequence(tr("Ctrl+E")));
+    QAction *copy = file->addAction(tr("Cop&y Image"), this, &SceneActions::copyImage);
+    copy->setShortcut(QKeySequence(tr("Ctrl+Shift+C")));
+}
+
+bool SceneActions::open(const QString &path)
+{
+    const bool example = path.startsWith(":/");
+    const SceneFileRead read = readSceneFile(path);
+    if (!read.file) {
+        showMessage(QMessageBox::Warning, tr("The scene could not be opened; nothing changed."),
+                    read.error);
+        if (!example && !QFileInfo::exists(path))
+            m_recent->remove(path);
+        return false;
+    }
+    SceneFile file = *read.file;
+    // An example's mesh (none today) would name a file beside the resource: keep shapes.
+    if (example)
+        file.scene.object.meshPath.clear();
+    m_document->set(file.scene);
+    m_editor->setProgram(file.program, file.scene.shading.shading == Shading::Gouraud);
+    setCurrentPath(example ? QString() : QFileInfo(path).absoluteFilePath());
+    if (!example)
+        m_recent->add(QFileInfo(path).absoluteFilePath());
+    const QString name = example ? path.section('/', -1) : QFileInfo(path).fileName();
+    if (!read.ignored.isEmpty())
+        showMessage(QMessageBox::Information,
+                    tr("%1 opened; %n field(s) could not be used and kept their defaults.", "",
+                       int(read.ignored.size()))
+                        .arg(name),
+                    read.ignored.join('\n'));
+    m_window->statusBar()->showMessage(tr("Opened the scene %1").arg(name), 5000);
+    emit sceneOpened(path);
+    return true;
+}
+
+QString SceneActions::save(const QString &path)
+{
+    const QString error = writeSceneFile(path, SceneFile{m_document->scene(), m_editor->program()});
+    if (!error.isEmpty()) {
+        showMessage(QMessageBox::Warning, tr("The scene was not saved."), error);
+        return error;
+    }
+    setCurrentPath(QFileInfo(path).absoluteFilePath());
+    m_recent->add(m_path);
+    m_window->statusBar()->showMessage(tr("Saved the scene to %1").arg(path), 5000);
+    return {};
+}
+
+QString SceneActions::exportImage(const QString &path, QSize pixels)
+{
+    const QImage image = m_viewport->renderImage(pixels);
+    QImageWriter writer(path);
+    if (QFileInfo(path).suffix().isEmpty())
+        writer.setFormat("png");
+    QString error;
+    if (image.isNull())
+        error = tr("%1: the view could not be drawn at %2 x %3")
+                    .arg(path)
+                    .arg(pixels.width())
+                    .arg(pixels.height());
+    else if (!writer.write(image))
+        error = QString("%1: %2").arg(path, writer.errorString());
+    if (!error.isEmpty())
+        showMessage(QMessageBox::Warning, tr("The image was not exported."), error);
+    else
+        m_window->statusBar()->showMessage(tr("Exported %1").arg(path), 5000);
+    return error;
+}
+
+void SceneActions::copyImage()
+{
+    const QImage image =
+        m_viewport->renderImage(m_viewport->size() * m_viewport->devicePixelRatio());
+    if (image.isNull())
+        return;
+    QApplication::clipboard()->setImage(image);
+    m_window->statusBar()->showMessage(
+        tr("Copied the view (%1 x %2) to the clipboard").arg(image.width()).arg(image.height()),
+        5000);
+}
+
+void SceneActions::showOpenDialog()
+{
+    const QString path = QFileDialog::getOpenFileName(
+        m_window, tr("Open a scene"), m_settings.value(kDirKey).toString(), kFilter);
+    if (path.isEmpty())
+        return;
+    m_settings.setValue(kDirKey, QFileInfo(path).absolutePath());
+    open(path);
+}
+
+void SceneActions::showSaveDialog()
+{
+    QString path = QFileDialog::getSaveFileName(
+        m_window, tr("Save the scene"),
+        m_path.isEmpty() ? m_settings.value(kDirKey).toString() : m_path, kFilter);
+    if (path.isEmpty())
+        return;
+    if (QFileInfo(path).suffix().isEmpty())
+        path += ".json";
+    m_settings.setValue(kDirKey, QFileInfo(path).absolutePath());
+    save(path);
+}
+
+void SceneActions::showExportDialog()
+{
+    const QSize current = m_viewport->size() * m_viewport->devicePixelRatio();
+    ExportSizeDialog sizes(m_settings.value(kExportSizeKey, current).toSize(), m_window);
+    if (sizes.exec() != QDialog::Accepted)
+        return;
+    m_settings.setValue(kExportSizeKey, sizes.size());
+    QString path = QFileDialog::getSaveFileName(m_window, tr("Export the view"),
+                                                m_settings.value(kDirKey).toString(),
+                                                tr("PNG images (*.png);;All files (*)"));
+    if (path.isEmpty())
+        return;
+    if (QFileInfo(path).suffix().isEmpty())
+        path += ".png";
+    exportImage(path, sizes.size());
+}
+
+void SceneActions::showMessage(QMessageBox::Icon icon, const QString &text, const QString &details)
+{
+    // Not modal: the window stays usable behind it, as with mesh errors.
+    if (m_messageBox)
+        m_messageBox->close();
+    m_messageBox = new QMessageBox(icon, tr("Scene"), text, QMessageBox::Ok, m_window);
+    m_messageBox->setInformativeText(details);
+    m_messageBox->setAttribute(Qt::WA_DeleteOnClose);
+    m_messageBox->setWindowModality(Qt::NonModal);
+    m_messageBox->show();
+}
+
+void SceneActions::setCurrentPath(const QString &path)
+{
+    m_path = path;
+    m_window->setWindowTitle(
+        path.isEmpty() ? tr("lightbench") : tr("%1 - lightbench").arg(QFileInfo(path).fileName()));
+}
+
+} // namespace lb

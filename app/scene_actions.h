@@ -1,0 +1,69 @@
+#pragma once
+// The window's scene files and images: File > Open Scene, Save Scene (As), Open Recent
+// Scene, Examples (the scenes in resources/examples), Export Image at a chosen size and Copy
+// Image. A scene file carries the editor's program, so these act on the document and the
+// editor together.
+
+#include "scene_file.h"
+
+#include <QMessageBox>
+#include <QObject>
+#include <QPointer>
+
+class QMainWindow;
+class QMenu;
+class QSettings;
+
+namespace lb {
+
+class EditorPanel;
+class RecentFiles;
+class SceneDocument;
+class Viewport;
+
+class SceneActions : public QObject
+{
+    Q_OBJECT
+public:
+    SceneActions(QMainWindow *window, SceneDocument *document, EditorPanel *editor,
+                 Viewport *viewport, QSettings &settings);
+
+    void addToMenu(QMenu *file);
+
+    // Opens a scene file: the scene, its program and its mesh replace the current ones; a
+    // file that cannot be used changes nothing. Returns false then (the message is shown).
+    bool open(const QString &path);
+    // Writes the current scene and program; returns an empty string or the message shown.
+    QString save(const QString &path);
+    QString currentPath() const { return m_path; }
+    // Renders the view at `pixels` and writes it (PNG unless the name says otherwise).
+    QString exportImage(const QString &path, QSize pixels);
+    void copyImage();
+
+    RecentFiles *recent() const { return m_recent; }
+    // The message of the last scene that opened with fields ignored or failed, while open.
+    QMessageBox *messageBox() const { return m_messageBox; }
+    // The example scenes: (menu text, resource path).
+    static QList<QPair<QString, QString>> examples();
+
+signals:
+    void sceneOpened(const QString &path);
+
+private:
+    void showOpenDialog();
+    void showSaveDialog();
+    void showExportDialog();
+    void showMessage(QMessageBox::Icon icon, const QString &text, const QString &details);
+    void setCurrentPath(const QString &path);
+
+    QMainWindow *m_window;
+    SceneDocument *m_document;
+    EditorPanel *m_editor;
+    Viewport *m_viewport;
+    QSettings &m_settings;
+    RecentFiles *m_recent;
+    QPointer<QMessageBox> m_messageBox;
+    QString m_path; // the scene file last opened or saved; empty for an example or none
+};
+
+} // namespace lb
