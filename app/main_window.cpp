@@ -7,6 +7,7 @@
 #include "mesh_actions.h"
 #include "object_loader.h"
 #include "object_panel.h"
+#include "probe_panel.h"
 #include "scene_actions.h"
 #include "shading_panel.h"
 #include "uniform_panel.h"
@@ -28,7 +29,7 @@
 namespace lb {
 
 namespace {
-constexpr int kStateVersion = 2; // 2: the editor dock
+constexpr int kStateVersion = 3; // 2: the editor dock, 3: the probe dock
 const char *kSceneKey = "scene";
 const char *kGeometryKey = "window/geometry";
 const char *kStateKey = "window/state";
@@ -78,6 +79,16 @@ MainWindow::MainWindow(QSettings &settings, QWidget *parent)
         addDock(this, tr("Shader uniforms"), "uniformDock", m_uniforms, Qt::LeftDockWidgetArea);
     tabifyDockWidget(objectDock, uniformDock);
     shadingDock->raise();
+    m_probe = new ProbePanel(&m_document, m_viewport);
+    QDockWidget *probeDock =
+        addDock(this, tr("Probe"), "probeDock", m_probe, Qt::LeftDockWidgetArea);
+    tabifyDockWidget(uniformDock, probeDock);
+    shadingDock->raise();
+    connect(m_viewport, &Viewport::probeRequested, this, [this, probeDock](QPoint pixel) {
+        m_probe->probeAt(pixel);
+        probeDock->show();
+        probeDock->raise();
+    });
 
     m_editor = new EditorPanel;
     auto *editorDock = new QDockWidget(tr("Shader editor"), this);
@@ -207,6 +218,7 @@ void MainWindow::buildMenus()
     menuBar()->addMenu(view);
     addItem(view, tr("&Reset Camera"), QKeySequence(tr("R")),
             [this] { m_viewport->resetCamera(); });
+    addItem(view, tr("Clear the &Probe"), QKeySequence(tr("Esc")), [this] { m_probe->clear(); });
     addItem(view, tr("&Auto-rotate"), QKeySequence(tr("Space")), [this] {
         m_document.edit([](Scene &s) { s.object.autoRotate = !s.object.autoRotate; });
     });
@@ -225,6 +237,7 @@ void MainWindow::buildMenus()
                "Ctrl+E: export the view as an image\nCtrl+Shift+C: copy the view\n"
                "G: Gouraud / Phong shading\nB: Phong / Blinn-Phong specular\n"
                "P: perspective / orthographic\nL: lighting on / off\n"
+               "Ctrl+click or Shift+click: probe the surface (drag to move it), Esc: clear\n"
                "C: compare off / side by side / wipe / difference (drag the wipe's line)\n"
                "Ctrl+Shift+R: reset everything"));
     });

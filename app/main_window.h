@@ -20,6 +20,7 @@ class MaterialPanel;
 class MeshActions;
 class ObjectLoader;
 class ObjectPanel;
+class ProbePanel;
 class SceneActions;
 class ShadingPanel;
 class UniformPanel;
@@ -43,6 +44,7 @@ public:
     ObjectLoader *objectLoader() const { return m_loader; }
     MeshActions *meshActions() const { return m_meshActions; }
     SceneActions *sceneActions() const { return m_sceneActions; }
+    ProbePanel *probePanel() const { return m_probe; }
 
     void saveSettings();
 
@@ -66,6 +68,7 @@ private:
     ObjectLoader *m_loader;
     MeshActions *m_meshActions;
     SceneActions *m_sceneActions;
+    ProbePanel *m_probe;
     QLabel *m_glLabel;
     QTimer m_saveTimer; // saves the scene shortly after each change, so a kill loses little
 };

@@ -96,13 +96,29 @@ ProbeResult probePixel(const Scene &scene, const Mesh &mesh, const Texture &text
     }
     if (!r.hit)
         return r;
+    return probeSurface(scene, mesh, texture, size, r.triangle, r.barycentric);
+}
 
+ProbeResult probeSurface(const Scene &scene, const Mesh &mesh, const Texture &texture, QSize size,
+                         std::size_t triangle, const glm::vec3 &barycentric)
+{
+    ProbeResult r;
+    if (size.isEmpty() || triangle >= mesh.triangleCount())
+        return r;
+    r.hit = true;
+    r.triangle = triangle;
+    r.barycentric = barycentric;
+    const Frames frames = computeFrames(scene, float(size.width()) / float(size.height()));
     const std::uint32_t *tri = &mesh.indices[r.triangle * 3];
+    // The triangle's corners in eye coordinates.
+    glm::vec3 corners[3];
+    for (int k = 0; k < 3; ++k)
+        corners[k] = glm::vec3(frames.modelView * glm::vec4(mesh.positions[tri[k]], 1.0f));
     const glm::vec3 &w = r.barycentric;
     const glm::mat3 normals(frames.normals);
     auto eyeNormal = [&](const glm::vec3 &n) { return normals * n; };
 
-    r.position = interpolate(eyePositions, tri, w);
+    r.position = w.x * corners[0] + w.y * corners[1] + w.z * corners[2];
     r.normal = glm::normalize(eyeNormal(interpolate(mesh.normals, tri, w)));
     // A mesh without colours reads white, one without texture coordinates (0, 0): the
     // constant attribute values the renderer gives the GPU.
@@ -132,14 +148,17 @@ ProbeResult probePixel(const Scene &scene, const Mesh &mesh, const Texture &text
         for (int k = 0; k < 3; ++k) {
             LightingSum v;
             for (const ProbeLight &light : r.lights)
-                v += evaluateLighting(eyePositions[tri[k]], eyeNormal(mesh.normals[tri[k]]),
-                                      light.inputs);
+                v += evaluateLighting(corners[k], eyeNormal(mesh.normals[tri[k]]), light.inputs);
             ambientDiffuse += w[k] * (v.ambient + v.diffuse);
             specular += w[k] * v.specular;
         }
         colour = shadedColor(ambientDiffuse, specular, r.base);
     }
     r.reference = glm::clamp(colour, 0.0f, 1.0f);
+    const glm::vec4 clip = frames.projection * glm::vec4(r.position, 1.0f);
+    const glm::vec3 ndc = glm::vec3(clip) / clip.w;
+    r.pixel = QPointF((ndc.x + 1.0f) * 0.5f * float(size.width()),
+                      (1.0f - ndc.y) * 0.5f * float(size.height()));
     return r;
 }
 

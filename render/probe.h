@@ -34,6 +34,7 @@ struct ProbeResult
     LightingSum total;              // their sum at this point (the Phong-shading view)
     glm::vec3 base{1.0f};           // vertex colour x texture, white where switched off
     glm::vec3 reference{0.0f};      // the pixel in the active shading mode, clamped to [0, 1]
+    QPointF pixel;                  // where the point lies in the view, top-left origin
 };
 
 // The model's inputs for light `index`, brought into eye coordinates.
@@ -43,6 +44,11 @@ LightingInputs lightingInputs(const Scene &scene, const Frames &frames, int inde
 // GL samples. The frame is `size` pixels large.
 ProbeResult probePixel(const Scene &scene, const Mesh &mesh, const Texture &texture, QSize size,
                        QPoint pixel);
+
+// The model at a known surface point (a triangle and barycentric weights), seen in a view
+// `size` pixels large: how the probe follows its point while the camera and lights move.
+ProbeResult probeSurface(const Scene &scene, const Mesh &mesh, const Texture &texture, QSize size,
+                         std::size_t triangle, const glm::vec3 &barycentric);
 
 // The same for a pixel of a whole frame that may show two sides of a comparison: the side
 // the pixel shows, probed in that side's own view (the difference view probes side A).

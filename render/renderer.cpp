@@ -464,6 +464,7 @@ void Renderer::render(const Scene &scene, QSize pixels)
         break;
     }
     glDisable(GL_SCISSOR_TEST);
+    drawProbe(scene, pixels);
     glUseProgram(0);
     // Leave the depth test off, as Qt's own GL painting (QOpenGLWidget composition, QPainter)
     // expects to find it.
@@ -500,6 +501,50 @@ void Renderer::drawView(const Scene &scene, const Program &program, QRect view, 
             if (light.enabled)
                 drawLightMarker(light, frames);
     glDisable(GL_DEPTH_TEST);
+}
+
+void Renderer::setProbe(std::vector<Arrow> arrows, QPoint framePixel)
+{
+    m_probeArrows = std::move(arrows);
+    m_probePixel = framePixel;
+}
+
+void Renderer::drawProbe(const Scene &scene, QSize pixels)
+{
+    m_probedColour.reset();
+    const QPoint p = m_probePixel;
+    if (p.x() >= 0 && p.y() >= 0 && p.x() < pixels.width() && p.y() < pixels.height()) {
+        std::uint8_t rgba[4] = {0, 0, 0, 0};
+        glPixelStorei(GL_PACK_ALIGNMENT, 1);
+        glReadPixels(p.x(), pixels.height() - 1 - p.y(), 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+        m_probedColour = glm::ivec3(rgba[0], rgba[1], rgba[2]);
+    }
+    if (m_probeArrows.empty())
+        return;
+    glUseProgram(m_unlit.id);
+    glUniformMatrix4fv(uniformLocation(m_unlit, "mProjection"), 1, GL_FALSE,
+                       glm::value_ptr(glm::mat4(1.0f)));
+    const bool split = scene.compare.mode == CompareMode::SideBySide;
+    for (bool sideB : {false, true}) {
+        if (sideB && !split)
+            break;
+        const QRect view = viewRect(scene, pixels, sideB);
+        glViewport(view.x(), pixels.height() - view.y() - view.height(), view.width(),
+                   view.height());
+        const Frames frames = computeFrames(scene, float(view.width()) / float(view.height()));
+        glUniformMatrix4fv(uniformLocation(m_unlit, "mProjection"), 1, GL_FALSE,
+                           glm::value_ptr(frames.projection));
+        for (const Arrow &a : m_probeArrows) {
+            const float length = glm::length(a.direction);
+            if (length <= 0.0f)
+                continue;
+            const glm::mat4 modelView = orientAlong(a.origin, a.direction, length);
+            glUniformMatrix4fv(uniformLocation(m_unlit, "mModelView"), 1, GL_FALSE,
+                               glm::value_ptr(modelView));
+            glUniform3fv(uniformLocation(m_unlit, "uColor"), 1, glm::value_ptr(a.colour));
+            draw(m_markerArrow);
+        }
+    }
 }
 
 void Renderer::drawDivider(int column, QSize frame)

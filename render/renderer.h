@@ -17,6 +17,10 @@
 
 #include <array>
 #include <memory>
+#include <optional>
+#include <vector>
+
+#include <glm/vec3.hpp>
 
 namespace lb {
 
@@ -37,6 +41,16 @@ public:
     // Draws into the bound framebuffer, which is `pixels` large: one view, or two sides of
     // a comparison (compare.h) side by side, across a wipe, or as their difference.
     void render(const Scene &scene, QSize pixels);
+    // The probe's arrows, drawn over every view (no depth test: they stay visible), and the
+    // frame pixel whose colour render() reads back before drawing them (none: x < 0).
+    struct Arrow
+    {
+        glm::vec3 origin, direction, colour; // eye coordinates; the length is the direction's
+    };
+    void setProbe(std::vector<Arrow> arrows, QPoint framePixel);
+    // The colour render() read at the probe's pixel (0-255), if it read one.
+    std::optional<glm::ivec3> probedColour() const { return m_probedColour; }
+
     // What the last difference view measured (valid only after one was drawn).
     const DifferenceStats &difference() const { return m_difference; }
 
@@ -85,6 +99,7 @@ private:
     void drawView(const Scene &scene, const Program &program, QRect view, QRect clip,
                   int frameHeight);
     void drawDivider(int column, QSize frame);
+    void drawProbe(const Scene &scene, QSize pixels);
     void drawDifference(const Scene &scene, QSize pixels);
     void measureDifference(QSize pixels);
     void setUniforms(const Program &program, const Scene &scene, const Frames &frames);
@@ -106,6 +121,9 @@ private:
     std::unique_ptr<QOpenGLFramebufferObject> m_sideFbo[2];
     GpuMesh m_screenTriangle; // covers the viewport: the difference pass draws it
     DifferenceStats m_difference;
+    std::vector<Arrow> m_probeArrows;
+    QPoint m_probePixel{-1, -1};
+    std::optional<glm::ivec3> m_probedColour;
 };
 
 } // namespace lb

@@ -94,6 +94,29 @@ void Viewport::paintGL()
     }
     m_renderer.render(m_document->scene(), size() * devicePixelRatio());
     updateCompareLabel();
+    if (!m_probeLabels.empty()) {
+        QPainter painter(this);
+        painter.setRenderHint(QPainter::Antialiasing);
+        QFont font = painter.font();
+        font.setBold(true);
+        painter.setFont(font);
+        for (const Label &l : m_probeLabels) {
+            const QPointF at = l.position / devicePixelRatio() + QPointF(-4, 5);
+            painter.setPen(Qt::black); // a dark outline keeps the letter readable anywhere
+            for (const QPointF d : {QPointF(1, 1), QPointF(-1, -1), QPointF(1, -1), QPointF(-1, 1)})
+                painter.drawText(at + d, l.text);
+            painter.setPen(l.colour);
+            painter.drawText(at, l.text);
+        }
+    }
+}
+
+void Viewport::setProbe(std::vector<Renderer::Arrow> arrows, QPoint pixel,
+                        std::vector<Label> labels)
+{
+    m_renderer.setProbe(std::move(arrows), pixel);
+    m_probeLabels = std::move(labels);
+    update();
 }
 
 QString Viewport::compareText() const
@@ -209,8 +232,11 @@ void Viewport::resizeGL(int, int)
 
 void Viewport::setObject(std::shared_ptr<const Mesh> mesh, std::shared_ptr<const Texture> texture)
 {
+    const bool changed = mesh.get() != m_renderer.objectMesh();
     m_renderer.setObject(std::move(mesh), std::move(texture)); // uploaded by the next paint
     update();
+    if (changed)
+        emit objectChanged();
 }
 
 QImage Viewport::renderImage(QSize pixels)
@@ -241,12 +267,17 @@ void Viewport::mousePressEvent(QMouseEvent *event)
 {
     m_lastMouse = event->position().toPoint();
     m_draggingWipe = event->button() == Qt::LeftButton && nearWipe(m_lastMouse);
+    m_probing = event->button() == Qt::LeftButton && !m_draggingWipe &&
+                (event->modifiers() & (Qt::ControlModifier | Qt::ShiftModifier));
+    if (m_probing)
+        emit probeRequested((event->position() * devicePixelRatio()).toPoint());
     setFocus();
 }
 
 void Viewport::mouseReleaseEvent(QMouseEvent *)
 {
     m_draggingWipe = false;
+    m_probing = false;
 }
 
 void Viewport::mouseMoveEvent(QMouseEvent *event)
@@ -256,6 +287,10 @@ void Viewport::mouseMoveEvent(QMouseEvent *event)
     m_lastMouse = now;
     // The wipe's line follows the mouse while dragged; near it the cursor says so.
     setCursor(m_draggingWipe || nearWipe(now) ? Qt::SplitHCursor : Qt::ArrowCursor);
+    if (m_probing) {
+        emit probeRequested((event->position() * devicePixelRatio()).toPoint());
+        return;
+    }
     if (m_draggingWipe) {
         const float x = float(now.x()) / float(std::max(width(), 1));
         m_document->edit([&](Scene &s) { s.compare.wipe = std::clamp(x, 0.0f, 1.0f); });

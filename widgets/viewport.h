@@ -12,6 +12,8 @@
 #include <QPoint>
 #include <QTimer>
 
+#include <vector>
+
 class QLabel;
 
 namespace lb {
@@ -24,6 +26,15 @@ public:
     ~Viewport() override;
 
     void resetCamera();
+    // The probe's arrows and their labels (device pixels, top-left origin), and the pixel
+    // whose colour the next frame reads back (renderer().probedColour()).
+    struct Label
+    {
+        QPointF position;
+        QString text;
+        QColor colour;
+    };
+    void setProbe(std::vector<Renderer::Arrow> arrows, QPoint pixel, std::vector<Label> labels);
     // The scene as the viewport draws it, rendered offscreen at any size (Export Image);
     // a null image when there is no OpenGL.
     QImage renderImage(QSize pixels);
@@ -47,6 +58,8 @@ public:
 signals:
     void glInfo(const QString &info); // the driver, once the context exists
     void programBuilt(const lb::ProgramBuild &build);
+    void probeRequested(QPoint framePixel); // Ctrl+click or Shift+click, in device pixels
+    void objectChanged();                   // a new mesh: probed points are gone
 
 protected:
     void initializeGL() override;
@@ -72,6 +85,8 @@ private:
     QLabel *m_banner;
     QLabel *m_compareLabel;
     bool m_draggingWipe = false;
+    bool m_probing = false; // a probe click held down: the probe follows the mouse
+    std::vector<Label> m_probeLabels;
     // The last sources that linked, built again when the widget gets a new context, and the
     // ones asked for before there was a context.
     QString m_goodVertex, m_goodFragment;

@@ -11,6 +11,7 @@
 #include "object_loader.h"
 #include "object_panel.h"
 #include "offscreen.h"
+#include "probe_panel.h"
 #include "recent_files.h"
 #include "scene_actions.h"
 #include "shader_editor.h"
@@ -24,13 +25,16 @@
 #include <QDoubleSpinBox>
 #include <QFile>
 #include <QFileInfo>
+#include <QJsonArray>
 #include <QJsonDocument>
+#include <QJsonObject>
 #include <QLabel>
 #include <QListWidget>
 #include <QMenu>
 #include <QMessageBox>
 #include <QMimeData>
 #include <QMouseEvent>
+#include <QProcess>
 #include <QPushButton>
 #include <QSettings>
 #include <QSignalSpy>
@@ -222,6 +226,68 @@ private slots:
         QTest::mouseRelease(v, Qt::LeftButton, {}, QPoint(v->width() / 4, line.y()));
         QVERIFY(std::abs(scene().compare.wipe - 0.25f) < 0.01f);
         QCOMPARE(scene().camera.yawDegrees, Scene{}.camera.yawDegrees); // no orbit meanwhile
+    }
+
+    void windowProbeEqualsTheCommandLineProbe()
+    {
+        m_window->document().edit([](Scene &s) {
+            s.showLight = false;
+            s.lights[1].enabled = true; // two lights: both listed
+            s.shading.shading = Shading::Gouraud;
+        });
+        frame();
+        Viewport *v = m_window->viewport();
+        const QPoint click(v->width() / 2 + 10, v->height() / 2 - 15);
+        QTest::mouseClick(v, Qt::LeftButton, Qt::ControlModifier, click);
+        frame();
+        ProbePanel *probe = m_window->probePanel();
+        QVERIFY(probe->isActive());
+        QVERIFY(probe->gpuColour());
+        const ProbeResult &r = probe->result();
+        QCOMPARE(int(r.lights.size()), 2);
+        QVERIFY(probe->textLabel()->text().contains("Light 2"));
+        QCOMPARE(scene().camera.yawDegrees, Scene{}.camera.yawDegrees); // the click did not orbit
+
+        const QString path = m_dir.filePath("probe.json");
+        QCOMPARE(m_window->sceneActions()->save(path), QString());
+        const QSize size = v->size() * v->devicePixelRatio();
+        const QPoint pixel = (QPointF(click) * v->devicePixelRatio()).toPoint();
+        QProcess cli;
+        cli.start(LIGHTBENCH_EXE,
+                  {"--scene", path, "--probe", QString("%1,%2").arg(pixel.x()).arg(pixel.y()),
+                   "--size", QString("%1x%2").arg(size.width()).arg(size.height())});
+        QVERIFY(cli.waitForFinished(60000));
+        const QJsonObject o = QJsonDocument::fromJson(cli.readAllStandardOutput()).object();
+        QVERIFY2(o["hit"].toBool(), cli.readAllStandardError().constData());
+        auto near = [](const QJsonValue &json, const glm::vec3 &v) {
+            const QJsonArray a = json.toArray();
+            return a.size() == 3 && std::abs(a[0].toDouble() - v.x) < 1e-4 &&
+                   std::abs(a[1].toDouble() - v.y) < 1e-4 && std::abs(a[2].toDouble() - v.z) < 1e-4;
+        };
+        QCOMPARE(o["triangle"].toInteger(), qint64(r.triangle));
+        QVERIFY(near(o["position"], r.position));
+        QVERIFY(near(o["normal"], r.normal));
+        QVERIFY(near(o["specular"], r.total.specular));
+        const QJsonArray lights = o["lights"].toArray();
+        QCOMPARE(lights.size(), 2);
+        for (int i = 0; i < 2; ++i) {
+            QVERIFY(near(lights[i]["L"], r.lights[std::size_t(i)].terms.L));
+            QVERIFY(std::abs(lights[i]["NdotL"].toDouble() - r.lights[std::size_t(i)].terms.nDotL) <
+                    1e-4);
+        }
+        for (int c = 0; c < 3; ++c) {
+            QCOMPARE(o["reference"][c].toInt(), int(std::lround(r.reference[c] * 255.0f)));
+            QVERIFY(std::abs(o["gpu"][c].toInt() - (*probe->gpuColour())[c]) <= 2);
+        }
+
+        // The point stays on the surface while the light moves: new numbers, same triangle.
+        const glm::vec3 before = r.lights[0].terms.L;
+        m_window->lightPanel()->coordinate(0)->setValue(-3.0);
+        frame();
+        QCOMPARE(probe->result().triangle, qint64(o["triangle"].toInteger()));
+        QVERIFY(glm::length(probe->result().lights[0].terms.L - before) > 0.05f);
+        QTest::keyClick(m_window.get(), Qt::Key_Escape);
+        QVERIFY(!probe->isActive());
     }
 
     void materialColourChangesSceneAndPixels()

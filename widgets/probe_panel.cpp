@@ -1,0 +1,201 @@
+#include "probe_panel.h"
+
+#include "viewport.h"
+
+#include <QLabel>
+#include <QVBoxLayout>
+
+#include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
+
+#include <cmath>
+
+namespace lb {
+
+namespace {
+
+constexpr float kArrowLength = 0.45f;
+
+QString vec(const glm::vec3 &v)
+{
+    return QString("(%1, %2, %3)")
+        .arg(double(v.x), 0, 'f', 3)
+        .arg(double(v.y), 0, 'f', 3)
+        .arg(double(v.z), 0, 'f', 3);
+}
+
+QString rgb255(const glm::vec3 &v)
+{
+    return QString("(%1, %2, %3)")
+        .arg(std::lround(v.x * 255.0f))
+        .arg(std::lround(v.y * 255.0f))
+        .arg(std::lround(v.z * 255.0f));
+}
+
+QString row(const QString &name, const QString &value)
+{
+    return QString("<tr><td><b>%1</b></td><td>%2</td></tr>").arg(name, value);
+}
+
+} // namespace
+
+ProbePanel::ProbePanel(SceneDocument *document, Viewport *viewport, QWidget *parent)
+    : QWidget(parent), m_document(document), m_viewport(viewport)
+{
+    auto *layout = new QVBoxLayout(this);
+    m_text = new QLabel(this);
+    m_text->setTextFormat(Qt::RichText);
+    m_text->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_text->setWordWrap(true);
+    m_text->setAlignment(Qt::AlignTop | Qt::AlignLeft);
+    layout->addWidget(m_text);
+    layout->addStretch();
+    clear();
+    connect(document, &SceneDocument::changed, this, &ProbePanel::update);
+    connect(viewport, &Viewport::objectChanged, this, &ProbePanel::clear);
+    connect(viewport, &QOpenGLWidget::frameSwapped, this, &ProbePanel::showText);
+}
+
+void ProbePanel::clear()
+{
+    m_point.reset();
+    m_result = ProbeResult{};
+    m_gpu.reset();
+    m_viewport->setProbe({}, QPoint(-1, -1), {});
+    m_text->setText(tr("Ctrl+click (or Shift+click) the surface to probe a point: the "
+                       "vectors, N\u00b7L, the specular angle and the three terms, beside the "
+                       "pixel the GPU drew. Esc clears it."));
+}
+
+void ProbePanel::probeAt(QPoint framePixel)
+{
+    const Mesh *mesh = m_viewport->renderer().objectMesh();
+    if (!mesh)
+        return;
+    const QSize frame = m_viewport->size() * m_viewport->devicePixelRatio();
+    PixelView view;
+    const ProbeResult r = probeFramePixel(
+        m_document->scene(), *mesh, m_viewport->renderer().texture(), frame, framePixel, &view);
+    if (!r.hit) {
+        clear();
+        m_text->setText(tr("No surface at (%1, %2).").arg(framePixel.x()).arg(framePixel.y()));
+        return;
+    }
+    m_point = Point{r.triangle, r.barycentric, view.sideB};
+    update();
+}
+
+void ProbePanel::update()
+{
+    if (!m_point)
+        return;
+    const Mesh *mesh = m_viewport->renderer().objectMesh();
+    if (!mesh || m_point->triangle >= mesh->triangleCount()) {
+        clear();
+        return;
+    }
+    const Scene &scene = m_document->scene();
+    const QSize frame = m_viewport->size() * m_viewport->devicePixelRatio();
+    const QRect view = viewRect(scene, frame, m_point->sideB);
+    m_result =
+        probeSurface(sceneOfSide(scene, m_point->sideB), *mesh, m_viewport->renderer().texture(),
+                     view.size(), m_point->triangle, m_point->barycentric);
+
+    // Arrows from the point: N white, V cyan, and for each light L in its diffuse colour
+    // with H (Blinn-Phong) or R (Phong) in magenta.
+    std::vector<Renderer::Arrow> arrows;
+    std::vector<Viewport::Label> labels;
+    const Frames frames = computeFrames(scene, float(view.width()) / float(view.height()));
+    auto add = [&](const glm::vec3 &dir, const glm::vec3 &colour, const QString &name) {
+        const glm::vec3 d = kArrowLength * glm::normalize(dir);
+        arrows.push_back({m_result.position, d, colour});
+        const glm::vec4 clip = frames.projection * glm::vec4(m_result.position + 1.15f * d, 1.0f);
+        const QPointF tip((clip.x / clip.w + 1.0f) * 0.5f * float(view.width()),
+                          (1.0f - clip.y / clip.w) * 0.5f * float(view.height()));
+        labels.push_back(
+            {tip + QPointF(view.topLeft()), name, QColor::fromRgbF(colour.r, colour.g, colour.b)});
+    };
+    add(m_result.normal, glm::vec3(1.0f), "N");
+    add(viewVector(m_result.position, scene.shading.projection), glm::vec3(0.3f, 0.9f, 1.0f), "V");
+    const bool several = m_result.lights.size() > 1;
+    for (const ProbeLight &l : m_result.lights) {
+        const QString n = several ? QString::number(l.index + 1) : QString();
+        const glm::vec3 id = scene.lights[std::size_t(l.index)].colors.id;
+        const float peak = std::max({id.r, id.g, id.b, 1e-3f});
+        add(l.terms.L, glm::max(id / peak, glm::vec3(0.3f)), "L" + n);
+        if (scene.shading.specular == SpecularModel::Blinn)
+            add(l.terms.H, glm::vec3(1.0f, 0.35f, 1.0f), "H" + n);
+        else
+            add(l.terms.R, glm::vec3(1.0f, 0.35f, 1.0f), "R" + n);
+    }
+    const QPoint pixel = view.topLeft() + QPoint(int(std::floor(m_result.pixel.x())),
+                                                 int(std::floor(m_result.pixel.y())));
+    m_viewport->setProbe(std::move(arrows), pixel, std::move(labels));
+}
+
+void ProbePanel::showText()
+{
+    if (!m_point || !m_result.hit)
+        return;
+    m_gpu = m_viewport->renderer().probedColour();
+    const Scene &scene = m_document->scene();
+    const Scene side = sceneOfSide(scene, m_point->sideB);
+    const ProbeResult &r = m_result;
+    const bool blinn = side.shading.specular == SpecularModel::Blinn;
+    const QSize frame = m_viewport->size() * m_viewport->devicePixelRatio();
+    const QRect view = viewRect(scene, frame, m_point->sideB);
+    const Frames frames = computeFrames(side, float(view.width()) / float(view.height()));
+
+    QString html = "<table cellspacing='2'>";
+    html += row(tr("Point"), tr("pixel (%1, %2), triangle %3%4")
+                                 .arg(std::lround(r.pixel.x() + view.x()))
+                                 .arg(std::lround(r.pixel.y() + view.y()))
+                                 .arg(r.triangle)
+                                 .arg(scene.compare.mode == CompareMode::Off
+                                          ? QString()
+                                          : (m_point->sideB ? tr(", side B") : tr(", side A"))));
+    html += row(tr("P (eye)"), vec(r.position));
+    html += row(tr("N"), vec(r.normal));
+    html += row(tr("V"), vec(viewVector(r.position, side.shading.projection)));
+    for (const ProbeLight &l : r.lights) {
+        const Light &light = scene.lights[std::size_t(l.index)];
+        const LightingTerms &t = l.terms;
+        html += QString("<tr><td colspan='2'><hr><b>%1</b> (%2 frame)</td></tr>")
+                    .arg(tr("Light %1").arg(l.index + 1), toName(light.frame));
+        html += row("L", vec(t.L));
+        html += row(blinn ? "H" : "R", vec(blinn ? t.H : t.R));
+        // The light's own frame: world = the view undone, object = the model-view undone.
+        if (light.frame != LightFrame::Camera) {
+            const glm::mat4 toFrame =
+                glm::inverse(light.frame == LightFrame::World ? frames.view : frames.modelView);
+            html += row(tr("P, L (%1)").arg(toName(light.frame)),
+                        vec(glm::vec3(toFrame * glm::vec4(r.position, 1.0f))) + ", " +
+                            vec(glm::normalize(glm::mat3(toFrame) * t.L)));
+        }
+        html += row(QString("N\u00b7L"), QString::number(double(t.nDotL), 'f', 4));
+        html += row(blinn ? QString("N\u00b7H") : QString("R\u00b7V"),
+                    QString::number(double(t.specularAngle), 'f', 4));
+        html += row(tr("ambient"), vec(t.ambient));
+        html += row(tr("diffuse"), vec(t.diffuse));
+        html += row(tr("specular"), vec(t.specular));
+    }
+    html += QString("<tr><td colspan='2'><hr><b>%1</b></td></tr>").arg(tr("Sum"));
+    html += row(tr("ambient"), vec(r.total.ambient));
+    html += row(tr("diffuse"), vec(r.total.diffuse));
+    html += row(tr("specular"), vec(r.total.specular));
+    html += row(tr("reference"),
+                rgb255(r.reference) + tr(" of 255 (%1 shading)").arg(toName(side.shading.shading)));
+    if (m_gpu && scene.compare.mode != CompareMode::Difference) {
+        const glm::ivec3 ref(std::lround(r.reference.r * 255.0f),
+                             std::lround(r.reference.g * 255.0f),
+                             std::lround(r.reference.b * 255.0f));
+        const glm::ivec3 d = glm::abs(*m_gpu - ref);
+        html +=
+            row(tr("GPU drew"), QString("(%1, %2, %3)").arg(m_gpu->r).arg(m_gpu->g).arg(m_gpu->b));
+        html += row(tr("difference"), tr("%1 of 255").arg(std::max({d.r, d.g, d.b})));
+    }
+    html += "</table>";
+    m_text->setText(html);
+}
+
+} // namespace lb

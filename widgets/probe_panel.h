@@ -1,0 +1,54 @@
+#pragma once
+// The probe in the window: Ctrl+click (or Shift+click) a surface and this panel shows, for that
+// point, P, N, V and each light's L, H, R in eye coordinates (and P, L in the light's own
+// frame), N.L, N.H or R.V, the terms and their sum from the reference (render/probe), the
+// pixel the GPU drew and the difference. The point stays on the surface: the numbers and the
+// arrows drawn on it follow the lights, the material and the camera live.
+
+#include "probe.h"
+#include "scene_document.h"
+
+#include <QWidget>
+
+#include <optional>
+
+class QLabel;
+
+namespace lb {
+
+class Viewport;
+
+class ProbePanel : public QWidget
+{
+    Q_OBJECT
+public:
+    ProbePanel(SceneDocument *document, Viewport *viewport, QWidget *parent = nullptr);
+
+    // Probes the frame pixel (device pixels, top-left origin) and follows that point.
+    void probeAt(QPoint framePixel);
+    void clear();
+    bool isActive() const { return m_point.has_value(); }
+    const ProbeResult &result() const { return m_result; }
+    QLabel *textLabel() const { return m_text; }
+    // The GPU's pixel at the point, once the viewport has drawn it.
+    std::optional<glm::ivec3> gpuColour() const { return m_gpu; }
+
+private:
+    struct Point
+    {
+        std::size_t triangle;
+        glm::vec3 barycentric;
+        bool sideB;
+    };
+    void update();   // the model again at the point; arrows to the viewport
+    void showText(); // after the frame is drawn, with the GPU's pixel
+
+    SceneDocument *m_document;
+    Viewport *m_viewport;
+    QLabel *m_text;
+    std::optional<Point> m_point;
+    ProbeResult m_result;
+    std::optional<glm::ivec3> m_gpu;
+};
+
+} // namespace lb
