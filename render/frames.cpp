@@ -53,4 +53,24 @@ glm::vec4 lightInEye(const Frames &frames, const glm::vec4 &light, LightFrame fr
     return eye;
 }
 
+glm::vec4 eyeToFrame(const Frames &frames, const glm::vec4 &eye, LightFrame frame)
+{
+    if (frame == LightFrame::Camera)
+        return eye;
+    const bool directional = eye.w == 0.0f;
+    const bool world = frame == LightFrame::World;
+    const glm::mat4 &there = directional ? (world ? frames.viewNormals : frames.normals)
+                                         : (world ? frames.view : frames.modelView);
+    glm::vec4 back = glm::inverse(there) * eye;
+    back.w = eye.w;
+    return back;
+}
+
+glm::vec2 pixelOf(const Frames &frames, const glm::vec3 &eye, float width, float height)
+{
+    const glm::vec4 clip = frames.projection * glm::vec4(eye, 1.0f);
+    const glm::vec2 ndc = glm::vec2(clip) / clip.w;
+    return glm::vec2((ndc.x + 1.0f) * 0.5f * width, (1.0f - ndc.y) * 0.5f * height);
+}
+
 } // namespace lb

@@ -29,5 +29,11 @@ Frames computeFrames(const Scene &scene, float aspect);
 // camera: as given; world: mView for a point, mViewNormals for a direction;
 // object: mModelView for a point, mNormals for a direction. The result keeps w.
 glm::vec4 lightInEye(const Frames &frames, const glm::vec4 &light, LightFrame frame);
+// The way back: a point (w = 1) or direction (w = 0) in eye coordinates, in `frame`'s
+// coordinates, such that lightInEye() of the result gives `eye` again.
+glm::vec4 eyeToFrame(const Frames &frames, const glm::vec4 &eye, LightFrame frame);
+
+// Where an eye-space point lands in a view `width` x `height` pixels, top-left origin.
+glm::vec2 pixelOf(const Frames &frames, const glm::vec3 &eye, float width, float height);
 
 } // namespace lb

@@ -155,10 +155,8 @@ ProbeResult probeSurface(const Scene &scene, const Mesh &mesh, const Texture &te
         colour = shadedColor(ambientDiffuse, specular, r.base);
     }
     r.reference = glm::clamp(colour, 0.0f, 1.0f);
-    const glm::vec4 clip = frames.projection * glm::vec4(r.position, 1.0f);
-    const glm::vec3 ndc = glm::vec3(clip) / clip.w;
-    r.pixel = QPointF((ndc.x + 1.0f) * 0.5f * float(size.width()),
-                      (1.0f - ndc.y) * 0.5f * float(size.height()));
+    const glm::vec2 pixel = pixelOf(frames, r.position, float(size.width()), float(size.height()));
+    r.pixel = QPointF(pixel.x, pixel.y);
     return r;
 }
 

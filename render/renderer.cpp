@@ -437,31 +437,26 @@ void Renderer::render(const Scene &scene, QSize pixels)
     }
 
     const QRect whole(QPoint(0, 0), pixels);
-    const Program &a = objectProgram(scene);
-    const Scene sceneB = sceneOfSide(scene, true);
-    const Program &b = builtInProgram(sceneB);
-    const int divider = dividerColumn(scene, pixels);
     glEnable(GL_SCISSOR_TEST);
-    switch (scene.compare.mode) {
-    case CompareMode::Off:
-        drawView(scene, a, whole, whole, pixels.height());
-        break;
-    case CompareMode::SideBySide:
+    if (scene.compare.mode == CompareMode::Off) {
+        drawView(scene, objectProgram(scene), whole, whole, pixels.height());
+    } else if (scene.compare.mode == CompareMode::Difference) {
+        drawDifference(scene, pixels);
+    } else {
+        // Side A left of the divider, B right of it: in halves, or across the wipe.
+        const Scene sceneB = sceneOfSide(scene, true);
+        const int divider = dividerColumn(scene, pixels);
+        const bool wipe = scene.compare.mode == CompareMode::Wipe;
         for (bool sideB : {false, true}) {
             const QRect view = viewRect(scene, pixels, sideB);
-            drawView(sideB ? sceneB : scene, sideB ? b : a, view, view, pixels.height());
+            const QRect clip = !wipe ? view
+                               : sideB
+                                   ? QRect(divider, 0, pixels.width() - divider, pixels.height())
+                                   : QRect(0, 0, divider, pixels.height());
+            drawView(sideB ? sceneB : scene, sideB ? builtInProgram(sceneB) : objectProgram(scene),
+                     view, clip, pixels.height());
         }
         drawDivider(divider, pixels);
-        break;
-    case CompareMode::Wipe:
-        drawView(scene, a, whole, QRect(0, 0, divider, pixels.height()), pixels.height());
-        drawView(sceneB, b, whole, QRect(divider, 0, pixels.width() - divider, pixels.height()),
-                 pixels.height());
-        drawDivider(divider, pixels);
-        break;
-    case CompareMode::Difference:
-        drawDifference(scene, pixels);
-        break;
     }
     glDisable(GL_SCISSOR_TEST);
     drawProbe(scene, pixels);
@@ -522,8 +517,6 @@ void Renderer::drawProbe(const Scene &scene, QSize pixels)
     if (m_probeArrows.empty())
         return;
     glUseProgram(m_unlit.id);
-    glUniformMatrix4fv(uniformLocation(m_unlit, "mProjection"), 1, GL_FALSE,
-                       glm::value_ptr(glm::mat4(1.0f)));
     const bool split = scene.compare.mode == CompareMode::SideBySide;
     for (bool sideB : {false, true}) {
         if (sideB && !split)

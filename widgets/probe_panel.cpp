@@ -109,11 +109,10 @@ void ProbePanel::update()
     auto add = [&](const glm::vec3 &dir, const glm::vec3 &colour, const QString &name) {
         const glm::vec3 d = kArrowLength * glm::normalize(dir);
         arrows.push_back({m_result.position, d, colour});
-        const glm::vec4 clip = frames.projection * glm::vec4(m_result.position + 1.15f * d, 1.0f);
-        const QPointF tip((clip.x / clip.w + 1.0f) * 0.5f * float(view.width()),
-                          (1.0f - clip.y / clip.w) * 0.5f * float(view.height()));
-        labels.push_back(
-            {tip + QPointF(view.topLeft()), name, QColor::fromRgbF(colour.r, colour.g, colour.b)});
+        const glm::vec2 tip = pixelOf(frames, m_result.position + 1.15f * d, float(view.width()),
+                                      float(view.height()));
+        labels.push_back({QPointF(tip.x, tip.y) + QPointF(view.topLeft()), name,
+                          QColor::fromRgbF(colour.r, colour.g, colour.b)});
     };
     add(m_result.normal, glm::vec3(1.0f), "N");
     add(viewVector(m_result.position, scene.shading.projection), glm::vec3(0.3f, 0.9f, 1.0f), "V");
@@ -164,13 +163,12 @@ void ProbePanel::showText()
                     .arg(tr("Light %1").arg(l.index + 1), toName(light.frame));
         html += row("L", vec(t.L));
         html += row(blinn ? "H" : "R", vec(blinn ? t.H : t.R));
-        // The light's own frame: world = the view undone, object = the model-view undone.
+        // The light's own frame: the way lightInEye() came, undone.
         if (light.frame != LightFrame::Camera) {
-            const glm::mat4 toFrame =
-                glm::inverse(light.frame == LightFrame::World ? frames.view : frames.modelView);
+            const glm::vec4 p = eyeToFrame(frames, glm::vec4(r.position, 1.0f), light.frame);
+            const glm::vec4 l = eyeToFrame(frames, glm::vec4(t.L, 0.0f), light.frame);
             html += row(tr("P, L (%1)").arg(toName(light.frame)),
-                        vec(glm::vec3(toFrame * glm::vec4(r.position, 1.0f))) + ", " +
-                            vec(glm::normalize(glm::mat3(toFrame) * t.L)));
+                        vec(glm::vec3(p)) + ", " + vec(glm::normalize(glm::vec3(l))));
         }
         html += row(QString("N\u00b7L"), QString::number(double(t.nDotL), 'f', 4));
         html += row(blinn ? QString("N\u00b7H") : QString("R\u00b7V"),

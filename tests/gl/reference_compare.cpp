@@ -17,6 +17,19 @@ int channelDifference(QRgb gpu, const glm::vec3 &reference)
     return std::max({std::abs(qRed(gpu) - r), std::abs(qGreen(gpu) - g), std::abs(qBlue(gpu) - b)});
 }
 
+QPoint brightestGreen(const QImage &frame)
+{
+    QPoint peak;
+    int best = -1;
+    for (int y = 0; y < frame.height(); ++y)
+        for (int x = 0; x < frame.width(); ++x)
+            if (const int v = qGreen(frame.pixel(x, y)); v > best) {
+                best = v;
+                peak = QPoint(x, y);
+            }
+    return peak;
+}
+
 int largestDifference(const QImage &a, const QImage &b)
 {
     int worst = 0;

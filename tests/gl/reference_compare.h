@@ -24,6 +24,9 @@ struct Comparison
 // The largest channel difference between a pixel and a reference colour (0-1), in 1/255.
 int channelDifference(QRgb gpu, const glm::vec3 &reference);
 
+// The pixel with the most green: the middle of a red material's white highlight.
+QPoint brightestGreen(const QImage &frame);
+
 // The largest channel difference between two frames of one size, in 1/255.
 int largestDifference(const QImage &a, const QImage &b);
 

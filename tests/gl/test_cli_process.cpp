@@ -1,4 +1,6 @@
 // The lightbench executable as a user scripts it: exit codes, messages, PNG and probe JSON.
+#include "reference_compare.h"
+
 #include <QImage>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -13,6 +15,13 @@ struct Run
     int exitCode;
     QByteArray out, err;
 };
+
+// Writes `bytes` to `path`; false when it cannot.
+bool writeFile(const QString &path, const QByteArray &bytes)
+{
+    QFile f(path);
+    return f.open(QIODevice::WriteOnly | QIODevice::Truncate) && f.write(bytes) == bytes.size();
+}
 
 Run run(const QStringList &args,
         const QProcessEnvironment &env = QProcessEnvironment::systemEnvironment())
@@ -89,10 +98,7 @@ private slots:
         QVERIFY(!r.err.contains("ignored"));
         const QImage a(direct), b(fromFile);
         QCOMPARE(a.size(), b.size());
-        int worst = 0;
-        for (int y = 0; y < a.height(); ++y)
-            for (int x = 0; x < a.width(); ++x)
-                worst = std::max(worst, std::abs(qGray(a.pixel(x, y)) - qGray(b.pixel(x, y))));
+        const int worst = lb::test::largestDifference(a, b);
         QVERIFY2(worst <= 1, qPrintable(QString("%1/255 apart").arg(worst)));
         // Options after the scene override it.
         const QString other = m_dir.filePath("other.png");
@@ -105,10 +111,7 @@ private slots:
     void badSceneFilesAreRefusedOrReadInPart()
     {
         const QString notJson = m_dir.filePath("notes.json");
-        QFile f(notJson);
-        QVERIFY(f.open(QIODevice::WriteOnly));
-        f.write("these are my notes, not a scene");
-        f.close();
+        QVERIFY(writeFile(notJson, "these are my notes, not a scene"));
         Run r = run({"--scene", notJson, "--render", m_dir.filePath("x.png")});
         QCOMPARE(r.exitCode, 2);
         QVERIFY2(r.err.contains("--scene: " + notJson.toUtf8() + ": not a scene file"),
@@ -118,11 +121,8 @@ private slots:
         QVERIFY(r.err.contains("/nowhere/scene.json: no such file"));
 
         const QString odd = m_dir.filePath("odd.json");
-        QFile g(odd);
-        QVERIFY(g.open(QIODevice::WriteOnly));
-        g.write(R"({"version": 9, "material": {"shininess": "shiny", "kd": [0, 0, 1]},
-                    "sparkles": 3})");
-        g.close();
+        QVERIFY(writeFile(odd, R"({"version": 9, "material": {"shininess": "shiny",
+                                  "kd": [0, 0, 1]}, "sparkles": 3})"));
         const QString png = m_dir.filePath("odd.png");
         r = run({"--scene", odd, "--render", png, "--size", "200x150"});
         QCOMPARE(r.exitCode, 0);
@@ -150,9 +150,7 @@ private slots:
         compare["mode"] = "difference";
         compare["shading"] = "gouraud";
         json["compare"] = compare;
-        QVERIFY(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
-        f.write(QJsonDocument(json).toJson());
-        f.close();
+        QVERIFY(writeFile(scene, QJsonDocument(json).toJson()));
         const Run r = run({"--scene", scene, "--render", m_dir.filePath("diff.png")});
         QVERIFY2(r.exitCode == 0, r.err.constData());
         const QJsonObject o = QJsonDocument::fromJson(r.out).object();

@@ -15,20 +15,6 @@ class TestCompare : public QObject
 private:
     OffscreenRenderer m_offscreen;
 
-    // The brightest green pixel of a frame: the middle of the highlight.
-    static QPoint peakOf(const QImage &frame)
-    {
-        QPoint peak;
-        int best = -1;
-        for (int y = 0; y < frame.height(); ++y)
-            for (int x = 0; x < frame.width(); ++x)
-                if (const int v = qGreen(frame.pixel(x, y)); v > best) {
-                    best = v;
-                    peak = QPoint(x, y);
-                }
-        return peak;
-    }
-
 private slots:
     void initTestCase()
     {
@@ -89,7 +75,7 @@ private slots:
     {
         Scene s; // the window's coarse sphere, where the two differ most
         s.showLight = false;
-        const QPoint peak = peakOf(m_offscreen.render(s));
+        const QPoint peak = brightestGreen(m_offscreen.render(s));
         s.compare.mode = CompareMode::Difference;
         s.compare.shading = Shading::Gouraud;
         s.compare.specular = s.shading.specular;

@@ -163,15 +163,7 @@ private slots:
         Scene s; // the default scene: the coarse sphere of the window
         s.showLight = false;
         const QImage phong = m_offscreen.render(s);
-        // The brightest pixel of Phong's highlight.
-        QPoint peak;
-        int best = -1;
-        for (int y = 0; y < phong.height(); ++y)
-            for (int x = 0; x < phong.width(); ++x)
-                if (const int v = qGreen(phong.pixel(x, y)); v > best) {
-                    best = v;
-                    peak = QPoint(x, y);
-                }
+        const QPoint peak = brightestGreen(phong); // the middle of Phong's highlight
         s.shading.shading = Shading::Gouraud;
         const QImage gouraud = m_offscreen.render(s);
         const int diff = std::abs(qGreen(gouraud.pixel(peak)) - qGreen(phong.pixel(peak)));

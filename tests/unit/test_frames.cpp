@@ -118,6 +118,8 @@ private slots:
         if (!near(eye, expected))
             QFAIL(qPrintable(
                 QString("got (%1, %2, %3, %4)").arg(eye.x).arg(eye.y).arg(eye.z).arg(eye.w)));
+        // And back, as the probe shows P and L in the light's frame.
+        QVERIFY(near(eyeToFrame(f, eye, LightFrame(frame)), light));
     }
 
     void worldLightStaysInTheSceneWhenTheCameraOrbits()
