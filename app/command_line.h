@@ -3,7 +3,7 @@
 // --render, --probe, --size, --screenshot and --bench-frames. Bad values end the program with
 // exit code 2 and one line naming the option; nothing here touches OpenGL.
 
-#include "import/import_process.h"
+#include "import_process.h"
 #include "scene.h"
 #include "scene_file.h"
 

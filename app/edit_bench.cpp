@@ -1,8 +1,8 @@
 #include "edit_bench.h"
 
 #include "editor_panel.h"
-#include "glsl/presets.h"
 #include "main_window.h"
+#include "presets.h"
 #include "shader_editor.h"
 #include "viewport.h"
 

@@ -1,6 +1,6 @@
 #include "headless.h"
 
-#include "glsl/diagnostics.h"
+#include "diagnostics.h"
 #include "offscreen.h"
 
 #include <QElapsedTimer>

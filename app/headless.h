@@ -2,7 +2,7 @@
 // --render, --probe and --bench-frames: one offscreen frame (or many), no window.
 
 #include "command_line.h"
-#include "glsl/diagnostics.h"
+#include "diagnostics.h"
 #include "probe.h"
 
 #include <QImage>

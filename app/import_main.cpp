@@ -6,7 +6,7 @@
 //   lightbench-import [--memory-limit MB] [--time-limit SECONDS] FILE
 //   lightbench-import --formats        Assimp's extensions, "*.obj;*.ply;..."
 
-#include "import/assimp_import.h"
+#include "assimp_import.h"
 
 #include <cstdio>
 #include <cstdlib>

@@ -1,12 +1,12 @@
 #include "main_window.h"
 
 #include "editor_panel.h"
-#include "glsl/presets.h"
 #include "light_panel.h"
 #include "material_panel.h"
 #include "mesh_actions.h"
 #include "object_loader.h"
 #include "object_panel.h"
+#include "presets.h"
 #include "probe_panel.h"
 #include "scene_actions.h"
 #include "shading_panel.h"

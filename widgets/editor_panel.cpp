@@ -1,6 +1,6 @@
 #include "editor_panel.h"
 
-#include "glsl/presets.h"
+#include "presets.h"
 #include "shader_editor.h"
 
 #include <QCheckBox>

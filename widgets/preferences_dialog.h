@@ -1,7 +1,7 @@
 #pragma once
 // Edit > Preferences: the import helper's memory and time limits.
 
-#include "import/import_process.h"
+#include "import_process.h"
 
 #include <QDialog>
 

@@ -2,8 +2,8 @@
 // Base of the dock panels: each edits the SceneDocument and shows its values again whenever
 // the document changes (from the panel itself, another panel, the camera or a reset).
 
-#include "glsl/semantics.h"
 #include "scene_document.h"
+#include "semantics.h"
 
 #include <QWidget>
 

@@ -3,7 +3,7 @@
 // completion (GLSL words and the names in the file), and the driver's diagnostics shown where
 // the user looks: a margin marker, the message under the line, a squiggle at the column.
 
-#include "glsl/diagnostics.h"
+#include "diagnostics.h"
 
 #include <Qsci/qsciscintilla.h>
 

@@ -9,6 +9,10 @@
 
 namespace lb {
 
+// Longer sources are refused with a message rather than handed to the driver, and scene
+// files holding longer ones are not read.
+constexpr int kMaxSourceCharacters = 1024 * 1024;
+
 enum class Dialect { WebGL1Implicit, Versioned };
 
 struct PreparedSource

@@ -262,8 +262,9 @@ int convert(const aiScene &scene, Progress &progress, wire::Writer &out, double 
     wire::MeshHeader header;
     header.vertexCount = vertexCount;
     header.indexCount = triangleCount * 3;
-    header.flags = (normals ? wire::kHasNormals : 0) | (colors ? wire::kHasColors : 0) |
-                   (uvs ? wire::kHasUvs : 0);
+    header.flags = (normals ? std::uint32_t(wire::kHasNormals) : 0u) |
+                   (colors ? std::uint32_t(wire::kHasColors) : 0u) |
+                   (uvs ? std::uint32_t(wire::kHasUvs) : 0u);
     const std::uint64_t perVertex = 12 + (normals ? 12 : 0) + (colors ? 12 : 0) + (uvs ? 8 : 0);
     out.begin(Record::Mesh, sizeof header + vertexCount * perVertex + header.indexCount * 4);
     out.write(&header, sizeof header);

@@ -89,10 +89,11 @@ Comparison compareWithReference(OffscreenRenderer &offscreen, const Scene &scene
 
 QString saveForInspection(const QImage &frame, const QString &name)
 {
-    QDir().mkpath("test-output");
+    const QDir folder(QStringLiteral(LB_TEST_OUTPUT)); // CMake's build/tests/test-output
+    folder.mkpath(".");
     QString file = name;
     file.replace(QRegularExpression("[^A-Za-z0-9_-]+"), "_");
-    const QString path = QDir("test-output").absoluteFilePath(file + ".png");
+    const QString path = folder.absoluteFilePath(file + ".png");
     frame.save(path);
     return path;
 }

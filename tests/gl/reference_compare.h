@@ -43,7 +43,8 @@ Comparison compareWithReference(OffscreenRenderer &offscreen, const Scene &scene
 QString checkAgainstReference(OffscreenRenderer &offscreen, const Scene &scene, const QString &name,
                               int minCompared, int minSpecular, int tolerance = kTolerance);
 
-// Writes the frame to test-output/NAME.png for a person to look at; returns the path.
+// Writes the frame to LB_TEST_OUTPUT/NAME.png (CMake's build/tests/test-output) for a person to
+// look at; returns the path.
 QString saveForInspection(const QImage &frame, const QString &name);
 
 // A scene where the normal matrix matters: rotated and scaled non-uniformly, no light marker.

@@ -1,7 +1,7 @@
 // Mesh files drawn by the built-in shaders, pixel by pixel against the CPU reference: the
 // file's own normals, generated smooth and flat ones, node transforms and the fit to the view,
 // the file's diffuse texture; and the normal lines.
-#include "import/import_process.h"
+#include "import_process.h"
 #include "reference_compare.h"
 
 #include <QFile>

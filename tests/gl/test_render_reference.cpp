@@ -1,5 +1,6 @@
 // Frames rendered offscreen by the built-in shaders, pixel by pixel against the CPU reference
-// (render/lighting through render/probe). A failing case writes its frame to test-output/.
+// (render/lighting through render/probe). A failing case writes its frame to
+// build/tests/test-output/.
 #include "reference_compare.h"
 
 #include <QGuiApplication>

@@ -1,7 +1,7 @@
 // User programs: the reference files' shaders typed in as they stand compile, link and draw
 // what the model says; bad sources give a message on the right line and the last good
 // program keeps drawing.
-#include "glsl/presets.h"
+#include "presets.h"
 #include "reference_compare.h"
 
 #include <QFile>

@@ -2,7 +2,7 @@
 // lightbench-import): Debian's assimp-testmodels corpus, broken files of our own, and helpers
 // that crash, hang or write nonsense. The test process must never crash, every failure must
 // come with a message naming the file, and memory must stay bounded.
-#include "import/import_process.h"
+#include "import_process.h"
 #include "object_loader.h"
 
 #include <QDirIterator>

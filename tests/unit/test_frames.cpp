@@ -19,10 +19,6 @@ bool near(const glm::vec4 &a, const glm::vec4 &b, float eps = 1e-4f)
 {
     return glm::all(glm::epsilonEqual(a, b, eps));
 }
-bool near(const glm::vec3 &a, const glm::vec3 &b, float eps = 1e-4f)
-{
-    return glm::all(glm::epsilonEqual(a, b, eps));
-}
 
 // A camera on +Z looking at the origin: mView is a translation by -distance along Z.
 Scene straightOnScene()

@@ -1,7 +1,7 @@
 // GLSL handled as text: dialect detection and driver logs mapped to the user's lines.
 // The Mesa lines are real llvmpipe output; the others are the documented forms.
-#include "glsl/diagnostics.h"
-#include "glsl/dialect.h"
+#include "diagnostics.h"
+#include "dialect.h"
 
 #include <QTest>
 

@@ -2,7 +2,6 @@
 // viewport draws something different. Settings are kept in a temporary file.
 #include "color_edit.h"
 #include "editor_panel.h"
-#include "glsl/presets.h"
 #include "light_panel.h"
 #include "load_progress.h"
 #include "main_window.h"
@@ -11,6 +10,7 @@
 #include "object_loader.h"
 #include "object_panel.h"
 #include "offscreen.h"
+#include "presets.h"
 #include "probe_panel.h"
 #include "recent_files.h"
 #include "scene_actions.h"

@@ -64,9 +64,6 @@ const std::vector<AttributeBinding> &attributeBindings();
 double rawBuildMilliseconds(QOpenGLExtraFunctions &gl, const QString &vertexSource,
                             const QString &fragmentSource, bool draw = false);
 
-// Longer sources are refused with a message rather than handed to the driver.
-constexpr int kMaxSourceCharacters = 1024 * 1024;
-
 // Compiles both stages and links them.
 ProgramBuild buildProgram(QOpenGLExtraFunctions &gl, const QString &vertexSource,
                           const QString &fragmentSource);

@@ -1,6 +1,6 @@
 #include "scene_file.h"
 
-#include "glsl/program.h"
+#include "dialect.h"
 
 #include <QFile>
 #include <QFileInfo>

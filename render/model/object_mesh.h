@@ -3,8 +3,8 @@
 // the "Normals" choice asks for. Built on the caller's thread: the window calls it on a worker
 // thread, the command line and the tests directly.
 
-#include "import/mesh_file.h"
 #include "mesh.h"
+#include "mesh_file.h"
 #include "scene.h"
 
 #include <atomic>

@@ -1,7 +1,7 @@
 #include "renderer.h"
 
-#include "glsl/presets.h"
-#include "glsl/program.h"
+#include "presets.h"
+#include "program.h"
 
 #include <glm/common.hpp>
 

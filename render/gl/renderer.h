@@ -4,8 +4,8 @@
 
 #include "compare.h"
 #include "frames.h"
-#include "glsl/program.h"
 #include "mesh.h"
+#include "program.h"
 #include "scene.h"
 #include "texture.h"
 

@@ -1,8 +1,8 @@
 // The workbench's side of the import stream: whatever the helper writes (a whole mesh,
 // a stream cut anywhere, flipped bytes, lying sizes), the reader gives a checked mesh or an
 // error, never a crash or an index past the last vertex.
-#include "import/wire.h"
-#include "import/wire_reader.h"
+#include "wire.h"
+#include "wire_reader.h"
 
 #include <QRandomGenerator>
 #include <QTest>

@@ -5,7 +5,7 @@
 // keeps drawing. A file becomes the scene's object only once it is loaded and built; a file
 // that fails leaves the scene, and the mesh on screen, as they were.
 
-#include "import/import_process.h"
+#include "import_process.h"
 #include "object_mesh.h"
 #include "scene_document.h"
 

@@ -3,7 +3,7 @@
 // object. Used by the command line (--render, --probe) and the GL tests. Needs a display
 // with OpenGL (an X server; Xvfb when headless).
 
-#include "import/mesh_file.h"
+#include "mesh_file.h"
 #include "object_mesh.h"
 #include "renderer.h"
 
