@@ -3,7 +3,7 @@
 // the left, Shading and Object on the right. Scene, window layout and docks are kept in
 // QSettings and come back at the next start.
 
-#include "program.h"
+#include "program_build.h"
 #include "scene_document.h"
 
 #include <QMainWindow>

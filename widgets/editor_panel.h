@@ -3,7 +3,7 @@
 // on screen, recompiled while typing (after a pause, 150 ms by default), at once on
 // Ctrl+Enter, or only on demand; the diagnostics in a list below (click to jump); presets.
 
-#include "program.h"
+#include "program_build.h"
 #include "scene_file.h"
 
 #include <QFileSystemWatcher>

@@ -36,10 +36,8 @@ LightPanel::LightPanel(SceneDocument *document, QWidget *parent) : ScenePanel(do
                              "go to shaders as black)"));
     connect(m_enabled, &QCheckBox::toggled, this,
             [this](bool on) { edit([&](Scene &s) { current(s).enabled = on; }); });
-    feeds(m_enabled,
-          {Semantic::LightEnabled, Semantic::LightAmbient, Semantic::LightDiffuse,
-           Semantic::LightSpecular},
-          "uLightEnabled or the light's colours");
+    feeds(m_enabled, {Semantic::LightEnabled, Semantic::LightAmbient, Semantic::LightDiffuse,
+                      Semantic::LightSpecular});
     form->addRow(tr("Light"), m_enabled);
     const char *axes[3] = {"x", "y", "z"};
     auto *xyzRow = new QHBoxLayout;
@@ -51,8 +49,7 @@ LightPanel::LightPanel(SceneDocument *document, QWidget *parent) : ScenePanel(do
             edit([&](Scene &s) { current(s).position[i] = float(v); });
         });
         m_xyz[std::size_t(i)] = spin;
-        feeds(spin, {Semantic::LightPosition, Semantic::LightPositionEye},
-              "lightPosition or uLightPosition");
+        feeds(spin, {Semantic::LightPosition, Semantic::LightPositionEye});
         xyzRow->addWidget(spin);
     }
     form->addRow(tr("Position"), xyzRow);
@@ -68,8 +65,7 @@ LightPanel::LightPanel(SceneDocument *document, QWidget *parent) : ScenePanel(do
                 current(s).position.z = 1.0f;
         });
     });
-    feeds(m_w, {Semantic::LightPosition, Semantic::LightPositionEye},
-          "lightPosition or uLightPosition");
+    feeds(m_w, {Semantic::LightPosition, Semantic::LightPositionEye});
     form->addRow(tr("Type"), m_w);
 
     m_frame =
@@ -79,16 +75,16 @@ LightPanel::LightPanel(SceneDocument *document, QWidget *parent) : ScenePanel(do
                      "world: mView / mViewNormals (II); object: mModelView / mNormals (III)"));
     connect(m_frame, &QComboBox::currentIndexChanged, this,
             [this](int index) { edit([&](Scene &s) { current(s).frame = LightFrame(index); }); });
-    feeds(m_frame, {Semantic::LightFrame, Semantic::LightPositionEye},
-          "uLightFrame or uLightPosition");
+    feeds(m_frame, {Semantic::LightFrame, Semantic::LightPositionEye});
     form->addRow(tr("Frame"), m_frame);
 
     const char *symbols[3] = {"Ia", "Id", "Is"};
-    const char *uniforms[3] = {"lightAmb", "lightDif", "lightSpe"};
+    const Semantic semantics[3] = {Semantic::LightAmbient, Semantic::LightDiffuse,
+                                   Semantic::LightSpecular};
     for (int i = 0; i < 3; ++i) {
         auto *colour = new ColorEdit(symbols[i], this);
         colour->setToolTip(tr("%1 (%2): the light's %3 intensity")
-                               .arg(symbols[i], uniforms[i],
+                               .arg(symbols[i], namesOf({semantics[i]}),
                                     i == 0   ? tr("ambient")
                                     : i == 1 ? tr("diffuse")
                                              : tr("specular")));
@@ -96,9 +92,7 @@ LightPanel::LightPanel(SceneDocument *document, QWidget *parent) : ScenePanel(do
             edit([&](Scene &s) { current(s).colors.*kColourMembers[i] = c; });
         });
         m_colors[std::size_t(i)] = colour;
-        const Semantic semantics[3] = {Semantic::LightAmbient, Semantic::LightDiffuse,
-                                       Semantic::LightSpecular};
-        feeds(colour, {semantics[i]}, i == 1 ? "lightDif or uLightColor" : uniforms[i]);
+        feeds(colour, {semantics[i]});
         form->addRow(symbols[i], colour);
     }
 

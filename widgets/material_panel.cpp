@@ -34,19 +34,18 @@ MaterialPanel::MaterialPanel(SceneDocument *document, QWidget *parent)
     auto *form = new QFormLayout(this);
     form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
     const char *symbols[3] = {"Ka", "Kd", "Ks"};
-    const char *uniforms[3] = {"materialAmb", "materialDif", "materialSpe"};
+    const Semantic semantics[3] = {Semantic::MaterialAmbient, Semantic::MaterialDiffuse,
+                                   Semantic::MaterialSpecular};
     const char *terms[3] = {"ambient", "diffuse", "specular"};
     for (int i = 0; i < 3; ++i) {
         auto *colour = new ColorEdit(symbols[i], this);
         colour->setToolTip(tr("%1 (%2): the material's %3 reflection coefficients")
-                               .arg(symbols[i], uniforms[i], terms[i]));
+                               .arg(symbols[i], namesOf({semantics[i]}), terms[i]));
         connect(colour, &ColorEdit::colorChanged, this, [this, i](const glm::vec3 &c) {
             edit([&](Scene &s) { s.material.*kColourMembers[i] = c; });
         });
         m_colors[std::size_t(i)] = colour;
-        const Semantic semantics[3] = {Semantic::MaterialAmbient, Semantic::MaterialDiffuse,
-                                       Semantic::MaterialSpecular};
-        feeds(colour, {semantics[i]}, uniforms[i]);
+        feeds(colour, {semantics[i]});
         form->addRow(symbols[i], colour);
     }
 
@@ -61,8 +60,8 @@ MaterialPanel::MaterialPanel(SceneDocument *document, QWidget *parent)
     });
     connect(m_box, &QDoubleSpinBox::valueChanged, this,
             [this](double v) { edit([&](Scene &s) { s.material.shininess = float(v); }); });
-    feeds(m_slider, {Semantic::Shininess}, "shininess");
-    feeds(m_box, {Semantic::Shininess}, "shininess");
+    feeds(m_slider, {Semantic::Shininess});
+    feeds(m_box, {Semantic::Shininess});
     auto *row = new QHBoxLayout;
     row->addWidget(m_slider, 1);
     row->addWidget(m_box);

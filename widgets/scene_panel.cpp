@@ -34,9 +34,18 @@ QComboBox *ScenePanel::makeCombo(const QStringList &labels, const QString &toolT
     return combo;
 }
 
-void ScenePanel::feeds(QWidget *control, std::vector<Semantic> semantics, const QString &names)
+void ScenePanel::feeds(QWidget *control, std::vector<Semantic> semantics)
 {
-    m_uses.push_back({control, std::move(semantics), names, control->toolTip()});
+    m_uses.push_back({control, std::move(semantics), control->toolTip()});
+}
+
+QString ScenePanel::namesOf(const std::vector<Semantic> &semantics)
+{
+    QStringList names;
+    for (Semantic s : semantics)
+        names << uniformNames(s);
+    const QString last = names.isEmpty() ? QString() : names.takeLast();
+    return names.isEmpty() ? last : names.join(", ") + tr(" or ") + last;
 }
 
 void ScenePanel::showUsage(const std::set<Semantic> &read)
@@ -50,7 +59,7 @@ void ScenePanel::showUsage(const std::set<Semantic> &read)
             used ? use.toolTip
                  : tr("Unused: the program on screen has no uniform %1 (a constant in the "
                       "shader, perhaps), so this control changes nothing.\n\n%2")
-                       .arg(use.names, use.toolTip));
+                       .arg(namesOf(use.semantics), use.toolTip));
     }
 }
 

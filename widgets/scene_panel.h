@@ -28,8 +28,10 @@ public:
     void showUsage(const std::set<Semantic> &read);
 
 protected:
-    // `control` feeds the program through any of `semantics` (uniforms named `names`).
-    void feeds(QWidget *control, std::vector<Semantic> semantics, const QString &names);
+    // `control` feeds the program through any of `semantics` (semantics.h names them).
+    void feeds(QWidget *control, std::vector<Semantic> semantics);
+    // The uniform names of `semantics` in words: "lightDif or uLightColor".
+    static QString namesOf(const std::vector<Semantic> &semantics);
 
     // Shows the scene's values in the controls; must not emit edits (block signals).
     virtual void refresh(const Scene &scene) = 0;
@@ -51,7 +53,6 @@ private:
     {
         QWidget *control;
         std::vector<Semantic> semantics;
-        QString names;
         QString toolTip; // as written by the panel
     };
     std::vector<Use> m_uses;

@@ -29,15 +29,14 @@ ShadingPanel::ShadingPanel(SceneDocument *document, QWidget *parent) : ScenePane
                               "H = normalize(L + V), the half vector (key B)"));
     connect(m_specular, &QComboBox::currentIndexChanged, this,
             [this](int i) { edit([&](Scene &s) { s.shading.specular = SpecularModel(i); }); });
-    feeds(m_specular, {Semantic::SpecularModel}, "uSpecularModel");
+    feeds(m_specular, {Semantic::SpecularModel});
     form->addRow(tr("Specular"), m_specular);
 
     m_projection = makeCombo({tr("Perspective: V = -posC"), tr("Orthographic: V = (0,0,1)")},
                              tr("mProjection, and the view vector V that matches it (key P)"));
     connect(m_projection, &QComboBox::currentIndexChanged, this,
             [this](int i) { edit([&](Scene &s) { s.shading.projection = Projection(i); }); });
-    feeds(m_projection, {Semantic::Projection, Semantic::ProjectionKind},
-          "mProjection or uProjectionMatrix");
+    feeds(m_projection, {Semantic::Projection, Semantic::ProjectionKind});
     form->addRow(tr("Projection"), m_projection);
 
     auto makeCheck = [this, form](const QString &label, const QString &tip,
@@ -58,15 +57,15 @@ ShadingPanel::ShadingPanel(SceneDocument *document, QWidget *parent) : ScenePane
                           tr("uEnableTexture: multiply ambient and diffuse by the texture "
                              "(uSampler): the mesh file's diffuse texture, or the checker"),
                           &ShadingSettings::texture);
-    feeds(m_lighting, {Semantic::EnableLighting}, "uEnableLighting");
-    feeds(m_vertexColors, {Semantic::EnableVertexColor}, "uEnableVertexColor");
-    feeds(m_texture, {Semantic::EnableTexture}, "uEnableTexture");
+    feeds(m_lighting, {Semantic::EnableLighting});
+    feeds(m_vertexColors, {Semantic::EnableVertexColor});
+    feeds(m_texture, {Semantic::EnableTexture});
     m_normalsByModelView = makeCheck(
         tr("Normals by the model-view (wrong)"),
         tr("Transform normals by mModelView instead of its inverse transpose, to see why the "
            "normal matrix exists: under a non-uniform scale the normals tilt"),
         &ShadingSettings::normalsByModelView);
-    feeds(m_normalsByModelView, {Semantic::Normals}, "mNormals or uNormalMatrix");
+    feeds(m_normalsByModelView, {Semantic::Normals});
 
     auto *compareTitle = new QLabel(tr("<b>Compare</b> with a built-in program"), this);
     compareTitle->setToolTip(tr("Side A is the program on screen (the editor's); side B is the "

@@ -17,8 +17,7 @@ namespace {
 QString typeName(const ActiveUniform &u)
 {
     const int n = u.components();
-    if (u.type == GL_BOOL || u.type == GL_BOOL_VEC2 || u.type == GL_BOOL_VEC3 ||
-        u.type == GL_BOOL_VEC4)
+    if (u.isBool())
         return n == 1 ? "bool" : QString("bvec%1").arg(n);
     if (u.isInteger())
         return n == 1 ? "int" : QString("ivec%1").arg(n);
@@ -121,7 +120,7 @@ void UniformPanel::addControl(const ActiveUniform &u)
                 alpha->setValue(double(v[3]));
             }
         });
-    } else if (u.type == GL_BOOL) {
+    } else if (u.isBool() && n == 1) {
         auto *check = new QCheckBox(field);
         row->addWidget(check);
         connect(check, &QCheckBox::toggled, this,

@@ -3,7 +3,7 @@
 // made from its type (float, int, bool, vec2/3/4; a colour picker for a vec3/vec4 whose name
 // says colour). Values live in the scene (Scene::shaderValues), so they survive recompiles.
 
-#include "program.h"
+#include "program_build.h"
 #include "scene_document.h"
 
 #include <QWidget>

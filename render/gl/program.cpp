@@ -1,6 +1,7 @@
 #include "program.h"
 
 #include "dialect.h"
+#include "presets.h"
 
 #include <QByteArray>
 #include <QElapsedTimer>
@@ -43,13 +44,13 @@ void addMessage(ProgramBuild &build, ShaderStage stage, const QString &message,
     build.diagnostics.push_back(d);
 }
 
-// Returns the shader, or 0; the driver's messages go into `build` on the user's lines.
-GLuint compile(QOpenGLExtraFunctions &gl, ShaderStage stage, const QString &source,
-               ProgramBuild &build)
+// Returns the shader, or none; the driver's messages go into `build` on the user's lines.
+GlShader compile(QOpenGLExtraFunctions &gl, ShaderStage stage, const QString &source,
+                 ProgramBuild &build)
 {
     if (source.trimmed().isEmpty()) {
         addMessage(build, stage, QString("the %1 shader is empty").arg(stageName(stage)));
-        return 0;
+        return {};
     }
     if (source.size() > kMaxSourceCharacters) {
         // Mesa needs many seconds for megabytes of GLSL; a live editor would freeze.
@@ -58,19 +59,20 @@ GLuint compile(QOpenGLExtraFunctions &gl, ShaderStage stage, const QString &sour
                        .arg(stageName(stage))
                        .arg(source.size() / 1024)
                        .arg(kMaxSourceCharacters / 1024));
-        return 0;
+        return {};
     }
     const PreparedSource prepared = prepareSource(source);
-    const GLuint shader =
-        gl.glCreateShader(stage == ShaderStage::Vertex ? GL_VERTEX_SHADER : GL_FRAGMENT_SHADER);
+    GlShader shader(
+        gl.glCreateShader(stage == ShaderStage::Vertex ? GL_VERTEX_SHADER : GL_FRAGMENT_SHADER));
     const QByteArray utf8 = prepared.text.toUtf8();
     const char *text = utf8.constData();
     const GLint length = GLint(utf8.size());
-    gl.glShaderSource(shader, 1, &text, &length);
-    gl.glCompileShader(shader);
+    gl.glShaderSource(shader.id(), 1, &text, &length);
+    gl.glCompileShader(shader.id());
     GLint status = GL_FALSE;
-    gl.glGetShaderiv(shader, GL_COMPILE_STATUS, &status);
-    for (const Diagnostic &d : parseDriverLog(shaderLog(gl, shader), stage, prepared.linesAdded))
+    gl.glGetShaderiv(shader.id(), GL_COMPILE_STATUS, &status);
+    for (const Diagnostic &d :
+         parseDriverLog(shaderLog(gl, shader.id()), stage, prepared.linesAdded))
         build.diagnostics.push_back(d);
     if (status != GL_TRUE) {
         // Some drivers fail without a word; the user still needs one.
@@ -78,10 +80,37 @@ GLuint compile(QOpenGLExtraFunctions &gl, ShaderStage stage, const QString &sour
             addMessage(build, stage,
                        QString("the %1 shader does not compile (the driver gave no reason)")
                            .arg(stageName(stage)));
-        gl.glDeleteShader(shader);
-        return 0;
+        return {};
     }
     return shader;
+}
+
+// The GLSL type of a reflected uniform, without GL enums beyond this file.
+void describeType(GLenum type, ActiveUniform &u)
+{
+    struct Entry
+    {
+        GLenum type;
+        UniformKind kind;
+        int width;
+    };
+    static const Entry table[] = {
+        {GL_FLOAT, UniformKind::Float, 1},       {GL_FLOAT_VEC2, UniformKind::Float, 2},
+        {GL_FLOAT_VEC3, UniformKind::Float, 3},  {GL_FLOAT_VEC4, UniformKind::Float, 4},
+        {GL_INT, UniformKind::Int, 1},           {GL_INT_VEC2, UniformKind::Int, 2},
+        {GL_INT_VEC3, UniformKind::Int, 3},      {GL_INT_VEC4, UniformKind::Int, 4},
+        {GL_BOOL, UniformKind::Bool, 1},         {GL_BOOL_VEC2, UniformKind::Bool, 2},
+        {GL_BOOL_VEC3, UniformKind::Bool, 3},    {GL_BOOL_VEC4, UniformKind::Bool, 4},
+        {GL_FLOAT_MAT2, UniformKind::Matrix, 2}, {GL_FLOAT_MAT3, UniformKind::Matrix, 3},
+        {GL_FLOAT_MAT4, UniformKind::Matrix, 4}, {GL_SAMPLER_2D, UniformKind::Sampler, 1},
+    };
+    u.kind = UniformKind::Other;
+    u.width = 1;
+    for (const Entry &e : table)
+        if (e.type == type) {
+            u.kind = e.kind;
+            u.width = e.width;
+        }
 }
 
 std::vector<ActiveUniform> activeUniforms(QOpenGLExtraFunctions &gl, GLuint program)
@@ -94,8 +123,12 @@ std::vector<ActiveUniform> activeUniforms(QOpenGLExtraFunctions &gl, GLuint prog
     for (GLint i = 0; i < count; ++i) {
         ActiveUniform u;
         GLsizei length = 0;
-        gl.glGetActiveUniform(program, GLuint(i), GLsizei(name.size()), &length, &u.size, &u.type,
+        GLint size = 1;
+        GLenum type = 0;
+        gl.glGetActiveUniform(program, GLuint(i), GLsizei(name.size()), &length, &size, &type,
                               name.data());
+        u.size = size;
+        describeType(type, u);
         u.name = QString::fromUtf8(name.constData(), length);
         if (u.name.startsWith("gl_"))
             continue;
@@ -121,70 +154,6 @@ std::vector<ActiveUniform> activeUniforms(QOpenGLExtraFunctions &gl, GLuint prog
 
 } // namespace
 
-int ActiveUniform::components() const
-{
-    if (size != 1 || location < 0)
-        return 0;
-    switch (type) {
-    case GL_FLOAT:
-    case GL_INT:
-    case GL_BOOL:
-        return 1;
-    case GL_FLOAT_VEC2:
-    case GL_INT_VEC2:
-    case GL_BOOL_VEC2:
-        return 2;
-    case GL_FLOAT_VEC3:
-    case GL_INT_VEC3:
-    case GL_BOOL_VEC3:
-        return 3;
-    case GL_FLOAT_VEC4:
-    case GL_INT_VEC4:
-    case GL_BOOL_VEC4:
-        return 4;
-    default:
-        return 0;
-    }
-}
-
-bool ActiveUniform::isInteger() const
-{
-    switch (type) {
-    case GL_INT:
-    case GL_INT_VEC2:
-    case GL_INT_VEC3:
-    case GL_INT_VEC4:
-    case GL_BOOL:
-    case GL_BOOL_VEC2:
-    case GL_BOOL_VEC3:
-    case GL_BOOL_VEC4:
-        return true;
-    default:
-        return false;
-    }
-}
-
-bool ProgramBuild::hasErrors() const
-{
-    for (const Diagnostic &d : diagnostics)
-        if (d.severity == Diagnostic::Severity::Error)
-            return true;
-    return false;
-}
-
-QString ProgramBuild::log() const
-{
-    QString text;
-    for (const Diagnostic &d : diagnostics)
-        text +=
-            QString("%1:%2:%3: %4: %5\n")
-                .arg(stageName(d.stage))
-                .arg(d.line)
-                .arg(d.column)
-                .arg(d.severity == Diagnostic::Severity::Error ? "error" : "warning", d.message);
-    return text;
-}
-
 const std::vector<AttributeBinding> &attributeBindings()
 {
     static const std::vector<AttributeBinding> bindings{
@@ -207,89 +176,88 @@ double rawBuildMilliseconds(QOpenGLExtraFunctions &gl, const QString &vertexSour
     const QByteArray sources[2] = {vertexSource.toUtf8(), fragmentSource.toUtf8()};
     QElapsedTimer timer;
     timer.start();
-    const GLuint program = gl.glCreateProgram();
-    GLuint shaders[2];
+    const GlProgram program = GlProgram::create();
+    GlShader shaders[2];
     for (int i = 0; i < 2; ++i) {
-        shaders[i] = gl.glCreateShader(i ? GL_FRAGMENT_SHADER : GL_VERTEX_SHADER);
+        shaders[i] = GlShader(gl.glCreateShader(i ? GL_FRAGMENT_SHADER : GL_VERTEX_SHADER));
         const char *text = sources[i].constData();
-        gl.glShaderSource(shaders[i], 1, &text, nullptr);
-        gl.glCompileShader(shaders[i]);
-        gl.glAttachShader(program, shaders[i]);
+        gl.glShaderSource(shaders[i].id(), 1, &text, nullptr);
+        gl.glCompileShader(shaders[i].id());
+        gl.glAttachShader(program.id(), shaders[i].id());
     }
-    gl.glLinkProgram(program);
+    gl.glLinkProgram(program.id());
     GLint status = GL_FALSE;
-    gl.glGetProgramiv(program, GL_LINK_STATUS, &status); // waits for a driver that links late
+    gl.glGetProgramiv(program.id(), GL_LINK_STATUS, &status); // waits for a late linker
     if (draw) {
-        GLuint vao = 0;
-        gl.glGenVertexArrays(1, &vao);
-        gl.glBindVertexArray(vao);
-        gl.glUseProgram(program);
+        const GlVertexArray vao = GlVertexArray::create();
+        gl.glBindVertexArray(vao.id());
+        gl.glUseProgram(program.id());
         gl.glDrawArrays(GL_TRIANGLES, 0, 3);
         gl.glFinish();
         gl.glUseProgram(0);
         gl.glBindVertexArray(0);
-        gl.glDeleteVertexArrays(1, &vao);
     }
-    const double ms = double(timer.nsecsElapsed()) * 1e-6;
-    for (GLuint shader : shaders)
-        gl.glDeleteShader(shader);
-    gl.glDeleteProgram(program);
-    return ms;
+    return double(timer.nsecsElapsed()) * 1e-6; // the objects go after the clock stops
 }
 
-ProgramBuild buildProgram(QOpenGLExtraFunctions &gl, const QString &vertexSource,
+BuiltProgram buildProgram(QOpenGLExtraFunctions &gl, const QString &vertexSource,
                           const QString &fragmentSource)
 {
-    ProgramBuild result;
-    const GLuint vs = compile(gl, ShaderStage::Vertex, vertexSource, result);
-    const GLuint fs = compile(gl, ShaderStage::Fragment, fragmentSource, result);
-    if (!vs || !fs) {
-        gl.glDeleteShader(vs);
-        gl.glDeleteShader(fs);
+    BuiltProgram result;
+    ProgramBuild &build = result.build;
+    const GlShader vs = compile(gl, ShaderStage::Vertex, vertexSource, build);
+    const GlShader fs = compile(gl, ShaderStage::Fragment, fragmentSource, build);
+    if (!vs || !fs)
         return result;
-    }
-    const GLuint program = gl.glCreateProgram();
-    gl.glAttachShader(program, vs);
-    gl.glAttachShader(program, fs);
+    GlProgram program = GlProgram::create();
+    gl.glAttachShader(program.id(), vs.id());
+    gl.glAttachShader(program.id(), fs.id());
     for (const AttributeBinding &b : attributeBindings())
-        gl.glBindAttribLocation(program, b.slot, b.name);
-    gl.glLinkProgram(program);
-    gl.glDetachShader(program, vs);
-    gl.glDetachShader(program, fs);
-    gl.glDeleteShader(vs);
-    gl.glDeleteShader(fs);
+        gl.glBindAttribLocation(program.id(), b.slot, b.name);
+    gl.glLinkProgram(program.id());
+    gl.glDetachShader(program.id(), vs.id());
+    gl.glDetachShader(program.id(), fs.id());
 
     GLint status = GL_FALSE;
-    gl.glGetProgramiv(program, GL_LINK_STATUS, &status);
-    for (const Diagnostic &d : parseDriverLog(programLog(gl, program), ShaderStage::Link))
-        result.diagnostics.push_back(d);
+    gl.glGetProgramiv(program.id(), GL_LINK_STATUS, &status);
+    for (const Diagnostic &d : parseDriverLog(programLog(gl, program.id()), ShaderStage::Link))
+        build.diagnostics.push_back(d);
     if (status != GL_TRUE) {
-        if (!result.hasErrors())
-            addMessage(result, ShaderStage::Link, "the program does not link (no reason given)");
-        gl.glDeleteProgram(program);
+        if (!build.hasErrors())
+            addMessage(build, ShaderStage::Link, "the program does not link (no reason given)");
         return result;
     }
     // Two programs link but cannot draw the object; they are refused like a failed link, so
     // that the last good program keeps drawing.
     bool readsPosition = false;
     for (const AttributeBinding &b : attributeBindings())
-        readsPosition = readsPosition ||
-                        (b.slot == kPositionSlot && gl.glGetAttribLocation(program, b.name) >= 0);
+        readsPosition = readsPosition || (b.slot == kPositionSlot &&
+                                          gl.glGetAttribLocation(program.id(), b.name) >= 0);
     if (!readsPosition)
-        addMessage(result, ShaderStage::Vertex,
+        addMessage(build, ShaderStage::Vertex,
                    "no position input: the mesh reaches the shader through an attribute named "
                    "vPosition, aVertexPosition, position or aPosition");
     if (!writesFragmentColour(fragmentSource))
-        addMessage(result, ShaderStage::Fragment,
+        addMessage(build, ShaderStage::Fragment,
                    "the fragment shader writes no colour: assign gl_FragColor (no #version, "
                    "#version 100) or declare an out vec4 (#version 300 es, 330 and later)");
-    if (result.hasErrors()) {
-        gl.glDeleteProgram(program);
+    if (build.hasErrors())
         return result;
-    }
-    result.program = program;
-    result.uniforms = activeUniforms(gl, program);
+    build.linked = true;
+    build.uniforms = activeUniforms(gl, program.id());
+    result.program = std::move(program);
     return result;
+}
+
+BuiltProgram buildBuiltIn(QOpenGLExtraFunctions &gl, const QString &name, QString &error,
+                          const QString &fragment)
+{
+    const Preset pair{name, ":/shaders/" + name};
+    const Preset fragmentPair{name, ":/shaders/" + (fragment.isEmpty() ? name : fragment)};
+    BuiltProgram built = buildProgram(gl, pair.vertexSource(), fragmentPair.fragmentSource());
+    if (!built.build.ok())
+        error += "built-in shader '" + name + "' failed:\n" + built.build.log();
+    return built;
 }
 
 } // namespace lb

@@ -3,13 +3,12 @@
 // (design.md), so user and built-in shaders alike go to glShaderSource as prepareSource()
 // leaves them (dialect.h), and the driver's messages come back on the user's lines.
 
-#include "diagnostics.h"
-#include "semantics.h"
+#include "gl_object.h"
+#include "program_build.h"
 
 #include <QOpenGLExtraFunctions>
 #include <QString>
 
-#include <optional>
 #include <vector>
 
 namespace lb {
@@ -23,30 +22,12 @@ enum AttributeSlot : GLuint {
     kTexCoordSlot = 3
 };
 
-struct ActiveUniform
+// A build that linked holds the one owner of its program; one that did not holds none.
+// What it said (program_build.h) is what the renderer passes on to the window.
+struct BuiltProgram
 {
-    QString name; // without "[0]"
-    GLenum type = 0;
-    GLint size = 1; // array length
-    GLint location = -1;
-    std::optional<Semantic> semantic;
-    // The value right after linking (its initializer, or 0), for the generated controls.
-    std::vector<float> initial;
-
-    // How many numbers a generated control edits: 1 to 4 for float/int/bool and vectors;
-    // 0 for what gets no control (matrices, samplers, arrays).
-    int components() const;
-    bool isInteger() const; // int, ivecN, bool, bvecN
-};
-
-struct ProgramBuild
-{
-    GLuint program = 0; // 0 when compiling or linking failed; the caller owns it otherwise
-    std::vector<Diagnostic> diagnostics;
-    std::vector<ActiveUniform> uniforms; // the linked program's active uniforms
-    bool ok() const { return program != 0; }
-    bool hasErrors() const;
-    QString log() const; // the diagnostics as text, one per line
+    ProgramBuild build;
+    GlProgram program;
 };
 
 // The names bound to each slot: the slides', the exercise's and common generic ones.
@@ -64,8 +45,13 @@ const std::vector<AttributeBinding> &attributeBindings();
 double rawBuildMilliseconds(QOpenGLExtraFunctions &gl, const QString &vertexSource,
                             const QString &fragmentSource, bool draw = false);
 
+// A built-in pair from the resources (:/shaders/NAME.vert and FRAGMENT.frag, FRAGMENT
+// defaulting to NAME). A failure is added to `error`: the build is broken, not the user.
+BuiltProgram buildBuiltIn(QOpenGLExtraFunctions &gl, const QString &name, QString &error,
+                          const QString &fragment = {});
+
 // Compiles both stages and links them.
-ProgramBuild buildProgram(QOpenGLExtraFunctions &gl, const QString &vertexSource,
+BuiltProgram buildProgram(QOpenGLExtraFunctions &gl, const QString &vertexSource,
                           const QString &fragmentSource);
 
 } // namespace lb

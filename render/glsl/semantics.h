@@ -6,6 +6,7 @@
 // uniform is light 1.
 
 #include <QString>
+#include <QStringList>
 
 #include <optional>
 
@@ -37,5 +38,9 @@ enum class Semantic {
 };
 
 std::optional<Semantic> semanticOf(const QString &uniformName);
+// Every name fed with `semantic`, the slides' first ("lightDif", "uLightColor").
+QStringList uniformNames(Semantic semantic);
+// Whether the value belongs to one light (an array of them holds light i + 1 at element i).
+bool isPerLight(Semantic semantic);
 
 } // namespace lb

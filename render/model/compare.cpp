@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 
 namespace lb {
 
@@ -45,6 +46,30 @@ PixelView viewOfPixel(const Scene &scene, QSize frame, QPoint pixel)
     v.size = rect.size();
     v.pixel = pixel - rect.topLeft();
     return v;
+}
+
+DifferenceStats measureDifference(const std::uint8_t *a, const std::uint8_t *b, QSize size)
+{
+    const std::size_t n =
+        std::size_t(std::max(size.width(), 0)) * std::size_t(std::max(size.height(), 0)) * 4;
+    DifferenceStats stats;
+    stats.valid = true;
+    if (n == 0)
+        return stats;
+    std::size_t differing = 0;
+    for (std::size_t i = 0; i < n; i += 4) {
+        int d = 0;
+        for (std::size_t c = 0; c < 3; ++c)
+            d = std::max(d, std::abs(int(a[i + c]) - int(b[i + c])));
+        differing += d > 0 ? 1 : 0;
+        if (d > stats.largest) {
+            stats.largest = d;
+            const int p = int(i / 4);
+            stats.at = QPoint(p % size.width(), size.height() - 1 - p / size.width());
+        }
+    }
+    stats.differing = double(differing) / double(n / 4);
+    return stats;
 }
 
 } // namespace lb

@@ -9,6 +9,8 @@
 #include <QRect>
 #include <QSize>
 
+#include <cstdint>
+
 namespace lb {
 
 // |A - B| at or above this (out of 1) is white in the difference view's heat map.
@@ -40,5 +42,9 @@ struct DifferenceStats
     QPoint at;              // where (top-left origin), the first such pixel
     double differing = 0.0; // the fraction of pixels that differ at all
 };
+
+// Measures two frames of RGBA bytes, `size` large, rows bottom-up as glReadPixels gives them
+// (`at` comes out top-left); alpha is not compared.
+DifferenceStats measureDifference(const std::uint8_t *a, const std::uint8_t *b, QSize size);
 
 } // namespace lb

@@ -1,0 +1,95 @@
+#include "gpu_mesh.h"
+
+#include "program.h"
+
+#include <vector>
+
+namespace lb {
+
+void GpuMesh::upload(QOpenGLExtraFunctions &gl, const Mesh &mesh)
+{
+    // Normals go up with w = 0, so a shader that declares vNormal as vec4 (the slides do)
+    // reads a direction; positions go up as vec3 and GL supplies w = 1.
+    std::vector<glm::vec4> normals;
+    normals.reserve(mesh.normals.size());
+    for (const glm::vec3 &n : mesh.normals)
+        normals.emplace_back(n, 0.0f);
+    const std::size_t n = mesh.vertexCount();
+    m_colors = mesh.colors.size() == n;
+    m_uvs = mesh.uvs.size() == n;
+    m_vertexCount = GLsizei(n);
+    const void *data[4] = {mesh.positions.data(), normals.data(), mesh.colors.data(),
+                           mesh.uvs.data()};
+    const bool present[4] = {true, normals.size() == n, m_colors, m_uvs};
+    const int sizes[4] = {3, 4, 3, 2};
+    const GLuint locations[4] = {kPositionSlot, kNormalSlot, kColorSlot, kTexCoordSlot};
+    for (GlVertexArray *vao : {&m_triangles, &m_normalLines})
+        if (!*vao)
+            *vao = GlVertexArray::create();
+    for (std::size_t i = 0; i < 4; ++i) {
+        GlBuffer &buffer = m_attributes[i];
+        if (!buffer)
+            buffer = GlBuffer::create();
+        gl.glBindBuffer(GL_ARRAY_BUFFER, buffer.id());
+        const GLsizeiptr bytes =
+            present[i] ? GLsizeiptr(n * std::size_t(sizes[i]) * sizeof(float)) : 0;
+        gl.glBufferData(GL_ARRAY_BUFFER, bytes, present[i] ? data[i] : nullptr, GL_STATIC_DRAW);
+        gl.glBindVertexArray(m_triangles.id());
+        if (present[i]) {
+            gl.glEnableVertexAttribArray(locations[i]);
+            gl.glVertexAttribPointer(locations[i], sizes[i], GL_FLOAT, GL_FALSE, 0, nullptr);
+        } else {
+            gl.glDisableVertexAttribArray(locations[i]);
+        }
+        if (i < 2) { // the normal lines read positions and normals once per line
+            gl.glBindVertexArray(m_normalLines.id());
+            gl.glEnableVertexAttribArray(locations[i]);
+            gl.glVertexAttribPointer(locations[i], sizes[i], GL_FLOAT, GL_FALSE, 0, nullptr);
+            gl.glVertexAttribDivisor(locations[i], 1);
+        }
+    }
+    gl.glBindVertexArray(m_triangles.id());
+    if (!m_indices)
+        m_indices = GlBuffer::create();
+    gl.glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, m_indices.id());
+    gl.glBufferData(GL_ELEMENT_ARRAY_BUFFER,
+                    GLsizeiptr(mesh.indices.size() * sizeof(std::uint32_t)), mesh.indices.data(),
+                    GL_STATIC_DRAW);
+    m_indexCount = GLsizei(mesh.indices.size());
+    gl.glBindVertexArray(0);
+    gl.glBindBuffer(GL_ARRAY_BUFFER, 0);
+}
+
+void GpuMesh::release()
+{
+    for (GlBuffer &b : m_attributes)
+        b.reset();
+    m_indices.reset();
+    m_triangles.reset();
+    m_normalLines.reset();
+    m_indexCount = m_vertexCount = 0;
+}
+
+void GpuMesh::draw(QOpenGLExtraFunctions &gl) const
+{
+    if (!hasTriangles())
+        return;
+    if (!m_colors)
+        gl.glVertexAttrib4f(kColorSlot, 1.0f, 1.0f, 1.0f, 1.0f);
+    if (!m_uvs)
+        gl.glVertexAttrib4f(kTexCoordSlot, 0.0f, 0.0f, 0.0f, 1.0f);
+    gl.glBindVertexArray(m_triangles.id());
+    gl.glDrawElements(GL_TRIANGLES, m_indexCount, GL_UNSIGNED_INT, nullptr);
+    gl.glBindVertexArray(0);
+}
+
+void GpuMesh::drawNormalLines(QOpenGLExtraFunctions &gl) const
+{
+    if (!hasVertices())
+        return;
+    gl.glBindVertexArray(m_normalLines.id());
+    gl.glDrawArraysInstanced(GL_LINES, 0, 2, m_vertexCount);
+    gl.glBindVertexArray(0);
+}
+
+} // namespace lb

@@ -1,0 +1,107 @@
+#include "overlays.h"
+
+#include "uniform_upload.h"
+
+#include <glm/common.hpp>
+#include <glm/ext/matrix_transform.hpp>
+#include <glm/geometric.hpp>
+
+namespace lb {
+
+namespace {
+
+// The overlay programs' own inputs (shaders/unlit.frag, shaders/normals.vert). They are not
+// scene values, so they are not in the semantic table: a user's uColor stays the user's.
+const QString kColour = QStringLiteral("uColor");
+const QString kLineLength = QStringLiteral("uLineLength");
+
+// A marker's matrix in eye space: +Z of the arrow along `forward`, starting at `origin`.
+glm::mat4 orientAlong(const glm::vec3 &origin, const glm::vec3 &forward, float length)
+{
+    const glm::vec3 z = glm::normalize(forward);
+    const glm::vec3 helper = std::abs(z.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
+    const glm::vec3 x = glm::normalize(glm::cross(helper, z));
+    const glm::vec3 y = glm::cross(z, x);
+    glm::mat4 m(glm::vec4(x, 0), glm::vec4(y, 0), glm::vec4(z, 0), glm::vec4(origin, 1));
+    return glm::scale(m, glm::vec3(length));
+}
+
+} // namespace
+
+QString Overlays::initialize(QOpenGLExtraFunctions &gl)
+{
+    QString error;
+    m_unlit = buildBuiltIn(gl, "unlit", error);
+    m_normals = buildBuiltIn(gl, "normals", error, "unlit");
+    m_sphere.upload(gl, makeSphere(16, 8));
+    m_arrow.upload(gl, makeArrow(24));
+    return error;
+}
+
+void Overlays::release()
+{
+    m_unlit = {};
+    m_normals = {};
+    m_sphere.release();
+    m_arrow.release();
+}
+
+void Overlays::useUnlit(QOpenGLExtraFunctions &gl, const glm::mat4 &modelView,
+                        const glm::mat4 &projection, const glm::vec3 &colour)
+{
+    gl.glUseProgram(m_unlit.program.id());
+    const std::vector<ActiveUniform> &uniforms = m_unlit.build.uniforms;
+    uploadSemantic(gl, uniforms, Semantic::ModelView, UniformValue::ofMatrix(modelView));
+    uploadSemantic(gl, uniforms, Semantic::Projection, UniformValue::ofMatrix(projection));
+    uploadNamed(gl, uniforms, kColour, UniformValue::ofVector(glm::vec4(colour, 1.0f)));
+}
+
+void Overlays::drawLightMarker(QOpenGLExtraFunctions &gl, const Light &light, const Frames &frames)
+{
+    const glm::vec4 eye = lightInEye(frames, light.position, light.frame);
+    glm::mat4 modelView;
+    const GpuMesh *marker = nullptr;
+    if (eye.w != 0.0f) {
+        modelView = glm::scale(glm::translate(glm::mat4(1.0f), glm::vec3(eye)), glm::vec3(0.06f));
+        marker = &m_sphere;
+    } else {
+        // An arrow outside the object, pointing along the light's rays towards it.
+        const glm::vec3 centre(frames.modelView[3]);
+        const glm::vec3 towardsLight = glm::normalize(glm::vec3(eye));
+        modelView = orientAlong(centre + 2.2f * towardsLight, -towardsLight, 0.7f);
+        marker = &m_arrow;
+    }
+    // The marker takes the light's diffuse colour at full brightness, so it stays visible.
+    const glm::vec3 id = light.colors.id;
+    const float peak = glm::max(id.x, glm::max(id.y, id.z));
+    useUnlit(gl, modelView, frames.projection, peak > 0.0f ? id / peak : glm::vec3(1.0f));
+    marker->draw(gl);
+}
+
+void Overlays::drawNormals(QOpenGLExtraFunctions &gl, const GpuMesh &mesh, const Scene &scene,
+                           const Frames &frames)
+{
+    gl.glUseProgram(m_normals.program.id());
+    const std::vector<ActiveUniform> &uniforms = m_normals.build.uniforms;
+    for (Semantic s : {Semantic::ModelView, Semantic::Normals, Semantic::Projection})
+        uploadSemantic(gl, uniforms, s, uniformValue(s, scene, frames));
+    const glm::vec3 &scale = scene.object.scale;
+    const float length = 0.05f * (scale.x + scale.y + scale.z) / 3.0f;
+    uploadNamed(gl, uniforms, kLineLength, UniformValue::ofNumber(length));
+    uploadNamed(gl, uniforms, kColour, UniformValue::ofVector(glm::vec4(1.0f, 0.82f, 0.2f, 1.0f)));
+    mesh.drawNormalLines(gl);
+}
+
+void Overlays::drawArrows(QOpenGLExtraFunctions &gl, const std::vector<ProbeArrow> &arrows,
+                          const Frames &frames)
+{
+    for (const ProbeArrow &a : arrows) {
+        const float length = glm::length(a.direction);
+        if (length <= 0.0f)
+            continue;
+        useUnlit(gl, orientAlong(a.origin, a.direction, length), frames.projection, a.colour);
+        m_arrow.draw(gl);
+    }
+}
+
+} // namespace lb

@@ -1,0 +1,33 @@
+#include "program_build.h"
+
+namespace lb {
+
+int ActiveUniform::components() const
+{
+    const bool numbers =
+        kind == UniformKind::Float || kind == UniformKind::Int || kind == UniformKind::Bool;
+    return numbers && size == 1 && location >= 0 ? width : 0;
+}
+
+bool ProgramBuild::hasErrors() const
+{
+    for (const Diagnostic &d : diagnostics)
+        if (d.severity == Diagnostic::Severity::Error)
+            return true;
+    return false;
+}
+
+QString ProgramBuild::log() const
+{
+    QString text;
+    for (const Diagnostic &d : diagnostics)
+        text +=
+            QString("%1:%2:%3: %4: %5\n")
+                .arg(stageName(d.stage))
+                .arg(d.line)
+                .arg(d.column)
+                .arg(d.severity == Diagnostic::Severity::Error ? "error" : "warning", d.message);
+    return text;
+}
+
+} // namespace lb

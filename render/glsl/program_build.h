@@ -1,0 +1,47 @@
+#pragma once
+// What building a program said, without OpenGL: the diagnostics on the user's lines and the
+// linked program's active uniforms as GLSL declares them. The GL side (render/gl/program.h)
+// adds the one owner of the program object; widgets, the command line and tests see this.
+
+#include "diagnostics.h"
+#include "semantics.h"
+
+#include <QString>
+
+#include <optional>
+#include <vector>
+
+namespace lb {
+
+// A uniform's declared type in GLSL terms: the scalar kind and how wide it is.
+enum class UniformKind { Float, Int, Bool, Matrix, Sampler, Other };
+
+struct ActiveUniform
+{
+    QString name; // without "[0]"
+    UniformKind kind = UniformKind::Other;
+    int width = 1; // 1 to 4 for scalars and vectors (vec3: 3); 2 to 4 for square matrices
+    int size = 1;  // array length
+    int location = -1;
+    std::optional<Semantic> semantic;
+    // The value right after linking (its initializer, or 0), for the generated controls.
+    std::vector<float> initial;
+
+    // How many numbers a generated control edits: 1 to 4 for float/int/bool and vectors;
+    // 0 for what gets no control (matrices, samplers, arrays).
+    int components() const;
+    bool isInteger() const { return kind == UniformKind::Int || kind == UniformKind::Bool; }
+    bool isBool() const { return kind == UniformKind::Bool; }
+};
+
+struct ProgramBuild
+{
+    bool linked = false; // compiled, linked and able to draw the object
+    std::vector<Diagnostic> diagnostics;
+    std::vector<ActiveUniform> uniforms; // the linked program's active uniforms
+    bool ok() const { return linked; }
+    bool hasErrors() const;
+    QString log() const; // the diagnostics as text, one per line
+};
+
+} // namespace lb
