@@ -38,3 +38,12 @@ template <length_t C, length_t R, typename T, qualifier Q> char *toString(const 
 }
 
 } // namespace glm
+
+// The same text as a QByteArray, for QVERIFY2 messages: glmText(v).constData().
+template <typename T> QByteArray glmText(const T &value)
+{
+    char *text = glm::toString(value);
+    const QByteArray copy(text);
+    delete[] text;
+    return copy;
+}

@@ -1,0 +1,209 @@
+// The values the renderer feeds each uniform of the semantic table, for both seed conventions
+// (the slides' names and the exercise's), worked out here from the frames with GLM: the
+// normal matrices as inverse transposes, the light brought into eye space by hand for each
+// frame and w, colours of a light switched off as black.
+#include "frames.h"
+#include "glm_to_string.h"
+#include "semantics.h"
+#include "uniform_values.h"
+
+#include <QTest>
+
+#include <glm/gtc/epsilon.hpp>
+#include <glm/gtc/matrix_inverse.hpp>
+
+using namespace lb;
+
+namespace {
+
+bool near(const glm::vec4 &a, const glm::vec4 &b)
+{
+    return glm::all(glm::epsilonEqual(a, b, 1e-4f));
+}
+
+bool near(const glm::mat4 &a, const glm::mat4 &b)
+{
+    for (int c = 0; c < 4; ++c)
+        if (!near(a[c], b[c]))
+            return false;
+    return true;
+}
+
+// A scene where every value differs from its neighbours: turned and squashed (so the normal
+// matrix is not the model-view), a camera off the axis, four lights with their own colours.
+Scene busyScene()
+{
+    Scene s;
+    s.object.rotationDegrees = {30.0f, -50.0f, 10.0f};
+    s.object.scale = {1.8f, 0.6f, 1.0f};
+    s.camera.yawDegrees = 40.0f;
+    s.camera.pitchDegrees = -15.0f;
+    s.material.ka = {0.1f, 0.2f, 0.3f};
+    s.material.kd = {0.4f, 0.5f, 0.6f};
+    s.material.ks = {0.7f, 0.8f, 0.9f};
+    s.material.shininess = 42.0f;
+    for (int i = 0; i < kMaxLights; ++i) {
+        Light &l = s.lights[std::size_t(i)];
+        l.enabled = true;
+        l.colors.ia = glm::vec3(0.01f * float(i + 1));
+        l.colors.id = glm::vec3(0.1f * float(i + 1), 0.2f, 0.3f);
+        l.colors.is = glm::vec3(0.9f, 0.1f * float(i + 1), 0.5f);
+        l.position = {1.0f + float(i), -2.0f, 3.0f, 1.0f};
+    }
+    return s;
+}
+
+glm::vec4 value(const QString &name, const Scene &scene, const Frames &frames, int light = 0)
+{
+    const std::optional<Semantic> s = semanticOf(name);
+    if (!s)
+        qFatal("%s is not in the semantic table", qPrintable(name));
+    return uniformValue(*s, scene, frames, light).vector;
+}
+
+glm::mat4 matrix(const QString &name, const Scene &scene, const Frames &frames)
+{
+    const std::optional<Semantic> s = semanticOf(name);
+    if (!s)
+        qFatal("%s is not in the semantic table", qPrintable(name));
+    const UniformValue v = uniformValue(*s, scene, frames);
+    if (!v.isMatrix)
+        qFatal("%s is not a matrix", qPrintable(name));
+    return v.matrix;
+}
+
+} // namespace
+
+Q_DECLARE_METATYPE(lb::LightFrame)
+
+class TestUniformValues : public QObject
+{
+    Q_OBJECT
+private slots:
+    void everySemanticHasANameAndEveryNameItsSemantic()
+    {
+        for (int i = 0; i <= int(Semantic::Sampler); ++i) {
+            const QStringList names = uniformNames(Semantic(i));
+            QVERIFY2(!names.isEmpty(), qPrintable(QString("semantic %1 has no name").arg(i)));
+            for (const QString &name : names)
+                QCOMPARE(semanticOf(name), std::optional<Semantic>(Semantic(i)));
+        }
+        QCOMPARE(semanticOf("uColor"), std::nullopt); // the overlays' own, a user's own
+        QCOMPARE(uniformNames(Semantic::LightDiffuse), QStringList({"lightDif", "uLightColor"}));
+    }
+
+    void matricesInBothConventions_data()
+    {
+        QTest::addColumn<QString>("name");
+        QTest::addColumn<int>("which"); // 0 model-view, 1 normals, 2 view, 3 view normals, 4 P
+        QTest::newRow("slides mModelView") << "mModelView" << 0;
+        QTest::newRow("slides mNormals") << "mNormals" << 1;
+        QTest::newRow("slides mView") << "mView" << 2;
+        QTest::newRow("slides mViewNormals") << "mViewNormals" << 3;
+        QTest::newRow("slides mProjection") << "mProjection" << 4;
+        QTest::newRow("exercise uModelViewMatrix") << "uModelViewMatrix" << 0;
+        QTest::newRow("exercise uNormalMatrix") << "uNormalMatrix" << 1;
+        QTest::newRow("exercise uProjectionMatrix") << "uProjectionMatrix" << 4;
+    }
+    void matricesInBothConventions()
+    {
+        QFETCH(QString, name);
+        QFETCH(int, which);
+        for (Projection projection : {Projection::Perspective, Projection::Orthographic}) {
+            Scene scene = busyScene();
+            scene.shading.projection = projection;
+            const Frames f = computeFrames(scene, 1.5f);
+            const glm::mat4 expected[5] = {f.view * f.model, glm::inverseTranspose(f.modelView),
+                                           f.view, glm::inverseTranspose(f.view), f.projection};
+            QVERIFY2(near(matrix(name, scene, f), expected[which]),
+                     glmText(matrix(name, scene, f)).constData());
+        }
+        // The wrong normal matrix on purpose: the model-view itself.
+        Scene wrong = busyScene();
+        wrong.shading.normalsByModelView = true;
+        const Frames f = computeFrames(wrong, 1.5f);
+        if (which == 1)
+            QVERIFY(near(matrix(name, wrong, f), f.modelView));
+    }
+
+    void lightPositionInEachFrame_data()
+    {
+        QTest::addColumn<LightFrame>("frame");
+        QTest::addColumn<float>("w");
+        for (LightFrame frame : {LightFrame::Camera, LightFrame::World, LightFrame::Object})
+            for (float w : {0.0f, 1.0f})
+                QTest::newRow(qPrintable(QString("%1, w = %2").arg(toName(frame)).arg(w)))
+                    << frame << w;
+    }
+    void lightPositionInEachFrame()
+    {
+        QFETCH(LightFrame, frame);
+        QFETCH(float, w);
+        Scene scene = busyScene();
+        for (Light &l : scene.lights) {
+            l.frame = frame;
+            l.position.w = w;
+        }
+        const Frames f = computeFrames(scene, 1.0f);
+        // Points by the frame's matrix, directions by its inverse transpose.
+        const glm::mat4 toEye = frame == LightFrame::Camera  ? glm::mat4(1.0f)
+                                : frame == LightFrame::World ? f.view
+                                                             : f.view * f.model;
+        for (int i = 0; i < kMaxLights; ++i) {
+            const glm::vec4 given = scene.lights[std::size_t(i)].position;
+            glm::vec4 eye = (w == 1.0f ? toEye : glm::inverseTranspose(toEye)) * given;
+            eye.w = w; // the inverse transpose puts the translation into w: a direction keeps 0
+            // The slides' lightPosition goes as given (the shader moves it); the exercise's
+            // uLightPosition arrives in camera coordinates.
+            QCOMPARE(value("lightPosition", scene, f, i), given);
+            QVERIFY2(near(value("uLightPosition", scene, f, i), eye),
+                     (glmText(value("uLightPosition", scene, f, i)) + " expected " + glmText(eye))
+                         .constData());
+            QCOMPARE(value("uLightFrame", scene, f, i).x, float(int(frame)));
+        }
+    }
+
+    void lightColoursAndSwitches()
+    {
+        Scene scene = busyScene();
+        scene.lights[2].enabled = false;
+        const Frames f = computeFrames(scene, 1.0f);
+        for (int i = 0; i < kMaxLights; ++i) {
+            const Light &l = scene.lights[std::size_t(i)];
+            const glm::vec3 on = l.enabled ? glm::vec3(1.0f) : glm::vec3(0.0f);
+            QCOMPARE(value("lightAmb", scene, f, i), glm::vec4(l.colors.ia * on, 1.0f));
+            QCOMPARE(value("lightDif", scene, f, i), glm::vec4(l.colors.id * on, 1.0f));
+            QCOMPARE(value("uLightColor", scene, f, i), glm::vec4(l.colors.id * on, 1.0f));
+            QCOMPARE(value("lightSpe", scene, f, i), glm::vec4(l.colors.is * on, 1.0f));
+            QCOMPARE(value("uLightEnabled", scene, f, i).x, l.enabled ? 1.0f : 0.0f);
+        }
+        for (const QString &name : {QString("lightAmb"), QString("uLightPosition")})
+            QVERIFY(isPerLight(*semanticOf(name)));
+        QVERIFY(!isPerLight(Semantic::MaterialDiffuse));
+    }
+
+    void materialAndShadingSwitches()
+    {
+        Scene scene = busyScene();
+        const Frames f = computeFrames(scene, 1.0f);
+        QCOMPARE(value("materialAmb", scene, f), glm::vec4(0.1f, 0.2f, 0.3f, 1.0f));
+        QCOMPARE(value("materialDif", scene, f), glm::vec4(0.4f, 0.5f, 0.6f, 1.0f));
+        QCOMPARE(value("materialSpe", scene, f), glm::vec4(0.7f, 0.8f, 0.9f, 1.0f));
+        QCOMPARE(value("shininess", scene, f).x, 42.0f);
+        QCOMPARE(value("uSampler", scene, f).x, 0.0f);
+        for (bool on : {false, true}) {
+            scene.shading.specular = on ? SpecularModel::Blinn : SpecularModel::Phong;
+            scene.shading.projection = on ? Projection::Orthographic : Projection::Perspective;
+            scene.shading.lighting = on;
+            scene.shading.vertexColors = on;
+            scene.shading.texture = on;
+            const float x = on ? 1.0f : 0.0f;
+            for (const char *name : {"uSpecularModel", "uProjection", "uEnableLighting",
+                                     "uEnableVertexColor", "uEnableTexture"})
+                QCOMPARE(value(name, scene, f).x, x);
+        }
+    }
+};
+
+QTEST_GUILESS_MAIN(TestUniformValues)
+#include "test_uniform_values.moc"
