@@ -116,6 +116,8 @@ MainWindow::MainWindow(QSettings &settings, QWidget *parent)
     m_sceneActions = new SceneActions(this, &m_document, m_editor, m_viewport, m_settings);
     connect(m_meshActions, &MeshActions::sceneFileDropped, m_sceneActions, &SceneActions::open);
     connect(m_object, &ObjectPanel::openMeshRequested, m_meshActions, &MeshActions::showOpenDialog);
+    connect(m_object, &ObjectPanel::adoptFileMaterialRequested, m_loader,
+            &ObjectLoader::setAdoptFileMaterial);
     m_glLabel = new QLabel(this);
     statusBar()->addPermanentWidget(m_glLabel);
     connect(m_viewport, &Viewport::glInfo, m_glLabel, &QLabel::setText);
@@ -128,9 +130,10 @@ MainWindow::MainWindow(QSettings &settings, QWidget *parent)
     m_saveTimer.setSingleShot(true);
     m_saveTimer.setInterval(500);
     connect(&m_saveTimer, &QTimer::timeout, this, &MainWindow::saveSettings);
-    connect(&m_document, &SceneDocument::changed, this, [this] {
+    connect(&m_document, &SceneDocument::changed, this, [this](SceneParts parts) {
         updateStatus();
-        m_editor->followShading(m_document.scene().shading.shading == Shading::Gouraud);
+        if (parts & ScenePart::Shading)
+            m_editor->followShading(m_document.scene().shading.shading == Shading::Gouraud);
         // Not restarted on every change: auto-rotate edits the scene 60 times a second,
         // and a timer restarted that often would never fire.
         if (!m_saveTimer.isActive())

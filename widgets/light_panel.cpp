@@ -17,7 +17,8 @@ glm::vec3 LightColors::*const kColourMembers[3] = {&LightColors::ia, &LightColor
                                                    &LightColors::is};
 }
 
-LightPanel::LightPanel(SceneDocument *document, QWidget *parent) : ScenePanel(document, parent)
+LightPanel::LightPanel(SceneDocument *document, QWidget *parent)
+    : ScenePanel(document, ScenePart::Lights, parent)
 {
     auto *form = new QFormLayout(this);
     form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);

@@ -29,7 +29,7 @@ float MaterialPanel::shininessAt(int position)
 }
 
 MaterialPanel::MaterialPanel(SceneDocument *document, QWidget *parent)
-    : ScenePanel(document, parent)
+    : ScenePanel(document, ScenePart::Material, parent)
 {
     auto *form = new QFormLayout(this);
     form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);

@@ -16,7 +16,8 @@ namespace {
 constexpr int kShapeCount = 4; // the combo's entries after these name the mesh file
 }
 
-ObjectPanel::ObjectPanel(SceneDocument *document, QWidget *parent) : ScenePanel(document, parent)
+ObjectPanel::ObjectPanel(SceneDocument *document, QWidget *parent)
+    : ScenePanel(document, ScenePart::Object, parent)
 {
     auto *form = new QFormLayout(this);
     form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
@@ -75,7 +76,7 @@ ObjectPanel::ObjectPanel(SceneDocument *document, QWidget *parent) : ScenePanel(
                                    "and shininess replace Ka, Kd, Ks and shininess: now, and "
                                    "whenever a file is loaded"));
     connect(m_adoptMaterial, &QCheckBox::toggled, this,
-            [this](bool on) { edit([&](Scene &s) { s.object.adoptFileMaterial = on; }); });
+            [this](bool on) { emit adoptFileMaterialRequested(on); });
     form->addRow(m_adoptMaterial);
 
     const char *axes[3] = {"X", "Y", "Z"};

@@ -32,6 +32,9 @@ public:
 
 signals:
     void openMeshRequested(); // the "Open..." button: the window shows its file dialog
+    // "Use the mesh file's material": the object loader switches it and, with a file on
+    // screen, takes its material in the same edit (ObjectLoader::setAdoptFileMaterial).
+    void adoptFileMaterialRequested(bool on);
 
 protected:
     void refresh(const Scene &scene) override;

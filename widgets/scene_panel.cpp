@@ -7,10 +7,13 @@
 
 namespace lb {
 
-ScenePanel::ScenePanel(SceneDocument *document, QWidget *parent)
+ScenePanel::ScenePanel(SceneDocument *document, SceneParts shown, QWidget *parent)
     : QWidget(parent), m_document(document)
 {
-    connect(document, &SceneDocument::changed, this, [this] { refresh(m_document->scene()); });
+    connect(document, &SceneDocument::changed, this, [this, shown](SceneParts parts) {
+        if (parts & shown)
+            refresh(m_document->scene());
+    });
 }
 
 QDoubleSpinBox *ScenePanel::makeSpin(double lo, double hi, int decimals, double step,

@@ -21,7 +21,8 @@ class ScenePanel : public QWidget
 {
     Q_OBJECT
 public:
-    explicit ScenePanel(SceneDocument *document, QWidget *parent = nullptr);
+    // The panel shows the scene's `shown` parts: it refreshes when one of them changes.
+    ScenePanel(SceneDocument *document, SceneParts shown, QWidget *parent = nullptr);
 
     // Greys out the controls whose uniforms the program on screen does not read, and says
     // why in their tooltip (a student who hard-coded a const sees why a slider does nothing).

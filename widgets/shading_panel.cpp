@@ -11,7 +11,8 @@
 
 namespace lb {
 
-ShadingPanel::ShadingPanel(SceneDocument *document, QWidget *parent) : ScenePanel(document, parent)
+ShadingPanel::ShadingPanel(SceneDocument *document, QWidget *parent)
+    : ScenePanel(document, ScenePart::Shading | ScenePart::Compare, parent)
 {
     auto *form = new QFormLayout(this);
     form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);

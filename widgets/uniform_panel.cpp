@@ -39,7 +39,10 @@ UniformPanel::UniformPanel(SceneDocument *document, QWidget *parent)
     m_note = new QLabel(this);
     m_note->setWordWrap(true);
     m_form->addRow(m_note);
-    connect(document, &SceneDocument::changed, this, &UniformPanel::refresh);
+    connect(document, &SceneDocument::changed, this, [this](SceneParts parts) {
+        if (parts & ScenePart::Program)
+            refresh();
+    });
     setUniforms({});
 }
 

@@ -17,13 +17,15 @@ ObjectLoader::ObjectLoader(SceneDocument *document, QObject *parent)
     : QObject(parent), m_document(document)
 {
     m_pool.setMaxThreadCount(1);
-    connect(document, &SceneDocument::changed, this, &ObjectLoader::sync);
+    connect(document, &SceneDocument::changed, this, [this](SceneParts parts) {
+        if (parts & ScenePart::Object)
+            sync();
+    });
     connect(&m_import, &ImportProcess::progress, this,
             [this](double fraction, const QString &stage) {
                 emit loadProgress(0.9 * fraction, stage); // the build takes the last tenth
             });
     connect(&m_import, &ImportProcess::finished, this, &ObjectLoader::imported);
-    m_adopting = document->scene().object.adoptFileMaterial;
     sync();
 }
 
@@ -67,6 +69,17 @@ void ObjectLoader::open(const QString &path)
     m_import.start(path, m_limits);
 }
 
+void ObjectLoader::setAdoptFileMaterial(bool on)
+{
+    const bool onScreen = m_file && m_file->path == m_document->scene().object.meshPath;
+    const std::shared_ptr<const MeshFile> file = onScreen ? m_file : nullptr;
+    m_document->edit([&](Scene &s) {
+        s.object.adoptFileMaterial = on;
+        if (on && file)
+            s.material = adoptMaterial(s.material, file->material);
+    });
+}
+
 void ObjectLoader::cancel()
 {
     if (m_import.isRunning())
@@ -98,14 +111,6 @@ void ObjectLoader::imported(const ImportResult &result)
 
 void ObjectLoader::sync()
 {
-    // Ticking "Use the mesh file's material" with a file on screen takes its material now.
-    const bool adopt = m_document->scene().object.adoptFileMaterial;
-    if (adopt && !m_adopting && m_file && m_file->path == m_document->scene().object.meshPath) {
-        m_adopting = adopt;
-        const FileMaterial material = m_file->material;
-        m_document->edit([&](Scene &s) { s.material = adoptMaterial(s.material, material); });
-    }
-    m_adopting = adopt;
     if (m_job)
         return; // one build at a time; finishBuild() syncs again with the newest scene
     const ObjectSettings &object = m_document->scene().object;

@@ -26,6 +26,9 @@ public:
 
     // Loads a mesh file; on success the scene's object becomes it. loadFinished() follows.
     void open(const QString &path);
+    // "Use the mesh file's material": switches it in the scene and, with a file on screen,
+    // takes the file's Ka, Kd, Ks and shininess in the same edit.
+    void setAdoptFileMaterial(bool on);
     // Stops a running open(): the helper is killed, a build in progress dropped.
     void cancel();
     bool isLoading() const { return m_loading; }
@@ -73,7 +76,6 @@ private:
     QThreadPool m_pool;
     std::shared_ptr<Job> m_job; // the build in flight; one at a time
     bool m_loading = false;
-    bool m_adopting = false; // the scene's adoptFileMaterial as last seen
     QString m_loadingPath;
     std::shared_ptr<const MeshFile> m_file;
     std::shared_ptr<const Mesh> m_mesh;

@@ -32,8 +32,8 @@ glm::mat4 OrbitCamera::view() const
 glm::mat4 OrbitCamera::projection(float aspect, Projection kind) const
 {
     if (kind == Projection::Perspective)
-        return glm::perspective(glm::radians(fovYDegrees), aspect, kNear, kFar);
-    const float halfHeight = distance * std::tan(glm::radians(fovYDegrees) * 0.5f);
+        return glm::perspective(glm::radians(kFovYDegrees), aspect, kNear, kFar);
+    const float halfHeight = distance * std::tan(glm::radians(kFovYDegrees) * 0.5f);
     const float halfWidth = halfHeight * aspect;
     return glm::ortho(-halfWidth, halfWidth, -halfHeight, halfHeight, kNear, kFar);
 }
@@ -49,7 +49,7 @@ void OrbitCamera::pan(float dxView, float dyView)
     const glm::mat4 toWorld = glm::inverse(view());
     const glm::vec3 right(toWorld[0]);
     const glm::vec3 up(toWorld[1]);
-    const float height = 2.0f * distance * std::tan(glm::radians(fovYDegrees) * 0.5f);
+    const float height = 2.0f * distance * std::tan(glm::radians(kFovYDegrees) * 0.5f);
     target += (-dxView * right + dyView * up) * height;
 }
 

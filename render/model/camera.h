@@ -14,7 +14,7 @@ struct OrbitCamera
     float distance = 5.5f;
     float yawDegrees = 25.0f;
     float pitchDegrees = 20.0f;
-    float fovYDegrees = 45.0f;
+    static constexpr float kFovYDegrees = 45.0f; // fixed: no control changes it
 
     glm::vec3 eye() const;
     glm::mat4 view() const; // lookAt(eye, target, up): world -> camera

@@ -5,6 +5,7 @@
 #include "camera.h"
 #include "lighting.h"
 
+#include <QFlags>
 #include <QJsonObject>
 #include <QString>
 #include <QStringList>
@@ -100,11 +101,36 @@ struct Scene
     static Scene fromJson(const QJsonObject &json, QStringList *ignored = nullptr);
 };
 
+// The parts of a scene that change together. SceneDocument::changed() names those that
+// changed, so that each listener does only its own work (the object loader rebuilds on Object
+// alone, the Light panel refreshes on Lights alone).
+enum class ScenePart : unsigned {
+    Lights = 1u << 0, // the lights and whether their markers show
+    Material = 1u << 1,
+    Shading = 1u << 2,
+    Object = 1u << 3,
+    Camera = 1u << 4,
+    Compare = 1u << 5,
+    Program = 1u << 6, // the values of the program's own uniforms (shaderValues)
+};
+Q_DECLARE_FLAGS(SceneParts, ScenePart)
+constexpr SceneParts kAllSceneParts = SceneParts(0x7f);
+
+// Field by field: the parts in which `a` and `b` differ.
+SceneParts differingParts(const Scene &a, const Scene &b);
+
 bool operator==(const Scene &a, const Scene &b);
 inline bool operator!=(const Scene &a, const Scene &b)
 {
     return !(a == b);
 }
+bool operator==(const Light &a, const Light &b);
+bool operator==(const LightColors &a, const LightColors &b);
+bool operator==(const Material &a, const Material &b);
+bool operator==(const ShadingSettings &a, const ShadingSettings &b);
+bool operator==(const ObjectSettings &a, const ObjectSettings &b);
+bool operator==(const OrbitCamera &a, const OrbitCamera &b);
+bool operator==(const CompareSettings &a, const CompareSettings &b);
 
 // Limits shared by the panels and the command line.
 namespace limits {
@@ -142,3 +168,5 @@ QStringList normalModeNames();
 QStringList compareModeNames();
 
 } // namespace lb
+
+Q_DECLARE_OPERATORS_FOR_FLAGS(lb::SceneParts)

@@ -1,6 +1,7 @@
 #pragma once
 // The scene every panel edits and the viewport draws. Panels change it through set(); the
-// changed() signal tells the viewport to repaint and the panels to show the new values.
+// changed() signal says which parts changed: the viewport repaints, the panels showing those
+// parts show the new values.
 
 #include "scene.h"
 
@@ -16,10 +17,11 @@ public:
     const Scene &scene() const { return m_scene; }
     void set(const Scene &scene)
     {
-        if (scene == m_scene)
+        const SceneParts parts = differingParts(m_scene, scene);
+        if (!parts)
             return;
         m_scene = scene;
-        emit changed();
+        emit changed(parts);
     }
     // Edits a copy and stores it: document.edit([](Scene &s) { s.material.shininess = 20; });
     template <typename F> void edit(F &&change)
@@ -30,7 +32,8 @@ public:
     }
 
 signals:
-    void changed();
+    // `parts`: what differs from the scene before (never empty).
+    void changed(lb::SceneParts parts);
 
 private:
     Scene m_scene;

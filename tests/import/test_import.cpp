@@ -243,12 +243,11 @@ private slots:
         QVERIFY(!loader.file()->hasNormals()); // none in the file: generated
         QCOMPARE(loader.mesh()->normals.size(), loader.mesh()->vertexCount());
 
-        // Ticked after the load, the option takes the file's material at once.
-        document.edit([](Scene &s) {
-            s.object.adoptFileMaterial = false;
-            s.material = Material{};
-        });
-        document.edit([](Scene &s) { s.object.adoptFileMaterial = true; });
+        // Ticked after the load (the Object panel's check box asks the loader), the option
+        // takes the file's material at once.
+        loader.setAdoptFileMaterial(false);
+        document.edit([](Scene &s) { s.material = Material{}; });
+        loader.setAdoptFileMaterial(true);
         QCOMPARE(document.scene().material.shininess, 50.0f);
 
         // The texture gone: the mesh still loads, the message says what is missing.

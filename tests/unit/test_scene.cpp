@@ -1,13 +1,19 @@
 // The scene's JSON (what QSettings keeps between runs) and the procedural meshes.
 #include "mesh.h"
 #include "scene.h"
+#include "scene_document.h"
 
 #include <QJsonArray>
+#include <QSignalSpy>
 #include <QTest>
 
 #include <glm/geometric.hpp>
 
+#include <functional>
+
 using namespace lb;
+
+Q_DECLARE_METATYPE(std::function<void(lb::Scene &)>)
 
 class TestScene : public QObject
 {
@@ -33,6 +39,74 @@ private slots:
         const Scene back = Scene::fromJson(s.toJson());
         QVERIFY(back == s);
         QVERIFY(back != Scene{});
+    }
+
+    // Every field changed at once (each to a value other than its default): the JSON keeps
+    // them all, and the field-by-field comparison sees each one.
+    void everyFieldRoundTripsAndIsCompared_data()
+    {
+        QTest::addColumn<int>("part");
+        QTest::addColumn<std::function<void(Scene &)>>("change");
+        using P = ScenePart;
+        auto row = [](const char *name, P part, std::function<void(Scene &)> change) {
+            QTest::newRow(name) << int(part) << change;
+        };
+        row("light position", P::Lights, [](Scene &s) { s.lights[1].position.y = 7; });
+        row("light frame", P::Lights, [](Scene &s) { s.lights[2].frame = LightFrame::Camera; });
+        row("light colour", P::Lights, [](Scene &s) { s.lights[0].colors.ia.g = 0.5f; });
+        row("light on", P::Lights, [](Scene &s) { s.lights[3].enabled = true; });
+        row("light marker", P::Lights, [](Scene &s) { s.showLight = false; });
+        row("ka", P::Material, [](Scene &s) { s.material.ka.b = 0.5f; });
+        row("kd", P::Material, [](Scene &s) { s.material.kd.g = 0.5f; });
+        row("ks", P::Material, [](Scene &s) { s.material.ks.r = 0.5f; });
+        row("shininess", P::Material, [](Scene &s) { s.material.shininess = 7; });
+        row("shading", P::Shading, [](Scene &s) { s.shading.shading = Shading::Gouraud; });
+        row("specular", P::Shading, [](Scene &s) { s.shading.specular = SpecularModel::Phong; });
+        row("projection", P::Shading,
+            [](Scene &s) { s.shading.projection = Projection::Orthographic; });
+        row("lighting", P::Shading, [](Scene &s) { s.shading.lighting = false; });
+        row("vertex colours", P::Shading, [](Scene &s) { s.shading.vertexColors = true; });
+        row("texture", P::Shading, [](Scene &s) { s.shading.texture = true; });
+        row("wrong normals", P::Shading, [](Scene &s) { s.shading.normalsByModelView = true; });
+        row("shape", P::Object, [](Scene &s) { s.object.shape = Shape::Torus; });
+        row("tessellation", P::Object, [](Scene &s) { s.object.tessellation = 33; });
+        row("mesh", P::Object, [](Scene &s) { s.object.meshPath = "/tmp/a.obj"; });
+        row("normals", P::Object, [](Scene &s) { s.object.normals = NormalMode::Flat; });
+        row("crease", P::Object, [](Scene &s) { s.object.creaseDegrees = 44; });
+        row("normal lines", P::Object, [](Scene &s) { s.object.showNormals = true; });
+        row("file material", P::Object, [](Scene &s) { s.object.adoptFileMaterial = true; });
+        row("rotation", P::Object, [](Scene &s) { s.object.rotationDegrees.z = 12; });
+        row("scale", P::Object, [](Scene &s) { s.object.scale.y = 0.5f; });
+        row("auto-rotate", P::Object, [](Scene &s) { s.object.autoRotate = true; });
+        row("target", P::Camera, [](Scene &s) { s.camera.target.x = 1; });
+        row("distance", P::Camera, [](Scene &s) { s.camera.distance = 9; });
+        row("yaw", P::Camera, [](Scene &s) { s.camera.yawDegrees = 3; });
+        row("pitch", P::Camera, [](Scene &s) { s.camera.pitchDegrees = 3; });
+        row("compare", P::Compare, [](Scene &s) { s.compare.mode = CompareMode::Wipe; });
+        row("wipe", P::Compare, [](Scene &s) { s.compare.wipe = 0.25f; });
+        row("side B shading", P::Compare, [](Scene &s) { s.compare.shading = Shading::Phong; });
+        row("side B specular", P::Compare,
+            [](Scene &s) { s.compare.specular = SpecularModel::Phong; });
+        row("uniform value", P::Program, [](Scene &s) { s.shaderValues["k"] = {2.0f}; });
+    }
+    void everyFieldRoundTripsAndIsCompared()
+    {
+        QFETCH(int, part);
+        QFETCH(std::function<void(Scene &)>, change);
+        const Scene before;
+        Scene after;
+        change(after);
+        QCOMPARE(int(differingParts(before, after)), part);
+        QVERIFY(before != after);
+        QVERIFY(Scene::fromJson(after.toJson()) == after);
+
+        SceneDocument document;
+        QSignalSpy changed(&document, &SceneDocument::changed);
+        document.set(before); // the same scene: nothing changed, nothing said
+        QCOMPARE(changed.count(), 0);
+        document.set(after);
+        QCOMPARE(changed.count(), 1);
+        QCOMPARE(int(changed.at(0).at(0).value<SceneParts>()), part);
     }
 
     void severalLightsRoundTrip()
