@@ -1,0 +1,271 @@
+// The shader editor: live compiles, errors on the line, presets, the program's own uniforms,
+// shader files and the session's unsaved edits.
+#include "window_fixture.h"
+
+using namespace lb;
+using namespace lb::test;
+
+class TestWindowEditor : public WindowTest
+{
+    Q_OBJECT
+private slots:
+    void editorStartsWithTheProgramOnScreen()
+    {
+        EditorPanel *e = m_window->editorPanel();
+        QVERIFY(e->source(ShaderStage::Fragment).contains("uSpecularModel")); // built-in Phong
+        QTRY_VERIFY(e->statusLabel()->text().contains("linked"));
+        // G switches to Gouraud: the untouched built-in follows.
+        QTest::keyClick(m_window.get(), Qt::Key_G);
+        QTRY_VERIFY(e->source(ShaderStage::Vertex).contains("fAmbientDiffuse"));
+    }
+
+    void anErrorKeepsTheLastGoodProgramUntilFixed()
+    {
+        EditorPanel *e = m_window->editorPanel();
+        Viewport *v = m_window->viewport();
+        // Both stages in WebGL 1, so that line numbers cross the implicit "#version 100".
+        QVERIFY(buildAfter([&] { e->loadPreset(presets()[3]); }));
+        QVERIFY(e->source(ShaderStage::Vertex).contains("attribute vec4 vPosition"));
+        QVERIFY(e->statusLabel()->text().contains("linked"));
+        const QImage good = frame();
+        ShaderEditor *fragment = e->editor(ShaderStage::Fragment);
+        const QString original = fragment->text();
+
+        // A typo on the editor's line 5 of a WebGL 1 shader (no #version).
+        const QString broken = "precision mediump float;\n"
+                               "uniform vec3 materialDif; // the Material panel's Kd\n"
+                               "void main()\n"
+                               "{\n"
+                               "    gl_FragColor = vec4(materialDif * 0.5, 1.0)\n"
+                               "}\n";
+        // Live: compiles after the pause.
+        const std::optional<ProgramBuild> failed = buildAfter([&] { fragment->setText(broken); });
+        QVERIFY(failed && !failed->ok());
+        QVERIFY(e->statusLabel()->text().contains("error"));
+        QVERIFY(!v->banner().isEmpty());
+        QCOMPARE(fragment->markedLineCount(), 1);
+        QVERIFY(fragment->annotation(5).contains("error")); // 0-based: line 6, the brace
+        QVERIFY(e->diagnosticsList()->count() >= 1);
+        QVERIFY(e->diagnosticsList()->item(0)->text().contains("fragment 6:"));
+        // Below the banner strip at the top, the picture is exactly the last good one.
+        const QRect belowBanner(0, 40, good.width(), good.height() - 40);
+        QVERIFY2(imageDifference(frame().copy(belowBanner), good.copy(belowBanner)) == 0,
+                 "the last good program must keep drawing");
+        QCOMPARE(fragment->text(), broken); // the user's text is untouched
+
+        // Clicking the message goes to its line.
+        e->diagnosticsList()->setCurrentRow(0);
+        emit e->diagnosticsList()->itemClicked(e->diagnosticsList()->item(0));
+        int line = 0, column = 0;
+        fragment->getCursorPosition(&line, &column);
+        QCOMPARE(line, 5);
+
+        // The fix brings the new program with no other action: half-bright flat red.
+        QVERIFY(
+            buildAfter([&] { fragment->insertAt(";", 4, fragment->text(4).indexOf(")\n") + 1); }));
+        QVERIFY(e->statusLabel()->text().contains("linked"));
+        QVERIFY(v->banner().isEmpty());
+        QCOMPARE(fragment->markedLineCount(), 0);
+        const QImage fixed = frame();
+        const QRgb centre = fixed.pixel(fixed.width() / 2, fixed.height() / 2);
+        QVERIFY(std::abs(qRed(centre) - 128) <= 1 && qGreen(centre) == 0);
+        fragment->setText(original);
+    }
+
+    void manualCompileWithCtrlEnter()
+    {
+        EditorPanel *e = m_window->editorPanel();
+        e->liveCheck()->setChecked(false);
+        ShaderEditor *fragment = e->editor(ShaderStage::Fragment);
+        QTRY_VERIFY(e->statusLabel()->text().contains("linked"));
+        // The built-in vertex stage is GLSL 330 core; the fragment must be too to link.
+        fragment->setText("#version 330 core\nout vec4 c;\nvoid main() { c = vec4(0.0, 1.0, 0.0, "
+                          "1.0); }\n");
+        QTest::qWait(400); // past any pause: nothing compiles by itself
+        QRgb centre = frame().pixel(frame().width() / 2, frame().height() / 2);
+        QVERIFY(qGreen(centre) != 255);
+        e->findChild<QTabWidget *>()->setCurrentWidget(fragment); // typing happens in a shown tab
+        fragment->setFocus();
+        QTest::keyClick(fragment, Qt::Key_Return, Qt::ControlModifier);
+        QTRY_VERIFY(qGreen(frame().pixel(frame().width() / 2, frame().height() / 2)) == 255);
+        e->liveCheck()->setChecked(true);
+    }
+
+    void presetsLoadAndDraw()
+    {
+        EditorPanel *e = m_window->editorPanel();
+        QCOMPARE(e->presetsMenu()->actions().size(), int(presets().size()));
+        for (QAction *a : e->presetsMenu()->actions()) {
+            const QImage before = frame();
+            QVERIFY2(buildAfter([&] { a->trigger(); }), qPrintable(a->text()));
+            QVERIFY2(e->statusLabel()->text().contains("linked"), qPrintable(a->text()));
+            QVERIFY(e->diagnosticsList()->count() == 0);
+            Q_UNUSED(before);
+        }
+        // The toon preset draws something the built-in does not.
+        QVERIFY(buildAfter([&] { e->presetsMenu()->actions().first()->trigger(); }));
+        QVERIFY(e->statusLabel()->text().contains("linked"));
+        expectNewImage([&] { e->presetsMenu()->actions().last()->trigger(); }, "toon");
+    }
+
+    void ownUniformsGetControlsThatSurviveRecompiles()
+    {
+        EditorPanel *e = m_window->editorPanel();
+        // toon: bands, rimWidth, outlineColour
+        QVERIFY(buildAfter([&] { e->loadPreset(presets().back()); }));
+        QVERIFY(e->statusLabel()->text().contains("linked"));
+        UniformPanel *u = m_window->uniformPanel();
+        QCOMPARE(u->controlCount(), 3);
+        QVERIFY(u->findChild<ColorEdit *>()); // outlineColour gets a colour picker
+        // The control starts from the shader's initializer.
+        QList<QDoubleSpinBox *> boxes;
+        for (QDoubleSpinBox *b : u->findChildren<QDoubleSpinBox *>())
+            if (b->toolTip().isEmpty() && b->parentWidget()->toolTip().contains("float bands"))
+                boxes << b;
+        QCOMPARE(boxes.size(), 1);
+        QCOMPARE(boxes[0]->value(), 3.0);
+        expectNewImage([&] { boxes[0]->setValue(6.0); }, "six bands");
+        QCOMPARE(scene().shaderValues.at("bands"), std::vector<float>{6.0f});
+
+        // A recompile (a comment added) keeps the value, in the scene and on screen.
+        const QImage six = frame();
+        ShaderEditor *fragment = e->editor(ShaderStage::Fragment);
+        fragment->append("\n// edited\n");
+        QVERIFY(buildAfter([&] { e->compileNow(); }));
+        QVERIFY(e->statusLabel()->text().contains("linked"));
+        QCOMPARE(imageDifference(frame(), six), 0);
+        QCOMPARE(scene().shaderValues.at("bands"), std::vector<float>{6.0f});
+    }
+
+    void controlsTheProgramDoesNotReadAreMarkedUnused()
+    {
+        EditorPanel *e = m_window->editorPanel();
+        ShadingPanel *shading = m_window->shadingPanel();
+        // The slides' Gouraud shader hard-codes its material as constants.
+        QVERIFY(buildAfter([&] { e->loadPreset(presets()[2]); }));
+        QVERIFY(e->statusLabel()->text().contains("linked"));
+        ColorEdit *kd = m_window->materialPanel()->colorEdit(1);
+        QVERIFY(!kd->isEnabled());
+        QVERIFY(kd->toolTip().contains("materialDif"));
+        QVERIFY(kd->toolTip().startsWith("Unused"));
+        QVERIFY(!shading->specularCombo()->isEnabled());
+        QVERIFY(m_window->lightPanel()->coordinate(0)->isEnabled() == false); // a const too
+        // The built-in program reads them all.
+        e->loadPreset(builtInPreset(false));
+        QTRY_VERIFY(kd->isEnabled());
+        QVERIFY(shading->specularCombo()->isEnabled());
+        QVERIFY(!kd->toolTip().startsWith("Unused"));
+    }
+
+    void saveAsWritesThePairAndSaveClearsTheMarker()
+    {
+        EditorPanel *e = m_window->editorPanel();
+        QTabWidget *tabs = e->findChild<QTabWidget *>();
+        ShaderEditor *fragment = e->editor(ShaderStage::Fragment);
+        fragment->append("// mine\n");
+        const QString base = m_dir.filePath("pair");
+        QCOMPARE(e->saveAs(base + ".frag"), QString());
+        for (const char *suffix : {".vert", ".frag"}) {
+            QFile f(base + suffix);
+            QVERIFY(f.open(QIODevice::ReadOnly));
+            const ShaderStage stage =
+                QByteArray(suffix) == ".vert" ? ShaderStage::Vertex : ShaderStage::Fragment;
+            QCOMPARE(QString::fromUtf8(f.readAll()), e->source(stage));
+        }
+        QVERIFY(tabs->tabText(1).contains("pair.frag"));
+        QVERIFY(!tabs->tabText(1).contains('*'));
+        fragment->append("// more\n");
+        QVERIFY(tabs->tabText(1).endsWith('*') || tabs->tabText(1).contains("* "));
+        QCOMPARE(e->save(), QString());
+        QVERIFY(!tabs->tabText(1).contains('*'));
+        QVERIFY(!e->isModified());
+        // A file that cannot be written gives a message and keeps the text.
+        const QString text = e->source(ShaderStage::Vertex);
+        QVERIFY(!e->saveAs("/nonexistent/dir/x.vert").isEmpty());
+        QCOMPARE(e->source(ShaderStage::Vertex), text);
+    }
+
+    void openFindsThePartnerAndFollowsTheDisk()
+    {
+        const Preset &slides = presets()[3];
+        const QString vert = m_dir.filePath("lecture.vert"), frag = m_dir.filePath("lecture.frag");
+        auto write = [](const QString &path, const QString &text) {
+            QFile f(path);
+            QVERIFY(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
+            f.write(text.toUtf8());
+        };
+        write(vert, slides.vertexSource());
+        write(frag, slides.fragmentSource());
+        EditorPanel *e = m_window->editorPanel();
+        QString openError;
+        QVERIFY(buildAfter([&] { openError = e->openFiles({frag}); }));
+        QCOMPARE(openError, QString()); // the .vert comes along
+        QCOMPARE(e->filePath(ShaderStage::Vertex), QFileInfo(vert).absoluteFilePath());
+        QCOMPARE(e->source(ShaderStage::Vertex), slides.vertexSource());
+        QVERIFY(e->statusLabel()->text().contains("linked"));
+
+        // Another editor changes the file: the unmodified tab follows and recompiles.
+        const QString greener = slides.fragmentSource().replace(
+            "gl_FragColor = vec4(ambientColor + diffuse + specular, 1.0);",
+            "gl_FragColor = vec4(0.0, 1.0, 0.0, 1.0);");
+        write(frag, greener);
+        QTRY_COMPARE(e->source(ShaderStage::Fragment), greener);
+        QTRY_VERIFY(qGreen(frame().pixel(frame().width() / 2, frame().height() / 2)) == 255);
+
+        // With unsaved edits in the tab, the disk does not overwrite them.
+        e->editor(ShaderStage::Fragment)->append("// my edit\n");
+        const QString mine = e->source(ShaderStage::Fragment);
+        write(frag, slides.fragmentSource());
+        QTRY_VERIFY(e->statusLabel()->text().contains("changed on disk"));
+        QCOMPARE(e->source(ShaderStage::Fragment), mine);
+
+        QVERIFY(e->openFiles({m_dir.filePath("missing.vert")}).contains("Cannot open"));
+        QCOMPARE(e->source(ShaderStage::Fragment), mine);
+    }
+
+    void unsavedEditsComeBackAfterARestart()
+    {
+        EditorPanel *e = m_window->editorPanel();
+        e->editor(ShaderStage::Vertex)->append("// unsaved work\n");
+        // Autosaved within half a second, without closing the window (as before a kill).
+        QTRY_VERIFY(m_settings->value("editor/vertex").toString().contains("// unsaved work"));
+        const QString text = e->source(ShaderStage::Vertex);
+        m_window.reset(); // no close event: like a crash, nothing more is written
+        m_window = std::make_unique<MainWindow>(*m_settings);
+        QCOMPARE(m_window->editorPanel()->source(ShaderStage::Vertex), text);
+        QVERIFY(m_window->editorPanel()->isModified());
+    }
+
+    void completionOffersGlslWordsAndTheFilesNames()
+    {
+        EditorPanel *e = m_window->editorPanel();
+        ShaderEditor *fragment = e->editor(ShaderStage::Fragment);
+        e->liveCheck()->setChecked(false);
+        e->findChild<QTabWidget *>()->setCurrentWidget(fragment);
+        fragment->setText("uniform float myShininess;\nvoid main() { float x = my");
+        fragment->setCursorPosition(1, fragment->text(1).size());
+        fragment->setFocus();
+        QTest::keyClicks(fragment, "S");
+        QVERIFY(fragment->isListActive());
+        QTest::keyClick(fragment, Qt::Key_Return);
+        QVERIFY2(fragment->text(1).endsWith("myShininess"), qPrintable(fragment->text(1)));
+        QTest::keyClicks(fragment, " + normali");
+        QVERIFY(fragment->isListActive());
+        QTest::keyClick(fragment, Qt::Key_Return);
+        QVERIFY2(fragment->text(1).endsWith("normalize"), qPrintable(fragment->text(1)));
+        e->liveCheck()->setChecked(true);
+    }
+
+    void editorsComeAndGoWithoutCrashing()
+    {
+        // QScintilla's QsciAPIs prepared completion on a thread that crashed when the editor
+        // went first; the editors must survive being made and dropped at once.
+        for (int i = 0; i < 30; ++i) {
+            ShaderEditor editor;
+            editor.setText("void main() {}\n");
+        }
+    }
+};
+
+LB_WINDOW_TEST_MAIN(TestWindowEditor)
+#include "test_window_editor.moc"

@@ -1,0 +1,139 @@
+// Mesh files in the window: open, refuse, normals, progress and cancel, drops, restart.
+#include "window_fixture.h"
+
+using namespace lb;
+using namespace lb::test;
+
+class TestWindowMeshes : public WindowTest
+{
+    Q_OBJECT
+private slots:
+    void openedMeshIsDrawnAndDescribed()
+    {
+        const QImage sphere = frame();
+        const auto [ok, message] = openMesh(kCube);
+        QVERIFY2(ok, qPrintable(message));
+        QCOMPARE(scene().object.meshPath, kCube);
+        QVERIFY(imageDifference(sphere, frame()) > 10);
+        const QString summary = m_window->meshActions()->summaryLabel()->toolTip();
+        QVERIFY2(summary.startsWith("cube.ply: ") && summary.contains("triangles") &&
+                     summary.contains("loaded in"),
+                 qPrintable(summary));
+        QCOMPARE(m_window->objectPanel()->shapeCombo()->currentText(), QString("File: cube.ply"));
+        QCOMPARE(m_window->meshActions()->recent()->files().value(0), kCube);
+        // A built-in shape is one click away.
+        m_window->objectPanel()->shapeCombo()->setCurrentIndex(int(Shape::Torus));
+        QVERIFY(scene().object.meshPath.isEmpty());
+        QTRY_VERIFY(m_window->meshActions()->summaryLabel()->text().startsWith("torus: "));
+        // The status bar has the short form; the whole summary is the tooltip.
+        QVERIFY(!m_window->meshActions()->summaryLabel()->text().contains("vertices"));
+        QVERIFY(m_window->meshActions()->summaryLabel()->toolTip().contains("vertices"));
+    }
+
+    void badMeshKeepsThePreviousOneAndSaysWhy()
+    {
+        QVERIFY(openMesh(kCube).first);
+        const QImage cube = frame();
+        const auto [ok, message] = openMesh(kMalformed);
+        QVERIFY(!ok);
+        QMessageBox *box = m_window->meshActions()->errorBox();
+        QVERIFY(box && box->isVisible());
+        QVERIFY2(box->informativeText().contains("malformed.obj") &&
+                     box->informativeText().contains("Invalid face index"),
+                 qPrintable(box->informativeText()));
+        QCOMPARE(scene().object.meshPath, kCube);
+        QVERIFY(imageDifference(cube, frame()) <= 2);
+        box->close();
+    }
+
+    void normalsChangeWithoutReloading()
+    {
+        QVERIFY(openMesh(kCube).first);
+        QSignalSpy started(m_window->objectLoader(), &ObjectLoader::loadStarted);
+        ObjectPanel *panel = m_window->objectPanel();
+        panel->normalsCombo()->setCurrentIndex(int(NormalMode::Smooth));
+        auto settle = [&] { QTRY_VERIFY(!m_window->objectLoader()->isBuilding()); };
+        expectNewImage(
+            [&] {
+                panel->creaseBox()->setValue(180); // every cube edge smoothed
+                settle();
+            },
+            "smooth cube");
+        expectNewImage(
+            [&] {
+                panel->normalsCombo()->setCurrentIndex(int(NormalMode::Flat));
+                settle();
+            },
+            "flat cube");
+        QVERIFY(!panel->creaseBox()->isEnabled()); // flat has no crease angle
+        expectNewImage([&] { QTest::keyClick(m_window.get(), Qt::Key_N); }, "normal lines");
+        QVERIFY(scene().object.showNormals);
+        QCOMPARE(started.count(), 0);
+    }
+
+    void slowLoadShowsProgressAndCancelStopsTheHelper()
+    {
+        const QString helper = m_dir.filePath("slow-helper.sh");
+        QFile f(helper);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write("#!/bin/sh\nexec sleep 600\n");
+        f.close();
+        f.setPermissions(QFile::ReadOwner | QFile::WriteOwner | QFile::ExeOwner);
+        const QByteArray saved = qgetenv("LIGHTBENCH_IMPORT_HELPER");
+        qputenv("LIGHTBENCH_IMPORT_HELPER", helper.toLocal8Bit());
+        const Scene before = scene();
+        QSignalSpy finished(m_window->objectLoader(), &ObjectLoader::loadFinished);
+        m_window->meshActions()->open(kCube);
+        LoadProgress *progress = m_window->meshActions()->progress();
+        QVERIFY(!progress->isVisible()); // not for the first half second
+        QTRY_VERIFY_WITH_TIMEOUT(progress->isVisible(), 3000);
+        const qint64 pid = m_window->objectLoader()->helperPid();
+        QVERIFY(pid > 0 && ::kill(pid_t(pid), 0) == 0);
+        // The window answers meanwhile.
+        m_window->materialPanel()->shininessBox()->setValue(12);
+        QCOMPARE(scene().material.shininess, 12.0f);
+        QTest::mouseClick(progress->cancelButton(), Qt::LeftButton);
+        QTRY_COMPARE(finished.count(), 1);
+        QVERIFY(!progress->isVisible());
+        QVERIFY(::kill(pid_t(pid), 0) != 0); // the helper is gone
+        QCOMPARE(scene().object.meshPath, before.object.meshPath);
+        QVERIFY(!m_window->meshActions()->errorBox()); // cancelling is no error
+        qputenv("LIGHTBENCH_IMPORT_HELPER", saved);
+    }
+
+    void droppedFileIsOpened()
+    {
+        QMimeData data;
+        data.setUrls({QUrl::fromLocalFile(kCube)});
+        QDragEnterEvent enter(QPoint(10, 10), Qt::CopyAction, &data, Qt::LeftButton,
+                              Qt::NoModifier);
+        QApplication::sendEvent(m_window.get(), &enter);
+        QVERIFY(enter.isAccepted());
+        QDropEvent drop(QPointF(10, 10), Qt::CopyAction, &data, Qt::LeftButton, Qt::NoModifier);
+        QSignalSpy finished(m_window->objectLoader(), &ObjectLoader::loadFinished);
+        QApplication::sendEvent(m_window.get(), &drop);
+        QVERIFY(finished.wait(30000));
+        QCOMPARE(scene().object.meshPath, kCube);
+    }
+
+    void meshComesBackAfterARestart()
+    {
+        QVERIFY(openMesh(kCube).first);
+        m_window->close(); // saves
+        m_window = std::make_unique<MainWindow>(*m_settings);
+        QCOMPARE(scene().object.meshPath, kCube);
+        QTRY_VERIFY(m_window->objectLoader()->file() &&
+                    m_window->objectLoader()->file()->path == kCube);
+        // A file gone since then: the shape comes back, with a message.
+        m_window->close();
+        const QByteArray saved = m_settings->value("scene").toByteArray();
+        m_settings->setValue("scene", QByteArray(saved).replace(kCube.toUtf8(), "/gone/away.ply"));
+        m_window = std::make_unique<MainWindow>(*m_settings);
+        QTRY_VERIFY(scene().object.meshPath.isEmpty());
+        QTRY_VERIFY(m_window->meshActions()->errorBox());
+        QVERIFY(m_window->meshActions()->errorBox()->informativeText().contains("/gone/away.ply"));
+    }
+};
+
+LB_WINDOW_TEST_MAIN(TestWindowMeshes)
+#include "test_window_meshes.moc"

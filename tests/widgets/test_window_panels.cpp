@@ -1,0 +1,160 @@
+// The panels, keys and mouse: a control moves, the scene changes, the picture follows;
+// the session survives a restart.
+#include "window_fixture.h"
+
+using namespace lb;
+using namespace lb::test;
+
+class TestWindowPanels : public WindowTest
+{
+    Q_OBJECT
+private slots:
+    void materialColourChangesSceneAndPixels()
+    {
+        ColorEdit *kd = m_window->materialPanel()->colorEdit(1);
+        expectNewImage([&] { kd->channel(1)->setValue(1.0); }, "Kd green");
+        QCOMPARE(scene().material.kd, glm::vec3(1, 1, 0));
+    }
+
+    void shininessSliderIsLogarithmic()
+    {
+        QSlider *slider = m_window->materialPanel()->shininessSlider();
+        expectNewImage([&] { slider->setValue(MaterialPanel::kSliderSteps / 2); }, "shininess");
+        // Half way on a log scale from 1 to 1000 is about 31.6.
+        QVERIFY(std::abs(scene().material.shininess - 31.62f) < 0.1f);
+        QVERIFY(std::abs(m_window->materialPanel()->shininessBox()->value() - 31.6) < 0.1);
+        m_window->materialPanel()->shininessBox()->setValue(1000);
+        QCOMPARE(slider->value(), MaterialPanel::kSliderSteps);
+    }
+
+    void shadingChoicesChangeSceneAndPixels()
+    {
+        ShadingPanel *p = m_window->shadingPanel();
+        expectNewImage([&] { p->shadingCombo()->setCurrentIndex(0); }, "Gouraud");
+        QCOMPARE(scene().shading.shading, Shading::Gouraud);
+        expectNewImage([&] { p->specularCombo()->setCurrentIndex(0); }, "Phong specular");
+        QCOMPARE(scene().shading.specular, SpecularModel::Phong);
+        expectNewImage([&] { p->projectionCombo()->setCurrentIndex(1); }, "orthographic");
+        QCOMPARE(scene().shading.projection, Projection::Orthographic);
+        expectNewImage([&] { p->textureCheck()->setChecked(true); }, "texture");
+        QVERIFY(scene().shading.texture);
+        expectNewImage([&] { p->vertexColorsCheck()->setChecked(true); }, "vertex colours");
+        expectNewImage([&] { p->lightingCheck()->setChecked(false); }, "lighting off");
+        QVERIFY(!scene().shading.lighting);
+    }
+
+    void lightControlsChangeSceneAndPixels()
+    {
+        LightPanel *p = m_window->lightPanel();
+        expectNewImage([&] { p->coordinate(0)->setValue(-2.0); }, "light x");
+        QCOMPARE(scene().lights[0].position.x, -2.0f);
+        expectNewImage([&] { p->wCombo()->setCurrentIndex(1); }, "directional");
+        QCOMPARE(scene().lights[0].position.w, 0.0f);
+        expectNewImage([&] { p->frameCombo()->setCurrentIndex(0); }, "camera frame");
+        QCOMPARE(scene().lights[0].frame, LightFrame::Camera);
+        // The model is not transformed yet, so object and world frame agree until it turns.
+        m_window->objectPanel()->rotation(1)->setValue(90);
+        expectNewImage([&] { p->frameCombo()->setCurrentIndex(2); }, "object frame");
+        QCOMPARE(scene().lights[0].frame, LightFrame::Object);
+        expectNewImage([&] { p->colorEdit(2)->channel(0)->setValue(0.0); }, "Is red");
+        QCOMPARE(scene().lights[0].colors.is.r, 0.0f);
+
+        // Light 3: its own values in the same controls; switching it on adds its light.
+        p->setCurrentLight(2);
+        QVERIFY(!p->enabledCheck()->isChecked());
+        QCOMPARE(p->coordinate(0)->value(), double(defaultLights()[2].position.x));
+        expectNewImage([&] { p->enabledCheck()->setChecked(true); }, "light 3 on");
+        QVERIFY(scene().lights[2].enabled);
+        expectNewImage([&] { p->coordinate(1)->setValue(1.0); }, "light 3 y");
+        QCOMPARE(scene().lights[2].position.y, 1.0f);
+        QCOMPARE(scene().lights[0].position.x, -2.0f); // light 1 kept its own
+        p->setCurrentLight(0);
+        QCOMPARE(p->coordinate(0)->value(), -2.0);
+    }
+
+    void objectControlsChangeSceneAndPixels()
+    {
+        ObjectPanel *p = m_window->objectPanel();
+        expectNewImage([&] { p->shapeCombo()->setCurrentIndex(0); }, "cube");
+        QCOMPARE(scene().object.shape, Shape::Cube);
+        QVERIFY(!p->tessellationBox()->isEnabled());
+        expectNewImage([&] { p->scale(0)->setValue(0.5); }, "scale x");
+        QCOMPARE(scene().object.scale.x, 0.5f);
+        expectNewImage([&] { p->rotation(1)->setValue(45); }, "rotate y");
+        p->shapeCombo()->setCurrentIndex(1);
+        expectNewImage([&] { p->tessellationBox()->setValue(64); }, "tessellation");
+        QCOMPARE(scene().object.tessellation, 64);
+    }
+
+    void autoRotateTurnsTheModelAndTheSessionIsStillSaved()
+    {
+        m_window->objectPanel()->autoRotateCheck()->setChecked(true);
+        QTRY_VERIFY(scene().object.rotationDegrees.y > 3.0f);
+        // While it turns, the scene still reaches the settings (a kill loses little).
+        QTRY_VERIFY(m_settings->value("scene").toByteArray().contains("\"autoRotate\": true"));
+        m_window->objectPanel()->autoRotateCheck()->setChecked(false);
+    }
+
+    void keysToggleShading()
+    {
+        m_window->viewport()->setFocus();
+        QTest::keyClick(m_window.get(), Qt::Key_G);
+        QCOMPARE(scene().shading.shading, Shading::Gouraud);
+        QCOMPARE(m_window->shadingPanel()->shadingCombo()->currentIndex(), 0);
+        QTest::keyClick(m_window.get(), Qt::Key_B);
+        QCOMPARE(scene().shading.specular, SpecularModel::Phong);
+        QTest::keyClick(m_window.get(), Qt::Key_P);
+        QCOMPARE(scene().shading.projection, Projection::Orthographic);
+    }
+
+    void mouseOrbitsZoomsAndResetsTheCamera()
+    {
+        Viewport *v = m_window->viewport();
+        const float yaw = scene().camera.yawDegrees;
+        const QPointF a(100, 100), b(160, 100);
+        QMouseEvent press(QEvent::MouseButtonPress, a, v->mapToGlobal(a), Qt::LeftButton,
+                          Qt::LeftButton, Qt::NoModifier);
+        QMouseEvent move(QEvent::MouseMove, b, v->mapToGlobal(b), Qt::NoButton, Qt::LeftButton,
+                         Qt::NoModifier);
+        expectNewImage(
+            [&] {
+                QApplication::sendEvent(v, &press);
+                QApplication::sendEvent(v, &move);
+            },
+            "orbit");
+        QVERIFY(std::abs(scene().camera.yawDegrees - yaw) > 10.0f);
+        const float distance = scene().camera.distance;
+        QWheelEvent wheel(QPointF(50, 50), v->mapToGlobal(QPointF(50, 50)), QPoint(),
+                          QPoint(0, 240), Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
+        QApplication::sendEvent(v, &wheel);
+        QVERIFY(scene().camera.distance < distance);
+        QTest::keyClick(m_window.get(), Qt::Key_R);
+        QCOMPARE(scene().camera.yawDegrees, OrbitCamera{}.yawDegrees);
+        QCOMPARE(scene().camera.distance, OrbitCamera{}.distance);
+    }
+
+    void settingsSurviveARestart()
+    {
+        m_window->shadingPanel()->shadingCombo()->setCurrentIndex(0);
+        m_window->materialPanel()->shininessBox()->setValue(77);
+        m_window->lightPanel()->frameCombo()->setCurrentIndex(0);
+        const Scene before = scene();
+        m_window->close(); // saves
+        m_window = std::make_unique<MainWindow>(*m_settings);
+        QVERIFY(scene() == before);
+        QCOMPARE(m_window->materialPanel()->shininessBox()->value(), 77.0);
+        QCOMPARE(m_window->shadingPanel()->shadingCombo()->currentIndex(), 0);
+    }
+
+    void resetButtonsRestoreDefaults()
+    {
+        m_window->materialPanel()->shininessBox()->setValue(500);
+        const auto buttons = m_window->materialPanel()->findChildren<QPushButton *>();
+        QCOMPARE(buttons.size(), 1);
+        buttons.first()->click();
+        QCOMPARE(scene().material.shininess, Material{}.shininess);
+    }
+};
+
+LB_WINDOW_TEST_MAIN(TestWindowPanels)
+#include "test_window_panels.moc"

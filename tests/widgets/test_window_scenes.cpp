@@ -1,0 +1,187 @@
+// Scene files, examples, export, compare views and the probe in the window.
+#include "window_fixture.h"
+
+using namespace lb;
+using namespace lb::test;
+
+class TestWindowScenes : public WindowTest
+{
+    Q_OBJECT
+private slots:
+    void savedSceneOpensAsTheSameImage()
+    {
+        // A scene with a program of the student's own, two lights and a changed camera.
+        m_window->editorPanel()->loadPreset(presets().back()); // toon
+        m_window->document().edit([](Scene &s) {
+            s.lights[1].enabled = true;
+            s.material.kd = {0.2f, 0.5f, 0.9f};
+            s.camera.orbit(25, 10);
+        });
+        const QImage before = frame();
+        const Scene saved = scene();
+        const auto program = m_window->editorPanel()->program();
+        QVERIFY(program);
+        const QString path = m_dir.filePath("lesson.json");
+        QCOMPARE(m_window->sceneActions()->save(path), QString());
+        QVERIFY(m_window->windowTitle().startsWith("lesson.json"));
+
+        m_window->document().set(Scene{});
+        m_window->editorPanel()->loadPreset(builtInPreset(false));
+        QVERIFY(imageDifference(before, frame()) > 10);
+
+        QVERIFY(m_window->sceneActions()->open(path));
+        QVERIFY(scene() == saved);
+        QVERIFY(m_window->editorPanel()->program()->vertex == program->vertex);
+        QVERIFY(!m_window->sceneActions()->messageBox()); // nothing was ignored
+        QVERIFY(imageDifference(before, frame()) <= 1);
+        QCOMPARE(m_window->sceneActions()->recent()->files().first(),
+                 QFileInfo(path).absoluteFilePath());
+    }
+
+    void badSceneFileChangesNothing()
+    {
+        m_window->document().edit([](Scene &s) { s.material.shininess = 77; });
+        const Scene before = scene();
+        const QString path = m_dir.filePath("broken.json");
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write("{\"lights\": [{\"enabled\": tru");
+        f.close();
+        QVERIFY(!m_window->sceneActions()->open(path));
+        QVERIFY(scene() == before);
+        QMessageBox *box = m_window->sceneActions()->messageBox();
+        QVERIFY(box && box->isVisible());
+        QVERIFY2(box->informativeText().startsWith(path + ": not a scene file"),
+                 qPrintable(box->informativeText()));
+        box->close();
+
+        // Half-usable: opens, and one message lists what was ignored.
+        QVERIFY(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
+        f.write(R"({"version": 1, "material": {"shininess": -4, "kd": "red"}, "wobble": 1})");
+        f.close();
+        QVERIFY(m_window->sceneActions()->open(path));
+        QCOMPARE(scene().material.shininess, limits::kMinShininess);
+        box = m_window->sceneActions()->messageBox();
+        QVERIFY(box && box->isVisible());
+        const QString listed = box->informativeText();
+        QVERIFY2(listed.contains("material.kd (not an array of numbers)") &&
+                     listed.contains("material.shininess (out of range, clamped)") &&
+                     listed.contains("wobble (unknown field)"),
+                 qPrintable(listed));
+    }
+
+    void everyExampleOpensAndDraws()
+    {
+        for (const auto &[text, resource] : SceneActions::examples()) {
+            const QImage before = frame();
+            QVERIFY2(m_window->sceneActions()->open(resource), qPrintable(resource));
+            QVERIFY2(!m_window->sceneActions()->messageBox(), qPrintable(resource));
+            QVERIFY2(m_window->viewport()->banner().isEmpty(), qPrintable(resource));
+            QVERIFY2(imageDifference(before, frame()) > 10, qPrintable(resource));
+        }
+    }
+
+    void exportWritesTheChosenSize()
+    {
+        const QString path = m_dir.filePath("view.png");
+        QCOMPARE(m_window->sceneActions()->exportImage(path, QSize(1000, 400)), QString());
+        QCOMPARE(QImage(path).size(), QSize(1000, 400));
+        QVERIFY(
+            !m_window->sceneActions()->exportImage("/nowhere/view.png", QSize(10, 10)).isEmpty());
+    }
+
+    void compareControlsSplitTheView()
+    {
+        ShadingPanel *p = m_window->shadingPanel();
+        QVERIFY(!p->compareShadingCombo()->isEnabled());
+        expectNewImage([&] { p->compareModeCombo()->setCurrentIndex(1); }, "side by side");
+        QCOMPARE(scene().compare.mode, CompareMode::SideBySide);
+        QVERIFY(m_window->viewport()->compareText().contains("B: built-in Gouraud"));
+        expectNewImage([&] { p->compareModeCombo()->setCurrentIndex(3); }, "difference");
+        frame();
+        QVERIFY2(m_window->viewport()->compareText().contains("largest"),
+                 qPrintable(m_window->viewport()->compareText()));
+        QVERIFY(m_window->viewport()->renderer().difference().largest >= 20);
+        // B = A: nothing differs.
+        p->compareShadingCombo()->setCurrentIndex(1);
+        frame();
+        QCOMPARE(m_window->viewport()->renderer().difference().largest, 0);
+        // The wipe follows a drag of its line.
+        p->compareModeCombo()->setCurrentIndex(2);
+        Viewport *v = m_window->viewport();
+        const QPoint line(v->width() / 2, v->height() / 2);
+        QTest::mousePress(v, Qt::LeftButton, {}, line);
+        QMouseEvent move(QEvent::MouseMove, QPointF(v->width() / 4, line.y()),
+                         v->mapToGlobal(QPointF(v->width() / 4, line.y())), Qt::NoButton,
+                         Qt::LeftButton, {});
+        QApplication::sendEvent(v, &move);
+        QTest::mouseRelease(v, Qt::LeftButton, {}, QPoint(v->width() / 4, line.y()));
+        QVERIFY(std::abs(scene().compare.wipe - 0.25f) < 0.01f);
+        QCOMPARE(scene().camera.yawDegrees, Scene{}.camera.yawDegrees); // no orbit meanwhile
+    }
+
+    void windowProbeEqualsTheCommandLineProbe()
+    {
+        m_window->document().edit([](Scene &s) {
+            s.showLight = false;
+            s.lights[1].enabled = true; // two lights: both listed
+            s.shading.shading = Shading::Gouraud;
+        });
+        frame();
+        Viewport *v = m_window->viewport();
+        const QPoint click(v->width() / 2 + 10, v->height() / 2 - 15);
+        QTest::mouseClick(v, Qt::LeftButton, Qt::ControlModifier, click);
+        frame();
+        ProbePanel *probe = m_window->probePanel();
+        QVERIFY(probe->isActive());
+        QVERIFY(probe->gpuColour());
+        const ProbeResult &r = probe->result();
+        QCOMPARE(int(r.lights.size()), 2);
+        QVERIFY(probe->textLabel()->text().contains("Light 2"));
+        QCOMPARE(scene().camera.yawDegrees, Scene{}.camera.yawDegrees); // the click did not orbit
+
+        const QString path = m_dir.filePath("probe.json");
+        QCOMPARE(m_window->sceneActions()->save(path), QString());
+        const QSize size = v->size() * v->devicePixelRatio();
+        const QPoint pixel = (QPointF(click) * v->devicePixelRatio()).toPoint();
+        QProcess cli;
+        cli.start(LIGHTBENCH_EXE,
+                  {"--scene", path, "--probe", QString("%1,%2").arg(pixel.x()).arg(pixel.y()),
+                   "--size", QString("%1x%2").arg(size.width()).arg(size.height())});
+        QVERIFY(cli.waitForFinished(60000));
+        const QJsonObject o = QJsonDocument::fromJson(cli.readAllStandardOutput()).object();
+        QVERIFY2(o["hit"].toBool(), cli.readAllStandardError().constData());
+        auto near = [](const QJsonValue &json, const glm::vec3 &v) {
+            const QJsonArray a = json.toArray();
+            return a.size() == 3 && std::abs(a[0].toDouble() - v.x) < 1e-4 &&
+                   std::abs(a[1].toDouble() - v.y) < 1e-4 && std::abs(a[2].toDouble() - v.z) < 1e-4;
+        };
+        QCOMPARE(o["triangle"].toInteger(), qint64(r.triangle));
+        QVERIFY(near(o["position"], r.position));
+        QVERIFY(near(o["normal"], r.normal));
+        QVERIFY(near(o["specular"], r.total.specular));
+        const QJsonArray lights = o["lights"].toArray();
+        QCOMPARE(lights.size(), 2);
+        for (int i = 0; i < 2; ++i) {
+            QVERIFY(near(lights[i]["L"], r.lights[std::size_t(i)].terms.L));
+            QVERIFY(std::abs(lights[i]["NdotL"].toDouble() - r.lights[std::size_t(i)].terms.nDotL) <
+                    1e-4);
+        }
+        for (int c = 0; c < 3; ++c) {
+            QCOMPARE(o["reference"][c].toInt(), int(std::lround(r.reference[c] * 255.0f)));
+            QVERIFY(std::abs(o["gpu"][c].toInt() - (*probe->gpuColour())[c]) <= 2);
+        }
+
+        // The point stays on the surface while the light moves: new numbers, same triangle.
+        const glm::vec3 before = r.lights[0].terms.L;
+        m_window->lightPanel()->coordinate(0)->setValue(-3.0);
+        frame();
+        QCOMPARE(probe->result().triangle, qint64(o["triangle"].toInteger()));
+        QVERIFY(glm::length(probe->result().lights[0].terms.L - before) > 0.05f);
+        QTest::keyClick(m_window.get(), Qt::Key_Escape);
+        QVERIFY(!probe->isActive());
+    }
+};
+
+LB_WINDOW_TEST_MAIN(TestWindowScenes)
+#include "test_window_scenes.moc"
