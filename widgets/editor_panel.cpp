@@ -160,6 +160,7 @@ void EditorPanel::setSources(const QString &vertex, const QString &fragment)
     m_builtInVertex.clear();
     m_builtInFragment.clear();
     m_origin = tr("your shaders");
+    m_originEdited = false;
     m_paths[0].clear();
     m_paths[1].clear();
     watch();
@@ -188,18 +189,25 @@ bool EditorPanel::showsBuiltIn() const
            source(ShaderStage::Fragment) == m_builtInFragment;
 }
 
-QString EditorPanel::programName() const
+bool EditorPanel::isEdited() const
 {
     if (showsBuiltIn())
-        return m_origin;
-    return isModified() || !m_builtInVertex.isEmpty() ? tr("%1 (edited)").arg(m_origin) : m_origin;
+        return false;
+    return m_originEdited || isModified() || !m_builtInVertex.isEmpty();
+}
+
+QString EditorPanel::programName() const
+{
+    // Words for the user only: scene files and settings keep the name and the flag as data.
+    return isEdited() ? tr("%1 (edited)").arg(m_origin) : m_origin;
 }
 
 std::optional<ProgramText> EditorPanel::program() const
 {
     if (showsBuiltIn())
         return std::nullopt;
-    return ProgramText{programName(), source(ShaderStage::Vertex), source(ShaderStage::Fragment)};
+    return ProgramText{m_origin, source(ShaderStage::Vertex), source(ShaderStage::Fragment),
+                       isEdited()};
 }
 
 void EditorPanel::setProgram(const std::optional<ProgramText> &program, bool gouraud)
@@ -210,8 +218,7 @@ void EditorPanel::setProgram(const std::optional<ProgramText> &program, bool gou
     }
     setSources(program->vertex, program->fragment);
     m_origin = program->name.isEmpty() ? tr("the scene's shaders") : program->name;
-    if (m_origin.endsWith(tr(" (edited)"))) // the name a saved edit got; it is edited again
-        m_origin.chop(tr(" (edited)").size());
+    m_originEdited = program->edited; // an edit saved in the scene is still an edit
     updateTitles();
     emit edited();
 }
@@ -294,6 +301,7 @@ QString EditorPanel::openFiles(const QStringList &paths)
     for (int i = 0; i < 2; ++i)
         m_paths[i] = chosen[i].isEmpty() ? keep[i] : QFileInfo(chosen[i]).absoluteFilePath();
     m_origin = QFileInfo(m_paths[0].isEmpty() ? m_paths[1] : m_paths[0]).completeBaseName();
+    m_originEdited = false;
     watch();
     updateTitles();
     emit edited();
@@ -335,6 +343,7 @@ QString EditorPanel::saveAs(const QString &anyPath)
     m_paths[0] = base + ".vert";
     m_paths[1] = base + ".frag";
     m_origin = QFileInfo(base).fileName();
+    m_originEdited = false;
     return save();
 }
 
@@ -373,6 +382,8 @@ void EditorPanel::saveState(QSettings &settings) const
     settings.setValue("fragmentPath", m_paths[1]);
     settings.setValue("vertexModified", isModified(ShaderStage::Vertex));
     settings.setValue("fragmentModified", isModified(ShaderStage::Fragment));
+    settings.setValue("origin", m_origin); // restoreState() reads it back
+    settings.setValue("originEdited", m_originEdited);
     const bool builtIn = !m_builtInVertex.isEmpty() &&
                          source(ShaderStage::Vertex) == m_builtInVertex &&
                          source(ShaderStage::Fragment) == m_builtInFragment;
@@ -398,6 +409,7 @@ bool EditorPanel::restoreState(QSettings &settings)
         m_restoredUnsaved[0] = settings.value("vertexModified").toBool();
         m_restoredUnsaved[1] = settings.value("fragmentModified").toBool();
         m_origin = settings.value("origin", m_origin).toString();
+        m_originEdited = settings.value("originEdited", false).toBool();
         watch();
         updateTitles();
         if (isModified())

@@ -53,6 +53,8 @@ public:
     QString filePath(ShaderStage stage) const;
     // What is in the editor, in words: a preset's name, the file, "edited" when changed.
     QString programName() const;
+    // Changed since it came from its preset, file or scene (or saved in a scene as edited).
+    bool isEdited() const;
     bool showsBuiltIn() const; // an untouched built-in program, following the Shading panel
     // The program for a scene file: none while the built-in one shows untouched.
     std::optional<ProgramText> program() const;
@@ -96,8 +98,9 @@ private:
     QString m_builtInVertex, m_builtInFragment; // the built-in shown, while untouched
     bool m_builtInIsGouraud = false;
     bool m_loading = false;
-    QString m_paths[2]; // vertex, fragment; empty when not from a file
-    QString m_origin;   // the preset or file the text came from
+    QString m_paths[2];          // vertex, fragment; empty when not from a file
+    QString m_origin;            // the preset or file the text came from (a name: data, not words)
+    bool m_originEdited = false; // it was already edited there (a scene file said so)
     // Unsaved edits restored from the last session (Scintilla can only clear its own flag).
     bool m_restoredUnsaved[2] = {false, false};
     QFileSystemWatcher m_watcher;

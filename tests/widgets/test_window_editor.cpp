@@ -223,6 +223,33 @@ private slots:
         QCOMPARE(e->source(ShaderStage::Fragment), mine);
     }
 
+    // The program's name and "edited" are data: the session keeps the name it came from,
+    // and a scene file stores the name and an "edited" flag, never the translated words.
+    void programNameAndEditedSurviveARestartAndASceneFile()
+    {
+        EditorPanel *e = m_window->editorPanel();
+        const Preset &toon = presets().back();
+        e->loadPreset(toon);
+        e->editor(ShaderStage::Fragment)->append("// mine\n");
+        QVERIFY(e->isEdited());
+        QCOMPARE(e->programName(), QString("%1 (edited)").arg(toon.name));
+        const std::optional<ProgramText> program = e->program();
+        QVERIFY(program);
+        QCOMPARE(program->name, toon.name);
+        QVERIFY(program->edited);
+
+        QTRY_VERIFY(m_settings->value("editor/fragment").toString().contains("// mine"));
+        m_window.reset(); // like a kill: nothing more is written
+        m_window = std::make_unique<MainWindow>(*m_settings);
+        QCOMPARE(m_window->editorPanel()->programName(), QString("%1 (edited)").arg(toon.name));
+
+        // A scene with that program opens showing it as edited, and saves it the same way.
+        m_window->editorPanel()->setProgram(program, false);
+        QVERIFY(!m_window->editorPanel()->isModified());
+        QCOMPARE(m_window->editorPanel()->programName(), QString("%1 (edited)").arg(toon.name));
+        QVERIFY(m_window->editorPanel()->program() == program);
+    }
+
     void unsavedEditsComeBackAfterARestart()
     {
         EditorPanel *e = m_window->editorPanel();
