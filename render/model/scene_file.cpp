@@ -13,6 +13,25 @@ namespace lb {
 namespace {
 
 const char *kFormat = "lightbench-scene";
+// How files written before the "edited" field marked an edited program: an English suffix on
+// its name, never translated.
+const QLatin1String kLegacyEditedSuffix(" (edited)");
+
+// A "program" object whose sources are known to be good.
+ProgramText programText(const QJsonObject &p, QStringList &ignored)
+{
+    ProgramText text{p["name"].toString(), p["vertex"].toString(), p["fragment"].toString()};
+    const QJsonValue edited = p["edited"];
+    if (edited.isBool()) {
+        text.edited = edited.toBool();
+    } else if (!edited.isUndefined()) {
+        ignored << "program.edited (not true or false; read as false)";
+    } else if (text.name.endsWith(kLegacyEditedSuffix)) {
+        text.name.chop(kLegacyEditedSuffix.size());
+        text.edited = true;
+    }
+    return text;
+}
 
 } // namespace
 
@@ -27,6 +46,7 @@ QByteArray sceneFileBytes(const SceneFile &file, const QDir &dir)
     root["version"] = kSceneFileVersion;
     if (file.program)
         root["program"] = QJsonObject{{"name", file.program->name},
+                                      {"edited", file.program->edited},
                                       {"vertex", file.program->vertex},
                                       {"fragment", file.program->fragment}};
     return QJsonDocument(root).toJson(QJsonDocument::Indented);
@@ -71,8 +91,7 @@ SceneFileRead parseSceneFile(const QByteArray &bytes, const QDir &dir, const QSt
         if (vertex.isString() && fragment.isString() &&
             vertex.toString().size() <= kMaxSourceCharacters &&
             fragment.toString().size() <= kMaxSourceCharacters)
-            file.program =
-                ProgramText{p["name"].toString(), vertex.toString(), fragment.toString()};
+            file.program = programText(p, read.ignored);
         else
             read.ignored << "program (needs vertex and fragment sources as strings)";
     } else if (!program.isUndefined() && !program.isNull()) {

@@ -19,14 +19,18 @@ namespace lb {
 constexpr int kSceneFileVersion = 2; // 1: the settings' single-light scene, no program
 constexpr qint64 kMaxSceneFileBytes = 64 * 1024 * 1024;
 
-// The program drawn with: its name (a preset, a file, "edited") and both sources.
+// The program drawn with: where it came from (a preset's or a file's name, as data: never
+// translated text), whether it was edited since, and both sources. Written as
+// "program": {"name": ..., "edited": true/false, "vertex": ..., "fragment": ...}; files from
+// before the "edited" field carry it as the name's English suffix " (edited)", read as edited.
 struct ProgramText
 {
     QString name;
     QString vertex, fragment;
+    bool edited = false;
     bool operator==(const ProgramText &o) const
     {
-        return name == o.name && vertex == o.vertex && fragment == o.fragment;
+        return name == o.name && vertex == o.vertex && fragment == o.fragment && edited == o.edited;
     }
 };
 

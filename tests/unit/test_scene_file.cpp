@@ -27,8 +27,8 @@ SceneFile sampleFile(const QDir &dir)
     f.scene.camera.orbit(30, -10);
     f.scene.compare.mode = CompareMode::SideBySide;
     f.scene.shaderValues["bands"] = {4.0f};
-    f.program = ProgramText{"toon (edited)", "void main() { gl_Position = vec4(0.0); }",
-                            "void main() { gl_FragColor = vec4(1.0); }"};
+    f.program = ProgramText{"toon", "void main() { gl_Position = vec4(0.0); }",
+                            "void main() { gl_FragColor = vec4(1.0); }", true};
     return f;
 }
 
@@ -156,6 +156,41 @@ private slots:
         SceneFile builtIn = f;
         builtIn.program.reset();
         QVERIFY(!parseSceneFile(sceneFileBytes(builtIn, dir), dir, "b").file->program);
+    }
+
+    void editedIsDataAndOldEditedNamesStillRead()
+    {
+        const QDir dir = QDir::temp();
+        const SceneFile f = sampleFile(dir);
+        const QJsonObject json = QJsonDocument::fromJson(sceneFileBytes(f, dir)).object();
+        QCOMPARE(json["program"]["name"].toString(), QString("toon")); // no words in the name
+        QCOMPARE(json["program"]["edited"].toBool(), true);
+
+        // Before the "edited" field, the name carried an English suffix: read as edited.
+        QJsonObject old = json, program = json["program"].toObject();
+        program.remove("edited");
+        program["name"] = "toon (edited)";
+        old["program"] = program;
+        SceneFileRead read = parseSceneFile(QJsonDocument(old).toJson(), dir, "old.json");
+        QVERIFY(read.ignored.isEmpty());
+        QVERIFY(read.file->program == f.program);
+        program["name"] = "toon";
+        old["program"] = program;
+        read = parseSceneFile(QJsonDocument(old).toJson(), dir, "old.json");
+        QVERIFY(!read.file->program->edited);
+
+        // With the field, the name is taken as it is, whatever it ends with.
+        program["name"] = "my (edited)";
+        program["edited"] = false;
+        old["program"] = program;
+        read = parseSceneFile(QJsonDocument(old).toJson(), dir, "new.json");
+        QCOMPARE(read.file->program->name, QString("my (edited)"));
+        QVERIFY(!read.file->program->edited);
+        program["edited"] = "yes";
+        old["program"] = program;
+        read = parseSceneFile(QJsonDocument(old).toJson(), dir, "new.json");
+        QVERIFY(!read.file->program->edited);
+        QVERIFY(read.ignored.join(' ').contains("program.edited"));
     }
 
     void filesThatAreNotScenesAreRefused_data()
