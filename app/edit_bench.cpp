@@ -35,7 +35,7 @@ QJsonObject measure(MainWindow &window, const QString &name, const QString &vert
     EditorPanel *editor = window.editorPanel();
     Viewport *viewport = window.viewport();
     editor->liveCheck()->setChecked(false); // the bench ends the pause itself
-    editor->setSources(vertex, fragment);
+    editor->document()->setSources(vertex, fragment);
     std::vector<double> toPixels, raw, rawDraw, build, frameOnly;
     for (int i = 0; i < edits; ++i) {
         editor->editor(ShaderStage::Fragment)->setText(fragment + QString("\n// edit %1\n").arg(i));

@@ -2,13 +2,13 @@
 
 #include "command_line.h"
 #include "edit_bench.h"
-#include "editor_panel.h"
 #include "headless.h"
 #include "main_window.h"
 #include "mesh_actions.h"
 #include "object_loader.h"
 #include "offscreen.h"
 #include "scene_actions.h"
+#include "shader_document.h"
 #include "viewport.h"
 
 #include <QApplication>
@@ -104,7 +104,7 @@ int main(int argc, char **argv)
         return app.exec();
     }
     if (cl.hasUserProgram() && !cl.programFromScene) // opened as File > Open Shaders would
-        window.editorPanel()->openFiles({cl.vertexPath, cl.fragmentPath});
+        window.shaderDocument().openFiles({cl.vertexPath, cl.fragmentPath});
     window.show();
 
     if (!cl.screenshotPath.isEmpty()) {

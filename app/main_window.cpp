@@ -90,7 +90,7 @@ MainWindow::MainWindow(QSettings &settings, QWidget *parent)
         probeDock->raise();
     });
 
-    m_editor = new EditorPanel;
+    m_editor = new EditorPanel(&m_shaders);
     auto *editorDock = new QDockWidget(tr("Shader editor"), this);
     editorDock->setObjectName("editorDock");
     editorDock->setWidget(m_editor);
@@ -101,7 +101,7 @@ MainWindow::MainWindow(QSettings &settings, QWidget *parent)
     connect(m_viewport, &Viewport::programBuilt, this, &MainWindow::showProgramUsage);
     if (!m_editor->restoreState(m_settings))
         m_editor->loadPreset(builtInPreset(m_document.scene().shading.shading == Shading::Gouraud));
-    connect(m_editor, &EditorPanel::edited, this, [this] {
+    connect(&m_shaders, &ShaderDocument::changed, this, [this] {
         updateStatus();
         if (!m_saveTimer.isActive())
             m_saveTimer.start();
@@ -110,10 +110,10 @@ MainWindow::MainWindow(QSettings &settings, QWidget *parent)
     m_meshActions = new MeshActions(this, &m_document, m_loader, m_settings);
     connect(m_meshActions, &MeshActions::shaderFilesDropped, this,
             [this](const QStringList &paths) {
-                if (const QString error = m_editor->openFiles(paths); !error.isEmpty())
+                if (const QString error = m_shaders.openFiles(paths); !error.isEmpty())
                     QMessageBox::warning(this, tr("Shader files"), error);
             });
-    m_sceneActions = new SceneActions(this, &m_document, m_editor, m_viewport, m_settings);
+    m_sceneActions = new SceneActions(this, &m_document, &m_shaders, m_viewport, m_settings);
     connect(m_meshActions, &MeshActions::sceneFileDropped, m_sceneActions, &SceneActions::open);
     connect(m_object, &ObjectPanel::openMeshRequested, m_meshActions, &MeshActions::showOpenDialog);
     connect(m_object, &ObjectPanel::adoptFileMaterialRequested, m_loader,
@@ -133,7 +133,7 @@ MainWindow::MainWindow(QSettings &settings, QWidget *parent)
     connect(&m_document, &SceneDocument::changed, this, [this](SceneParts parts) {
         updateStatus();
         if (parts & ScenePart::Shading)
-            m_editor->followShading(m_document.scene().shading.shading == Shading::Gouraud);
+            m_shaders.followShading(m_document.scene().shading.shading == Shading::Gouraud);
         // Not restarted on every change: auto-rotate edits the scene 60 times a second,
         // and a timer restarted that often would never fire.
         if (!m_saveTimer.isActive())
@@ -163,19 +163,19 @@ void MainWindow::buildMenus()
         const QStringList paths = QFileDialog::getOpenFileNames(
             this, tr("Open a shader pair (NAME.vert and NAME.frag)"), {}, filter);
         if (!paths.isEmpty())
-            report(m_editor->openFiles(paths));
+            report(m_shaders.openFiles(paths));
     });
     auto saveAs = [this, filter, report] {
         const QString path = QFileDialog::getSaveFileName(
             this, tr("Save the shader pair as NAME.vert and NAME.frag"), {}, filter);
         if (!path.isEmpty())
-            report(m_editor->saveAs(path));
+            report(m_shaders.saveAs(path));
     };
     addItem(file, tr("&Save Shaders"), QKeySequence::Save, [this, saveAs, report] {
-        if (m_editor->filePath(ShaderStage::Vertex).isEmpty())
+        if (m_shaders.filePath(ShaderStage::Vertex).isEmpty())
             saveAs();
         else
-            report(m_editor->save());
+            report(m_shaders.save());
     });
     addItem(file, tr("Save Shaders &As..."), QKeySequence(tr("Ctrl+Shift+S")), saveAs);
     file->addSeparator();
@@ -274,7 +274,7 @@ void MainWindow::updateStatus()
         light = (first.position.w == 0.0f ? tr("directional light") : tr("point light")) +
                 tr(" in the %1 frame").arg(toName(first.frame));
     QString program = tr("Program: %1").arg(m_editor->programName());
-    if (m_editor->showsBuiltIn()) // the Shading panel's choices apply
+    if (m_shaders.showsBuiltIn()) // the Shading panel's choices apply
         program += s.shading.specular == SpecularModel::Blinn
                        ? tr(", Blinn-Phong specular (N\u00b7H)")
                        : tr(", Phong specular (R\u00b7V)");

@@ -5,6 +5,7 @@
 
 #include "program_build.h"
 #include "scene_document.h"
+#include "shader_document.h"
 
 #include <QMainWindow>
 #include <QTimer>
@@ -34,6 +35,7 @@ public:
     MainWindow(QSettings &settings, QWidget *parent = nullptr);
 
     SceneDocument &document() { return m_document; }
+    ShaderDocument &shaderDocument() { return m_shaders; }
     Viewport *viewport() const { return m_viewport; }
     LightPanel *lightPanel() const { return m_light; }
     MaterialPanel *materialPanel() const { return m_material; }
@@ -58,6 +60,7 @@ private:
 
     QSettings &m_settings;
     SceneDocument m_document;
+    ShaderDocument m_shaders; // the program in the editor
     Viewport *m_viewport;
     LightPanel *m_light;
     MaterialPanel *m_material;

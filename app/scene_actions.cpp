@@ -1,9 +1,9 @@
 #include "scene_actions.h"
 
-#include "editor_panel.h"
 #include "export_size_dialog.h"
 #include "recent_files.h"
 #include "scene_document.h"
+#include "shader_document.h"
 #include "viewport.h"
 
 #include <QApplication>
@@ -26,9 +26,9 @@ const char *kExportSizeKey = "export/size";
 const QString kFilter = QObject::tr("Scenes (*.json);;All files (*)");
 } // namespace
 
-SceneActions::SceneActions(QMainWindow *window, SceneDocument *document, EditorPanel *editor,
+SceneActions::SceneActions(QMainWindow *window, SceneDocument *document, ShaderDocument *shaders,
                            Viewport *viewport, QSettings &settings)
-    : QObject(window), m_window(window), m_document(document), m_editor(editor),
+    : QObject(window), m_window(window), m_document(document), m_shaders(shaders),
       m_viewport(viewport), m_settings(settings)
 {
     m_recent = new RecentFiles(tr("Open Recent S&cene"), settings, kRecentKey, window);
@@ -84,7 +84,7 @@ bool SceneActions::open(const QString &path)
     if (example)
         file.scene.object.meshPath.clear();
     m_document->set(file.scene);
-    m_editor->setProgram(file.program, file.scene.shading.shading == Shading::Gouraud);
+    m_shaders->setProgram(file.program, file.scene.shading.shading == Shading::Gouraud);
     setCurrentPath(example ? QString() : QFileInfo(path).absoluteFilePath());
     if (!example)
         m_recent->add(QFileInfo(path).absoluteFilePath());
@@ -102,7 +102,8 @@ bool SceneActions::open(const QString &path)
 
 QString SceneActions::save(const QString &path)
 {
-    const QString error = writeSceneFile(path, SceneFile{m_document->scene(), m_editor->program()});
+    const QString error =
+        writeSceneFile(path, SceneFile{m_document->scene(), m_shaders->program()});
     if (!error.isEmpty()) {
         showMessage(QMessageBox::Warning, tr("The scene was not saved."), error);
         return error;

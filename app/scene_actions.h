@@ -16,16 +16,16 @@ class QSettings;
 
 namespace lb {
 
-class EditorPanel;
 class RecentFiles;
 class SceneDocument;
+class ShaderDocument;
 class Viewport;
 
 class SceneActions : public QObject
 {
     Q_OBJECT
 public:
-    SceneActions(QMainWindow *window, SceneDocument *document, EditorPanel *editor,
+    SceneActions(QMainWindow *window, SceneDocument *document, ShaderDocument *shaders,
                  Viewport *viewport, QSettings &settings);
 
     void addToMenu(QMenu *file);
@@ -58,7 +58,7 @@ private:
 
     QMainWindow *m_window;
     SceneDocument *m_document;
-    EditorPanel *m_editor;
+    ShaderDocument *m_shaders;
     Viewport *m_viewport;
     QSettings &m_settings;
     RecentFiles *m_recent;

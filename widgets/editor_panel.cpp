@@ -4,15 +4,12 @@
 #include "shader_editor.h"
 
 #include <QCheckBox>
-#include <QDir>
-#include <QFile>
 #include <QFileInfo>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
 #include <QListWidget>
 #include <QMenu>
-#include <QSaveFile>
 #include <QSettings>
 #include <QShortcut>
 #include <QSpinBox>
@@ -25,28 +22,20 @@ namespace lb {
 
 namespace {
 constexpr int kDefaultPauseMs = 150;
-
-int index(ShaderStage stage)
-{
-    return stage == ShaderStage::Fragment ? 1 : 0;
-}
-
-QString partnerOf(const QString &path)
-{
-    const QFileInfo info(path);
-    const QString other = info.suffix() == "vert" ? "frag" : "vert";
-    return info.dir().filePath(info.completeBaseName() + "." + other);
-}
-
-ShaderStage stageOfFile(const QString &path)
-{
-    const QString suffix = QFileInfo(path).suffix().toLower();
-    return suffix == "frag" || suffix == "fs" || suffix == "fsh" ? ShaderStage::Fragment
-                                                                 : ShaderStage::Vertex;
-}
+constexpr ShaderStage kStages[] = {ShaderStage::Vertex, ShaderStage::Fragment};
 } // namespace
 
-EditorPanel::EditorPanel(QWidget *parent) : QWidget(parent)
+QString programDisplayName(const ShaderOrigin &origin)
+{
+    QString name = origin.name;
+    if (name.isEmpty())
+        name = origin.kind == ShaderOrigin::Kind::Scene ? EditorPanel::tr("the scene's shaders")
+                                                        : EditorPanel::tr("your shaders");
+    return origin.edited ? EditorPanel::tr("%1 (edited)").arg(name) : name;
+}
+
+EditorPanel::EditorPanel(ShaderDocument *document, QWidget *parent)
+    : QWidget(parent), m_document(document)
 {
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);
@@ -57,7 +46,7 @@ EditorPanel::EditorPanel(QWidget *parent) : QWidget(parent)
     presetButton->setPopupMode(QToolButton::InstantPopup);
     m_presets = new QMenu(presetButton);
     for (const Preset &p : presets())
-        m_presets->addAction(p.name, this, [this, &p] { loadPreset(p); });
+        m_presets->addAction(p.name, this, [this, &p] { m_document->loadPreset(p); });
     presetButton->setMenu(m_presets);
     presetButton->setToolTip(tr("The built-in programs, the slides' shaders as printed, toon"));
     bar->addWidget(presetButton);
@@ -116,11 +105,18 @@ EditorPanel::EditorPanel(QWidget *parent) : QWidget(parent)
 
     m_pause.setSingleShot(true);
     connect(&m_pause, &QTimer::timeout, this, &EditorPanel::compileNow);
-    for (ShaderEditor *e : {m_vertex, m_fragment}) {
-        connect(e, &ShaderEditor::textChanged, this, &EditorPanel::onEdited);
-        connect(e, &ShaderEditor::modificationChanged, this, &EditorPanel::updateTitles);
+    for (ShaderStage stage : kStages) {
+        connect(editor(stage), &ShaderEditor::textChanged, this, [this, stage] { typed(stage); });
+        showSource(stage);
     }
-    connect(&m_watcher, &QFileSystemWatcher::fileChanged, this, &EditorPanel::fileChangedOnDisk);
+    connect(m_document, &ShaderDocument::sourceChanged, this, &EditorPanel::showSource);
+    connect(m_document, &ShaderDocument::filesChanged, this, &EditorPanel::updateTitles);
+    connect(m_document, &ShaderDocument::diskChanged, this, &EditorPanel::showDiskChange);
+    connect(m_document, &ShaderDocument::compileRequested, this,
+            [this](const QString &vertex, const QString &fragment) {
+                m_pause.stop();
+                emit compileRequested(vertex, fragment);
+            });
     connect(m_list, &QListWidget::itemActivated, this,
             [this](QListWidgetItem *item) { jumpTo(m_list->row(item)); });
     connect(m_list, &QListWidget::itemClicked, this,
@@ -136,6 +132,15 @@ EditorPanel::EditorPanel(QWidget *parent) : QWidget(parent)
         m_find->setFocus();
         m_find->selectAll();
     });
+    updateTitles();
+}
+
+EditorPanel::~EditorPanel()
+{
+    // The editors are deleted after this, when the document may be gone: nothing they say on
+    // the way out may reach it.
+    for (ShaderStage stage : kStages)
+        disconnect(editor(stage), nullptr, this, nullptr);
 }
 
 ShaderEditor *EditorPanel::editor(ShaderStage stage) const
@@ -143,254 +148,61 @@ ShaderEditor *EditorPanel::editor(ShaderStage stage) const
     return stage == ShaderStage::Fragment ? m_fragment : m_vertex;
 }
 
-QString EditorPanel::source(ShaderStage stage) const
+void EditorPanel::typed(ShaderStage stage)
 {
-    return editor(stage)->text();
-}
-
-void EditorPanel::setSources(const QString &vertex, const QString &fragment)
-{
-    m_loading = true;
-    m_vertex->setText(vertex);
-    m_fragment->setText(fragment);
-    m_vertex->setModified(false);
-    m_fragment->setModified(false);
-    m_restoredUnsaved[0] = m_restoredUnsaved[1] = false;
-    m_loading = false;
-    m_builtInVertex.clear();
-    m_builtInFragment.clear();
-    m_origin = tr("your shaders");
-    m_originEdited = false;
-    m_paths[0].clear();
-    m_paths[1].clear();
-    watch();
-    updateTitles();
-    compileNow();
-    emit edited();
-}
-
-void EditorPanel::loadPreset(const Preset &preset)
-{
-    setSources(preset.vertexSource(), preset.fragmentSource());
-    m_origin = preset.name;
-    for (bool gouraud : {false, true}) {
-        if (&builtInPreset(gouraud) == &preset) {
-            m_builtInVertex = source(ShaderStage::Vertex);
-            m_builtInFragment = source(ShaderStage::Fragment);
-            m_builtInIsGouraud = gouraud;
-        }
-    }
-    emit edited(); // again, now that the name and the built-in are known
-}
-
-bool EditorPanel::showsBuiltIn() const
-{
-    return !m_builtInVertex.isEmpty() && source(ShaderStage::Vertex) == m_builtInVertex &&
-           source(ShaderStage::Fragment) == m_builtInFragment;
-}
-
-bool EditorPanel::isEdited() const
-{
-    if (showsBuiltIn())
-        return false;
-    return m_originEdited || isModified() || !m_builtInVertex.isEmpty();
-}
-
-QString EditorPanel::programName() const
-{
-    // Words for the user only: scene files and settings keep the name and the flag as data.
-    return isEdited() ? tr("%1 (edited)").arg(m_origin) : m_origin;
-}
-
-std::optional<ProgramText> EditorPanel::program() const
-{
-    if (showsBuiltIn())
-        return std::nullopt;
-    return ProgramText{m_origin, source(ShaderStage::Vertex), source(ShaderStage::Fragment),
-                       isEdited()};
-}
-
-void EditorPanel::setProgram(const std::optional<ProgramText> &program, bool gouraud)
-{
-    if (!program) {
-        loadPreset(builtInPreset(gouraud));
+    if (m_showing)
         return;
-    }
-    setSources(program->vertex, program->fragment);
-    m_origin = program->name.isEmpty() ? tr("the scene's shaders") : program->name;
-    m_originEdited = program->edited; // an edit saved in the scene is still an edit
-    updateTitles();
-    emit edited();
-}
-
-void EditorPanel::followShading(bool gouraud)
-{
-    if (showsBuiltIn() && gouraud != m_builtInIsGouraud)
-        loadPreset(builtInPreset(gouraud));
-}
-
-void EditorPanel::onEdited()
-{
-    if (m_loading)
-        return;
+    m_typing = true;
+    m_document->setSource(stage, editor(stage)->text());
+    m_typing = false;
     if (m_live->isChecked())
         m_pause.start(m_delay->value());
-    emit edited();
 }
 
-QString EditorPanel::filePath(ShaderStage stage) const
+void EditorPanel::showSource(ShaderStage stage)
 {
-    return m_paths[index(stage)];
+    if (m_typing)
+        return;
+    m_showing = true;
+    editor(stage)->setText(m_document->source(stage));
+    m_showing = false;
 }
 
-bool EditorPanel::isModified(ShaderStage stage) const
+void EditorPanel::showDiskChange(ShaderStage, ShaderDocument::DiskChange change,
+                                 const QString &path)
 {
-    return editor(stage)->isModified() || m_restoredUnsaved[index(stage)];
-}
-
-bool EditorPanel::isModified() const
-{
-    return isModified(ShaderStage::Vertex) || isModified(ShaderStage::Fragment);
+    if (change == ShaderDocument::DiskChange::Gone)
+        m_status->setText(tr("%1 is gone from the disk; your text is kept").arg(path));
+    else if (change == ShaderDocument::DiskChange::KeptEdits)
+        m_status->setText(tr("%1 changed on disk; your unsaved edits are kept (Open it "
+                             "again to take the disk's version)")
+                              .arg(QFileInfo(path).fileName()));
 }
 
 void EditorPanel::updateTitles()
 {
-    for (ShaderStage stage : {ShaderStage::Vertex, ShaderStage::Fragment}) {
-        const int i = index(stage);
+    for (ShaderStage stage : kStages) {
+        const int i = stage == ShaderStage::Fragment ? 1 : 0;
+        const QString path = m_document->filePath(stage);
         QString title = i ? tr("Fragment") : tr("Vertex");
-        if (!m_paths[i].isEmpty())
-            title += " - " + QFileInfo(m_paths[i]).fileName();
-        if (isModified(stage) && !m_paths[i].isEmpty())
+        if (!path.isEmpty())
+            title += " - " + QFileInfo(path).fileName();
+        if (m_document->isModified(stage) && !path.isEmpty())
             title += " *";
         if (editor(stage)->markedLineCount() > 0)
             title += " \u25cf";
         m_tabs->setTabText(i, title);
-        m_tabs->setTabToolTip(i, m_paths[i]);
+        m_tabs->setTabToolTip(i, path);
     }
-}
-
-void EditorPanel::watch()
-{
-    if (!m_watcher.files().isEmpty())
-        m_watcher.removePaths(m_watcher.files());
-    for (const QString &p : m_paths)
-        if (!p.isEmpty() && QFileInfo::exists(p))
-            m_watcher.addPath(p);
-}
-
-QString EditorPanel::openFiles(const QStringList &paths)
-{
-    QString chosen[2];
-    for (const QString &p : paths)
-        chosen[index(stageOfFile(p))] = p;
-    for (int i = 0; i < 2; ++i) // a single file brings its partner when there is one
-        if (chosen[i].isEmpty() && !chosen[1 - i].isEmpty() &&
-            QFileInfo::exists(partnerOf(chosen[1 - i])))
-            chosen[i] = partnerOf(chosen[1 - i]);
-    QString text[2] = {source(ShaderStage::Vertex), source(ShaderStage::Fragment)};
-    for (int i = 0; i < 2; ++i) {
-        if (chosen[i].isEmpty())
-            continue;
-        QFile f(chosen[i]);
-        if (!f.open(QIODevice::ReadOnly))
-            return tr("Cannot open %1: %2").arg(chosen[i], f.errorString());
-        text[i] = QString::fromUtf8(f.readAll());
-    }
-    const QString keep[2] = {m_paths[0], m_paths[1]};
-    setSources(text[0], text[1]);
-    for (int i = 0; i < 2; ++i)
-        m_paths[i] = chosen[i].isEmpty() ? keep[i] : QFileInfo(chosen[i]).absoluteFilePath();
-    m_origin = QFileInfo(m_paths[0].isEmpty() ? m_paths[1] : m_paths[0]).completeBaseName();
-    m_originEdited = false;
-    watch();
-    updateTitles();
-    emit edited();
-    return {};
-}
-
-QString EditorPanel::writeFile(ShaderStage stage, const QString &path)
-{
-    QSaveFile f(path);
-    if (!f.open(QIODevice::WriteOnly) || f.write(source(stage).toUtf8()) < 0 || !f.commit())
-        return tr("Cannot save %1: %2").arg(path, f.errorString());
-    m_paths[index(stage)] = QFileInfo(path).absoluteFilePath();
-    editor(stage)->setModified(false);
-    m_restoredUnsaved[index(stage)] = false;
-    return {};
-}
-
-QString EditorPanel::save()
-{
-    if (m_paths[0].isEmpty() || m_paths[1].isEmpty())
-        return tr("The shaders have no files yet: use Save As");
-    m_watcher.blockSignals(true); // our own write is no change from outside
-    QString error = writeFile(ShaderStage::Vertex, m_paths[0]);
-    if (error.isEmpty())
-        error = writeFile(ShaderStage::Fragment, m_paths[1]);
-    watch();
-    m_watcher.blockSignals(false);
-    updateTitles();
-    emit edited();
-    return error;
-}
-
-QString EditorPanel::saveAs(const QString &anyPath)
-{
-    const QFileInfo info(anyPath);
-    const QString base = info.suffix() == "vert" || info.suffix() == "frag"
-                             ? info.dir().filePath(info.completeBaseName())
-                             : info.absoluteFilePath();
-    m_paths[0] = base + ".vert";
-    m_paths[1] = base + ".frag";
-    m_origin = QFileInfo(base).fileName();
-    m_originEdited = false;
-    return save();
-}
-
-void EditorPanel::fileChangedOnDisk(const QString &path)
-{
-    for (ShaderStage stage : {ShaderStage::Vertex, ShaderStage::Fragment}) {
-        if (m_paths[index(stage)] != path)
-            continue;
-        QFile f(path);
-        if (!f.open(QIODevice::ReadOnly)) {
-            m_status->setText(tr("%1 is gone from the disk; your text is kept").arg(path));
-        } else if (isModified(stage)) {
-            m_status->setText(tr("%1 changed on disk; your unsaved edits are kept (Open it "
-                                 "again to take the disk's version)")
-                                  .arg(QFileInfo(path).fileName()));
-        } else {
-            const QString text = QString::fromUtf8(f.readAll());
-            if (text != source(stage)) {
-                m_loading = true;
-                editor(stage)->setText(text);
-                editor(stage)->setModified(false);
-                m_loading = false;
-                compileNow();
-            }
-        }
-    }
-    watch(); // editors that save by renaming replace the watched file
 }
 
 void EditorPanel::saveState(QSettings &settings) const
 {
     settings.beginGroup("editor");
-    settings.setValue("vertex", source(ShaderStage::Vertex));
-    settings.setValue("fragment", source(ShaderStage::Fragment));
-    settings.setValue("vertexPath", m_paths[0]);
-    settings.setValue("fragmentPath", m_paths[1]);
-    settings.setValue("vertexModified", isModified(ShaderStage::Vertex));
-    settings.setValue("fragmentModified", isModified(ShaderStage::Fragment));
-    settings.setValue("origin", m_origin); // restoreState() reads it back
-    settings.setValue("originEdited", m_originEdited);
-    const bool builtIn = !m_builtInVertex.isEmpty() &&
-                         source(ShaderStage::Vertex) == m_builtInVertex &&
-                         source(ShaderStage::Fragment) == m_builtInFragment;
-    settings.setValue("builtIn", builtIn ? (m_builtInIsGouraud ? "gouraud" : "phong") : "");
     settings.setValue("live", m_live->isChecked());
     settings.setValue("pauseMs", m_delay->value());
     settings.endGroup();
+    m_document->saveState(settings);
 }
 
 bool EditorPanel::restoreState(QSettings &settings)
@@ -398,31 +210,17 @@ bool EditorPanel::restoreState(QSettings &settings)
     settings.beginGroup("editor");
     m_live->setChecked(settings.value("live", true).toBool());
     m_delay->setValue(settings.value("pauseMs", kDefaultPauseMs).toInt());
-    const bool saved = settings.contains("vertex");
-    const QString builtIn = settings.value("builtIn").toString();
-    if (saved && !builtIn.isEmpty()) {
-        loadPreset(builtInPreset(builtIn == "gouraud"));
-    } else if (saved) {
-        setSources(settings.value("vertex").toString(), settings.value("fragment").toString());
-        m_paths[0] = settings.value("vertexPath").toString();
-        m_paths[1] = settings.value("fragmentPath").toString();
-        m_restoredUnsaved[0] = settings.value("vertexModified").toBool();
-        m_restoredUnsaved[1] = settings.value("fragmentModified").toBool();
-        m_origin = settings.value("origin", m_origin).toString();
-        m_originEdited = settings.value("originEdited", false).toBool();
-        watch();
-        updateTitles();
-        if (isModified())
-            m_status->setText(tr("Your unsaved shader edits from the last session are back"));
-    }
     settings.endGroup();
-    return saved;
+    const bool restored = m_document->restoreState(settings);
+    if (restored && m_document->isModified())
+        m_status->setText(tr("Your unsaved shader edits from the last session are back"));
+    return restored;
 }
 
 void EditorPanel::compileNow()
 {
     m_pause.stop();
-    emit compileRequested(source(ShaderStage::Vertex), source(ShaderStage::Fragment));
+    m_document->requestCompile(); // comes back through compileRequested
 }
 
 void EditorPanel::showBuild(const ProgramBuild &build)

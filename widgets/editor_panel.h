@@ -1,12 +1,12 @@
 #pragma once
-// The shader editor dock: a tab for the vertex and one for the fragment shader of the program
-// on screen, recompiled while typing (after a pause, 150 ms by default), at once on
-// Ctrl+Enter, or only on demand; the diagnostics in a list below (click to jump); presets.
+// The shader editor dock: a view of the ShaderDocument, with a tab for the vertex and one for
+// the fragment shader of the program on screen, recompiled while typing (after a pause, 150 ms
+// by default), at once on Ctrl+Enter, or only on demand; the diagnostics in a list below
+// (click to jump); presets.
 
-#include "program_build.h"
-#include "scene_file.h"
+#include "program.h"
+#include "shader_document.h"
 
-#include <QFileSystemWatcher>
 #include <QTimer>
 #include <QWidget>
 
@@ -24,49 +24,42 @@ namespace lb {
 class ShaderEditor;
 struct Preset;
 
+// What the program is called where the user reads it ("Toon (edited)"): words made from the
+// origin's data at display time, never stored.
+QString programDisplayName(const ShaderOrigin &origin);
+
 class EditorPanel : public QWidget
 {
     Q_OBJECT
 public:
-    explicit EditorPanel(QWidget *parent = nullptr);
+    // The panel shows and edits `document`, which must live while the panel is in use (the
+    // window's member document goes before the window's child widgets: see the destructor).
+    explicit EditorPanel(ShaderDocument *document, QWidget *parent = nullptr);
+    ~EditorPanel() override;
 
+    ShaderDocument *document() const { return m_document; }
     ShaderEditor *editor(ShaderStage stage) const;
-    QString source(ShaderStage stage) const;
     QListWidget *diagnosticsList() const { return m_list; }
     QMenu *presetsMenu() const { return m_presets; }
     QCheckBox *liveCheck() const { return m_live; }
     QSpinBox *delayBox() const { return m_delay; }
     QLabel *statusLabel() const { return m_status; }
+    QString programName() const { return programDisplayName(m_document->origin()); }
 
-    // Replaces both sources (no compile pause: the new program is asked for at once).
-    void setSources(const QString &vertex, const QString &fragment);
-    void loadPreset(const Preset &preset);
-    // While the editor shows a built-in program untouched, it follows the Shading panel's
-    // Gouraud/Phong choice; once edited it is the user's program and stays.
-    void followShading(bool gouraud);
+    // The document's, as the panel shows it (what tests and the window reach through it).
+    QString source(ShaderStage stage) const { return m_document->source(stage); }
+    void loadPreset(const Preset &preset) { m_document->loadPreset(preset); }
+    QString openFiles(const QStringList &paths) { return m_document->openFiles(paths); }
+    QString save() { return m_document->save(); }
+    QString saveAs(const QString &anyPath) { return m_document->saveAs(anyPath); }
+    QString filePath(ShaderStage stage) const { return m_document->filePath(stage); }
+    std::optional<ProgramText> program() const { return m_document->program(); }
+    bool isModified() const { return m_document->isModified(); }
 
-    // Files: a pair NAME.vert + NAME.frag. open() takes one or both; the missing partner of a
-    // single file is looked for beside it. Returns an empty string, or what went wrong.
-    QString openFiles(const QStringList &paths);
-    QString save();                         // to the files the pair came from
-    QString saveAs(const QString &anyPath); // NAME.vert/NAME.frag (or NAME) -> both files
-    QString filePath(ShaderStage stage) const;
-    // What is in the editor, in words: a preset's name, the file, "edited" when changed.
-    QString programName() const;
-    // Changed since it came from its preset, file or scene (or saved in a scene as edited).
-    bool isEdited() const;
-    bool showsBuiltIn() const; // an untouched built-in program, following the Shading panel
-    // The program for a scene file: none while the built-in one shows untouched.
-    std::optional<ProgramText> program() const;
-    // A scene file's program; none: the built-in program of the shading mode.
-    void setProgram(const std::optional<ProgramText> &program, bool gouraud);
-    bool isModified() const;
-    bool isModified(ShaderStage stage) const;
-
-    // The sources, their files and modified flags; written within half a second of every
-    // edit, so that a crash or a kill loses nothing, and read back at the next start.
+    // The live switch and its pause, and the document's state (ShaderDocument::saveState),
+    // in the settings' "editor" group.
     void saveState(QSettings &settings) const;
-    bool restoreState(QSettings &settings); // false when there was nothing to restore
+    bool restoreState(QSettings &settings); // false when there was no document to restore
 
 public slots:
     void compileNow();
@@ -74,16 +67,15 @@ public slots:
 
 signals:
     void compileRequested(const QString &vertex, const QString &fragment);
-    void edited(); // the text changed: time to autosave
 
 private:
-    void onEdited();
+    void typed(ShaderStage stage);
+    void showSource(ShaderStage stage);
+    void showDiskChange(ShaderStage stage, ShaderDocument::DiskChange change, const QString &path);
     void jumpTo(int row);
     void updateTitles();
-    void watch();
-    void fileChangedOnDisk(const QString &path);
-    QString writeFile(ShaderStage stage, const QString &path);
 
+    ShaderDocument *m_document;
     QTabWidget *m_tabs;
     ShaderEditor *m_vertex;
     ShaderEditor *m_fragment;
@@ -95,15 +87,8 @@ private:
     QLineEdit *m_find;
     QTimer m_pause;
     std::vector<Diagnostic> m_shown;
-    QString m_builtInVertex, m_builtInFragment; // the built-in shown, while untouched
-    bool m_builtInIsGouraud = false;
-    bool m_loading = false;
-    QString m_paths[2];          // vertex, fragment; empty when not from a file
-    QString m_origin;            // the preset or file the text came from (a name: data, not words)
-    bool m_originEdited = false; // it was already edited there (a scene file said so)
-    // Unsaved edits restored from the last session (Scintilla can only clear its own flag).
-    bool m_restoredUnsaved[2] = {false, false};
-    QFileSystemWatcher m_watcher;
+    bool m_typing = false;  // the user's text is on its way to the document
+    bool m_showing = false; // the document's text is on its way to an editor
 };
 
 } // namespace lb

@@ -231,7 +231,7 @@ private slots:
         const Preset &toon = presets().back();
         e->loadPreset(toon);
         e->editor(ShaderStage::Fragment)->append("// mine\n");
-        QVERIFY(e->isEdited());
+        QVERIFY(e->document()->origin().edited);
         QCOMPARE(e->programName(), QString("%1 (edited)").arg(toon.name));
         const std::optional<ProgramText> program = e->program();
         QVERIFY(program);
@@ -244,7 +244,7 @@ private slots:
         QCOMPARE(m_window->editorPanel()->programName(), QString("%1 (edited)").arg(toon.name));
 
         // A scene with that program opens showing it as edited, and saves it the same way.
-        m_window->editorPanel()->setProgram(program, false);
+        m_window->editorPanel()->document()->setProgram(program, false);
         QVERIFY(!m_window->editorPanel()->isModified());
         QCOMPARE(m_window->editorPanel()->programName(), QString("%1 (edited)").arg(toon.name));
         QVERIFY(m_window->editorPanel()->program() == program);
