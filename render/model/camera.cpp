@@ -5,6 +5,7 @@
 #include <glm/ext/matrix_transform.hpp>
 #include <glm/trigonometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace lb {
@@ -31,9 +32,13 @@ glm::mat4 OrbitCamera::view() const
 
 glm::mat4 OrbitCamera::projection(float aspect, Projection kind) const
 {
+    // A view narrower than it is high (a side-by-side half, a portrait window) keeps the
+    // horizontal field a square view has, so the object fits its width instead of being cut.
+    const float fit = aspect < 1.0f ? 1.0f / std::max(aspect, 1e-3f) : 1.0f;
+    const float tanHalf = std::tan(glm::radians(kFovYDegrees) * 0.5f) * fit;
     if (kind == Projection::Perspective)
-        return glm::perspective(glm::radians(kFovYDegrees), aspect, kNear, kFar);
-    const float halfHeight = distance * std::tan(glm::radians(kFovYDegrees) * 0.5f);
+        return glm::perspective(2.0f * std::atan(tanHalf), aspect, kNear, kFar);
+    const float halfHeight = distance * tanHalf;
     const float halfWidth = halfHeight * aspect;
     return glm::ortho(-halfWidth, halfWidth, -halfHeight, halfHeight, kNear, kFar);
 }

@@ -19,7 +19,8 @@ struct OrbitCamera
     glm::vec3 eye() const;
     glm::mat4 view() const; // lookAt(eye, target, up): world -> camera
     // Orthographic uses the view height of the perspective one at the target, so switching
-    // projection keeps the object about the same size on screen.
+    // projection keeps the object about the same size on screen. Below an aspect of 1 the
+    // horizontal field stays that of a square view (the object fits a narrow view's width).
     glm::mat4 projection(float aspect, Projection kind) const;
 
     void orbit(float dYawDegrees, float dPitchDegrees);

@@ -13,6 +13,7 @@
 using namespace lb;
 
 Q_DECLARE_METATYPE(glm::vec4)
+Q_DECLARE_METATYPE(lb::Projection)
 
 namespace {
 bool near(const glm::vec4 &a, const glm::vec4 &b, float eps = 1e-4f)
@@ -78,6 +79,26 @@ private slots:
         QVERIFY(near(f.view * glm::vec4(1, 2, 3, 1), glm::vec4(1, 2, -1, 1)));
     }
 
+    // A narrow view (a side-by-side half at 1024x768) frames what a square one frames across
+    // its width; a wide view keeps the vertical field. Both projections.
+    void narrowViewsKeepTheSquareViewsWidth_data()
+    {
+        QTest::addColumn<Projection>("kind");
+        QTest::newRow("perspective") << Projection::Perspective;
+        QTest::newRow("orthographic") << Projection::Orthographic;
+    }
+    void narrowViewsKeepTheSquareViewsWidth()
+    {
+        QFETCH(Projection, kind);
+        const OrbitCamera camera;
+        const glm::mat4 square = camera.projection(1.0f, kind);
+        for (float aspect : {0.3f, 0.5f, 0.8f})
+            QVERIFY2(std::abs(camera.projection(aspect, kind)[0][0] - square[0][0]) < 1e-5f,
+                     qPrintable(QString("aspect %1").arg(aspect)));
+        // Wide: the height is kept, so x scales with 1/aspect.
+        QVERIFY(std::abs(camera.projection(2.0f, kind)[1][1] - square[1][1]) < 1e-5f);
+        QVERIFY(std::abs(camera.projection(2.0f, kind)[0][0] - square[0][0] / 2.0f) < 1e-5f);
+    }
     void lightInEye_data()
     {
         QTest::addColumn<int>("frame");
