@@ -14,7 +14,7 @@ namespace lb {
 
 namespace {
 
-constexpr float kArrowLength = 0.45f;
+constexpr float kArrowLength = 0.6f; // about a seventh of the view height at the target
 
 QString vec(const glm::vec3 &v)
 {
@@ -104,14 +104,11 @@ void ProbePanel::update()
     // Arrows from the point: N white, V cyan, and for each light L in its diffuse colour
     // with H (Blinn-Phong) or R (Phong) in magenta.
     std::vector<Renderer::Arrow> arrows;
-    std::vector<Viewport::Label> labels;
-    const Frames frames = computeFrames(scene, float(view.width()) / float(view.height()));
+    std::vector<ProbeLabel> labels;
     auto add = [&](const glm::vec3 &dir, const glm::vec3 &colour, const QString &name) {
         const glm::vec3 d = kArrowLength * glm::normalize(dir);
         arrows.push_back({m_result.position, d, colour});
-        const glm::vec2 tip = pixelOf(frames, m_result.position + 1.15f * d, float(view.width()),
-                                      float(view.height()));
-        labels.push_back({QPointF(tip.x, tip.y) + QPointF(view.topLeft()), name,
+        labels.push_back({m_result.position + 1.2f * d, m_point->sideB, name,
                           QColor::fromRgbF(colour.r, colour.g, colour.b)});
     };
     add(m_result.normal, glm::vec3(1.0f), "N");

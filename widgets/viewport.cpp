@@ -39,6 +39,7 @@ Viewport::Viewport(SceneDocument *document, QWidget *parent)
     m_compareLabel->setStyleSheet("QLabel { background: rgba(0, 0, 0, 170); color: white; "
                                   "padding: 3px 6px; }");
     m_compareLabel->hide();
+    m_labels = new ProbeLabels(document, this);
     m_animation.setInterval(16);
     connect(&m_animation, &QTimer::timeout, this, &Viewport::advanceAnimation);
     syncAnimation();
@@ -94,28 +95,15 @@ void Viewport::paintGL()
     }
     m_renderer.render(m_document->scene(), size() * devicePixelRatio());
     updateCompareLabel();
-    if (!m_probeLabels.empty()) {
-        QPainter painter(this);
-        painter.setRenderHint(QPainter::Antialiasing);
-        QFont font = painter.font();
-        font.setBold(true);
-        painter.setFont(font);
-        for (const Label &l : m_probeLabels) {
-            const QPointF at = l.position / devicePixelRatio() + QPointF(-4, 5);
-            painter.setPen(Qt::black); // a dark outline keeps the letter readable anywhere
-            for (const QPointF d : {QPointF(1, 1), QPointF(-1, -1), QPointF(1, -1), QPointF(-1, 1)})
-                painter.drawText(at + d, l.text);
-            painter.setPen(l.colour);
-            painter.drawText(at, l.text);
-        }
-    }
+    if (m_labels->isVisible())
+        m_labels->update(); // the names follow the camera and the light
 }
 
 void Viewport::setProbe(std::vector<Renderer::Arrow> arrows, QPoint pixel,
-                        std::vector<Label> labels)
+                        std::vector<ProbeLabel> labels)
 {
     m_renderer.setProbe(std::move(arrows), pixel);
-    m_probeLabels = std::move(labels);
+    m_labels->setLabels(std::move(labels));
     update();
 }
 
@@ -255,6 +243,13 @@ QImage Viewport::renderImage(QSize pixels)
         fbo.release();
     }
     doneCurrent();
+    if (!image.isNull() && !m_labels->labels().empty()) {
+        // The names at the size they have on screen, relative to the frame's height.
+        const double frameHeight = std::max(1.0, height() * devicePixelRatioF());
+        QPainter painter(&image);
+        paintProbeLabels(painter, m_labels->placed(pixels),
+                         int(std::lround(m_labels->pixelSize() * pixels.height() / frameHeight)));
+    }
     return image;
 }
 

@@ -4,6 +4,7 @@
 // the auto-rotation. GL objects are released when the context goes away (a dock or window
 // change can give the widget a new context; initializeGL runs again then).
 
+#include "probe_labels.h"
 #include "renderer.h"
 #include "scene_document.h"
 
@@ -26,17 +27,13 @@ public:
     ~Viewport() override;
 
     void resetCamera();
-    // The probe's arrows and their labels (device pixels, top-left origin), and the pixel
-    // whose colour the next frame reads back (renderer().probedColour()).
-    struct Label
-    {
-        QPointF position;
-        QString text;
-        QColor colour;
-    };
-    void setProbe(std::vector<Renderer::Arrow> arrows, QPoint pixel, std::vector<Label> labels);
-    // The scene as the viewport draws it, rendered offscreen at any size (Export Image);
-    // a null image when there is no OpenGL.
+    // The probe's arrows and their names (probe_labels.h), and the pixel whose colour the
+    // next frame reads back (renderer().probedColour()).
+    void setProbe(std::vector<Renderer::Arrow> arrows, QPoint pixel,
+                  std::vector<ProbeLabel> labels);
+    ProbeLabels *probeLabels() const { return m_labels; }
+    // The scene as the viewport draws it, rendered offscreen at any size (Export Image), the
+    // probe's names included; a null image when there is no OpenGL.
     QImage renderImage(QSize pixels);
     // The mesh to draw from now on (ObjectLoader builds it) and its texture (nullptr: the
     // checker).
@@ -86,7 +83,7 @@ private:
     QLabel *m_compareLabel;
     bool m_draggingWipe = false;
     bool m_probing = false; // a probe click held down: the probe follows the mouse
-    std::vector<Label> m_probeLabels;
+    ProbeLabels *m_labels;
     // The last sources that linked, built again when the widget gets a new context, and the
     // ones asked for before there was a context.
     QString m_goodVertex, m_goodFragment;

@@ -1,0 +1,101 @@
+#include "probe_labels.h"
+
+#include "compare.h"
+#include "frames.h"
+
+#include <QEvent>
+#include <QPainter>
+#include <QPainterPath>
+
+#include <algorithm>
+
+namespace lb {
+
+std::vector<PlacedLabel> placeLabels(const Scene &scene, QSize frame,
+                                     const std::vector<ProbeLabel> &labels)
+{
+    std::vector<PlacedLabel> placed;
+    for (const ProbeLabel &l : labels) {
+        const QRect view = viewRect(scene, frame, l.sideB);
+        if (view.isEmpty())
+            continue;
+        const Frames frames = computeFrames(scene, float(view.width()) / float(view.height()));
+        const glm::vec2 p = pixelOf(frames, l.eyeTip, float(view.width()), float(view.height()));
+        placed.push_back({QPointF(p.x, p.y) + QPointF(view.topLeft()), l.text, l.colour});
+    }
+    return placed;
+}
+
+void paintProbeLabels(QPainter &painter, const std::vector<PlacedLabel> &labels, int pixelSize)
+{
+    if (labels.empty())
+        return;
+    painter.save();
+    painter.setRenderHint(QPainter::Antialiasing);
+    QFont font = painter.font();
+    font.setBold(true);
+    font.setPixelSize(std::max(pixelSize, 6));
+    const QFontMetricsF metrics(font);
+    for (const PlacedLabel &l : labels) {
+        // The outline is a stroked path of the glyphs: crisp at any size, unlike text drawn
+        // four times with an offset.
+        const QPointF baseline = l.position + QPointF(-metrics.horizontalAdvance(l.text) / 2.0,
+                                                      metrics.capHeight() / 2.0);
+        QPainterPath path;
+        path.addText(baseline, font, l.text);
+        painter.setPen(QPen(QColor(0, 0, 0, 220), std::max(2.0, pixelSize / 6.0), Qt::SolidLine,
+                            Qt::RoundCap, Qt::RoundJoin));
+        painter.setBrush(Qt::NoBrush);
+        painter.drawPath(path);
+        painter.setPen(Qt::NoPen);
+        painter.setBrush(l.colour);
+        painter.drawPath(path);
+    }
+    painter.restore();
+}
+
+ProbeLabels::ProbeLabels(const SceneDocument *document, QWidget *viewport)
+    : QWidget(viewport), m_document(document)
+{
+    setAttribute(Qt::WA_TransparentForMouseEvents);
+    setAttribute(Qt::WA_NoSystemBackground);
+    setGeometry(viewport->rect());
+    viewport->installEventFilter(this);
+    hide(); // shown while there are labels
+}
+
+void ProbeLabels::setLabels(std::vector<ProbeLabel> labels)
+{
+    m_labels = std::move(labels);
+    setVisible(!m_labels.empty());
+    update();
+}
+
+int ProbeLabels::pixelSize() const
+{
+    return int(std::lround(1.5 * QFontInfo(font()).pixelSize() * devicePixelRatioF()));
+}
+
+std::vector<PlacedLabel> ProbeLabels::placed(QSize frame) const
+{
+    return placeLabels(m_document->scene(), frame, m_labels);
+}
+
+bool ProbeLabels::eventFilter(QObject *watched, QEvent *event)
+{
+    if (watched == parent() && event->type() == QEvent::Resize)
+        setGeometry(parentWidget()->rect());
+    return false;
+}
+
+void ProbeLabels::paintEvent(QPaintEvent *)
+{
+    const qreal dpr = devicePixelRatioF();
+    std::vector<PlacedLabel> labels = placed((QSizeF(size()) * dpr).toSize());
+    for (PlacedLabel &l : labels)
+        l.position /= dpr; // frame pixels -> this widget's coordinates
+    QPainter painter(this);
+    paintProbeLabels(painter, labels, int(std::lround(pixelSize() / dpr)));
+}
+
+} // namespace lb
