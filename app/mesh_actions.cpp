@@ -3,12 +3,12 @@
 #include "load_progress.h"
 #include "preferences_dialog.h"
 #include "recent_files.h"
+#include "status_line.h"
 
 #include <QDragEnterEvent>
 #include <QDropEvent>
 #include <QFileDialog>
 #include <QFileInfo>
-#include <QLabel>
 #include <QLocale>
 #include <QMainWindow>
 #include <QMenu>
@@ -35,7 +35,7 @@ bool isShaderFile(const QString &path)
 } // namespace
 
 MeshActions::MeshActions(QMainWindow *window, SceneDocument *document, ObjectLoader *loader,
-                         QSettings &settings)
+                         QSettings &settings, StatusLine *status)
     : QObject(window), m_window(window), m_document(document), m_loader(loader),
       m_settings(settings)
 {
@@ -46,9 +46,8 @@ MeshActions::MeshActions(QMainWindow *window, SceneDocument *document, ObjectLoa
     m_loader->setLimits(limits);
 
     m_progress = new LoadProgress(window);
-    m_summary = new QLabel(window);
-    window->statusBar()->addPermanentWidget(m_progress);
-    window->statusBar()->addPermanentWidget(m_summary);
+    m_summary = status->meshLabel();
+    status->setProgressWidget(m_progress);
     m_recent = new RecentFiles(tr("Open &Recent Mesh"), settings, kRecentKey, window);
     connect(m_recent, &RecentFiles::fileChosen, this, &MeshActions::open);
 
@@ -99,7 +98,7 @@ void MeshActions::showSummary()
     if (file)
         shortForm += tr(", %1 s").arg(file->seconds, 0, 'f', 2);
     m_summary->setText(shortForm);
-    m_summary->setToolTip(m_loader->summary());
+    m_summary->setFullText(m_loader->summary());
 }
 
 QString MeshActions::fileFilter() const
@@ -146,7 +145,7 @@ void MeshActions::finished(bool ok, const QString &message)
         return;
     }
     if (message == tr("Loading cancelled")) {
-        m_window->statusBar()->showMessage(message, 5000);
+        showStatusMessage(m_window, message, 5000);
         return;
     }
     // Not modal for the application: the window stays usable behind the message.
@@ -159,7 +158,7 @@ void MeshActions::finished(bool ok, const QString &message)
     m_errorBox->setAttribute(Qt::WA_DeleteOnClose);
     m_errorBox->setWindowModality(Qt::NonModal);
     m_errorBox->show();
-    m_window->statusBar()->showMessage(message, 10000);
+    showStatusMessage(m_window, message, 10000);
 }
 
 bool MeshActions::eventFilter(QObject *watched, QEvent *event)

@@ -10,22 +10,24 @@
 #include <QObject>
 #include <QPointer>
 
-class QLabel;
 class QMainWindow;
 class QMenu;
 class QSettings;
 
 namespace lb {
 
+class ElidedLabel;
 class LoadProgress;
 class RecentFiles;
+class StatusLine;
 
 class MeshActions : public QObject
 {
     Q_OBJECT
 public:
+    // The progress and the summary go into `status`, the window's status line.
     MeshActions(QMainWindow *window, SceneDocument *document, ObjectLoader *loader,
-                QSettings &settings);
+                QSettings &settings, StatusLine *status);
 
     void addToMenus(QMenu *file, QMenu *edit, QMenu *view);
     void showOpenDialog();
@@ -36,7 +38,7 @@ public:
 
     LoadProgress *progress() const { return m_progress; }
     RecentFiles *recent() const { return m_recent; }
-    QLabel *summaryLabel() const { return m_summary; }
+    ElidedLabel *summaryLabel() const { return m_summary; }
     // The message box of the last failed load, while it is open.
     QMessageBox *errorBox() const { return m_errorBox; }
 
@@ -57,7 +59,7 @@ private:
     ObjectLoader *m_loader;
     QSettings &m_settings;
     LoadProgress *m_progress;
-    QLabel *m_summary;
+    ElidedLabel *m_summary;
     RecentFiles *m_recent;
     QPointer<QMessageBox> m_errorBox;
     QString m_pendingPath; // the file being loaded, for the recent list

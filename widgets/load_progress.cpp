@@ -1,7 +1,8 @@
 #include "load_progress.h"
 
+#include "status_line.h"
+
 #include <QHBoxLayout>
-#include <QLabel>
 #include <QProgressBar>
 #include <QPushButton>
 
@@ -11,7 +12,8 @@ LoadProgress::LoadProgress(QWidget *parent) : QWidget(parent)
 {
     auto *row = new QHBoxLayout(this);
     row->setContentsMargins(0, 0, 0, 0);
-    m_label = new QLabel(this);
+    m_label = new ElidedLabel(this);
+    m_label->setFixedWidth(m_label->fontMetrics().averageCharWidth() * 28);
     m_bar = new QProgressBar(this);
     m_bar->setRange(0, 1000);
     m_bar->setTextVisible(false);
