@@ -18,6 +18,11 @@
 #include <QToolButton>
 #include <QVBoxLayout>
 
+#include <Qsci/qscilexer.h>
+
+#include <algorithm>
+#include <cmath>
+
 namespace lb {
 
 namespace {
@@ -49,7 +54,6 @@ EditorPanel::EditorPanel(ShaderDocument *document, QWidget *parent)
         m_presets->addAction(p.name, this, [this, &p] { m_document->loadPreset(p); });
     presetButton->setMenu(m_presets);
     presetButton->setToolTip(tr("The built-in programs, the slides' shaders as printed, toon"));
-    bar->addWidget(presetButton);
 
     auto *compile = new QToolButton(this);
     compile->setText(tr("Compile"));
@@ -66,18 +70,21 @@ EditorPanel::EditorPanel(ShaderDocument *document, QWidget *parent)
     m_delay->setSingleStep(50);
     m_delay->setSuffix(tr(" ms"));
     m_delay->setValue(kDefaultPauseMs);
-    m_delay->setToolTip(tr("The pause after the last key before a live recompile"));
+    m_delay->setToolTip(tr("The pause after the last key before a live recompile (wheel or "
+                           "arrow keys change it)"));
+    m_delay->setButtonSymbols(QAbstractSpinBox::NoButtons); // narrow: the editor fits 1024 px
     connect(m_live, &QCheckBox::toggled, m_delay, &QSpinBox::setEnabled);
     bar->addWidget(m_delay);
 
     m_find = new QLineEdit(this);
     m_find->setPlaceholderText(tr("Find (Ctrl+F)"));
     m_find->setClearButtonEnabled(true);
+    m_find->setMinimumWidth(m_find->fontMetrics().horizontalAdvance("Find (Ctrl+F)") / 2);
     connect(m_find, &QLineEdit::returnPressed, this, [this] {
         auto *e = static_cast<ShaderEditor *>(m_tabs->currentWidget());
         e->findFirst(m_find->text(), false, false, false, true);
     });
-    bar->addWidget(m_find, 1);
+    bar->addStretch(1);
     layout->addLayout(bar);
 
     m_tabs = new QTabWidget(this);
@@ -85,6 +92,9 @@ EditorPanel::EditorPanel(ShaderDocument *document, QWidget *parent)
     m_fragment = new ShaderEditor(this);
     m_tabs->addTab(m_vertex, tr("Vertex"));
     m_tabs->addTab(m_fragment, tr("Fragment"));
+    // Find sits beside the stage tabs, where it costs no row and leaves the bar narrow.
+    m_tabs->setCornerWidget(m_find, Qt::TopRightCorner);
+    m_tabs->setCornerWidget(presetButton, Qt::TopLeftCorner);
     m_list = new QListWidget(this);
     m_list->setToolTip(tr("Click a message to go to its line"));
     // The status line sits above the messages; its text never widens the dock (a dock that
@@ -164,7 +174,7 @@ void EditorPanel::showSource(ShaderStage stage)
     if (m_typing)
         return;
     m_showing = true;
-    editor(stage)->setText(m_document->source(stage));
+    editor(stage)->replaceText(m_document->source(stage)); // undoable: Ctrl+Z brings it back
     m_showing = false;
 }
 
@@ -201,6 +211,7 @@ void EditorPanel::saveState(QSettings &settings) const
     settings.beginGroup("editor");
     settings.setValue("live", m_live->isChecked());
     settings.setValue("pauseMs", m_delay->value());
+    settings.setValue("zoom", m_zoom);
     settings.endGroup();
     m_document->saveState(settings);
 }
@@ -210,11 +221,41 @@ bool EditorPanel::restoreState(QSettings &settings)
     settings.beginGroup("editor");
     m_live->setChecked(settings.value("live", true).toBool());
     m_delay->setValue(settings.value("pauseMs", kDefaultPauseMs).toInt());
+    setZoom(settings.value("zoom", 0).toInt());
     settings.endGroup();
     const bool restored = m_document->restoreState(settings);
-    if (restored && m_document->isModified())
+    m_restoredUnsaved = restored && m_document->isModified();
+    if (m_restoredUnsaved)
         m_status->setText(tr("Your unsaved shader edits from the last session are back"));
     return restored;
+}
+
+void EditorPanel::setZoom(int steps)
+{
+    m_zoom = std::clamp(steps, kMinZoom, kMaxZoom);
+    applyZoom();
+}
+
+void EditorPanel::setUiScale(double scale)
+{
+    m_uiScale = scale;
+    applyZoom();
+}
+
+double EditorPanel::fontPointSize() const
+{
+    return m_vertex->lexer()->defaultFont().pointSizeF() +
+           m_vertex->SendScintilla(QsciScintilla::SCI_GETZOOM);
+}
+
+void EditorPanel::applyZoom()
+{
+    // Scintilla's zoom adds points to every style's size: the scale's share is the base size
+    // times (scale - 1).
+    const double base = m_vertex->lexer()->defaultFont().pointSizeF();
+    const int points = m_zoom + int(std::lround(base * (m_uiScale - 1.0)));
+    for (ShaderStage stage : kStages)
+        editor(stage)->setZoom(points);
 }
 
 void EditorPanel::compileNow()

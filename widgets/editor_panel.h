@@ -56,8 +56,19 @@ public:
     std::optional<ProgramText> program() const { return m_document->program(); }
     bool isModified() const { return m_document->isModified(); }
 
-    // The live switch and its pause, and the document's state (ShaderDocument::saveState),
-    // in the settings' "editor" group.
+    // The editor's zoom, in steps of one point (View > Zoom In Editor, Ctrl++), kept with the
+    // settings, and the UI scale (1.0 to 2.5), which grows the text in proportion on top.
+    static constexpr int kMinZoom = -6, kMaxZoom = 20;
+    int zoom() const { return m_zoom; }
+    void setZoom(int steps);
+    void setUiScale(double scale);
+    // The text size of the editors in points, zoom and scale included.
+    double fontPointSize() const;
+    // Whether restoreState() brought back edits that were never saved (a crash, a kill).
+    bool restoredUnsavedEdits() const { return m_restoredUnsaved; }
+
+    // The live switch and its pause, the zoom, and the document's state
+    // (ShaderDocument::saveState), in the settings' "editor" group.
     void saveState(QSettings &settings) const;
     bool restoreState(QSettings &settings); // false when there was no document to restore
 
@@ -74,6 +85,7 @@ private:
     void showDiskChange(ShaderStage stage, ShaderDocument::DiskChange change, const QString &path);
     void jumpTo(int row);
     void updateTitles();
+    void applyZoom();
 
     ShaderDocument *m_document;
     QTabWidget *m_tabs;
@@ -89,6 +101,9 @@ private:
     std::vector<Diagnostic> m_shown;
     bool m_typing = false;  // the user's text is on its way to the document
     bool m_showing = false; // the document's text is on its way to an editor
+    int m_zoom = 0;
+    double m_uiScale = 1.0;
+    bool m_restoredUnsaved = false;
 };
 
 } // namespace lb

@@ -2,6 +2,8 @@
 
 #include "glsl_lexer.h"
 
+#include <Qsci/qscicommand.h>
+#include <Qsci/qscicommandset.h>
 #include <Qsci/qscistyle.h>
 #include <Qsci/qscistyledtext.h>
 
@@ -9,6 +11,7 @@
 #include <QRegularExpression>
 #include <QSet>
 
+#include <algorithm>
 #include <map>
 
 namespace lb {
@@ -52,6 +55,39 @@ ShaderEditor::ShaderEditor(QWidget *parent) : QsciScintilla(parent)
     indicatorDefine(SquiggleIndicator, kWarningSquiggle);
     setIndicatorForegroundColor(kWarningColour, kWarningSquiggle);
     setAnnotationDisplay(AnnotationBoxed);
+
+    // Zoom belongs to the window's View menu (Ctrl++, Ctrl+=, Ctrl+-, Ctrl+0), which zooms
+    // both stages and keeps the zoom. Scintilla's own keys would zoom one stage only, and it
+    // types the keys it does not bind (Ctrl+= wrote "=" into the shader).
+    for (QsciCommand::Command c : {QsciCommand::ZoomIn, QsciCommand::ZoomOut}) {
+        QsciCommand *command = standardCommands()->find(c);
+        command->setKey(0);
+        command->setAlternateKey(0);
+    }
+}
+
+void ShaderEditor::setZoom(int points)
+{
+    zoomTo(points);
+    setMarginWidth(0, "00000"); // measured at the new size, so big line numbers fit
+}
+
+void ShaderEditor::replaceText(const QString &text)
+{
+    if (text == this->text())
+        return;
+    if (length() == 0) { // nothing to bring back: a plain load
+        setText(text);
+        return;
+    }
+    // One undo step, so Ctrl+Z brings back what a preset, an example or a reset replaced.
+    int line = 0, index = 0;
+    getCursorPosition(&line, &index);
+    beginUndoAction();
+    selectAll();
+    replaceSelectedText(text);
+    endUndoAction();
+    setCursorPosition(std::min(line, std::max(lines() - 1, 0)), 0);
 }
 
 void ShaderEditor::clearDiagnostics()

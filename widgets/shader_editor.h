@@ -21,6 +21,11 @@ public:
     void clearDiagnostics();
     int markedLineCount() const { return m_markedLines; } // lines carrying a marker
     void goTo(int line, int column);                      // 1-based; column 0 = start of the line
+    // Shows `text` as one undoable step (Ctrl+Z brings the old text back), unlike setText(),
+    // which empties the undo history.
+    void replaceText(const QString &text);
+    // Points added to every font size (Scintilla's zoom), the line numbers' margin following.
+    void setZoom(int points);
 
 private:
     // Completion without QsciAPIs: its preparation runs on a thread that crashes when the
