@@ -136,6 +136,10 @@ const OptionSpec kOptions[] = {
     {"texture", "on|off", "Modulate ambient and diffuse by the checker texture."},
     {"show-light", "on|off", "Draw the light's marker."},
     {"screenshot", "FILE.png", "Open the window, save a screenshot once it has drawn, exit."},
+    {"presentation", "",
+     "Open the window in presentation mode: full screen, the presentation UI scale (F11)."},
+    {"ui-scale", "PERCENT",
+     "UI scale of the window (or of presentation mode with --presentation), 100 to 250; kept."},
     {"bench-frames", "N", "Draw N frames offscreen and print the frame rate as JSON."},
     {"bench-edits", "N", "Open the window, time N shader edits to the screen, print JSON, exit."},
     {"vertex", "FILE", "Vertex shader to draw with instead of the built-in one (with --fragment)."},
@@ -208,6 +212,9 @@ void parseInto(const QCommandLineParser &parser, CommandLine &cl)
         if (cl.saveScenePath.isEmpty())
             fail("save-scene", "needs a file name");
     }
+    cl.presentation = given("presentation");
+    if (given("ui-scale"))
+        cl.uiScalePercent = integer("ui-scale", value("ui-scale"), 100, 250);
     cl.check = given("check");
     if (cl.check && !cl.hasUserProgram())
         fail("check", "needs --vertex FILE and --fragment FILE");

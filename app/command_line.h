@@ -38,6 +38,8 @@ struct CommandLine
     // --vertex FILE --fragment FILE: the user's program instead of the built-in pair.
     QString vertexPath, fragmentPath;
     QString vertexSource, fragmentSource;
+    bool presentation = false;         // --presentation: the window full screen, presentation scale
+    std::optional<int> uiScalePercent; // --ui-scale PERCENT
     bool check = false; // --check: compile and link them, print diagnostics, exit 0 or 1
     int benchEdits = 0; // --bench-edits N (window: edit-to-pixels timing; --vertex/--fragment
                         // add a second pair to time)

@@ -106,6 +106,10 @@ int main(int argc, char **argv)
     if (cl.hasUserProgram() && !cl.programFromScene) // opened as File > Open Shaders would
         window.shaderDocument().openFiles({cl.vertexPath, cl.fragmentPath});
     window.show();
+    if (cl.presentation)
+        window.setPresentation(true);
+    if (cl.uiScalePercent)
+        window.setUiScale(*cl.uiScalePercent / 100.0);
 
     if (!cl.screenshotPath.isEmpty()) {
         // Grab once the viewport has drawn, the mesh is in and the window has settled, then

@@ -1,16 +1,22 @@
 #pragma once
-// The workbench window: the viewport in the centre, the Light and Material panels docked on
-// the left, Shading and Object on the right. Scene, window layout and docks are kept in
-// QSettings and come back at the next start.
+// The workbench window: the viewport in the centre, the panels docked on the left, the shader
+// editor on the right. It takes the screen's available area (never more) and arranges the
+// docks for that width (window_layout.h); presentation mode (F11) is full screen with its own
+// UI scale. Scene, window layout, docks, scales and zoom are kept in QSettings and come back
+// at the next start.
 
 #include "program_build.h"
 #include "scene_document.h"
 #include "shader_document.h"
+#include "window_layout.h"
 
 #include <QMainWindow>
 #include <QTimer>
 
-class QLabel;
+#include <vector>
+
+class QActionGroup;
+class QDockWidget;
 class QSettings;
 
 namespace lb {
@@ -24,6 +30,7 @@ class ObjectPanel;
 class ProbePanel;
 class SceneActions;
 class ShadingPanel;
+class StatusLine;
 class UniformPanel;
 class Viewport;
 
@@ -47,16 +54,44 @@ public:
     MeshActions *meshActions() const { return m_meshActions; }
     SceneActions *sceneActions() const { return m_sceneActions; }
     ProbePanel *probePanel() const { return m_probe; }
+    StatusLine *statusLine() const { return m_status; }
+    // The docks of the panels (Light, Material, Shading, Object, Uniforms, Probe) and the
+    // editor's.
+    const std::vector<QDockWidget *> &panelDocks() const { return m_panelDocks; }
+    QDockWidget *editorDock() const { return m_editorDock; }
+
+    // Takes `available` (a screen's available area): the window's geometry within it and the
+    // docks arranged for its width. The constructor calls it with the window's screen.
+    void fitToScreen(const QRect &available);
+    void arrangeDocks(DockLayout layout);
+    DockLayout dockLayout() const { return m_layout; }
+
+    // Presentation mode: full screen, the presentation UI scale, the view and the editor
+    // large; off brings back the window as it was.
+    void setPresentation(bool on);
+    bool isPresentation() const { return m_presentation; }
+    // The UI scale of the current mode (1.0 to 2.5), kept per mode in the settings.
+    void setUiScale(double scale);
+    double uiScale() const;
 
     void saveSettings();
 
 protected:
     void closeEvent(QCloseEvent *event) override;
+    void showEvent(QShowEvent *event) override;
+    void resizeEvent(QResizeEvent *event) override;
 
 private:
+    QDockWidget *addPanelDock(const QString &title, const QString &objectName, QWidget *panel);
     void buildMenus();
+    void addViewMenu(QMenu *view);
     void updateStatus();
+    void updateTitle();
     void showProgramUsage(const ProgramBuild &build);
+    void syncShadingWithProgram();
+    void resetEverything();
+    void applyScale();
+    void applyDockWidths();
 
     QSettings &m_settings;
     SceneDocument m_document;
@@ -72,7 +107,19 @@ private:
     MeshActions *m_meshActions;
     SceneActions *m_sceneActions;
     ProbePanel *m_probe;
-    QLabel *m_glLabel;
+    StatusLine *m_status;
+    std::vector<QDockWidget *> m_panelDocks;
+    QDockWidget *m_editorDock;
+    QString m_glInfo;
+    bool m_programReadsLight = true;
+    DockLayout m_layout = DockLayout::Wide;
+    bool m_widthsPending = false; // arranged before shown: the dock widths wait for show
+    bool m_presentation = false;
+    double m_scale = 1.0;                       // the normal window's UI scale
+    double m_presentationScale = 1.75;          // presentation mode's
+    QByteArray m_normalGeometry, m_normalState; // the window before presentation mode
+    QAction *m_presentationAction = nullptr;
+    QActionGroup *m_scaleGroup = nullptr;
     QTimer m_saveTimer; // saves the scene shortly after each change, so a kill loses little
 };
 

@@ -4,6 +4,7 @@
 #include "recent_files.h"
 #include "scene_document.h"
 #include "shader_document.h"
+#include "status_line.h"
 #include "viewport.h"
 
 #include <QApplication>
@@ -46,20 +47,22 @@ QList<QPair<QString, QString>> SceneActions::examples()
 
 void SceneActions::addToMenu(QMenu *file)
 {
-    QAction *open = file->addAction(tr("Open S&cene..."), this, &SceneActions::showOpenDialog);
-    open->setShortcut(QKeySequence(tr("Ctrl+Shift+O")));
+    // The scene is the document (its shaders inline): the conventional keys are its.
+    QAction *open = file->addAction(tr("&Open Scene..."), this, &SceneActions::showOpenDialog);
+    open->setShortcut(QKeySequence::Open);
     file->addMenu(m_recent);
     QMenu *examples = file->addMenu(tr("E&xamples"));
     for (const auto &[text, resource] : SceneActions::examples())
         examples->addAction(text, this, [this, resource = resource] { this->open(resource); });
-    QAction *save = file->addAction(tr("Save Sc&ene"), this, [this] {
+    QAction *save = file->addAction(tr("&Save Scene"), this, [this] {
         if (m_path.isEmpty())
             showSaveDialog();
         else
             this->save(m_path);
     });
-    save->setShortcut(QKeySequence(tr("Ctrl+Alt+S")));
-    file->addAction(tr("Save Scene As..."), this, &SceneActions::showSaveDialog);
+    save->setShortcut(QKeySequence::Save);
+    QAction *saveAs = file->addAction(tr("Save Scene &As..."), this, &SceneActions::showSaveDialog);
+    saveAs->setShortcut(QKeySequence(tr("Ctrl+Shift+S")));
     file->addSeparator();
     QAction *exportImage =
         file->addAction(tr("E&xport Image..."), this, &SceneActions::showExportDialog);
@@ -85,17 +88,18 @@ bool SceneActions::open(const QString &path)
         file.scene.object.meshPath.clear();
     m_document->set(file.scene);
     m_shaders->setProgram(file.program, file.scene.shading.shading == Shading::Gouraud);
-    setCurrentPath(example ? QString() : QFileInfo(path).absoluteFilePath());
+    const QString name = example ? path.section('/', -1) : QFileInfo(path).fileName();
+    setCurrentPath(example ? QString() : QFileInfo(path).absoluteFilePath(), name);
+    remember();
     if (!example)
         m_recent->add(QFileInfo(path).absoluteFilePath());
-    const QString name = example ? path.section('/', -1) : QFileInfo(path).fileName();
     if (!read.ignored.isEmpty())
         showMessage(QMessageBox::Information,
                     tr("%1 opened; %n field(s) could not be used and kept their defaults.", "",
                        int(read.ignored.size()))
                         .arg(name),
                     read.ignored.join('\n'));
-    m_window->statusBar()->showMessage(tr("Opened the scene %1").arg(name), 5000);
+    showStatusMessage(m_window, tr("Opened the scene %1").arg(name), 5000);
     emit sceneOpened(path);
     return true;
 }
@@ -108,9 +112,10 @@ QString SceneActions::save(const QString &path)
         showMessage(QMessageBox::Warning, tr("The scene was not saved."), error);
         return error;
     }
-    setCurrentPath(QFileInfo(path).absoluteFilePath());
+    setCurrentPath(QFileInfo(path).absoluteFilePath(), QFileInfo(path).fileName());
+    remember();
     m_recent->add(m_path);
-    m_window->statusBar()->showMessage(tr("Saved the scene to %1").arg(path), 5000);
+    showStatusMessage(m_window, tr("Saved the scene to %1").arg(path), 5000);
     return {};
 }
 
@@ -131,7 +136,7 @@ QString SceneActions::exportImage(const QString &path, QSize pixels)
     if (!error.isEmpty())
         showMessage(QMessageBox::Warning, tr("The image was not exported."), error);
     else
-        m_window->statusBar()->showMessage(tr("Exported %1").arg(path), 5000);
+        showStatusMessage(m_window, tr("Exported %1").arg(path), 5000);
     return error;
 }
 
@@ -142,7 +147,8 @@ void SceneActions::copyImage()
     if (image.isNull())
         return;
     QApplication::clipboard()->setImage(image);
-    m_window->statusBar()->showMessage(
+    showStatusMessage(
+        m_window,
         tr("Copied the view (%1 x %2) to the clipboard").arg(image.width()).arg(image.height()),
         5000);
 }
@@ -199,11 +205,28 @@ void SceneActions::showMessage(QMessageBox::Icon icon, const QString &text, cons
     m_messageBox->show();
 }
 
-void SceneActions::setCurrentPath(const QString &path)
+void SceneActions::setCurrentPath(const QString &path, const QString &name)
 {
     m_path = path;
-    m_window->setWindowTitle(
-        path.isEmpty() ? tr("lightbench") : tr("%1 - lightbench").arg(QFileInfo(path).fileName()));
+    m_name = name;
+}
+
+void SceneActions::remember()
+{
+    m_saved = SceneFile{m_document->scene(), m_shaders->program()};
+    emit documentChanged();
+}
+
+bool SceneActions::isModified() const
+{
+    const SceneFile now{m_document->scene(), m_shaders->program()};
+    const SceneFile saved = m_saved.value_or(SceneFile{Scene{}, std::nullopt});
+    // The program's text decides, not its name or 'edited' flag (a saved scene's program
+    // reads back under the file's name).
+    auto text = [](const std::optional<ProgramText> &p) {
+        return p ? std::make_pair(p->vertex, p->fragment) : std::make_pair(QString(), QString());
+    };
+    return !(now.scene == saved.scene) || text(now.program) != text(saved.program);
 }
 
 } // namespace lb

@@ -10,6 +10,8 @@
 #include <QObject>
 #include <QPointer>
 
+#include <optional>
+
 class QMainWindow;
 class QMenu;
 class QSettings;
@@ -36,6 +38,11 @@ public:
     // Writes the current scene and program; returns an empty string or the message shown.
     QString save(const QString &path);
     QString currentPath() const { return m_path; }
+    // The scene's name for the title: the file's, an example's, or empty (none opened).
+    QString documentName() const { return m_name; }
+    // Whether the scene or its program changed since it was opened or saved; with none
+    // opened, whether anything differs from the defaults.
+    bool isModified() const;
     // Renders the view at `pixels` and writes it (PNG unless the name says otherwise).
     QString exportImage(const QString &path, QSize pixels);
     void copyImage();
@@ -46,15 +53,18 @@ public:
     // The example scenes: (menu text, resource path).
     static QList<QPair<QString, QString>> examples();
 
+    void showSaveDialog();
+
 signals:
     void sceneOpened(const QString &path);
+    void documentChanged(); // opened, saved, or another name
 
 private:
     void showOpenDialog();
-    void showSaveDialog();
     void showExportDialog();
     void showMessage(QMessageBox::Icon icon, const QString &text, const QString &details);
-    void setCurrentPath(const QString &path);
+    void setCurrentPath(const QString &path, const QString &name);
+    void remember(); // what isModified() compares with
 
     QMainWindow *m_window;
     SceneDocument *m_document;
@@ -64,6 +74,8 @@ private:
     RecentFiles *m_recent;
     QPointer<QMessageBox> m_messageBox;
     QString m_path; // the scene file last opened or saved; empty for an example or none
+    QString m_name;
+    std::optional<SceneFile> m_saved;
 };
 
 } // namespace lb

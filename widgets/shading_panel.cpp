@@ -24,6 +24,7 @@ ShadingPanel::ShadingPanel(SceneDocument *document, QWidget *parent)
     connect(m_shading, &QComboBox::currentIndexChanged, this,
             [this](int i) { edit([&](Scene &s) { s.shading.shading = Shading(i); }); });
     form->addRow(tr("Shading"), m_shading);
+    m_shadingTip = m_shading->toolTip();
 
     m_specular = makeCombo({tr("Phong: (R\u00b7V)^n"), tr("Blinn-Phong: (N\u00b7H)^n")},
                            tr("R = reflect(-L, N), the mirrored light direction; "
@@ -102,6 +103,12 @@ ShadingPanel::ShadingPanel(SceneDocument *document, QWidget *parent)
                        s.compare = CompareSettings{};
                    });
     refreshNow();
+}
+
+void ShadingPanel::setShadingFixed(bool fixed, const QString &reason)
+{
+    m_shading->setEnabled(!fixed);
+    m_shading->setToolTip(fixed ? reason : m_shadingTip);
 }
 
 void ShadingPanel::refresh(const Scene &scene)

@@ -28,6 +28,10 @@ public:
     QComboBox *compareSpecularCombo() const { return m_compareSpecular; }
     QSlider *wipeSlider() const { return m_wipe; }
 
+    // When the program on screen does its own shading (an edited built-in Gouraud program
+    // stays Gouraud), the choice is greyed with `reason` as its tooltip; none: it is free.
+    void setShadingFixed(bool fixed, const QString &reason);
+
 protected:
     void refresh(const Scene &scene) override;
 
@@ -43,6 +47,7 @@ private:
     QComboBox *m_compareShading;
     QComboBox *m_compareSpecular;
     QSlider *m_wipe;
+    QString m_shadingTip;
 };
 
 } // namespace lb

@@ -66,6 +66,9 @@ public:
     // Gouraud/Phong choice; once edited it is the user's program and stays.
     void followShading(bool gouraud);
     bool showsBuiltIn() const;
+    // The built-in program the text started from (Gouraud: true), edited or not; none for a
+    // file, a scene's program or text handed over. An edited built-in keeps its shading.
+    std::optional<bool> builtInBase() const { return m_builtInGouraud; }
 
     ShaderOrigin origin() const; // `edited` also when there are unsaved edits now
 

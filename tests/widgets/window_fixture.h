@@ -17,6 +17,7 @@
 #include "scene_actions.h"
 #include "shader_editor.h"
 #include "shading_panel.h"
+#include "status_line.h"
 #include "uniform_panel.h"
 #include "viewport.h"
 

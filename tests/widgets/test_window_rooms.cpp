@@ -1,0 +1,373 @@
+// In front of a class: the window fits 1024x768 and 1280x720 screens, presentation mode scales
+// up, the editor zooms without typing, the probe's names are real text, the panels, status and
+// probe describe the program that draws, nothing is lost by a click, and the title, status
+// line and help say what is going on.
+#include "window_fixture.h"
+
+#include "help.h"
+
+#include <QDockWidget>
+#include <QMenuBar>
+#include <QPainter>
+#include <QProgressBar>
+#include <QScrollArea>
+#include <QScrollBar>
+
+using namespace lb;
+using namespace lb::test;
+
+Q_DECLARE_METATYPE(QRect)
+
+class TestWindowRooms : public WindowTest
+{
+    Q_OBJECT
+
+    // Every panel dock shown in turn: true when none needs a horizontal scrollbar.
+    QString docksNeedingSideways()
+    {
+        QStringList wide;
+        for (QDockWidget *dock : m_window->panelDocks()) {
+            dock->raise();
+            QTest::qWait(30);
+            auto *scroll = qobject_cast<QScrollArea *>(dock->widget());
+            if (scroll && scroll->horizontalScrollBar()->isVisible())
+                wide << QString("%1 (%2 px for %3)")
+                            .arg(dock->windowTitle())
+                            .arg(scroll->viewport()->width())
+                            .arg(scroll->widget()->minimumSizeHint().width());
+        }
+        return wide.join(", ");
+    }
+    double viewShare() const
+    {
+        return double(m_window->viewport()->width()) / double(m_window->width());
+    }
+    void settle()
+    {
+        for (int i = 0; i < 5; ++i) {
+            QCoreApplication::processEvents();
+            QTest::qWait(40);
+        }
+    }
+
+private slots:
+    void fitsTheScreen_data()
+    {
+        QTest::addColumn<QRect>("available");
+        // Screens less a 24-pixel panel, as a desktop's available area is.
+        QTest::newRow("1024x768") << QRect(0, 0, 1024, 744);
+        QTest::newRow("1280x720") << QRect(0, 0, 1280, 696);
+        QTest::newRow("1366x768") << QRect(0, 0, 1366, 744);
+        QTest::newRow("1920x1080") << QRect(0, 0, 1920, 1056);
+    }
+    void fitsTheScreen()
+    {
+        QFETCH(QRect, available);
+        m_window->fitToScreen(available);
+        settle();
+        QVERIFY2(available.contains(m_window->frameGeometry()),
+                 qPrintable(QString("window %1x%2 at %3,%4")
+                                .arg(m_window->frameGeometry().width())
+                                .arg(m_window->frameGeometry().height())
+                                .arg(m_window->x())
+                                .arg(m_window->y())));
+        const QString sideways = docksNeedingSideways();
+        QVERIFY2(sideways.isEmpty(), qPrintable("horizontal scrollbar in " + sideways));
+        qInfo("view width share at %dx%d: %.2f (panels %d px, editor %d px)", available.width(),
+              available.height(), viewShare(), m_window->panelDocks()[0]->width(),
+              m_window->editorDock()->width());
+        QVERIFY2(viewShare() >= 0.45, qPrintable(QString::number(viewShare())));
+    }
+
+    void firstWindowTakesTheScreensAvailableArea()
+    {
+        const QRect available = m_window->screen()->availableGeometry();
+        QVERIFY(available.contains(m_window->frameGeometry()));
+        QCOMPARE(initialGeometry(QRect(0, 0, 1024, 744)), QRect(0, 0, 1024, 744));
+        QCOMPARE(initialGeometry(QRect(0, 0, 2560, 1440)).size(), QSize(1600, 1000));
+    }
+
+    void presentationAt200PercentFitsAProjector()
+    {
+        const double basePoints = QApplication::font().pointSizeF(); // at 100%
+        const double before = m_window->editorPanel()->fontPointSize();
+        m_window->setPresentation(true);
+        settle();
+        QVERIFY(m_window->isPresentation());
+        QVERIFY(m_window->isFullScreen());
+        m_window->setUiScale(2.0);
+        settle();
+        QCOMPARE(QApplication::font().pointSizeF(), 2.0 * basePoints);
+        QVERIFY(m_window->editorPanel()->fontPointSize() > before * 1.8);
+        // A 1280x720 projector: the presentation layout at 200% fits it.
+        m_window->showNormal();
+        m_window->setGeometry(0, 0, 1280, 720);
+        m_window->arrangeDocks(DockLayout::Presentation);
+        settle();
+        QVERIFY2(m_window->minimumSizeHint().width() <= 1280 &&
+                     m_window->minimumSizeHint().height() <= 720,
+                 qPrintable(QString("minimum %1x%2")
+                                .arg(m_window->minimumSizeHint().width())
+                                .arg(m_window->minimumSizeHint().height())));
+        QCOMPARE(m_window->size(), QSize(1280, 720));
+        qInfo("presentation at 200%% on 1280x720: view %.2f, editor %d px, panels %d px",
+              viewShare(), m_window->editorDock()->width(), m_window->panelDocks()[0]->width());
+        QVERIFY(viewShare() >= 0.5);
+        QVERIFY(m_window->editorDock()->width() >= 0.4 * 1280);
+        QVERIFY(m_window->editorDock()->height() >= 0.5 * 720);
+        const QString sideways = docksNeedingSideways();
+        QVERIFY2(sideways.isEmpty(), qPrintable("horizontal scrollbar in " + sideways));
+        // The scale is kept per mode; leaving presentation brings back the window's own.
+        m_window->setPresentation(false);
+        settle();
+        QVERIFY(!m_window->isFullScreen());
+        QCOMPARE(m_window->uiScale(), 1.0);
+        QCOMPARE(m_settings->value("ui/presentationScale").toDouble(), 2.0);
+    }
+
+    void ctrlPlusZoomsTheEditorAndTypesNothing()
+    {
+        EditorPanel *e = m_window->editorPanel();
+        ShaderEditor *fragment = e->editor(ShaderStage::Fragment);
+        e->findChild<QTabWidget *>()->setCurrentWidget(fragment);
+        fragment->setFocus();
+        QTRY_VERIFY(fragment->hasFocus());
+        const QString text = fragment->text();
+        const double points = e->fontPointSize();
+        QTest::keyClick(fragment, Qt::Key_Plus, Qt::ControlModifier);
+        QCOMPARE(e->zoom(), 1);
+        QTest::keyClick(fragment, Qt::Key_Equal, Qt::ControlModifier);
+        QCOMPARE(e->zoom(), 2);
+        QVERIFY(e->fontPointSize() >= points + 2);
+        QCOMPARE(fragment->text(), text); // no "+" or "=" typed into the shader
+        QTest::keyClick(fragment, Qt::Key_Minus, Qt::ControlModifier);
+        QCOMPARE(e->zoom(), 1);
+        QCOMPARE(fragment->text(), text);
+        // Both stages zoom together, and the zoom survives a restart.
+        QCOMPARE(e->editor(ShaderStage::Vertex)->SendScintilla(QsciScintilla::SCI_GETZOOM),
+                 fragment->SendScintilla(QsciScintilla::SCI_GETZOOM));
+        m_window->saveSettings();
+        m_window.reset();
+        m_window = std::make_unique<MainWindow>(*m_settings);
+        QCOMPARE(m_window->editorPanel()->zoom(), 1);
+        m_window->show();
+        m_window->activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(m_window.get()));
+        QTest::keyClick(m_window.get(), Qt::Key_0, Qt::ControlModifier);
+        QCOMPARE(m_window->editorPanel()->zoom(), 0);
+    }
+
+    // The names at the arrows' tips are text painted by the raster engine: what the window
+    // shows over the GL picture equals the GL picture with the same names painted by QPainter
+    // on a QImage. Text drawn inside paintGL on Mesa (the old way) fails this.
+    void probeNamesAreCrispText()
+    {
+        m_window->document().edit([](Scene &s) { s.showLight = false; });
+        frame();
+        Viewport *v = m_window->viewport();
+        QTest::mouseClick(v, Qt::LeftButton, Qt::ControlModifier, v->rect().center());
+        QTRY_VERIFY(m_window->probePanel()->isActive());
+        ProbeLabels *labels = v->probeLabels();
+        QVERIFY(labels->isVisible());
+        QCOMPARE(int(labels->labels().size()), 4); // N, V, L, H
+        const QImage gl = frame();                 // the GL picture alone
+        const QImage shown = v->grab().toImage().convertToFormat(QImage::Format_RGB32);
+        QImage expected = gl.convertToFormat(QImage::Format_RGB32);
+        {
+            QPainter painter(&expected);
+            paintProbeLabels(painter, labels->placed(gl.size()), labels->pixelSize());
+        }
+        QCOMPARE(shown.size(), expected.size());
+        int changed = 0;
+        for (int y = 0; y < gl.height(); ++y)
+            for (int x = 0; x < gl.width(); ++x)
+                changed +=
+                    expected.pixel(x, y) != gl.convertToFormat(QImage::Format_RGB32).pixel(x, y);
+        QVERIFY2(changed > 200, "the names must cover pixels"); // four letters, outlined
+        const int difference = imageDifference(shown, expected);
+        if (difference > 8)
+            shown.save(QString(LB_TEST_OUTPUT) + "/probe_names_shown.png");
+        QVERIFY2(difference <= 8, qPrintable(QString("largest difference %1").arg(difference)));
+        QVERIFY(labels->pixelSize() >= 16);
+        // Export Image paints them too, scaled with the frame.
+        const QImage exported = v->renderImage(gl.size() * 2);
+        QVERIFY(imageDifference(exported, v->renderImage(gl.size() * 2)) == 0);
+        m_window->probePanel()->clear();
+        QVERIFY(!labels->isVisible());
+        QVERIFY(imageDifference(v->renderImage(gl.size() * 2), exported) > 100);
+    }
+
+    // Reset Everything with an edited built-in Gouraud program: the panel, the program, the
+    // status line and the probe's reference all say Phong, and Ctrl+Z in the editor brings
+    // the edited text back.
+    void panelsStatusAndProbeAgreeAfterResetEverything()
+    {
+        EditorPanel *e = m_window->editorPanel();
+        ShadingPanel *shading = m_window->shadingPanel();
+        shading->shadingCombo()->setCurrentIndex(int(Shading::Gouraud));
+        QTRY_VERIFY(e->source(ShaderStage::Vertex).contains("fAmbientDiffuse"));
+        ShaderEditor *vertex = e->editor(ShaderStage::Vertex);
+        const QString edited = vertex->text() + "\n// my note\n";
+        QVERIFY(buildAfter([&] { vertex->setText(edited); }));
+        QVERIFY(!m_window->shaderDocument().showsBuiltIn());
+        // The edited Gouraud program keeps its shading: the choice is greyed and G refused.
+        QVERIFY(!shading->shadingCombo()->isEnabled());
+        QVERIFY(shading->shadingCombo()->toolTip().contains("edited"));
+        QTest::keyClick(m_window.get(), Qt::Key_G);
+        QCOMPARE(scene().shading.shading, Shading::Gouraud);
+
+        QVERIFY(buildAfter([&] {
+            m_window->findChild<QMenuBar *>(); // the menu's action, as a user picks it
+            for (QAction *a : m_window->menuBar()->actions().first()->menu()->actions())
+                if (a->text().contains("Reset"))
+                    a->trigger();
+        }));
+        QCOMPARE(scene().shading.shading, Shading::Phong);
+        QVERIFY(m_window->shaderDocument().showsBuiltIn());
+        QVERIFY(e->source(ShaderStage::Fragment).contains("uSpecularModel")); // built-in Phong
+        QCOMPARE(shading->shadingCombo()->currentIndex(), int(Shading::Phong));
+        QVERIFY(shading->shadingCombo()->isEnabled());
+        const QString status = m_window->statusLine()->programLabel()->text();
+        QVERIFY2(status.contains("Phong shading") && !status.contains("Gouraud"),
+                 qPrintable(status));
+        QVERIFY(m_window->statusLine()->message().contains("Ctrl+Z"));
+
+        // The probe's reference is the program's: Phong, and the GPU agrees with it.
+        frame();
+        Viewport *v = m_window->viewport();
+        QTest::mouseClick(v, Qt::LeftButton, Qt::ControlModifier, v->rect().center());
+        frame();
+        ProbePanel *probe = m_window->probePanel();
+        QTRY_VERIFY(probe->gpuColour().has_value());
+        QVERIFY(probe->textLabel()->text().contains("phong shading"));
+        const glm::vec3 ref = probe->result().reference * 255.0f;
+        for (int c = 0; c < 3; ++c)
+            QVERIFY2(std::abs((*probe->gpuColour())[c] - int(std::lround(ref[c]))) <= 2,
+                     qPrintable(probe->textLabel()->text()));
+
+        // Ctrl+Z in the vertex editor brings the edited text back.
+        e->findChild<QTabWidget *>()->setCurrentWidget(vertex);
+        vertex->setFocus();
+        QTest::keyClick(vertex, Qt::Key_Z, Qt::ControlModifier);
+        QCOMPARE(vertex->text(), edited);
+    }
+
+    void ctrlZAfterAPresetBringsTheTextBack()
+    {
+        EditorPanel *e = m_window->editorPanel();
+        ShaderEditor *fragment = e->editor(ShaderStage::Fragment);
+        e->findChild<QTabWidget *>()->setCurrentWidget(fragment);
+        fragment->setFocus();
+        QTRY_VERIFY(fragment->hasFocus());
+        QTest::keyClicks(fragment, "// typed in class");
+        const QString typed = fragment->text();
+        QVERIFY(typed.contains("typed in class"));
+        for (QAction *a : e->presetsMenu()->actions())
+            if (a->text().startsWith("Toon"))
+                a->trigger();
+        QVERIFY(!fragment->text().contains("typed in class"));
+        fragment->setFocus();
+        QTest::keyClick(fragment, Qt::Key_Z, Qt::ControlModifier);
+        QCOMPARE(fragment->text(), typed);
+        // And the example scenes keep it the same way.
+        QVERIFY(m_window->sceneActions()->open(":/examples/toon.json"));
+        QTest::keyClick(fragment, Qt::Key_Z, Qt::ControlModifier);
+        QVERIFY(fragment->text().startsWith(typed.left(40)) || fragment->text() != typed);
+    }
+
+    void titleNamesTheSceneAndItsUnsavedEdits()
+    {
+        QCOMPARE(m_window->windowTitle(), QString("untitled[*] - lightbench"));
+        QVERIFY(!m_window->isWindowModified());
+        m_window->materialPanel()->shininessBox()->setValue(12);
+        QVERIFY(m_window->isWindowModified());
+        const QString path = m_dir.filePath("lecture 3.json");
+        QCOMPARE(m_window->sceneActions()->save(path), QString());
+        QCOMPARE(m_window->windowTitle(), QString("lecture 3.json[*] - lightbench"));
+        QVERIFY(!m_window->isWindowModified());
+        m_window->materialPanel()->shininessBox()->setValue(40);
+        QVERIFY(m_window->isWindowModified());
+        // Ctrl+S saves the scene (the document), with its program inline.
+        QTest::keyClick(m_window.get(), Qt::Key_S, Qt::ControlModifier);
+        QTRY_VERIFY(!m_window->isWindowModified());
+        QVERIFY(readSceneFile(path).file->scene.material.shininess == 40.0f);
+        // An edit of the shader is an unsaved edit of the scene too.
+        ShaderEditor *fragment = m_window->editorPanel()->editor(ShaderStage::Fragment);
+        fragment->setText(fragment->text() + "\n// note\n");
+        QTRY_VERIFY(m_window->isWindowModified());
+    }
+
+    void crashRecoveryIsAnnounced()
+    {
+        ShaderEditor *fragment = m_window->editorPanel()->editor(ShaderStage::Fragment);
+        fragment->setText(fragment->text() + "\n// unsaved\n");
+        m_window->saveSettings(); // what the autosave does before a kill
+        m_window.reset();
+        m_window = std::make_unique<MainWindow>(*m_settings);
+        QVERIFY2(m_window->statusLine()->message().contains("restored"),
+                 qPrintable(m_window->statusLine()->message()));
+    }
+
+    void statusLineKeepsItsPlaces()
+    {
+        m_window->resize(1024, 700);
+        settle();
+        StatusLine *line = m_window->statusLine();
+        const QString longMessage = QString("a message that goes on ").repeated(20);
+        line->showMessage(longMessage);
+        settle();
+        QVERIFY(line->messageLabel()->isElided());
+        QCOMPARE(line->messageLabel()->toolTip(), longMessage);
+        // Neither label runs into the next one.
+        const QRect message = line->messageLabel()->geometry();
+        QVERIFY(message.right() < line->meshLabel()->geometry().left());
+        QVERIFY(line->programLabel()->geometry().right() < message.left());
+        // The Cancel button stays put while the progress text changes.
+        LoadProgress *progress = m_window->meshActions()->progress();
+        progress->start("a_mesh_with_a_rather_long_name.ply");
+        progress->show();
+        settle();
+        const int x = progress->cancelButton()->mapTo(m_window.get(), QPoint()).x();
+        progress->setProgress(0.5, "reading a very long stage name that keeps going on and on");
+        settle();
+        QCOMPARE(progress->cancelButton()->mapTo(m_window.get(), QPoint()).x(), x);
+        progress->stop();
+    }
+
+    void helpListsEveryShortcutOnce()
+    {
+        const QString html = shortcutsHtml(m_window->menuBar());
+        for (const char *words : {"Ctrl+S", "Ctrl+O", "F11", "Ctrl+Enter", "Zoom In Editor",
+                                  "Ctrl+Shift+R", "Ctrl+click", "Ctrl+Z"})
+            QVERIFY2(html.contains(words), words);
+        // No key is given to two actions.
+        QMap<QString, QString> owner;
+        const QList<QAction *> actions = m_window->findChildren<QAction *>();
+        for (QAction *a : actions)
+            for (const QKeySequence &k : a->shortcuts()) {
+                const QString key = k.toString();
+                QVERIFY2(!owner.contains(key) || owner[key] == a->text(),
+                         qPrintable(key + ": " + owner[key] + " and " + a->text()));
+                owner[key] = a->text();
+            }
+    }
+
+    // The slides' shader hard-codes its light: no marker at the panel's position.
+    void lightMarkerFollowsTheProgramsLight()
+    {
+        EditorPanel *e = m_window->editorPanel();
+        QVERIFY(buildAfter([&] { e->loadPreset(presets()[3]); })); // slides' Phong, const light
+        const QImage withMarker = frame();
+        m_window->document().edit([](Scene &s) { s.showLight = false; });
+        QVERIFY(imageDifference(frame(), withMarker) == 0);
+        QVERIFY(m_window->statusLine()->programLabel()->text().contains("marker hidden"));
+        // The built-in program reads the panel's light: its marker is drawn.
+        QVERIFY(buildAfter([&] { e->loadPreset(presets()[0]); }));
+        const QImage without = frame();
+        m_window->document().edit([](Scene &s) { s.showLight = true; });
+        QVERIFY(imageDifference(frame(), without) > 50);
+    }
+};
+
+LB_WINDOW_TEST_MAIN(TestWindowRooms)
+#include "test_window_rooms.moc"
