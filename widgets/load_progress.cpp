@@ -2,6 +2,7 @@
 
 #include "status_line.h"
 
+#include <QEvent>
 #include <QHBoxLayout>
 #include <QProgressBar>
 #include <QPushButton>
@@ -13,11 +14,10 @@ LoadProgress::LoadProgress(QWidget *parent) : QWidget(parent)
     auto *row = new QHBoxLayout(this);
     row->setContentsMargins(0, 0, 0, 0);
     m_label = new ElidedLabel(this);
-    m_label->setFixedWidth(m_label->fontMetrics().averageCharWidth() * 28);
     m_bar = new QProgressBar(this);
     m_bar->setRange(0, 1000);
     m_bar->setTextVisible(false);
-    m_bar->setFixedWidth(160);
+    sizeToFont();
     m_cancel = new QPushButton(tr("Cancel"), this);
     m_cancel->setToolTip(tr("Stop loading: the import helper is stopped, the current mesh stays"));
     row->addWidget(m_label);
@@ -28,6 +28,21 @@ LoadProgress::LoadProgress(QWidget *parent) : QWidget(parent)
     m_showTimer.setInterval(kShowAfterMs);
     connect(&m_showTimer, &QTimer::timeout, this, &QWidget::show);
     hide();
+}
+
+void LoadProgress::sizeToFont()
+{
+    // Fixed widths in characters: they grow with the UI scale and never with the text.
+    const int character = fontMetrics().averageCharWidth();
+    m_label->setFixedWidth(character * 28);
+    m_bar->setFixedWidth(character * 18);
+}
+
+void LoadProgress::changeEvent(QEvent *event)
+{
+    QWidget::changeEvent(event);
+    if (event->type() == QEvent::FontChange)
+        sizeToFont();
 }
 
 void LoadProgress::start(const QString &name)

@@ -29,7 +29,11 @@ public:
 signals:
     void cancelRequested();
 
+protected:
+    void changeEvent(QEvent *event) override; // the UI scale's font: widths follow
+
 private:
+    void sizeToFont();
     ElidedLabel *m_label;
     QProgressBar *m_bar;
     QPushButton *m_cancel;

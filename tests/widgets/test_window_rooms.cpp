@@ -4,6 +4,7 @@
 // line and help say what is going on.
 #include "window_fixture.h"
 
+#include "compare.h"
 #include "help.h"
 
 #include <QDockWidget>
@@ -123,6 +124,55 @@ private slots:
         QVERIFY(!m_window->isFullScreen());
         QCOMPARE(m_window->uiScale(), 1.0);
         QCOMPARE(m_settings->value("ui/presentationScale").toDouble(), 2.0);
+    }
+
+    // Every example frames its object in a view of the size a 1024x768 screen leaves (each
+    // half of a side-by-side view too): no object pixel on a view's border, at any turn.
+    void examplesFrameTheirObjects()
+    {
+        const QSize view(470, 620);
+        const QRgb background = qRgb(41, 43, 48); // the renderer's clear colour
+        auto isBackground = [&](QRgb p) {
+            return std::abs(qRed(p) - qRed(background)) <= 3 &&
+                   std::abs(qGreen(p) - qGreen(background)) <= 3 &&
+                   std::abs(qBlue(p) - qBlue(background)) <= 3;
+        };
+        for (const auto &[name, resource] : SceneActions::examples()) {
+            QVERIFY(m_window->sceneActions()->open(resource));
+            for (float turn : {0.0f, 45.0f, 90.0f, 135.0f}) {
+                m_window->document().edit([&](Scene &s) {
+                    s.showLight = false;
+                    s.object.showNormals = false;
+                    s.object.rotationDegrees.y += turn;
+                });
+                const QImage image = m_window->viewport()->renderImage(view);
+                QVERIFY(!image.isNull());
+                const bool halves = scene().compare.mode == CompareMode::SideBySide;
+                QList<QRect> views{QRect(QPoint(), view)};
+                if (halves)
+                    views = {viewRect(scene(), view, false), viewRect(scene(), view, true)};
+                // The wipe's line crosses the top and bottom rows: not the object.
+                const int divider =
+                    scene().compare.mode == CompareMode::Wipe ? dividerColumn(scene(), view) : -100;
+                for (const QRect &r : views) {
+                    const QRect inner = r.adjusted(2, 1, -2, -1); // clear of the divider
+                    int touching = 0;
+                    for (int x = inner.left(); x <= inner.right(); ++x)
+                        if (std::abs(x - divider) > 2)
+                            touching += !isBackground(image.pixel(x, inner.top())) +
+                                        !isBackground(image.pixel(x, inner.bottom()));
+                    for (int y = inner.top(); y <= inner.bottom(); ++y)
+                        touching += !isBackground(image.pixel(inner.left(), y)) +
+                                    !isBackground(image.pixel(inner.right(), y));
+                    if (touching)
+                        image.save(QString(LB_TEST_OUTPUT) + "/example_framing.png");
+                    QVERIFY2(touching == 0, qPrintable(QString("%1 turned %2: %3 border pixels")
+                                                           .arg(name)
+                                                           .arg(turn)
+                                                           .arg(touching)));
+                }
+            }
+        }
     }
 
     void ctrlPlusZoomsTheEditorAndTypesNothing()
