@@ -130,10 +130,10 @@ MainWindow::MainWindow(QSettings &settings, QWidget *parent)
     const QScreen *screen = this->screen() ? this->screen() : QGuiApplication::primaryScreen();
     const QRect available = screen ? screen->availableGeometry() : QRect(0, 0, 1280, 720);
     fitToScreen(available);
-    if (restoreGeometry(m_settings.value(kGeometryKey).toByteArray()) &&
-        !available.contains(frameGeometry()) && !isMaximized())
-        setGeometry(initialGeometry(available));
-    if (restoreState(m_settings.value(kStateKey).toByteArray(), kStateVersion))
+    const bool placed = restoreGeometry(m_settings.value(kGeometryKey).toByteArray());
+    if (placed && !isMaximized() && !available.contains(frameGeometry()))
+        fitToScreen(available); // kept on a bigger screen: this one's size and layout
+    else if (restoreState(m_settings.value(kStateKey).toByteArray(), kStateVersion))
         m_widthsPending = false; // the user's own dock sizes
 
     m_saveTimer.setSingleShot(true);
@@ -526,6 +526,7 @@ void MainWindow::updateStatus()
     else if (on == 1 && first.enabled)
         light = (first.position.w == 0.0f ? tr("directional light") : tr("point light")) +
                 tr(" in the %1 frame").arg(toName(first.frame));
+    m_viewport->setProgramName(m_editor->programName()); // side A of a compare view
     QString program = tr("Program: %1").arg(m_editor->programName());
     if (m_shaders.showsBuiltIn()) // the Shading panel's specular choice applies
         program += s.shading.specular == SpecularModel::Blinn

@@ -120,22 +120,30 @@ QString Viewport::compareText() const
         return {};
     case CompareMode::SideBySide:
     case CompareMode::Wipe:
-        return tr("A (left): the program on screen  |  %1 (right)").arg(b);
+        return tr("A (left): %1  |  %2 (right)")
+            .arg(m_programName.isEmpty() ? tr("the program on screen") : m_programName, b);
     case CompareMode::Difference: {
         const DifferenceStats &d = m_renderer.difference();
         if (!d.valid)
             return tr("|A - B|: not drawn yet");
-        return tr("|A - B| against %1: largest %2/255 at (%3, %4), %5% of pixels differ; "
+        return tr("|A - B|, A: %7, %1: largest %2/255 at (%3, %4), %5% of pixels differ; "
                   "scale 0 (black) to %6/255 (white)")
             .arg(b)
             .arg(d.largest)
             .arg(d.at.x())
             .arg(d.at.y())
             .arg(d.differing * 100.0, 0, 'f', 1)
-            .arg(int(std::lround(kDifferenceScale * 255.0f)));
+            .arg(int(std::lround(kDifferenceScale * 255.0f)))
+            .arg(m_programName.isEmpty() ? tr("the program on screen") : m_programName);
     }
     }
     return {};
+}
+
+void Viewport::setProgramName(const QString &name)
+{
+    m_programName = name;
+    updateCompareLabel();
 }
 
 void Viewport::updateCompareLabel()

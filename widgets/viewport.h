@@ -44,6 +44,8 @@ public:
     // What the compare view shows, in words (sides, or the largest difference); empty when
     // compare is off.
     QString compareText() const;
+    // The name of the program on screen, for side A's words ("Toon (edited)").
+    void setProgramName(const QString &name);
 
     // Builds the user's program (now, or once the context exists) and reports it through
     // programBuilt(). When it fails, the last good program keeps drawing under a banner.
@@ -79,6 +81,7 @@ private:
     SceneDocument *m_document;
     Renderer m_renderer;
     QString m_error;
+    QString m_programName;
     QLabel *m_banner;
     QLabel *m_compareLabel;
     bool m_draggingWipe = false;

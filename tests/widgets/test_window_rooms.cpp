@@ -43,6 +43,15 @@ class TestWindowRooms : public WindowTest
     {
         return double(m_window->viewport()->width()) / double(m_window->width());
     }
+    // The stage's tab shown and its editor given the keyboard, as a click would.
+    ShaderEditor *focusedEditor(ShaderStage stage)
+    {
+        ShaderEditor *editor = m_window->editorPanel()->editor(stage);
+        m_window->editorPanel()->findChild<QTabWidget *>()->setCurrentWidget(editor);
+        editor->setFocus();
+        QTest::qWaitFor([&] { return editor->hasFocus(); }, 2000);
+        return editor;
+    }
     void settle()
     {
         for (int i = 0; i < 5; ++i) {
@@ -178,10 +187,8 @@ private slots:
     void ctrlPlusZoomsTheEditorAndTypesNothing()
     {
         EditorPanel *e = m_window->editorPanel();
-        ShaderEditor *fragment = e->editor(ShaderStage::Fragment);
-        e->findChild<QTabWidget *>()->setCurrentWidget(fragment);
-        fragment->setFocus();
-        QTRY_VERIFY(fragment->hasFocus());
+        ShaderEditor *fragment = focusedEditor(ShaderStage::Fragment);
+        QVERIFY(fragment->hasFocus());
         const QString text = fragment->text();
         const double points = e->fontPointSize();
         QTest::keyClick(fragment, Qt::Key_Plus, Qt::ControlModifier);
@@ -296,19 +303,15 @@ private slots:
                      qPrintable(probe->textLabel()->text()));
 
         // Ctrl+Z in the vertex editor brings the edited text back.
-        e->findChild<QTabWidget *>()->setCurrentWidget(vertex);
-        vertex->setFocus();
-        QTest::keyClick(vertex, Qt::Key_Z, Qt::ControlModifier);
+        QTest::keyClick(focusedEditor(ShaderStage::Vertex), Qt::Key_Z, Qt::ControlModifier);
         QCOMPARE(vertex->text(), edited);
     }
 
     void ctrlZAfterAPresetBringsTheTextBack()
     {
         EditorPanel *e = m_window->editorPanel();
-        ShaderEditor *fragment = e->editor(ShaderStage::Fragment);
-        e->findChild<QTabWidget *>()->setCurrentWidget(fragment);
-        fragment->setFocus();
-        QTRY_VERIFY(fragment->hasFocus());
+        ShaderEditor *fragment = focusedEditor(ShaderStage::Fragment);
+        QVERIFY(fragment->hasFocus());
         QTest::keyClicks(fragment, "// typed in class");
         const QString typed = fragment->text();
         QVERIFY(typed.contains("typed in class"));

@@ -97,6 +97,7 @@ private slots:
         expectNewImage([&] { p->compareModeCombo()->setCurrentIndex(1); }, "side by side");
         QCOMPARE(scene().compare.mode, CompareMode::SideBySide);
         QVERIFY(m_window->viewport()->compareText().contains("B: built-in Gouraud"));
+        QVERIFY(m_window->viewport()->compareText().contains("A (left): Built-in: Phong"));
         expectNewImage([&] { p->compareModeCombo()->setCurrentIndex(3); }, "difference");
         frame();
         QVERIFY2(m_window->viewport()->compareText().contains("largest"),
