@@ -477,21 +477,28 @@ void MainWindow::resetEverything()
 
 void MainWindow::syncShadingWithProgram()
 {
-    // An edited built-in program keeps the shading it was written for: the panel, the probe's
-    // reference and the status line say so instead of a choice it does not follow.
-    const std::optional<bool> base = m_shaders.builtInBase();
-    if (!base || m_shaders.showsBuiltIn()) {
+    // A program whose text fixes its model (an edited built-in keeps the shading it was
+    // written for, the slides' shaders theirs and N.H): the scene takes that model, so the
+    // panel, the probe's reference and the status line describe what draws, and the
+    // shading choice is greyed with the reason.
+    const ShaderDocument::FixedModel fixed = m_shaders.fixedModel();
+    if (fixed.gouraud || fixed.blinn)
+        m_document.edit([&](Scene &s) {
+            if (fixed.gouraud)
+                s.shading.shading = *fixed.gouraud ? Shading::Gouraud : Shading::Phong;
+            if (fixed.blinn)
+                s.shading.specular = *fixed.blinn ? SpecularModel::Blinn : SpecularModel::Phong;
+        });
+    if (!fixed.gouraud) {
         m_shading->setShadingFixed(false, {});
         return;
     }
-    const Shading drawn = *base ? Shading::Gouraud : Shading::Phong;
-    if (m_document.scene().shading.shading != drawn)
-        m_document.edit([drawn](Scene &s) { s.shading.shading = drawn; });
+    const Shading drawn = *fixed.gouraud ? Shading::Gouraud : Shading::Phong;
     m_shading->setShadingFixed(
-        true,
-        tr("The editor holds the built-in %1 program, edited: it shades %2. Load a "
-           "preset or Reset Everything to switch shading.")
-            .arg(toName(drawn), drawn == Shading::Gouraud ? tr("per vertex") : tr("per fragment")));
+        true, tr("The program in the editor (%1) shades %2 (%3) whatever this says. Load a "
+                 "preset or Reset Everything to switch shading.")
+                  .arg(m_editor->programName(), toName(drawn),
+                       drawn == Shading::Gouraud ? tr("per vertex") : tr("per fragment")));
 }
 
 void MainWindow::showProgramUsage(const ProgramBuild &build)

@@ -24,11 +24,15 @@ QString Preset::fragmentSource() const
 const std::vector<Preset> &presets()
 {
     static const std::vector<Preset> list{
-        {"Built-in: Phong shading (per fragment)", ":/shaders/phong"},
-        {"Built-in: Gouraud shading (per vertex)", ":/shaders/gouraud"},
-        {"Slides: Gouraud, WebGL 1 as printed", ":/shaders/presets/slides_gouraud"},
-        {"Slides: Phong shading, WebGL 1 as printed", ":/shaders/presets/slides_phong"},
-        {"Toon (the exercise's \"like Zelda\"), GLSL 3.30", ":/shaders/presets/toon"},
+        // The built-in programs read their specular term from uSpecularModel; the slides'
+        // compute N.H (Blinn-Phong).
+        {"Built-in: Phong shading (per fragment)", ":/shaders/phong", false, std::nullopt},
+        {"Built-in: Gouraud shading (per vertex)", ":/shaders/gouraud", true, std::nullopt},
+        {"Slides: Gouraud, WebGL 1 as printed", ":/shaders/presets/slides_gouraud", true, true},
+        {"Slides: Phong shading, WebGL 1 as printed", ":/shaders/presets/slides_phong", false,
+         true},
+        {"Toon (the exercise's \"like Zelda\"), GLSL 3.30", ":/shaders/presets/toon", std::nullopt,
+         std::nullopt},
     };
     return list;
 }
@@ -36,6 +40,14 @@ const std::vector<Preset> &presets()
 const Preset &builtInPreset(bool gouraud)
 {
     return presets()[gouraud ? 1 : 0];
+}
+
+const Preset *presetNamed(const QString &name)
+{
+    for (const Preset &p : presets())
+        if (p.name == name)
+            return &p;
+    return nullptr;
 }
 
 } // namespace lb

@@ -4,6 +4,7 @@
 
 #include <QString>
 
+#include <optional>
 #include <vector>
 
 namespace lb {
@@ -12,6 +13,11 @@ struct Preset
 {
     QString name;     // as the menu shows it
     QString resource; // ":/shaders/NAME" without the .vert/.frag suffix
+    // The course model the program computes, where its text fixes it: Gouraud (true) or
+    // Phong shading, Blinn-Phong (true) or Phong specular; none where it follows a uniform
+    // or is a model of its own (toon). The probe's reference and the panels follow these.
+    std::optional<bool> gouraud;
+    std::optional<bool> blinn;
     QString vertexSource() const;
     QString fragmentSource() const;
 };
@@ -19,5 +25,7 @@ struct Preset
 const std::vector<Preset> &presets();
 // The built-in program of a shading mode: "phong" or "gouraud".
 const Preset &builtInPreset(bool gouraud);
+// The preset of that menu name; nullptr for none.
+const Preset *presetNamed(const QString &name);
 
 } // namespace lb

@@ -117,6 +117,18 @@ bool ShaderDocument::showsBuiltIn() const
            m_stages[1].text == m_builtInText[1];
 }
 
+ShaderDocument::FixedModel ShaderDocument::fixedModel() const
+{
+    if (showsBuiltIn())
+        return {};
+    if (m_builtInGouraud)
+        return {m_builtInGouraud, std::nullopt};
+    if (m_origin.kind == ShaderOrigin::Kind::Preset)
+        if (const Preset *p = presetNamed(m_origin.name))
+            return {p->gouraud, p->blinn};
+    return {};
+}
+
 ShaderOrigin ShaderDocument::origin() const
 {
     ShaderOrigin o = m_origin;

@@ -69,6 +69,15 @@ public:
     // The built-in program the text started from (Gouraud: true), edited or not; none for a
     // file, a scene's program or text handed over. An edited built-in keeps its shading.
     std::optional<bool> builtInBase() const { return m_builtInGouraud; }
+    // The course model the text computes where it fixes it (Preset::gouraud, ::blinn): an
+    // edited built-in keeps its shading, the slides' presets their shading and N.H. Empty
+    // while the untouched built-in program follows the panel, and for text of unknown origin.
+    struct FixedModel
+    {
+        std::optional<bool> gouraud;
+        std::optional<bool> blinn;
+    };
+    FixedModel fixedModel() const;
 
     ShaderOrigin origin() const; // `edited` also when there are unsaved edits now
 

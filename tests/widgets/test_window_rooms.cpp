@@ -49,7 +49,8 @@ class TestWindowRooms : public WindowTest
         ShaderEditor *editor = m_window->editorPanel()->editor(stage);
         m_window->editorPanel()->findChild<QTabWidget *>()->setCurrentWidget(editor);
         editor->setFocus();
-        QTest::qWaitFor([&] { return editor->hasFocus(); }, 2000);
+        if (!QTest::qWaitFor([&] { return editor->hasFocus(); }, 2000))
+            qWarning("the %s editor did not take the focus", qPrintable(stageName(stage)));
         return editor;
     }
     void settle()
@@ -269,7 +270,9 @@ private slots:
         QVERIFY(!m_window->shaderDocument().showsBuiltIn());
         // The edited Gouraud program keeps its shading: the choice is greyed and G refused.
         QVERIFY(!shading->shadingCombo()->isEnabled());
-        QVERIFY(shading->shadingCombo()->toolTip().contains("edited"));
+        QVERIFY2(shading->shadingCombo()->toolTip().contains("(edited)") &&
+                     shading->shadingCombo()->toolTip().contains("gouraud"),
+                 qPrintable(shading->shadingCombo()->toolTip()));
         QTest::keyClick(m_window.get(), Qt::Key_G);
         QCOMPARE(scene().shading.shading, Shading::Gouraud);
 
@@ -305,6 +308,35 @@ private slots:
         // Ctrl+Z in the vertex editor brings the edited text back.
         QTest::keyClick(focusedEditor(ShaderStage::Vertex), Qt::Key_Z, Qt::ControlModifier);
         QCOMPARE(vertex->text(), edited);
+    }
+
+    // The slides' Gouraud shader computes Gouraud shading with N.H whatever the panel said:
+    // the scene follows it, so the probe checks the GPU against the right reference.
+    void slidesPresetFixesTheModelTheProbeChecks()
+    {
+        ShadingPanel *shading = m_window->shadingPanel();
+        shading->specularCombo()->setCurrentIndex(int(SpecularModel::Phong));
+        QCOMPARE(scene().shading.shading, Shading::Phong);
+        QVERIFY(buildAfter([&] { m_window->editorPanel()->loadPreset(presets()[2]); }));
+        QCOMPARE(scene().shading.shading, Shading::Gouraud);
+        QCOMPARE(scene().shading.specular, SpecularModel::Blinn);
+        QVERIFY(!shading->shadingCombo()->isEnabled());
+        QCOMPARE(shading->shadingCombo()->currentIndex(), int(Shading::Gouraud));
+        m_window->document().edit([](Scene &s) { s.showLight = false; });
+        frame();
+        Viewport *v = m_window->viewport();
+        QTest::mouseClick(v, Qt::LeftButton, Qt::ControlModifier,
+                          v->rect().center() + QPoint(12, -20));
+        frame();
+        ProbePanel *probe = m_window->probePanel();
+        QTRY_VERIFY(probe->gpuColour().has_value());
+        const glm::vec3 ref = probe->result().reference * 255.0f;
+        for (int c = 0; c < 3; ++c)
+            QVERIFY2(std::abs((*probe->gpuColour())[c] - int(std::lround(ref[c]))) <= 2,
+                     qPrintable(probe->textLabel()->text()));
+        // The toon shader is a model of its own: the choice is free again.
+        QVERIFY(buildAfter([&] { m_window->editorPanel()->loadPreset(presets()[4]); }));
+        QVERIFY(shading->shadingCombo()->isEnabled());
     }
 
     void ctrlZAfterAPresetBringsTheTextBack()
