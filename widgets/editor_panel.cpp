@@ -79,12 +79,12 @@ EditorPanel::EditorPanel(ShaderDocument *document, QWidget *parent)
     m_find = new QLineEdit(this);
     m_find->setPlaceholderText(tr("Find (Ctrl+F)"));
     m_find->setClearButtonEnabled(true);
-    m_find->setMinimumWidth(m_find->fontMetrics().horizontalAdvance("Find (Ctrl+F)") / 2);
+    m_find->setMinimumWidth(m_find->fontMetrics().averageCharWidth() * 5); // narrow docks
     connect(m_find, &QLineEdit::returnPressed, this, [this] {
         auto *e = static_cast<ShaderEditor *>(m_tabs->currentWidget());
         e->findFirst(m_find->text(), false, false, false, true);
     });
-    bar->addStretch(1);
+    bar->addWidget(m_find, 1);
     layout->addLayout(bar);
 
     m_tabs = new QTabWidget(this);
@@ -92,8 +92,8 @@ EditorPanel::EditorPanel(ShaderDocument *document, QWidget *parent)
     m_fragment = new ShaderEditor(this);
     m_tabs->addTab(m_vertex, tr("Vertex"));
     m_tabs->addTab(m_fragment, tr("Fragment"));
-    // Find sits beside the stage tabs, where it costs no row and leaves the bar narrow.
-    m_tabs->setCornerWidget(m_find, Qt::TopRightCorner);
+    // Presets sit before the stage tabs, where they cost no row and leave the bar narrow
+    // (the editor fits beside a 1024-pixel screen's view with both tabs shown).
     m_tabs->setCornerWidget(presetButton, Qt::TopLeftCorner);
     m_list = new QListWidget(this);
     m_list->setToolTip(tr("Click a message to go to its line"));

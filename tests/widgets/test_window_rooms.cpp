@@ -88,6 +88,11 @@ private slots:
               available.height(), viewShare(), m_window->panelDocks()[0]->width(),
               m_window->editorDock()->width());
         QVERIFY2(viewShare() >= 0.45, qPrintable(QString::number(viewShare())));
+        // The editor's stage tabs are both in sight, not scrolled away by its corner widgets.
+        const QTabBar *stages = m_window->editorPanel()->findChild<QTabWidget *>()->tabBar();
+        for (int i = 0; i < stages->count(); ++i)
+            QVERIFY2(stages->rect().contains(stages->tabRect(i)),
+                     qPrintable(stages->tabText(i) + " is out of sight"));
     }
 
     void firstWindowTakesTheScreensAvailableArea()
