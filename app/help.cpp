@@ -1,6 +1,7 @@
 #include "help.h"
 
 #include <QAction>
+#include <QDesktopServices>
 #include <QDialog>
 #include <QDialogButtonBox>
 #include <QFile>
@@ -8,6 +9,7 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QTextBrowser>
+#include <QUrl>
 #include <QVBoxLayout>
 
 namespace lb {
@@ -43,7 +45,15 @@ QDialog *textWindow(QWidget *parent, const QString &title, QTextBrowser *&browse
     dialog->setWindowTitle(title);
     auto *layout = new QVBoxLayout(dialog);
     browser = new QTextBrowser(dialog);
-    browser->setOpenExternalLinks(true);
+    // Web links open in the browser; the README's links to files of the source tree have no
+    // page here, and following one would blank the window.
+    browser->setOpenLinks(false);
+    QObject::connect(browser, &QTextBrowser::anchorClicked, dialog, [browser](const QUrl &url) {
+        if (url.scheme().startsWith("http"))
+            QDesktopServices::openUrl(url);
+        else if (url.hasFragment())
+            browser->scrollToAnchor(url.fragment());
+    });
     layout->addWidget(browser);
     auto *buttons = new QDialogButtonBox(QDialogButtonBox::Close, dialog);
     QObject::connect(buttons, &QDialogButtonBox::rejected, dialog, &QDialog::close);
@@ -96,6 +106,7 @@ void showFeatures(QWidget *parent)
     QTextBrowser *browser = nullptr;
     QDialog *dialog = textWindow(parent, QObject::tr("Features - lightbench"), browser);
     QFile readme(":/docs/README.md");
+    browser->setSearchPaths({":/docs"}); // its screenshots, by their paths in the README
     if (readme.open(QIODevice::ReadOnly))
         browser->setMarkdown(QString::fromUtf8(readme.readAll()));
     else

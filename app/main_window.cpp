@@ -45,6 +45,8 @@ constexpr int kStateVersion = 4;
 const char *kSceneKey = "scene";
 const char *kGeometryKey = "window/geometry";
 const char *kStateKey = "window/state";
+const char *kScreenKey = "window/screen"; // the available size the state was kept on
+const char *kLayoutKey = "window/layout";
 const char *kScaleKey = "ui/scale";
 const char *kPresentationScaleKey = "ui/presentationScale";
 constexpr int kScalePercents[] = {100, 125, 150, 175, 200, 250};
@@ -120,6 +122,7 @@ MainWindow::MainWindow(QSettings &settings, QWidget *parent)
     m_sceneActions = new SceneActions(this, &m_document, &m_shaders, m_viewport, m_settings);
     connect(m_meshActions, &MeshActions::sceneFileDropped, m_sceneActions, &SceneActions::open);
     connect(m_sceneActions, &SceneActions::documentChanged, this, &MainWindow::updateTitle);
+    connect(m_sceneActions, &SceneActions::sceneOpened, m_probe, &ProbePanel::clear);
     connect(m_object, &ObjectPanel::openMeshRequested, m_meshActions, &MeshActions::showOpenDialog);
     connect(m_object, &ObjectPanel::adoptFileMaterialRequested, m_loader,
             &ObjectLoader::setAdoptFileMaterial);
@@ -130,11 +133,15 @@ MainWindow::MainWindow(QSettings &settings, QWidget *parent)
     const QScreen *screen = this->screen() ? this->screen() : QGuiApplication::primaryScreen();
     const QRect available = screen ? screen->availableGeometry() : QRect(0, 0, 1280, 720);
     fitToScreen(available);
-    const bool placed = restoreGeometry(m_settings.value(kGeometryKey).toByteArray());
-    if (placed && !isMaximized() && !available.contains(frameGeometry()))
-        fitToScreen(available); // kept on a bigger screen: this one's size and layout
-    else if (restoreState(m_settings.value(kStateKey).toByteArray(), kStateVersion))
-        m_widthsPending = false; // the user's own dock sizes
+    // The window as it was, only on a screen of the same size: one kept on a laptop does not
+    // come back on a projector (Qt would move it, but keep the laptop's docks).
+    if (m_settings.value(kScreenKey).toSize() == available.size() &&
+        restoreGeometry(m_settings.value(kGeometryKey).toByteArray())) {
+        m_layout = DockLayout(std::clamp(m_settings.value(kLayoutKey, 0).toInt(), 0, 1));
+        if (restoreState(m_settings.value(kStateKey).toByteArray(), kStateVersion))
+            m_widthsPending = false; // the user's own dock sizes
+        applyTabPositions();
+    }
 
     m_saveTimer.setSingleShot(true);
     m_saveTimer.setInterval(500);
@@ -142,8 +149,10 @@ MainWindow::MainWindow(QSettings &settings, QWidget *parent)
     connect(&m_document, &SceneDocument::changed, this, [this](SceneParts parts) {
         updateStatus();
         updateTitle();
-        if (parts & ScenePart::Shading)
+        if (parts & ScenePart::Shading) {
             m_shaders.followShading(m_document.scene().shading.shading == Shading::Gouraud);
+            syncShadingWithProgram(); // a reset or an option cannot unfix a fixed model
+        }
         // Not restarted on every change: auto-rotate edits the scene 60 times a second,
         // and a timer restarted that often would never fire.
         if (!m_saveTimer.isActive())
@@ -177,10 +186,30 @@ QDockWidget *MainWindow::addPanelDock(const QString &title, const QString &objec
 
 void MainWindow::fitToScreen(const QRect &available)
 {
-    if (isFullScreen() || isMaximized())
+    m_available = available;
+    const bool wasLarge = isFullScreen() || isMaximized();
+    if (wasLarge)
         showNormal();
     setGeometry(initialGeometry(available));
+    if (wasLarge) // the window manager answers showNormal() with its own geometry later
+        QTimer::singleShot(0, this, [this] { setGeometry(initialGeometry(m_available)); });
     arrangeDocks(dockLayoutFor(available.width()));
+}
+
+void MainWindow::keepInsideScreen()
+{
+    // setGeometry() places the inside of the window; a window manager's frame comes on top.
+    // Once the frame is known, the whole window shrinks into the available area.
+    if (isFullScreen() || isMaximized() || m_available.isEmpty())
+        return;
+    const QRect frame = frameGeometry();
+    if (m_available.contains(frame))
+        return;
+    const QSize margins = frame.size() - geometry().size();
+    const QRect inside =
+        initialGeometry(m_available, size().boundedTo(m_available.size() - margins));
+    resize(inside.size());
+    move(inside.topLeft() - QPoint(margins.width() / 2, 0));
 }
 
 void MainWindow::arrangeDocks(DockLayout layout)
@@ -212,9 +241,7 @@ void MainWindow::arrangeDocks(DockLayout layout)
         for (std::size_t i = 1; i < m_panelDocks.size(); ++i)
             tabifyDockWidget(light, m_panelDocks[i]);
     }
-    setTabPosition(Qt::LeftDockWidgetArea,
-                   layout == DockLayout::Compact ? QTabWidget::West : QTabWidget::North);
-    setTabPosition(Qt::RightDockWidgetArea, QTabWidget::North);
+    applyTabPositions();
     for (QDockWidget *dock : m_panelDocks)
         dock->show();
     m_editorDock->show();
@@ -227,6 +254,13 @@ void MainWindow::arrangeDocks(DockLayout layout)
             bar->setUsesScrollButtons(true);
         }
     });
+}
+
+void MainWindow::applyTabPositions()
+{
+    setTabPosition(Qt::LeftDockWidgetArea,
+                   m_layout == DockLayout::Compact ? QTabWidget::West : QTabWidget::North);
+    setTabPosition(Qt::RightDockWidgetArea, QTabWidget::North);
 }
 
 void MainWindow::applyDockWidths()
@@ -268,13 +302,14 @@ void MainWindow::applyDockWidths()
 void MainWindow::resizeEvent(QResizeEvent *event)
 {
     QMainWindow::resizeEvent(event);
-    if (m_layout == DockLayout::Presentation) // full screen arrives after the request
+    if (m_presentation) // full screen arrives after the request
         applyDockWidths();
 }
 
 void MainWindow::showEvent(QShowEvent *event)
 {
     QMainWindow::showEvent(event);
+    QTimer::singleShot(200, this, &MainWindow::keepInsideScreen); // the frame has come by then
     if (m_widthsPending)
         QTimer::singleShot(0, this, &MainWindow::applyDockWidths);
 }
@@ -286,6 +321,8 @@ void MainWindow::setPresentation(bool on)
     if (on) {
         m_normalGeometry = saveGeometry();
         m_normalState = saveState(kStateVersion);
+        m_normalLayout = m_layout;
+        m_normalRect = geometry();
     }
     m_presentation = on;
     applyScale();
@@ -294,8 +331,16 @@ void MainWindow::setPresentation(bool on)
         arrangeDocks(DockLayout::Presentation);
     } else {
         showNormal();
-        restoreGeometry(m_normalGeometry);
+        m_layout = m_normalLayout;
+        applyTabPositions(); // not part of the saved state
         restoreState(m_normalState, kStateVersion);
+        // The rectangle itself, again once the window manager has answered showNormal():
+        // restoreGeometry() from full screen put the window 20 pixels low under Xvfb.
+        setGeometry(m_normalRect);
+        QTimer::singleShot(0, this, [this] {
+            if (!m_presentation)
+                setGeometry(m_normalRect);
+        });
     }
     if (m_presentationAction)
         m_presentationAction->setChecked(on);
@@ -307,6 +352,8 @@ void MainWindow::setUiScale(double scale)
     m_settings.setValue(kScaleKey, m_scale);
     m_settings.setValue(kPresentationScaleKey, m_presentationScale);
     applyScale();
+    // The panels' forms grew or shrank with the font: their widths again, once laid out.
+    QTimer::singleShot(0, this, &MainWindow::applyDockWidths);
 }
 
 double MainWindow::uiScale() const
@@ -374,7 +421,7 @@ void MainWindow::buildMenus()
 
     QMenu *shading = menuBar()->addMenu(tr("&Shading"));
     addItem(shading, tr("Toggle &Gouraud / Phong"), QKeySequence(tr("G")), [this] {
-        if (!m_shading->shadingCombo()->isEnabled()) { // the program fixes its shading
+        if (m_shaders.fixedModel().gouraud) { // the program's text fixes its shading
             m_status->showMessage(m_shading->shadingCombo()->toolTip());
             return;
         }
@@ -384,6 +431,12 @@ void MainWindow::buildMenus()
         });
     });
     addItem(shading, tr("Toggle Phong / &Blinn-Phong specular"), QKeySequence(tr("B")), [this] {
+        if (m_shaders.fixedModel().blinn) {
+            m_status->showMessage(tr("The program in the editor (%1) computes its own specular "
+                                     "term: load a preset or Reset Everything to switch it.")
+                                      .arg(m_editor->programName()));
+            return;
+        }
         m_document.edit([](Scene &s) {
             s.shading.specular = s.shading.specular == SpecularModel::Blinn ? SpecularModel::Phong
                                                                             : SpecularModel::Blinn;
@@ -466,10 +519,12 @@ void MainWindow::addViewMenu(QMenu *view)
 
 void MainWindow::resetEverything()
 {
-    m_document.set(Scene{});
-    // The editor too, so the panels and the program agree; undoable in the editor.
+    m_sceneActions->forgetFile(); // Ctrl+S must not write the defaults over the file
+    // The editor first (undoable there): while an edited program still drew, the scene's
+    // shading would be held to that program's.
     const bool hadEdits = !m_shaders.showsBuiltIn();
     m_shaders.loadPreset(builtInPreset(Scene{}.shading.shading == Shading::Gouraud));
+    m_document.set(Scene{});
     m_status->showMessage(hadEdits ? tr("Everything reset; Ctrl+Z in the editor brings your "
                                         "shader text back")
                                    : tr("Everything reset"));
@@ -482,6 +537,15 @@ void MainWindow::syncShadingWithProgram()
     // panel, the probe's reference and the status line describe what draws, and the
     // shading choice is greyed with the reason.
     const ShaderDocument::FixedModel fixed = m_shaders.fixedModel();
+    // The reference computes V from the projection; the slides' shaders take (0,0,1).
+    const bool otherView =
+        fixed.parallelView && m_document.scene().shading.projection == Projection::Perspective;
+    m_probe->setReferenceNote(
+        otherView ? tr("The program on screen computes V = (0,0,1), the parallel view vector, "
+                       "under the perspective projection; the reference uses V = -P, so the two "
+                       "differ away from the middle of the view. The orthographic projection "
+                       "(key P) makes them agree.")
+                  : QString());
     if (fixed.gouraud || fixed.blinn)
         m_document.edit([&](Scene &s) {
             if (fixed.gouraud)
@@ -514,8 +578,7 @@ void MainWindow::showProgramUsage(const ProgramBuild &build)
           static_cast<ScenePanel *>(m_shading)})
         panel->showUsage(read);
     m_uniforms->setUniforms(build.uniforms);
-    m_programReadsLight =
-        read.count(Semantic::LightPosition) > 0 || read.count(Semantic::LightPositionEye) > 0;
+    m_programReadsLight = build.readsLightPosition();
     updateStatus();
 }
 
@@ -563,6 +626,8 @@ void MainWindow::saveSettings()
     // Presentation mode is for the session: the window as it was before it is what is kept.
     m_settings.setValue(kGeometryKey, m_presentation ? m_normalGeometry : saveGeometry());
     m_settings.setValue(kStateKey, m_presentation ? m_normalState : saveState(kStateVersion));
+    m_settings.setValue(kScreenKey, m_available.size());
+    m_settings.setValue(kLayoutKey, int(m_presentation ? m_normalLayout : m_layout));
     m_editor->saveState(m_settings);
     m_settings.sync();
 }

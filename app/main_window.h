@@ -92,6 +92,8 @@ private:
     void resetEverything();
     void applyScale();
     void applyDockWidths();
+    void applyTabPositions();
+    void keepInsideScreen();
 
     QSettings &m_settings;
     SceneDocument m_document;
@@ -118,6 +120,9 @@ private:
     double m_scale = 1.0;                       // the normal window's UI scale
     double m_presentationScale = 1.75;          // presentation mode's
     QByteArray m_normalGeometry, m_normalState; // the window before presentation mode
+    DockLayout m_normalLayout = DockLayout::Wide;
+    QRect m_normalRect;
+    QRect m_available; // the screen area the window was fitted to
     QAction *m_presentationAction = nullptr;
     QActionGroup *m_scaleGroup = nullptr;
     QTimer m_saveTimer; // saves the scene shortly after each change, so a kill loses little

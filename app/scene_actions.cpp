@@ -24,6 +24,7 @@ namespace {
 const char *kRecentKey = "recentScenes";
 const char *kDirKey = "scenes/lastDirectory";
 const char *kExportSizeKey = "export/size";
+const char *kCurrentKey = "scenes/current"; // the file the session's scene came from
 const QString kFilter = QObject::tr("Scenes (*.json);;All files (*)");
 } // namespace
 
@@ -34,6 +35,17 @@ SceneActions::SceneActions(QMainWindow *window, SceneDocument *document, ShaderD
 {
     m_recent = new RecentFiles(tr("Open Recent S&cene"), settings, kRecentKey, window);
     connect(m_recent, &RecentFiles::fileChosen, this, &SceneActions::open);
+    // The session's scene came from this file: it is still the document (with the session's
+    // changes unsaved, as the title's * says), as long as the file can be read.
+    const QString current = m_settings.value(kCurrentKey).toString();
+    if (!current.isEmpty()) {
+        const SceneFileRead read = readSceneFile(current);
+        if (read.file) {
+            m_path = current;
+            m_name = QFileInfo(current).fileName();
+            m_saved = *read.file;
+        }
+    }
 }
 
 QList<QPair<QString, QString>> SceneActions::examples()
@@ -86,8 +98,9 @@ bool SceneActions::open(const QString &path)
     // An example's mesh (none today) would name a file beside the resource: keep shapes.
     if (example)
         file.scene.object.meshPath.clear();
-    m_document->set(file.scene);
+    // The program first: the scene's shading is held to a program that fixes its own.
     m_shaders->setProgram(file.program, file.scene.shading.shading == Shading::Gouraud);
+    m_document->set(file.scene);
     const QString name = example ? path.section('/', -1) : QFileInfo(path).fileName();
     setCurrentPath(example ? QString() : QFileInfo(path).absoluteFilePath(), name);
     remember();
@@ -209,6 +222,14 @@ void SceneActions::setCurrentPath(const QString &path, const QString &name)
 {
     m_path = path;
     m_name = name;
+    m_settings.setValue(kCurrentKey, path);
+}
+
+void SceneActions::forgetFile()
+{
+    setCurrentPath({}, {});
+    m_saved.reset();
+    emit documentChanged();
 }
 
 void SceneActions::remember()
@@ -219,8 +240,11 @@ void SceneActions::remember()
 
 bool SceneActions::isModified() const
 {
-    const SceneFile now{m_document->scene(), m_shaders->program()};
+    SceneFile now{m_document->scene(), m_shaders->program()};
     const SceneFile saved = m_saved.value_or(SceneFile{Scene{}, std::nullopt});
+    // Auto-rotation turns the object 60 times a second: the turn is not an edit.
+    if (now.scene.object.autoRotate)
+        now.scene.object.rotationDegrees.y = saved.scene.object.rotationDegrees.y;
     // The program's text decides, not its name or 'edited' flag (a saved scene's program
     // reads back under the file's name).
     auto text = [](const std::optional<ProgramText> &p) {

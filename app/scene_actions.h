@@ -43,6 +43,8 @@ public:
     // Whether the scene or its program changed since it was opened or saved; with none
     // opened, whether anything differs from the defaults.
     bool isModified() const;
+    // No file from now on (Reset Everything): the title says untitled, Save asks for a name.
+    void forgetFile();
     // Renders the view at `pixels` and writes it (PNG unless the name says otherwise).
     QString exportImage(const QString &path, QSize pixels);
     void copyImage();

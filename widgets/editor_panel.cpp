@@ -6,6 +6,7 @@
 #include <QCheckBox>
 #include <QFileInfo>
 #include <QHBoxLayout>
+#include <QKeyEvent>
 #include <QLabel>
 #include <QLineEdit>
 #include <QListWidget>
@@ -85,6 +86,7 @@ EditorPanel::EditorPanel(ShaderDocument *document, QWidget *parent)
         e->findFirst(m_find->text(), false, false, false, true);
     });
     bar->addWidget(m_find, 1);
+    m_find->installEventFilter(this); // Esc goes back to the code, not to the window
     layout->addLayout(bar);
 
     m_tabs = new QTabWidget(this);
@@ -117,6 +119,8 @@ EditorPanel::EditorPanel(ShaderDocument *document, QWidget *parent)
     connect(&m_pause, &QTimer::timeout, this, &EditorPanel::compileNow);
     for (ShaderStage stage : kStages) {
         connect(editor(stage), &ShaderEditor::textChanged, this, [this, stage] { typed(stage); });
+        connect(editor(stage), &ShaderEditor::zoomRequested, this,
+                [this](int steps) { setZoom(m_zoom + steps); });
         showSource(stage);
     }
     connect(m_document, &ShaderDocument::sourceChanged, this, &EditorPanel::showSource);
@@ -153,6 +157,21 @@ EditorPanel::~EditorPanel()
         disconnect(editor(stage), nullptr, this, nullptr);
 }
 
+bool EditorPanel::eventFilter(QObject *watched, QEvent *event)
+{
+    if (watched == m_find &&
+        (event->type() == QEvent::ShortcutOverride || event->type() == QEvent::KeyPress)) {
+        auto *key = static_cast<QKeyEvent *>(event);
+        if (key->key() == Qt::Key_Escape) {
+            event->accept(); // the window's Esc (clear the probe) is not meant here
+            if (event->type() == QEvent::KeyPress)
+                m_tabs->currentWidget()->setFocus();
+            return true;
+        }
+    }
+    return QWidget::eventFilter(watched, event);
+}
+
 ShaderEditor *EditorPanel::editor(ShaderStage stage) const
 {
     return stage == ShaderStage::Fragment ? m_fragment : m_vertex;
@@ -165,6 +184,12 @@ void EditorPanel::typed(ShaderStage stage)
     m_typing = true;
     m_document->setSource(stage, editor(stage)->text());
     m_typing = false;
+    // Ctrl+Z took this stage back from a preset, an example or a reset: the other stage
+    // follows, so the program (and its origin) come back whole.
+    const ShaderStage other =
+        stage == ShaderStage::Vertex ? ShaderStage::Fragment : ShaderStage::Vertex;
+    if (m_document->otherStageAwaitsUndo(stage) && editor(other)->isUndoAvailable())
+        editor(other)->undo();
     if (m_live->isChecked())
         m_pause.start(m_delay->value());
 }
@@ -230,16 +255,26 @@ bool EditorPanel::restoreState(QSettings &settings)
     return restored;
 }
 
+int EditorPanel::scaleShare() const
+{
+    // Scintilla's zoom adds points to every style's size: the scale's share is the base size
+    // times (scale - 1).
+    return int(std::lround(m_vertex->lexer()->defaultFont().pointSizeF() * (m_uiScale - 1.0)));
+}
+
 void EditorPanel::setZoom(int steps)
 {
-    m_zoom = std::clamp(steps, kMinZoom, kMaxZoom);
+    // Scintilla keeps its zoom within -10 to +20 points: the user's steps stay where each one
+    // still shows, with the scale's share on top.
+    const int share = scaleShare();
+    m_zoom = std::clamp(steps, std::max(kMinZoom, -10 - share), std::min(kMaxZoom, 20 - share));
     applyZoom();
 }
 
 void EditorPanel::setUiScale(double scale)
 {
     m_uiScale = scale;
-    applyZoom();
+    setZoom(m_zoom); // within what Scintilla shows at this scale
 }
 
 double EditorPanel::fontPointSize() const
@@ -250,12 +285,8 @@ double EditorPanel::fontPointSize() const
 
 void EditorPanel::applyZoom()
 {
-    // Scintilla's zoom adds points to every style's size: the scale's share is the base size
-    // times (scale - 1).
-    const double base = m_vertex->lexer()->defaultFont().pointSizeF();
-    const int points = m_zoom + int(std::lround(base * (m_uiScale - 1.0)));
     for (ShaderStage stage : kStages)
-        editor(stage)->setZoom(points);
+        editor(stage)->setZoom(m_zoom + scaleShare());
 }
 
 void EditorPanel::compileNow()
@@ -283,6 +314,7 @@ void EditorPanel::showBuild(const ProgramBuild &build)
             m_list);
         item->setForeground(error ? QColor("#c62828") : QColor("#8a5a00"));
     }
+    m_list->setVisible(m_list->count() > 0); // no empty box under the code
     m_vertex->showDiagnostics(perStage[0]);
     m_fragment->showDiagnostics(perStage[1]);
     updateTitles();

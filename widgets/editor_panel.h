@@ -79,6 +79,9 @@ public slots:
 signals:
     void compileRequested(const QString &vertex, const QString &fragment);
 
+protected:
+    bool eventFilter(QObject *watched, QEvent *event) override; // Esc in the find field
+
 private:
     void typed(ShaderStage stage);
     void showSource(ShaderStage stage);
@@ -86,6 +89,7 @@ private:
     void jumpTo(int row);
     void updateTitles();
     void applyZoom();
+    int scaleShare() const; // the points the UI scale adds
 
     ShaderDocument *m_document;
     QTabWidget *m_tabs;

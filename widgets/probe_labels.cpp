@@ -7,12 +7,14 @@
 #include <QPainter>
 #include <QPainterPath>
 
+#include <glm/geometric.hpp>
+
 #include <algorithm>
 
 namespace lb {
 
 std::vector<PlacedLabel> placeLabels(const Scene &scene, QSize frame,
-                                     const std::vector<ProbeLabel> &labels)
+                                     const std::vector<ProbeLabel> &labels, int pixelSize)
 {
     std::vector<PlacedLabel> placed;
     for (const ProbeLabel &l : labels) {
@@ -20,7 +22,14 @@ std::vector<PlacedLabel> placeLabels(const Scene &scene, QSize frame,
         if (view.isEmpty())
             continue;
         const Frames frames = computeFrames(scene, float(view.width()) / float(view.height()));
-        const glm::vec2 p = pixelOf(frames, l.eyeTip, float(view.width()), float(view.height()));
+        const float w = float(view.width()), h = float(view.height());
+        const glm::vec2 base = pixelOf(frames, l.eyeBase, w, h);
+        const glm::vec2 tip = pixelOf(frames, l.eyeTip, w, h);
+        const float size = float(pixelSize);
+        const glm::vec2 along = tip - base;
+        const glm::vec2 away = glm::length(along) > 0.5f * size ? glm::normalize(along)
+                                                                : glm::normalize(glm::vec2(1, -1));
+        const glm::vec2 p = tip + away * 0.75f * size;
         placed.push_back({QPointF(p.x, p.y) + QPointF(view.topLeft()), l.text, l.colour});
     }
     return placed;
@@ -76,9 +85,9 @@ int ProbeLabels::pixelSize() const
     return int(std::lround(1.5 * QFontInfo(font()).pixelSize() * devicePixelRatioF()));
 }
 
-std::vector<PlacedLabel> ProbeLabels::placed(QSize frame) const
+std::vector<PlacedLabel> ProbeLabels::placed(QSize frame, int pixelSize) const
 {
-    return placeLabels(m_document->scene(), frame, m_labels);
+    return placeLabels(m_document->scene(), frame, m_labels, pixelSize);
 }
 
 bool ProbeLabels::eventFilter(QObject *watched, QEvent *event)
@@ -91,7 +100,7 @@ bool ProbeLabels::eventFilter(QObject *watched, QEvent *event)
 void ProbeLabels::paintEvent(QPaintEvent *)
 {
     const qreal dpr = devicePixelRatioF();
-    std::vector<PlacedLabel> labels = placed((QSizeF(size()) * dpr).toSize());
+    std::vector<PlacedLabel> labels = placed((QSizeF(size()) * dpr).toSize(), pixelSize());
     for (PlacedLabel &l : labels)
         l.position /= dpr; // frame pixels -> this widget's coordinates
     QPainter painter(this);

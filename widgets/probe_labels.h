@@ -18,9 +18,11 @@ class QPainter;
 
 namespace lb {
 
-// A name at an arrow's tip: the tip in eye coordinates, on side A or B of a compare view.
+// A name at an arrow's tip: the arrow's start and tip in eye coordinates, on side A or B of
+// a compare view.
 struct ProbeLabel
 {
+    glm::vec3 eyeBase;
     glm::vec3 eyeTip;
     bool sideB = false;
     QString text;
@@ -35,9 +37,11 @@ struct PlacedLabel
     QColor colour;
 };
 
-// Where the labels land in a frame of `frame` pixels showing `scene`.
+// Where the labels land in a frame of `frame` pixels showing `scene`: past the arrow's tip on
+// screen, by about half the names' height `pixelSize`, so a name never hides its arrow or the
+// point (V, pointing at the eye, is a dot: its name goes up and right of it).
 std::vector<PlacedLabel> placeLabels(const Scene &scene, QSize frame,
-                                     const std::vector<ProbeLabel> &labels);
+                                     const std::vector<ProbeLabel> &labels, int pixelSize);
 // Paints the names centred on their positions (the painter's coordinates), bold, `pixelSize`
 // pixels high, in their colour with a dark outline that keeps them readable on any surface.
 void paintProbeLabels(QPainter &painter, const std::vector<PlacedLabel> &labels, int pixelSize);
@@ -53,8 +57,8 @@ public:
     const std::vector<ProbeLabel> &labels() const { return m_labels; }
     // The names' height in device pixels on screen (1.5 times the UI's font).
     int pixelSize() const;
-    // The names as placed over a frame of `frame` pixels.
-    std::vector<PlacedLabel> placed(QSize frame) const;
+    // The names as placed over a frame of `frame` pixels, `pixelSize` high.
+    std::vector<PlacedLabel> placed(QSize frame, int pixelSize) const;
 
 protected:
     bool eventFilter(QObject *watched, QEvent *event) override; // the viewport's resizes

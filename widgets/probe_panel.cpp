@@ -53,6 +53,8 @@ ProbePanel::ProbePanel(SceneDocument *document, Viewport *viewport, QWidget *par
     clear();
     connect(document, &SceneDocument::changed, this, &ProbePanel::update);
     connect(viewport, &Viewport::objectChanged, this, &ProbePanel::clear);
+    // A new view size moves the point's pixel: read the GPU where the point now is.
+    connect(viewport, &Viewport::resized, this, &ProbePanel::update);
     connect(viewport, &QOpenGLWidget::frameSwapped, this, &ProbePanel::showText);
 }
 
@@ -65,6 +67,14 @@ void ProbePanel::clear()
     m_text->setText(tr("Ctrl+click (or Shift+click) the surface to probe a point: the "
                        "vectors, N\u00b7L, the specular angle and the three terms, beside the "
                        "pixel the GPU drew. Esc clears it."));
+}
+
+void ProbePanel::setReferenceNote(const QString &note)
+{
+    if (note == m_referenceNote)
+        return;
+    m_referenceNote = note;
+    showText();
 }
 
 void ProbePanel::probeAt(QPoint framePixel)
@@ -101,17 +111,17 @@ void ProbePanel::update()
         probeSurface(sceneOfSide(scene, m_point->sideB), *mesh, m_viewport->renderer().texture(),
                      view.size(), m_point->triangle, m_point->barycentric);
 
-    // Arrows from the point: N white, V cyan, and for each light L in its diffuse colour
+    // Arrows from the point: N yellow, V cyan, and for each light L in its diffuse colour
     // with H (Blinn-Phong) or R (Phong) in magenta.
     std::vector<Renderer::Arrow> arrows;
     std::vector<ProbeLabel> labels;
     auto add = [&](const glm::vec3 &dir, const glm::vec3 &colour, const QString &name) {
         const glm::vec3 d = kArrowLength * glm::normalize(dir);
         arrows.push_back({m_result.position, d, colour});
-        labels.push_back({m_result.position + 1.2f * d, m_point->sideB, name,
+        labels.push_back({m_result.position, m_result.position + d, m_point->sideB, name,
                           QColor::fromRgbF(colour.r, colour.g, colour.b)});
     };
-    add(m_result.normal, glm::vec3(1.0f), "N");
+    add(m_result.normal, glm::vec3(1.0f, 0.85f, 0.25f), "N"); // yellow, as the normal lines
     add(viewVector(m_result.position, scene.shading.projection), glm::vec3(0.3f, 0.9f, 1.0f), "V");
     const bool several = m_result.lights.size() > 1;
     for (const ProbeLight &l : m_result.lights) {
@@ -190,6 +200,8 @@ void ProbePanel::showText()
         html += row(tr("difference"), tr("%1 of 255").arg(std::max({d.r, d.g, d.b})));
     }
     html += "</table>";
+    if (!m_referenceNote.isEmpty())
+        html += QString("<p><i>%1</i></p>").arg(m_referenceNote.toHtmlEscaped());
     m_text->setText(html);
 }
 

@@ -30,6 +30,9 @@ public:
     bool isActive() const { return m_point.has_value(); }
     const ProbeResult &result() const { return m_result; }
     QLabel *textLabel() const { return m_text; }
+    // What the reference does not know about the program on screen ("it computes V =
+    // (0,0,1)..."), shown under the numbers; empty for none.
+    void setReferenceNote(const QString &note);
     // The GPU's pixel at the point, once the viewport has drawn it.
     std::optional<glm::ivec3> gpuColour() const { return m_gpu; }
 
@@ -49,6 +52,7 @@ private:
     std::optional<Point> m_point;
     ProbeResult m_result;
     std::optional<glm::ivec3> m_gpu;
+    QString m_referenceNote;
 };
 
 } // namespace lb

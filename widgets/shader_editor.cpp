@@ -10,6 +10,7 @@
 #include <QFontDatabase>
 #include <QRegularExpression>
 #include <QSet>
+#include <QWheelEvent>
 
 #include <algorithm>
 #include <map>
@@ -28,7 +29,7 @@ ShaderEditor::ShaderEditor(QWidget *parent) : QsciScintilla(parent)
 
     setUtf8(true);
     setMarginType(0, NumberMargin);
-    setMarginWidth(0, "00000");
+    setMarginWidth(0, "0000");
     setMarginType(1, SymbolMargin);
     setMarginWidth(1, 14);
     setMarginSensitivity(1, false);
@@ -69,7 +70,20 @@ ShaderEditor::ShaderEditor(QWidget *parent) : QsciScintilla(parent)
 void ShaderEditor::setZoom(int points)
 {
     zoomTo(points);
-    setMarginWidth(0, "00000"); // measured at the new size, so big line numbers fit
+    setMarginWidth(0, "0000"); // measured at the new size, so big line numbers fit
+}
+
+void ShaderEditor::wheelEvent(QWheelEvent *event)
+{
+    if (!(event->modifiers() & Qt::ControlModifier)) {
+        QsciScintilla::wheelEvent(event);
+        return;
+    }
+    // Scintilla would zoom this stage alone and past the panel's knowledge.
+    const int y = event->angleDelta().y();
+    if (y != 0)
+        emit zoomRequested(y > 0 ? 1 : -1);
+    event->accept();
 }
 
 void ShaderEditor::replaceText(const QString &text)
@@ -81,13 +95,12 @@ void ShaderEditor::replaceText(const QString &text)
         return;
     }
     // One undo step, so Ctrl+Z brings back what a preset, an example or a reset replaced.
-    int line = 0, index = 0;
-    getCursorPosition(&line, &index);
     beginUndoAction();
     selectAll();
     replaceSelectedText(text);
     endUndoAction();
-    setCursorPosition(std::min(line, std::max(lines() - 1, 0)), 0);
+    setCursorPosition(0, 0); // a new program is read from its first line
+    setFirstVisibleLine(0);
 }
 
 void ShaderEditor::clearDiagnostics()

@@ -27,6 +27,13 @@ public:
     // Points added to every font size (Scintilla's zoom), the line numbers' margin following.
     void setZoom(int points);
 
+signals:
+    // Ctrl+wheel: one step in (+1) or out (-1), for the panel to zoom both stages and keep it.
+    void zoomRequested(int steps);
+
+protected:
+    void wheelEvent(QWheelEvent *event) override;
+
 private:
     // Completion without QsciAPIs: its preparation runs on a thread that crashes when the
     // editor is destroyed first. The candidates are few; the GUI thread finds them at once.

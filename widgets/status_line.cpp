@@ -71,7 +71,8 @@ StatusLine::StatusLine(QWidget *parent) : QWidget(parent)
     m_row->addWidget(m_mesh, 2);
     m_row->addWidget(m_driver, 2);
     m_clear.setSingleShot(true);
-    connect(&m_clear, &QTimer::timeout, m_message, [this] { m_message->setText({}); });
+    connect(&m_clear, &QTimer::timeout, this, [this] { showMessage({}, 0); });
+    m_message->hide(); // no message: the program's line takes the room
 }
 
 void StatusLine::setProgressWidget(QWidget *progress)
@@ -82,6 +83,7 @@ void StatusLine::setProgressWidget(QWidget *progress)
 void StatusLine::showMessage(const QString &text, int milliseconds)
 {
     m_message->setText(text);
+    m_message->setVisible(!text.isEmpty());
     if (milliseconds > 0)
         m_clear.start(milliseconds);
     else

@@ -224,6 +224,7 @@ void Viewport::resizeGL(int, int)
 {
     m_banner->setGeometry(0, 0, width(), m_banner->sizeHint().height());
     updateCompareLabel();
+    emit resized();
 }
 
 void Viewport::setObject(std::shared_ptr<const Mesh> mesh, std::shared_ptr<const Texture> texture)
@@ -254,9 +255,9 @@ QImage Viewport::renderImage(QSize pixels)
     if (!image.isNull() && !m_labels->labels().empty()) {
         // The names at the size they have on screen, relative to the frame's height.
         const double frameHeight = std::max(1.0, height() * devicePixelRatioF());
+        const int size = int(std::lround(m_labels->pixelSize() * pixels.height() / frameHeight));
         QPainter painter(&image);
-        paintProbeLabels(painter, m_labels->placed(pixels),
-                         int(std::lround(m_labels->pixelSize() * pixels.height() / frameHeight)));
+        paintProbeLabels(painter, m_labels->placed(pixels, size), size);
     }
     return image;
 }
@@ -306,8 +307,9 @@ void Viewport::mouseMoveEvent(QMouseEvent *event)
         });
     } else if (event->buttons() & (Qt::RightButton | Qt::MiddleButton)) {
         const float h = float(std::max(height(), 1));
+        const float aspect = float(std::max(width(), 1)) / h;
         m_document->edit(
-            [&](Scene &s) { s.camera.pan(float(delta.x()) / h, float(delta.y()) / h); });
+            [&](Scene &s) { s.camera.pan(float(delta.x()) / h, float(delta.y()) / h, aspect); });
     }
 }
 

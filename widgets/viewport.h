@@ -59,6 +59,7 @@ signals:
     void programBuilt(const lb::ProgramBuild &build);
     void probeRequested(QPoint framePixel); // Ctrl+click or Shift+click, in device pixels
     void objectChanged();                   // a new mesh: probed points are gone
+    void resized();                         // a new frame size
 
 protected:
     void initializeGL() override;

@@ -252,9 +252,8 @@ BuiltProgram buildProgram(QOpenGLExtraFunctions &gl, const QString &vertexSource
 BuiltProgram buildBuiltIn(QOpenGLExtraFunctions &gl, const QString &name, QString &error,
                           const QString &fragment)
 {
-    const Preset pair{name, ":/shaders/" + name, std::nullopt, std::nullopt};
-    const Preset fragmentPair{name, ":/shaders/" + (fragment.isEmpty() ? name : fragment),
-                              std::nullopt, std::nullopt};
+    const Preset pair{name, ":/shaders/" + name};
+    const Preset fragmentPair{name, ":/shaders/" + (fragment.isEmpty() ? name : fragment)};
     BuiltProgram built = buildProgram(gl, pair.vertexSource(), fragmentPair.fragmentSource());
     if (!built.build.ok())
         error += "built-in shader '" + name + "' failed:\n" + built.build.log();

@@ -18,13 +18,6 @@ void setViewport(QOpenGLExtraFunctions &gl, QRect rect, int height)
     gl.glViewport(rect.x(), height - rect.y() - rect.height(), rect.width(), rect.height());
 }
 
-bool readsLightPosition(const ProgramBuild &build)
-{
-    return std::any_of(build.uniforms.begin(), build.uniforms.end(), [](const ActiveUniform &u) {
-        return u.semantic == Semantic::LightPosition || u.semantic == Semantic::LightPositionEye;
-    });
-}
-
 } // namespace
 
 Renderer::Renderer() = default;
@@ -174,7 +167,7 @@ void Renderer::drawView(const Scene &scene, const BuiltProgram &program, QRect v
 
     // A program that hard-codes its light (the slides' constants) gets no marker at the
     // panel's position, where its light is not.
-    if (scene.showLight && readsLightPosition(program.build))
+    if (scene.showLight && program.build.readsLightPosition())
         for (const Light &light : scene.lights)
             if (light.enabled)
                 m_overlays.drawLightMarker(*this, light, frames);

@@ -24,15 +24,15 @@ QString Preset::fragmentSource() const
 const std::vector<Preset> &presets()
 {
     static const std::vector<Preset> list{
-        // The built-in programs read their specular term from uSpecularModel; the slides'
-        // compute N.H (Blinn-Phong).
-        {"Built-in: Phong shading (per fragment)", ":/shaders/phong", false, std::nullopt},
-        {"Built-in: Gouraud shading (per vertex)", ":/shaders/gouraud", true, std::nullopt},
-        {"Slides: Gouraud, WebGL 1 as printed", ":/shaders/presets/slides_gouraud", true, true},
-        {"Slides: Phong shading, WebGL 1 as printed", ":/shaders/presets/slides_phong", false,
+        // The built-in programs read their specular term from uSpecularModel and their V
+        // from uProjection; the slides' compute N.H (Blinn-Phong) with V = (0,0,1).
+        {"Built-in: Phong shading (per fragment)", ":/shaders/phong", false},
+        {"Built-in: Gouraud shading (per vertex)", ":/shaders/gouraud", true},
+        {"Slides: Gouraud, WebGL 1 as printed", ":/shaders/presets/slides_gouraud", true, true,
          true},
-        {"Toon (the exercise's \"like Zelda\"), GLSL 3.30", ":/shaders/presets/toon", std::nullopt,
-         std::nullopt},
+        {"Slides: Phong shading, WebGL 1 as printed", ":/shaders/presets/slides_phong", false, true,
+         true},
+        {"Toon (the exercise's \"like Zelda\"), GLSL 3.30", ":/shaders/presets/toon"},
     };
     return list;
 }

@@ -16,8 +16,10 @@ struct Preset
     // The course model the program computes, where its text fixes it: Gouraud (true) or
     // Phong shading, Blinn-Phong (true) or Phong specular; none where it follows a uniform
     // or is a model of its own (toon). The probe's reference and the panels follow these.
-    std::optional<bool> gouraud;
-    std::optional<bool> blinn;
+    std::optional<bool> gouraud{};
+    std::optional<bool> blinn{};
+    // The text computes V = (0,0,1), the parallel view vector, whatever the projection.
+    bool parallelView = false;
     QString vertexSource() const;
     QString fragmentSource() const;
 };

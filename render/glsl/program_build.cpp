@@ -17,6 +17,14 @@ bool ProgramBuild::hasErrors() const
     return false;
 }
 
+bool ProgramBuild::reads(Semantic semantic) const
+{
+    for (const ActiveUniform &u : uniforms)
+        if (u.semantic == semantic)
+            return true;
+    return false;
+}
+
 QString ProgramBuild::log() const
 {
     QString text;

@@ -42,6 +42,13 @@ struct ProgramBuild
     bool ok() const { return linked; }
     bool hasErrors() const;
     QString log() const; // the diagnostics as text, one per line
+    bool reads(Semantic semantic) const;
+    // Whether the program takes the panel's light position (either name); one that does not
+    // hard-codes its light, and the window draws no marker where its light is not.
+    bool readsLightPosition() const
+    {
+        return reads(Semantic::LightPosition) || reads(Semantic::LightPositionEye);
+    }
 };
 
 } // namespace lb

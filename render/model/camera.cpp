@@ -30,12 +30,17 @@ glm::mat4 OrbitCamera::view() const
     return glm::lookAt(eye(), target, glm::vec3(0.0f, 1.0f, 0.0f));
 }
 
-glm::mat4 OrbitCamera::projection(float aspect, Projection kind) const
+float OrbitCamera::tanHalfFovY(float aspect)
 {
     // A view narrower than it is high (a side-by-side half, a portrait window) keeps the
     // horizontal field a square view has, so the object fits its width instead of being cut.
     const float fit = aspect < 1.0f ? 1.0f / std::max(aspect, 1e-3f) : 1.0f;
-    const float tanHalf = std::tan(glm::radians(kFovYDegrees) * 0.5f) * fit;
+    return std::tan(glm::radians(kFovYDegrees) * 0.5f) * fit;
+}
+
+glm::mat4 OrbitCamera::projection(float aspect, Projection kind) const
+{
+    const float tanHalf = tanHalfFovY(aspect);
     if (kind == Projection::Perspective)
         return glm::perspective(2.0f * std::atan(tanHalf), aspect, kNear, kFar);
     const float halfHeight = distance * tanHalf;
@@ -49,12 +54,12 @@ void OrbitCamera::orbit(float dYawDegrees, float dPitchDegrees)
     pitchDegrees = glm::clamp(pitchDegrees + dPitchDegrees, -kMaxPitch, kMaxPitch);
 }
 
-void OrbitCamera::pan(float dxView, float dyView)
+void OrbitCamera::pan(float dxView, float dyView, float aspect)
 {
     const glm::mat4 toWorld = glm::inverse(view());
     const glm::vec3 right(toWorld[0]);
     const glm::vec3 up(toWorld[1]);
-    const float height = 2.0f * distance * std::tan(glm::radians(kFovYDegrees) * 0.5f);
+    const float height = 2.0f * distance * tanHalfFovY(aspect); // as projection() shows it
     target += (-dxView * right + dyView * up) * height;
 }
 

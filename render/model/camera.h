@@ -24,8 +24,11 @@ struct OrbitCamera
     glm::mat4 projection(float aspect, Projection kind) const;
 
     void orbit(float dYawDegrees, float dPitchDegrees);
-    void pan(float dxView, float dyView); // in units of the view height at the target
-    void zoom(float steps);               // positive steps move closer
+    // In units of the view height, for a view of `aspect`: the target follows the cursor.
+    void pan(float dxView, float dyView, float aspect = 1.0f);
+    // tan(fovy / 2) of a view of `aspect` (projection() and pan() share it).
+    static float tanHalfFovY(float aspect);
+    void zoom(float steps); // positive steps move closer
 };
 
 } // namespace lb

@@ -62,8 +62,37 @@ void ShaderDocument::setSource(ShaderStage s, const QString &text)
         return;
     stage(s).text = text;
     emit sourceChanged(s);
+    if (m_replaced && m_stages[0].text == m_replaced->stages[0].text &&
+        m_stages[1].text == m_replaced->stages[1].text)
+        restoreReplaced();
     announceFiles();
     emit changed();
+}
+
+ShaderDocument::Snapshot ShaderDocument::snapshot() const
+{
+    return {m_stages, m_origin, m_builtInGouraud, m_builtInText};
+}
+
+bool ShaderDocument::otherStageAwaitsUndo(ShaderStage s) const
+{
+    if (!m_replaced)
+        return false;
+    const int i = s == ShaderStage::Fragment ? 1 : 0;
+    const std::size_t self = std::size_t(i), other = std::size_t(1 - i);
+    return m_stages[self].text == m_replaced->stages[self].text &&
+           m_stages[other].text == m_replacement[other] &&
+           m_replacement[other] != m_replaced->stages[other].text;
+}
+
+void ShaderDocument::restoreReplaced()
+{
+    m_stages = m_replaced->stages;
+    m_origin = m_replaced->origin;
+    m_builtInGouraud = m_replaced->builtInGouraud;
+    m_builtInText = m_replaced->builtInText;
+    m_replaced.reset();
+    watch();
 }
 
 void ShaderDocument::take(Stage &stage, const QString &text, const QString &path)
@@ -73,8 +102,14 @@ void ShaderDocument::take(Stage &stage, const QString &text, const QString &path
     stage.unsaved = false;
 }
 
-void ShaderDocument::loaded(const ShaderOrigin &origin, std::optional<bool> builtInGouraud)
+void ShaderDocument::loaded(const Snapshot &before, const ShaderOrigin &origin,
+                            std::optional<bool> builtInGouraud)
 {
+    // Only text worth bringing back is remembered (not the empty editor before a start).
+    if (!before.stages[0].text.isEmpty() || !before.stages[1].text.isEmpty()) {
+        m_replaced = before;
+        m_replacement = {m_stages[0].text, m_stages[1].text};
+    }
     m_origin = origin;
     m_builtInGouraud = builtInGouraud;
     if (builtInGouraud)
@@ -89,20 +124,22 @@ void ShaderDocument::loaded(const ShaderOrigin &origin, std::optional<bool> buil
 
 void ShaderDocument::setSources(const QString &vertex, const QString &fragment)
 {
+    const Snapshot before = snapshot();
     take(m_stages[0], vertex, {});
     take(m_stages[1], fragment, {});
-    loaded({});
+    loaded(before, {});
 }
 
 void ShaderDocument::loadPreset(const Preset &preset)
 {
+    const Snapshot before = snapshot();
     take(m_stages[0], preset.vertexSource(), {});
     take(m_stages[1], preset.fragmentSource(), {});
     std::optional<bool> builtIn;
     for (bool gouraud : {false, true})
         if (&builtInPreset(gouraud) == &preset)
             builtIn = gouraud;
-    loaded({ShaderOrigin::Kind::Preset, preset.name, false}, builtIn);
+    loaded(before, {ShaderOrigin::Kind::Preset, preset.name, false}, builtIn);
 }
 
 void ShaderDocument::followShading(bool gouraud)
@@ -125,7 +162,7 @@ ShaderDocument::FixedModel ShaderDocument::fixedModel() const
         return {m_builtInGouraud, std::nullopt};
     if (m_origin.kind == ShaderOrigin::Kind::Preset)
         if (const Preset *p = presetNamed(m_origin.name))
-            return {p->gouraud, p->blinn};
+            return {p->gouraud, p->blinn, p->parallelView};
     return {};
 }
 
@@ -170,11 +207,12 @@ QString ShaderDocument::openFiles(const QStringList &paths)
         text[i] = QString::fromUtf8(f.readAll());
     }
     // A stage with no file chosen keeps its text, its file and its unsaved edits.
+    const Snapshot before = snapshot();
     for (int i = 0; i < 2; ++i)
         if (!chosen[i].isEmpty())
             take(m_stages[std::size_t(i)], text[i], QFileInfo(chosen[i]).absoluteFilePath());
     const QString named = m_stages[0].path.isEmpty() ? m_stages[1].path : m_stages[0].path;
-    loaded({ShaderOrigin::Kind::Files, QFileInfo(named).completeBaseName(), false});
+    loaded(before, {ShaderOrigin::Kind::Files, QFileInfo(named).completeBaseName(), false});
     return {};
 }
 
@@ -270,9 +308,10 @@ void ShaderDocument::setProgram(const std::optional<ProgramText> &program, bool 
         loadPreset(builtInPreset(gouraud));
         return;
     }
+    const Snapshot before = snapshot();
     take(m_stages[0], program->vertex, {});
     take(m_stages[1], program->fragment, {});
-    loaded({ShaderOrigin::Kind::Scene, program->name, program->edited});
+    loaded(before, {ShaderOrigin::Kind::Scene, program->name, program->edited});
 }
 
 void ShaderDocument::saveState(QSettings &settings) const
@@ -314,8 +353,9 @@ bool ShaderDocument::restoreState(QSettings &settings)
     if (saved && !builtIn.isEmpty()) {
         loadPreset(builtInPreset(builtIn == "gouraud"));
     } else if (saved) {
+        const Snapshot before = snapshot();
         m_stages = {stages[0], stages[1]};
-        loaded(origin);
+        loaded(before, origin);
     }
     return saved;
 }

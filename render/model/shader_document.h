@@ -76,6 +76,7 @@ public:
     {
         std::optional<bool> gouraud;
         std::optional<bool> blinn;
+        bool parallelView = false; // V = (0,0,1) whatever the projection
     };
     FixedModel fixedModel() const;
 
@@ -104,6 +105,12 @@ public:
     // Asks for the program to be built from the current sources.
     void requestCompile();
 
+    // Undoing a replacement (a preset, an example, a reset, files opened over the text): when
+    // the user's undo has brought `stage` back to its text from before, while the other stage
+    // still shows what replaced it, the view should undo the other stage too. Once both are
+    // back, the document is again what it was: origin, files and built-in included.
+    bool otherStageAwaitsUndo(ShaderStage stage) const;
+
 signals:
     void sourceChanged(lb::ShaderStage stage); // edited or replaced
     void filesChanged();                       // a file path or a modified flag changed
@@ -124,10 +131,21 @@ private:
     Stage &stage(ShaderStage s) { return m_stages[s == ShaderStage::Fragment ? 1 : 0]; }
     const Stage &stage(ShaderStage s) const { return m_stages[s == ShaderStage::Fragment ? 1 : 0]; }
     static void take(Stage &stage, const QString &text, const QString &path);
-    // Takes `origin` and the built-in shown (the caller has set the stages), announces it all
-    // and asks for a compile.
-    void loaded(const ShaderOrigin &origin, std::optional<bool> builtInGouraud = std::nullopt);
-    void announceFiles(); // filesChanged() when a path or a modified flag differs from before
+    // What a replacement can bring back.
+    struct Snapshot
+    {
+        std::array<Stage, 2> stages;
+        ShaderOrigin origin;
+        std::optional<bool> builtInGouraud;
+        std::array<QString, 2> builtInText;
+    };
+    Snapshot snapshot() const;
+    // Takes `origin` and the built-in shown (the caller has set the stages, `before` is the
+    // document before that), announces it all and asks for a compile.
+    void loaded(const Snapshot &before, const ShaderOrigin &origin,
+                std::optional<bool> builtInGouraud = std::nullopt);
+    void restoreReplaced(); // both stages are back at the texts from before the replacement
+    void announceFiles();   // filesChanged() when a path or a modified flag differs from before
     void watch();
     void fileChangedOnDisk(const QString &path);
     QString writeFiles(const QString &vertexPath, const QString &fragmentPath);
@@ -136,6 +154,8 @@ private:
     ShaderOrigin m_origin;                // `edited`: already edited when it was loaded
     std::optional<bool> m_builtInGouraud; // the built-in program loaded, Gouraud or Phong
     std::array<QString, 2> m_builtInText; // its sources
+    std::optional<Snapshot> m_replaced;   // the document before the last replacement
+    std::array<QString, 2> m_replacement; // the texts that replacement put in
     struct Announced
     {
         QString paths[2];

@@ -72,6 +72,21 @@ private slots:
         QVERIFY(glm::dot(wrong, right) < 0.95f);
     }
 
+    // Dragging a tenth of the view's height moves the picture a tenth of its height, in wide
+    // and narrow views alike (the point under the cursor stays under it).
+    void panFollowsTheCursorInAnyAspect()
+    {
+        for (float aspect : {0.4f, 1.0f, 2.0f}) {
+            OrbitCamera camera;
+            const glm::vec3 before = camera.target;
+            camera.pan(0.0f, 0.1f, aspect);
+            const glm::vec4 clip = camera.projection(aspect, Projection::Perspective) *
+                                   camera.view() * glm::vec4(before, 1.0f);
+            QVERIFY2(std::abs(clip.y / clip.w + 0.2f) < 1e-3f,
+                     qPrintable(QString("aspect %1: %2").arg(aspect).arg(clip.y / clip.w)));
+        }
+    }
+
     void viewMatrixOfTheOrbitCamera()
     {
         const Frames f = computeFrames(straightOnScene(), 1);

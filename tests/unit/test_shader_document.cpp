@@ -44,6 +44,53 @@ private:
     QTemporaryDir m_dir;
 
 private slots:
+    // Undoing a replacement stage by stage brings the whole document back: origin, files,
+    // built-in; what the slides' presets fix and what an edited built-in keeps follow.
+    void undoingAReplacementBringsTheDocumentBack()
+    {
+        const QString base = m_dir.filePath("mine");
+        QVERIFY(writeFile(base + ".vert", toon().vertexSource()));
+        QVERIFY(writeFile(base + ".frag", toon().fragmentSource() + "// mine\n"));
+        ShaderDocument d;
+        QCOMPARE(d.openFiles({base + ".vert"}), QString());
+        d.setSource(ShaderStage::Fragment, d.source(ShaderStage::Fragment) + "// typed\n");
+        const QString vertex = d.source(ShaderStage::Vertex);
+        const QString fragment = d.source(ShaderStage::Fragment);
+        const ShaderOrigin origin = d.origin();
+        QVERIFY(origin.edited);
+        QVERIFY(!d.fixedModel().gouraud); // a file's program is free
+
+        d.loadPreset(presets()[2]); // the slides' Gouraud: fixes Gouraud, N.H and V
+        QVERIFY(d.fixedModel().gouraud && *d.fixedModel().gouraud);
+        QVERIFY(d.fixedModel().blinn && *d.fixedModel().blinn);
+        QVERIFY(d.fixedModel().parallelView);
+        QVERIFY(!d.otherStageAwaitsUndo(ShaderStage::Fragment));
+        // The editor's Ctrl+Z on the fragment stage: the vertex stage should follow.
+        d.setSource(ShaderStage::Fragment, fragment);
+        QVERIFY(d.otherStageAwaitsUndo(ShaderStage::Fragment));
+        d.setSource(ShaderStage::Vertex, vertex);
+        QVERIFY(!d.otherStageAwaitsUndo(ShaderStage::Vertex));
+        QCOMPARE(d.origin(), origin);
+        QCOMPARE(d.filePath(ShaderStage::Fragment), QFileInfo(base + ".frag").absoluteFilePath());
+        QVERIFY(d.isModified(ShaderStage::Fragment)); // the typed line is still unsaved
+        QVERIFY(!d.isModified(ShaderStage::Vertex));
+        QVERIFY(!d.fixedModel().gouraud);
+
+        // An edited built-in Gouraud program keeps its shading; replaced and brought back,
+        // it keeps it again.
+        d.loadPreset(builtInPreset(true));
+        QVERIFY(!d.fixedModel().gouraud); // untouched: it follows the panel
+        d.setSource(ShaderStage::Vertex, d.source(ShaderStage::Vertex) + "// note\n");
+        QVERIFY(d.fixedModel().gouraud && *d.fixedModel().gouraud);
+        const QString edited = d.source(ShaderStage::Vertex);
+        const QString builtInFragment = d.source(ShaderStage::Fragment);
+        d.loadPreset(builtInPreset(false));
+        d.setSource(ShaderStage::Vertex, edited);
+        d.setSource(ShaderStage::Fragment, builtInFragment);
+        QCOMPARE(d.builtInBase(), std::optional<bool>(true));
+        QVERIFY(d.fixedModel().gouraud && *d.fixedModel().gouraud);
+    }
+
     void builtInFollowsTheShadingUntilEdited()
     {
         ShaderDocument d;
