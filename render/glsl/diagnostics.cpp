@@ -1,5 +1,7 @@
 #include "diagnostics.h"
 
+#include <algorithm>
+
 #include <QRegularExpression>
 
 namespace lb {
@@ -34,8 +36,9 @@ const std::vector<LogForm> &logForms()
 
 const QRegularExpression &placelessForm()
 {
-    // "error: message" with no place, or any other non-empty line (a link log).
-    static const QRegularExpression form(R"(^\s*(error|warning)\s*:?\s*(.*)$)",
+    // "error: message" with no place, or any other non-empty line (a link log). Mesa's link
+    // log joins repeated messages with a "." at the start of the next: ".warning: ...".
+    static const QRegularExpression form(R"(^[\s.]*(error|warning)\s*:?\s*(.*)$)",
                                          QRegularExpression::CaseInsensitiveOption);
     return form;
 }
@@ -74,7 +77,7 @@ std::vector<Diagnostic> parseDriverLog(const QString &log, ShaderStage stage, in
     std::vector<Diagnostic> out;
     for (const QString &raw : log.split('\n')) {
         const QString line = raw.trimmed();
-        if (line.isEmpty())
+        if (line.isEmpty() || line == ".") // Mesa ends a link log with a lone "."
             continue;
         Diagnostic d;
         d.stage = stage;
@@ -104,7 +107,13 @@ std::vector<Diagnostic> parseDriverLog(const QString &log, ShaderStage stage, in
         }
         if (d.message.isEmpty())
             d.message = line;
-        out.push_back(d);
+        // Mesa repeats a link warning once per use; once is enough in the list.
+        const bool repeated = std::any_of(out.begin(), out.end(), [&](const Diagnostic &o) {
+            return o.severity == d.severity && o.line == d.line && o.column == d.column &&
+                   o.message == d.message;
+        });
+        if (!repeated)
+            out.push_back(d);
     }
     return out;
 }

@@ -38,6 +38,12 @@ private slots:
         QTest::newRow("mesa link, no severity")
             << "Too many vertex shader default uniform block components" << 0 << 0 << 0 << true
             << "Too many vertex shader default uniform block components";
+        // Mesa joins a link log's repeated warnings with a "." and ends it with a lone one.
+        QTest::newRow("mesa link, joined warnings")
+            << "warning: fragment shader varying fPosition not written by vertex shader\n"
+               ".warning: fragment shader varying fPosition not written by vertex shader\n."
+            << 0 << 0 << 0 << false
+            << "fragment shader varying fPosition not written by vertex shader";
         QTest::newRow("nvidia error")
             << "0(12) : error C0000: syntax error, unexpected '}' at token \"}\"" << 0 << 12 << 0
             << true << "syntax error, unexpected '}' at token \"}\"";
@@ -61,7 +67,7 @@ private slots:
         QFETCH(bool, error);
         QFETCH(QString, message);
         const auto d = parseDriverLog(log, ShaderStage::Fragment, linesAdded);
-        QCOMPARE(int(d.size()), 1);
+        QCOMPARE(int(d.size()), 1); // a repeated message once
         QCOMPARE(d[0].line, line);
         QCOMPARE(d[0].column, column);
         QCOMPARE(d[0].severity == Severity::Error, error);
