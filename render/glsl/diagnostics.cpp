@@ -1,8 +1,8 @@
 #include "diagnostics.h"
 
-#include <algorithm>
-
 #include <QRegularExpression>
+
+#include <algorithm>
 
 namespace lb {
 
