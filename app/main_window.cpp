@@ -231,7 +231,7 @@ void MainWindow::arrangeDocks(DockLayout layout)
         addDockWidget(Qt::LeftDockWidgetArea, shading, Qt::Vertical);
         for (std::size_t i = 3; i < m_panelDocks.size(); ++i)
             tabifyDockWidget(shading, m_panelDocks[i]);
-    } else {
+    } else if (layout == DockLayout::Compact || !presentationIsShort()) {
         // Compact: one column of tabs down the left edge, whose names stay whole. Presentation:
         // the same tabs under the editor, so the view keeps the whole left and the panels
         // get the editor's width (they need it at a big scale).
@@ -240,12 +240,21 @@ void MainWindow::arrangeDocks(DockLayout layout)
                       light, Qt::Vertical);
         for (std::size_t i = 1; i < m_panelDocks.size(); ++i)
             tabifyDockWidget(light, m_panelDocks[i]);
+    } else {
+        // Presentation on a short screen (a 720-line projector): the panels are tabs beside
+        // the editor, each with the whole height, rather than a strip of three rows under it.
+        tabifyDockWidget(m_editorDock, light);
+        for (std::size_t i = 1; i < m_panelDocks.size(); ++i)
+            tabifyDockWidget(light, m_panelDocks[i]);
     }
     applyTabPositions();
     for (QDockWidget *dock : m_panelDocks)
         dock->show();
     m_editorDock->show();
-    (layout == DockLayout::Wide ? shading : light)->raise();
+    (layout == DockLayout::Wide                                    ? shading
+     : layout == DockLayout::Presentation && presentationIsShort() ? m_editorDock
+                                                                   : light)
+        ->raise();
     applyDockWidths();
     // The docks' tab bars exist once the layout has run: names whole, scrolled when short.
     QTimer::singleShot(0, this, [this] {
@@ -254,6 +263,11 @@ void MainWindow::arrangeDocks(DockLayout layout)
             bar->setUsesScrollButtons(true);
         }
     });
+}
+
+bool MainWindow::presentationIsShort() const
+{
+    return height() < 900; // full screen: the screen's height
 }
 
 void MainWindow::applyTabPositions()
@@ -277,7 +291,8 @@ void MainWindow::applyDockWidths()
         // The editor over the panels on the right; the view has the rest of the width.
         const int h = std::max(height() - menuBar()->height() - statusBar()->height(), 100);
         resizeDocks({m_editorDock}, {shares.editor}, Qt::Horizontal);
-        resizeDocks({m_editorDock, m_panelDocks[0]}, {h * 7 / 10, h * 3 / 10}, Qt::Vertical);
+        if (!presentationIsShort())
+            resizeDocks({m_editorDock, m_panelDocks[0]}, {h * 7 / 10, h * 3 / 10}, Qt::Vertical);
         return;
     }
     // The panels get at least what their widest form needs (at this UI scale), so none
@@ -327,6 +342,9 @@ void MainWindow::setPresentation(bool on)
     m_presentation = on;
     applyScale();
     if (on) {
+        // The whole screen also where no window manager answers the full-screen request.
+        if (const QScreen *s = screen())
+            setGeometry(s->geometry());
         showFullScreen();
         arrangeDocks(DockLayout::Presentation);
     } else {

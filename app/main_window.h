@@ -93,6 +93,7 @@ private:
     void applyScale();
     void applyDockWidths();
     void applyTabPositions();
+    bool presentationIsShort() const; // a screen under 900 lines: panels beside the editor
     void keepInsideScreen();
 
     QSettings &m_settings;

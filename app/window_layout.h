@@ -10,6 +10,7 @@ enum class DockLayout {
     Wide,         // from 1600 pixels of width: Light and Material above the other panels
     Compact,      // below: every panel a tab down the left edge, the editor narrower
     Presentation, // full screen: the view large on the left, the editor over the panels' tabs
+                  // (beside them, as tabs of one column, on a screen under 900 lines)
 };
 
 DockLayout dockLayoutFor(int availableWidth);
