@@ -1,0 +1,251 @@
+// MainWindow and its screen: the docks arranged for the screen's width, the window kept
+// inside it, presentation mode and the UI scale.
+#include "main_window.h"
+
+#include "editor_panel.h"
+#include "main_window_settings.h"
+
+#include <QAction>
+#include <QActionGroup>
+#include <QDockWidget>
+#include <QFormLayout>
+#include <QMenuBar>
+#include <QScreen>
+#include <QScrollArea>
+#include <QScrollBar>
+#include <QSettings>
+#include <QStatusBar>
+#include <QTabBar>
+#include <QTimer>
+
+#include <algorithm>
+#include <cmath>
+
+namespace lb {
+
+using namespace window_settings;
+
+QDockWidget *MainWindow::addPanelDock(const QString &title, const QString &objectName,
+                                      QWidget *panel)
+{
+    // Narrow docks put a form's field under its label instead of scrolling sideways.
+    for (QFormLayout *form : panel->findChildren<QFormLayout *>())
+        form->setRowWrapPolicy(QFormLayout::WrapLongRows);
+    auto *scroll = new QScrollArea; // a dock whose panel scrolls when the screen is too short
+    scroll->setWidget(panel);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    auto *dock = new QDockWidget(title, this);
+    dock->setObjectName(objectName); // saveState() needs it
+    dock->setWidget(scroll);
+    addDockWidget(Qt::LeftDockWidgetArea, dock);
+    m_panelDocks.push_back(dock);
+    return dock;
+}
+
+void MainWindow::fitToScreen(const QRect &available)
+{
+    m_available = available;
+    const bool wasLarge = isFullScreen() || isMaximized();
+    if (wasLarge)
+        showNormal();
+    setGeometry(initialGeometry(available));
+    if (wasLarge) // the window manager answers showNormal() with its own geometry later
+        QTimer::singleShot(0, this, [this] { setGeometry(initialGeometry(m_available)); });
+    arrangeDocks(dockLayoutFor(available.width()));
+}
+
+void MainWindow::keepInsideScreen()
+{
+    // setGeometry() places the inside of the window; a window manager's frame comes on top.
+    // Once the frame is known, the whole window shrinks into the available area.
+    if (isFullScreen() || isMaximized() || m_available.isEmpty())
+        return;
+    const QRect frame = frameGeometry();
+    if (m_available.contains(frame))
+        return;
+    const QSize margins = frame.size() - geometry().size();
+    const QRect inside =
+        initialGeometry(m_available, size().boundedTo(m_available.size() - margins));
+    resize(inside.size());
+    move(inside.topLeft() - QPoint(margins.width() / 2, 0));
+}
+
+void MainWindow::arrangeDocks(DockLayout layout)
+{
+    m_layout = layout;
+    for (QDockWidget *dock : m_panelDocks) {
+        dock->setFloating(false);
+        removeDockWidget(dock);
+    }
+    removeDockWidget(m_editorDock);
+    m_editorDock->setFloating(false);
+    QDockWidget *light = m_panelDocks[0];
+    QDockWidget *shading = m_panelDocks[2];
+    addDockWidget(Qt::RightDockWidgetArea, m_editorDock);
+    if (layout == DockLayout::Wide) {
+        // Light over Material over the rest as tabs: the two most used panels open at once.
+        addDockWidget(Qt::LeftDockWidgetArea, light);
+        addDockWidget(Qt::LeftDockWidgetArea, m_panelDocks[1], Qt::Vertical);
+        addDockWidget(Qt::LeftDockWidgetArea, shading, Qt::Vertical);
+        for (std::size_t i = 3; i < m_panelDocks.size(); ++i)
+            tabifyDockWidget(shading, m_panelDocks[i]);
+    } else if (layout == DockLayout::Compact || !presentationIsShort()) {
+        // Compact: one column of tabs down the left edge, whose names stay whole. Presentation:
+        // the same tabs under the editor, so the view keeps the whole left and the panels
+        // get the editor's width (they need it at a big scale).
+        addDockWidget(layout == DockLayout::Compact ? Qt::LeftDockWidgetArea
+                                                    : Qt::RightDockWidgetArea,
+                      light, Qt::Vertical);
+        for (std::size_t i = 1; i < m_panelDocks.size(); ++i)
+            tabifyDockWidget(light, m_panelDocks[i]);
+    } else {
+        // Presentation on a short screen (a 720-line projector): the panels are tabs beside
+        // the editor, each with the whole height, rather than a strip of three rows under it.
+        tabifyDockWidget(m_editorDock, light);
+        for (std::size_t i = 1; i < m_panelDocks.size(); ++i)
+            tabifyDockWidget(light, m_panelDocks[i]);
+    }
+    applyTabPositions();
+    for (QDockWidget *dock : m_panelDocks)
+        dock->show();
+    m_editorDock->show();
+    (layout == DockLayout::Wide                                    ? shading
+     : layout == DockLayout::Presentation && presentationIsShort() ? m_editorDock
+                                                                   : light)
+        ->raise();
+    applyDockWidths();
+    // The docks' tab bars exist once the layout has run: names whole, scrolled when short.
+    QTimer::singleShot(0, this, [this] {
+        for (QTabBar *bar : findChildren<QTabBar *>(Qt::FindDirectChildrenOnly)) {
+            bar->setElideMode(Qt::ElideNone);
+            bar->setUsesScrollButtons(true);
+        }
+    });
+}
+
+bool MainWindow::presentationIsShort() const
+{
+    return height() < 900; // full screen: the screen's height
+}
+
+void MainWindow::applyTabPositions()
+{
+    setTabPosition(Qt::LeftDockWidgetArea,
+                   m_layout == DockLayout::Compact ? QTabWidget::West : QTabWidget::North);
+    setTabPosition(Qt::RightDockWidgetArea, QTabWidget::North);
+}
+
+void MainWindow::applyDockWidths()
+{
+    // Before the window is shown its layout has no size to share out: the widths wait.
+    if (!isVisible()) {
+        m_widthsPending = true;
+        return;
+    }
+    m_widthsPending = false;
+    const int w = width();
+    const DockWidths shares = dockWidths(m_layout, w);
+    if (m_layout == DockLayout::Presentation) {
+        // The editor over the panels on the right; the view has the rest of the width.
+        const int h = std::max(height() - menuBar()->height() - statusBar()->height(), 100);
+        resizeDocks({m_editorDock}, {shares.editor}, Qt::Horizontal);
+        if (!presentationIsShort())
+            resizeDocks({m_editorDock, m_panelDocks[0]}, {h * 7 / 10, h * 3 / 10}, Qt::Vertical);
+        return;
+    }
+    // The panels get at least what their widest form needs (at this UI scale), so none
+    // scrolls sideways; the editor gives way, down to 22% of the window, before the view's
+    // share does.
+    int need = 0;
+    for (QDockWidget *dock : m_panelDocks) {
+        auto *scroll = qobject_cast<QScrollArea *>(dock->widget());
+        const QSize panel = scroll->widget()->minimumSizeHint();
+        int width = panel.width() + 2 * scroll->frameWidth();
+        if (panel.height() > scroll->viewport()->height())
+            width += scroll->verticalScrollBar()->sizeHint().width();
+        need = std::max(need, width);
+    }
+    if (m_layout == DockLayout::Compact) // the tab bar down the edge
+        need += fontMetrics().height() + 14;
+    const int panels = std::max(shares.panels, need);
+    const int editor = std::max(std::min(shares.editor, int(w * 0.53) - panels), int(w * 0.22));
+    resizeDocks({m_panelDocks[0], m_editorDock}, {panels, editor}, Qt::Horizontal);
+}
+
+void MainWindow::resizeEvent(QResizeEvent *event)
+{
+    QMainWindow::resizeEvent(event);
+    if (m_presentation) // full screen arrives after the request
+        applyDockWidths();
+}
+
+void MainWindow::showEvent(QShowEvent *event)
+{
+    QMainWindow::showEvent(event);
+    QTimer::singleShot(200, this, &MainWindow::keepInsideScreen); // the frame has come by then
+    if (m_widthsPending)
+        QTimer::singleShot(0, this, &MainWindow::applyDockWidths);
+}
+
+void MainWindow::setPresentation(bool on)
+{
+    if (on == m_presentation)
+        return;
+    if (on) {
+        m_normalGeometry = saveGeometry();
+        m_normalState = saveState(kStateVersion);
+        m_normalLayout = m_layout;
+        m_normalRect = geometry();
+    }
+    m_presentation = on;
+    applyScale();
+    if (on) {
+        // The whole screen also where no window manager answers the full-screen request.
+        if (const QScreen *s = screen())
+            setGeometry(s->geometry());
+        showFullScreen();
+        arrangeDocks(DockLayout::Presentation);
+    } else {
+        showNormal();
+        m_layout = m_normalLayout;
+        applyTabPositions(); // not part of the saved state
+        restoreState(m_normalState, kStateVersion);
+        // The rectangle itself, again once the window manager has answered showNormal():
+        // restoreGeometry() from full screen put the window 20 pixels low under Xvfb.
+        setGeometry(m_normalRect);
+        QTimer::singleShot(0, this, [this] {
+            if (!m_presentation)
+                setGeometry(m_normalRect);
+        });
+    }
+    if (m_presentationAction)
+        m_presentationAction->setChecked(on);
+}
+
+void MainWindow::setUiScale(double scale)
+{
+    (m_presentation ? m_presentationScale : m_scale) = clampUiScale(scale);
+    m_settings.setValue(kScaleKey, m_scale);
+    m_settings.setValue(kPresentationScaleKey, m_presentationScale);
+    applyScale();
+    // The panels' forms grew or shrank with the font: their widths again, once laid out.
+    QTimer::singleShot(0, this, &MainWindow::applyDockWidths);
+}
+
+double MainWindow::uiScale() const
+{
+    return m_presentation ? m_presentationScale : m_scale;
+}
+
+void MainWindow::applyScale()
+{
+    const double scale = uiScale();
+    applyUiScale(scale);
+    m_editor->setUiScale(scale);
+    if (m_scaleGroup)
+        for (QAction *a : m_scaleGroup->actions())
+            a->setChecked(a->data().toInt() == int(std::lround(scale * 100.0)));
+}
+
+} // namespace lb

@@ -1,0 +1,174 @@
+// MainWindow's menus: files, edit, shading, view (camera, probe, zoom, presentation, scale,
+// docks) and help.
+#include "main_window.h"
+
+#include "editor_panel.h"
+#include "help.h"
+#include "main_window_settings.h"
+#include "mesh_actions.h"
+#include "probe_panel.h"
+#include "scene_actions.h"
+#include "shading_panel.h"
+#include "status_line.h"
+#include "viewport.h"
+
+#include <QAction>
+#include <QActionGroup>
+#include <QComboBox>
+#include <QDockWidget>
+#include <QFileDialog>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QScreen>
+
+namespace lb {
+
+using namespace window_settings;
+
+void MainWindow::buildMenus()
+{
+    auto addItem = [this](QMenu *menu, const QString &text, const QKeySequence &key, auto slot) {
+        QAction *action = menu->addAction(text);
+        action->setShortcut(key);
+        connect(action, &QAction::triggered, this, slot);
+        return action;
+    };
+
+    QMenu *file = menuBar()->addMenu(tr("&File"));
+    m_sceneActions->addToMenu(file);
+    file->addSeparator();
+    const QString filter = tr("Shader pairs (*.vert *.frag);;All files (*)");
+    auto report = [this](const QString &error) {
+        if (!error.isEmpty())
+            QMessageBox::warning(this, tr("Shader files"), error);
+    };
+    // The scene (with its shaders inline) has Ctrl+O / Ctrl+S; shader files their own keys.
+    addItem(file, tr("Open S&haders..."), QKeySequence(tr("Ctrl+Shift+O")), [this, filter, report] {
+        const QStringList paths = QFileDialog::getOpenFileNames(
+            this, tr("Open a shader pair (NAME.vert and NAME.frag)"), {}, filter);
+        if (!paths.isEmpty())
+            report(m_shaders.openFiles(paths));
+    });
+    auto saveAs = [this, filter, report] {
+        const QString path = QFileDialog::getSaveFileName(
+            this, tr("Save the shader pair as NAME.vert and NAME.frag"), {}, filter);
+        if (!path.isEmpty())
+            report(m_shaders.saveAs(path));
+    };
+    addItem(file, tr("Save Shaders"), QKeySequence(tr("Ctrl+Alt+S")), [this, saveAs, report] {
+        if (m_shaders.filePath(ShaderStage::Vertex).isEmpty())
+            saveAs();
+        else
+            report(m_shaders.save());
+    });
+    addItem(file, tr("Save Shaders As..."), QKeySequence(), saveAs);
+    file->addSeparator();
+    QMenu *edit = new QMenu(tr("&Edit"), this); // filled below, shown after File
+    QMenu *view = new QMenu(tr("&View"), this);
+    m_meshActions->addToMenus(file, edit, view);
+    file->addSeparator();
+    addItem(file, tr("Reset &Everything"), QKeySequence(tr("Ctrl+Shift+R")),
+            [this] { resetEverything(); });
+    file->addSeparator();
+    addItem(file, tr("&Quit"), QKeySequence::Quit, [this] { close(); });
+    menuBar()->addMenu(edit);
+
+    QMenu *shading = menuBar()->addMenu(tr("&Shading"));
+    addItem(shading, tr("Toggle &Gouraud / Phong"), QKeySequence(tr("G")), [this] {
+        if (m_shaders.fixedModel().gouraud) { // the program's text fixes its shading
+            m_status->showMessage(m_shading->shadingCombo()->toolTip());
+            return;
+        }
+        m_document.edit([](Scene &s) {
+            s.shading.shading =
+                s.shading.shading == Shading::Phong ? Shading::Gouraud : Shading::Phong;
+        });
+    });
+    addItem(shading, tr("Toggle Phong / &Blinn-Phong specular"), QKeySequence(tr("B")), [this] {
+        if (m_shaders.fixedModel().blinn) {
+            m_status->showMessage(tr("The program in the editor (%1) computes its own specular "
+                                     "term: load a preset or Reset Everything to switch it.")
+                                      .arg(m_editor->programName()));
+            return;
+        }
+        m_document.edit([](Scene &s) {
+            s.shading.specular = s.shading.specular == SpecularModel::Blinn ? SpecularModel::Phong
+                                                                            : SpecularModel::Blinn;
+        });
+    });
+    addItem(shading, tr("Toggle &Perspective / Orthographic"), QKeySequence(tr("P")), [this] {
+        m_document.edit([](Scene &s) {
+            s.shading.projection = s.shading.projection == Projection::Perspective
+                                       ? Projection::Orthographic
+                                       : Projection::Perspective;
+        });
+    });
+    addItem(shading, tr("Toggle &Lighting"), QKeySequence(tr("L")), [this] {
+        m_document.edit([](Scene &s) { s.shading.lighting = !s.shading.lighting; });
+    });
+    addItem(shading, tr("&Compare: Off / Side by Side / Wipe / Difference"), QKeySequence(tr("C")),
+            [this] {
+                m_document.edit(
+                    [](Scene &s) { s.compare.mode = CompareMode((int(s.compare.mode) + 1) % 4); });
+            });
+
+    menuBar()->addMenu(view);
+    addItem(view, tr("&Reset Camera"), QKeySequence(tr("R")),
+            [this] { m_viewport->resetCamera(); });
+    addItem(view, tr("Clear the &Probe"), QKeySequence(tr("Esc")), [this] { m_probe->clear(); });
+    addItem(view, tr("&Auto-rotate"), QKeySequence(tr("Space")), [this] {
+        m_document.edit([](Scene &s) { s.object.autoRotate = !s.object.autoRotate; });
+    });
+    addViewMenu(view);
+
+    QMenu *help = menuBar()->addMenu(tr("&Help"));
+    addItem(help, tr("&Keyboard Shortcuts"), QKeySequence::HelpContents,
+            [this] { showShortcuts(this, menuBar()); });
+    addItem(help, tr("&Features (README)"), QKeySequence(), [this] { showFeatures(this); });
+    addItem(help, tr("&About lightbench"), QKeySequence(), [this] { showAbout(this, m_glInfo); });
+}
+
+void MainWindow::addViewMenu(QMenu *view)
+{
+    view->addSeparator();
+    // Window shortcuts: the editor no longer binds these keys (it typed "=" and "+").
+    QAction *zoomIn = view->addAction(tr("Zoom &In Editor"), this,
+                                      [this] { m_editor->setZoom(m_editor->zoom() + 1); });
+    zoomIn->setShortcuts({QKeySequence::ZoomIn, QKeySequence(tr("Ctrl+="))});
+    QAction *zoomOut = view->addAction(tr("Zoom &Out Editor"), this,
+                                       [this] { m_editor->setZoom(m_editor->zoom() - 1); });
+    zoomOut->setShortcut(QKeySequence::ZoomOut);
+    QAction *zoomReset =
+        view->addAction(tr("Reset Editor &Zoom"), this, [this] { m_editor->setZoom(0); });
+    zoomReset->setShortcut(QKeySequence(tr("Ctrl+0")));
+
+    view->addSeparator();
+    m_presentationAction =
+        view->addAction(tr("&Presentation Mode"), this, [this](bool on) { setPresentation(on); });
+    m_presentationAction->setCheckable(true);
+    m_presentationAction->setShortcut(QKeySequence(tr("F11")));
+    m_presentationAction->setToolTip(
+        tr("Full screen, the presentation UI scale, the view and the editor large"));
+    QMenu *scale = view->addMenu(tr("UI &Scale"));
+    m_scaleGroup = new QActionGroup(this);
+    for (int percent : kScalePercents) {
+        QAction *a = scale->addAction(tr("%1%").arg(percent), this,
+                                      [this, percent] { setUiScale(percent / 100.0); });
+        a->setCheckable(true);
+        a->setData(percent);
+        m_scaleGroup->addAction(a);
+    }
+    applyScale(); // checks the current one
+    view->addAction(tr("Fit the &Window to the Screen"), this, [this] {
+        if (m_presentation)
+            setPresentation(false);
+        if (const QScreen *s = screen())
+            fitToScreen(s->availableGeometry());
+    });
+
+    view->addSeparator();
+    for (QDockWidget *dock : findChildren<QDockWidget *>())
+        view->addAction(dock->toggleViewAction());
+}
+
+} // namespace lb
