@@ -117,9 +117,9 @@ MainWindow::MainWindow(QSettings &settings, QWidget *parent)
     if (m_settings.value(kScreenKey).toSize() == available.size() &&
         restoreGeometry(m_settings.value(kGeometryKey).toByteArray())) {
         m_layout = DockLayout(std::clamp(m_settings.value(kLayoutKey, 0).toInt(), 0, 1));
+        applyTabPositions(); // first: a tab bar down the edge takes width from the docks
         if (restoreState(m_settings.value(kStateKey).toByteArray(), kStateVersion))
             m_widthsPending = false; // the user's own dock sizes
-        applyTabPositions();
     }
 
     m_saveTimer.setSingleShot(true);
@@ -141,8 +141,7 @@ MainWindow::MainWindow(QSettings &settings, QWidget *parent)
     updateStatus();
     updateTitle();
     if (m_editor->restoredUnsavedEdits())
-        m_status->showMessage(tr("Unsaved shader edits from the last session were restored"),
-                              20000);
+        m_status->showMessage(tr("Unsaved shader edits from the last session are back"), 20000);
 }
 
 void MainWindow::resetEverything()

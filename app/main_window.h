@@ -92,6 +92,7 @@ private:
     void resetEverything();
     void applyScale();
     void applyDockWidths();
+    int panelsNeed() const; // the width the widest panel needs, without scrolling sideways
     void applyTabPositions();
     bool presentationIsShort() const; // a screen under 900 lines: panels beside the editor
     void keepInsideScreen();
@@ -123,6 +124,7 @@ private:
     QByteArray m_normalGeometry, m_normalState; // the window before presentation mode
     DockLayout m_normalLayout = DockLayout::Wide;
     QRect m_normalRect;
+    bool m_normalUnsized = false;
     QRect m_available; // the screen area the window was fitted to
     QAction *m_presentationAction = nullptr;
     QActionGroup *m_scaleGroup = nullptr;

@@ -157,6 +157,17 @@ void MainWindow::applyDockWidths()
     // The panels get at least what their widest form needs (at this UI scale), so none
     // scrolls sideways; the editor gives way, down to 22% of the window, before the view's
     // share does.
+    // The tab bar down the edge of the compact layout is outside the docks' width.
+    const int tabBar = m_layout == DockLayout::Compact ? fontMetrics().height() + 14 : 0;
+    const int panels = std::max(shares.panels, panelsNeed() + tabBar);
+    const int editor = std::max(std::min(shares.editor, int(w * 0.53) - panels), int(w * 0.22));
+    resizeDocks({m_panelDocks[0], m_editorDock}, {panels, editor}, Qt::Horizontal);
+}
+
+int MainWindow::panelsNeed() const
+{
+    // The widest panel's form at this UI scale, with a vertical scrollbar where it is taller
+    // than its dock.
     int need = 0;
     for (QDockWidget *dock : m_panelDocks) {
         auto *scroll = qobject_cast<QScrollArea *>(dock->widget());
@@ -166,11 +177,7 @@ void MainWindow::applyDockWidths()
             width += scroll->verticalScrollBar()->sizeHint().width();
         need = std::max(need, width);
     }
-    if (m_layout == DockLayout::Compact) // the tab bar down the edge
-        need += fontMetrics().height() + 14;
-    const int panels = std::max(shares.panels, need);
-    const int editor = std::max(std::min(shares.editor, int(w * 0.53) - panels), int(w * 0.22));
-    resizeDocks({m_panelDocks[0], m_editorDock}, {panels, editor}, Qt::Horizontal);
+    return need;
 }
 
 void MainWindow::resizeEvent(QResizeEvent *event)
@@ -197,6 +204,7 @@ void MainWindow::setPresentation(bool on)
         m_normalState = saveState(kStateVersion);
         m_normalLayout = m_layout;
         m_normalRect = geometry();
+        m_normalUnsized = m_widthsPending; // entered before the docks had their widths
     }
     m_presentation = on;
     applyScale();
@@ -210,13 +218,18 @@ void MainWindow::setPresentation(bool on)
         showNormal();
         m_layout = m_normalLayout;
         applyTabPositions(); // not part of the saved state
-        restoreState(m_normalState, kStateVersion);
-        // The rectangle itself, again once the window manager has answered showNormal():
-        // restoreGeometry() from full screen put the window 20 pixels low under Xvfb.
+        // The rectangle itself (restoreGeometry() from full screen put the window 20 pixels
+        // low under Xvfb), then the docks as they were, once the window has its size again:
+        // restored into the full-screen window, their widths came out wrong.
         setGeometry(m_normalRect);
+        restoreState(m_normalState, kStateVersion);
         QTimer::singleShot(0, this, [this] {
-            if (!m_presentation)
-                setGeometry(m_normalRect);
+            if (m_presentation)
+                return;
+            setGeometry(m_normalRect);
+            restoreState(m_normalState, kStateVersion);
+            if (m_normalUnsized || panelsNeed() > m_panelDocks[0]->width())
+                applyDockWidths();
         });
     }
     if (m_presentationAction)

@@ -72,6 +72,13 @@ void MainWindow::buildMenus()
     file->addSeparator();
     addItem(file, tr("&Quit"), QKeySequence::Quit, [this] { close(); });
     menuBar()->addMenu(edit);
+    // The editor's keys from anywhere in the window (in the editor, it takes them itself).
+    edit->addSeparator();
+    addItem(edit, tr("&Undo in the Editor"), QKeySequence::Undo, [this] { m_editor->undo(); });
+    QAction *redo = addItem(edit, tr("&Redo in the Editor"), QKeySequence(tr("Ctrl+Y")),
+                            [this] { m_editor->redo(); });
+    redo->setShortcuts({QKeySequence(tr("Ctrl+Y")), QKeySequence(tr("Ctrl+Shift+Z"))});
+    addItem(edit, tr("&Find in the Shader"), QKeySequence::Find, [this] { m_editor->startFind(); });
 
     QMenu *shading = menuBar()->addMenu(tr("&Shading"));
     addItem(shading, tr("Toggle &Gouraud / Phong"), QKeySequence(tr("G")), [this] {

@@ -79,8 +79,13 @@ EditorPanel::EditorPanel(ShaderDocument *document, QWidget *parent)
 
     m_find = new QLineEdit(this);
     m_find->setPlaceholderText(tr("Find (Ctrl+F)"));
-    m_find->setClearButtonEnabled(true);
     m_find->setMinimumWidth(m_find->fontMetrics().averageCharWidth() * 5); // narrow docks
+    // Found while typing, from the top; Return goes on to the next one.
+    connect(m_find, &QLineEdit::textEdited, this, [this](const QString &text) {
+        auto *e = static_cast<ShaderEditor *>(m_tabs->currentWidget());
+        if (!text.isEmpty())
+            e->findFirst(text, false, false, false, true, true, 0, 0);
+    });
     connect(m_find, &QLineEdit::returnPressed, this, [this] {
         auto *e = static_cast<ShaderEditor *>(m_tabs->currentWidget());
         e->findFirst(m_find->text(), false, false, false, true);
@@ -140,12 +145,6 @@ EditorPanel::EditorPanel(ShaderDocument *document, QWidget *parent)
         auto *s = new QShortcut(QKeySequence(tr(key)), this, this, &EditorPanel::compileNow);
         s->setContext(Qt::WidgetWithChildrenShortcut);
     }
-    auto *find = new QShortcut(QKeySequence::Find, this);
-    find->setContext(Qt::WidgetWithChildrenShortcut);
-    connect(find, &QShortcut::activated, this, [this] {
-        m_find->setFocus();
-        m_find->selectAll();
-    });
     updateTitles();
 }
 
@@ -274,6 +273,7 @@ void EditorPanel::setZoom(int steps)
 void EditorPanel::setUiScale(double scale)
 {
     m_uiScale = scale;
+    fitMessages();   // the status line's height follows the font
     setZoom(m_zoom); // within what Scintilla shows at this scale
 }
 
@@ -287,6 +287,31 @@ void EditorPanel::applyZoom()
 {
     for (ShaderStage stage : kStages)
         editor(stage)->setZoom(m_zoom + scaleShare());
+}
+
+void EditorPanel::fitMessages()
+{
+    // No empty box under the code: without messages their pane shrinks to the status line.
+    const bool any = m_list->count() > 0;
+    m_list->setVisible(any);
+    m_list->parentWidget()->setMaximumHeight(any ? QWIDGETSIZE_MAX
+                                                 : m_status->fontMetrics().height() + 8);
+}
+
+void EditorPanel::startFind()
+{
+    m_find->setFocus();
+    m_find->selectAll();
+}
+
+void EditorPanel::undo()
+{
+    static_cast<ShaderEditor *>(m_tabs->currentWidget())->undo();
+}
+
+void EditorPanel::redo()
+{
+    static_cast<ShaderEditor *>(m_tabs->currentWidget())->redo();
 }
 
 void EditorPanel::compileNow()
@@ -314,7 +339,7 @@ void EditorPanel::showBuild(const ProgramBuild &build)
             m_list);
         item->setForeground(error ? QColor("#c62828") : QColor("#8a5a00"));
     }
-    m_list->setVisible(m_list->count() > 0); // no empty box under the code
+    fitMessages();
     m_vertex->showDiagnostics(perStage[0]);
     m_fragment->showDiagnostics(perStage[1]);
     updateTitles();

@@ -74,6 +74,9 @@ public:
 
 public slots:
     void compileNow();
+    void startFind(); // Edit > Find in Shader (Ctrl+F), from anywhere in the window
+    void undo();      // in the stage shown (Edit > Undo in the Editor)
+    void redo();
     void showBuild(const lb::ProgramBuild &build);
 
 signals:
@@ -89,6 +92,7 @@ private:
     void jumpTo(int row);
     void updateTitles();
     void applyZoom();
+    void fitMessages();
     int scaleShare() const; // the points the UI scale adds
 
     ShaderDocument *m_document;

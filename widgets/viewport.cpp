@@ -34,6 +34,7 @@ Viewport::Viewport(SceneDocument *document, QWidget *parent)
     m_banner = new QLabel(this);
     m_banner->setStyleSheet("QLabel { background: rgba(120, 20, 20, 200); color: white; "
                             "padding: 4px 8px; }");
+    m_banner->setWordWrap(true); // the whole message also over a narrow view
     m_banner->hide();
     m_compareLabel = new QLabel(this);
     m_compareLabel->setStyleSheet("QLabel { background: rgba(0, 0, 0, 170); color: white; "
@@ -217,12 +218,12 @@ void Viewport::setBanner(const QString &text)
 {
     m_banner->setText(text);
     m_banner->setVisible(!text.isEmpty());
-    m_banner->setGeometry(0, 0, width(), m_banner->sizeHint().height());
+    m_banner->setGeometry(0, 0, width(), m_banner->heightForWidth(width()));
 }
 
 void Viewport::resizeGL(int, int)
 {
-    m_banner->setGeometry(0, 0, width(), m_banner->sizeHint().height());
+    m_banner->setGeometry(0, 0, width(), m_banner->heightForWidth(width()));
     updateCompareLabel();
     emit resized();
 }

@@ -149,6 +149,31 @@ private slots:
         QCOMPARE(m_settings->value("ui/presentationScale").toDouble(), 2.0);
     }
 
+    // F11 there and back, with the scale changed on the way, at a 1024x768 layout: the window
+    // comes back with its rectangle, its tabs down the edge and its docks' widths.
+    void presentationRoundTripKeepsTheWindow()
+    {
+        m_window->fitToScreen(QRect(0, 0, 1024, 744));
+        settle();
+        const QRect rect = m_window->geometry();
+        const double share = viewShare();
+        for (double scale : {1.75, 2.5}) {
+            m_window->setPresentation(true);
+            settle();
+            m_window->setUiScale(scale);
+            settle();
+            m_window->setPresentation(false);
+            settle();
+            QCOMPARE(m_window->geometry(), rect);
+            QCOMPARE(m_window->dockLayout(), DockLayout::Compact);
+            QCOMPARE(m_window->tabPosition(Qt::LeftDockWidgetArea), QTabWidget::West);
+            QVERIFY2(std::abs(viewShare() - share) < 0.02,
+                     qPrintable(QString("view %1 before, %2 after").arg(share).arg(viewShare())));
+            const QString sideways = docksNeedingSideways();
+            QVERIFY2(sideways.isEmpty(), qPrintable("horizontal scrollbar in " + sideways));
+        }
+    }
+
     // Every example frames its object in a view of the size a 1024x768 screen leaves (each
     // half of a side-by-side view too): no object pixel on a view's border, at any turn.
     void examplesFrameTheirObjects()
@@ -429,14 +454,14 @@ private slots:
         QCOMPARE(m_window->sceneActions()->currentPath(), QString());
     }
 
-    void crashRecoveryIsAnnounced()
+    void restoredEditsAreAnnounced()
     {
         ShaderEditor *fragment = m_window->editorPanel()->editor(ShaderStage::Fragment);
         fragment->setText(fragment->text() + "\n// unsaved\n");
         m_window->saveSettings(); // what the autosave does before a kill
         m_window.reset();
         m_window = std::make_unique<MainWindow>(*m_settings);
-        QVERIFY2(m_window->statusLine()->message().contains("restored"),
+        QVERIFY2(m_window->statusLine()->message().contains("are back"),
                  qPrintable(m_window->statusLine()->message()));
     }
 
