@@ -65,10 +65,11 @@ void MainWindow::keepInsideScreen()
     if (m_available.contains(frame))
         return;
     const QSize margins = frame.size() - geometry().size();
-    const QRect inside =
-        initialGeometry(m_available, size().boundedTo(m_available.size() - margins));
-    resize(inside.size());
-    move(inside.topLeft() - QPoint(margins.width() / 2, 0));
+    const QSize inside = size().boundedTo(m_available.size() - margins);
+    const QSize outside = inside + margins;
+    resize(inside);
+    move(m_available.x() + (m_available.width() - outside.width()) / 2, // move() places the frame
+         m_available.y() + (m_available.height() - outside.height()) / 2);
 }
 
 void MainWindow::arrangeDocks(DockLayout layout)
