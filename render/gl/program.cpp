@@ -1,6 +1,7 @@
 #include "program.h"
 
 #include "dialect.h"
+#include "loops.h"
 #include "presets.h"
 
 #include <QByteArray>
@@ -82,6 +83,10 @@ GlShader compile(QOpenGLExtraFunctions &gl, ShaderStage stage, const QString &so
                            .arg(stageName(stage)));
         return {};
     }
+    // Before the driver's silent optimisation draws garbage (or a GPU resets): endless
+    // loops named on their line.
+    for (const Diagnostic &d : endlessLoopWarnings(source, stage))
+        build.diagnostics.push_back(d);
     return shader;
 }
 

@@ -271,6 +271,24 @@ private slots:
         QVERIFY(QFile::exists(png));
     }
 
+    // A loop that never ends is named on its line before the driver drops it silently: a
+    // warning (it still links; the program's fate is the trial's business).
+    void checkNamesEndlessLoops()
+    {
+        const QString vert = m_dir.filePath("loop.vert"), frag = m_dir.filePath("loop.frag");
+        QFile v(vert), f(frag);
+        QVERIFY(v.open(QIODevice::WriteOnly) && f.open(QIODevice::WriteOnly));
+        v.write("attribute vec4 vPosition;\nvoid main() { gl_Position = vPosition; }\n");
+        f.write("precision mediump float;\nvoid main() {\n  float x = 0.5;\n"
+                "  for (;;) { x = x * 0.5; }\n  gl_FragColor = vec4(x);\n}\n");
+        v.close();
+        f.close();
+        const Run r = run({"--check", "--vertex", vert, "--fragment", frag});
+        QVERIFY2(r.out.contains((frag + ":4:3: warning: this loop never ends").toUtf8()),
+                 r.out.constData());
+        QCOMPARE(r.exitCode, 0);
+    }
+
     void shaderEditsSurviveAKill()
     {
         QTemporaryDir config;

@@ -2,6 +2,8 @@
 // The Mesa lines are real llvmpipe output; the others are the documented forms.
 #include "diagnostics.h"
 #include "dialect.h"
+#include "loops.h"
+#include "presets.h"
 
 #include <QTest>
 
@@ -12,6 +14,84 @@ class TestGlslText : public QObject
 {
     Q_OBJECT
 private slots:
+    // Endless loops named on their line; loops that end (or might) left alone.
+    void endlessLoops_data()
+    {
+        QTest::addColumn<QString>("source");
+        QTest::addColumn<int>("line"); // 0: no warning
+        QTest::addColumn<int>("column");
+        QTest::addColumn<QString>("words");
+        const QString head = "precision mediump float;\nuniform float n;\nvoid main() {\n";
+        QTest::newRow("for (;;)") << head + "    float x = 0.0;\n    for (;;) { x += 1.0; }\n}\n"
+                                  << 5 << 5 << "no condition";
+        QTest::newRow("while (true)") << head + "  while (true) {}\n}\n" << 4 << 3 << "always true";
+        QTest::newRow("while (1)") << head + "  while ((1)) { }\n}\n" << 4 << 3 << "always true";
+        QTest::newRow("do while (true)")
+            << head + "  float x;\n  do {\n    x *= 2.0;\n  } while (true);\n}\n"
+            << 5 << 3 << "always true";
+        QTest::newRow("condition nothing changes")
+            << head + "  int i = 0; float s = 0.0;\n  while (i < 10) { s += 1.0; }\n}\n"
+            << 5 << 3 << "reads i";
+        QTest::newRow("for without a step")
+            << head + "  float s = 0.0;\n  for (int i = 0; i < int(n); ) s += 1.0;\n}\n"
+            << 5 << 3 << "reads i, n";
+        QTest::newRow("a comment and a #define between")
+            << head + "#define FOREVER for(;;)\n  /* for (;;) */ // while (true)\n"
+                      "  for ( ; ; )\n  {\n  }\n}\n"
+            << 6 << 3 << "no condition";
+        // Not named:
+        QTest::newRow("counted") << head + "  for (int i = 0; i < 4; ++i) {}\n}\n" << 0 << 0 << "";
+        QTest::newRow("break") << head + "  for (;;) { if (n > 1.0) break; }\n}\n" << 0 << 0 << "";
+        QTest::newRow("discard") << head + "  while (true) { discard; }\n}\n" << 0 << 0 << "";
+        QTest::newRow("changed in the body")
+            << head + "  float k = n + 2.0;\n  while (k > 0.0) { k = k * 1.0 + 0.0001; }\n}\n"
+            << 0 << 0 << "";
+        QTest::newRow("member changed")
+            << head + "  vec3 v;\n  while (v.x < 1.0) { v.x += 0.5; }\n}\n"
+            << 0 << 0 << "";
+        QTest::newRow("array element changed")
+            << head + "  float a[2];\n  while (a[0] < 1.0) a[0]++;\n}\n"
+            << 0 << 0 << "";
+        QTest::newRow("changed in the condition")
+            << head + "  int i = 0;\n  while (i++ < 10) {}\n}\n"
+            << 0 << 0 << "";
+        QTest::newRow("a function of the file") << "float g;\nvoid step2() { g += 1.0; }\nvoid "
+                                                   "main() {\n  while (g < 4.0) step2();\n}\n"
+                                                << 0 << 0 << "";
+        QTest::newRow("do while that ends")
+            << head + "  int i = 0;\n  do { i++; } while (i < 3);\n}\n"
+            << 0 << 0 << "";
+    }
+
+    void endlessLoops()
+    {
+        QFETCH(QString, source);
+        QFETCH(int, line);
+        QFETCH(int, column);
+        QFETCH(QString, words);
+        const auto d = endlessLoopWarnings(source, ShaderStage::Fragment);
+        if (line == 0) {
+            QVERIFY2(d.empty(), d.empty() ? "" : qPrintable(d[0].message));
+            return;
+        }
+        QCOMPARE(int(d.size()), 1);
+        QCOMPARE(d[0].severity, Severity::Warning);
+        QCOMPARE(d[0].line, line);
+        QCOMPARE(d[0].column, column);
+        QVERIFY2(d[0].message.contains(words), qPrintable(d[0].message));
+    }
+
+    void noPresetHasAnEndlessLoop()
+    {
+        for (const Preset &p : presets())
+            for (const auto &[stage, text] :
+                 {std::pair{ShaderStage::Vertex, p.vertexSource()},
+                  std::pair{ShaderStage::Fragment, p.fragmentSource()}}) {
+                const auto d = endlessLoopWarnings(text, stage);
+                QVERIFY2(d.empty(), qPrintable(p.name + ": " + (d.empty() ? "" : d[0].message)));
+            }
+    }
+
     void driverLogs_data()
     {
         QTest::addColumn<QString>("log");

@@ -72,6 +72,22 @@ private slots:
         fragment->setText(original);
     }
 
+    // for (;;) is named on its line as a warning in the editor (Mesa would drop it silently).
+    void endlessLoopIsNamedOnItsLine()
+    {
+        EditorPanel *e = m_window->editorPanel();
+        ShaderEditor *fragment = e->editor(ShaderStage::Fragment);
+        const QString looping = "#version 330 core\nout vec4 c;\nvoid main() {\n  float x = 1.0;\n"
+                                "  while (true) { x *= 0.5; }\n  c = vec4(x);\n}\n";
+        const std::optional<ProgramBuild> b = buildAfter([&] { fragment->setText(looping); });
+        QVERIFY(b && b->ok());
+        QVERIFY(e->diagnosticsList()->count() >= 1);
+        QVERIFY2(e->diagnosticsList()->item(0)->text().contains("fragment 5:3  warning: this loop "
+                                                                "never ends"),
+                 qPrintable(e->diagnosticsList()->item(0)->text()));
+        QCOMPARE(fragment->markedLineCount(), 1);
+    }
+
     void manualCompileWithCtrlEnter()
     {
         EditorPanel *e = m_window->editorPanel();

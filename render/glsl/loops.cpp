@@ -1,0 +1,350 @@
+#include "loops.h"
+
+#include <QSet>
+#include <QStringList>
+
+#include <algorithm>
+
+namespace lb {
+
+namespace {
+
+struct Token
+{
+    QString text;
+    int line = 1;   // 1-based
+    int column = 1; // 1-based
+    bool identifier = false;
+};
+
+bool startsIdentifier(QChar c)
+{
+    return c.isLetter() || c == '_';
+}
+
+// The tokens of GLSL source, without comments and preprocessor lines.
+std::vector<Token> tokenize(const QString &s)
+{
+    static const QStringList operators{
+        "<<=", ">>=", "++", "--", "+=", "-=", "*=", "/=", "%=", "&=", "|=",
+        "^=",  "==",  "!=", "<=", ">=", "&&", "||", "^^", "<<", ">>"};
+    std::vector<Token> tokens;
+    int line = 1, lineStart = 0;
+    bool lineHasCode = false;
+    const int n = int(s.size());
+    for (int i = 0; i < n;) {
+        const QChar c = s[i];
+        if (c == '\n') {
+            ++line;
+            lineStart = ++i;
+            lineHasCode = false;
+            continue;
+        }
+        if (c.isSpace()) {
+            ++i;
+            continue;
+        }
+        if (c == '/' && i + 1 < n && s[i + 1] == '/') { // to the end of the line
+            while (i < n && s[i] != '\n')
+                ++i;
+            continue;
+        }
+        if (c == '/' && i + 1 < n && s[i + 1] == '*') {
+            i += 2;
+            while (i < n && !(s[i] == '*' && i + 1 < n && s[i + 1] == '/')) {
+                if (s[i] == '\n') {
+                    ++line;
+                    lineStart = i + 1;
+                }
+                ++i;
+            }
+            i += 2;
+            continue;
+        }
+        if (c == '#' && !lineHasCode) { // a preprocessor line, with its continuations
+            while (i < n && s[i] != '\n') {
+                if (s[i] == '\\' && i + 1 < n && s[i + 1] == '\n') {
+                    ++line;
+                    i += 2;
+                    lineStart = i;
+                    continue;
+                }
+                ++i;
+            }
+            continue;
+        }
+        lineHasCode = true;
+        Token t;
+        t.line = line;
+        t.column = i - lineStart + 1;
+        if (startsIdentifier(c)) {
+            const int start = i;
+            while (i < n && (s[i].isLetterOrNumber() || s[i] == '_'))
+                ++i;
+            t.text = s.mid(start, i - start);
+            t.identifier = true;
+        } else if (c.isDigit() || (c == '.' && i + 1 < n && s[i + 1].isDigit())) {
+            const int start = i;
+            while (i < n &&
+                   (s[i].isLetterOrNumber() || s[i] == '.' ||
+                    ((s[i] == '+' || s[i] == '-') && (s[i - 1] == 'e' || s[i - 1] == 'E'))))
+                ++i;
+            t.text = s.mid(start, i - start);
+        } else {
+            t.text = c;
+            for (const QString &op : operators)
+                if (s.mid(i, op.size()) == op) {
+                    t.text = op;
+                    break;
+                }
+            i += int(t.text.size());
+        }
+        tokens.push_back(t);
+    }
+    return tokens;
+}
+
+// The index of the bracket closing the one at `open`, or the end.
+std::size_t closing(const std::vector<Token> &t, std::size_t open)
+{
+    const QString o = t[open].text;
+    const QString c = o == "(" ? ")" : o == "{" ? "}" : "]";
+    int depth = 0;
+    for (std::size_t i = open; i < t.size(); ++i) {
+        if (t[i].text == o)
+            ++depth;
+        else if (t[i].text == c && --depth == 0)
+            return i;
+    }
+    return t.size();
+}
+
+// The statement starting at `i`: a block, or up to its ';' outside brackets. [begin, end).
+std::pair<std::size_t, std::size_t> statementAt(const std::vector<Token> &t, std::size_t i)
+{
+    if (i >= t.size())
+        return {i, i};
+    if (t[i].text == "{")
+        return {i, std::min(closing(t, i) + 1, t.size())};
+    int depth = 0;
+    for (std::size_t j = i; j < t.size(); ++j) {
+        const QString &x = t[j].text;
+        if (x == "(" || x == "[" || x == "{")
+            ++depth;
+        else if (x == ")" || x == "]" || x == "}")
+            --depth;
+        else if (x == ";" && depth == 0)
+            return {i, j + 1};
+    }
+    return {i, t.size()};
+}
+
+// Functions the file defines: a name and its parameters, then a body, outside any block.
+QSet<QString> definedFunctions(const std::vector<Token> &t)
+{
+    QSet<QString> names;
+    int depth = 0;
+    for (std::size_t i = 0; i < t.size(); ++i) {
+        if (t[i].text == "{")
+            ++depth;
+        else if (t[i].text == "}")
+            --depth;
+        else if (depth == 0 && t[i].identifier && i + 1 < t.size() && t[i + 1].text == "(") {
+            const std::size_t end = closing(t, i + 1);
+            if (end + 1 < t.size() && t[end + 1].text == "{")
+                names.insert(t[i].text);
+        }
+    }
+    return names;
+}
+
+bool isAssignment(const QString &x)
+{
+    static const QSet<QString> ops{
+        "=", "+=", "-=", "*=", "/=", "%=", "<<=", ">>=", "&=", "|=", "^="};
+    return ops.contains(x);
+}
+
+// The variable an lvalue ending at `j` (inclusive) belongs to: v, v.x, v[i], v[i].xy.
+QString baseBefore(const std::vector<Token> &t, std::size_t j)
+{
+    std::size_t k = j + 1;
+    while (k-- > 0) {
+        if (t[k].text == "]") {
+            int depth = 0;
+            for (; k > 0; --k) {
+                if (t[k].text == "]")
+                    ++depth;
+                else if (t[k].text == "[" && --depth == 0)
+                    break;
+            }
+            continue;
+        }
+        if (t[k].identifier) {
+            if (k > 0 && t[k - 1].text == ".") {
+                --k; // the member and its dot; the base comes before them
+                continue;
+            }
+            return t[k].text;
+        }
+        return {};
+    }
+    return {};
+}
+
+// What a stretch of tokens writes to: assigned, incremented or decremented names.
+void collectChanged(const std::vector<Token> &t, std::size_t begin, std::size_t end,
+                    QSet<QString> &changed)
+{
+    for (std::size_t j = begin; j < end; ++j) {
+        const QString &x = t[j].text;
+        if (isAssignment(x) && j > begin) {
+            changed.insert(baseBefore(t, j - 1));
+        } else if (x == "++" || x == "--") {
+            if (j + 1 < end && t[j + 1].identifier)
+                changed.insert(t[j + 1].text); // prefix
+            if (j > begin)
+                changed.insert(baseBefore(t, j - 1)); // postfix
+        } else if (t[j].identifier && j + 1 < end && t[j + 1].identifier && j + 2 < end &&
+                   (t[j + 2].text == "=" || t[j + 2].text == ";")) {
+            changed.insert(t[j + 1].text); // a declaration in the loop makes a new variable
+        }
+    }
+}
+
+bool exits(const std::vector<Token> &t, std::size_t begin, std::size_t end)
+{
+    return std::any_of(t.begin() + long(begin), t.begin() + long(end), [](const Token &x) {
+        return x.text == "break" || x.text == "return" || x.text == "discard";
+    });
+}
+
+bool callsAny(const std::vector<Token> &t, std::size_t begin, std::size_t end,
+              const QSet<QString> &functions)
+{
+    for (std::size_t j = begin; j + 1 < end; ++j)
+        if (t[j].identifier && t[j + 1].text == "(" && functions.contains(t[j].text))
+            return true;
+    return false;
+}
+
+bool alwaysTrue(const std::vector<Token> &t, std::size_t begin, std::size_t end)
+{
+    QStringList words;
+    for (std::size_t j = begin; j < end; ++j)
+        if (t[j].text != "(" && t[j].text != ")")
+            words << t[j].text;
+    if (words.size() != 1)
+        return false;
+    if (words[0] == "true")
+        return true;
+    QString digits = words[0]; // 1, 1.0, 1u, 1.0f
+    if (digits.endsWith('u') || digits.endsWith('f') || digits.endsWith('F'))
+        digits.chop(1);
+    bool number = false;
+    const double value = digits.toDouble(&number);
+    return number && value != 0.0;
+}
+
+// The names a condition reads (not function names, not members after a dot).
+QStringList namesRead(const std::vector<Token> &t, std::size_t begin, std::size_t end)
+{
+    static const QSet<QString> words{"true", "false"};
+    QStringList names;
+    for (std::size_t j = begin; j < end; ++j) {
+        if (!t[j].identifier || words.contains(t[j].text))
+            continue;
+        if (j + 1 < end && t[j + 1].text == "(")
+            continue; // a call or a constructor
+        if (j > begin && t[j - 1].text == ".")
+            continue; // a member
+        if (!names.contains(t[j].text))
+            names << t[j].text;
+    }
+    return names;
+}
+
+} // namespace
+
+std::vector<Diagnostic> endlessLoopWarnings(const QString &source, ShaderStage stage)
+{
+    const std::vector<Token> t = tokenize(source);
+    const QSet<QString> functions = definedFunctions(t);
+    std::vector<Diagnostic> out;
+    QSet<std::size_t> doWhiles; // the `while` of a do-loop, read with its `do`
+    auto warn = [&](const Token &at, const QString &message) {
+        Diagnostic d;
+        d.severity = Diagnostic::Severity::Warning;
+        d.stage = stage;
+        d.line = at.line;
+        d.column = at.column;
+        d.message = message;
+        out.push_back(d);
+    };
+    // One loop: its condition [cb, ce) (empty: none), what runs each time [bb, be) and the
+    // for's step [sb, se).
+    auto judge = [&](const Token &at, std::size_t cb, std::size_t ce, std::size_t bb,
+                     std::size_t be, std::size_t sb, std::size_t se) {
+        if (exits(t, bb, be))
+            return;
+        if (cb == ce || alwaysTrue(t, cb, ce)) {
+            warn(at, QString("this loop never ends: %1 and nothing in it breaks, returns or "
+                             "discards (the driver may drop it and draw garbage, or hang)")
+                         .arg(cb == ce ? QString("it has no condition")
+                                       : QString("its condition is always true")));
+            return;
+        }
+        if (callsAny(t, bb, be, functions) || callsAny(t, sb, se, functions) ||
+            callsAny(t, cb, ce, functions))
+            return; // a function of the file could change what the condition reads
+        const QStringList read = namesRead(t, cb, ce);
+        if (read.isEmpty())
+            return;
+        QSet<QString> changed;
+        collectChanged(t, bb, be, changed);
+        collectChanged(t, sb, se, changed);
+        collectChanged(t, cb, ce, changed); // while (i++ < 10)
+        for (const QString &name : read)
+            if (changed.contains(name))
+                return;
+        warn(at, QString("this loop never ends once it starts: its condition reads %1, and "
+                         "nothing in the loop changes %2")
+                     .arg(read.join(", "), read.size() == 1 ? "it" : "them"));
+    };
+
+    for (std::size_t i = 0; i < t.size(); ++i) {
+        const QString &k = t[i].text;
+        if (k == "for" && i + 1 < t.size() && t[i + 1].text == "(") {
+            const std::size_t close = closing(t, i + 1);
+            std::vector<std::size_t> semis;
+            int depth = 0;
+            for (std::size_t j = i + 2; j < close; ++j) {
+                if (t[j].text == "(")
+                    ++depth;
+                else if (t[j].text == ")")
+                    --depth;
+                else if (t[j].text == ";" && depth == 0)
+                    semis.push_back(j);
+            }
+            if (semis.size() != 2)
+                continue;
+            const auto body = statementAt(t, close + 1);
+            judge(t[i], semis[0] + 1, semis[1], body.first, body.second, semis[1] + 1, close);
+        } else if (k == "while" && !doWhiles.contains(i) && i + 1 < t.size() &&
+                   t[i + 1].text == "(") {
+            const std::size_t close = closing(t, i + 1);
+            const auto body = statementAt(t, close + 1);
+            judge(t[i], i + 2, close, body.first, body.second, 0, 0);
+        } else if (k == "do") {
+            const auto body = statementAt(t, i + 1);
+            const std::size_t w = body.second;
+            if (w + 1 >= t.size() || t[w].text != "while" || t[w + 1].text != "(")
+                continue;
+            doWhiles.insert(w);
+            judge(t[i], w + 2, closing(t, w + 1), body.first, body.second, 0, 0);
+        }
+    }
+    return out;
+}
+
+} // namespace lb
