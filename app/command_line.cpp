@@ -144,6 +144,8 @@ const OptionSpec kOptions[] = {
     {"bench-edits", "N", "Open the window, time N shader edits to the screen, print JSON, exit."},
     {"vertex", "FILE", "Vertex shader to draw with instead of the built-in one (with --fragment)."},
     {"fragment", "FILE", "Fragment shader to draw with (with --vertex)."},
+    {"frame-budget", "SECONDS",
+     "Refuse your program when one frame at --size would take longer (default 1; 0.01 to 60)."},
     {"check", "",
      "Compile and link --vertex and --fragment, print each diagnostic as "
      "FILE:LINE:COLUMN: error|warning: message; exit 0 if it links, 1 if not."},
@@ -211,6 +213,11 @@ void parseInto(const QCommandLineParser &parser, CommandLine &cl)
         cl.saveScenePath = value("save-scene");
         if (cl.saveScenePath.isEmpty())
             fail("save-scene", "needs a file name");
+    }
+    if (given("frame-budget")) {
+        const float v = numbers("frame-budget", value("frame-budget"), 1, "seconds")[0];
+        checkRange("frame-budget", v, 0.01f, 60.0f);
+        cl.frameBudgetSeconds = double(v);
     }
     cl.presentation = given("presentation");
     if (given("ui-scale"))

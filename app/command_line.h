@@ -38,6 +38,7 @@ struct CommandLine
     // --vertex FILE --fragment FILE: the user's program instead of the built-in pair.
     QString vertexPath, fragmentPath;
     QString vertexSource, fragmentSource;
+    double frameBudgetSeconds = 1.0;   // --frame-budget: a user program slower is refused
     bool presentation = false;         // --presentation: the window full screen, presentation scale
     std::optional<int> uiScalePercent; // --ui-scale PERCENT
     bool check = false; // --check: compile and link them, print diagnostics, exit 0 or 1

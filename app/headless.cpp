@@ -2,6 +2,7 @@
 
 #include "diagnostics.h"
 #include "offscreen.h"
+#include "program_trial.h"
 
 #include <QElapsedTimer>
 #include <QEventLoop>
@@ -20,6 +21,10 @@ namespace {
 // Qt maps PNG quality 80 to zlib level 1: about three times faster than the default level
 // on a 1920x1080 frame, for a file a few percent larger (mostly flat background).
 constexpr int kPngQuality = 80;
+
+// How long the trial's small frames may take before the process gives up on the driver: the
+// command line answers within 10 s whatever the program.
+constexpr int kTrialLimitMs = 8000;
 
 double rounded(float v)
 {
@@ -136,11 +141,25 @@ int runHeadless(const CommandLine &cl, const Scene &requested)
             scene.material = adoptMaterial(scene.material, imported.file->material);
     }
     if (cl.hasUserProgram()) {
+        FILE *out = cl.check ? stdout : stderr;
         const ProgramBuild build = offscreen.useProgram(cl.vertexSource, cl.fragmentSource);
         for (const Diagnostic &d : build.diagnostics)
-            printLine(formatDiagnostic(d, cl).toUtf8(), cl.check ? stdout : stderr);
-        if (cl.check || !build.ok())
-            return build.ok() ? 0 : 1;
+            printLine(formatDiagnostic(d, cl).toUtf8(), out);
+        if (!build.ok())
+            return 1;
+        // Tried at a small size before a frame at --size: a program that would take longer
+        // than the budget, or hangs, exits 1 with a message on its loop's line.
+        const TrialResult trial =
+            tryProgram(offscreen, scene, cl.vertexSource, cl.fragmentSource, cl.size,
+                       cl.frameBudgetSeconds * 1000.0, kTrialLimitMs, [&](const Diagnostic &d) {
+                           printLine(formatDiagnostic(d, cl).toUtf8(), out);
+                       });
+        if (trial.refusal) {
+            printLine(formatDiagnostic(*trial.refusal, cl).toUtf8(), out);
+            return 1;
+        }
+        if (cl.check)
+            return 0;
     }
 
     if (cl.benchFrames > 0) {

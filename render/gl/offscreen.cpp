@@ -1,5 +1,6 @@
 #include "offscreen.h"
 
+#include <QElapsedTimer>
 #include <QOpenGLFunctions>
 
 namespace lb {
@@ -85,6 +86,31 @@ void OffscreenRenderer::renderFrames(const Scene &scene, int frames)
         m_renderer.render(scene, m_size);
     m_context.functions()->glFinish();
     m_fbo->release();
+}
+
+double OffscreenRenderer::timeFrame(const Scene &scene, QSize size)
+{
+    objectMesh(scene);
+    m_context.makeCurrent(&m_surface);
+    QOpenGLFramebufferObjectFormat format;
+    format.setAttachment(QOpenGLFramebufferObject::Depth);
+    format.setInternalTextureFormat(GL_RGBA8);
+    QOpenGLFramebufferObject fbo(size, format);
+    fbo.bind();
+    // The first draw pays for the driver's code generation (llvmpipe compiles at first use):
+    // a tiny frame first, then the one that is timed.
+    QOpenGLFramebufferObject warm(QSize(4, 4), format);
+    warm.bind();
+    m_renderer.render(scene, QSize(4, 4));
+    m_context.functions()->glFinish();
+    fbo.bind();
+    QElapsedTimer timer;
+    timer.start();
+    m_renderer.render(scene, size);
+    m_context.functions()->glFinish();
+    const double ms = double(timer.nsecsElapsed()) * 1e-6;
+    fbo.release();
+    return ms;
 }
 
 } // namespace lb

@@ -266,20 +266,28 @@ QStringList namesRead(const std::vector<Token> &t, std::size_t begin, std::size_
 
 } // namespace
 
-std::vector<Diagnostic> endlessLoopWarnings(const QString &source, ShaderStage stage)
+namespace {
+
+struct EndlessLoop
+{
+    Diagnostic warning;
+    bool certain = false; // no condition, or always true
+};
+
+std::vector<EndlessLoop> endlessLoops(const QString &source, ShaderStage stage)
 {
     const std::vector<Token> t = tokenize(source);
     const QSet<QString> functions = definedFunctions(t);
-    std::vector<Diagnostic> out;
+    std::vector<EndlessLoop> out;
     QSet<std::size_t> doWhiles; // the `while` of a do-loop, read with its `do`
-    auto warn = [&](const Token &at, const QString &message) {
+    auto warn = [&](const Token &at, const QString &message, bool certain) {
         Diagnostic d;
         d.severity = Diagnostic::Severity::Warning;
         d.stage = stage;
         d.line = at.line;
         d.column = at.column;
         d.message = message;
-        out.push_back(d);
+        out.push_back({d, certain});
     };
     // One loop: its condition [cb, ce) (empty: none), what runs each time [bb, be) and the
     // for's step [sb, se).
@@ -288,10 +296,12 @@ std::vector<Diagnostic> endlessLoopWarnings(const QString &source, ShaderStage s
         if (exits(t, bb, be))
             return;
         if (cb == ce || alwaysTrue(t, cb, ce)) {
-            warn(at, QString("this loop never ends: %1 and nothing in it breaks, returns or "
-                             "discards (the driver may drop it and draw garbage, or hang)")
-                         .arg(cb == ce ? QString("it has no condition")
-                                       : QString("its condition is always true")));
+            warn(at,
+                 QString("this loop never ends: %1 and nothing in it breaks, returns or "
+                         "discards (the driver may drop it and draw garbage, or hang)")
+                     .arg(cb == ce ? QString("it has no condition")
+                                   : QString("its condition is always true")),
+                 true);
             return;
         }
         if (callsAny(t, bb, be, functions) || callsAny(t, sb, se, functions) ||
@@ -307,9 +317,11 @@ std::vector<Diagnostic> endlessLoopWarnings(const QString &source, ShaderStage s
         for (const QString &name : read)
             if (changed.contains(name))
                 return;
-        warn(at, QString("this loop never ends once it starts: its condition reads %1, and "
-                         "nothing in the loop changes %2")
-                     .arg(read.join(", "), read.size() == 1 ? "it" : "them"));
+        warn(at,
+             QString("this loop never ends once it starts: its condition reads %1, and "
+                     "nothing in the loop changes %2")
+                 .arg(read.join(", "), read.size() == 1 ? "it" : "them"),
+             false);
     };
 
     for (std::size_t i = 0; i < t.size(); ++i) {
@@ -345,6 +357,38 @@ std::vector<Diagnostic> endlessLoopWarnings(const QString &source, ShaderStage s
         }
     }
     return out;
+}
+
+} // namespace
+
+std::vector<Diagnostic> endlessLoopWarnings(const QString &source, ShaderStage stage)
+{
+    std::vector<Diagnostic> out;
+    for (const EndlessLoop &l : endlessLoops(source, stage))
+        out.push_back(l.warning);
+    return out;
+}
+
+std::vector<Diagnostic> certainEndlessLoops(const QString &source, ShaderStage stage)
+{
+    std::vector<Diagnostic> out;
+    for (const EndlessLoop &l : endlessLoops(source, stage))
+        if (l.certain)
+            out.push_back(l.warning);
+    return out;
+}
+
+std::vector<SourcePlace> loopPlaces(const QString &source)
+{
+    const std::vector<Token> t = tokenize(source);
+    std::vector<SourcePlace> places;
+    for (std::size_t i = 0; i < t.size(); ++i) {
+        const QString &k = t[i].text;
+        const bool opens = i + 1 < t.size() && t[i + 1].text == "(";
+        if (k == "do" || ((k == "for" || k == "while") && opens))
+            places.push_back({t[i].line, t[i].column});
+    }
+    return places;
 }
 
 } // namespace lb

@@ -16,5 +16,17 @@
 namespace lb {
 
 std::vector<Diagnostic> endlessLoopWarnings(const QString &source, ShaderStage stage);
+// Only the loops that are certain never to end once reached: no condition or an always-true
+// one, and no way out (not those whose condition might be false the first time).
+std::vector<Diagnostic> certainEndlessLoops(const QString &source, ShaderStage stage);
+
+// Where the source's loops start (for, while, do), in order: where a program that draws too
+// slowly most likely spends its time.
+struct SourcePlace
+{
+    int line = 0; // 1-based
+    int column = 0;
+};
+std::vector<SourcePlace> loopPlaces(const QString &source);
 
 } // namespace lb

@@ -1,6 +1,7 @@
 // The lightbench executable as a user scripts it: exit codes, messages, PNG and probe JSON.
 #include "reference_compare.h"
 
+#include <QElapsedTimer>
 #include <QImage>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -271,8 +272,9 @@ private slots:
         QVERIFY(QFile::exists(png));
     }
 
-    // A loop that never ends is named on its line before the driver drops it silently: a
-    // warning (it still links; the program's fate is the trial's business).
+    // A loop that never ends is named on its line before the driver drops it silently (a
+    // warning), and a program that can never finish a frame is refused: exit 1, an error on
+    // the loop's line.
     void checkNamesEndlessLoops()
     {
         const QString vert = m_dir.filePath("loop.vert"), frag = m_dir.filePath("loop.frag");
@@ -286,7 +288,47 @@ private slots:
         const Run r = run({"--check", "--vertex", vert, "--fragment", frag});
         QVERIFY2(r.out.contains((frag + ":4:3: warning: this loop never ends").toUtf8()),
                  r.out.constData());
-        QCOMPARE(r.exitCode, 0);
+        QVERIFY2(
+            r.out.contains((frag + ":4:3: error: this program never finishes a frame").toUtf8()),
+            r.out.constData());
+        QCOMPARE(r.exitCode, 1);
+    }
+
+    // The freezing loop (it ends, after ~65,000 steps a fragment on llvmpipe): tried
+    // at a small size, its frame time at --size is over the budget; refused in bounded time
+    // with the estimate on the loop's line, no image written.
+    void slowProgramIsRefusedInBoundedTime()
+    {
+        const QString vert = m_dir.filePath("slow.vert"), frag = m_dir.filePath("slow.frag");
+        QFile v(vert), f(frag);
+        QVERIFY(v.open(QIODevice::WriteOnly) && f.open(QIODevice::WriteOnly));
+        v.write("attribute vec4 vPosition;\nattribute vec4 vNormal;\nuniform mat4 mModelView;\n"
+                "uniform mat4 mProjection;\nvarying vec3 fN;\nvoid main() {\n"
+                "  fN = (mModelView * vec4(vNormal.xyz, 0.0)).xyz;\n"
+                "  gl_Position = mProjection * mModelView * vPosition;\n}\n");
+        f.write("precision mediump float;\nvarying vec3 fN;\nvoid main() {\n"
+                "  vec3 N = normalize(fN);\n  float diffuse = max(N.z, 0.0);\n"
+                "  float k = N.x + 2.0;\n  while (k > 0.0) { k = k * 1.0 + 0.0001; }\n"
+                "  diffuse *= k;\n  gl_FragColor = vec4(vec3(diffuse), 1.0);\n}\n");
+        v.close();
+        f.close();
+        const QString png = m_dir.filePath("slow.png");
+        QElapsedTimer clock;
+        clock.start();
+        const Run r = run({"--render", png, "--vertex", vert, "--fragment", frag});
+        QVERIFY(clock.elapsed() < 10000);
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.err.contains((frag + ":7:3: error: drawing one frame with this program would "
+                                        "take about")
+                                    .toUtf8()),
+                 r.err.constData());
+        QVERIFY(r.err.contains("an endless or very long loop?"));
+        QVERIFY(!QFile::exists(png));
+        // A bigger budget lets it draw.
+        QCOMPARE(run({"--render", png, "--vertex", vert, "--fragment", frag, "--size", "64x48",
+                      "--frame-budget", "60"})
+                     .exitCode,
+                 0);
     }
 
     void shaderEditsSurviveAKill()
