@@ -9,8 +9,14 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 
+#include <chrono>
 #include <cmath>
+#include <condition_variable>
 #include <cstdio>
+#include <cstdlib>
+#include <functional>
+#include <mutex>
+#include <thread>
 
 #include <sys/resource.h>
 
@@ -25,6 +31,37 @@ constexpr int kPngQuality = 80;
 // How long the trial's small frames may take before the process gives up on the driver: the
 // command line answers within 10 s whatever the program.
 constexpr int kTrialLimitMs = 8000;
+
+// The program's trial (program_trial.h) with a watchdog: a driver stuck in a draw never
+// returns to this thread, so another one reports and ends the process.
+TrialResult tryWithin(OffscreenRenderer &offscreen, const Scene &scene, const CommandLine &cl,
+                      const std::function<void(const Diagnostic &)> &report)
+{
+    std::mutex mutex;
+    std::condition_variable done;
+    bool finished = false;
+    std::thread watchdog([&] {
+        std::unique_lock<std::mutex> lock(mutex);
+        if (done.wait_for(lock, std::chrono::milliseconds(kTrialLimitMs), [&] { return finished; }))
+            return;
+        report(refusalAt(cl.vertexSource, cl.fragmentSource,
+                         QString("drawing a small frame with this program took more than %1: "
+                                 "an endless or very long loop?")
+                             .arg(durationText(kTrialLimitMs))));
+        std::fflush(nullptr);
+        std::_Exit(1);
+    });
+    const TrialResult r =
+        tryProgram(cl.vertexSource, cl.fragmentSource, cl.size, cl.frameBudgetSeconds * 1000.0,
+                   kCommandLineTrial, [&](QSize size) { return offscreen.timeFrame(scene, size); });
+    {
+        std::lock_guard<std::mutex> lock(mutex);
+        finished = true;
+    }
+    done.notify_all();
+    watchdog.join();
+    return r;
+}
 
 double rounded(float v)
 {
@@ -149,11 +186,9 @@ int runHeadless(const CommandLine &cl, const Scene &requested)
             return 1;
         // Tried at a small size before a frame at --size: a program that would take longer
         // than the budget, or hangs, exits 1 with a message on its loop's line.
-        const TrialResult trial =
-            tryProgram(offscreen, scene, cl.vertexSource, cl.fragmentSource, cl.size,
-                       cl.frameBudgetSeconds * 1000.0, kTrialLimitMs, [&](const Diagnostic &d) {
-                           printLine(formatDiagnostic(d, cl).toUtf8(), out);
-                       });
+        const TrialResult trial = tryWithin(offscreen, scene, cl, [&](const Diagnostic &d) {
+            printLine(formatDiagnostic(d, cl).toUtf8(), out);
+        });
         if (trial.refusal) {
             printLine(formatDiagnostic(*trial.refusal, cl).toUtf8(), out);
             return 1;

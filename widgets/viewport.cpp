@@ -1,10 +1,13 @@
 #include "viewport.h"
 
+#include "program_trial.h"
+
 #include <QLabel>
 #include <QMouseEvent>
 #include <QOpenGLContext>
 #include <QOpenGLExtraFunctions>
 #include <QOpenGLFramebufferObject>
+#include <QOpenGLFunctions>
 #include <QPainter>
 #include <QWheelEvent>
 
@@ -193,20 +196,50 @@ double Viewport::rawBuildMilliseconds(const QString &vertexSource, const QString
 
 void Viewport::buildNow(const QString &vertexSource, const QString &fragmentSource)
 {
-    const ProgramBuild build = m_renderer.setUserProgram(vertexSource, fragmentSource);
+    // Tried on tiny frames before it is adopted (program_trial.h): a program that would take
+    // longer than the budget per frame at this view's size is refused, instead of freezing
+    // the window for every frame it draws.
+    const QSize target = size() * devicePixelRatio();
+    QString refused;
+    const ProgramBuild build =
+        m_renderer.setUserProgram(vertexSource, fragmentSource, [&]() -> std::optional<Diagnostic> {
+            const TrialResult trial =
+                tryProgram(vertexSource, fragmentSource, target, m_frameBudgetMs, kWindowTrial,
+                           [this](QSize pixels) { return timeFrame(pixels); });
+            if (trial.refusal)
+                refused = trial.refusal->message;
+            return trial.refusal;
+        });
+    const QString drawing = m_renderer.hasUserProgram() ? tr("the last good program is drawing")
+                                                        : tr("the built-in program is drawing");
     if (build.ok()) {
         m_goodVertex = vertexSource;
         m_goodFragment = fragmentSource;
         setBanner({});
+    } else if (!refused.isEmpty()) {
+        setBanner(tr("Refused: %1; %2").arg(refused, drawing));
     } else {
-        setBanner(m_renderer.hasUserProgram()
-                      ? tr("The shader has errors (see the editor): the last good program is "
-                           "drawing")
-                      : tr("The shader has errors (see the editor): the built-in program is "
-                           "drawing"));
+        setBanner(tr("The shader has errors (see the editor): %1").arg(drawing));
     }
     update();
     emit programBuilt(build);
+}
+
+double Viewport::timeFrame(QSize pixels)
+{
+    QOpenGLFramebufferObjectFormat format;
+    format.setAttachment(QOpenGLFramebufferObject::Depth);
+    QOpenGLFramebufferObject fbo(pixels, format);
+    if (!fbo.isValid())
+        return 0.0;
+    fbo.bind();
+    QElapsedTimer clock;
+    clock.start();
+    m_renderer.render(m_document->scene(), pixels);
+    context()->functions()->glFinish();
+    const double ms = double(clock.nsecsElapsed()) * 1e-6;
+    fbo.release();
+    return ms;
 }
 
 QString Viewport::banner() const

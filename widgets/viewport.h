@@ -50,6 +50,10 @@ public:
     // Builds the user's program (now, or once the context exists) and reports it through
     // programBuilt(). When it fails, the last good program keeps drawing under a banner.
     void compileProgram(const QString &vertexSource, const QString &fragmentSource);
+    // A program that would draw one frame at the view's size slower than this is refused
+    // (tried on tiny frames first); Edit > Preferences sets it.
+    void setFrameBudget(double milliseconds) { m_frameBudgetMs = milliseconds; }
+    double frameBudget() const { return m_frameBudgetMs; }
     // For the benchmark: the bare compile and link of these sources in this context (ms).
     double rawBuildMilliseconds(const QString &vertexSource, const QString &fragmentSource,
                                 bool draw = false);
@@ -71,7 +75,8 @@ protected:
     void wheelEvent(QWheelEvent *event) override;
 
 private:
-    void releaseGl(); // with the context made current: the renderer's GL objects go
+    void releaseGl();               // with the context made current: the renderer's GL objects go
+    double timeFrame(QSize pixels); // one frame in a framebuffer of its own, waited for (ms)
     void buildNow(const QString &vertexSource, const QString &fragmentSource);
     void setBanner(const QString &text);
     void updateCompareLabel();
@@ -83,6 +88,7 @@ private:
     Renderer m_renderer;
     QString m_error;
     QString m_programName;
+    double m_frameBudgetMs = 1000.0;
     QLabel *m_banner;
     QLabel *m_compareLabel;
     bool m_draggingWipe = false;

@@ -97,13 +97,6 @@ double OffscreenRenderer::timeFrame(const Scene &scene, QSize size)
     format.setInternalTextureFormat(GL_RGBA8);
     QOpenGLFramebufferObject fbo(size, format);
     fbo.bind();
-    // The first draw pays for the driver's code generation (llvmpipe compiles at first use):
-    // a tiny frame first, then the one that is timed.
-    QOpenGLFramebufferObject warm(QSize(4, 4), format);
-    warm.bind();
-    m_renderer.render(scene, QSize(4, 4));
-    m_context.functions()->glFinish();
-    fbo.bind();
     QElapsedTimer timer;
     timer.start();
     m_renderer.render(scene, size);

@@ -34,7 +34,7 @@ public:
     // Draws `frames` frames and waits for the GPU; for the benchmarks.
     void renderFrames(const Scene &scene, int frames);
     // Milliseconds to draw one frame of `scene` at `size` and wait for it, in a framebuffer of
-    // its own (a program's trial at a small size); the program is warmed up first.
+    // its own (a program's trial at a small size).
     double timeFrame(const Scene &scene, QSize size);
     Renderer &renderer() { return m_renderer; }
     // The loaded file the scene's object names (--mesh); nullptr draws the shapes.

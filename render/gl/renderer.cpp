@@ -60,12 +60,20 @@ void Renderer::cleanup()
     m_initialized = false;
 }
 
-ProgramBuild Renderer::setUserProgram(const QString &vertexSource, const QString &fragmentSource)
+ProgramBuild Renderer::setUserProgram(const QString &vertexSource, const QString &fragmentSource,
+                                      const std::function<std::optional<Diagnostic>()> &trial)
 {
     BuiltProgram built = buildProgram(*this, vertexSource, fragmentSource);
     ProgramBuild report = built.build;
-    if (report.ok())
-        m_user = std::move(built);
+    if (!report.ok())
+        return report;
+    std::swap(m_user, built); // `built` holds the previous program now
+    if (trial)
+        if (const std::optional<Diagnostic> refusal = trial()) {
+            std::swap(m_user, built);
+            report.linked = false;
+            report.diagnostics.push_back(*refusal);
+        }
     return report;
 }
 

@@ -15,6 +15,7 @@
 #include <QOpenGLFramebufferObject>
 #include <QSize>
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -54,7 +55,11 @@ public:
     // (the object is drawn with it instead of the built-in pair); when it does not, whatever
     // drew before keeps drawing. Returns what the build said either way; the program itself
     // stays here.
-    ProgramBuild setUserProgram(const QString &vertexSource, const QString &fragmentSource);
+    // `trial`, when given, runs once the new program links and draws in its place (render()
+    // uses it); a diagnostic it returns refuses the program: the previous one comes back and
+    // the build reports the diagnostic as not linked.
+    ProgramBuild setUserProgram(const QString &vertexSource, const QString &fragmentSource,
+                                const std::function<std::optional<Diagnostic>()> &trial = {});
     bool hasUserProgram() const { return bool(m_user.program); }
 
     // The object's mesh (object_mesh.h builds it) and the texture the texture switch puts on

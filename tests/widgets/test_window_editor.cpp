@@ -2,6 +2,9 @@
 // shader files and the session's unsaved edits.
 #include "window_fixture.h"
 
+#include <QElapsedTimer>
+#include <QTimer>
+
 using namespace lb;
 using namespace lb::test;
 
@@ -72,20 +75,70 @@ private slots:
         fragment->setText(original);
     }
 
-    // for (;;) is named on its line as a warning in the editor (Mesa would drop it silently).
-    void endlessLoopIsNamedOnItsLine()
+    // while (true) is named on its line as a warning (Mesa would drop it silently) and the
+    // program is refused before it draws: it could never finish a frame.
+    void endlessLoopIsNamedAndRefused()
     {
         EditorPanel *e = m_window->editorPanel();
         ShaderEditor *fragment = e->editor(ShaderStage::Fragment);
         const QString looping = "#version 330 core\nout vec4 c;\nvoid main() {\n  float x = 1.0;\n"
                                 "  while (true) { x *= 0.5; }\n  c = vec4(x);\n}\n";
         const std::optional<ProgramBuild> b = buildAfter([&] { fragment->setText(looping); });
-        QVERIFY(b && b->ok());
-        QVERIFY(e->diagnosticsList()->count() >= 1);
-        QVERIFY2(e->diagnosticsList()->item(0)->text().contains("fragment 5:3  warning: this loop "
-                                                                "never ends"),
-                 qPrintable(e->diagnosticsList()->item(0)->text()));
+        QVERIFY(b && !b->ok());
+        QStringList items;
+        for (int i = 0; i < e->diagnosticsList()->count(); ++i)
+            items << e->diagnosticsList()->item(i)->text();
+        QVERIFY2(items.join('\n').contains("fragment 5:3  warning: this loop never ends"),
+                 qPrintable(items.join('\n')));
+        QVERIFY2(items.join('\n').contains("fragment 5:3  error: this program never finishes"),
+                 qPrintable(items.join('\n')));
         QCOMPARE(fragment->markedLineCount(), 1);
+        QVERIFY(m_window->viewport()->banner().startsWith("Refused: this program never finishes"));
+    }
+
+    // The freezing loop (30-75 s a frame in the window before): tried on tiny frames,
+    // refused with the estimate on the loop's line; the last good pixels stay and the window
+    // keeps answering (a timer's longest gap is measured).
+    void slowProgramIsRefusedAndTheWindowAnswers()
+    {
+        EditorPanel *e = m_window->editorPanel();
+        QVERIFY(buildAfter([&] { e->loadPreset(presets()[3]); })); // the slides' Phong
+        const QImage good = frame();
+        QString fragment = e->source(ShaderStage::Fragment);
+        const QString loop = "    float k = N.x + 2.0;\n"
+                             "    while (k > 0.0) { k = k * 1.0 + 0.0001; }\n"
+                             "    diffuse *= k;\n";
+        const int at = int(fragment.indexOf("    gl_FragColor"));
+        QVERIFY(at > 0);
+        fragment.insert(at, loop);
+        const int loopLine = int(fragment.left(at).count('\n')) + 2;
+
+        QElapsedTimer clock;
+        clock.start();
+        qint64 last = 0, longest = 0;
+        QTimer ticks;
+        connect(&ticks, &QTimer::timeout, this, [&] {
+            longest = std::max(longest, clock.elapsed() - last);
+            last = clock.elapsed();
+        });
+        ticks.start(20);
+        const std::optional<ProgramBuild> b =
+            buildAfter([&] { e->editor(ShaderStage::Fragment)->setText(fragment); });
+        QTest::qWait(300); // the frames after it
+        ticks.stop();
+        QVERIFY(b && !b->ok());
+        QVERIFY(b->diagnostics.size() >= 1);
+        const Diagnostic &d = b->diagnostics.back();
+        QVERIFY2(d.message.startsWith("drawing one frame with this program would take about"),
+                 qPrintable(d.message));
+        QCOMPARE(d.line, loopLine);
+        QVERIFY2(m_window->viewport()->banner().startsWith("Refused: drawing one frame"),
+                 qPrintable(m_window->viewport()->banner()));
+        qInfo("longest gap between 20 ms ticks while the slow program was tried: %lld ms", longest);
+        QVERIFY2(longest < 1000, qPrintable(QString("%1 ms").arg(longest)));
+        const QRect belowBanner(0, 80, good.width(), good.height() - 80);
+        QVERIFY2(imageDifference(frame().copy(belowBanner), good.copy(belowBanner)) == 0,
+                 "the last good program must keep drawing");
     }
 
     void manualCompileWithCtrlEnter()

@@ -1,0 +1,49 @@
+#pragma once
+// A user's program tried before it is used: a loop with no way out refuses it at once; else
+// two small frames separate what a frame costs anyway from what each pixel costs, and the
+// frame at the size it will be drawn is estimated. Over the budget, it is refused with a
+// diagnostic on its first loop's line (where such time is spent). The frames are drawn by the
+// caller (the window's context, or the command line's), so this holds no GL.
+
+#include "diagnostics.h"
+
+#include <QSize>
+
+#include <functional>
+#include <optional>
+
+namespace lb {
+
+struct TrialSizes
+{
+    QSize small, large;
+    // Below this for the large frame a program is light whatever the estimate says: tiny
+    // frames cost more per pixel than big ones (one tile, one thread on llvmpipe), so the
+    // estimate of a light program at 4K would refuse it for nothing.
+    double lightMs;
+};
+// The command line's (64x64: the built-in programs take ~1 ms there, the freezing
+// loop ~360 ms) and the window's, smaller so that a slow program blocks it briefly.
+constexpr TrialSizes kCommandLineTrial{QSize(32, 32), QSize(64, 64), 15.0};
+constexpr TrialSizes kWindowTrial{QSize(16, 16), QSize(32, 32), 4.0};
+
+struct TrialResult
+{
+    double fixedMs = 0.0;              // a frame's cost whatever its size
+    double perPixelMs = 0.0;           // and for each pixel
+    double estimatedMs = 0.0;          // one frame at the asked size
+    std::optional<Diagnostic> refusal; // set when the program is refused
+};
+
+// `timeFrame(size)`: the milliseconds one frame with the program takes at `size`, waited for.
+TrialResult tryProgram(const QString &vertex, const QString &fragment, QSize target,
+                       double budgetMs, const TrialSizes &sizes,
+                       const std::function<double(QSize)> &timeFrame);
+
+// Where a refusal points: the fragment shader's first loop, else the vertex shader's, else
+// the fragment shader with no line.
+Diagnostic refusalAt(const QString &vertex, const QString &fragment, const QString &message);
+// "120 ms", "3.4 s", "40 s"
+QString durationText(double ms);
+
+} // namespace lb
