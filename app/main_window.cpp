@@ -98,6 +98,9 @@ MainWindow::MainWindow(QSettings &settings, QWidget *parent)
                 if (const QString error = m_shaders.openFiles(paths); !error.isEmpty())
                     QMessageBox::warning(this, tr("Shader files"), error);
             });
+    m_viewport->setFrameBudget(m_meshActions->frameBudgetSeconds() * 1000.0);
+    connect(m_meshActions, &MeshActions::frameBudgetChanged, this,
+            [this](double seconds) { m_viewport->setFrameBudget(seconds * 1000.0); });
     m_sceneActions = new SceneActions(this, &m_document, &m_shaders, m_viewport, m_settings);
     connect(m_meshActions, &MeshActions::sceneFileDropped, m_sceneActions, &SceneActions::open);
     connect(m_sceneActions, &SceneActions::documentChanged, this, &MainWindow::updateTitle);

@@ -17,12 +17,16 @@
 #include <QSettings>
 #include <QStatusBar>
 
+#include <algorithm>
+#include <cmath>
+
 namespace lb {
 
 namespace {
 
 const char *kMemoryKey = "import/memoryLimitMB";
 const char *kTimeKey = "import/timeLimitSeconds";
+const char *kBudgetKey = "editor/frameBudgetSeconds";
 const char *kRecentKey = "recentMeshes";
 const char *kDialogDirKey = "import/lastDirectory";
 
@@ -125,15 +129,25 @@ void MeshActions::open(const QString &path)
     m_loader->open(QFileInfo(path).absoluteFilePath());
 }
 
+double MeshActions::frameBudgetSeconds() const
+{
+    const double s =
+        m_settings.value(kBudgetKey, PreferencesDialog::kDefaultFrameBudgetSeconds).toDouble();
+    return std::isfinite(s) ? std::clamp(s, 0.05, 60.0)
+                            : PreferencesDialog::kDefaultFrameBudgetSeconds;
+}
+
 void MeshActions::showPreferences()
 {
-    PreferencesDialog dialog(m_loader->limits(), m_window);
+    PreferencesDialog dialog(m_loader->limits(), frameBudgetSeconds(), m_window);
     if (dialog.exec() != QDialog::Accepted)
         return;
     const ImportLimits limits = dialog.limits();
     m_settings.setValue(kMemoryKey, limits.memoryMB);
     m_settings.setValue(kTimeKey, limits.seconds);
     m_loader->setLimits(limits);
+    m_settings.setValue(kBudgetKey, dialog.frameBudgetSeconds());
+    emit frameBudgetChanged(dialog.frameBudgetSeconds());
 }
 
 void MeshActions::finished(bool ok, const QString &message)

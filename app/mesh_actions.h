@@ -33,6 +33,8 @@ public:
     void showOpenDialog();
     void open(const QString &path);
     void showPreferences();
+    // Edit > Preferences' frame budget for user programs (seconds), from the settings.
+    double frameBudgetSeconds() const;
     // Limits for this session only (--import-memory-limit): the preferences keep theirs.
     void setSessionLimits(const ImportLimits &limits) { m_loader->setLimits(limits); }
 
@@ -45,6 +47,7 @@ public:
 signals:
     void shaderFilesDropped(const QStringList &paths);
     void sceneFileDropped(const QString &path);
+    void frameBudgetChanged(double seconds);
 
 protected:
     bool eventFilter(QObject *watched, QEvent *event) override; // drops on the window

@@ -1,6 +1,7 @@
 #include "preferences_dialog.h"
 
 #include <QDialogButtonBox>
+#include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QLabel>
 #include <QPushButton>
@@ -8,7 +9,9 @@
 
 namespace lb {
 
-PreferencesDialog::PreferencesDialog(const ImportLimits &limits, QWidget *parent) : QDialog(parent)
+PreferencesDialog::PreferencesDialog(const ImportLimits &limits, double frameBudgetSeconds,
+                                     QWidget *parent)
+    : QDialog(parent)
 {
     setWindowTitle(tr("Preferences"));
     auto *form = new QFormLayout(this);
@@ -35,12 +38,28 @@ PreferencesDialog::PreferencesDialog(const ImportLimits &limits, QWidget *parent
         tr("A load that takes longer is stopped. Default: %1 s").arg(ImportLimits{}.seconds));
     form->addRow(tr("Import time limit"), m_time);
 
+    m_budget = new QDoubleSpinBox(this);
+    m_budget->setRange(0.05, 60.0);
+    m_budget->setDecimals(2);
+    m_budget->setSingleStep(0.25);
+    m_budget->setSuffix(tr(" s"));
+    m_budget->setToolTip(tr("Your shader program is tried on tiny frames before it draws; when "
+                            "one frame at the view's size would take longer than this, it is "
+                            "refused and the last good program keeps drawing. Default: %1 s. "
+                            "Also --frame-budget SECONDS")
+                             .arg(kDefaultFrameBudgetSeconds));
+    m_budget->setValue(frameBudgetSeconds);
+    form->addRow(tr("Frame budget"), m_budget);
+
     auto *buttons = new QDialogButtonBox(
         QDialogButtonBox::Ok | QDialogButtonBox::Cancel | QDialogButtonBox::RestoreDefaults, this);
     connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
     connect(buttons->button(QDialogButtonBox::RestoreDefaults), &QPushButton::clicked, this,
-            [this] { showLimits(ImportLimits{}); });
+            [this] {
+                showLimits(ImportLimits{});
+                m_budget->setValue(kDefaultFrameBudgetSeconds);
+            });
     form->addRow(buttons);
     showLimits(limits);
 }
@@ -49,6 +68,11 @@ void PreferencesDialog::showLimits(const ImportLimits &limits)
 {
     m_memory->setValue(int(limits.memoryMB));
     m_time->setValue(limits.seconds);
+}
+
+double PreferencesDialog::frameBudgetSeconds() const
+{
+    return m_budget->value();
 }
 
 ImportLimits PreferencesDialog::limits() const

@@ -1,10 +1,12 @@
 #pragma once
-// Edit > Preferences: the import helper's memory and time limits.
+// Edit > Preferences: the import helper's memory and time limits, and the frame budget a
+// user's program must keep (program_trial.h).
 
 #include "import_process.h"
 
 #include <QDialog>
 
+class QDoubleSpinBox;
 class QSpinBox;
 
 namespace lb {
@@ -13,8 +15,11 @@ class PreferencesDialog : public QDialog
 {
     Q_OBJECT
 public:
-    explicit PreferencesDialog(const ImportLimits &limits, QWidget *parent = nullptr);
+    static constexpr double kDefaultFrameBudgetSeconds = 1.0;
+    PreferencesDialog(const ImportLimits &limits, double frameBudgetSeconds,
+                      QWidget *parent = nullptr);
     ImportLimits limits() const;
+    double frameBudgetSeconds() const;
     QSpinBox *memoryBox() const { return m_memory; }
     QSpinBox *timeBox() const { return m_time; }
 
@@ -23,6 +28,7 @@ private:
 
     QSpinBox *m_memory;
     QSpinBox *m_time;
+    QDoubleSpinBox *m_budget;
 };
 
 } // namespace lb

@@ -227,8 +227,10 @@ void Viewport::buildNow(const QString &vertexSource, const QString &fragmentSour
 
 double Viewport::timeFrame(QSize pixels)
 {
+    // The attachments of the widget's own framebuffer: a driver that generates code per
+    // framebuffer format (llvmpipe) then reuses the trial's code for the frame on screen.
     QOpenGLFramebufferObjectFormat format;
-    format.setAttachment(QOpenGLFramebufferObject::Depth);
+    format.setAttachment(QOpenGLFramebufferObject::CombinedDepthStencil);
     QOpenGLFramebufferObject fbo(pixels, format);
     if (!fbo.isValid())
         return 0.0;

@@ -141,6 +141,37 @@ private slots:
                  "the last good program must keep drawing");
     }
 
+    // A slow program in the saved session (a kill during the lecture): the next start opens
+    // it in the editor, refuses to draw it and says why; the built-in program draws.
+    void slowProgramInTheSessionDoesNotFreezeTheStart()
+    {
+        const Preset &slides = presets()[3];
+        QString fragment = slides.fragmentSource();
+        fragment.insert(int(fragment.indexOf("    gl_FragColor")),
+                        "    float k = N.x + 2.0;\n    while (k > 0.0) { k = k * 1.0 + 0.0001; }\n"
+                        "    diffuse *= k;\n");
+        QVERIFY(buildAfter(
+            [&] { m_window->shaderDocument().setSources(slides.vertexSource(), fragment); }));
+        m_window->saveSettings();
+        m_window.reset();
+        m_window = std::make_unique<MainWindow>(*m_settings);
+        std::optional<ProgramBuild> b;
+        connect(m_window->viewport(), &Viewport::programBuilt, this,
+                [&](const ProgramBuild &build) { b = build; });
+        QElapsedTimer clock;
+        clock.start();
+        m_window->show();
+        QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
+        QTRY_VERIFY_WITH_TIMEOUT(b.has_value(), 10000);
+        qInfo("start with the slow program in the session: %lld ms to its refusal",
+              clock.elapsed());
+        QVERIFY(!b->ok());
+        QVERIFY(!m_window->viewport()->renderer().hasUserProgram());
+        QVERIFY2(m_window->viewport()->banner().contains("the built-in program is drawing"),
+                 qPrintable(m_window->viewport()->banner()));
+        QCOMPARE(m_window->editorPanel()->source(ShaderStage::Fragment), fragment);
+    }
+
     void manualCompileWithCtrlEnter()
     {
         EditorPanel *e = m_window->editorPanel();
