@@ -147,8 +147,9 @@ const OptionSpec kOptions[] = {
     {"frame-budget", "SECONDS",
      "Refuse your program when one frame at --size would take longer (default 1; 0.01 to 60)."},
     {"check", "",
-     "Compile and link --vertex and --fragment, print each diagnostic as "
-     "FILE:LINE:COLUMN: error|warning: message; exit 0 if it links, 1 if not."},
+     "Compile and link --vertex and --fragment and try them on small frames, print each "
+     "diagnostic as FILE:LINE:COLUMN: error|warning: message; exit 0 if the program links and "
+     "passes the trial (see --frame-budget), 1 if not."},
 };
 
 QString readShader(const char *option, const QString &path)

@@ -200,6 +200,9 @@ void Viewport::buildNow(const QString &vertexSource, const QString &fragmentSour
     // longer than the budget per frame at this view's size is refused, instead of freezing
     // the window for every frame it draws.
     const QSize target = size() * devicePixelRatio();
+    // With no object yet (a mesh file still loading) the trial would time the background:
+    // it runs again once the object is there (setObject).
+    m_trialWithoutObject = !m_renderer.objectMesh();
     QString refused;
     const ProgramBuild build =
         m_renderer.setUserProgram(vertexSource, fragmentSource, [&]() -> std::optional<Diagnostic> {
@@ -267,6 +270,14 @@ void Viewport::setObject(std::shared_ptr<const Mesh> mesh, std::shared_ptr<const
 {
     const bool changed = mesh.get() != m_renderer.objectMesh();
     m_renderer.setObject(std::move(mesh), std::move(texture)); // uploaded by the next paint
+    if (m_trialWithoutObject && m_renderer.objectMesh() && m_renderer.isInitialized() &&
+        m_renderer.hasUserProgram()) {
+        // The program was tried on an empty view: tried again on the object, as if new.
+        makeCurrent();
+        m_renderer.clearUserProgram();
+        buildNow(m_goodVertex, m_goodFragment);
+        doneCurrent();
+    }
     update();
     if (changed)
         emit objectChanged();

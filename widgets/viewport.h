@@ -89,6 +89,7 @@ private:
     QString m_error;
     QString m_programName;
     double m_frameBudgetMs = 1000.0;
+    bool m_trialWithoutObject = false; // the user program was tried before there was an object
     QLabel *m_banner;
     QLabel *m_compareLabel;
     bool m_draggingWipe = false;

@@ -61,6 +61,7 @@ public:
     ProgramBuild setUserProgram(const QString &vertexSource, const QString &fragmentSource,
                                 const std::function<std::optional<Diagnostic>()> &trial = {});
     bool hasUserProgram() const { return bool(m_user.program); }
+    void clearUserProgram() { m_user = {}; } // the built-in programs draw again
 
     // The object's mesh (object_mesh.h builds it) and the texture the texture switch puts on
     // it (nullptr: the checker). Uploaded by the next render(). Without a mesh, render()

@@ -15,6 +15,13 @@ struct Token
     int line = 1;   // 1-based
     int column = 1; // 1-based
     bool identifier = false;
+    bool conditional = false; // inside #if/#ifdef/#ifndef: maybe not compiled at all
+};
+
+struct Tokens
+{
+    std::vector<Token> list;
+    QSet<QString> macros; // names given by #define: what they hide is not read here
 };
 
 bool startsIdentifier(QChar c)
@@ -23,12 +30,14 @@ bool startsIdentifier(QChar c)
 }
 
 // The tokens of GLSL source, without comments and preprocessor lines.
-std::vector<Token> tokenize(const QString &s)
+Tokens tokenize(const QString &s)
 {
     static const QStringList operators{
         "<<=", ">>=", "++", "--", "+=", "-=", "*=", "/=", "%=", "&=", "|=",
         "^=",  "==",  "!=", "<=", ">=", "&&", "||", "^^", "<<", ">>"};
-    std::vector<Token> tokens;
+    Tokens result;
+    std::vector<Token> &tokens = result.list;
+    int conditionalDepth = 0;
     int line = 1, lineStart = 0;
     bool lineHasCode = false;
     const int n = int(s.size());
@@ -62,19 +71,30 @@ std::vector<Token> tokenize(const QString &s)
             continue;
         }
         if (c == '#' && !lineHasCode) { // a preprocessor line, with its continuations
+            const int start = i;
             while (i < n && s[i] != '\n') {
-                if (s[i] == '\\' && i + 1 < n && s[i + 1] == '\n') {
+                if (s[i] == '\\' && i + 1 < n && (s[i + 1] == '\n' || s[i + 1] == '\r')) {
+                    i += s[i + 1] == '\r' && i + 2 < n && s[i + 2] == '\n' ? 3 : 2;
                     ++line;
-                    i += 2;
                     lineStart = i;
                     continue;
                 }
                 ++i;
             }
+            const QStringList words =
+                s.mid(start + 1, i - start - 1).simplified().split(' ', Qt::SkipEmptyParts);
+            const QString directive = words.value(0);
+            if (directive.startsWith("if"))
+                ++conditionalDepth;
+            else if (directive == "endif")
+                conditionalDepth = std::max(0, conditionalDepth - 1);
+            else if (directive == "define" && words.size() > 1)
+                result.macros.insert(words[1].section('(', 0, 0));
             continue;
         }
         lineHasCode = true;
         Token t;
+        t.conditional = conditionalDepth > 0;
         t.line = line;
         t.column = i - lineStart + 1;
         if (startsIdentifier(c)) {
@@ -101,7 +121,7 @@ std::vector<Token> tokenize(const QString &s)
         }
         tokens.push_back(t);
     }
-    return tokens;
+    return result;
 }
 
 // The index of the bracket closing the one at `open`, or the end.
@@ -123,7 +143,7 @@ std::size_t closing(const std::vector<Token> &t, std::size_t open)
 std::pair<std::size_t, std::size_t> statementAt(const std::vector<Token> &t, std::size_t i)
 {
     if (i >= t.size())
-        return {i, i};
+        return {t.size(), t.size()};
     if (t[i].text == "{")
         return {i, std::min(closing(t, i) + 1, t.size())};
     int depth = 0;
@@ -276,7 +296,8 @@ struct EndlessLoop
 
 std::vector<EndlessLoop> endlessLoops(const QString &source, ShaderStage stage)
 {
-    const std::vector<Token> t = tokenize(source);
+    const Tokens tokens = tokenize(source);
+    const std::vector<Token> &t = tokens.list;
     const QSet<QString> functions = definedFunctions(t);
     std::vector<EndlessLoop> out;
     QSet<std::size_t> doWhiles; // the `while` of a do-loop, read with its `do`
@@ -294,6 +315,16 @@ std::vector<EndlessLoop> endlessLoops(const QString &source, ShaderStage stage)
     auto judge = [&](const Token &at, std::size_t cb, std::size_t ce, std::size_t bb,
                      std::size_t be, std::size_t sb, std::size_t se) {
         if (exits(t, bb, be))
+            return;
+        // A loop the preprocessor may leave out, or one a macro takes part in (it may hide a
+        // break or a step), is not read.
+        auto unsure = [&](std::size_t b, std::size_t e) {
+            for (std::size_t j = b; j < std::min(e, t.size()); ++j)
+                if (t[j].conditional || tokens.macros.contains(t[j].text))
+                    return true;
+            return false;
+        };
+        if (at.conditional || unsure(cb, ce) || unsure(bb, be) || unsure(sb, se))
             return;
         if (cb == ce || alwaysTrue(t, cb, ce)) {
             warn(at,
@@ -380,7 +411,7 @@ std::vector<Diagnostic> certainEndlessLoops(const QString &source, ShaderStage s
 
 std::vector<SourcePlace> loopPlaces(const QString &source)
 {
-    const std::vector<Token> t = tokenize(source);
+    const std::vector<Token> t = tokenize(source).list;
     std::vector<SourcePlace> places;
     for (std::size_t i = 0; i < t.size(); ++i) {
         const QString &k = t[i].text;

@@ -3,6 +3,7 @@
 #include "loops.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace lb {
 
@@ -48,23 +49,38 @@ TrialResult tryProgram(const QString &vertex, const QString &fragment, QSize tar
             return r;
         }
 
+    // Only a loop can make a frame take seconds; a program without one is not timed (and a
+    // big mesh's frames are not drawn three more times per edit).
+    if (loopPlaces(vertex).empty() && loopPlaces(fragment).empty())
+        return r;
+
     // A tiny frame first: the driver generates the program's code at its first draw
-    // (llvmpipe: ~100 ms), which is no frame's cost.
+    // (llvmpipe: ~100 ms), which is no frame's cost. Then the quicker of two frames at each
+    // size: noise only ever adds time.
     timeFrame(QSize(4, 4));
-    // The quicker of two frames at each size (noise only ever adds time), the second one
-    // skipped when the first is already heavy.
-    auto quickest = [&](QSize size) {
-        const double first = timeFrame(size);
-        return first > sizes.lightMs ? first : std::min(first, timeFrame(size));
-    };
+    auto quickest = [&](QSize size) { return std::min(timeFrame(size), timeFrame(size)); };
+    auto pixelsOf = [](QSize size) { return double(size.width()) * double(size.height()); };
     const double small = quickest(sizes.small);
     const double large = quickest(sizes.large);
-    const double pixels[2] = {double(sizes.small.width() * sizes.small.height()),
-                              double(sizes.large.width() * sizes.large.height())};
-    r.perPixelMs = std::max(0.0, (large - small) / (pixels[1] - pixels[0]));
-    r.fixedMs = std::max(0.0, small - r.perPixelMs * pixels[0]);
-    r.estimatedMs = r.fixedMs + r.perPixelMs * double(target.width()) * double(target.height());
-    if (r.estimatedMs > budgetMs && large >= sizes.lightMs)
+    const double targetPixels = pixelsOf(target);
+    auto fit = [&](double pixels, double ms) {
+        r.perPixelMs = std::max(0.0, (ms - small) / (pixels - pixelsOf(sizes.small)));
+        r.fixedMs = std::max(0.0, small - r.perPixelMs * pixelsOf(sizes.small));
+        r.estimatedMs = r.fixedMs + r.perPixelMs * targetPixels;
+    };
+    fit(pixelsOf(sizes.large), large);
+    if (r.estimatedMs <= budgetMs || large < sizes.lightMs)
+        return r;
+    // Over the budget from two tiny frames: their difference is a few milliseconds, and a
+    // stall in one is multiplied by thousands. A bigger frame confirms it, as big as about
+    // 150 ms of per-pixel work by the estimate allows (and no bigger than the target).
+    const double confirmPixels =
+        std::min(targetPixels, std::max(4.0 * pixelsOf(sizes.large),
+                                        std::min(budgetMs, 150.0) / std::max(r.perPixelMs, 1e-9)));
+    const int side = std::max(1, int(std::lround(std::sqrt(confirmPixels))));
+    const QSize confirm(side, side);
+    fit(pixelsOf(confirm), timeFrame(confirm));
+    if (r.estimatedMs > budgetMs)
         r.refusal = refusalAt(
             vertex, fragment,
             QString("drawing one frame with this program would take about %1 at %2x%3 "
@@ -72,9 +88,9 @@ TrialResult tryProgram(const QString &vertex, const QString &fragment, QSize tar
                 .arg(durationText(r.estimatedMs))
                 .arg(target.width())
                 .arg(target.height())
-                .arg(durationText(large))
-                .arg(sizes.large.width())
-                .arg(sizes.large.height())
+                .arg(durationText(r.fixedMs + r.perPixelMs * pixelsOf(confirm)))
+                .arg(confirm.width())
+                .arg(confirm.height())
                 .arg(durationText(budgetMs)));
     return r;
 }

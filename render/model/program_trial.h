@@ -1,8 +1,9 @@
 #pragma once
-// A user's program tried before it is used: a loop with no way out refuses it at once; else
-// two small frames separate what a frame costs anyway from what each pixel costs, and the
-// frame at the size it will be drawn is estimated. Over the budget, it is refused with a
-// diagnostic on its first loop's line (where such time is spent). The frames are drawn by the
+// A user's program tried before it is used: a loop with no way out refuses it at once; a
+// program with loops is timed: two small frames separate what a frame costs anyway from what
+// each pixel costs, and the frame at the size it will be drawn is estimated; over the budget,
+// a bigger frame confirms it (a stall in a tiny frame would be multiplied by thousands) and
+// it is refused with a diagnostic on its first loop's line. The frames are drawn by the
 // caller (the window's context, or the command line's), so this holds no GL.
 
 #include "diagnostics.h"
@@ -17,15 +18,13 @@ namespace lb {
 struct TrialSizes
 {
     QSize small, large;
-    // Below this for the large frame a program is light whatever the estimate says: tiny
-    // frames cost more per pixel than big ones (one tile, one thread on llvmpipe), so the
-    // estimate of a light program at 4K would refuse it for nothing.
+    // Below this for the large frame no confirmation is drawn: the program is light.
     double lightMs;
 };
 // The command line's (64x64: the built-in programs take ~1 ms there, the freezing
 // loop ~360 ms) and the window's, smaller so that a slow program blocks it briefly.
-constexpr TrialSizes kCommandLineTrial{QSize(32, 32), QSize(64, 64), 15.0};
-constexpr TrialSizes kWindowTrial{QSize(16, 16), QSize(32, 32), 4.0};
+constexpr TrialSizes kCommandLineTrial{QSize(32, 32), QSize(64, 64), 2.0};
+constexpr TrialSizes kWindowTrial{QSize(16, 16), QSize(32, 32), 1.0};
 
 struct TrialResult
 {

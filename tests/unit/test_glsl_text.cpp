@@ -25,7 +25,8 @@ private slots:
         QTest::newRow("for (;;)") << head + "    float x = 0.0;\n    for (;;) { x += 1.0; }\n}\n"
                                   << 5 << 5 << "no condition";
         QTest::newRow("while (true)") << head + "  while (true) {}\n}\n" << 4 << 3 << "always true";
-        QTest::newRow("while (1)") << head + "  while ((1)) { }\n}\n" << 4 << 3 << "always true";
+        QTest::newRow("while ((true))") << head + "  while ((true)) { }\n}\n"
+                                        << 4 << 3 << "always true";
         QTest::newRow("do while (true)")
             << head + "  float x;\n  do {\n    x *= 2.0;\n  } while (true);\n}\n"
             << 5 << 3 << "always true";
@@ -58,6 +59,15 @@ private slots:
         QTest::newRow("a function of the file") << "float g;\nvoid step2() { g += 1.0; }\nvoid "
                                                    "main() {\n  while (g < 4.0) step2();\n}\n"
                                                 << 0 << 0 << "";
+        QTest::newRow("inside #if 0") << head + "#if 0\n  while (true) {}\n#endif\n}\n"
+                                      << 0 << 0 << "";
+        QTest::newRow("a macro hides the way out")
+            << "#define BREAK_IF(c) if (c) break;\nvoid main() {\n  float t = 0.0;\n"
+               "  for (;;) { t += 0.1; BREAK_IF(t > 1.0) }\n}\n"
+            << 0 << 0 << "";
+        QTest::newRow("nested, the inner one endless")
+            << head + "  for (int i = 0; i < 3; ++i) {\n    while (true) { }\n  }\n}\n"
+            << 5 << 5 << "always true";
         QTest::newRow("do while that ends")
             << head + "  int i = 0;\n  do { i++; } while (i < 3);\n}\n"
             << 0 << 0 << "";

@@ -116,6 +116,30 @@ private slots:
         QCOMPARE(scene().object.meshPath, kCube);
     }
 
+    // A slow program kept with a mesh file: at the next start the file is read by the helper
+    // after the program is built, so the program is tried again on the mesh once it is there,
+    // and refused; the built-in program draws the mesh.
+    void slowProgramIsTriedAgainOnTheLoadedMesh()
+    {
+        QVERIFY(openMesh(kCube).first);
+        const Preset &slides = presets()[3];
+        QString fragment = slides.fragmentSource();
+        fragment.insert(int(fragment.indexOf("    gl_FragColor")),
+                        "    float k = N.x + 2.0;\n    while (k > 0.0) { k = k * 1.0 + 0.0001; }\n"
+                        "    diffuse *= k;\n");
+        m_window->shaderDocument().setSources(slides.vertexSource(), fragment);
+        m_window->close(); // saves
+        m_window = std::make_unique<MainWindow>(*m_settings);
+        m_window->show();
+        QTRY_VERIFY_WITH_TIMEOUT(m_window->objectLoader()->file() &&
+                                     m_window->objectLoader()->file()->path == kCube,
+                                 30000);
+        frame();
+        QTRY_VERIFY_WITH_TIMEOUT(m_window->viewport()->banner().startsWith("Refused:"), 10000);
+        QVERIFY(!m_window->viewport()->renderer().hasUserProgram());
+        QCOMPARE(m_window->editorPanel()->source(ShaderStage::Fragment), fragment);
+    }
+
     void meshComesBackAfterARestart()
     {
         QVERIFY(openMesh(kCube).first);

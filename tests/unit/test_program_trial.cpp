@@ -1,0 +1,103 @@
+// The program's trial on scripted frame times: what it accepts, what it refuses, and that a
+// stall or a big mesh's fixed cost does not refuse a light program.
+#include "program_trial.h"
+
+#include <QTest>
+
+#include <functional>
+
+using namespace lb;
+
+namespace {
+const QString kVertex = "attribute vec4 vPosition;\nvoid main() { gl_Position = vPosition; }\n";
+// A loop on line 4, so the program is timed (and a refusal points there).
+const QString kFragment = "precision mediump float;\nuniform float n;\nvoid main() {\n"
+                          "  float x = 0.0; for (int i = 0; i < 8; ++i) { x += n; }\n"
+                          "  gl_FragColor = vec4(x);\n}\n";
+const QSize kTarget(800, 600);
+
+double pixelsOf(QSize s)
+{
+    return double(s.width()) * double(s.height());
+}
+} // namespace
+
+using Script = std::function<double(QSize, int)>; // a frame's size, the call's number -> ms
+Q_DECLARE_METATYPE(Script)
+
+class TestProgramTrial : public QObject
+{
+    Q_OBJECT
+private slots:
+    void scriptedFrames_data()
+    {
+        QTest::addColumn<Script>("script");
+        QTest::addColumn<bool>("refused");
+        // The built-in programs: about a millisecond whatever the size.
+        QTest::newRow("light") << Script([](QSize s, int) { return 0.5 + 1e-6 * pixelsOf(s); })
+                               << false;
+        // A 1M-triangle mesh: 140 ms a frame whatever the size, +3 ms of jitter on the larger
+        // tiny frames; the two-point estimate says seconds, the confirming frame says no.
+        QTest::newRow("big mesh, jitter") << Script([](QSize s, int) {
+            return 140.0 + (s.width() == 32 ? 3.0 : 0.0) + 1e-5 * pixelsOf(s);
+        }) << false;
+        // A stall on one sample: the quicker of two is taken.
+        QTest::newRow("stall") << Script([](QSize s, int call) {
+            return (call == 3 ? 60.0 : 0.5) + 1e-6 * pixelsOf(s);
+        }) << false;
+        // The freezing loop: ~0.1 ms a pixel; 48 s at 800x600.
+        QTest::newRow("slow per pixel")
+            << Script([](QSize s, int) { return 0.1 * pixelsOf(s); }) << true;
+    }
+    void scriptedFrames()
+    {
+        QFETCH(Script, script);
+        QFETCH(bool, refused);
+        int calls = 0;
+        double spent = 0.0;
+        const TrialResult r =
+            tryProgram(kVertex, kFragment, kTarget, 1000.0, kWindowTrial, [&](QSize s) {
+                const double ms = script(s, calls++);
+                spent += ms;
+                return ms;
+            });
+        QCOMPARE(r.refusal.has_value(), refused);
+        if (refused) {
+            QCOMPARE(r.refusal->line, 4);
+            QVERIFY(r.refusal->message.contains("would take about"));
+            QVERIFY(r.estimatedMs > 10000.0);
+        }
+        // What the trial drew stays small: a quarter of a second of frames at most here.
+        QVERIFY2(spent < 400.0 + 5 * 143.0, qPrintable(QString::number(spent)));
+    }
+
+    void programsWithoutLoopsAreNotTimed()
+    {
+        int calls = 0;
+        const TrialResult r = tryProgram(kVertex, "void main() { gl_FragColor = vec4(1.0); }\n",
+                                         kTarget, 1000.0, kWindowTrial, [&](QSize) {
+                                             ++calls;
+                                             return 1e6;
+                                         });
+        QVERIFY(!r.refusal);
+        QCOMPARE(calls, 0);
+    }
+
+    void aLoopWithNoWayOutIsRefusedWithoutDrawing()
+    {
+        int calls = 0;
+        const TrialResult r =
+            tryProgram(kVertex, "void main() {\n  float x;\n  for (;;) { x += 1.0; }\n}\n", kTarget,
+                       1000.0, kWindowTrial, [&](QSize) {
+                           ++calls;
+                           return 0.0;
+                       });
+        QVERIFY(r.refusal);
+        QCOMPARE(r.refusal->line, 3);
+        QVERIFY(r.refusal->message.contains("never finishes a frame"));
+        QCOMPARE(calls, 0);
+    }
+};
+
+QTEST_APPLESS_MAIN(TestProgramTrial)
+#include "test_program_trial.moc"
