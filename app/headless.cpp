@@ -51,9 +51,12 @@ TrialResult tryWithin(OffscreenRenderer &offscreen, const Scene &scene, const Co
         std::fflush(nullptr);
         std::_Exit(1);
     });
+    const auto timeFrame = [&](QSize size) { return offscreen.timeFrame(scene, size); };
     const TrialResult r =
         tryProgram(cl.vertexSource, cl.fragmentSource, cl.size, cl.frameBudgetSeconds * 1000.0,
-                   kCommandLineTrial, [&](QSize size) { return offscreen.timeFrame(scene, size); });
+                   kCommandLineTrial, timeFrame, [&](QSize size) {
+                       return offscreen.renderer().withBuiltIn([&] { return timeFrame(size); });
+                   });
     {
         std::lock_guard<std::mutex> lock(mutex);
         finished = true;

@@ -206,9 +206,12 @@ void Viewport::buildNow(const QString &vertexSource, const QString &fragmentSour
     QString refused;
     const ProgramBuild build =
         m_renderer.setUserProgram(vertexSource, fragmentSource, [&]() -> std::optional<Diagnostic> {
-            const TrialResult trial =
-                tryProgram(vertexSource, fragmentSource, target, m_frameBudgetMs, kWindowTrial,
-                           [this](QSize pixels) { return timeFrame(pixels); });
+            const TrialResult trial = tryProgram(
+                vertexSource, fragmentSource, target, m_frameBudgetMs, kWindowTrial,
+                [this](QSize pixels) { return timeFrame(pixels); },
+                [this](QSize pixels) {
+                    return m_renderer.withBuiltIn([&] { return timeFrame(pixels); });
+                });
             if (trial.refusal)
                 refused = trial.refusal->message;
             return trial.refusal;

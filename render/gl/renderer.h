@@ -62,6 +62,16 @@ public:
                                 const std::function<std::optional<Diagnostic>()> &trial = {});
     bool hasUserProgram() const { return bool(m_user.program); }
     void clearUserProgram() { m_user = {}; } // the built-in programs draw again
+    // Runs `f` while the built-in programs draw in the user program's place (a trial's
+    // reference), then puts the user program back.
+    template <typename F> auto withBuiltIn(F &&f)
+    {
+        BuiltProgram user = std::move(m_user);
+        m_user = {};
+        auto result = f();
+        m_user = std::move(user);
+        return result;
+    }
 
     // The object's mesh (object_mesh.h builds it) and the texture the texture switch puts on
     // it (nullptr: the checker). Uploaded by the next render(). Without a mesh, render()

@@ -34,7 +34,8 @@ Diagnostic refusalAt(const QString &vertex, const QString &fragment, const QStri
 
 TrialResult tryProgram(const QString &vertex, const QString &fragment, QSize target,
                        double budgetMs, const TrialSizes &sizes,
-                       const std::function<double(QSize)> &timeFrame)
+                       const std::function<double(QSize)> &timeFrame,
+                       const std::function<double(QSize)> &timeReference)
 {
     TrialResult r;
     // A loop with no way out never finishes a frame: a GPU driver hangs on it, Mesa drops it
@@ -75,11 +76,26 @@ TrialResult tryProgram(const QString &vertex, const QString &fragment, QSize tar
     // stall in one is multiplied by thousands. A bigger frame confirms it, as big as about
     // 150 ms of per-pixel work by the estimate allows (and no bigger than the target).
     const double confirmPixels =
-        std::min(targetPixels, std::max(4.0 * pixelsOf(sizes.large),
+        std::min(targetPixels, std::max(2.0 * pixelsOf(sizes.large),
                                         std::min(budgetMs, 150.0) / std::max(r.perPixelMs, 1e-9)));
     const int side = std::max(1, int(std::lround(std::sqrt(confirmPixels))));
     const QSize confirm(side, side);
-    fit(pixelsOf(confirm), timeFrame(confirm));
+    // A second sample only where the first could be a light frame's stall.
+    double confirmed = timeFrame(confirm);
+    if (confirmed < 10.0 * sizes.lightMs)
+        confirmed = std::min(confirmed, timeFrame(confirm));
+    fit(pixelsOf(confirm), confirmed);
+    if (timeReference && r.estimatedMs > budgetMs) {
+        // What the built-in program takes on the same frame is the scene's cost: only the
+        // rest grows with the pixels this program shades.
+        const double reference = std::min(timeReference(confirm), timeReference(confirm));
+        const double extraPerPixel = std::max(0.0, confirmed - reference) / pixelsOf(confirm);
+        r.estimatedMs = std::min(r.estimatedMs, reference + extraPerPixel * targetPixels);
+        // Not even twice the built-in program's frame: the difference is the machine's noise,
+        // which the pixels of a big target would multiply into seconds.
+        if (confirmed < 2.0 * reference)
+            return r;
+    }
     if (r.estimatedMs > budgetMs)
         r.refusal = refusalAt(
             vertex, fragment,
@@ -88,7 +104,7 @@ TrialResult tryProgram(const QString &vertex, const QString &fragment, QSize tar
                 .arg(durationText(r.estimatedMs))
                 .arg(target.width())
                 .arg(target.height())
-                .arg(durationText(r.fixedMs + r.perPixelMs * pixelsOf(confirm)))
+                .arg(durationText(confirmed))
                 .arg(confirm.width())
                 .arg(confirm.height())
                 .arg(durationText(budgetMs)));

@@ -35,9 +35,13 @@ struct TrialResult
 };
 
 // `timeFrame(size)`: the milliseconds one frame with the program takes at `size`, waited for.
+// `timeReference(size)`, when given, the same with the built-in program: what the scene costs
+// anyway (a big mesh's vertices, the rasterizer's bins, which do not grow with the pixels as
+// the estimate assumes). Then only the program's own extra cost is held to the budget.
 TrialResult tryProgram(const QString &vertex, const QString &fragment, QSize target,
                        double budgetMs, const TrialSizes &sizes,
-                       const std::function<double(QSize)> &timeFrame);
+                       const std::function<double(QSize)> &timeFrame,
+                       const std::function<double(QSize)> &timeReference = {});
 
 // Where a refusal points: the fragment shader's first loop, else the vertex shader's, else
 // the fragment shader with no line.
