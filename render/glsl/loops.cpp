@@ -1,9 +1,12 @@
 #include "loops.h"
 
+#include <QLocale>
 #include <QSet>
 #include <QStringList>
 
 #include <algorithm>
+#include <cmath>
+#include <optional>
 
 namespace lb {
 
@@ -284,9 +287,66 @@ QStringList namesRead(const std::vector<Token> &t, std::size_t begin, std::size_
     return names;
 }
 
+// An integer literal's value ("1000000000", "0x10", "5u"); nullopt for anything else.
+std::optional<double> integerLiteral(const Token &t)
+{
+    QString digits = t.text;
+    if (digits.endsWith('u') || digits.endsWith('U'))
+        digits.chop(1);
+    bool ok = false;
+    const qlonglong v = digits.toLongLong(&ok, 0);
+    return ok ? std::optional<double>(double(v)) : std::nullopt;
+}
+
+// How many times `for (int i = A; i < B; i++)` runs, read from its three parts when they are
+// that simple: a literal start and bound, a comparison of the counter with the bound (<, <=,
+// !=, >, >=), and a literal step (++, --, += C, -= C). nullopt for anything else.
+std::optional<double> countedSteps(const std::vector<Token> &t, std::size_t ib, std::size_t ie,
+                                   std::size_t cb, std::size_t ce, std::size_t sb, std::size_t se)
+{
+    // init: [int|uint] i = A
+    if (ie > ib && (t[ib].text == "int" || t[ib].text == "uint"))
+        ++ib;
+    if (ie - ib != 3 || !t[ib].identifier || t[ib + 1].text != "=")
+        return std::nullopt;
+    const QString counter = t[ib].text;
+    const std::optional<double> start = integerLiteral(t[ib + 2]);
+    // condition: i < B
+    if (ce - cb != 3 || t[cb].text != counter)
+        return std::nullopt;
+    const QString comparison = t[cb + 1].text;
+    const std::optional<double> bound = integerLiteral(t[cb + 2]);
+    // step: i++, ++i, i--, --i, i += C, i -= C
+    double step = 0.0;
+    if (se - sb == 2 && (t[sb].text == counter || t[sb + 1].text == counter)) {
+        const QString op = t[sb].text == counter ? t[sb + 1].text : t[sb].text;
+        step = op == "++" ? 1.0 : op == "--" ? -1.0 : 0.0;
+    } else if (se - sb == 3 && t[sb].text == counter) {
+        const std::optional<double> c = integerLiteral(t[sb + 2]);
+        if (c)
+            step = t[sb + 1].text == "+=" ? *c : t[sb + 1].text == "-=" ? -*c : 0.0;
+    }
+    if (!start || !bound || step == 0.0)
+        return std::nullopt;
+    const double span = *bound - *start;
+    if (comparison == "<" || comparison == "!=")
+        return step > 0 && span > 0 ? std::ceil(span / step) : std::optional<double>();
+    if (comparison == "<=")
+        return step > 0 && span >= 0 ? std::floor(span / step) + 1 : std::optional<double>();
+    if (comparison == ">")
+        return step < 0 && span < 0 ? std::ceil(span / step) : std::optional<double>();
+    if (comparison == ">=")
+        return step < 0 && span <= 0 ? std::floor(span / step) + 1 : std::optional<double>();
+    return std::nullopt;
+}
+
 } // namespace
 
 namespace {
+
+// A counted loop this long is as good as endless: even at a nanosecond a step, a million
+// fragments would take hours.
+constexpr double kEndlessSteps = 1e7;
 
 struct EndlessLoop
 {
@@ -313,7 +373,8 @@ std::vector<EndlessLoop> endlessLoops(const QString &source, ShaderStage stage)
     // One loop: its condition [cb, ce) (empty: none), what runs each time [bb, be) and the
     // for's step [sb, se).
     auto judge = [&](const Token &at, std::size_t cb, std::size_t ce, std::size_t bb,
-                     std::size_t be, std::size_t sb, std::size_t se) {
+                     std::size_t be, std::size_t sb, std::size_t se, std::size_t ib = 0,
+                     std::size_t ie = 0) {
         if (exits(t, bb, be))
             return;
         // A loop the preprocessor may leave out, or one a macro takes part in (it may hide a
@@ -326,6 +387,17 @@ std::vector<EndlessLoop> endlessLoops(const QString &source, ShaderStage stage)
         };
         if (at.conditional || unsure(cb, ce) || unsure(bb, be) || unsure(sb, se))
             return;
+        if (const std::optional<double> steps = countedSteps(t, ib, ie, cb, ce, sb, se);
+            steps && *steps >= kEndlessSteps) {
+            warn(at,
+                 QString("this loop runs %1 times for every %2: a frame would take seconds "
+                         "or more on any GPU (llvmpipe stops it after 65,535 steps and draws a "
+                         "wrong picture)")
+                     .arg(QLocale(QLocale::English).toString(qlonglong(*steps)))
+                     .arg(stage == ShaderStage::Vertex ? "vertex" : "fragment"),
+                 true);
+            return;
+        }
         if (cb == ce || alwaysTrue(t, cb, ce)) {
             warn(at,
                  QString("this loop never ends: %1 and nothing in it breaks, returns or "
@@ -372,7 +444,8 @@ std::vector<EndlessLoop> endlessLoops(const QString &source, ShaderStage stage)
             if (semis.size() != 2)
                 continue;
             const auto body = statementAt(t, close + 1);
-            judge(t[i], semis[0] + 1, semis[1], body.first, body.second, semis[1] + 1, close);
+            judge(t[i], semis[0] + 1, semis[1], body.first, body.second, semis[1] + 1, close, i + 2,
+                  semis[0]);
         } else if (k == "while" && !doWhiles.contains(i) && i + 1 < t.size() &&
                    t[i + 1].text == "(") {
             const std::size_t close = closing(t, i + 1);

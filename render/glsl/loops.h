@@ -3,6 +3,8 @@
 // without a word and draws garbage, a GPU driver resets the context. Named, as warnings on the
 // loop's line:
 //   for (;;), while (true), do ... while (true) with no break, return or discard in the body;
+//   for (int i = 0; i < 1000000000; i++): a counted loop of ten million steps or more (as
+//   good as endless for a frame; llvmpipe cuts it short, a GPU driver resets the context);
 //   loops whose condition reads only names that nothing in the loop changes (no assignment,
 //   ++ or -- in the body or the for's step) while the body calls no function of the file
 //   (which could change a global or an out parameter).

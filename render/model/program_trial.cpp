@@ -32,27 +32,40 @@ Diagnostic refusalAt(const QString &vertex, const QString &fragment, const QStri
     return d;
 }
 
-TrialResult tryProgram(const QString &vertex, const QString &fragment, QSize target,
-                       double budgetMs, const TrialSizes &sizes,
-                       const std::function<double(QSize)> &timeFrame,
-                       const std::function<double(QSize)> &timeReference)
+std::optional<Diagnostic> refusalWithoutFrames(const QString &vertex, const QString &fragment)
 {
-    TrialResult r;
     // A loop with no way out never finishes a frame: a GPU driver hangs on it, Mesa drops it
     // and draws garbage. No need to draw to know.
     for (const auto &[stage, text] :
          {std::pair{ShaderStage::Fragment, fragment}, std::pair{ShaderStage::Vertex, vertex}})
         for (Diagnostic d : certainEndlessLoops(text, stage)) {
             d.severity = Diagnostic::Severity::Error;
-            d.message = "this program never finishes a frame: the loop here has no condition "
-                        "(or an always-true one) and no break, return or discard";
-            r.refusal = d;
-            return r;
+            d.message = d.message.startsWith("this loop runs ")
+                            ? "this program never finishes a frame: the loop here r" +
+                                  d.message.mid(QString("this loop r").size())
+                            : "this program never finishes a frame: the loop here has no "
+                              "condition (or an always-true one) and no break, return or "
+                              "discard";
+            return d;
         }
+    return std::nullopt;
+}
 
-    // Only a loop can make a frame take seconds; a program without one is not timed (and a
-    // big mesh's frames are not drawn three more times per edit).
-    if (loopPlaces(vertex).empty() && loopPlaces(fragment).empty())
+bool needsFrames(const QString &vertex, const QString &fragment)
+{
+    // (A big mesh's frames are not drawn three more times per edit for a program that
+    // cannot be slow.)
+    return !loopPlaces(vertex).empty() || !loopPlaces(fragment).empty();
+}
+
+TrialResult tryProgram(const QString &vertex, const QString &fragment, QSize target,
+                       double budgetMs, const TrialSizes &sizes,
+                       const std::function<double(QSize)> &timeFrame,
+                       const std::function<double(QSize)> &timeReference)
+{
+    TrialResult r;
+    r.refusal = refusalWithoutFrames(vertex, fragment);
+    if (r.refusal || !needsFrames(vertex, fragment))
         return r;
 
     // A tiny frame first: the driver generates the program's code at its first draw

@@ -34,6 +34,12 @@ struct TrialResult
     std::optional<Diagnostic> refusal; // set when the program is refused
 };
 
+// What trying these sources takes before any frame: a refusal when a loop has no way out (no
+// frame needs drawing to know), and whether they need frames at all (only a loop can make a
+// frame take seconds).
+std::optional<Diagnostic> refusalWithoutFrames(const QString &vertex, const QString &fragment);
+bool needsFrames(const QString &vertex, const QString &fragment);
+
 // `timeFrame(size)`: the milliseconds one frame with the program takes at `size`, waited for.
 // `timeReference(size)`, when given, the same with the built-in program: what the scene costs
 // anyway (a big mesh's vertices, the rasterizer's bins, which do not grow with the pixels as

@@ -40,7 +40,24 @@ private slots:
             << head + "#define FOREVER for(;;)\n  /* for (;;) */ // while (true)\n"
                       "  for ( ; ; )\n  {\n  }\n}\n"
             << 6 << 3 << "no condition";
+        QTest::newRow("10^9 steps")
+            << head + "  float k = 0.0;\n  for (int i = 0; i < 1000000000; i++) { k += 1e-6; }\n}\n"
+            << 5 << 3 << "runs 1,000,000,000 times for every fragment";
+        QTest::newRow("10^7 steps down, by twos")
+            << head + "  for (int i = 20000000; i >= 1; i -= 2) {}\n}\n"
+            << 4 << 3 << "runs 10,000,000 times";
+        QTest::newRow("a hex bound, <=")
+            << head + "  for (uint i = 0u; i <= 0xffffffu; ++i) {}\n}\n"
+            << 4 << 3 << "runs 16,777,216 times";
         // Not named:
+        QTest::newRow("a million steps") << head + "  for (int i = 0; i < 1000000; i++) {}\n}\n"
+                                         << 0 << 0 << "";
+        QTest::newRow("long, with a break")
+            << head + "  for (int i = 0; i < 1000000000; i++) { if (n > 0.5) break; }\n}\n"
+            << 0 << 0 << "";
+        QTest::newRow("counted the wrong way")
+            << head + "  for (int i = 0; i < 1000000000; i--) {}\n}\n"
+            << 0 << 0 << "";
         QTest::newRow("counted") << head + "  for (int i = 0; i < 4; ++i) {}\n}\n" << 0 << 0 << "";
         QTest::newRow("break") << head + "  for (;;) { if (n > 1.0) break; }\n}\n" << 0 << 0 << "";
         QTest::newRow("discard") << head + "  while (true) { discard; }\n}\n" << 0 << 0 << "";
