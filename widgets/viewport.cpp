@@ -44,6 +44,12 @@ Viewport::Viewport(SceneDocument *document, QWidget *parent)
                                   "padding: 3px 6px; }");
     m_compareLabel->hide();
     m_labels = new ProbeLabels(document, this);
+    m_trialProcess = new TrialProcess(this);
+    connect(m_trialProcess, &TrialProcess::finished, this, &Viewport::trialFinished);
+    const QString mode = qEnvironmentVariable("LIGHTBENCH_PROGRAM_TRIAL");
+    m_trialMode = mode == "off"      ? TrialMode::Off
+                  : mode == "window" ? TrialMode::Window
+                                     : TrialMode::Helper;
     m_animation.setInterval(16);
     connect(&m_animation, &QTimer::timeout, this, &Viewport::advanceAnimation);
     syncAnimation();
@@ -194,28 +200,89 @@ double Viewport::rawBuildMilliseconds(const QString &vertexSource, const QString
     return ms;
 }
 
-void Viewport::buildNow(const QString &vertexSource, const QString &fragmentSource)
+void Viewport::buildNow(const QString &vertexSource, const QString &fragmentSource, bool tryHere)
 {
-    // Tried on tiny frames before it is adopted (program_trial.h): a program that would take
+    // Tried on small frames before it is adopted (program_trial.h): a program that would take
     // longer than the budget per frame at this view's size is refused, instead of freezing
     // the window for every frame it draws.
     const QSize target = size() * devicePixelRatio();
     // With no object yet (a mesh file still loading) the trial would time the background:
     // it runs again once the object is there (setObject).
     m_trialWithoutObject = !m_renderer.objectMesh();
+    m_candidate.reset(); // a trial still running answers for a program no longer wanted
+    m_renderer.dropCandidate();
+    if (!tryHere && m_trialMode == TrialMode::Helper && m_trialProcess->isAvailable() &&
+        !refusalWithoutFrames(vertexSource, fragmentSource) &&
+        needsFrames(vertexSource, fragmentSource)) {
+        // In the helper: built here (the editor gets its diagnostics now) but drawn only
+        // once the helper's answer comes (trialFinished); the window goes on meanwhile.
+        const ProgramBuild build = m_renderer.buildCandidate(vertexSource, fragmentSource);
+        if (!build.ok()) {
+            finishBuild(build, {}, vertexSource, fragmentSource);
+            return;
+        }
+        m_candidate = Candidate{++m_lastTrialId, build, vertexSource, fragmentSource};
+        trialwire::TryRequest request;
+        request.id = m_candidate->id;
+        request.scene = m_document->scene().toJson();
+        request.vertex = vertexSource;
+        request.fragment = fragmentSource;
+        request.target = target;
+        request.budgetMs = m_frameBudgetMs;
+        m_trialProcess->tryProgram(request, m_renderer.sharedObjectMesh());
+        return;
+    }
     QString refused;
-    const ProgramBuild build =
-        m_renderer.setUserProgram(vertexSource, fragmentSource, [&]() -> std::optional<Diagnostic> {
-            const TrialResult trial = tryProgram(
-                vertexSource, fragmentSource, target, m_frameBudgetMs, kWindowTrial,
-                [this](QSize pixels) { return timeFrame(pixels); },
-                [this](QSize pixels) {
-                    return m_renderer.withBuiltIn([&] { return timeFrame(pixels); });
-                });
-            if (trial.refusal)
-                refused = trial.refusal->message;
-            return trial.refusal;
-        });
+    const auto trial = [&]() -> std::optional<Diagnostic> {
+        const TrialResult result = tryProgram(
+            vertexSource, fragmentSource, target, m_frameBudgetMs, kWindowTrial,
+            [this](QSize pixels) { return timeFrame(pixels); },
+            [this](QSize pixels) {
+                return m_renderer.withBuiltIn([&] { return timeFrame(pixels); });
+            });
+        if (result.refusal)
+            refused = result.refusal->message;
+        return result.refusal;
+    };
+    const ProgramBuild build = m_trialMode == TrialMode::Off
+                                   ? m_renderer.setUserProgram(vertexSource, fragmentSource)
+                                   : m_renderer.setUserProgram(vertexSource, fragmentSource, trial);
+    finishBuild(build, refused, vertexSource, fragmentSource);
+}
+
+void Viewport::trialFinished(quint64 id, TrialProcess::Outcome outcome, const TrialResult &result)
+{
+    if (!m_candidate || m_candidate->id != id || !m_renderer.isInitialized())
+        return; // a newer program is being tried, or there is no context to draw it in
+    const Candidate tried = std::move(*m_candidate);
+    m_candidate.reset();
+    makeCurrent();
+    if (outcome != TrialProcess::Outcome::Tried) {
+        // No helper to try it: tried here, as before there was one.
+        m_renderer.dropCandidate();
+        buildNow(tried.vertex, tried.fragment, true);
+        doneCurrent();
+        return;
+    }
+    ProgramBuild build = tried.build;
+    QString refused;
+    if (result.refusal) {
+        m_renderer.dropCandidate();
+        build.linked = false;
+        build.diagnostics.push_back(*result.refusal);
+        refused = result.refusal->message;
+    } else if (m_renderer.hasCandidate()) {
+        m_renderer.adoptCandidate();
+    } else {
+        build = m_renderer.setUserProgram(tried.vertex, tried.fragment); // a new context since
+    }
+    doneCurrent();
+    finishBuild(build, refused, tried.vertex, tried.fragment);
+}
+
+void Viewport::finishBuild(const ProgramBuild &build, const QString &refused,
+                           const QString &vertexSource, const QString &fragmentSource)
+{
     const QString drawing = m_renderer.hasUserProgram() ? tr("the last good program is drawing")
                                                         : tr("the built-in program is drawing");
     if (build.ok()) {
@@ -273,12 +340,16 @@ void Viewport::setObject(std::shared_ptr<const Mesh> mesh, std::shared_ptr<const
 {
     const bool changed = mesh.get() != m_renderer.objectMesh();
     m_renderer.setObject(std::move(mesh), std::move(texture)); // uploaded by the next paint
-    if (m_trialWithoutObject && m_renderer.objectMesh() && m_renderer.isInitialized() &&
-        m_renderer.hasUserProgram()) {
+    if (m_trialWithoutObject && m_renderer.objectMesh() && m_renderer.isInitialized()) {
         // The program was tried on an empty view: tried again on the object, as if new.
         makeCurrent();
-        m_renderer.clearUserProgram();
-        buildNow(m_goodVertex, m_goodFragment);
+        if (m_candidate) {
+            const Candidate waiting = *m_candidate; // buildNow() drops it
+            buildNow(waiting.vertex, waiting.fragment);
+        } else if (m_renderer.hasUserProgram()) {
+            m_renderer.clearUserProgram();
+            buildNow(m_goodVertex, m_goodFragment);
+        }
         doneCurrent();
     }
     update();

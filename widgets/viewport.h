@@ -7,6 +7,7 @@
 #include "probe_labels.h"
 #include "renderer.h"
 #include "scene_document.h"
+#include "trial_process.h"
 
 #include <QElapsedTimer>
 #include <QOpenGLWidget>
@@ -54,6 +55,14 @@ public:
     // (tried on tiny frames first); Edit > Preferences sets it.
     void setFrameBudget(double milliseconds) { m_frameBudgetMs = milliseconds; }
     double frameBudget() const { return m_frameBudgetMs; }
+    // Where a program with loops is tried: in the trial helper (the window never waits; the
+    // default), in this widget's own context (when there is no helper), or not at all (for
+    // the benchmark's comparison only). $LIGHTBENCH_PROGRAM_TRIAL=helper|window|off.
+    enum class TrialMode { Helper, Window, Off };
+    void setTrialMode(TrialMode mode) { m_trialMode = mode; }
+    TrialProcess *trialProcess() const { return m_trialProcess; }
+    // A program is being tried in the helper: the one before it draws meanwhile.
+    bool isTrying() const { return m_candidate.has_value(); }
     // For the benchmark: the bare compile and link of these sources in this context (ms).
     double rawBuildMilliseconds(const QString &vertexSource, const QString &fragmentSource,
                                 bool draw = false);
@@ -77,7 +86,10 @@ protected:
 private:
     void releaseGl();               // with the context made current: the renderer's GL objects go
     double timeFrame(QSize pixels); // one frame in a framebuffer of its own, waited for (ms)
-    void buildNow(const QString &vertexSource, const QString &fragmentSource);
+    void buildNow(const QString &vertexSource, const QString &fragmentSource, bool tryHere = false);
+    void trialFinished(quint64 id, TrialProcess::Outcome outcome, const TrialResult &result);
+    void finishBuild(const ProgramBuild &build, const QString &refused, const QString &vertexSource,
+                     const QString &fragmentSource);
     void setBanner(const QString &text);
     void updateCompareLabel();
     bool nearWipe(QPoint position) const;
@@ -90,6 +102,17 @@ private:
     QString m_programName;
     double m_frameBudgetMs = 1000.0;
     bool m_trialWithoutObject = false; // the user program was tried before there was an object
+    TrialMode m_trialMode = TrialMode::Helper;
+    TrialProcess *m_trialProcess;
+    // The program built aside while the helper tries it (Renderer::buildCandidate).
+    struct Candidate
+    {
+        quint64 id;
+        ProgramBuild build;
+        QString vertex, fragment;
+    };
+    std::optional<Candidate> m_candidate;
+    quint64 m_lastTrialId = 0;
     QLabel *m_banner;
     QLabel *m_compareLabel;
     bool m_draggingWipe = false;

@@ -48,8 +48,16 @@ QString OffscreenRenderer::initialize(QSize size)
     return m_renderer.initialize();
 }
 
+void OffscreenRenderer::setObjectMesh(std::shared_ptr<const Mesh> mesh)
+{
+    m_renderer.setObject(std::move(mesh), nullptr);
+    m_meshGiven = true;
+}
+
 const Mesh &OffscreenRenderer::objectMesh(const Scene &scene)
 {
+    if (m_meshGiven)
+        return *m_renderer.objectMesh();
     const MeshFile *file = scene.object.meshPath.isEmpty() ? nullptr : m_file.get();
     const ObjectMeshKey key = objectMeshKey(scene.object, file);
     if (key != m_key || !m_renderer.objectMesh()) {

@@ -41,6 +41,9 @@ public:
     void setMeshFile(std::shared_ptr<const MeshFile> file) { m_file = std::move(file); }
     // The mesh drawn for `scene`, built when the object settings ask for another one.
     const Mesh &objectMesh(const Scene &scene);
+    // Draws this mesh for every scene from now on, whatever its object says (the trial
+    // helper is given the window's mesh).
+    void setObjectMesh(std::shared_ptr<const Mesh> mesh);
 
 private:
     QOpenGLContext m_context;
@@ -50,6 +53,7 @@ private:
     QSize m_size;
     std::shared_ptr<const MeshFile> m_file;
     std::optional<ObjectMeshKey> m_key;
+    bool m_meshGiven = false;
 };
 
 } // namespace lb

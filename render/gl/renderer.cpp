@@ -53,7 +53,7 @@ void Renderer::cleanup()
     m_sideFbo[0].reset();
     m_sideFbo[1].reset();
     m_objectUploaded = m_objectTextureUploaded = false;
-    for (BuiltProgram *p : {&m_gouraud, &m_phong, &m_differenceProgram, &m_user})
+    for (BuiltProgram *p : {&m_gouraud, &m_phong, &m_differenceProgram, &m_user, &m_candidate})
         *p = {};
     m_checkerTexture.reset();
     m_objectTextureGl.reset();
@@ -75,6 +75,23 @@ ProgramBuild Renderer::setUserProgram(const QString &vertexSource, const QString
             report.diagnostics.push_back(*refusal);
         }
     return report;
+}
+
+ProgramBuild Renderer::buildCandidate(const QString &vertexSource, const QString &fragmentSource)
+{
+    m_candidate = buildProgram(*this, vertexSource, fragmentSource);
+    if (!m_candidate.build.ok()) {
+        const ProgramBuild report = m_candidate.build;
+        m_candidate = {};
+        return report;
+    }
+    return m_candidate.build;
+}
+
+void Renderer::adoptCandidate()
+{
+    m_user = std::move(m_candidate);
+    m_candidate = {};
 }
 
 const BuiltProgram &Renderer::objectProgram(const Scene &scene) const

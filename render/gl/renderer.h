@@ -61,6 +61,12 @@ public:
     ProgramBuild setUserProgram(const QString &vertexSource, const QString &fragmentSource,
                                 const std::function<std::optional<Diagnostic>()> &trial = {});
     bool hasUserProgram() const { return bool(m_user.program); }
+    // A program built aside, not drawn until it is adopted (while it is tried elsewhere); a
+    // new candidate replaces the one before.
+    ProgramBuild buildCandidate(const QString &vertexSource, const QString &fragmentSource);
+    bool hasCandidate() const { return bool(m_candidate.program); }
+    void adoptCandidate();
+    void dropCandidate() { m_candidate = {}; }
     void clearUserProgram() { m_user = {}; } // the built-in programs draw again
     // Runs `f` while the built-in programs draw in the user program's place (a trial's
     // reference), then puts the user program back.
@@ -78,6 +84,7 @@ public:
     // draws only the background and the light.
     void setObject(std::shared_ptr<const Mesh> mesh, std::shared_ptr<const Texture> texture);
     const Mesh *objectMesh() const { return m_objectMesh.get(); }
+    const std::shared_ptr<const Mesh> &sharedObjectMesh() const { return m_objectMesh; }
     const Texture &texture() const { return m_objectTexture ? *m_objectTexture : m_checker; }
 
 private:
@@ -95,7 +102,7 @@ private:
     void measureDifference(QSize pixels);
 
     bool m_initialized = false;
-    BuiltProgram m_gouraud, m_phong, m_differenceProgram, m_user;
+    BuiltProgram m_gouraud, m_phong, m_differenceProgram, m_user, m_candidate;
     Overlays m_overlays;
     Texture m_checker;
     GlTexture m_checkerTexture, m_objectTextureGl;

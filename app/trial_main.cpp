@@ -1,0 +1,20 @@
+// lightbench-trial: the helper process that tries the user's programs before the window
+// draws them (render/trial/trial_server.h). The window starts it once and keeps it; a driver
+// that hangs or crashes on a program does it here, and the window starts another.
+
+#include "trial_server.h"
+
+#include <QGuiApplication>
+
+#include <cstdio>
+
+#include <signal.h>
+#include <sys/prctl.h>
+
+int main(int argc, char **argv)
+{
+    // Goes with the window: a helper must not outlive it, stuck in a draw.
+    prctl(PR_SET_PDEATHSIG, SIGKILL);
+    QGuiApplication app(argc, argv);
+    return lb::runTrialServer(stdin, stdout);
+}

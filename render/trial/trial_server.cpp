@@ -1,0 +1,80 @@
+#include "trial_server.h"
+
+#include "offscreen.h"
+#include "program_trial.h"
+#include "trial_wire.h"
+
+#include <memory>
+
+namespace lb {
+
+namespace {
+
+bool readExactly(std::FILE *in, char *data, std::size_t size)
+{
+    return std::fread(data, 1, size, in) == size;
+}
+
+std::optional<QByteArray> readFrame(std::FILE *in)
+{
+    quint32 size = 0;
+    if (!readExactly(in, reinterpret_cast<char *>(&size), sizeof size))
+        return std::nullopt;
+    QByteArray message(qsizetype(size), Qt::Uninitialized);
+    if (!readExactly(in, message.data(), size))
+        return std::nullopt;
+    return message;
+}
+
+void send(std::FILE *out, const QByteArray &message)
+{
+    const QByteArray frame = trialwire::framed(message);
+    std::fwrite(frame.constData(), 1, std::size_t(frame.size()), out);
+    std::fflush(out);
+}
+
+trialwire::TryReply tryRequest(OffscreenRenderer &offscreen, const trialwire::TryRequest &r)
+{
+    trialwire::TryReply reply;
+    reply.id = r.id;
+    if (!offscreen.useProgram(r.vertex, r.fragment).ok()) {
+        reply.built = false;
+        return reply;
+    }
+    const Scene scene = Scene::fromJson(r.scene);
+    const auto timeFrame = [&](QSize size) { return offscreen.timeFrame(scene, size); };
+    // The command line's sizes: this process may take its time, the window does not wait.
+    reply.result = tryProgram(
+        r.vertex, r.fragment, r.target, r.budgetMs, kCommandLineTrial, timeFrame, [&](QSize size) {
+            return offscreen.renderer().withBuiltIn([&] { return timeFrame(size); });
+        });
+    return reply;
+}
+
+} // namespace
+
+int runTrialServer(std::FILE *in, std::FILE *out)
+{
+    setDefaultGlFormat();
+    OffscreenRenderer offscreen;
+    if (const QString error = offscreen.initialize(QSize(64, 64)); !error.isEmpty()) {
+        std::fprintf(stderr, "lightbench-trial: %s\n", qPrintable(error));
+        return 3;
+    }
+    // Until the window sends its object: nothing but the background.
+    offscreen.setObjectMesh(std::make_shared<Mesh>());
+    while (const std::optional<QByteArray> frame = readFrame(in)) {
+        const std::optional<trialwire::Decoded> message = trialwire::decode(*frame);
+        if (!message) {
+            std::fputs("lightbench-trial: a message this build does not know\n", stderr);
+            return 3;
+        }
+        if (message->type == trialwire::Message::Mesh)
+            offscreen.setObjectMesh(std::make_shared<Mesh>(message->mesh));
+        else if (message->type == trialwire::Message::Try)
+            send(out, trialwire::encodeReply(tryRequest(offscreen, message->request)));
+    }
+    return 0;
+}
+
+} // namespace lb
