@@ -4,24 +4,42 @@
 # pause to the first frame swapped with the new program. Beside it, in the same process and
 # context: the bare glCompileShader + glLinkProgram of the same sources, and the same plus one
 # draw call and glFinish. Medians. Mesa's shader cache is off for the whole run.
-# Usage: bench/edit.sh [EDITS]   (default 50; builds first, like scripts/run)
+# Each shader pair is measured with every program trial (LIGHTBENCH_PROGRAM_TRIAL): "helper"
+# (the default: a program with loops is tried in lightbench-trial before it draws), "window"
+# (tried in the window's own context) and "off" (drawn untried), one process each, in turn.
+# Usage: bench/edit.sh [EDITS] [ROUNDS]   (default 50 edits, 1 round; builds first, like
+# scripts/run)
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/../scripts/setup.sh"
 EDITS=${1:-50}
+ROUNDS=${2:-1}
 ensure_packages
 build lightbench >/dev/null
 config=$(mktemp -d) # a fresh session: no saved layout or shaders
 trap 'rm -rf "$config"' EXIT
-XDG_CONFIG_HOME=$config MESA_SHADER_CACHE_DISABLE=true \
-    xvfb-run -a -s "$XVFB_SCREEN" "$BUILD_DIR/app/lightbench" --bench-edits "$EDITS" \
-    --vertex "$ROOT/bench/shaders/long.vert" --fragment "$ROOT/bench/shaders/long.frag" |
-    python3 -c '
-import json, sys
-print("| shaders | fragment lines | edit to pixels (ms) | compile + link (ms) | ratio | compile + link + first draw (ms) | ratio |")
-print("|---|---|---|---|---|---|---|")
-for line in sys.stdin:
-    r = json.loads(line)
-    print("| %s | %d | %.1f | %.1f | %.1fx | %.1f | %.2fx |" % (r["shaders"], r["fragmentLines"],
-          r["editToPixelsMs"], r["rawCompileLinkMs"], r["ratioToCompileLink"],
-          r["rawCompileLinkFirstDrawMs"], r["ratioToCompileLinkFirstDraw"]))
+for ((round = 0; round < ROUNDS; round++)); do
+    for trial in helper window off; do
+        XDG_CONFIG_HOME=$config MESA_SHADER_CACHE_DISABLE=true LIGHTBENCH_PROGRAM_TRIAL=$trial \
+            xvfb-run -a -s "$XVFB_SCREEN" "$BUILD_DIR/app/lightbench" --bench-edits "$EDITS" \
+            --vertex "$ROOT/bench/shaders/long.vert" --fragment "$ROOT/bench/shaders/long.frag"
+    done
+done | python3 -c '
+import json, os, statistics, sys
+rows = [json.loads(line) for line in sys.stdin]
+print("| shaders | fragment lines | trial | edit to pixels (ms) | compile + link (ms) | ratio | compile + link + first draw (ms) | ratio | vs. trial off |")
+print("|---|---|---|---|---|---|---|---|---|")
+def med(name, trial, key):
+    return statistics.median(r[key] for r in rows if r["shaders"] == name and r["trial"] == trial)
+seen = []
+for r in rows:
+    key = (r["shaders"], r["trial"])
+    if key in seen:
+        continue
+    seen.append(key)
+    name, trial = key
+    e, c, d = (med(name, trial, k) for k in ("editToPixelsMs", "rawCompileLinkMs", "rawCompileLinkFirstDrawMs"))
+    print("| %s | %d | %s | %.1f | %.1f | %.1fx | %.1f | %.2fx | %.2fx |" % (name, r["fragmentLines"],
+          trial, e, c, e / c, d, e / d, e / med(name, "off", "editToPixelsMs")))
+print()
+print("load average: %.2f %.2f %.2f" % os.getloadavg())
 '

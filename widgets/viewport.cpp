@@ -1,5 +1,6 @@
 #include "viewport.h"
 
+#include "loops.h"
 #include "program_trial.h"
 
 #include <QLabel>
@@ -230,6 +231,11 @@ void Viewport::buildNow(const QString &vertexSource, const QString &fragmentSour
         request.target = target;
         request.budgetMs = m_frameBudgetMs;
         m_trialProcess->tryProgram(request, m_renderer.sharedObjectMesh());
+        // Meanwhile the driver may generate its code here (a frame with nothing rasterized),
+        // so the first frame after the answer does not: only when the vertex stage, which
+        // does run, has no loop to be slow in.
+        if (loopPlaces(vertexSource).empty())
+            prepareCandidate();
         return;
     }
     QString refused;
@@ -296,6 +302,18 @@ void Viewport::finishBuild(const ProgramBuild &build, const QString &refused,
     }
     update();
     emit programBuilt(build);
+}
+
+void Viewport::prepareCandidate()
+{
+    QOpenGLFramebufferObjectFormat format; // the widget's, as in timeFrame()
+    format.setAttachment(QOpenGLFramebufferObject::CombinedDepthStencil);
+    QOpenGLFramebufferObject fbo(QSize(4, 4), format);
+    if (!fbo.isValid())
+        return;
+    fbo.bind();
+    m_renderer.prepareCandidate(m_document->scene(), fbo.size());
+    fbo.release();
 }
 
 double Viewport::timeFrame(QSize pixels)

@@ -86,6 +86,7 @@ protected:
 private:
     void releaseGl();               // with the context made current: the renderer's GL objects go
     double timeFrame(QSize pixels); // one frame in a framebuffer of its own, waited for (ms)
+    void prepareCandidate();        // Renderer::prepareCandidate in such a framebuffer
     void buildNow(const QString &vertexSource, const QString &fragmentSource, bool tryHere = false);
     void trialFinished(quint64 id, TrialProcess::Outcome outcome, const TrialResult &result);
     void finishBuild(const ProgramBuild &build, const QString &refused, const QString &vertexSource,

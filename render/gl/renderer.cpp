@@ -94,6 +94,17 @@ void Renderer::adoptCandidate()
     m_candidate = {};
 }
 
+void Renderer::prepareCandidate(const Scene &scene, QSize pixels)
+{
+    if (!m_initialized || !m_candidate.program || pixels.isEmpty())
+        return;
+    uploadObject();
+    const QRect whole(QPoint(0, 0), pixels);
+    glEnable(GL_RASTERIZER_DISCARD);
+    drawView(scene, m_candidate, whole, whole, pixels.height());
+    glDisable(GL_RASTERIZER_DISCARD);
+}
+
 const BuiltProgram &Renderer::objectProgram(const Scene &scene) const
 {
     return m_user.program ? m_user : builtInProgram(scene);

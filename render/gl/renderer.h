@@ -67,6 +67,11 @@ public:
     bool hasCandidate() const { return bool(m_candidate.program); }
     void adoptCandidate();
     void dropCandidate() { m_candidate = {}; }
+    // Draws the candidate into the bound framebuffer with the rasterizer discarding every
+    // primitive: its vertex stage runs, its fragment stage never does, and a driver that
+    // generates code at the first draw (llvmpipe) does so now, while the candidate is tried
+    // elsewhere, instead of in the first frame after it.
+    void prepareCandidate(const Scene &scene, QSize pixels);
     void clearUserProgram() { m_user = {}; } // the built-in programs draw again
     // Runs `f` while the built-in programs draw in the user program's place (a trial's
     // reference), then puts the user program back.

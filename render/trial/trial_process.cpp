@@ -107,6 +107,9 @@ void TrialProcess::send(const Pending &pending)
         m_meshSent = true;
     }
     m_process->write(trialwire::framed(trialwire::encodeTry(pending.request)));
+    // Written now, not when the event loop next runs: the window may be busy a while (the
+    // driver generating the program's code) and the helper can start meanwhile.
+    m_process->waitForBytesWritten(0);
     m_inFlight = pending;
     m_deadline.start(m_limitMs);
 }
