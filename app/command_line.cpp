@@ -146,6 +146,9 @@ const OptionSpec kOptions[] = {
     {"fragment", "FILE", "Fragment shader to draw with (with --vertex)."},
     {"frame-budget", "SECONDS",
      "Refuse your program when one frame at --size would take longer (default 1; 0.01 to 60)."},
+    {"translate-webgl1", "",
+     "Run WebGL 1 shaders (no #version) translated to GLSL 3.30 core instead of under "
+     "\"#version 100\" (automatic where the driver refuses #version 100)."},
     {"check", "",
      "Compile and link --vertex and --fragment and try them on small frames, print each "
      "diagnostic as FILE:LINE:COLUMN: error|warning: message; exit 0 if the program links and "
@@ -221,6 +224,7 @@ void parseInto(const QCommandLineParser &parser, CommandLine &cl)
         cl.frameBudgetSeconds = double(v);
     }
     cl.presentation = given("presentation");
+    cl.translateWebGl1 = given("translate-webgl1");
     if (given("ui-scale"))
         cl.uiScalePercent = integer("ui-scale", value("ui-scale"), 100, 250);
     cl.check = given("check");

@@ -40,6 +40,7 @@ struct CommandLine
     QString vertexSource, fragmentSource;
     double frameBudgetSeconds = 1.0;   // --frame-budget: a user program slower is refused
     bool presentation = false;         // --presentation: the window full screen, presentation scale
+    bool translateWebGl1 = false;      // --translate-webgl1: WebGL 1 shaders as GLSL 3.30
     std::optional<int> uiScalePercent; // --ui-scale PERCENT
     bool check = false; // --check: compile and link them, print diagnostics, exit 0 or 1
     int benchEdits = 0; // --bench-edits N (window: edit-to-pixels timing; --vertex/--fragment

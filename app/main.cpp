@@ -10,6 +10,7 @@
 #include "scene_actions.h"
 #include "shader_document.h"
 #include "viewport.h"
+#include "webgl1_translation.h"
 
 #include <QApplication>
 #include <QGuiApplication>
@@ -56,6 +57,10 @@ int main(int argc, char **argv)
         return 1;
     }
     lb::setDefaultGlFormat();
+    if (cl.translateWebGl1) {
+        lb::setWebGl1TranslationForced(true);
+        qputenv("LIGHTBENCH_TRANSLATE_WEBGL1", "1"); // the trial helper translates too
+    }
     QCoreApplication::setOrganizationName("lightbench");
     QCoreApplication::setApplicationName("lightbench");
 

@@ -2,6 +2,7 @@
 
 #include "loops.h"
 #include "program_trial.h"
+#include "webgl1_translation.h"
 
 #include <QLabel>
 #include <QMouseEvent>
@@ -88,10 +89,11 @@ void Viewport::initializeGL()
     }
     const QSurfaceFormat f = context()->format();
     auto *gl = context()->functions();
-    emit glInfo(QString("OpenGL %1.%2, %3")
+    emit glInfo(QString("OpenGL %1.%2, %3%4")
                     .arg(f.majorVersion())
                     .arg(f.minorVersion())
-                    .arg(reinterpret_cast<const char *>(gl->glGetString(GL_RENDERER))));
+                    .arg(reinterpret_cast<const char *>(gl->glGetString(GL_RENDERER)))
+                    .arg(translatesWebGl1() ? tr("; WebGL 1 shaders run as GLSL 3.30") : ""));
 }
 
 void Viewport::paintGL()

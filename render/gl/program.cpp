@@ -3,6 +3,7 @@
 #include "dialect.h"
 #include "loops.h"
 #include "presets.h"
+#include "webgl1_translation.h"
 
 #include <QByteArray>
 #include <QElapsedTimer>
@@ -62,7 +63,7 @@ GlShader compile(QOpenGLExtraFunctions &gl, ShaderStage stage, const QString &so
                        .arg(kMaxSourceCharacters / 1024));
         return {};
     }
-    const PreparedSource prepared = prepareSource(source);
+    const PreparedSource prepared = prepareSource(source, stage, translatesWebGl1());
     GlShader shader(
         gl.glCreateShader(stage == ShaderStage::Vertex ? GL_VERTEX_SHADER : GL_FRAGMENT_SHADER));
     const QByteArray utf8 = prepared.text.toUtf8();
@@ -89,6 +90,22 @@ GlShader compile(QOpenGLExtraFunctions &gl, ShaderStage stage, const QString &so
         build.diagnostics.push_back(d);
     return shader;
 }
+
+} // namespace
+
+bool acceptsVersion100(QOpenGLExtraFunctions &gl)
+{
+    GlShader shader(gl.glCreateShader(GL_FRAGMENT_SHADER));
+    const char *text = "#version 100\nprecision mediump float;\n"
+                       "void main() { gl_FragColor = vec4(1.0); }\n";
+    gl.glShaderSource(shader.id(), 1, &text, nullptr);
+    gl.glCompileShader(shader.id());
+    GLint status = GL_FALSE;
+    gl.glGetShaderiv(shader.id(), GL_COMPILE_STATUS, &status);
+    return status == GL_TRUE;
+}
+
+namespace {
 
 // The GLSL type of a reflected uniform, without GL enums beyond this file.
 void describeType(GLenum type, ActiveUniform &u)

@@ -47,6 +47,10 @@ double rawBuildMilliseconds(QOpenGLExtraFunctions &gl, const QString &vertexSour
 
 // A built-in pair from the resources (:/shaders/NAME.vert and FRAGMENT.frag, FRAGMENT
 // defaulting to NAME). A failure is added to `error`: the build is broken, not the user.
+// Whether this context's driver compiles a "#version 100" (GLSL ES 1.00) shader; when it
+// does not, WebGL 1 sources are translated from then on (webgl1_translation.h).
+bool acceptsVersion100(QOpenGLExtraFunctions &gl);
+
 BuiltProgram buildBuiltIn(QOpenGLExtraFunctions &gl, const QString &name, QString &error,
                           const QString &fragment = {});
 

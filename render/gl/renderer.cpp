@@ -3,6 +3,7 @@
 #include "frames.h"
 #include "gpu_texture.h"
 #include "uniform_upload.h"
+#include "webgl1_translation.h"
 
 #include <algorithm>
 
@@ -26,6 +27,7 @@ Renderer::~Renderer() = default;
 QString Renderer::initialize()
 {
     initializeOpenGLFunctions();
+    noteDriverRefusesVersion100(!acceptsVersion100(*this));
     QString error;
     m_gouraud = buildBuiltIn(*this, "gouraud", error);
     m_phong = buildBuiltIn(*this, "phong", error);

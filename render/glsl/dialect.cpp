@@ -1,5 +1,7 @@
 #include "dialect.h"
 
+#include "webgl1_translation.h"
+
 #include <QRegularExpression>
 
 namespace lb {
@@ -44,6 +46,19 @@ PreparedSource prepareSource(const QString &source)
     p.version = "100";
     p.text = "#version 100\n" + source;
     p.linesAdded = 1;
+    return p;
+}
+
+PreparedSource prepareSource(const QString &source, ShaderStage stage, bool translateWebGl1)
+{
+    PreparedSource p = prepareSource(source);
+    if (!translateWebGl1 || p.version != "100")
+        return p;
+    const TranslatedSource t = lb::translateWebGl1(source, stage);
+    p.text = t.text;
+    p.linesAdded = t.linesAdded;
+    p.dialect = Dialect::WebGL1Translated;
+    p.version = "330 core";
     return p;
 }
 

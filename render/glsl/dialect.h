@@ -5,6 +5,8 @@
 // attribute, varying, gl_FragColor, texture2D and precision work as pasted. Anything with
 // #version runs as written.
 
+#include "diagnostics.h"
+
 #include <QString>
 
 namespace lb {
@@ -13,7 +15,11 @@ namespace lb {
 // files holding longer ones are not read.
 constexpr int kMaxSourceCharacters = 1024 * 1024;
 
-enum class Dialect { WebGL1Implicit, Versioned };
+enum class Dialect {
+    WebGL1Implicit,   // no #version: "#version 100" in front
+    Versioned,        // as written
+    WebGL1Translated, // no #version or "#version 100", rewritten as GLSL 3.30 core
+};
 
 struct PreparedSource
 {
@@ -24,6 +30,9 @@ struct PreparedSource
 };
 
 PreparedSource prepareSource(const QString &source);
+// The same, translated (webgl1_translation.h) when `translateWebGl1` and the source is WebGL 1
+// (no #version, or "#version 100").
+PreparedSource prepareSource(const QString &source, ShaderStage stage, bool translateWebGl1);
 
 // The source with comments blanked out (line structure kept), for simple textual checks.
 QString withoutComments(const QString &source);

@@ -255,6 +255,11 @@ private slots:
         QCOMPARE(bad.exitCode, 1);
         QVERIFY2(bad.out.startsWith((frag + ":3:").toUtf8()), bad.out.constData());
         QVERIFY(bad.out.contains(": error: "));
+        // Translated to GLSL 3.30 (drivers without "#version 100"): the same line.
+        const Run translated =
+            run({"--check", "--translate-webgl1", "--vertex", vert, "--fragment", frag});
+        QCOMPARE(translated.exitCode, 1);
+        QVERIFY2(translated.out.startsWith((frag + ":3:").toUtf8()), translated.out.constData());
         // The same program for --render: no image, the diagnostics on stderr, exit 1.
         const QString png = m_dir.filePath("user.png");
         const Run render = run({"--render", png, "--vertex", vert, "--fragment", frag});
@@ -268,6 +273,9 @@ private slots:
         const Run good = run({"--check", "--vertex", vert, "--fragment", frag});
         QCOMPARE(good.exitCode, 0);
         QVERIFY2(good.out.isEmpty(), good.out.constData());
+        QCOMPARE(
+            run({"--check", "--translate-webgl1", "--vertex", vert, "--fragment", frag}).exitCode,
+            0);
         QCOMPARE(run({"--render", png, "--vertex", vert, "--fragment", frag}).exitCode, 0);
         QVERIFY(QFile::exists(png));
     }

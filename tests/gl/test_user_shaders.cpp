@@ -3,6 +3,7 @@
 // program keeps drawing.
 #include "presets.h"
 #include "reference_compare.h"
+#include "webgl1_translation.h"
 
 #include <QFile>
 #include <QGuiApplication>
@@ -77,18 +78,25 @@ private slots:
         QFETCH(int, tolerance);
         // The Presets menu's copies: the slides' code as printed, under a comment header.
         const Preset preset{name, ":/shaders/presets/slides_" + name};
-        const ProgramBuild build =
-            m_offscreen.useProgram(preset.vertexSource(), preset.fragmentSource());
-        QVERIFY2(build.ok(), qPrintable(build.log()));
-        QVERIFY2(build.diagnostics.empty(), qPrintable(build.log()));
-        // The slides' constants are the default scene: their light (0, 1.8, 1.3, 1) in world
-        // coordinates, their red plastic, Blinn-Phong; their V = (0,0,1) is the parallel one.
-        Scene s = testScene();
-        s.shading.shading = Shading(shading);
-        s.shading.projection = Projection::Orthographic;
-        const QString failure =
-            checkAgainstReference(m_offscreen, s, "slides " + name, 100, 5, tolerance);
-        QVERIFY2(failure.isEmpty(), qPrintable(failure));
+        // As pasted, and translated to GLSL 3.30 (drivers without "#version 100").
+        for (const bool translate : {false, true}) {
+            setWebGl1TranslationForced(translate);
+            const ProgramBuild build =
+                m_offscreen.useProgram(preset.vertexSource(), preset.fragmentSource());
+            setWebGl1TranslationForced(false);
+            QVERIFY2(build.ok(), qPrintable(build.log()));
+            QVERIFY2(build.diagnostics.empty(), qPrintable(build.log()));
+            // The slides' constants are the default scene: their light (0, 1.8, 1.3, 1) in
+            // world coordinates, their red plastic, Blinn-Phong; their V = (0,0,1) is the
+            // parallel one.
+            Scene s = testScene();
+            s.shading.shading = Shading(shading);
+            s.shading.projection = Projection::Orthographic;
+            const QString failure = checkAgainstReference(
+                m_offscreen, s, "slides " + name + (translate ? ", translated" : ""), 100, 5,
+                tolerance);
+            QVERIFY2(failure.isEmpty(), qPrintable(failure));
+        }
     }
 
     void everyPresetBuilds()
@@ -143,13 +151,75 @@ private slots:
     {
         QFETCH(QString, fragment);
         QFETCH(int, line);
-        const ProgramBuild build = m_offscreen.useProgram(kPlainVertex, fragment);
-        QVERIFY(!build.ok());
-        QVERIFY(!build.diagnostics.empty());
-        const Diagnostic &d = build.diagnostics.front();
-        QCOMPARE(d.stage, ShaderStage::Fragment);
-        QCOMPARE(d.severity, Diagnostic::Severity::Error);
-        QVERIFY2(d.line == line, qPrintable(build.log()));
+        // The same line whether WebGL 1 runs under "#version 100" or translated to GLSL 3.30.
+        for (const bool translate : {false, true}) {
+            setWebGl1TranslationForced(translate);
+            const ProgramBuild build = m_offscreen.useProgram(kPlainVertex, fragment);
+            setWebGl1TranslationForced(false);
+            QVERIFY(!build.ok());
+            QVERIFY(!build.diagnostics.empty());
+            const Diagnostic &d = build.diagnostics.front();
+            QCOMPARE(d.stage, ShaderStage::Fragment);
+            QCOMPARE(d.severity, Diagnostic::Severity::Error);
+            QVERIFY2(d.line == line, qPrintable(build.log()));
+        }
+    }
+
+    // Drivers without GLSL ES 1.00 in a core context get WebGL 1 shaders translated to GLSL
+    // 3.30; forced here on Mesa, the slides' and the exercise's shaders build without a
+    // diagnostic and draw the same pixels both ways. Mesa computes "mediump" at lower
+    // precision in GLSL ES (GLSL 3.30 ignores precision), so the pixels compared are those of
+    // the source with highp, the same arithmetic; as pasted, the difference is printed.
+    void translatedWebGl1DrawsTheSamePixels_data()
+    {
+        QTest::addColumn<QString>("vertex");
+        QTest::addColumn<QString>("fragment");
+        QTest::addColumn<int>("shading");
+        for (const Preset &p : presets())
+            if (p.name.startsWith("Slides"))
+                QTest::newRow(qPrintable(p.name))
+                    << p.vertexSource() << p.fragmentSource()
+                    << int(p.gouraud.value_or(false) ? Shading::Gouraud : Shading::Phong);
+        QTest::newRow("the exercise's diffuse")
+            << fixture("exercise_diffuse.vert") << fixture("exercise_diffuse.frag")
+            << int(Shading::Phong);
+        // What the translation rewrites besides: gl_FragData, texture2D, a name that is a
+        // word of GLSL 3.30, an #extension line.
+        QTest::newRow("texture2D, gl_FragData, a variable named texture")
+            << QString(kPlainVertex)
+            << "#extension GL_OES_standard_derivatives : enable\nprecision mediump float;\n"
+               "uniform sampler2D uTexture;\nvoid main() {\n"
+               "  vec4 texture = texture2D(uTexture, gl_FragCoord.xy / 64.0);\n"
+               "  gl_FragData[0] = texture + vec4(fwidth(gl_FragCoord.x) * 0.1);\n}\n"
+            << int(Shading::Phong);
+    }
+
+    void translatedWebGl1DrawsTheSamePixels()
+    {
+        QFETCH(QString, vertex);
+        QFETCH(QString, fragment);
+        QFETCH(int, shading);
+        Scene s = testScene();
+        s.shading.shading = Shading(shading);
+        const auto draw = [&](const QString &f, bool translate) {
+            setWebGl1TranslationForced(translate);
+            const ProgramBuild build = m_offscreen.useProgram(vertex, f);
+            setWebGl1TranslationForced(false);
+            if (!build.ok() || !build.diagnostics.empty())
+                qWarning("%s: %s", translate ? "translated" : "as pasted", qPrintable(build.log()));
+            return build.ok() && build.diagnostics.empty() ? m_offscreen.render(s) : QImage();
+        };
+        QString highp = fragment;
+        highp.replace("precision mediump float", "precision highp float");
+        const QImage pasted = draw(fragment, false), sameMath = draw(highp, false),
+                     translated = draw(fragment, true);
+        QVERIFY(!pasted.isNull() && !sameMath.isNull() && !translated.isNull());
+        QCOMPARE(translated.size(), sameMath.size());
+        // The same arithmetic through one compiler: a level of tolerance at most.
+        const int worst = imageDifference(translated, sameMath);
+        QVERIFY2(worst <= 1, qPrintable(QString("largest difference %1/255").arg(worst)));
+        qInfo("as pasted (mediump in GLSL ES) vs translated: largest difference %d/255",
+              imageDifference(pasted, translated));
     }
 
     void badSourcesKeepTheLastGoodProgram_data()

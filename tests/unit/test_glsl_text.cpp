@@ -4,6 +4,7 @@
 #include "dialect.h"
 #include "loops.h"
 #include "presets.h"
+#include "webgl1_translation.h"
 
 #include <QTest>
 
@@ -214,6 +215,45 @@ private slots:
         // A #version inside a comment is no directive.
         p = prepareSource("/* #version 330 core */\n// #version 450\nvoid main() {}");
         QCOMPARE(p.dialect, Dialect::WebGL1Implicit);
+    }
+
+    // WebGL 1 as GLSL 3.30 core, line for line (the GL tests draw both; this is the text).
+    void webGl1Translation()
+    {
+        const QString vertex = "// attribute and varying in a comment stay\n"
+                               "attribute vec4 vPosition; varying vec2 vUv;\n"
+                               "uniform float texture; // a 3.30 word as a name\n"
+                               "void main() { vUv = vPosition.xy * texture; "
+                               "gl_Position = vPosition; }\n";
+        TranslatedSource t = translateWebGl1(vertex, ShaderStage::Vertex);
+        QCOMPARE(t.linesAdded, 2);
+        QCOMPARE(t.text, QString("#version 330 core\n\n"
+                                 "// attribute and varying in a comment stay\n"
+                                 "in vec4 vPosition; out vec2 vUv;\n"
+                                 "uniform float lb_texture; // a 3.30 word as a name\n"
+                                 "void main() { vUv = vPosition.xy * lb_texture; "
+                                 "gl_Position = vPosition; }\n"));
+
+        const QString fragment = "#version 100\n"
+                                 "#extension GL_OES_standard_derivatives : enable\n"
+                                 "precision mediump float;\nvarying vec2 vUv;\n"
+                                 "uniform sampler2D s;\n"
+                                 "void main() { gl_FragColor = texture2D(s, vUv) * 1e-1; }\n";
+        t = translateWebGl1(fragment, ShaderStage::Fragment);
+        QCOMPARE(t.text, QString("#version 330 core\nout vec4 lb_FragColor;\n"
+                                 "\n\n" // #version 100 and #extension: blank lines
+                                 "precision mediump float;\nin vec2 vUv;\n"
+                                 "uniform sampler2D s;\n"
+                                 "void main() { lb_FragColor = texture(s, vUv) * 1e-1; }\n"));
+        // Lines kept: the user's line N is the driver's line N + linesAdded.
+        QCOMPARE(t.text.count('\n'), fragment.count('\n') + t.linesAdded);
+
+        // Only WebGL 1 is translated, and only when asked.
+        QCOMPARE(prepareSource(fragment, ShaderStage::Fragment, true).dialect,
+                 Dialect::WebGL1Translated);
+        QCOMPARE(prepareSource(fragment, ShaderStage::Fragment, false).version, QString("100"));
+        const QString es3 = "#version 300 es\nprecision mediump float;\nout vec4 c;\n";
+        QCOMPARE(prepareSource(es3, ShaderStage::Fragment, true).text, es3);
     }
 
     void fragmentOutputs()
