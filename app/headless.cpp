@@ -224,6 +224,18 @@ int runHeadless(const CommandLine &cl, const Scene &requested)
     }
 
     const QImage frame = offscreen.render(scene);
+    if (offscreen.wasReset()) { // a GPU's recovery: the frame is no picture
+        const QString why = "the driver reset the OpenGL context while it drew this frame";
+        if (cl.hasUserProgram())
+            printLine(formatDiagnostic(refusalAt(cl.vertexSource, cl.fragmentSource,
+                                                 why + ": an endless or very long loop?"),
+                                       cl)
+                          .toUtf8(),
+                      stderr);
+        else
+            printLine("lightbench: " + why.toUtf8(), stderr);
+        return 1;
+    }
     if (!cl.renderPath.isEmpty() && !frame.save(cl.renderPath, "PNG", kPngQuality)) {
         printLine("lightbench: --render: cannot write '" + cl.renderPath.toUtf8() + "'", stderr);
         return 1;

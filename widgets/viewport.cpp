@@ -1,9 +1,11 @@
 #include "viewport.h"
 
+#include "context_loss.h"
 #include "loops.h"
 #include "program_trial.h"
 #include "webgl1_translation.h"
 
+#include <QCoreApplication>
 #include <QLabel>
 #include <QMouseEvent>
 #include <QOpenGLContext>
@@ -96,6 +98,46 @@ void Viewport::initializeGL()
                     .arg(translatesWebGl1() ? tr("; WebGL 1 shaders run as GLSL 3.30") : ""));
 }
 
+void Viewport::paintEvent(QPaintEvent *event)
+{
+    if (context() && !context()->isValid()) { // lost since the last frame
+        recoverLostContext();
+        return;
+    }
+    QOpenGLWidget::paintEvent(event);
+}
+
+void Viewport::recoverLostContext()
+{
+    if (m_recovering)
+        return;
+    m_recovering = true;
+    const QString vertex = m_goodVertex, fragment = m_goodFragment;
+    // What was drawing goes; the good program before it comes back with the new context
+    // (initializeGL builds m_good*).
+    m_goodVertex = m_previousVertex;
+    m_goodFragment = m_previousFragment;
+    m_previousVertex.clear();
+    m_previousFragment.clear();
+    m_candidate.reset();
+    m_renderer.cleanup(); // the objects died with the context: only the handles go
+    // What a reparented widget gets: QOpenGLWidget drops its context and makes a new one.
+    QEvent windowChange(QEvent::WindowChangeInternal);
+    QCoreApplication::sendEvent(this, &windowChange);
+    m_recovering = false;
+    const QString drawing = m_goodVertex.isEmpty() ? tr("the built-in program is drawing")
+                                                   : tr("the last good program is drawing");
+    const QString why = tr("the OpenGL context was lost while this program drew (the driver "
+                           "reset the GPU: an endless or very long loop?)");
+    setBanner(tr("Refused: %1; %2").arg(why, drawing));
+    update();
+    if (!vertex.isEmpty()) {
+        ProgramBuild refused;
+        refused.diagnostics.push_back(refusalAt(vertex, fragment, why));
+        emit programBuilt(refused);
+    }
+}
+
 void Viewport::paintGL()
 {
     if (!m_error.isEmpty()) {
@@ -107,6 +149,10 @@ void Viewport::paintGL()
         return;
     }
     m_renderer.render(m_document->scene(), size() * devicePixelRatio());
+    if (contextWasReset(*context())) {
+        QTimer::singleShot(0, this, &Viewport::recoverLostContext);
+        return;
+    }
     updateCompareLabel();
     if (m_labels->isVisible())
         m_labels->update(); // the names follow the camera and the light
@@ -294,6 +340,10 @@ void Viewport::finishBuild(const ProgramBuild &build, const QString &refused,
     const QString drawing = m_renderer.hasUserProgram() ? tr("the last good program is drawing")
                                                         : tr("the built-in program is drawing");
     if (build.ok()) {
+        if (vertexSource != m_goodVertex || fragmentSource != m_goodFragment) {
+            m_previousVertex = m_goodVertex;
+            m_previousFragment = m_goodFragment;
+        }
         m_goodVertex = vertexSource;
         m_goodFragment = fragmentSource;
         setBanner({});

@@ -75,6 +75,7 @@ signals:
     void resized();                         // a new frame size
 
 protected:
+    void paintEvent(QPaintEvent *event) override;
     void initializeGL() override;
     void paintGL() override;
     void resizeGL(int w, int h) override;
@@ -84,7 +85,10 @@ protected:
     void wheelEvent(QWheelEvent *event) override;
 
 private:
-    void releaseGl();               // with the context made current: the renderer's GL objects go
+    void releaseGl(); // with the context made current: the renderer's GL objects go
+    // The driver lost the context (context_loss.h): the program that drew is refused, the
+    // one before it is brought back, and the widget gets a new context.
+    void recoverLostContext();
     double timeFrame(QSize pixels); // one frame in a framebuffer of its own, waited for (ms)
     void prepareCandidate();        // Renderer::prepareCandidate in such a framebuffer
     void buildNow(const QString &vertexSource, const QString &fragmentSource, bool tryHere = false);
@@ -122,6 +126,8 @@ private:
     // The last sources that linked, built again when the widget gets a new context, and the
     // ones asked for before there was a context.
     QString m_goodVertex, m_goodFragment;
+    QString m_previousVertex, m_previousFragment; // the good program before (empty: built-in)
+    bool m_recovering = false;
     QString m_pendingVertex, m_pendingFragment;
     bool m_pending = false;
     QPoint m_lastMouse;

@@ -1,5 +1,7 @@
 #include "offscreen.h"
 
+#include "context_loss.h"
+
 #include <QElapsedTimer>
 #include <QOpenGLFunctions>
 
@@ -12,6 +14,8 @@ void setDefaultGlFormat()
     format.setVersion(3, 3);
     format.setProfile(QSurfaceFormat::CoreProfile);
     format.setDepthBufferSize(24);
+    // A driver that resets the context (a program ran too long) says so (context_loss.h).
+    format.setOption(QSurfaceFormat::ResetNotification);
     QSurfaceFormat::setDefaultFormat(format);
 }
 
@@ -46,6 +50,12 @@ QString OffscreenRenderer::initialize(QSize size)
     if (!m_fbo->isValid())
         return QString("cannot create a %1x%2 framebuffer").arg(size.width()).arg(size.height());
     return m_renderer.initialize();
+}
+
+bool OffscreenRenderer::wasReset()
+{
+    m_context.makeCurrent(&m_surface);
+    return contextWasReset(m_context);
 }
 
 void OffscreenRenderer::setObjectMesh(std::shared_ptr<const Mesh> mesh)

@@ -37,6 +37,8 @@ public:
     // its own (a program's trial at a small size).
     double timeFrame(const Scene &scene, QSize size);
     Renderer &renderer() { return m_renderer; }
+    // Whether the driver reset the context (context_loss.h): nothing drawn since counts.
+    bool wasReset();
     // The loaded file the scene's object names (--mesh); nullptr draws the shapes.
     void setMeshFile(std::shared_ptr<const MeshFile> file) { m_file = std::move(file); }
     // The mesh drawn for `scene`, built when the object settings ask for another one.

@@ -71,8 +71,20 @@ int runTrialServer(std::FILE *in, std::FILE *out)
         }
         if (message->type == trialwire::Message::Mesh)
             offscreen.setObjectMesh(std::make_shared<Mesh>(message->mesh));
-        else if (message->type == trialwire::Message::Try)
-            send(out, trialwire::encodeReply(tryRequest(offscreen, message->request)));
+        else if (message->type == trialwire::Message::Try) {
+            trialwire::TryReply reply = tryRequest(offscreen, message->request);
+            if (offscreen.wasReset()) {
+                // The driver reset the context while the program drew (a GPU's recovery):
+                // refused, and this helper, whose context is gone, ends; another replaces it.
+                reply.result.refusal =
+                    refusalAt(message->request.vertex, message->request.fragment,
+                              "the driver reset the OpenGL context while it tried this program: an "
+                              "endless or very long loop?");
+                send(out, trialwire::encodeReply(reply));
+                return 4;
+            }
+            send(out, trialwire::encodeReply(reply));
+        }
     }
     return 0;
 }

@@ -1,8 +1,10 @@
 // The shader editor: live compiles, errors on the line, presets, the program's own uniforms,
 // shader files and the session's unsaved edits.
+#include "context_loss.h"
 #include "window_fixture.h"
 
 #include <QElapsedTimer>
+#include <QOpenGLContext>
 #include <QRegularExpression>
 #include <QTimer>
 
@@ -233,6 +235,51 @@ private slots:
         QVERIFY(helper->helperPid() > 0 && helper->helperPid() != first);
         QVERIFY(v->banner().isEmpty());
         QVERIFY(imageDifference(frame(), good) > 10); // diffuse halved: the new program draws
+    }
+
+    // The driver loses the context while a program draws (a GPU reset): the viewport gets a
+    // new one, the program that drew is refused with a message and the one before it draws
+    // again. On Mesa no reset can be caused: the test makes the driver's report say so
+    // (reportResetForTesting) and the recovery that follows is the real one.
+    void lostContextRefusesTheProgramAndTheLastGoodOneDraws()
+    {
+        EditorPanel *e = m_window->editorPanel();
+        Viewport *v = m_window->viewport();
+        QVERIFY(buildAfter([&] { e->loadPreset(presets()[3]); })); // the slides' Phong
+        const QImage slides = frame();
+        QString fragment = e->source(ShaderStage::Fragment);
+        const int at = int(fragment.indexOf("    gl_FragColor"));
+        fragment.insert(at, "    for (int i = 0; i < 2; i++) { diffuse *= 0.5; }\n");
+        std::optional<ProgramBuild> b =
+            buildAfter([&] { e->editor(ShaderStage::Fragment)->setText(fragment); });
+        QVERIFY(b && b->ok());
+        QVERIFY(imageDifference(frame(), slides) > 10); // the new program draws
+        QSignalSpy lost(v->context(), &QOpenGLContext::aboutToBeDestroyed);
+
+        b.reset();
+        connect(v, &Viewport::programBuilt, this, [&](const ProgramBuild &build) { b = build; });
+        reportResetForTesting(v->context());
+        v->update();
+        QTRY_VERIFY(b.has_value());
+        QVERIFY(!b->ok());
+        const Diagnostic &d = b->diagnostics.back();
+        QVERIFY2(d.message.startsWith("the OpenGL context was lost while this program drew"),
+                 qPrintable(d.message));
+        QCOMPARE(d.line, int(fragment.left(at).count('\n')) + 1); // on its loop
+        QVERIFY2(v->banner().startsWith("Refused: the OpenGL context was lost"),
+                 qPrintable(v->banner()));
+        QCOMPARE(lost.count(), 1); // the lost context went; a new one took its place
+        QVERIFY(v->context() && v->context()->isValid());
+        QVERIFY(v->renderer().isInitialized());
+        // The slides' program draws again, below the banner.
+        const QRect belowBanner(0, 80, slides.width(), slides.height() - 80);
+        QTRY_VERIFY(imageDifference(frame().copy(belowBanner), slides.copy(belowBanner)) == 0);
+        // And the window goes on: the next edit builds and draws in the new context.
+        QString lighter = e->source(ShaderStage::Fragment);
+        lighter.insert(at, "    diffuse *= 0.25;\n");
+        b.reset();
+        QVERIFY(buildAfter([&] { e->editor(ShaderStage::Fragment)->setText(lighter); }));
+        QTRY_VERIFY(imageDifference(frame(), slides) > 10);
     }
 
     // Without the helper (not installed, or no OpenGL there) the window tries programs in
