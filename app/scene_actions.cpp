@@ -134,12 +134,16 @@ QString SceneActions::save(const QString &path)
 
 QString SceneActions::exportImage(const QString &path, QSize pixels)
 {
-    const QImage image = m_viewport->renderImage(pixels);
+    // A program too slow for a frame this big is not asked to draw one (its trial says so).
+    const QString tooSlow = m_viewport->tooSlowAt(pixels);
+    const QImage image = tooSlow.isEmpty() ? m_viewport->renderImage(pixels) : QImage();
     QImageWriter writer(path);
     if (QFileInfo(path).suffix().isEmpty())
         writer.setFormat("png");
     QString error;
-    if (image.isNull())
+    if (!tooSlow.isEmpty())
+        error = tr("%1: not drawn: %2").arg(path, tooSlow);
+    else if (image.isNull())
         error = tr("%1: the view could not be drawn at %2 x %3")
                     .arg(path)
                     .arg(pixels.width())

@@ -112,23 +112,38 @@ void Viewport::recoverLostContext()
     if (m_recovering)
         return;
     m_recovering = true;
+    refuseDrawingProgram(tr("the OpenGL context was lost while this program drew (the driver "
+                            "reset the GPU: an endless or very long loop?)"),
+                         true);
+    m_recovering = false;
+}
+
+void Viewport::refuseDrawingProgram(const QString &why, bool newContext)
+{
     const QString vertex = m_goodVertex, fragment = m_goodFragment;
-    // What was drawing goes; the good program before it comes back with the new context
-    // (initializeGL builds m_good*).
     m_goodVertex = m_previousVertex;
     m_goodFragment = m_previousFragment;
+    m_goodTrial = m_previousTrial;
     m_previousVertex.clear();
     m_previousFragment.clear();
+    m_previousTrial.reset();
     m_candidate.reset();
-    m_renderer.cleanup(); // the objects died with the context: only the handles go
-    // What a reparented widget gets: QOpenGLWidget drops its context and makes a new one.
-    QEvent windowChange(QEvent::WindowChangeInternal);
-    QCoreApplication::sendEvent(this, &windowChange);
-    m_recovering = false;
+    if (newContext) {
+        m_renderer.cleanup(); // the objects died with the context: only the handles go
+        // What a reparented widget gets: QOpenGLWidget drops its context and makes a new
+        // one, and initializeGL() builds the good program in it.
+        QEvent windowChange(QEvent::WindowChangeInternal);
+        QCoreApplication::sendEvent(this, &windowChange);
+    } else if (m_renderer.isInitialized()) {
+        makeCurrent();
+        if (m_goodVertex.isEmpty())
+            m_renderer.clearUserProgram();
+        else
+            m_renderer.setUserProgram(m_goodVertex, m_goodFragment);
+        doneCurrent();
+    }
     const QString drawing = m_goodVertex.isEmpty() ? tr("the built-in program is drawing")
                                                    : tr("the last good program is drawing");
-    const QString why = tr("the OpenGL context was lost while this program drew (the driver "
-                           "reset the GPU: an endless or very long loop?)");
     setBanner(tr("Refused: %1; %2").arg(why, drawing));
     update();
     if (!vertex.isEmpty()) {
@@ -136,6 +151,19 @@ void Viewport::recoverLostContext()
         refused.diagnostics.push_back(refusalAt(vertex, fragment, why));
         emit programBuilt(refused);
     }
+}
+
+QString Viewport::tooSlowAt(QSize pixels) const
+{
+    if (!m_goodTrial || !m_renderer.hasUserProgram() ||
+        !m_goodTrial->overBudgetAt(double(pixels.width()) * pixels.height(), m_frameBudgetMs))
+        return {};
+    return tr("drawing one frame with this program would take about %1 at %2x%3 (the budget "
+              "is %4): an endless or very long loop?")
+        .arg(durationText(m_goodTrial->estimateAt(double(pixels.width()) * pixels.height())))
+        .arg(pixels.width())
+        .arg(pixels.height())
+        .arg(durationText(m_frameBudgetMs));
 }
 
 void Viewport::paintGL()
@@ -296,8 +324,11 @@ void Viewport::buildNow(const QString &vertexSource, const QString &fragmentSour
             });
         if (result.refusal)
             refused = result.refusal->message;
+        if (needsFrames(vertexSource, fragmentSource)) // else nothing was measured
+            m_lastTrial = result;
         return result.refusal;
     };
+    m_lastTrial.reset();
     const ProgramBuild build = m_trialMode == TrialMode::Off
                                    ? m_renderer.setUserProgram(vertexSource, fragmentSource)
                                    : m_renderer.setUserProgram(vertexSource, fragmentSource, trial);
@@ -326,8 +357,10 @@ void Viewport::trialFinished(quint64 id, TrialProcess::Outcome outcome, const Tr
         build.diagnostics.push_back(*result.refusal);
         refused = result.refusal->message;
     } else if (m_renderer.hasCandidate()) {
+        m_lastTrial = result;
         m_renderer.adoptCandidate();
     } else {
+        m_lastTrial = result;
         build = m_renderer.setUserProgram(tried.vertex, tried.fragment); // a new context since
     }
     doneCurrent();
@@ -343,9 +376,11 @@ void Viewport::finishBuild(const ProgramBuild &build, const QString &refused,
         if (vertexSource != m_goodVertex || fragmentSource != m_goodFragment) {
             m_previousVertex = m_goodVertex;
             m_previousFragment = m_goodFragment;
+            m_previousTrial = m_goodTrial;
         }
         m_goodVertex = vertexSource;
         m_goodFragment = fragmentSource;
+        m_goodTrial = m_lastTrial;
         setBanner({});
     } else if (!refused.isEmpty()) {
         setBanner(tr("Refused: %1; %2").arg(refused, drawing));
@@ -401,6 +436,10 @@ void Viewport::setBanner(const QString &text)
 
 void Viewport::resizeGL(int, int)
 {
+    // A program tried at the view's old size may be too slow at the new one: refused before
+    // it draws a frame there.
+    if (const QString why = tooSlowAt(size() * devicePixelRatio()); !why.isEmpty())
+        refuseDrawingProgram(why, false);
     m_banner->setGeometry(0, 0, width(), m_banner->heightForWidth(width()));
     updateCompareLabel();
     emit resized();
@@ -429,7 +468,7 @@ void Viewport::setObject(std::shared_ptr<const Mesh> mesh, std::shared_ptr<const
 
 QImage Viewport::renderImage(QSize pixels)
 {
-    if (!m_renderer.isInitialized() || pixels.isEmpty())
+    if (!m_renderer.isInitialized() || pixels.isEmpty() || !tooSlowAt(pixels).isEmpty())
         return {};
     makeCurrent();
     QOpenGLFramebufferObjectFormat format;

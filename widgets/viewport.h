@@ -36,6 +36,11 @@ public:
     // The scene as the viewport draws it, rendered offscreen at any size (Export Image), the
     // probe's names included; a null image when there is no OpenGL.
     QImage renderImage(QSize pixels);
+    // Why the program on screen may not draw a frame of `pixels` (its trial's estimate is over
+    // the budget there); empty when it may. renderImage() draws nothing then.
+    QString tooSlowAt(QSize pixels) const;
+    // What the trial of the program on screen measured (none: not tried, or no loop).
+    const std::optional<TrialResult> &drawingTrial() const { return m_goodTrial; }
     // The mesh to draw from now on (ObjectLoader builds it) and its texture (nullptr: the
     // checker).
     void setObject(std::shared_ptr<const Mesh> mesh, std::shared_ptr<const Texture> texture);
@@ -89,6 +94,9 @@ private:
     // The driver lost the context (context_loss.h): the program that drew is refused, the
     // one before it is brought back, and the widget gets a new context.
     void recoverLostContext();
+    // The program on screen is refused for `why`: the good one before it comes back (in this
+    // context, or in a new one when `newContext`), with a banner and programBuilt().
+    void refuseDrawingProgram(const QString &why, bool newContext);
     double timeFrame(QSize pixels); // one frame in a framebuffer of its own, waited for (ms)
     void prepareCandidate();        // Renderer::prepareCandidate in such a framebuffer
     void buildNow(const QString &vertexSource, const QString &fragmentSource, bool tryHere = false);
@@ -127,6 +135,8 @@ private:
     // ones asked for before there was a context.
     QString m_goodVertex, m_goodFragment;
     QString m_previousVertex, m_previousFragment; // the good program before (empty: built-in)
+    // What their trials measured (none: not tried, no loop), for a bigger frame later.
+    std::optional<TrialResult> m_goodTrial, m_previousTrial, m_lastTrial;
     bool m_recovering = false;
     QString m_pendingVertex, m_pendingFragment;
     bool m_pending = false;

@@ -32,6 +32,12 @@ Diagnostic refusalAt(const QString &vertex, const QString &fragment, const QStri
     return d;
 }
 
+double TrialResult::estimateAt(double pixels) const
+{
+    const double linear = fixedMs + perPixelMs * pixels;
+    return referenceMs > 0.0 ? std::min(linear, referenceMs + extraPerPixelMs * pixels) : linear;
+}
+
 std::optional<Diagnostic> refusalWithoutFrames(const QString &vertex, const QString &fragment)
 {
     // A loop with no way out never finishes a frame: a GPU driver hangs on it, Mesa drops it
@@ -88,8 +94,12 @@ TrialResult tryProgram(const QString &vertex, const QString &fragment, QSize tar
         r.estimatedMs = r.fixedMs + r.perPixelMs * targetPixels;
     };
     fit(pixelsOf(sizes.large), large);
-    if (r.estimatedMs <= budgetMs || large < sizes.lightMs)
+    if (r.estimatedMs <= budgetMs)
         return r;
+    if (large < sizes.lightMs) {
+        r.light = true;
+        return r;
+    }
     // Over the budget from two tiny frames: their difference is a few milliseconds, and a
     // stall in one is multiplied by thousands. A bigger frame confirms it, as big as about
     // 150 ms of per-pixel work by the estimate allows (and no bigger than the target).
@@ -106,13 +116,15 @@ TrialResult tryProgram(const QString &vertex, const QString &fragment, QSize tar
     if (timeReference && r.estimatedMs > budgetMs) {
         // What the built-in program takes on the same frame is the scene's cost: only the
         // rest grows with the pixels this program shades.
-        const double reference = std::min(timeReference(confirm), timeReference(confirm));
-        const double extraPerPixel = std::max(0.0, confirmed - reference) / pixelsOf(confirm);
-        r.estimatedMs = std::min(r.estimatedMs, reference + extraPerPixel * targetPixels);
+        r.referenceMs = std::min(timeReference(confirm), timeReference(confirm));
+        r.extraPerPixelMs = std::max(0.0, confirmed - r.referenceMs) / pixelsOf(confirm);
+        r.estimatedMs = r.estimateAt(targetPixels);
         // Not even twice the built-in program's frame: the difference is the machine's noise,
         // which the pixels of a big target would multiply into seconds.
-        if (confirmed < 2.0 * reference)
+        if (confirmed < 2.0 * r.referenceMs) {
+            r.nearReference = true;
             return r;
+        }
     }
     if (r.estimatedMs > budgetMs)
         r.refusal = refusalAt(

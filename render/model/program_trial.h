@@ -28,10 +28,23 @@ constexpr TrialSizes kWindowTrial{QSize(16, 16), QSize(32, 32), 1.0};
 
 struct TrialResult
 {
-    double fixedMs = 0.0;              // a frame's cost whatever its size
-    double perPixelMs = 0.0;           // and for each pixel
-    double estimatedMs = 0.0;          // one frame at the asked size
+    double fixedMs = 0.0;     // a frame's cost whatever its size
+    double perPixelMs = 0.0;  // and for each pixel
+    double estimatedMs = 0.0; // one frame at the asked size
+    // Where a bigger frame was measured against the built-in program: the scene's own cost
+    // and what the program adds per pixel on top (0 when not measured).
+    double referenceMs = 0.0, extraPerPixelMs = 0.0;
+    // Accepted whatever the estimate: its small frames were too light to tell anything, or
+    // a bigger one took less than twice the built-in program's.
+    bool light = false, nearReference = false;
     std::optional<Diagnostic> refusal; // set when the program is refused
+    // The estimate for a frame of `pixels` (the view grown, an export): as estimatedMs was.
+    double estimateAt(double pixels) const;
+    // Whether the accepted program would be refused at a frame of `pixels`.
+    bool overBudgetAt(double pixels, double budgetMs) const
+    {
+        return !light && !nearReference && estimateAt(pixels) > budgetMs;
+    }
 };
 
 // What trying these sources takes before any frame: a refusal when a loop has no way out (no

@@ -77,7 +77,8 @@ QByteArray encodeReply(const TryReply &r)
 {
     return message(Message::Result, [&](QDataStream &out) {
         out << r.id << r.built << r.result.fixedMs << r.result.perPixelMs << r.result.estimatedMs
-            << bool(r.result.refusal);
+            << r.result.referenceMs << r.result.extraPerPixelMs << r.result.light
+            << r.result.nearReference << bool(r.result.refusal);
         if (r.result.refusal)
             out << *r.result.refusal;
     });
@@ -112,7 +113,8 @@ std::optional<Decoded> decode(const QByteArray &frame)
         TryReply &r = d.reply;
         bool refused = false;
         in >> r.id >> r.built >> r.result.fixedMs >> r.result.perPixelMs >> r.result.estimatedMs >>
-            refused;
+            r.result.referenceMs >> r.result.extraPerPixelMs >> r.result.light >>
+            r.result.nearReference >> refused;
         if (refused) {
             Diagnostic diagnostic;
             in >> diagnostic;

@@ -71,6 +71,32 @@ private slots:
         QVERIFY2(spent < 400.0 + 5 * 143.0, qPrintable(QString::number(spent)));
     }
 
+    // What an accepted program's trial says about bigger frames (the view grown, an export):
+    // a per-pixel cost grows with them; a light one, or one as cheap as the built-in program
+    // on a big mesh, is never refused for its size.
+    void biggerFramesFromTheTrial()
+    {
+        const auto perPixel = [](QSize s) { return 0.5 + 1e-3 * pixelsOf(s); }; // 480 ms here
+        TrialResult r = tryProgram(kVertex, kFragment, kTarget, 1000.0, kWindowTrial, perPixel);
+        QVERIFY(!r.refusal && !r.light && !r.nearReference);
+        QVERIFY(qAbs(r.estimateAt(pixelsOf(kTarget)) - r.estimatedMs) < 1e-6);
+        QVERIFY(!r.overBudgetAt(pixelsOf(kTarget), 1000.0));
+        QVERIFY(r.overBudgetAt(pixelsOf(QSize(1920, 1080)), 1000.0)); // ~2 s
+        QVERIFY(qAbs(r.estimateAt(pixelsOf(QSize(1920, 1080))) - 2074.1) < 5.0);
+
+        // Under a millisecond at 32x32: the difference is noise, whatever it estimates.
+        r = tryProgram(kVertex, kFragment, QSize(2000, 1500), 1000.0, kWindowTrial,
+                       [](QSize s) { return s.width() == 32 ? 0.95 : 0.05; });
+        QVERIFY(!r.refusal && r.light);
+        QVERIFY(!r.overBudgetAt(pixelsOf(QSize(8000, 8000)), 1000.0));
+
+        // A big mesh: 140 ms whatever the size, the built-in program the same.
+        const auto mesh = [](QSize s) { return 140.0 + 1e-6 * pixelsOf(s); };
+        r = tryProgram(kVertex, kFragment, kTarget, 100.0, kWindowTrial, mesh, mesh);
+        QVERIFY(!r.refusal && r.nearReference);
+        QVERIFY(!r.overBudgetAt(pixelsOf(QSize(4000, 3000)), 100.0));
+    }
+
     void programsWithoutLoopsAreNotTimed()
     {
         int calls = 0;

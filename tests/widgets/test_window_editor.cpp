@@ -4,6 +4,7 @@
 #include "window_fixture.h"
 
 #include <QElapsedTimer>
+#include <QFile>
 #include <QOpenGLContext>
 #include <QRegularExpression>
 #include <QTimer>
@@ -280,6 +281,54 @@ private slots:
         b.reset();
         QVERIFY(buildAfter([&] { e->editor(ShaderStage::Fragment)->setText(lighter); }));
         QTRY_VERIFY(imageDifference(frame(), slides) > 10);
+    }
+
+    // A program accepted at the view's size is measured, not forgotten: a frame much bigger
+    // (an export, the window grown for the back row) that its trial estimates over the budget
+    // is not drawn; the export says why and the grown view refuses it for the program before.
+    void biggerFramesAreCheckedAgainstTheTrial()
+    {
+        EditorPanel *e = m_window->editorPanel();
+        Viewport *v = m_window->viewport();
+        m_window->resize(900, 650);
+        QTRY_VERIFY(v->width() < 700);
+        QVERIFY(buildAfter([&] { e->loadPreset(presets()[3]); })); // the slides' Phong
+        QString fragment = e->source(ShaderStage::Fragment);
+        const int at = int(fragment.indexOf("    gl_FragColor"));
+        // About 3,000 steps a fragment: seconds a frame on llvmpipe at this size.
+        fragment.insert(at, "    float k = N.x + 2.0;\n"
+                            "    while (k > 0.0) { k = k - 0.001; }\n"
+                            "    diffuse *= 0.5 + 0.0 * k;\n");
+        v->setFrameBudget(60000.0);
+        std::optional<ProgramBuild> b =
+            buildAfter([&] { e->editor(ShaderStage::Fragment)->setText(fragment); });
+        QVERIFY2(b && b->ok(), b ? qPrintable(b->log()) : "no build");
+        QVERIFY(v->drawingTrial().has_value());
+        const double pixels =
+            double(v->width()) * v->height() * v->devicePixelRatio() * v->devicePixelRatio();
+        const double big = 4000.0 * 3000.0;
+        const double now = v->drawingTrial()->estimateAt(pixels);
+        const double then = v->drawingTrial()->estimateAt(big);
+        QVERIFY2(then > 4.0 * now, qPrintable(QString("%1 ms -> %2 ms").arg(now).arg(then)));
+        v->setFrameBudget(1.5 * now); // this view's frames fit, bigger ones do not
+
+        const QString path = m_dir.filePath("big.png");
+        const QString error = m_window->sceneActions()->exportImage(path, QSize(4000, 3000));
+        QVERIFY2(error.contains("not drawn: drawing one frame with this program would take about"),
+                 qPrintable(error));
+        QVERIFY(error.contains("at 4000x3000"));
+        QVERIFY(!QFile::exists(path));
+
+        b.reset();
+        connect(v, &Viewport::programBuilt, this, [&](const ProgramBuild &build) { b = build; });
+        // Grown to several times the pixels: the estimate there is over the budget.
+        m_window->resize(1900, 1060);
+        QTRY_VERIFY(b.has_value());
+        QVERIFY(!b->ok());
+        QVERIFY2(b->diagnostics.back().message.startsWith("drawing one frame with this program"),
+                 qPrintable(b->diagnostics.back().message));
+        QVERIFY2(v->banner().startsWith("Refused: drawing one frame"), qPrintable(v->banner()));
+        QVERIFY(!v->drawingTrial().has_value()); // the slides' program: no loop, not tried
     }
 
     // Without the helper (not installed, or no OpenGL there) the window tries programs in
