@@ -302,6 +302,50 @@ private slots:
         QCOMPARE(r.exitCode, 1);
     }
 
+    // The class's other loops: a for (;;) with a side effect, a trivially endless one and one
+    // of 10^9 steps (llvmpipe cuts it short and draws it fast, so only its text tells):
+    // --check, --render and --probe exit 1 within 10 s with an error on the loop's line.
+    void endlessLoopsExitWithOne_data()
+    {
+        QTest::addColumn<QString>("loop");
+        QTest::addColumn<QString>("mode");
+        const QStringList loops{"for (;;) { k += 0.5; }", "while (true) {}",
+                                "for (int i = 0; i < 1000000000; i++) { k += 1e-6; }"};
+        for (const QString &loop : loops)
+            for (const QString mode : {"--check", "--render", "--probe"})
+                QTest::newRow(qPrintable(mode + " " + loop)) << loop << mode;
+    }
+
+    void endlessLoopsExitWithOne()
+    {
+        QFETCH(QString, loop);
+        QFETCH(QString, mode);
+        const QString vert = m_dir.filePath("e.vert"), frag = m_dir.filePath("e.frag");
+        QFile v(vert), f(frag);
+        QVERIFY(v.open(QIODevice::WriteOnly) && f.open(QIODevice::WriteOnly));
+        v.write("attribute vec4 vPosition;\nvoid main() { gl_Position = vPosition; }\n");
+        f.write(("precision mediump float;\nvoid main() {\n  float k = 0.0;\n  " + loop +
+                 "\n  gl_FragColor = vec4(k);\n}\n")
+                    .toUtf8());
+        v.close();
+        f.close();
+        QStringList args{mode};
+        if (mode == "--render")
+            args << m_dir.filePath("e.png");
+        else if (mode == "--probe")
+            args << "10,10";
+        QElapsedTimer clock;
+        clock.start();
+        const Run r = run(args + QStringList{"--vertex", vert, "--fragment", frag});
+        QVERIFY(clock.elapsed() < 10000);
+        QCOMPARE(r.exitCode, 1);
+        const QByteArray said = mode == "--check" ? r.out : r.err;
+        QVERIFY2(
+            said.contains((frag + ":4:3: error: this program never finishes a frame").toUtf8()),
+            said.constData());
+        QVERIFY(!QFile::exists(m_dir.filePath("e.png")));
+    }
+
     // The freezing loop (it ends, after ~65,000 steps a fragment on llvmpipe): tried
     // at a small size, its frame time at --size is over the budget; refused in bounded time
     // with the estimate on the loop's line, no image written.
