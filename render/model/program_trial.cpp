@@ -89,8 +89,16 @@ TrialResult tryProgram(const QString &vertex, const QString &fragment, QSize tar
     const double large = quickest(sizes.large);
     const double targetPixels = pixelsOf(target);
     auto fit = [&](double pixels, double ms) {
-        r.perPixelMs = std::max(0.0, (ms - small) / (pixels - pixelsOf(sizes.small)));
-        r.fixedMs = std::max(0.0, small - r.perPixelMs * pixelsOf(sizes.small));
+        if (ms <= small) {
+            // The bigger frame was not slower: a stall in the smaller one (another process
+            // on the cores) hides what the pixels cost. Assumed all per pixel, the worst
+            // case; an estimate over the budget is confirmed by a bigger frame below.
+            r.perPixelMs = ms / pixels;
+            r.fixedMs = 0.0;
+        } else {
+            r.perPixelMs = (ms - small) / (pixels - pixelsOf(sizes.small));
+            r.fixedMs = std::max(0.0, small - r.perPixelMs * pixelsOf(sizes.small));
+        }
         r.estimatedMs = r.fixedMs + r.perPixelMs * targetPixels;
     };
     fit(pixelsOf(sizes.large), large);
@@ -112,7 +120,16 @@ TrialResult tryProgram(const QString &vertex, const QString &fragment, QSize tar
     double confirmed = timeFrame(confirm);
     if (confirmed < 10.0 * sizes.lightMs)
         confirmed = std::min(confirmed, timeFrame(confirm));
-    fit(pixelsOf(confirm), confirmed);
+    // The steeper of the slopes from the two small sizes: a stall in either flattens its own.
+    r.perPixelMs = 0.0;
+    for (const auto &[size, ms] : {std::pair{sizes.small, small}, std::pair{sizes.large, large}})
+        if (pixelsOf(size) < pixelsOf(confirm)) // (a tiny view's confirming frame may be smaller)
+            r.perPixelMs =
+                std::max(r.perPixelMs, (confirmed - ms) / (pixelsOf(confirm) - pixelsOf(size)));
+    if (r.perPixelMs <= 0.0)
+        r.perPixelMs = confirmed / pixelsOf(confirm); // as above: all per pixel
+    r.fixedMs = std::max(0.0, confirmed - r.perPixelMs * pixelsOf(confirm));
+    r.estimatedMs = r.fixedMs + r.perPixelMs * targetPixels;
     if (timeReference && r.estimatedMs > budgetMs) {
         // What the built-in program takes on the same frame is the scene's cost: only the
         // rest grows with the pixels this program shades.
