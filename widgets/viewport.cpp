@@ -23,6 +23,9 @@ namespace lb {
 namespace {
 constexpr float kDegreesPerPixel = 0.4f;
 constexpr float kAutoRotateDegreesPerSecond = 30.0f;
+// A vertex stage whose loops are all counted and this short (the built-in Gouraud's four
+// lights) may run before its trial answers: a million vertices would take well under a second.
+constexpr int kShortLoopSteps = 64;
 } // namespace
 
 Viewport::Viewport(SceneDocument *document, QWidget *parent)
@@ -309,8 +312,8 @@ void Viewport::buildNow(const QString &vertexSource, const QString &fragmentSour
         m_trialProcess->tryProgram(request, m_renderer.sharedObjectMesh());
         // Meanwhile the driver may generate its code here (a frame with nothing rasterized),
         // so the first frame after the answer does not: only when the vertex stage, which
-        // does run, has no loop to be slow in.
-        if (loopPlaces(vertexSource).empty())
+        // does run, has no loop to be slow in (or only short counted ones).
+        if (onlyShortLoops(vertexSource, kShortLoopSteps))
             prepareCandidate();
         return;
     }

@@ -1,5 +1,6 @@
 #include "loops.h"
 
+#include <QHash>
 #include <QLocale>
 #include <QSet>
 #include <QStringList>
@@ -24,7 +25,8 @@ struct Token
 struct Tokens
 {
     std::vector<Token> list;
-    QSet<QString> macros; // names given by #define: what they hide is not read here
+    QSet<QString> macros;           // names given by #define: what they hide is not read here
+    QHash<QString, QString> values; // #define NAME VALUE with one word of value (MAX_LIGHTS 4)
 };
 
 bool startsIdentifier(QChar c)
@@ -91,8 +93,11 @@ Tokens tokenize(const QString &s)
                 ++conditionalDepth;
             else if (directive == "endif")
                 conditionalDepth = std::max(0, conditionalDepth - 1);
-            else if (directive == "define" && words.size() > 1)
+            else if (directive == "define" && words.size() > 1) {
                 result.macros.insert(words[1].section('(', 0, 0));
+                if (words.size() == 3 && !words[1].contains('('))
+                    result.values.insert(words[1], words[2]);
+            }
             continue;
         }
         lineHasCode = true;
@@ -287,10 +292,29 @@ QStringList namesRead(const std::vector<Token> &t, std::size_t begin, std::size_
     return names;
 }
 
-// An integer literal's value ("1000000000", "0x10", "5u"); nullopt for anything else.
-std::optional<double> integerLiteral(const Token &t)
+// The semicolons that split a for's parentheses [open, close] into its three parts.
+std::vector<std::size_t> forSemicolons(const std::vector<Token> &t, std::size_t open,
+                                       std::size_t close)
 {
-    QString digits = t.text;
+    std::vector<std::size_t> semis;
+    int depth = 0;
+    for (std::size_t j = open + 1; j < close; ++j) {
+        if (t[j].text == "(")
+            ++depth;
+        else if (t[j].text == ")")
+            --depth;
+        else if (t[j].text == ";" && depth == 0)
+            semis.push_back(j);
+    }
+    return semis;
+}
+
+// An integer literal's value ("1000000000", "0x10", "5u"), or a #define's that is one
+// (`values`); nullopt for anything else.
+std::optional<double> integerLiteral(const Token &t,
+                                     const QHash<QString, QString> *values = nullptr)
+{
+    QString digits = values ? values->value(t.text, t.text) : t.text;
     if (digits.endsWith('u') || digits.endsWith('U'))
         digits.chop(1);
     bool ok = false;
@@ -299,10 +323,12 @@ std::optional<double> integerLiteral(const Token &t)
 }
 
 // How many times `for (int i = A; i < B; i++)` runs, read from its three parts when they are
-// that simple: a literal start and bound, a comparison of the counter with the bound (<, <=,
+// that simple: a literal start and bound (or #defines of literals, given `values`), a comparison of
+// the counter with the bound (<, <=,
 // !=, >, >=), and a literal step (++, --, += C, -= C). nullopt for anything else.
 std::optional<double> countedSteps(const std::vector<Token> &t, std::size_t ib, std::size_t ie,
-                                   std::size_t cb, std::size_t ce, std::size_t sb, std::size_t se)
+                                   std::size_t cb, std::size_t ce, std::size_t sb, std::size_t se,
+                                   const QHash<QString, QString> *values = nullptr)
 {
     // init: [int|uint] i = A
     if (ie > ib && (t[ib].text == "int" || t[ib].text == "uint"))
@@ -310,19 +336,19 @@ std::optional<double> countedSteps(const std::vector<Token> &t, std::size_t ib, 
     if (ie - ib != 3 || !t[ib].identifier || t[ib + 1].text != "=")
         return std::nullopt;
     const QString counter = t[ib].text;
-    const std::optional<double> start = integerLiteral(t[ib + 2]);
+    const std::optional<double> start = integerLiteral(t[ib + 2], values);
     // condition: i < B
     if (ce - cb != 3 || t[cb].text != counter)
         return std::nullopt;
     const QString comparison = t[cb + 1].text;
-    const std::optional<double> bound = integerLiteral(t[cb + 2]);
+    const std::optional<double> bound = integerLiteral(t[cb + 2], values);
     // step: i++, ++i, i--, --i, i += C, i -= C
     double step = 0.0;
     if (se - sb == 2 && (t[sb].text == counter || t[sb + 1].text == counter)) {
         const QString op = t[sb].text == counter ? t[sb + 1].text : t[sb].text;
         step = op == "++" ? 1.0 : op == "--" ? -1.0 : 0.0;
     } else if (se - sb == 3 && t[sb].text == counter) {
-        const std::optional<double> c = integerLiteral(t[sb + 2]);
+        const std::optional<double> c = integerLiteral(t[sb + 2], values);
         if (c)
             step = t[sb + 1].text == "+=" ? *c : t[sb + 1].text == "-=" ? -*c : 0.0;
     }
@@ -431,16 +457,7 @@ std::vector<EndlessLoop> endlessLoops(const QString &source, ShaderStage stage)
         const QString &k = t[i].text;
         if (k == "for" && i + 1 < t.size() && t[i + 1].text == "(") {
             const std::size_t close = closing(t, i + 1);
-            std::vector<std::size_t> semis;
-            int depth = 0;
-            for (std::size_t j = i + 2; j < close; ++j) {
-                if (t[j].text == "(")
-                    ++depth;
-                else if (t[j].text == ")")
-                    --depth;
-                else if (t[j].text == ";" && depth == 0)
-                    semis.push_back(j);
-            }
+            const std::vector<std::size_t> semis = forSemicolons(t, i + 1, close);
             if (semis.size() != 2)
                 continue;
             const auto body = statementAt(t, close + 1);
@@ -480,6 +497,29 @@ std::vector<Diagnostic> certainEndlessLoops(const QString &source, ShaderStage s
         if (l.certain)
             out.push_back(l.warning);
     return out;
+}
+
+bool onlyShortLoops(const QString &source, int maxSteps)
+{
+    const Tokens tokens = tokenize(source);
+    const std::vector<Token> &t = tokens.list;
+    for (std::size_t i = 0; i < t.size(); ++i) {
+        const QString &k = t[i].text;
+        const bool opens = i + 1 < t.size() && t[i + 1].text == "(";
+        if (k == "do" || (k == "while" && opens))
+            return false;
+        if (k != "for" || !opens)
+            continue;
+        const std::size_t close = closing(t, i + 1);
+        const std::vector<std::size_t> semis = forSemicolons(t, i + 1, close);
+        if (semis.size() != 2)
+            return false;
+        const std::optional<double> steps = countedSteps(t, i + 2, semis[0], semis[0] + 1, semis[1],
+                                                         semis[1] + 1, close, &tokens.values);
+        if (!steps || *steps > maxSteps)
+            return false;
+    }
+    return true;
 }
 
 std::vector<SourcePlace> loopPlaces(const QString &source)

@@ -31,4 +31,8 @@ struct SourcePlace
 };
 std::vector<SourcePlace> loopPlaces(const QString &source);
 
+// Whether every loop of the source is a counted one of at most `maxSteps` steps (a literal or
+// a #define'd bound: `for (int i = 0; i < MAX_LIGHTS; ++i)`); true without loops.
+bool onlyShortLoops(const QString &source, int maxSteps);
+
 } // namespace lb

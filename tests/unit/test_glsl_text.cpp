@@ -109,6 +109,21 @@ private slots:
         QVERIFY2(d[0].message.contains(words), qPrintable(d[0].message));
     }
 
+    // Which vertex stages may run before their trial answers (the viewport's early code
+    // generation): only counted loops, and short ones.
+    void shortLoops()
+    {
+        QVERIFY(onlyShortLoops("void main() {}", 64));
+        QVERIFY(onlyShortLoops(builtInPreset(true).vertexSource(), 64)); // MAX_LIGHTS = 4
+        QVERIFY(onlyShortLoops("#define N 8\nvoid main() { for (int i = 0; i < N; i++) {} }", 8));
+        QVERIFY(!onlyShortLoops("#define N 9\nvoid main() { for (int i = 0; i < N; i++) {} }", 8));
+        QVERIFY(
+            !onlyShortLoops("uniform int n;\nvoid main() { for (int i = 0; i < n; i++) {} }", 64));
+        QVERIFY(!onlyShortLoops("void main() { float k = 1.0; while (k > 0.0) k -= 0.1; }", 64));
+        QVERIFY(!onlyShortLoops(
+            "void main() { for (int i = 0; i < 4; i++) { do {} while (false); } }", 64));
+    }
+
     void noPresetHasAnEndlessLoop()
     {
         for (const Preset &p : presets())
