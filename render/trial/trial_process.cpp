@@ -149,9 +149,8 @@ void TrialProcess::timedOut()
     m_process = nullptr; // its end (helperEnded) only deletes it now
     if (stuck)
         stuck->kill();
-    refuseInFlight(tr("trying this program on frames of at most 64x64 pixels did not finish "
-                      "within %1 (the trial's helper was replaced): an endless or very long "
-                      "loop?")
+    refuseInFlight(tr("trying this program on small frames did not finish within %1 (the "
+                      "trial's helper was replaced): an endless or very long loop?")
                        .arg(durationText(m_limitMs)));
     startHelper(); // warm for the next edit
     sendNext();
@@ -159,7 +158,6 @@ void TrialProcess::timedOut()
 
 void TrialProcess::helperEnded(QProcess *process)
 {
-
     process->deleteLater();
     if (process != m_process)
         return; // replaced already
