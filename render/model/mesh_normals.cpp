@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstring>
 #include <thread>
+#include <unordered_map>
 
 namespace lb {
 
@@ -67,6 +68,113 @@ float cornerAngle(const glm::vec3 &at, const glm::vec3 &a, const glm::vec3 &b)
         return 0.0f;
     return approximateAcos(std::clamp(glm::dot(u, v) / (lu * lv), -1.0f, 1.0f));
 }
+
+// Positions with more corners than this (a fan, a cone's apex, bad data all moved to the
+// origin) are summed by bins of normals instead of corner by corner, which would take the
+// square of the corners.
+constexpr std::size_t kBinnedCorners = 64;
+// The bins: a cube map of 32x32 cells a face, about 2.8 degrees across.
+constexpr int kBinSide = 32;
+constexpr int kBinCount = 6 * kBinSide * kBinSide;
+
+int binOf(const glm::vec3 &n)
+{
+    const glm::vec3 a = glm::abs(n);
+    int face;
+    float u, v, major;
+    if (a.x >= a.y && a.x >= a.z) {
+        face = n.x > 0 ? 0 : 1;
+        major = a.x, u = n.y, v = n.z;
+    } else if (a.y >= a.z) {
+        face = n.y > 0 ? 2 : 3;
+        major = a.y, u = n.x, v = n.z;
+    } else {
+        face = n.z > 0 ? 4 : 5;
+        major = a.z, u = n.x, v = n.y;
+    }
+    auto cell = [](float t) {
+        return std::clamp(int((t + 1.0f) * 0.5f * kBinSide), 0, kBinSide - 1);
+    };
+    return (face * kBinSide + cell(u / major)) * kBinSide + cell(v / major);
+}
+
+// What a big position's corners sum, in linear time: the corners are binned by their
+// triangle's normal; every bin takes the bins whose mean normal is within the crease of its
+// own mean, and its corners share that sum. (Exact per corner for small positions; here a
+// corner at the crease's edge may fall on the other side of it by a bin's width.)
+struct Bins
+{
+    std::vector<int> slot = std::vector<int>(kBinCount, -1); // bin -> index in the lists
+    std::vector<int> occupied;
+    std::vector<glm::vec3> weighted, directions, sums;
+
+    void sum(const std::uint32_t *begin, const std::uint32_t *end,
+             const std::vector<glm::vec3> &faceNormal, const std::vector<float> &angle,
+             float threshold, std::vector<glm::vec3> &cornerSum)
+    {
+        for (const int b : occupied)
+            slot[b] = -1;
+        occupied.clear();
+        weighted.clear();
+        directions.clear();
+        cornerSum.assign(std::size_t(end - begin), glm::vec3(0.0f));
+        std::vector<int> cornerSlot(std::size_t(end - begin), -1);
+        for (const std::uint32_t *c = begin; c != end; ++c) {
+            const glm::vec3 &n = faceNormal[*c / 3];
+            if (n == glm::vec3(0.0f))
+                continue;
+            const int b = binOf(n);
+            if (slot[b] < 0) {
+                slot[b] = int(occupied.size());
+                occupied.push_back(b);
+                weighted.emplace_back(0.0f);
+                directions.emplace_back(0.0f);
+            }
+            weighted[std::size_t(slot[b])] += angle[*c] * n;
+            directions[std::size_t(slot[b])] += n;
+            cornerSlot[std::size_t(c - begin)] = slot[b];
+        }
+        const std::size_t m = occupied.size();
+        for (glm::vec3 &d : directions)
+            d = glm::normalize(d);
+        sums.assign(m, glm::vec3(0.0f));
+        for (std::size_t i = 0; i < m; ++i)
+            for (std::size_t j = 0; j < m; ++j)
+                if (glm::dot(directions[i], directions[j]) >= threshold)
+                    sums[i] += weighted[j];
+        for (std::size_t k = 0; k < cornerSum.size(); ++k)
+            if (cornerSlot[k] >= 0)
+                cornerSum[k] = sums[std::size_t(cornerSlot[k])];
+    }
+};
+
+// The output vertex of each (normal, colour, texture coordinate) at a big position, by hash
+// rather than by comparing with every one made before.
+struct VertexKey
+{
+    glm::vec3 normal, color;
+    glm::vec2 uv;
+    bool operator==(const VertexKey &o) const
+    {
+        return normal == o.normal && color == o.color && uv == o.uv;
+    }
+};
+struct VertexKeyHash
+{
+    std::size_t operator()(const VertexKey &k) const
+    {
+        const float f[8] = {k.normal.x, k.normal.y, k.normal.z, k.color.x,
+                            k.color.y,  k.color.z,  k.uv.x,     k.uv.y};
+        std::uint64_t h = 0xcbf29ce484222325ull;
+        for (float x : f) {
+            std::uint32_t u;
+            x = x == 0.0f ? 0.0f : x;
+            std::memcpy(&u, &x, sizeof u);
+            h = (h ^ u) * 0x100000001b3ull;
+        }
+        return std::size_t(h ^ (h >> 29));
+    }
+};
 
 // Runs work(begin, end, part) over `parts` slices of [0, n) on as many threads.
 template <typename F> void parallelFor(std::size_t n, std::size_t parts, F &&work)
@@ -150,6 +258,9 @@ std::optional<Mesh> withGeneratedNormals(const Mesh &mesh, float creaseDegrees,
             o.positions.reserve(lastGroup - firstGroup);
             o.normals.reserve(lastGroup - firstGroup);
             std::vector<std::uint32_t> made; // output vertices of the current position
+            std::unordered_map<VertexKey, std::uint32_t, VertexKeyHash> madeByKey; // big ones
+            Bins bins;
+            std::vector<glm::vec3> binnedSum;
             for (std::size_t group = firstGroup; group < lastGroup; ++group) {
                 const std::uint32_t *begin = corners.data() + start[group];
                 const std::uint32_t *end = corners.data() + start[group + 1];
@@ -157,15 +268,21 @@ std::optional<Mesh> withGeneratedNormals(const Mesh &mesh, float creaseDegrees,
                     continue;
                 if ((group & 0xffff) == 0 && cancelled())
                     return;
+                const bool big = std::size_t(end - begin) > kBinnedCorners;
                 glm::vec3 all(0.0f);
                 for (const std::uint32_t *c = begin; c != end; ++c)
                     all += angle[*c] * faceNormal[*c / 3];
+                if (big && threshold > -1.0f)
+                    bins.sum(begin, end, faceNormal, angle, threshold, binnedSum);
                 made.clear();
+                madeByKey.clear();
                 for (const std::uint32_t *c = begin; c != end; ++c) {
                     const glm::vec3 &own = faceNormal[*c / 3];
                     glm::vec3 sum(0.0f);
                     if (threshold <= -1.0f || own == glm::vec3(0.0f)) {
                         sum = all; // fully smooth, or a degenerate triangle takes its neighbours'
+                    } else if (big) {
+                        sum = binnedSum[std::size_t(c - begin)];
                     } else {
                         for (const std::uint32_t *d = begin; d != end; ++d)
                             if (glm::dot(own, faceNormal[*d / 3]) >= threshold)
@@ -178,13 +295,19 @@ std::optional<Mesh> withGeneratedNormals(const Mesh &mesh, float creaseDegrees,
                     // same normal, colour and texture coordinates.
                     const std::uint32_t vertex = mesh.indices[*c];
                     std::uint32_t index = std::uint32_t(o.positions.size());
-                    for (const std::uint32_t m : made)
-                        if (o.normals[m] == normal &&
-                            (!colors || o.colors[m] == mesh.colors[vertex]) &&
-                            (!uvs || o.uvs[m] == mesh.uvs[vertex])) {
-                            index = m;
-                            break;
-                        }
+                    if (big) {
+                        const VertexKey key{normal, colors ? mesh.colors[vertex] : glm::vec3(0.0f),
+                                            uvs ? mesh.uvs[vertex] : glm::vec2(0.0f)};
+                        index = madeByKey.try_emplace(key, index).first->second;
+                    } else {
+                        for (const std::uint32_t m : made)
+                            if (o.normals[m] == normal &&
+                                (!colors || o.colors[m] == mesh.colors[vertex]) &&
+                                (!uvs || o.uvs[m] == mesh.uvs[vertex])) {
+                                index = m;
+                                break;
+                            }
+                    }
                     if (index == o.positions.size()) {
                         o.positions.push_back(mesh.positions[vertex]);
                         o.normals.push_back(normal);

@@ -15,6 +15,8 @@ namespace lb {
 // at that position, taking only the triangles whose normal is within `creaseDegrees` of the
 // corner's own triangle. 0 gives flat normals, 180 fully smooth ones. A vertex whose corners
 // end up with different normals is split. Every index must be below the vertex count.
+// Linear in the corners: a position with more than 64 corners (a fan, bad data all at the
+// origin) compares bins of about 3 degrees of normals instead of every pair of corners.
 // Returns nothing when `cancel` was set.
 std::optional<Mesh> withGeneratedNormals(const Mesh &mesh, float creaseDegrees,
                                          const std::atomic_bool *cancel = nullptr);
