@@ -1,5 +1,7 @@
 #include "command_line.h"
 
+#include "shader_document.h"
+
 #include <QCommandLineParser>
 #include <QFile>
 #include <QFileInfo>
@@ -157,10 +159,10 @@ const OptionSpec kOptions[] = {
 
 QString readShader(const char *option, const QString &path)
 {
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly))
-        fail(option, QString("cannot read '%1': %2").arg(path, file.errorString()));
-    return QString::fromUtf8(file.readAll());
+    const ShaderFileRead read = readShaderFile(path);
+    if (!read.ok())
+        fail(option, "cannot read " + read.error);
+    return read.text;
 }
 
 void parseInto(const QCommandLineParser &parser, CommandLine &cl)

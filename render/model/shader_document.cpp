@@ -1,5 +1,6 @@
 #include "shader_document.h"
 
+#include "dialect.h"
 #include "presets.h"
 
 #include <QDir>
@@ -9,6 +10,31 @@
 #include <QSettings>
 
 namespace lb {
+
+ShaderFileRead readShaderFile(const QString &path)
+{
+    ShaderFileRead r;
+    const QFileInfo info(path);
+    QFile f(path);
+    // UTF-8 takes at least a byte a character: a longer file is over the characters' limit.
+    const qint64 limit = kMaxSourceCharacters;
+    if (!info.exists())
+        r.error = QString("%1: no such file").arg(path);
+    else if (!info.isFile())
+        r.error = QString("%1: not a regular file").arg(path);
+    else if (info.size() > limit)
+        r.error = QString("%1: %2 KiB is more than a shader may be (%3 KiB)")
+                      .arg(path)
+                      .arg(info.size() / 1024)
+                      .arg(limit / 1024);
+    else if (!f.open(QIODevice::ReadOnly))
+        r.error = QString("%1: %2").arg(path, f.errorString());
+    else if (const QByteArray bytes = f.read(limit + 1); bytes.size() > limit) // it grew
+        r.error = QString("%1: more than a shader may be (%2 KiB)").arg(path).arg(limit / 1024);
+    else
+        r.text = QString::fromUtf8(bytes);
+    return r;
+}
 
 namespace {
 
@@ -201,10 +227,10 @@ QString ShaderDocument::openFiles(const QStringList &paths)
     for (int i = 0; i < 2; ++i) {
         if (chosen[i].isEmpty())
             continue;
-        QFile f(chosen[i]);
-        if (!f.open(QIODevice::ReadOnly))
-            return tr("Cannot open %1: %2").arg(chosen[i], f.errorString());
-        text[i] = QString::fromUtf8(f.readAll());
+        const ShaderFileRead read = readShaderFile(chosen[i]);
+        if (!read.ok())
+            return tr("Cannot open %1").arg(read.error);
+        text[i] = read.text;
     }
     // A stage with no file chosen keeps its text, its file and its unsaved edits.
     const Snapshot before = snapshot();
@@ -273,12 +299,12 @@ void ShaderDocument::fileChangedOnDisk(const QString &path)
         Stage &s = stage(st);
         if (s.path != path)
             continue;
-        QFile f(path);
-        if (!f.open(QIODevice::ReadOnly)) {
+        const ShaderFileRead read = readShaderFile(path);
+        if (!read.ok()) { // gone, or no longer something to read (a huge file, a FIFO)
             emit diskChanged(st, DiskChange::Gone, path);
             continue;
         }
-        const QString text = QString::fromUtf8(f.readAll());
+        const QString text = read.text;
         if (text == s.saved) // nothing new: our own save, or a touch
             continue;
         if (s.modified()) {

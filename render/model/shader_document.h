@@ -22,6 +22,17 @@ namespace lb {
 
 struct Preset;
 
+// A shader file's text, or why it was not read: anything that is not a regular file (a
+// device such as /dev/zero, a FIFO, a folder) or is larger than a shader may be is refused
+// before a byte of it is read, with a message naming the path and the limit.
+struct ShaderFileRead
+{
+    QString text;
+    QString error; // "PATH: ..." when not read
+    bool ok() const { return error.isEmpty(); }
+};
+ShaderFileRead readShaderFile(const QString &path);
+
 // Where the text came from, as data. Words for it are the view's business (translated when
 // shown, never stored).
 struct ShaderOrigin

@@ -2,7 +2,12 @@
 // and a message that names the option.
 #include "command_line.h"
 
+#include <QDir>
+#include <QFile>
+#include <QTemporaryDir>
 #include <QTest>
+
+#include <sys/stat.h>
 
 using namespace lb;
 
@@ -148,6 +153,49 @@ private slots:
         QCOMPARE(r.exitCode, 2);
         QVERIFY2(r.message.contains(named), qPrintable(r.message));
         QVERIFY2(!r.message.contains('\n'), qPrintable(r.message));
+    }
+
+    // Shader files are refused before a byte is read when they are no regular file or too
+    // big: /dev/zero grew without end (and died of bad_alloc under a memory limit), a FIFO
+    // would wait for a writer forever.
+    void shaderFilesAreBoundedBeforeReading_data()
+    {
+        QTest::addColumn<QString>("kind");
+        QTest::addColumn<QString>("named");
+        QTest::newRow("/dev/zero") << "device"
+                                   << "/dev/zero: not a regular file";
+        QTest::newRow("a FIFO") << "fifo"
+                                << "not a regular file";
+        QTest::newRow("a folder") << "folder"
+                                  << "not a regular file";
+        QTest::newRow("2 MiB") << "big"
+                               << "2048 KiB is more than a shader may be (1024 KiB)";
+        QTest::newRow("missing") << "missing"
+                                 << "no such file";
+    }
+
+    void shaderFilesAreBoundedBeforeReading()
+    {
+        QFETCH(QString, kind);
+        QFETCH(QString, named);
+        QTemporaryDir dir;
+        QString path = dir.filePath("shader.frag");
+        if (kind == "device")
+            path = "/dev/zero";
+        else if (kind == "fifo")
+            QCOMPARE(::mkfifo(QFile::encodeName(path).constData(), 0600), 0);
+        else if (kind == "folder")
+            QVERIFY(QDir(dir.path()).mkdir("shader.frag"));
+        else if (kind == "big") {
+            QFile f(path);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write(QByteArray(2 * 1024 * 1024, ' '));
+        }
+        const CommandLineResult r = parse("--vertex " + path + " --fragment " + path);
+        QVERIFY(!r.commandLine);
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.message.contains(named), qPrintable(r.message));
+        QVERIFY2(r.message.contains("--vertex"), qPrintable(r.message));
     }
 };
 

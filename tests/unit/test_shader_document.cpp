@@ -13,6 +13,8 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <sys/stat.h>
+
 using namespace lb;
 
 namespace {
@@ -166,6 +168,17 @@ private slots:
         QVERIFY(single.openFiles({m_dir.filePath("missing.vert")}).contains("Cannot open"));
         QCOMPARE(single.source(ShaderStage::Vertex), QString("// v\n"));
         QCOMPARE(single.filePath(ShaderStage::Vertex), QFileInfo(vert).absoluteFilePath());
+        // Nor does a FIFO (it would wait for a writer) or a file too big for a shader: refused
+        // before reading, the path and the limit named.
+        const QString fifo = m_dir.filePath("fifo.frag"), big = m_dir.filePath("big.frag");
+        QCOMPARE(::mkfifo(QFile::encodeName(fifo).constData(), 0600), 0);
+        QVERIFY(single.openFiles({fifo}).contains(fifo + ": not a regular file"));
+        QFile b(big);
+        QVERIFY(b.open(QIODevice::WriteOnly));
+        b.write(QByteArray(1024 * 1024 + 1, ' '));
+        b.close();
+        QVERIFY(single.openFiles({big}).contains("1024 KiB is more than a shader may be"));
+        QCOMPARE(single.source(ShaderStage::Vertex), QString("// v\n"));
     }
 
     void saveAsWritesBothFilesAndSaveClearsModified()
