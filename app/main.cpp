@@ -5,6 +5,7 @@
 #include "headless.h"
 #include "main_window.h"
 #include "mesh_actions.h"
+#include "message_text.h"
 #include "object_loader.h"
 #include "offscreen.h"
 #include "scene_actions.h"
@@ -65,8 +66,9 @@ int main(int argc, char **argv)
     QCoreApplication::setApplicationName("lightbench");
 
     if (!cl.sceneIgnored.isEmpty() && cl.headless()) // the window shows them in a message
-        std::fprintf(stderr, "lightbench: %s: ignored: %s\n", qPrintable(cl.scenePath),
-                     qPrintable(cl.sceneIgnored.join("; ")));
+        std::fprintf(stderr, "lightbench: %s: ignored: %s\n",
+                     qPrintable(lb::elidedForMessage(cl.scenePath)),
+                     qPrintable(lb::summarisedList(cl.sceneIgnored, "; ")));
     if (cl.headless()) {
         QGuiApplication app(argc, argv);
         // Headless frames start from the scene file or the defaults, not the saved session.

@@ -1,6 +1,7 @@
 #include "scene_actions.h"
 
 #include "export_size_dialog.h"
+#include "message_text.h"
 #include "recent_files.h"
 #include "scene_document.h"
 #include "shader_document.h"
@@ -111,7 +112,7 @@ bool SceneActions::open(const QString &path)
                     tr("%1 opened; %n field(s) could not be used and kept their defaults.", "",
                        int(read.ignored.size()))
                         .arg(name),
-                    read.ignored.join('\n'));
+                    summarisedList(read.ignored, "\n", 20));
     showStatusMessage(m_window, tr("Opened the scene %1").arg(name), 5000);
     emit sceneOpened(path);
     return true;

@@ -1,5 +1,7 @@
 #include "import_process.h"
 
+#include "message_text.h"
+
 #include <QBuffer>
 #include <QCoreApplication>
 #include <QDir>
@@ -316,6 +318,8 @@ void ImportProcess::finish(ImportResult result)
     m_running = false;
     m_deadline.stop();
     m_reader.reset();
+    // A path of megabytes (a broken scene file) is no message: its ends are.
+    result.error = elidedForMessage(result.error, 1000);
     emit finished(result);
 }
 

@@ -383,6 +383,39 @@ private slots:
                  0);
     }
 
+    // Values echoed in messages stay readable: a scene with 200,000 lights and a 2 MB mesh
+    // path made megabyte lines on stderr; now the list is summarised and the path elided.
+    void echoedValuesAreBounded()
+    {
+        QJsonObject scene;
+        {
+            const Run dump = run({"--save-scene", m_dir.filePath("plain.json"), "--render",
+                                  m_dir.filePath("plain.png")});
+            QCOMPARE(dump.exitCode, 0);
+            QFile f(m_dir.filePath("plain.json"));
+            QVERIFY(f.open(QIODevice::ReadOnly));
+            scene = QJsonDocument::fromJson(f.readAll()).object();
+        }
+        QJsonArray lights;
+        for (int i = 0; i < 200000; ++i)
+            lights.append(QJsonObject{{"position", QJsonArray{0, 1, 2, 1}}});
+        scene["lights"] = lights;
+        QJsonObject object = scene["object"].toObject();
+        object["mesh"] = "/nowhere/" + QString(2'000'000, 'a') + ".obj";
+        scene["object"] = object;
+        const QString path = m_dir.filePath("echo.json");
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(QJsonDocument(scene).toJson(QJsonDocument::Compact));
+        f.close();
+        const Run r = run({"--scene", path, "--render", m_dir.filePath("echo.png")});
+        QCOMPARE(r.exitCode, 1); // the mesh cannot load
+        QVERIFY2(r.err.size() < 8000, qPrintable(QString::number(r.err.size())));
+        QVERIFY2(r.err.contains("lights[4] (at most 4 lights)"), r.err.left(500).constData());
+        QVERIFY(r.err.contains(" more"));
+        QVERIFY(r.err.contains("aaa...aaa"));
+    }
+
     void shaderEditsSurviveAKill()
     {
         QTemporaryDir config;
