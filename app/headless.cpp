@@ -3,6 +3,7 @@
 #include "diagnostics.h"
 #include "offscreen.h"
 #include "program_trial.h"
+#include "safe_write.h"
 
 #include <QElapsedTimer>
 #include <QEventLoop>
@@ -236,10 +237,12 @@ int runHeadless(const CommandLine &cl, const Scene &requested)
             printLine("lightbench: " + why.toUtf8(), stderr);
         return 1;
     }
-    if (!cl.renderPath.isEmpty() && !frame.save(cl.renderPath, "PNG", kPngQuality)) {
-        printLine("lightbench: --render: cannot write '" + cl.renderPath.toUtf8() + "'", stderr);
-        return 1;
-    }
+    if (!cl.renderPath.isEmpty())
+        if (const QString error = writeImageSafely(cl.renderPath, frame, kPngQuality);
+            !error.isEmpty()) {
+            printLine("lightbench: --render: cannot write " + error.toUtf8(), stderr);
+            return 1;
+        }
     if (scene.compare.mode == CompareMode::Difference) {
         const DifferenceStats &d = offscreen.renderer().difference();
         QJsonObject o;

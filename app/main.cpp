@@ -8,6 +8,7 @@
 #include "message_text.h"
 #include "object_loader.h"
 #include "offscreen.h"
+#include "safe_write.h"
 #include "scene_actions.h"
 #include "shader_document.h"
 #include "viewport.h"
@@ -132,9 +133,10 @@ int main(int argc, char **argv)
                 return; // the timer fires again (a program being tried draws once accepted)
             settle->stop();
             const QString path = cl.screenshotPath;
-            if (!window.grab().save(path, "PNG")) {
-                std::fprintf(stderr, "lightbench: --screenshot: cannot write '%s'\n",
-                             qPrintable(path));
+            if (const QString error = lb::writeImageSafely(path, window.grab().toImage());
+                !error.isEmpty()) {
+                std::fprintf(stderr, "lightbench: --screenshot: cannot write %s\n",
+                             qPrintable(error));
                 QCoreApplication::exit(1);
                 return;
             }

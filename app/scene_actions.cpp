@@ -3,6 +3,7 @@
 #include "export_size_dialog.h"
 #include "message_text.h"
 #include "recent_files.h"
+#include "safe_write.h"
 #include "scene_document.h"
 #include "shader_document.h"
 #include "status_line.h"
@@ -13,7 +14,6 @@
 #include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
-#include <QImageWriter>
 #include <QMainWindow>
 #include <QMenu>
 #include <QSettings>
@@ -135,22 +135,22 @@ QString SceneActions::save(const QString &path)
 
 QString SceneActions::exportImage(const QString &path, QSize pixels)
 {
-    // A program too slow for a frame this big is not asked to draw one (its trial says so).
+    // A program too slow for a frame this big is not asked to draw one (its trial says so),
+    // and a device or a pipe is not replaced by a file.
     const QString tooSlow = m_viewport->tooSlowAt(pixels);
-    const QImage image = tooSlow.isEmpty() ? m_viewport->renderImage(pixels) : QImage();
-    QImageWriter writer(path);
-    if (QFileInfo(path).suffix().isEmpty())
-        writer.setFormat("png");
-    QString error;
-    if (!tooSlow.isEmpty())
+    QString error = unwritableTarget(path);
+    if (error.isEmpty() && !tooSlow.isEmpty())
         error = tr("%1: not drawn: %2").arg(path, tooSlow);
-    else if (image.isNull())
-        error = tr("%1: the view could not be drawn at %2 x %3")
-                    .arg(path)
-                    .arg(pixels.width())
-                    .arg(pixels.height());
-    else if (!writer.write(image))
-        error = QString("%1: %2").arg(path, writer.errorString());
+    if (error.isEmpty()) {
+        const QImage image = m_viewport->renderImage(pixels);
+        if (image.isNull())
+            error = tr("%1: the view could not be drawn at %2 x %3")
+                        .arg(path)
+                        .arg(pixels.width())
+                        .arg(pixels.height());
+        else
+            error = writeImageSafely(path, image); // a temporary file, then a rename
+    }
     if (!error.isEmpty())
         showMessage(QMessageBox::Warning, tr("The image was not exported."), error);
     else

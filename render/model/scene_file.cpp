@@ -1,12 +1,13 @@
 #include "scene_file.h"
 
+#include "safe_write.h"
+
 #include "dialect.h"
 
 #include <QFile>
 #include <QFileInfo>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QSaveFile>
 
 namespace lb {
 
@@ -129,11 +130,7 @@ SceneFileRead readSceneFile(const QString &path)
 
 QString writeSceneFile(const QString &path, const SceneFile &file)
 {
-    QSaveFile f(path);
-    if (!f.open(QIODevice::WriteOnly) ||
-        f.write(sceneFileBytes(file, QFileInfo(path).absoluteDir())) < 0 || !f.commit())
-        return QString("%1: %2").arg(path, f.errorString());
-    return {};
+    return writeFileSafely(path, sceneFileBytes(file, QFileInfo(path).absoluteDir()));
 }
 
 } // namespace lb

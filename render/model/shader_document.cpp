@@ -2,11 +2,11 @@
 
 #include "dialect.h"
 #include "presets.h"
+#include "safe_write.h"
 
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
-#include <QSaveFile>
 #include <QSettings>
 
 namespace lb {
@@ -246,16 +246,16 @@ QString ShaderDocument::writeFiles(const QString &vertexPath, const QString &fra
 {
     QString error;
     const QString paths[2] = {vertexPath, fragmentPath};
+    // As a pair: neither file is replaced unless both are written.
+    if (const QString why = writeFilesSafely(
+            {{paths[0], m_stages[0].text.toUtf8()}, {paths[1], m_stages[1].text.toUtf8()}});
+        !why.isEmpty())
+        error = tr("Cannot save %1").arg(why);
     for (int i = 0; i < 2 && error.isEmpty(); ++i) {
         Stage &s = m_stages[std::size_t(i)];
-        QSaveFile f(paths[i]);
-        if (!f.open(QIODevice::WriteOnly) || f.write(s.text.toUtf8()) < 0 || !f.commit()) {
-            error = tr("Cannot save %1: %2").arg(paths[i], f.errorString());
-        } else {
-            s.path = QFileInfo(paths[i]).absoluteFilePath();
-            s.saved = s.text;
-            s.unsaved = false;
-        }
+        s.path = QFileInfo(paths[i]).absoluteFilePath();
+        s.saved = s.text;
+        s.unsaved = false;
     }
     if (error.isEmpty()) { // the text is now the pair's, no longer a preset's or a built-in
         m_origin = {ShaderOrigin::Kind::Files, QFileInfo(vertexPath).completeBaseName(), false};

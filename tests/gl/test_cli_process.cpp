@@ -1,7 +1,9 @@
 // The lightbench executable as a user scripts it: exit codes, messages, PNG and probe JSON.
 #include "reference_compare.h"
 
+#include <QDir>
 #include <QElapsedTimer>
+#include <QFileInfo>
 #include <QImage>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -9,6 +11,8 @@
 #include <QProcess>
 #include <QTemporaryDir>
 #include <QTest>
+
+#include <sys/stat.h>
 
 namespace {
 struct Run
@@ -414,6 +418,40 @@ private slots:
         QVERIFY2(r.err.contains("lights[4] (at most 4 lights)"), r.err.left(500).constData());
         QVERIFY(r.err.contains(" more"));
         QVERIFY(r.err.contains("aaa...aaa"));
+    }
+
+    // Images are written through a temporary file and a rename: a kill at any moment of
+    // --render leaves the old PNG whole (it turned into 8 KB nobody could decode), and a FIFO
+    // or a device is never replaced by a file.
+    void imageWritesAreAtomicAndSparePipes()
+    {
+        const QString png = m_dir.filePath("kept.png");
+        QCOMPARE(run({"--render", png, "--size", "640x480"}).exitCode, 0);
+        const QImage before(png);
+        QVERIFY(!before.isNull());
+        for (const int delay : {150, 300, 450, 600, 750, 900}) {
+            QProcess p;
+            p.start(LIGHTBENCH_EXE, {"--render", png, "--size", "3000x2000", "--kd", "0,1,0"});
+            QVERIFY(p.waitForStarted());
+            QTest::qWait(delay);
+            p.kill();
+            p.waitForFinished();
+            const QImage now(png);
+            QVERIFY2(!now.isNull(), qPrintable(QString("killed after %1 ms").arg(delay)));
+            QVERIFY(now.size() == before.size() || now.size() == QSize(3000, 2000));
+        }
+        QCOMPARE(QDir(m_dir.path()).entryList({"kept.png*"}, QDir::Files),
+                 QStringList{"kept.png"}); // no temporary file left behind
+
+        const QString fifo = m_dir.filePath("pipe.png");
+        QCOMPARE(::mkfifo(QFile::encodeName(fifo).constData(), 0600), 0);
+        const Run r = run({"--render", fifo});
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.err.contains("not a regular file"), r.err.constData());
+        QVERIFY(!QFileInfo(fifo).isFile());
+        const Run save = run({"--save-scene", fifo, "--render", m_dir.filePath("x.png")});
+        QVERIFY(save.exitCode != 0);
+        QVERIFY(!QFileInfo(fifo).isFile());
     }
 
     void shaderEditsSurviveAKill()

@@ -1,7 +1,11 @@
 // Scene files: what is saved opens as the same scene; mangled files never crash and never
 // give values outside the model's limits.
+#include "safe_write.h"
 #include "scene_file.h"
 
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -10,6 +14,8 @@
 #include <QTest>
 
 #include <cmath>
+
+#include <sys/stat.h>
 
 using namespace lb;
 
@@ -212,6 +218,27 @@ private slots:
         QVERIFY(!read.file);
         QVERIFY2(read.error.startsWith("x.json: ") && read.error.contains(message),
                  qPrintable(read.error));
+    }
+
+    // Saves never replace what is not a regular file (a FIFO here; /dev/null as root became a
+    // JSON file), and files that belong together are replaced together or not at all.
+    void savesRefuseDevicesAndWritePairsTogether()
+    {
+        QTemporaryDir tmp;
+        const QString fifo = tmp.filePath("pipe.json");
+        QCOMPARE(::mkfifo(QFile::encodeName(fifo).constData(), 0600), 0);
+        const QString error = writeSceneFile(fifo, sampleFile(QDir(tmp.path())));
+        QVERIFY2(error.contains("not a regular file"), qPrintable(error));
+        QVERIFY(QFileInfo(fifo).exists() && !QFileInfo(fifo).isFile()); // still the FIFO
+
+        const QString first = tmp.filePath("pair.vert"), folder = tmp.filePath("pair.frag");
+        QVERIFY(writeFileSafely(first, "old").isEmpty());
+        QVERIFY(QDir(tmp.path()).mkdir("pair.frag"));
+        QVERIFY(!writeFilesSafely({{first, "new"}, {folder, "new"}}).isEmpty());
+        QFile f(first);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        QCOMPARE(f.readAll(), QByteArray("old")); // the pair's other half was not replaced
+        QCOMPARE(QDir(tmp.path()).entryList(QDir::Files), QStringList{"pair.vert"}); // no leftovers
     }
 
     void missingFilesAndFoldersAreNamed()
