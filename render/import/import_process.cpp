@@ -138,6 +138,9 @@ void ImportProcess::start(const QString &path, const ImportLimits &limits)
     m_stderr.clear();
     m_clock.start();
     m_reader = std::make_unique<WireReader>();
+    // What the helper may allocate bounds what it may send.
+    if (limits.memoryMB > 0)
+        m_reader->setMaxMeshBytes(std::uint64_t(limits.memoryMB) << 20);
     m_reader->onProgress = [this](double fraction, const QString &stage) {
         emit progress(fraction, stage);
     };

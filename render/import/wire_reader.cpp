@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstring>
 #include <new>
+#include <type_traits>
 
 namespace lb {
 
@@ -98,7 +99,12 @@ bool WireReader::feed(const char *data, qint64 size)
             Target &t = m_targets[m_target];
             const std::uint64_t take =
                 std::min<std::uint64_t>(std::uint64_t(size), t.size - m_targetOffset);
-            std::memcpy(t.data + m_targetOffset, data, take);
+            try {
+                std::memcpy(t.grow(m_targetOffset + take) + m_targetOffset, data, take);
+            } catch (const std::bad_alloc &) {
+                return fail(QString("not enough memory for the mesh (%1 MB received)")
+                                .arg(m_meshReceived >> 20));
+            }
             data += take;
             size -= qint64(take);
             m_targetOffset += take;
@@ -135,29 +141,33 @@ bool WireReader::startMesh()
         h.indexCount % 3 != 0 || h.indexCount > wire::kMaxRecordBytes / 4 ||
         h.vertexCount * perVertex + h.indexCount * 4 + sizeof h != m_header.size)
         return fail("the import stream announces a mesh whose sizes don't add up");
-    try {
-        const std::size_t n = std::size_t(h.vertexCount);
-        m_mesh.positions.resize(n);
-        m_targets = {{reinterpret_cast<char *>(m_mesh.positions.data()), n * 12}};
-        if (h.flags & wire::kHasNormals) {
-            m_mesh.normals.resize(n);
-            m_targets.push_back({reinterpret_cast<char *>(m_mesh.normals.data()), n * 12});
-        }
-        if (h.flags & wire::kHasColors) {
-            m_mesh.colors.resize(n);
-            m_targets.push_back({reinterpret_cast<char *>(m_mesh.colors.data()), n * 12});
-        }
-        if (h.flags & wire::kHasUvs) {
-            m_mesh.uvs.resize(n);
-            m_targets.push_back({reinterpret_cast<char *>(m_mesh.uvs.data()), n * 8});
-        }
-        m_mesh.indices.resize(std::size_t(h.indexCount));
-        m_targets.push_back({reinterpret_cast<char *>(m_mesh.indices.data()), h.indexCount * 4});
-    } catch (const std::bad_alloc &) {
-        return fail(QString("not enough memory for a mesh of %1 vertices and %2 triangles")
-                        .arg(h.vertexCount)
-                        .arg(h.indexCount / 3));
-    }
+    if (m_header.size > m_maxMeshBytes)
+        return fail(QString("the import stream announces a mesh of %1 MB, more than the helper "
+                            "may use (%2 MB)")
+                        .arg(m_header.size >> 20)
+                        .arg(m_maxMeshBytes >> 20));
+    // Room is made as the bytes arrive (vectors grow geometrically), never for what is only
+    // announced.
+    auto target = [](auto &vector, std::uint64_t bytes) {
+        using T = typename std::decay_t<decltype(vector)>::value_type;
+        return Target{bytes, [&vector, bytes](std::uint64_t filled) {
+                          // Half of it here: the rest is likely to come, room for all of it
+                          // at once (no doubling past the size).
+                          if (2 * filled >= bytes && vector.capacity() * sizeof(T) < bytes)
+                              vector.reserve(std::size_t(bytes / sizeof(T)));
+                          vector.resize(std::size_t((filled + sizeof(T) - 1) / sizeof(T)));
+                          return reinterpret_cast<char *>(vector.data());
+                      }};
+    };
+    const std::uint64_t n = h.vertexCount;
+    m_targets = {target(m_mesh.positions, n * 12)};
+    if (h.flags & wire::kHasNormals)
+        m_targets.push_back(target(m_mesh.normals, n * 12));
+    if (h.flags & wire::kHasColors)
+        m_targets.push_back(target(m_mesh.colors, n * 12));
+    if (h.flags & wire::kHasUvs)
+        m_targets.push_back(target(m_mesh.uvs, n * 8));
+    m_targets.push_back(target(m_mesh.indices, h.indexCount * 4));
     m_target = 0;
     m_targetOffset = 0;
     m_meshBytes = m_header.size - sizeof h;

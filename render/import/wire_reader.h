@@ -23,6 +23,11 @@ public:
     // Called for each Progress record and as the mesh arrives: fraction in [0, 1], stage.
     std::function<void(double, const QString &)> onProgress;
 
+    // The most bytes a mesh record may announce (the helper's own memory limit): a bigger
+    // announcement fails before anything is allocated. The arrays grow as their bytes
+    // arrive, so a stream that announces more than it sends costs only what it sent.
+    void setMaxMeshBytes(std::uint64_t bytes) { m_maxMeshBytes = bytes; }
+
     // Consumes the next bytes. False once the stream is malformed; error() says why.
     bool feed(const char *data, qint64 size);
     bool complete() const { return m_state == State::Done; }
@@ -55,15 +60,18 @@ private:
 
     Mesh m_mesh;
     bool m_haveMesh = false;
+    // One of the mesh's arrays: how many bytes it is announced to hold, and how to make room
+    // for `bytes` of them (grown as they arrive) and where they start.
     struct Target
     {
-        char *data;
         std::uint64_t size;
+        std::function<char *(std::uint64_t bytes)> grow;
     };
     std::vector<Target> m_targets; // the mesh's arrays, filled in order
     std::size_t m_target = 0;
     std::uint64_t m_targetOffset = 0;
     std::uint64_t m_meshBytes = 0, m_meshReceived = 0;
+    std::uint64_t m_maxMeshBytes = wire::kMaxRecordBytes;
 
     QMap<QString, QString> m_info;
     std::optional<wire::MaterialRecord> m_material;

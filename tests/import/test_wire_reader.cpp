@@ -4,6 +4,7 @@
 #include "wire.h"
 #include "wire_reader.h"
 
+#include <QFile>
 #include <QRandomGenerator>
 #include <QTest>
 
@@ -120,6 +121,43 @@ private slots:
             QVERIFY(!r.feed(s.constData(), s.size()));
             QVERIFY2(r.error().contains("don't add up"), qPrintable(r.error()));
         }
+    }
+
+    // A stream that announces 2^31 indices (8 GB) and sends a few bytes: the window reached
+    // 8.4 GB before any data came. Now room is made as bytes arrive, and an announcement over
+    // the helper's own memory limit fails before anything is allocated.
+    void announcedSizesAllocateNothing()
+    {
+        auto residentMB = [] {
+            QFile statm("/proc/self/statm");
+            if (!statm.open(QIODevice::ReadOnly))
+                return 0.0;
+            return statm.readAll().split(' ').value(1).toDouble() * 4096.0 / (1 << 20);
+        };
+        const std::uint64_t indices = std::uint64_t(1) << 31;
+        QByteArray s(wire::kMagic, sizeof wire::kMagic);
+        wire::MeshHeader h;
+        h.vertexCount = 3;
+        h.indexCount = indices - indices % 3;
+        wire::RecordHeader r;
+        r.type = std::uint32_t(wire::Record::Mesh);
+        r.size = sizeof h + 3 * 12 + h.indexCount * 4;
+        append(s, r);
+        append(s, h);
+        s += QByteArray(3 * 12 + 4096, '\0'); // the positions and a few indices
+
+        const double before = residentMB();
+        WireReader open;
+        QVERIFY(open.feed(s.constData(), s.size())); // fine so far: it is only incomplete
+        QVERIFY(!open.complete());
+        QVERIFY2(residentMB() - before < 64.0,
+                 qPrintable(QString("%1 MB more").arg(residentMB() - before)));
+
+        WireReader limited;
+        limited.setMaxMeshBytes(std::uint64_t(512) << 20); // the helper's limit
+        QVERIFY(!limited.feed(s.constData(), s.size()));
+        QVERIFY2(limited.error().contains("more than the helper may use (512 MB)"),
+                 qPrintable(limited.error()));
     }
 
     void refusesOtherStreams()
