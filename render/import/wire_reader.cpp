@@ -146,14 +146,13 @@ bool WireReader::startMesh()
                             "may use (%2 MB)")
                         .arg(m_header.size >> 20)
                         .arg(m_maxMeshBytes >> 20));
-    // Room is made as the bytes arrive (vectors grow geometrically), never for what is only
-    // announced.
+    // Memory is used as the bytes arrive, never for what is only announced.
     auto target = [](auto &vector, std::uint64_t bytes) {
         using T = typename std::decay_t<decltype(vector)>::value_type;
         return Target{bytes, [&vector, bytes](std::uint64_t filled) {
-                          // Half of it here: the rest is likely to come, room for all of it
-                          // at once (no doubling past the size).
-                          if (2 * filled >= bytes && vector.capacity() * sizeof(T) < bytes)
+                          // Address space for all of it at once (no copies as it grows),
+                          // but pages only for what arrived: resize() writes only those.
+                          if (vector.capacity() * sizeof(T) < bytes)
                               vector.reserve(std::size_t(bytes / sizeof(T)));
                           vector.resize(std::size_t((filled + sizeof(T) - 1) / sizeof(T)));
                           return reinterpret_cast<char *>(vector.data());
