@@ -52,12 +52,9 @@ TrialResult tryWithin(OffscreenRenderer &offscreen, const Scene &scene, const Co
         std::fflush(nullptr);
         std::_Exit(1);
     });
-    const auto timeFrame = [&](QSize size) { return offscreen.timeFrame(scene, size); };
     const TrialResult r =
-        tryProgram(cl.vertexSource, cl.fragmentSource, cl.size, cl.frameBudgetSeconds * 1000.0,
-                   kCommandLineTrial, timeFrame, [&](QSize size) {
-                       return offscreen.renderer().withBuiltIn([&] { return timeFrame(size); });
-                   });
+        offscreen.tryUserProgram(scene, cl.vertexSource, cl.fragmentSource, cl.size,
+                                 cl.frameBudgetSeconds * 1000.0, kCommandLineTrial);
     {
         std::lock_guard<std::mutex> lock(mutex);
         finished = true;

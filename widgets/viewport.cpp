@@ -1,6 +1,5 @@
 #include "viewport.h"
 
-#include "context_loss.h"
 #include "loops.h"
 #include "program_trial.h"
 #include "webgl1_translation.h"
@@ -84,6 +83,7 @@ void Viewport::initializeGL()
     m_renderer.cleanup();
     connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, &Viewport::releaseGl,
             Qt::UniqueConnection);
+    m_resetStatus.attach(context());
     m_error = m_renderer.initialize();
     if (m_error.isEmpty()) {
         if (m_pending)
@@ -180,7 +180,7 @@ void Viewport::paintGL()
         return;
     }
     m_renderer.render(m_document->scene(), size() * devicePixelRatio());
-    if (contextWasReset(*context())) {
+    if (m_resetStatus.wasReset()) {
         QTimer::singleShot(0, this, &Viewport::recoverLostContext);
         return;
     }
@@ -298,7 +298,7 @@ void Viewport::buildNow(const QString &vertexSource, const QString &fragmentSour
         // once the helper's answer comes (trialFinished); the window goes on meanwhile.
         const ProgramBuild build = m_renderer.buildCandidate(vertexSource, fragmentSource);
         if (!build.ok()) {
-            finishBuild(build, {}, vertexSource, fragmentSource);
+            finishBuild(build, {}, vertexSource, fragmentSource, std::nullopt);
             return;
         }
         m_candidate = Candidate{++m_lastTrialId, build, vertexSource, fragmentSource};
@@ -318,6 +318,7 @@ void Viewport::buildNow(const QString &vertexSource, const QString &fragmentSour
         return;
     }
     QString refused;
+    std::optional<TrialResult> measured; // none: nothing was drawn to time it
     const auto trial = [&]() -> std::optional<Diagnostic> {
         const TrialResult result = tryProgram(
             vertexSource, fragmentSource, target, m_frameBudgetMs, kWindowTrial,
@@ -327,15 +328,14 @@ void Viewport::buildNow(const QString &vertexSource, const QString &fragmentSour
             });
         if (result.refusal)
             refused = result.refusal->message;
-        if (needsFrames(vertexSource, fragmentSource)) // else nothing was measured
-            m_lastTrial = result;
+        if (needsFrames(vertexSource, fragmentSource))
+            measured = result;
         return result.refusal;
     };
-    m_lastTrial.reset();
     const ProgramBuild build = m_trialMode == TrialMode::Off
                                    ? m_renderer.setUserProgram(vertexSource, fragmentSource)
                                    : m_renderer.setUserProgram(vertexSource, fragmentSource, trial);
-    finishBuild(build, refused, vertexSource, fragmentSource);
+    finishBuild(build, refused, vertexSource, fragmentSource, measured);
 }
 
 void Viewport::trialFinished(quint64 id, TrialProcess::Outcome outcome, const TrialResult &result)
@@ -360,18 +360,17 @@ void Viewport::trialFinished(quint64 id, TrialProcess::Outcome outcome, const Tr
         build.diagnostics.push_back(*result.refusal);
         refused = result.refusal->message;
     } else if (m_renderer.hasCandidate()) {
-        m_lastTrial = result;
         m_renderer.adoptCandidate();
     } else {
-        m_lastTrial = result;
         build = m_renderer.setUserProgram(tried.vertex, tried.fragment); // a new context since
     }
     doneCurrent();
-    finishBuild(build, refused, tried.vertex, tried.fragment);
+    finishBuild(build, refused, tried.vertex, tried.fragment, result);
 }
 
 void Viewport::finishBuild(const ProgramBuild &build, const QString &refused,
-                           const QString &vertexSource, const QString &fragmentSource)
+                           const QString &vertexSource, const QString &fragmentSource,
+                           const std::optional<TrialResult> &trial)
 {
     const QString drawing = m_renderer.hasUserProgram() ? tr("the last good program is drawing")
                                                         : tr("the built-in program is drawing");
@@ -383,7 +382,7 @@ void Viewport::finishBuild(const ProgramBuild &build, const QString &refused,
         }
         m_goodVertex = vertexSource;
         m_goodFragment = fragmentSource;
-        m_goodTrial = m_lastTrial;
+        m_goodTrial = trial;
         setBanner({});
     } else if (!refused.isEmpty()) {
         setBanner(tr("Refused: %1; %2").arg(refused, drawing));
@@ -394,11 +393,21 @@ void Viewport::finishBuild(const ProgramBuild &build, const QString &refused,
     emit programBuilt(build);
 }
 
+namespace {
+// The attachments of the widget's own framebuffer: a driver that generates code per
+// framebuffer format (llvmpipe) then reuses what a trial or a preparation generated for the
+// frame on screen.
+QOpenGLFramebufferObjectFormat widgetFormat()
+{
+    QOpenGLFramebufferObjectFormat format;
+    format.setAttachment(QOpenGLFramebufferObject::CombinedDepthStencil);
+    return format;
+}
+} // namespace
+
 void Viewport::prepareCandidate()
 {
-    QOpenGLFramebufferObjectFormat format; // the widget's, as in timeFrame()
-    format.setAttachment(QOpenGLFramebufferObject::CombinedDepthStencil);
-    QOpenGLFramebufferObject fbo(QSize(4, 4), format);
+    QOpenGLFramebufferObject fbo(QSize(4, 4), widgetFormat());
     if (!fbo.isValid())
         return;
     fbo.bind();
@@ -408,11 +417,7 @@ void Viewport::prepareCandidate()
 
 double Viewport::timeFrame(QSize pixels)
 {
-    // The attachments of the widget's own framebuffer: a driver that generates code per
-    // framebuffer format (llvmpipe) then reuses the trial's code for the frame on screen.
-    QOpenGLFramebufferObjectFormat format;
-    format.setAttachment(QOpenGLFramebufferObject::CombinedDepthStencil);
-    QOpenGLFramebufferObject fbo(pixels, format);
+    QOpenGLFramebufferObject fbo(pixels, widgetFormat());
     if (!fbo.isValid())
         return 0.0;
     fbo.bind();

@@ -4,6 +4,7 @@
 // the auto-rotation. GL objects are released when the context goes away (a dock or window
 // change can give the widget a new context; initializeGL runs again then).
 
+#include "context_loss.h"
 #include "probe_labels.h"
 #include "renderer.h"
 #include "scene_document.h"
@@ -101,8 +102,9 @@ private:
     void prepareCandidate();        // Renderer::prepareCandidate in such a framebuffer
     void buildNow(const QString &vertexSource, const QString &fragmentSource, bool tryHere = false);
     void trialFinished(quint64 id, TrialProcess::Outcome outcome, const TrialResult &result);
+    // `trial`: what the program's trial measured, kept for bigger frames (tooSlowAt).
     void finishBuild(const ProgramBuild &build, const QString &refused, const QString &vertexSource,
-                     const QString &fragmentSource);
+                     const QString &fragmentSource, const std::optional<TrialResult> &trial);
     void setBanner(const QString &text);
     void updateCompareLabel();
     bool nearWipe(QPoint position) const;
@@ -136,8 +138,9 @@ private:
     QString m_goodVertex, m_goodFragment;
     QString m_previousVertex, m_previousFragment; // the good program before (empty: built-in)
     // What their trials measured (none: not tried, no loop), for a bigger frame later.
-    std::optional<TrialResult> m_goodTrial, m_previousTrial, m_lastTrial;
+    std::optional<TrialResult> m_goodTrial, m_previousTrial;
     bool m_recovering = false;
+    ResetStatus m_resetStatus; // the driver's word on this context
     QString m_pendingVertex, m_pendingFragment;
     bool m_pending = false;
     QPoint m_lastMouse;

@@ -1,8 +1,5 @@
 #include "context_loss.h"
 
-#include <QOpenGLContext>
-#include <QOpenGLFunctions>
-
 namespace lb {
 
 namespace {
@@ -14,22 +11,26 @@ void reportResetForTesting(QOpenGLContext *context)
     g_resetForTesting = context;
 }
 
-bool contextWasReset(QOpenGLContext &context)
+void ResetStatus::attach(QOpenGLContext *context)
 {
-    if (g_resetForTesting == &context) {
+    m_context = context;
+    m_query = nullptr;
+    if (!context || !context->format().testOption(QSurfaceFormat::ResetNotification))
+        return;
+    m_query = reinterpret_cast<Query>(context->getProcAddress("glGetGraphicsResetStatus"));
+    if (!m_query)
+        m_query = reinterpret_cast<Query>(context->getProcAddress("glGetGraphicsResetStatusARB"));
+}
+
+bool ResetStatus::wasReset() const
+{
+    if (!m_context)
+        return false;
+    if (g_resetForTesting == m_context) {
         g_resetForTesting = nullptr;
         return true;
     }
-    if (!context.isValid())
-        return true;
-    if (!context.format().testOption(QSurfaceFormat::ResetNotification))
-        return false;
-    using ResetStatus = GLenum (*)();
-    auto status = reinterpret_cast<ResetStatus>(context.getProcAddress("glGetGraphicsResetStatus"));
-    if (!status)
-        status =
-            reinterpret_cast<ResetStatus>(context.getProcAddress("glGetGraphicsResetStatusARB"));
-    return status && status() != GL_NO_ERROR;
+    return !m_context->isValid() || (m_query && m_query() != GL_NO_ERROR);
 }
 
 } // namespace lb

@@ -4,15 +4,29 @@
 // setDefaultGlFormat) the driver says so: glGetGraphicsResetStatus reports it, and Qt marks
 // the context invalid at its next makeCurrent.
 
-class QOpenGLContext;
+#include <QOpenGLContext>
+#include <QPointer>
 
 namespace lb {
 
-// With `context` current: whether it was reset, or is no longer valid. False where the driver
-// cannot tell (no robustness).
-bool contextWasReset(QOpenGLContext &context);
+// Asks the driver, once a frame, whether a context was reset. The query is resolved once,
+// when the context is attached, not per frame.
+class ResetStatus
+{
+public:
+    // With `context` current (a new one replaces the one before).
+    void attach(QOpenGLContext *context);
+    // With the attached context current: whether it was reset, or is no longer valid. False
+    // where the driver cannot tell (no robustness).
+    bool wasReset() const;
 
-// Makes the next contextWasReset(context) say it was reset, as the driver would after a GPU
+private:
+    using Query = GLenum (*)();
+    QPointer<QOpenGLContext> m_context;
+    Query m_query = nullptr;
+};
+
+// Makes the next wasReset() of `context` say it was reset, as the driver would after a GPU
 // reset, which no test can cause on Mesa; the recovery that follows is the real one.
 void reportResetForTesting(QOpenGLContext *context);
 

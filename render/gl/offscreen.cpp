@@ -1,7 +1,5 @@
 #include "offscreen.h"
 
-#include "context_loss.h"
-
 #include <QElapsedTimer>
 #include <QOpenGLFunctions>
 
@@ -38,6 +36,7 @@ QString OffscreenRenderer::initialize(QSize size)
         return "cannot create an OpenGL context (is there an X server with OpenGL?)";
     if (!m_context.makeCurrent(&m_surface))
         return "cannot make the OpenGL context current";
+    m_resetStatus.attach(&m_context);
     const QSurfaceFormat f = m_context.format();
     if (f.majorVersion() * 10 + f.minorVersion() < 33)
         return QString("OpenGL 3.3 is needed, the driver gives %1.%2")
@@ -55,7 +54,7 @@ QString OffscreenRenderer::initialize(QSize size)
 bool OffscreenRenderer::wasReset()
 {
     m_context.makeCurrent(&m_surface);
-    return contextWasReset(m_context);
+    return m_resetStatus.wasReset();
 }
 
 void OffscreenRenderer::setObjectMesh(std::shared_ptr<const Mesh> mesh)
@@ -122,6 +121,16 @@ double OffscreenRenderer::timeFrame(const Scene &scene, QSize size)
     const double ms = double(timer.nsecsElapsed()) * 1e-6;
     fbo.release();
     return ms;
+}
+
+TrialResult OffscreenRenderer::tryUserProgram(const Scene &scene, const QString &vertex,
+                                              const QString &fragment, QSize target,
+                                              double budgetMs, const TrialSizes &sizes)
+{
+    const auto time = [&](QSize size) { return timeFrame(scene, size); };
+    return tryProgram(vertex, fragment, target, budgetMs, sizes, time, [&](QSize size) {
+        return m_renderer.withBuiltIn([&] { return time(size); });
+    });
 }
 
 } // namespace lb

@@ -3,8 +3,10 @@
 // object. Used by the command line (--render, --probe) and the GL tests. Needs a display
 // with OpenGL (an X server; Xvfb when headless).
 
+#include "context_loss.h"
 #include "mesh_file.h"
 #include "object_mesh.h"
+#include "program_trial.h"
 #include "renderer.h"
 
 #include <QImage>
@@ -36,6 +38,10 @@ public:
     // Milliseconds to draw one frame of `scene` at `size` and wait for it, in a framebuffer of
     // its own (a program's trial at a small size).
     double timeFrame(const Scene &scene, QSize size);
+    // The user program's trial (program_trial.h) on frames of `scene` drawn here, the
+    // built-in program's as the reference.
+    TrialResult tryUserProgram(const Scene &scene, const QString &vertex, const QString &fragment,
+                               QSize target, double budgetMs, const TrialSizes &sizes);
     Renderer &renderer() { return m_renderer; }
     // Whether the driver reset the context (context_loss.h): nothing drawn since counts.
     bool wasReset();
@@ -56,6 +62,7 @@ private:
     std::shared_ptr<const MeshFile> m_file;
     std::optional<ObjectMeshKey> m_key;
     bool m_meshGiven = false;
+    ResetStatus m_resetStatus;
 };
 
 } // namespace lb

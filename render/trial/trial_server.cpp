@@ -41,13 +41,9 @@ trialwire::TryReply tryRequest(OffscreenRenderer &offscreen, const trialwire::Tr
         reply.built = false;
         return reply;
     }
-    const Scene scene = Scene::fromJson(r.scene);
-    const auto timeFrame = [&](QSize size) { return offscreen.timeFrame(scene, size); };
     // The command line's sizes: this process may take its time, the window does not wait.
-    reply.result = tryProgram(
-        r.vertex, r.fragment, r.target, r.budgetMs, kCommandLineTrial, timeFrame, [&](QSize size) {
-            return offscreen.renderer().withBuiltIn([&] { return timeFrame(size); });
-        });
+    reply.result = offscreen.tryUserProgram(Scene::fromJson(r.scene), r.vertex, r.fragment,
+                                            r.target, r.budgetMs, kCommandLineTrial);
     return reply;
 }
 
