@@ -48,12 +48,6 @@ qint64 TrialProcess::helperPid() const
     return m_process ? m_process->processId() : 0;
 }
 
-void TrialProcess::warmUp()
-{
-    if (m_available && !m_process)
-        startHelper();
-}
-
 void TrialProcess::startHelper()
 {
     auto *process = new QProcess(this);

@@ -36,11 +36,7 @@ public:
     void tryProgram(const trialwire::TryRequest &request, std::shared_ptr<const Mesh> mesh);
     // How long one trial may take, the helper's start included.
     void setLimit(int milliseconds) { m_limitMs = milliseconds; }
-    int limit() const { return m_limitMs; }
-    // Starts the helper now, so that the first trial finds its context warm.
-    void warmUp();
     qint64 helperPid() const;
-    bool isBusy() const { return m_inFlight.has_value(); }
     // False once the helper could not start or could not draw; then every trial answers
     // Unavailable.
     bool isAvailable() const { return m_available; }
