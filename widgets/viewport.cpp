@@ -1,6 +1,7 @@
 #include "viewport.h"
 
 #include "loops.h"
+#include "presets.h"
 #include "program_trial.h"
 #include "webgl1_translation.h"
 
@@ -291,7 +292,10 @@ void Viewport::buildNow(const QString &vertexSource, const QString &fragmentSour
     m_trialWithoutObject = !m_renderer.objectMesh();
     m_candidate.reset(); // a trial still running answers for a program no longer wanted
     m_renderer.dropCandidate();
-    if (!tryHere && m_trialMode == TrialMode::Helper && m_trialProcess->isAvailable() &&
+    // The presets as shipped are ours and draw in good time: drawn at once, untried (the
+    // built-in program follows the shading switch without a trial's delay).
+    const bool ours = isPresetProgram(vertexSource, fragmentSource);
+    if (!ours && !tryHere && m_trialMode == TrialMode::Helper && m_trialProcess->isAvailable() &&
         !refusalWithoutFrames(vertexSource, fragmentSource) &&
         needsFrames(vertexSource, fragmentSource)) {
         // In the helper: built here (the editor gets its diagnostics now) but drawn only
@@ -332,7 +336,7 @@ void Viewport::buildNow(const QString &vertexSource, const QString &fragmentSour
             measured = result;
         return result.refusal;
     };
-    const ProgramBuild build = m_trialMode == TrialMode::Off
+    const ProgramBuild build = m_trialMode == TrialMode::Off || ours
                                    ? m_renderer.setUserProgram(vertexSource, fragmentSource)
                                    : m_renderer.setUserProgram(vertexSource, fragmentSource, trial);
     finishBuild(build, refused, vertexSource, fragmentSource, measured);

@@ -2,6 +2,8 @@
 
 #include <QFile>
 
+#include <utility>
+
 namespace lb {
 
 namespace {
@@ -48,6 +50,20 @@ const Preset *presetNamed(const QString &name)
         if (p.name == name)
             return &p;
     return nullptr;
+}
+
+bool isPresetProgram(const QString &vertexSource, const QString &fragmentSource)
+{
+    static const std::vector<std::pair<QString, QString>> texts = [] {
+        std::vector<std::pair<QString, QString>> t;
+        for (const Preset &p : presets())
+            t.emplace_back(p.vertexSource(), p.fragmentSource());
+        return t;
+    }();
+    for (const auto &[vertex, fragment] : texts)
+        if (vertex == vertexSource && fragment == fragmentSource)
+            return true;
+    return false;
 }
 
 } // namespace lb

@@ -29,5 +29,8 @@ const std::vector<Preset> &presets();
 const Preset &builtInPreset(bool gouraud);
 // The preset of that menu name; nullptr for none.
 const Preset *presetNamed(const QString &name);
+// Whether the pair is one of the presets as shipped (ours, known to draw in good time: no
+// trial needed before it draws).
+bool isPresetProgram(const QString &vertexSource, const QString &fragmentSource);
 
 } // namespace lb

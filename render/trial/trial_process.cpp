@@ -77,10 +77,7 @@ void TrialProcess::tryProgram(const trialwire::TryRequest &request,
 {
     Pending pending{request, std::move(mesh)};
     if (!m_available) {
-        // Answered from the event loop, like every other answer.
-        QMetaObject::invokeMethod(
-            this, [this, id = request.id] { answer(id, Outcome::Unavailable); },
-            Qt::QueuedConnection);
+        answer(request.id, Outcome::Unavailable);
         return;
     }
     if (m_inFlight) {
@@ -92,8 +89,14 @@ void TrialProcess::tryProgram(const trialwire::TryRequest &request,
 
 void TrialProcess::send(const Pending &pending)
 {
+    // In flight before anything is written: a helper that fails to start may say so while
+    // the bytes are being written (helperEnded), and answers for it.
+    m_inFlight = pending;
+    m_deadline.start(m_limitMs);
     if (!m_process)
         startHelper();
+    if (!m_process)
+        return; // it could not start, and helperEnded() has answered
     if (!m_meshSent || m_sentMesh.lock() != pending.mesh) {
         m_process->write(
             trialwire::framed(trialwire::encodeMesh(pending.mesh ? *pending.mesh : Mesh{})));
@@ -104,8 +107,6 @@ void TrialProcess::send(const Pending &pending)
     // Written now, not when the event loop next runs: the window may be busy a while (the
     // driver generating the program's code) and the helper can start meanwhile.
     m_process->waitForBytesWritten(0);
-    m_inFlight = pending;
-    m_deadline.start(m_limitMs);
 }
 
 void TrialProcess::sendNext()
@@ -201,7 +202,11 @@ void TrialProcess::refuseInFlight(const QString &why)
 
 void TrialProcess::answer(quint64 id, Outcome outcome, const TrialResult &result)
 {
-    emit finished(id, outcome, result);
+    // From the event loop, never from inside tryProgram(): the caller may be half-way
+    // through its own state (the window builds its candidate around the call).
+    QMetaObject::invokeMethod(
+        this, [this, id, outcome, result] { emit finished(id, outcome, result); },
+        Qt::QueuedConnection);
 }
 
 } // namespace lb
