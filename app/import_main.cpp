@@ -8,16 +8,22 @@
 
 #include "assimp_import.h"
 
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <string>
+#include <thread>
 
 #include <fcntl.h>
 #include <signal.h>
 #include <sys/prctl.h>
 #include <sys/resource.h>
 #include <unistd.h>
+
+#ifdef LIGHTBENCH_SANITIZE
+#include <sanitizer/asan_interface.h>
+#endif
 
 namespace {
 
@@ -43,6 +49,60 @@ void limit(int resource, rlim_t value)
         r.rlim_max = value + 2; // SIGXCPU first, SIGKILL two seconds later
     setrlimit(resource, &r);
 }
+
+#ifdef LIGHTBENCH_SANITIZE
+// AddressSanitizer reserves terabytes of address space for its shadow memory at start, so
+// RLIMIT_AS (and RLIMIT_DATA, which counts those private mappings too) stops it at its next
+// mapping ("Failed to mmap"). The sanitizer build bounds the resident memory instead: a thread
+// looks every few milliseconds and ends the helper with kExitOutOfMemory, which the window
+// turns into the same "out of memory" message; a size ASan refuses outright (an absurd count
+// read from a broken file) ends the same way. Resident memory here includes ASan's shadow and
+// quarantine, so this limit is the stricter of the two builds'.
+long residentKB()
+{
+    long pages = 0, resident = 0;
+    if (FILE *f = std::fopen("/proc/self/statm", "r")) {
+        if (std::fscanf(f, "%ld %ld", &pages, &resident) != 2)
+            resident = 0;
+        std::fclose(f);
+    }
+    return resident * (sysconf(_SC_PAGESIZE) / 1024);
+}
+
+void onSanitizerReport(const char *report)
+{
+    for (const char *kind : {"allocation-size-too-big", "out-of-memory", "rss-limit-exceeded"})
+        if (std::strstr(report, kind))
+            _exit(lb::wire::kExitOutOfMemory);
+}
+
+} // namespace
+
+// A crash inside Assimp on a broken file is what this process exists to contain: it stays a
+// plain crash (the window says the helper crashed), not a sanitizer report about a library
+// that is not ours. Our code's memory errors are still reported (they are no signals).
+extern "C" const char *__asan_default_options()
+{
+    return "handle_segv=0:handle_sigbus=0:handle_sigfpe=0:handle_sigill=0";
+}
+
+namespace {
+
+void limitMemory(long long megabytes)
+{
+    __asan_set_error_report_callback(onSanitizerReport);
+    std::thread([kilobytes = long(megabytes) * 1024] {
+        while (residentKB() <= kilobytes)
+            std::this_thread::sleep_for(std::chrono::milliseconds(2));
+        _exit(lb::wire::kExitOutOfMemory);
+    }).detach();
+}
+#else
+void limitMemory(long long megabytes)
+{
+    limit(RLIMIT_AS, rlim_t(megabytes) << 20);
+}
+#endif
 
 } // namespace
 
@@ -74,7 +134,7 @@ int main(int argc, char **argv)
     if (!path)
         return usage();
     if (memoryMB > 0)
-        limit(RLIMIT_AS, rlim_t(memoryMB) << 20);
+        limitMemory(memoryMB);
     if (seconds > 0)
         limit(RLIMIT_CPU, rlim_t(seconds));
     limit(RLIMIT_CORE, 0); // a crash costs a message, not a core file

@@ -30,9 +30,13 @@ ensure_packages() {
         "${missing[@]}" >&2
 }
 
+# What build() gives CMake besides the build type and the tests (scripts/test --sanitize adds).
+CMAKE_OPTIONS=()
+
 # build [TARGET]: configures once (tests included) and builds TARGET, or everything.
 build() {
-    cmake -S "$ROOT" -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=ON >/dev/null
+    cmake -S "$ROOT" -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=ON \
+        "${CMAKE_OPTIONS[@]}" >/dev/null
     cmake --build "$BUILD_DIR" -j"$(nproc)" ${1:+--target "$1"}
 }
 

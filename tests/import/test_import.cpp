@@ -147,7 +147,16 @@ private slots:
         QVERIFY(loaded > 250); // most of the corpus is valid
         QVERIFY(failed > 50);  // ...and some of it is broken on purpose
         QVERIFY2(selfPeakKB() < 1024 * 1024, "the workbench side grew past 1 GB");
-        QVERIFY2(childrenPeakKB() <= limits.memoryMB * 1024, "a helper outgrew its limit");
+#ifdef LIGHTBENCH_SANITIZE
+        // The sanitizer build's helper looks at its resident memory every 2 ms instead of
+        // having a hard limit (import_main.cpp): it may pass the limit by what it allocates
+        // in that time.
+        const long slackKB = 64 * 1024;
+#else
+        const long slackKB = 0;
+#endif
+        QVERIFY2(childrenPeakKB() <= limits.memoryMB * 1024 + slackKB,
+                 "a helper outgrew its limit");
     }
 
     void claimOf350BillionVerticesIsOutOfMemory()
