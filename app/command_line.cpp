@@ -1,5 +1,6 @@
 #include "command_line.h"
 
+#include "message_text.h"
 #include "shader_document.h"
 
 #include <QCommandLineParser>
@@ -18,6 +19,17 @@ struct BadOption
     QString message;
 };
 
+// What the user typed, as a message repeats it: a pasted megabyte or a pasted line break
+// stays one readable line.
+QString echoed(const QString &text, int max = 80)
+{
+    QString line = elidedForMessage(text, max);
+    for (QChar &c : line)
+        if (c.category() == QChar::Other_Control)
+            c = QChar(0xFFFD);
+    return line;
+}
+
 [[noreturn]] void fail(const QString &option, const QString &what)
 {
     throw BadOption{QString("--%1: %2").arg(option, what)};
@@ -27,13 +39,14 @@ std::vector<float> numbers(const QString &option, const QString &text, int count
 {
     const QStringList parts = text.split(',');
     if (parts.size() != count)
-        fail(option, QString("expected %1, got '%2'").arg(shape, text));
+        fail(option, QString("expected %1, got '%2'").arg(shape, echoed(text)));
     std::vector<float> values;
     for (const QString &part : parts) {
         bool ok = false;
         const double v = part.trimmed().toDouble(&ok);
         if (!ok || !std::isfinite(v))
-            fail(option, QString("'%1' is not a finite number (expected %2)").arg(part, shape));
+            fail(option,
+                 QString("'%1' is not a finite number (expected %2)").arg(echoed(part), shape));
         values.push_back(float(v));
     }
     return values;
@@ -67,7 +80,7 @@ bool onOff(const QString &option, const QString &text)
         return true;
     if (text == "off")
         return false;
-    fail(option, QString("expected on or off, got '%1'").arg(text));
+    fail(option, QString("expected on or off, got '%1'").arg(echoed(text)));
 }
 
 template <typename E>
@@ -76,7 +89,7 @@ E word(const QString &option, const QString &text, std::optional<E> (*parse)(con
 {
     if (const auto v = parse(text))
         return *v;
-    fail(option, QString("unknown value '%1' (expected %2)").arg(text, names.join('|')));
+    fail(option, QString("unknown value '%1' (expected %2)").arg(echoed(text), names.join('|')));
 }
 
 int integer(const QString &option, const QString &text, int lo, int hi)
@@ -84,7 +97,7 @@ int integer(const QString &option, const QString &text, int lo, int hi)
     bool ok = false;
     const int v = text.toInt(&ok);
     if (!ok)
-        fail(option, QString("'%1' is not a whole number").arg(text));
+        fail(option, QString("'%1' is not a whole number").arg(echoed(text)));
     if (v < lo || v > hi)
         fail(option, QString("%1 is outside %2 to %3").arg(v).arg(lo).arg(hi));
     return v;
@@ -174,7 +187,7 @@ void parseInto(const QCommandLineParser &parser, CommandLine &cl)
     if (given("size")) {
         const QStringList wh = value("size").split('x');
         if (wh.size() != 2)
-            fail("size", QString("expected WxH, got '%1'").arg(value("size")));
+            fail("size", QString("expected WxH, got '%1'").arg(echoed(value("size"))));
         cl.size = QSize(integer("size", wh[0], 1, 8192), integer("size", wh[1], 1, 8192));
     }
     if (given("render"))
@@ -182,7 +195,7 @@ void parseInto(const QCommandLineParser &parser, CommandLine &cl)
     if (given("probe")) {
         const QStringList xy = value("probe").split(',');
         if (xy.size() != 2)
-            fail("probe", QString("expected X,Y, got '%1'").arg(value("probe")));
+            fail("probe", QString("expected X,Y, got '%1'").arg(echoed(value("probe"))));
         cl.probe = QPoint(integer("probe", xy[0], 0, cl.size.width() - 1),
                           integer("probe", xy[1], 0, cl.size.height() - 1));
     }
@@ -410,7 +423,7 @@ CommandLineResult parseCommandLine(const QStringList &arguments)
     CommandLineResult result;
     if (!parser.parse(arguments)) {
         result.exitCode = 2;
-        result.message = parser.errorText() + " (see --help)";
+        result.message = echoed(parser.errorText(), 200) + " (see --help)";
         return result;
     }
     if (parser.isSet(help)) {
@@ -420,7 +433,7 @@ CommandLineResult parseCommandLine(const QStringList &arguments)
     if (!parser.positionalArguments().isEmpty()) {
         result.exitCode = 2;
         result.message = QString("unexpected argument '%1' (see --help)")
-                             .arg(parser.positionalArguments().first());
+                             .arg(echoed(parser.positionalArguments().first()));
         return result;
     }
     try {

@@ -1,5 +1,6 @@
 #include "import_process.h"
 
+#include "bounded_read.h"
 #include "message_text.h"
 
 #include <QBuffer>
@@ -13,6 +14,7 @@
 #include <algorithm>
 #include <csignal>
 #include <cstring>
+#include <limits>
 
 #include <unistd.h>
 
@@ -40,6 +42,10 @@ QString signalName(int signal)
     }
 }
 
+// An image file bigger than this is no texture (QImageReader's own limit on the decoded
+// image, 256 MB by default, catches the rest).
+const FileLimit kTextureFileLimit{"a texture file", 256ll << 20};
+
 // The diffuse texture a file names: as written, beside the model, or by its name alone
 // beside the model (files made on Windows carry their author's absolute paths).
 QString findTexture(const QString &modelPath, QString name)
@@ -48,7 +54,7 @@ QString findTexture(const QString &modelPath, QString name)
     const QDir dir = QFileInfo(modelPath).absoluteDir();
     for (const QString &candidate :
          {name, dir.filePath(name), dir.filePath(QFileInfo(name).fileName())})
-        if (!candidate.isEmpty() && QFileInfo(candidate).isFile())
+        if (!candidate.isEmpty() && QFileInfo::exists(candidate)) // a folder: a message
             return candidate;
     return {};
 }
@@ -145,22 +151,22 @@ void ImportProcess::start(const QString &path, const ImportLimits &limits)
         emit progress(fraction, stage);
     };
 
+    // Assimp reads most formats whole into memory: a file over the helper's memory limit
+    // could only end in "out of memory", after reading gigabytes.
+    const qint64 maxBytes =
+        limits.memoryMB > 0 ? limits.memoryMB << 20 : std::numeric_limits<qint64>::max();
     const QFileInfo info(path);
-    QString problem;
-    if (!info.exists())
-        problem = "no such file";
-    else if (!info.isFile())
-        problem = "not a file";
-    else if (!info.isReadable())
-        problem = "not readable (permissions)";
-    else if (info.size() == 0)
-        problem = "the file is empty";
+    QString problem = unreadableFile(path, {"a mesh file", maxBytes, "the import memory limit"});
+    if (problem.isEmpty() && !info.isReadable())
+        problem = m_path + ": not readable (permissions)";
+    else if (problem.isEmpty() && info.size() == 0)
+        problem = m_path + ": the file is empty";
     if (!problem.isEmpty()) {
         // Queued, so that callers always hear of the result after start() returned.
         QMetaObject::invokeMethod(
             this,
             [this, problem] {
-                finish({nullptr, m_path + ": " + problem, false});
+                finish({nullptr, problem, false});
             },
             Qt::QueuedConnection);
         return;
@@ -297,6 +303,8 @@ std::shared_ptr<MeshFile> ImportProcess::meshFile()
         const QString found = findTexture(m_path, m_reader->texturePath());
         if (found.isEmpty()) {
             file->textureProblem = "texture '" + m_reader->texturePath() + "' not found";
+        } else if (const QString why = unreadableFile(found, kTextureFileLimit); !why.isEmpty()) {
+            file->textureProblem = "texture " + why;
         } else {
             QImageReader reader(found);
             image = reader.read();

@@ -1,10 +1,10 @@
 #include "scene_file.h"
 
+#include "bounded_read.h"
+#include "dialect.h"
+#include "message_text.h"
 #include "safe_write.h"
 
-#include "dialect.h"
-
-#include <QFile>
 #include <QFileInfo>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -109,23 +109,13 @@ SceneFileRead parseSceneFile(const QByteArray &bytes, const QDir &dir, const QSt
 
 SceneFileRead readSceneFile(const QString &path)
 {
-    SceneFileRead read;
-    const QFileInfo info(path);
-    QFile f(path);
-    if (!info.exists())
-        read.error = QString("%1: no such file").arg(path);
-    else if (!info.isFile())
-        read.error = QString("%1: not a file").arg(path);
-    else if (info.size() > kMaxSceneFileBytes)
-        read.error = QString("%1: %2 MB is too large for a scene file (at most %3 MB)")
-                         .arg(path)
-                         .arg(info.size() / (1024 * 1024))
-                         .arg(kMaxSceneFileBytes / (1024 * 1024));
-    else if (!f.open(QIODevice::ReadOnly))
-        read.error = QString("%1: %2").arg(path, f.errorString());
-    else
-        read = parseSceneFile(f.readAll(), info.absoluteDir(), path);
-    return read;
+    const BoundedRead bytes = readBounded(path, {"a scene file", kMaxSceneFileBytes});
+    if (!bytes.error.isEmpty()) {
+        SceneFileRead read;
+        read.error = bytes.error;
+        return read;
+    }
+    return parseSceneFile(bytes.bytes, QFileInfo(path).absoluteDir(), elidedForMessage(path, 300));
 }
 
 QString writeSceneFile(const QString &path, const SceneFile &file)

@@ -1,5 +1,6 @@
 #include "shader_document.h"
 
+#include "bounded_read.h"
 #include "dialect.h"
 #include "presets.h"
 #include "safe_write.h"
@@ -13,26 +14,12 @@ namespace lb {
 
 ShaderFileRead readShaderFile(const QString &path)
 {
-    ShaderFileRead r;
-    const QFileInfo info(path);
-    QFile f(path);
     // UTF-8 takes at least a byte a character: a longer file is over the characters' limit.
-    const qint64 limit = kMaxSourceCharacters;
-    if (!info.exists())
-        r.error = QString("%1: no such file").arg(path);
-    else if (!info.isFile())
-        r.error = QString("%1: not a regular file").arg(path);
-    else if (info.size() > limit)
-        r.error = QString("%1: %2 KiB is more than a shader may be (%3 KiB)")
-                      .arg(path)
-                      .arg(info.size() / 1024)
-                      .arg(limit / 1024);
-    else if (!f.open(QIODevice::ReadOnly))
-        r.error = QString("%1: %2").arg(path, f.errorString());
-    else if (const QByteArray bytes = f.read(limit + 1); bytes.size() > limit) // it grew
-        r.error = QString("%1: more than a shader may be (%2 KiB)").arg(path).arg(limit / 1024);
-    else
-        r.text = QString::fromUtf8(bytes);
+    const BoundedRead read = readBounded(path, {"a shader", kMaxSourceCharacters});
+    ShaderFileRead r;
+    r.error = read.error;
+    if (r.error.isEmpty())
+        r.text = QString::fromUtf8(read.bytes);
     return r;
 }
 

@@ -16,6 +16,7 @@
 #include <csignal>
 
 #include <sys/resource.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 using namespace lb;
@@ -213,7 +214,7 @@ private slots:
         SceneDocument document;
         ObjectLoader loader(&document);
         QVERIFY(load(loader, m_dir.filePath("nowhere.obj")).message.contains("no such file"));
-        QVERIFY(load(loader, m_dir.path()).message.contains("not a file"));
+        QVERIFY(load(loader, m_dir.path()).message.contains("not a regular file"));
     }
 
     void notANumberPositionsLoadWithARemark()
@@ -264,6 +265,41 @@ private slots:
         const Outcome again = load(loader, m_dir.filePath("quad.obj"));
         QVERIFY(again.ok);
         QVERIFY2(again.message.contains("green.png' not found"), qPrintable(again.message));
+
+        // Not read at all (issue 13: reads bounded before reading): a FIFO, which would block
+        // the window's read for ever, and a file over the texture limit. The mesh still loads.
+        QVERIFY(mkfifo(QFile::encodeName(m_dir.filePath("green.png")).constData(), 0600) == 0);
+        const Outcome fifo = load(loader, m_dir.filePath("quad.obj"));
+        QVERIFY(fifo.ok);
+        QVERIFY2(fifo.message.contains("green.png: not a regular file"), qPrintable(fifo.message));
+        QFile::remove(m_dir.filePath("green.png"));
+        QVERIFY(QFile(m_dir.filePath("green.png")).open(QIODevice::WriteOnly));
+        QVERIFY(QFile(m_dir.filePath("green.png")).resize(300ll << 20)); // sparse: no disk used
+        const Outcome huge = load(loader, m_dir.filePath("quad.obj"));
+        QVERIFY(huge.ok);
+        QVERIFY2(
+            huge.message.contains("green.png: 300 MB is more than a texture file may be (256 MB)"),
+            qPrintable(huge.message));
+        QFile::remove(m_dir.filePath("green.png"));
+    }
+
+    void meshFilesAreCheckedBeforeTheHelperReads()
+    {
+        // Over the import memory limit (Assimp reads most formats whole): refused by its size,
+        // no helper started. A FIFO is no mesh file either.
+        const QString big = m_dir.filePath("big.ply");
+        QVERIFY(QFile(big).open(QIODevice::WriteOnly));
+        QVERIFY(QFile(big).resize(80ll << 20));
+        ImportLimits limits;
+        limits.memoryMB = 64;
+        const ImportResult r = ImportProcess::import(big, limits);
+        QVERIFY2(r.error == big + ": 80 MB is more than a mesh file may be (64 MB, the import "
+                                  "memory limit)",
+                 qPrintable(r.error));
+        const QString fifo = m_dir.filePath("pipe.obj");
+        QVERIFY(mkfifo(QFile::encodeName(fifo).constData(), 0600) == 0);
+        QVERIFY2(ImportProcess::import(fifo, limits).error.contains("pipe.obj: not a regular file"),
+                 qPrintable(ImportProcess::import(fifo, limits).error));
     }
 
     void normalsSwitchWithoutReloading()

@@ -244,7 +244,8 @@ private slots:
     void missingFilesAndFoldersAreNamed()
     {
         QCOMPARE(readSceneFile("/nowhere/a.json").error, QString("/nowhere/a.json: no such file"));
-        QCOMPARE(readSceneFile("/tmp").error, QString("/tmp: not a file"));
+        QCOMPARE(readSceneFile("/tmp").error,
+                 QString("/tmp: not a regular file (a folder, a device or a pipe)"));
     }
 
     void newerAndUnknownPartsAreListed()

@@ -1,0 +1,66 @@
+#include "bounded_read.h"
+
+#include "message_text.h"
+
+#include <QFile>
+#include <QFileInfo>
+
+namespace lb {
+
+namespace {
+
+QString shown(const QString &path)
+{
+    return elidedForMessage(path, 300);
+}
+
+} // namespace
+
+QString sizeForMessage(qint64 bytes)
+{
+    if (bytes >= 10ll << 20)
+        return QString("%1 MB").arg(bytes >> 20);
+    return QString("%1 KiB").arg(bytes >> 10);
+}
+
+static QString limitText(const FileLimit &limit)
+{
+    const QString size = sizeForMessage(limit.bytes);
+    return limit.why ? size + ", " + QString::fromLatin1(limit.why) : size;
+}
+
+QString unreadableFile(const QString &path, const FileLimit &limit)
+{
+    const QFileInfo info(path);
+    if (!info.exists())
+        return QString("%1: no such file").arg(shown(path));
+    if (!info.isFile())
+        return QString("%1: not a regular file (a folder, a device or a pipe)").arg(shown(path));
+    if (info.size() > limit.bytes)
+        return QString("%1: %2 is more than %3 may be (%4)")
+            .arg(shown(path), sizeForMessage(info.size()), QString::fromLatin1(limit.kind),
+                 limitText(limit));
+    return {};
+}
+
+BoundedRead readBounded(const QString &path, const FileLimit &limit)
+{
+    BoundedRead r;
+    r.error = unreadableFile(path, limit);
+    if (!r.error.isEmpty())
+        return r;
+    QFile f(path);
+    if (!f.open(QIODevice::ReadOnly)) {
+        r.error = QString("%1: %2").arg(shown(path), f.errorString());
+        return r;
+    }
+    r.bytes = f.read(limit.bytes + 1);
+    if (r.bytes.size() > limit.bytes) { // it grew since the check
+        r.bytes.clear();
+        r.error = QString("%1: more than %2 may be (%3)")
+                      .arg(shown(path), QString::fromLatin1(limit.kind), limitText(limit));
+    }
+    return r;
+}
+
+} // namespace lb

@@ -1,0 +1,34 @@
+#pragma once
+// Every file the user names (shaders, scenes, textures, meshes) is checked before a byte of it
+// is read: /dev/zero, a FIFO or a folder is no file, and a file over its kind's limit is
+// refused by its size instead of being read until memory runs out. Messages name the path
+// (elided when absurdly long), what is wrong, and the limit.
+
+#include <QByteArray>
+#include <QString>
+
+namespace lb {
+
+struct FileLimit
+{
+    const char *kind; // "a shader", "a scene file", ...: "2048 KiB is more than a shader may be"
+    qint64 bytes;
+    const char *why = nullptr; // after the limit: "(2048 MB, the import memory limit)"
+};
+
+// Empty when `path` is a regular file within the limit, else "PATH: why".
+QString unreadableFile(const QString &path, const FileLimit &limit);
+
+struct BoundedRead
+{
+    QByteArray bytes;
+    QString error; // "PATH: why"; empty when `bytes` is the file
+};
+
+// Checks first, then reads at most limit + 1 bytes (a file that grew meanwhile is refused).
+BoundedRead readBounded(const QString &path, const FileLimit &limit);
+
+// "2.5 MB", "640 KiB": a size as a message says it.
+QString sizeForMessage(qint64 bytes);
+
+} // namespace lb
