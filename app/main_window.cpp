@@ -10,6 +10,7 @@
 #include "presets.h"
 #include "probe_panel.h"
 #include "scene_actions.h"
+#include "settings_autosave.h"
 #include "shading_panel.h"
 #include "status_line.h"
 #include "uniform_panel.h"
@@ -75,6 +76,8 @@ MainWindow::MainWindow(QSettings &settings, QWidget *parent)
 
     // The status line's fixed places exist before anything reports to them.
     m_status = new StatusLine(statusBar());
+    m_autosave = new SettingsAutosave(
+        m_settings, m_status, [this] { saveSettings(); }, this);
     statusBar()->addPermanentWidget(m_status, 1);
     connect(m_viewport, &Viewport::glInfo, this, [this](const QString &info) {
         m_glInfo = info;
@@ -88,8 +91,7 @@ MainWindow::MainWindow(QSettings &settings, QWidget *parent)
         syncShadingWithProgram();
         updateStatus();
         updateTitle();
-        if (!m_saveTimer.isActive())
-            m_saveTimer.start();
+        m_autosave->schedule();
     });
 
     m_meshActions = new MeshActions(this, &m_document, m_loader, m_settings, m_status);
@@ -125,9 +127,6 @@ MainWindow::MainWindow(QSettings &settings, QWidget *parent)
             m_widthsPending = false; // the user's own dock sizes
     }
 
-    m_saveTimer.setSingleShot(true);
-    m_saveTimer.setInterval(500);
-    connect(&m_saveTimer, &QTimer::timeout, this, &MainWindow::saveSettings);
     connect(&m_document, &SceneDocument::changed, this, [this](SceneParts parts) {
         updateStatus();
         updateTitle();
@@ -135,10 +134,7 @@ MainWindow::MainWindow(QSettings &settings, QWidget *parent)
             m_shaders.followShading(m_document.scene().shading.shading == Shading::Gouraud);
             syncShadingWithProgram(); // a reset or an option cannot unfix a fixed model
         }
-        // Not restarted on every change: auto-rotate edits the scene 60 times a second,
-        // and a timer restarted that often would never fire.
-        if (!m_saveTimer.isActive())
-            m_saveTimer.start();
+        m_autosave->schedule();
     });
     syncShadingWithProgram();
     updateStatus();
@@ -259,7 +255,7 @@ void MainWindow::saveSettings()
     m_settings.setValue(kScreenKey, m_available.size());
     m_settings.setValue(kLayoutKey, int(m_presentation ? m_normalLayout : m_layout));
     m_editor->saveState(m_settings);
-    m_settings.sync();
+    m_autosave->sync();
 }
 
 void MainWindow::closeEvent(QCloseEvent *event)

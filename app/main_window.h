@@ -11,7 +11,6 @@
 #include "window_layout.h"
 
 #include <QMainWindow>
-#include <QTimer>
 
 #include <vector>
 
@@ -29,6 +28,7 @@ class ObjectLoader;
 class ObjectPanel;
 class ProbePanel;
 class SceneActions;
+class SettingsAutosave;
 class ShadingPanel;
 class StatusLine;
 class UniformPanel;
@@ -55,6 +55,7 @@ public:
     SceneActions *sceneActions() const { return m_sceneActions; }
     ProbePanel *probePanel() const { return m_probe; }
     StatusLine *statusLine() const { return m_status; }
+    SettingsAutosave *autosave() const { return m_autosave; }
     // The docks of the panels (Light, Material, Shading, Object, Uniforms, Probe) and the
     // editor's.
     const std::vector<QDockWidget *> &panelDocks() const { return m_panelDocks; }
@@ -128,7 +129,7 @@ private:
     QRect m_available; // the screen area the window was fitted to
     QAction *m_presentationAction = nullptr;
     QActionGroup *m_scaleGroup = nullptr;
-    QTimer m_saveTimer; // saves the scene shortly after each change, so a kill loses little
+    SettingsAutosave *m_autosave; // saves shortly after each change, so a kill loses little
 };
 
 } // namespace lb

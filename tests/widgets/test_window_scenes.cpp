@@ -182,6 +182,40 @@ private slots:
         QTest::keyClick(m_window.get(), Qt::Key_Escape);
         QVERIFY(!probe->isActive());
     }
+
+    // Issue 13: a full disk or a read-only config lost edits silently. Here a regular file
+    // stands where the settings folder would be made (root may write anywhere else).
+    void failedAutosaveIsSaidOnceAndRetried()
+    {
+        const QString blocker = m_dir.filePath("blocked");
+        QVERIFY(QFile(blocker).open(QIODevice::WriteOnly));
+        const QString path = blocker + "/settings.ini";
+        QSettings settings(path, QSettings::IniFormat);
+        MainWindow window(settings);
+        window.show();
+        window.document().edit([](Scene &s) { s.material.shininess = 77.0f; });
+        QTRY_VERIFY_WITH_TIMEOUT(window.autosave()->isFailing(), 3000);
+        const QString said = window.statusLine()->message();
+        QVERIFY2(said.contains("not being kept") && said.contains(path), qPrintable(said));
+
+        // Said once: a later save that fails too leaves the status line to other messages.
+        window.statusLine()->showMessage("something else", 0);
+        window.document().edit([](Scene &s) { s.material.shininess = 78.0f; });
+        QTest::qWait(SettingsAutosave::kDelayMs * 3);
+        QCOMPARE(window.statusLine()->message(), QString("something else"));
+        QVERIFY(window.autosave()->isFailing());
+
+        // The way cleared, the retry keeps the work without another edit, and says so.
+        QVERIFY(QFile::remove(blocker));
+        QTRY_VERIFY_WITH_TIMEOUT(!window.autosave()->isFailing(),
+                                 SettingsAutosave::kRetryMs + 3000);
+        QVERIFY2(window.statusLine()->message().contains("kept again"),
+                 qPrintable(window.statusLine()->message()));
+        const QSettings disk(path, QSettings::IniFormat);
+        const Scene kept =
+            Scene::fromJson(QJsonDocument::fromJson(disk.value("scene").toByteArray()).object());
+        QCOMPARE(kept.material.shininess, 78.0f);
+    }
 };
 
 LB_WINDOW_TEST_MAIN(TestWindowScenes)

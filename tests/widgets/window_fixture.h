@@ -15,6 +15,7 @@
 #include "probe_panel.h"
 #include "recent_files.h"
 #include "scene_actions.h"
+#include "settings_autosave.h"
 #include "shader_editor.h"
 #include "shading_panel.h"
 #include "status_line.h"

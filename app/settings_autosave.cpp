@@ -1,0 +1,84 @@
+#include "settings_autosave.h"
+
+#include "message_text.h"
+#include "status_line.h"
+
+#include <QFile>
+#include <QSettings>
+
+namespace lb {
+
+namespace {
+
+// Counts the saves, so that reading the file back tells this save from an older one.
+constexpr const char *kSerialKey = "autosave/serial";
+constexpr const char *kSerialName = "serial"; // its line in the INI file: serial=N
+
+QString why(QSettings::Status status)
+{
+    return status == QSettings::FormatError ? QObject::tr("it is no settings file")
+                                            : QObject::tr("it cannot be written");
+}
+
+} // namespace
+
+SettingsAutosave::SettingsAutosave(QSettings &settings, StatusLine *status,
+                                   std::function<void()> write, QObject *parent)
+    : QObject(parent), m_settings(settings), m_status(status), m_write(std::move(write))
+{
+    m_serial = m_settings.value(kSerialKey, 0).toLongLong();
+    for (QTimer *t : {&m_delay, &m_retry})
+        t->setSingleShot(true);
+    m_delay.setInterval(kDelayMs);
+    m_retry.setInterval(kRetryMs);
+    connect(&m_delay, &QTimer::timeout, this, [this] {
+        m_write();
+        sync();
+    });
+    connect(&m_retry, &QTimer::timeout, this, &SettingsAutosave::sync);
+}
+
+void SettingsAutosave::schedule()
+{
+    if (!m_delay.isActive())
+        m_delay.start();
+}
+
+void SettingsAutosave::sync()
+{
+    m_settings.setValue(kSerialKey, ++m_serial);
+    m_settings.sync();
+    const QString file = elidedForMessage(m_settings.fileName(), 120);
+    if (reachedTheDisk()) {
+        if (m_failing)
+            m_status->showMessage(tr("Your work is kept again in %1").arg(file));
+        m_failing = false;
+        m_retry.stop();
+        return;
+    }
+    if (!m_failing)
+        m_status->showMessage(tr("Your work is not being kept: %1 (%2); trying again every %3 s")
+                                  .arg(file, why(m_settings.status()))
+                                  .arg(kRetryMs / 1000),
+                              0);
+    m_failing = true;
+    m_retry.start();
+}
+
+bool SettingsAutosave::reachedTheDisk()
+{
+    if (m_settings.status() == QSettings::NoError)
+        return true;
+    // Read as bytes: a second QSettings on the same file would answer from the first one's
+    // cache in this process, not from the disk.
+    QFile file(m_settings.fileName());
+    if (!file.open(QIODevice::ReadOnly))
+        return false;
+    const QByteArray line = QByteArray(kSerialName) + '=' + QByteArray::number(m_serial);
+    while (!file.atEnd())
+        if (file.readLine().trimmed() == line)
+            return true;
+    return false;
+}
+
+} // namespace lb

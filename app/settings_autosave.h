@@ -1,0 +1,49 @@
+#pragma once
+// The window's autosave (scene, layout, editor text) that says when it fails. A change asks for
+// a save within half a second; a save that does not reach the disk (a read-only or full
+// disk, a settings path that cannot be made) is said once in the status line and retried every
+// few seconds until it does, then the status line says the work is kept again.
+// QSettings keeps the first error it met for good, so once a save failed, each later one is
+// verified by reading the settings file back.
+
+#include <QObject>
+#include <QTimer>
+
+#include <functional>
+
+class QSettings;
+
+namespace lb {
+
+class StatusLine;
+
+class SettingsAutosave : public QObject
+{
+    Q_OBJECT
+public:
+    static constexpr int kDelayMs = 500;
+    static constexpr int kRetryMs = 5000;
+
+    // `write` puts the values into `settings`; sync() then takes them to the disk.
+    SettingsAutosave(QSettings &settings, StatusLine *status, std::function<void()> write,
+                     QObject *parent = nullptr);
+
+    // A change: saved within kDelayMs. Not restarted by later changes (auto-rotation edits
+    // the scene 60 times a second, and a timer restarted that often would never fire).
+    void schedule();
+    // Writes the values to the disk now and checks that they got there.
+    void sync();
+    bool isFailing() const { return m_failing; }
+
+private:
+    bool reachedTheDisk();
+
+    QSettings &m_settings;
+    StatusLine *m_status;
+    std::function<void()> m_write;
+    QTimer m_delay, m_retry;
+    qint64 m_serial = 0;
+    bool m_failing = false;
+};
+
+} // namespace lb
