@@ -2,9 +2,25 @@
 
 #include "program.h"
 
+#include <algorithm>
 #include <vector>
 
 namespace lb {
+
+namespace {
+
+constexpr int kNormalLineSizes[2] = {3, 4}; // position, normal: floats a vertex
+
+} // namespace
+
+std::vector<DrawRange> drawRanges(std::uint64_t total, std::uint64_t most, std::uint64_t unit)
+{
+    most = std::max(unit, std::min(most, GpuMesh::kMaxPerDraw) / unit * unit);
+    std::vector<DrawRange> ranges;
+    for (std::uint64_t first = 0; first < total; first += most)
+        ranges.push_back({first, GLsizei(std::min(most, total - first))});
+    return ranges;
+}
 
 void GpuMesh::upload(QOpenGLExtraFunctions &gl, const Mesh &mesh)
 {
@@ -17,11 +33,11 @@ void GpuMesh::upload(QOpenGLExtraFunctions &gl, const Mesh &mesh)
     const std::size_t n = mesh.vertexCount();
     m_colors = mesh.colors.size() == n;
     m_uvs = mesh.uvs.size() == n;
-    m_vertexCount = GLsizei(n);
+    m_vertexCount = n;
     const void *data[4] = {mesh.positions.data(), normals.data(), mesh.colors.data(),
                            mesh.uvs.data()};
     const bool present[4] = {true, normals.size() == n, m_colors, m_uvs};
-    const int sizes[4] = {3, 4, 3, 2};
+    const int sizes[4] = {kNormalLineSizes[0], kNormalLineSizes[1], 3, 2};
     const GLuint locations[4] = {kPositionSlot, kNormalSlot, kColorSlot, kTexCoordSlot};
     for (GlVertexArray *vao : {&m_triangles, &m_normalLines})
         if (!*vao)
@@ -55,7 +71,7 @@ void GpuMesh::upload(QOpenGLExtraFunctions &gl, const Mesh &mesh)
     gl.glBufferData(GL_ELEMENT_ARRAY_BUFFER,
                     GLsizeiptr(mesh.indices.size() * sizeof(std::uint32_t)), mesh.indices.data(),
                     GL_STATIC_DRAW);
-    m_indexCount = GLsizei(mesh.indices.size());
+    m_indexCount = mesh.indices.size();
     gl.glBindVertexArray(0);
     gl.glBindBuffer(GL_ARRAY_BUFFER, 0);
 }
@@ -79,7 +95,9 @@ void GpuMesh::draw(QOpenGLExtraFunctions &gl) const
     if (!m_uvs)
         gl.glVertexAttrib4f(kTexCoordSlot, 0.0f, 0.0f, 0.0f, 1.0f);
     gl.glBindVertexArray(m_triangles.id());
-    gl.glDrawElements(GL_TRIANGLES, m_indexCount, GL_UNSIGNED_INT, nullptr);
+    for (const DrawRange &r : drawRanges(m_indexCount, m_maxPerDraw, 3))
+        gl.glDrawElements(GL_TRIANGLES, r.count, GL_UNSIGNED_INT,
+                          reinterpret_cast<const void *>(r.first * sizeof(std::uint32_t)));
     gl.glBindVertexArray(0);
 }
 
@@ -88,8 +106,27 @@ void GpuMesh::drawNormalLines(QOpenGLExtraFunctions &gl) const
     if (!hasVertices())
         return;
     gl.glBindVertexArray(m_normalLines.id());
-    gl.glDrawArraysInstanced(GL_LINES, 0, 2, m_vertexCount);
+    const std::vector<DrawRange> ranges = drawRanges(m_vertexCount, m_maxPerDraw, 1);
+    for (const DrawRange &r : ranges) {
+        if (ranges.size() > 1) // instances count from 0: the arrays start at the piece
+            pointNormalLinesAt(gl, r.first);
+        gl.glDrawArraysInstanced(GL_LINES, 0, 2, r.count);
+    }
+    if (ranges.size() > 1)
+        pointNormalLinesAt(gl, 0);
     gl.glBindVertexArray(0);
+}
+
+void GpuMesh::pointNormalLinesAt(QOpenGLExtraFunctions &gl, std::uint64_t first) const
+{
+    const GLuint locations[2] = {kPositionSlot, kNormalSlot};
+    for (std::size_t i = 0; i < 2; ++i) {
+        gl.glBindBuffer(GL_ARRAY_BUFFER, m_attributes[i].id());
+        const std::uint64_t offset = first * std::uint64_t(kNormalLineSizes[i]) * sizeof(float);
+        gl.glVertexAttribPointer(locations[i], kNormalLineSizes[i], GL_FLOAT, GL_FALSE, 0,
+                                 reinterpret_cast<const void *>(offset));
+    }
+    gl.glBindBuffer(GL_ARRAY_BUFFER, 0);
 }
 
 } // namespace lb

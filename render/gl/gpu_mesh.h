@@ -9,12 +9,27 @@
 #include <QOpenGLExtraFunctions>
 
 #include <array>
+#include <cstdint>
+#include <vector>
 
 namespace lb {
+
+// A piece of a draw: GL counts are GLsizei (int), and a mesh may hold up to 2^32 indices.
+struct DrawRange
+{
+    std::uint64_t first = 0;
+    GLsizei count = 0;
+};
+// `total` items in pieces of at most `most` (a multiple of `unit`, rounded down, at least one
+// unit), in order.
+std::vector<DrawRange> drawRanges(std::uint64_t total, std::uint64_t most, std::uint64_t unit);
 
 class GpuMesh
 {
 public:
+    // The most indices (and normal lines) one draw call takes; more are drawn in several calls.
+    static constexpr std::uint64_t kMaxPerDraw = 0x7ffffffe; // the largest GLsizei, times 3
+
     // Replaces what the buffers hold with `mesh` (objects are made on the first upload).
     void upload(QOpenGLExtraFunctions &gl, const Mesh &mesh);
     // Deletes the GL objects; call with the context current.
@@ -28,13 +43,20 @@ public:
 
     bool hasTriangles() const { return m_indexCount > 0; }
     bool hasVertices() const { return m_vertexCount > 0; }
+    // Fewer per call than GL allows: the same pixels, in more calls (tests draw big meshes'
+    // pieces with small ones this way).
+    void setMaxPerDraw(std::uint64_t most) { m_maxPerDraw = most; }
 
 private:
+    // Points the normal lines' position and normal arrays at vertex `first`.
+    void pointNormalLinesAt(QOpenGLExtraFunctions &gl, std::uint64_t first) const;
+
     GlVertexArray m_triangles, m_normalLines;
     std::array<GlBuffer, 4> m_attributes; // position, normal, colour, texture coordinate
     GlBuffer m_indices;
-    GLsizei m_indexCount = 0;
-    GLsizei m_vertexCount = 0;
+    std::uint64_t m_indexCount = 0;
+    std::uint64_t m_vertexCount = 0;
+    std::uint64_t m_maxPerDraw = kMaxPerDraw;
     bool m_colors = false, m_uvs = false; // absent arrays read as white and (0, 0)
 };
 

@@ -89,6 +89,8 @@ public:
     // draws only the background and the light.
     void setObject(std::shared_ptr<const Mesh> mesh, std::shared_ptr<const Texture> texture);
     const Mesh *objectMesh() const { return m_objectMesh.get(); }
+    // The most indices one draw call of the object takes (GpuMesh::setMaxPerDraw).
+    void setMaxPerDraw(std::uint64_t most) { m_object.setMaxPerDraw(most); }
     const std::shared_ptr<const Mesh> &sharedObjectMesh() const { return m_objectMesh; }
     const Texture &texture() const { return m_objectTexture ? *m_objectTexture : m_checker; }
 

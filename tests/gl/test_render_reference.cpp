@@ -1,6 +1,7 @@
 // Frames rendered offscreen by the built-in shaders, pixel by pixel against the CPU reference
 // (render/lighting through render/probe). A failing case writes its frame to
 // build/tests/test-output/.
+#include "gpu_mesh.h"
 #include "reference_compare.h"
 
 #include <QGuiApplication>
@@ -157,6 +158,30 @@ private slots:
         QCOMPARE(largestDifference(a, m_offscreen.render(two)), 0);
         two.lights[1].enabled = true;
         QVERIFY(largestDifference(a, m_offscreen.render(two)) > 20); // and on, it shows
+    }
+
+    // GL's counts are 32-bit ints and a mesh may hold 2^32 indices (issue 13): a mesh over the
+    // count of one draw call is drawn in pieces. Pieces of one triangle, and of sizes that are
+    // no multiple of 3 (taken down to whole triangles), draw the same pixels, normal lines
+    // included.
+    void meshesDrawnInPiecesDrawTheSamePixels()
+    {
+        Scene s = testScene();
+        s.object.showNormals = true;
+        const QImage whole = m_offscreen.render(s);
+        for (std::uint64_t most : {3, 100, 1000}) {
+            m_offscreen.renderer().setMaxPerDraw(most);
+            const QImage pieces = m_offscreen.render(s);
+            m_offscreen.renderer().setMaxPerDraw(GpuMesh::kMaxPerDraw);
+            QCOMPARE(largestDifference(whole, pieces), 0);
+        }
+        QCOMPARE(drawRanges(10, 3, 3).size(), std::size_t(4));
+        QCOMPARE(drawRanges(10, 3, 3).back().first, std::uint64_t(9));
+        QCOMPARE(drawRanges(10, 3, 3).back().count, GLsizei(1));
+        const std::vector<DrawRange> big = drawRanges(0xffffffffull, GpuMesh::kMaxPerDraw, 3);
+        QCOMPARE(big.size(), std::size_t(3));
+        QCOMPARE(big[0].count, GLsizei(0x7ffffffe));
+        QCOMPARE(big[2].first + std::uint64_t(big[2].count), 0xffffffffull);
     }
 
     void gouraudAndPhongDifferAtTheHighlight()
