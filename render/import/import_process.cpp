@@ -61,13 +61,26 @@ QString findTexture(const QString &modelPath, QString name)
 
 } // namespace
 
-qint64 ImportLimits::defaultMemoryMB()
+qint64 ImportLimits::machineMemoryMB()
 {
     const long pages = sysconf(_SC_PHYS_PAGES);
     const long pageSize = sysconf(_SC_PAGE_SIZE);
     if (pages <= 0 || pageSize <= 0)
-        return 4096;
-    return qint64(pages) * qint64(pageSize) / 2 / (1 << 20);
+        return 8192;
+    return qint64(pages) * qint64(pageSize) / (1 << 20);
+}
+
+qint64 ImportLimits::defaultMemoryMB()
+{
+    return machineMemoryMB() / 2;
+}
+
+std::uint64_t ImportLimits::meshByteCap() const
+{
+    qint64 mb = machineMemoryMB();
+    if (memoryMB > 0)
+        mb = std::min(mb, memoryMB);
+    return std::uint64_t(mb) << 20;
 }
 
 ImportProcess::ImportProcess(QObject *parent) : QObject(parent)
@@ -144,9 +157,8 @@ void ImportProcess::start(const QString &path, const ImportLimits &limits)
     m_stderr.clear();
     m_clock.start();
     m_reader = std::make_unique<WireReader>();
-    // What the helper may allocate bounds what it may send.
-    if (limits.memoryMB > 0)
-        m_reader->setMaxMeshBytes(std::uint64_t(limits.memoryMB) << 20);
+    // What the helper may allocate bounds what it may send; the machine bounds both.
+    m_reader->setMaxMeshBytes(limits.meshByteCap());
     m_reader->onProgress = [this](double fraction, const QString &stage) {
         emit progress(fraction, stage);
     };

@@ -12,6 +12,7 @@
 #include <QProcess>
 #include <QTimer>
 
+#include <cstdint>
 #include <memory>
 
 namespace lb {
@@ -21,6 +22,10 @@ struct ImportLimits
     qint64 memoryMB = defaultMemoryMB();
     int seconds = 300;
     static qint64 defaultMemoryMB(); // half of the machine's physical memory
+    static qint64 machineMemoryMB(); // the machine's physical memory
+    // The most the window takes for one mesh the helper announces: what the helper may have
+    // made (its memory limit), and never more than the machine has, whatever the limit says.
+    std::uint64_t meshByteCap() const;
 };
 
 struct ImportResult

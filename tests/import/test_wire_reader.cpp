@@ -1,6 +1,7 @@
 // The workbench's side of the import stream: whatever the helper writes (a whole mesh,
 // a stream cut anywhere, flipped bytes, lying sizes), the reader gives a checked mesh or an
 // error, never a crash or an index past the last vertex.
+#include "import_process.h"
 #include "wire.h"
 #include "wire_reader.h"
 
@@ -161,6 +162,18 @@ private slots:
         QVERIFY(!limited.feed(s.constData(), s.size()));
         QVERIFY2(limited.error().contains("more than the helper may use (512 MB)"),
                  qPrintable(limited.error()));
+
+        // The window's cap: the helper's limit, and never more than the machine has, even
+        // with no limit or one past the machine's memory (Preferences, --import-memory-limit).
+        const std::uint64_t machine = std::uint64_t(ImportLimits::machineMemoryMB()) << 20;
+        QVERIFY(machine > 0);
+        ImportLimits limits;
+        limits.memoryMB = 512;
+        QCOMPARE(limits.meshByteCap(), std::uint64_t(512) << 20);
+        for (qint64 mb : {qint64(0), ImportLimits::machineMemoryMB() * 4}) {
+            limits.memoryMB = mb;
+            QCOMPARE(limits.meshByteCap(), machine);
+        }
     }
 
     void refusesOtherStreams()
