@@ -7,9 +7,10 @@ namespace lb {
 
 namespace {
 
-// Meshes up to this size are built on the GUI thread: a few milliseconds, and the new mesh
-// is on screen in the same frame.
-constexpr std::size_t kBuildInlineTriangles = 100'000;
+// Builds of up to this much work (objectMeshWork: triangles whose normals are generated) run
+// on the GUI thread: 10-50 ms at most, whatever the mesh, and the new mesh is on screen in the
+// same frame. More goes to the worker, where Cancel stops it.
+constexpr std::size_t kBuildInlineWork = 100'000;
 
 } // namespace
 
@@ -145,9 +146,7 @@ void ObjectLoader::startBuild(const ObjectSettings &object, std::shared_ptr<cons
     job->key = objectMeshKey(object, job->file.get());
     job->commit = commit;
     m_job = job;
-    const std::size_t triangles = job->file ? job->file->mesh->triangleCount()
-                                            : shapeTriangleCount(object.shape, object.tessellation);
-    if (triangles <= kBuildInlineTriangles) {
+    if (objectMeshWork(job->object, job->file.get()) <= kBuildInlineWork) {
         job->mesh = buildObjectMesh(job->object, job->file.get());
         finishBuild(job);
         return;

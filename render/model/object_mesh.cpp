@@ -32,6 +32,15 @@ ObjectMeshKey objectMeshKey(const ObjectSettings &object, const MeshFile *file)
     return key;
 }
 
+std::size_t objectMeshWork(const ObjectSettings &object, const MeshFile *file)
+{
+    if (!file)
+        return shapeTriangleCount(object.shape, object.tessellation);
+    if (object.normals == NormalMode::File && !file->mesh->normals.empty())
+        return 0;
+    return file->mesh->triangleCount();
+}
+
 std::shared_ptr<const Mesh> buildObjectMesh(const ObjectSettings &object, const MeshFile *file,
                                             const std::atomic_bool *cancel)
 {
