@@ -3,6 +3,7 @@
 float x, y, z (and nx, ny, nz with --normals) per vertex, uchar-count int faces.
 Usage: make_ply.py OUT.ply [TRIANGLES] [--normals]"""
 import math
+import os
 import struct
 import sys
 
@@ -27,7 +28,10 @@ def main():
         f"element face {face_count}\nproperty list uchar int vertex_indices\nend_header\n"
     )
     vfmt = struct.Struct("<6f" if normals else "<3f")
-    with open(out, "wb") as f:
+    # Written beside the target and renamed when complete: bench/mesh.sh generates a file only
+    # when it is missing, so a run killed mid-write must not leave half a file under its name.
+    part = out + ".part"
+    with open(part, "wb") as f:
         f.write(header.encode("ascii"))
         buf = bytearray()
         for r in range(rings):
@@ -58,6 +62,7 @@ def main():
                 f.write(buf)
                 buf = bytearray()
         f.write(buf)
+    os.replace(part, out)
     print(f"{out}: {vertex_count} vertices, {face_count} triangles")
 
 
