@@ -2,7 +2,6 @@
 
 #include "program.h"
 
-#include <algorithm>
 #include <vector>
 
 namespace lb {
@@ -15,10 +14,8 @@ constexpr int kNormalLineSizes[2] = {3, 4}; // position, normal: floats a vertex
 
 std::vector<DrawRange> drawRanges(std::uint64_t total, std::uint64_t most, std::uint64_t unit)
 {
-    most = std::max(unit, std::min(most, GpuMesh::kMaxPerDraw) / unit * unit);
     std::vector<DrawRange> ranges;
-    for (std::uint64_t first = 0; first < total; first += most)
-        ranges.push_back({first, GLsizei(std::min(most, total - first))});
+    forEachDrawRange(total, most, unit, [&](DrawRange r) { ranges.push_back(r); });
     return ranges;
 }
 
@@ -95,9 +92,10 @@ void GpuMesh::draw(QOpenGLExtraFunctions &gl) const
     if (!m_uvs)
         gl.glVertexAttrib4f(kTexCoordSlot, 0.0f, 0.0f, 0.0f, 1.0f);
     gl.glBindVertexArray(m_triangles.id());
-    for (const DrawRange &r : drawRanges(m_indexCount, m_maxPerDraw, 3))
+    forEachDrawRange(m_indexCount, m_maxPerDraw, 3, [&](DrawRange r) {
         gl.glDrawElements(GL_TRIANGLES, r.count, GL_UNSIGNED_INT,
                           reinterpret_cast<const void *>(r.first * sizeof(std::uint32_t)));
+    });
     gl.glBindVertexArray(0);
 }
 
@@ -106,13 +104,13 @@ void GpuMesh::drawNormalLines(QOpenGLExtraFunctions &gl) const
     if (!hasVertices())
         return;
     gl.glBindVertexArray(m_normalLines.id());
-    const std::vector<DrawRange> ranges = drawRanges(m_vertexCount, m_maxPerDraw, 1);
-    for (const DrawRange &r : ranges) {
-        if (ranges.size() > 1) // instances count from 0: the arrays start at the piece
+    const bool pieces = m_vertexCount > m_maxPerDraw || m_vertexCount > kMaxPerDraw;
+    forEachDrawRange(m_vertexCount, m_maxPerDraw, 1, [&](DrawRange r) {
+        if (pieces) // instances count from 0: the arrays start at the piece
             pointNormalLinesAt(gl, r.first);
         gl.glDrawArraysInstanced(GL_LINES, 0, 2, r.count);
-    }
-    if (ranges.size() > 1)
+    });
+    if (pieces)
         pointNormalLinesAt(gl, 0);
     gl.glBindVertexArray(0);
 }

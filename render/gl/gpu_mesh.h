@@ -8,6 +8,7 @@
 
 #include <QOpenGLExtraFunctions>
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -21,7 +22,9 @@ struct DrawRange
     GLsizei count = 0;
 };
 // `total` items in pieces of at most `most` (a multiple of `unit`, rounded down, at least one
-// unit), in order.
+// unit, at most GpuMesh::kMaxPerDraw), in order; `draw(range)` for each, allocating nothing.
+template <typename F>
+void forEachDrawRange(std::uint64_t total, std::uint64_t most, std::uint64_t unit, F &&draw);
 std::vector<DrawRange> drawRanges(std::uint64_t total, std::uint64_t most, std::uint64_t unit);
 
 class GpuMesh
@@ -59,5 +62,13 @@ private:
     std::uint64_t m_maxPerDraw = kMaxPerDraw;
     bool m_colors = false, m_uvs = false; // absent arrays read as white and (0, 0)
 };
+
+template <typename F>
+void forEachDrawRange(std::uint64_t total, std::uint64_t most, std::uint64_t unit, F &&draw)
+{
+    most = std::max(unit, std::min(most, GpuMesh::kMaxPerDraw) / unit * unit);
+    for (std::uint64_t first = 0; first < total; first += most)
+        draw(DrawRange{first, GLsizei(std::min(most, total - first))});
+}
 
 } // namespace lb
