@@ -16,8 +16,8 @@ constexpr const char *kSerialName = "serial"; // its line in the INI file: seria
 
 QString why(QSettings::Status status)
 {
-    return status == QSettings::FormatError ? QObject::tr("it is no settings file")
-                                            : QObject::tr("it cannot be written");
+    return status == QSettings::FormatError ? QObject::tr("is no settings file")
+                                            : QObject::tr("cannot be written");
 }
 
 } // namespace
@@ -51,15 +51,16 @@ void SettingsAutosave::sync()
     const QString file = elidedForMessage(m_settings.fileName(), 120);
     if (reachedTheDisk()) {
         if (m_failing)
-            m_status->showMessage(tr("Your work is kept again in %1").arg(file));
+            m_status->showMessage(tr("Your work is saved again in %1").arg(file));
         m_failing = false;
         m_retry.stop();
         return;
     }
     if (!m_failing)
-        m_status->showMessage(tr("Your work is not being kept: %1 (%2); trying again every %3 s")
-                                  .arg(file, why(m_settings.status()))
-                                  .arg(kRetryMs / 1000),
+        // What matters first: a narrow status line shows the start (the rest is its tooltip).
+        m_status->showMessage(tr("Your work is not saved, trying again every %1 s: %2 %3")
+                                  .arg(kRetryMs / 1000)
+                                  .arg(file, why(m_settings.status())),
                               0);
     m_failing = true;
     m_retry.start();

@@ -2,7 +2,7 @@
 // The window's autosave (scene, layout, editor text) that says when it fails. A change asks for
 // a save within half a second; a save that does not reach the disk (a read-only or full
 // disk, a settings path that cannot be made) is said once in the status line and retried every
-// few seconds until it does, then the status line says the work is kept again.
+// few seconds until it does, then the status line says the work is saved again.
 // QSettings keeps the first error it met for good, so once a save failed, each later one is
 // verified by reading the settings file back.
 

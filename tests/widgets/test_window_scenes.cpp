@@ -196,7 +196,8 @@ private slots:
         window.document().edit([](Scene &s) { s.material.shininess = 77.0f; });
         QTRY_VERIFY_WITH_TIMEOUT(window.autosave()->isFailing(), 3000);
         const QString said = window.statusLine()->message();
-        QVERIFY2(said.contains("not being kept") && said.contains(path), qPrintable(said));
+        QVERIFY2(said.contains("Your work is not saved, trying again") && said.contains(path),
+                 qPrintable(said));
 
         // Said once: a later save that fails too leaves the status line to other messages.
         window.statusLine()->showMessage("something else", 0);
@@ -209,7 +210,7 @@ private slots:
         QVERIFY(QFile::remove(blocker));
         QTRY_VERIFY_WITH_TIMEOUT(!window.autosave()->isFailing(),
                                  SettingsAutosave::kRetryMs + 3000);
-        QVERIFY2(window.statusLine()->message().contains("kept again"),
+        QVERIFY2(window.statusLine()->message().contains("saved again"),
                  qPrintable(window.statusLine()->message()));
         const QSettings disk(path, QSettings::IniFormat);
         const Scene kept =
