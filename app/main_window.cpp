@@ -77,7 +77,7 @@ MainWindow::MainWindow(QSettings &settings, QWidget *parent)
     // The status line's fixed places exist before anything reports to them.
     m_status = new StatusLine(statusBar());
     m_autosave = new SettingsAutosave(
-        m_settings, m_status, [this] { saveSettings(); }, this);
+        m_settings, m_status, [this] { writeSettings(); }, this);
     statusBar()->addPermanentWidget(m_status, 1);
     connect(m_viewport, &Viewport::glInfo, this, [this](const QString &info) {
         m_glInfo = info;
@@ -248,6 +248,11 @@ void MainWindow::updateTitle()
 
 void MainWindow::saveSettings()
 {
+    m_autosave->saveNow();
+}
+
+void MainWindow::writeSettings()
+{
     m_settings.setValue(kSceneKey, QJsonDocument(m_document.scene().toJson()).toJson());
     // Presentation mode is for the session: the window as it was before it is what is kept.
     m_settings.setValue(kGeometryKey, m_presentation ? m_normalGeometry : saveGeometry());
@@ -255,7 +260,6 @@ void MainWindow::saveSettings()
     m_settings.setValue(kScreenKey, m_available.size());
     m_settings.setValue(kLayoutKey, int(m_presentation ? m_normalLayout : m_layout));
     m_editor->saveState(m_settings);
-    m_autosave->sync();
 }
 
 void MainWindow::closeEvent(QCloseEvent *event)

@@ -75,6 +75,7 @@ public:
     void setUiScale(double scale);
     double uiScale() const;
 
+    // Saves the session (scene, layout, editor) now; a change saves it shortly after anyway.
     void saveSettings();
 
 protected:
@@ -84,6 +85,7 @@ protected:
 
 private:
     QDockWidget *addPanelDock(const QString &title, const QString &objectName, QWidget *panel);
+    void writeSettings(); // puts the session's values into the settings, for the autosave
     void buildMenus();
     void addViewMenu(QMenu *view);
     void updateStatus();

@@ -31,10 +31,7 @@ SettingsAutosave::SettingsAutosave(QSettings &settings, StatusLine *status,
         t->setSingleShot(true);
     m_delay.setInterval(kDelayMs);
     m_retry.setInterval(kRetryMs);
-    connect(&m_delay, &QTimer::timeout, this, [this] {
-        m_write();
-        sync();
-    });
+    connect(&m_delay, &QTimer::timeout, this, &SettingsAutosave::saveNow);
     connect(&m_retry, &QTimer::timeout, this, &SettingsAutosave::sync);
 }
 
@@ -42,6 +39,13 @@ void SettingsAutosave::schedule()
 {
     if (!m_delay.isActive())
         m_delay.start();
+}
+
+void SettingsAutosave::saveNow()
+{
+    m_delay.stop();
+    m_write();
+    sync();
 }
 
 void SettingsAutosave::sync()

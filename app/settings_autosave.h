@@ -24,18 +24,19 @@ public:
     static constexpr int kDelayMs = 500;
     static constexpr int kRetryMs = 5000;
 
-    // `write` puts the values into `settings`; sync() then takes them to the disk.
+    // `write` puts the values into `settings`; saveNow() writes them and takes them to the disk.
     SettingsAutosave(QSettings &settings, StatusLine *status, std::function<void()> write,
                      QObject *parent = nullptr);
 
     // A change: saved within kDelayMs. Not restarted by later changes (auto-rotation edits
     // the scene 60 times a second, and a timer restarted that often would never fire).
     void schedule();
-    // Writes the values to the disk now and checks that they got there.
-    void sync();
+    // Writes the values and takes them to the disk now, checking that they got there.
+    void saveNow();
     bool isFailing() const { return m_failing; }
 
 private:
+    void sync(); // takes what the settings hold to the disk, and checks
     bool reachedTheDisk();
 
     QSettings &m_settings;
