@@ -23,11 +23,7 @@ struct BadOption
 // stays one readable line.
 QString echoed(const QString &text, int max = 80)
 {
-    QString line = elidedForMessage(text, max);
-    for (QChar &c : line)
-        if (c.category() == QChar::Other_Control)
-            c = QChar(0xFFFD);
-    return line;
+    return echoedValue(text, max);
 }
 
 [[noreturn]] void fail(const QString &option, const QString &what)

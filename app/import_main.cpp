@@ -56,8 +56,10 @@ void limit(int resource, rlim_t value)
 // mapping ("Failed to mmap"). The sanitizer build bounds the resident memory instead: a thread
 // looks every few milliseconds and ends the helper with kExitOutOfMemory, which the window
 // turns into the same "out of memory" message; a size ASan refuses outright (an absurd count
-// read from a broken file) ends the same way. Resident memory here includes ASan's shadow and
-// quarantine, so this limit is the stricter of the two builds'.
+// read from a broken file) ends the same way. The two limits count differently (resident
+// memory here, with ASan's shadow and quarantine; reserved address space in the normal
+// build), and this one is checked, not enforced: it can be passed by what is allocated
+// between two looks.
 long residentKB()
 {
     long pages = 0, resident = 0;

@@ -31,7 +31,8 @@ class GpuMesh
 {
 public:
     // The most indices (and normal lines) one draw call takes; more are drawn in several calls.
-    static constexpr std::uint64_t kMaxPerDraw = 0x7ffffffe; // the largest GLsizei, times 3
+    static constexpr std::uint64_t kMaxPerDraw =
+        0x7ffffffe; // the largest multiple of 3 in a GLsizei
 
     // Replaces what the buffers hold with `mesh` (objects are made on the first upload).
     void upload(QOpenGLExtraFunctions &gl, const Mesh &mesh);

@@ -14,7 +14,6 @@
 #include <algorithm>
 #include <csignal>
 #include <cstring>
-#include <limits>
 
 #include <unistd.h>
 
@@ -165,10 +164,9 @@ void ImportProcess::start(const QString &path, const ImportLimits &limits)
 
     // Assimp reads most formats whole into memory: a file over the helper's memory limit
     // could only end in "out of memory", after reading gigabytes.
-    const qint64 maxBytes =
-        limits.memoryMB > 0 ? limits.memoryMB << 20 : std::numeric_limits<qint64>::max();
     const QFileInfo info(path);
-    QString problem = unreadableFile(path, {"a mesh file", maxBytes, "the import memory limit"});
+    QString problem = unreadableFile(
+        path, {"a mesh file", qint64(limits.meshByteCap()), "the import memory limit"});
     if (problem.isEmpty() && !info.isReadable())
         problem = m_path + ": not readable (permissions)";
     else if (problem.isEmpty() && info.size() == 0)
@@ -314,14 +312,16 @@ std::shared_ptr<MeshFile> ImportProcess::meshFile()
     } else if (!m_reader->texturePath().isEmpty()) {
         const QString found = findTexture(m_path, m_reader->texturePath());
         if (found.isEmpty()) {
-            file->textureProblem = "texture '" + m_reader->texturePath() + "' not found";
+            file->textureProblem =
+                "texture '" + echoedValue(m_reader->texturePath()) + "' not found";
         } else if (const QString why = unreadableFile(found, kTextureFileLimit); !why.isEmpty()) {
             file->textureProblem = "texture " + why;
         } else {
             QImageReader reader(found);
             image = reader.read();
             if (image.isNull())
-                file->textureProblem = "texture '" + found + "': " + reader.errorString();
+                file->textureProblem =
+                    "texture '" + echoedValue(found) + "': " + reader.errorString();
         }
     }
     if (!image.isNull()) {

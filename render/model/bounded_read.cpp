@@ -11,16 +11,17 @@ namespace {
 
 QString shown(const QString &path)
 {
-    return elidedForMessage(path, 300);
+    return echoedValue(path, 300);
 }
 
 } // namespace
 
 QString sizeForMessage(qint64 bytes)
 {
-    if (bytes >= 10ll << 20)
-        return QString("%1 MB").arg(bytes >> 20);
-    return QString("%1 KiB").arg(bytes >> 10);
+    // Rounded up: a file one byte over a 1024 KiB limit reads as 1025 KiB, not as the limit.
+    const bool mega = bytes >= 10ll << 20;
+    const qint64 unit = mega ? 1ll << 20 : 1ll << 10;
+    return QString::number((bytes + unit - 1) / unit) + (mega ? " MB" : " KiB");
 }
 
 static QString limitText(const FileLimit &limit)

@@ -14,6 +14,16 @@ QString elidedForMessage(const QString &text, int max)
     return text.left(half) + "..." + text.right(half);
 }
 
+QString echoedValue(const QString &text, int max)
+{
+    QString line = elidedForMessage(text, max);
+    for (QChar &c : line)
+        if (c.category() == QChar::Other_Control || c.category() == QChar::Separator_Line ||
+            c.category() == QChar::Separator_Paragraph)
+            c = QChar(0xFFFD);
+    return line;
+}
+
 QString summarisedList(const QStringList &items, const QString &separator, int shown)
 {
     QStringList parts;

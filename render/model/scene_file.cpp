@@ -115,7 +115,7 @@ SceneFileRead readSceneFile(const QString &path)
         read.error = bytes.error;
         return read;
     }
-    return parseSceneFile(bytes.bytes, QFileInfo(path).absoluteDir(), elidedForMessage(path, 300));
+    return parseSceneFile(bytes.bytes, QFileInfo(path).absoluteDir(), echoedValue(path, 300));
 }
 
 QString writeSceneFile(const QString &path, const SceneFile &file)

@@ -62,7 +62,7 @@ class Random
 {
 public:
     explicit Random(quint32 s) : m_engine(s) {}
-    int below(int n) { return std::uniform_int_distribution<int>(0, n - 1)(m_engine); }
+    int below(int n) { return n > 1 ? std::uniform_int_distribution<int>(0, n - 1)(m_engine) : 0; }
     bool chance(int percent) { return below(100) < percent; }
     template <typename T> const T &pick(const QList<T> &list)
     {
