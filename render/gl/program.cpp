@@ -7,6 +7,7 @@
 
 #include <QByteArray>
 #include <QElapsedTimer>
+#include <QRegularExpression>
 
 namespace lb {
 
@@ -279,6 +280,53 @@ BuiltProgram buildBuiltIn(QOpenGLExtraFunctions &gl, const QString &name, QStrin
     BuiltProgram built = buildProgram(gl, pair.vertexSource(), fragmentPair.fragmentSource());
     if (!built.build.ok())
         error += "built-in shader '" + name + "' failed:\n" + built.build.log();
+    return built;
+}
+
+QString withMaxLights(const QString &source, int lights)
+{
+    static const QRegularExpression line("^#define MAX_LIGHTS \\d+$",
+                                         QRegularExpression::MultilineOption);
+    QString out = source;
+    if (!line.match(out).hasMatch())
+        return {};
+    out.replace(line, QString("#define MAX_LIGHTS %1").arg(lights));
+    return out;
+}
+
+std::optional<bool> shippedBuiltIn(const QString &vertexSource, const QString &fragmentSource)
+{
+    for (bool gouraud : {true, false}) {
+        const Preset &p = builtInPreset(gouraud);
+        if (vertexSource == p.vertexSource() && fragmentSource == p.fragmentSource())
+            return gouraud;
+    }
+    return std::nullopt;
+}
+
+int builtInLightCount(const Scene &scene)
+{
+    int count = 1;
+    for (int i = 0; i < kMaxLights; ++i)
+        if (scene.lights[std::size_t(i)].enabled)
+            count = i + 1;
+    return count;
+}
+
+BuiltProgram buildSpecialisedBuiltIn(QOpenGLExtraFunctions &gl, bool gouraud, int lights,
+                                     QString &error)
+{
+    const Preset &preset = builtInPreset(gouraud);
+    const QString vertex = preset.vertexSource(), fragment = preset.fragmentSource();
+    // The stage with the light loop has the line; the other is used as it is.
+    const QString v = withMaxLights(vertex, lights), f = withMaxLights(fragment, lights);
+    if (v.isEmpty() && f.isEmpty()) {
+        error += "built-in shader '" + preset.name + "' has no '#define MAX_LIGHTS' line\n";
+        return {};
+    }
+    BuiltProgram built = buildProgram(gl, v.isEmpty() ? vertex : v, f.isEmpty() ? fragment : f);
+    if (!built.build.ok())
+        error += "built-in shader '" + preset.name + "' failed:\n" + built.build.log();
     return built;
 }
 

@@ -5,10 +5,12 @@
 
 #include "gl_object.h"
 #include "program_build.h"
+#include "scene.h"
 
 #include <QOpenGLExtraFunctions>
 #include <QString>
 
+#include <optional>
 #include <vector>
 
 namespace lb {
@@ -28,6 +30,10 @@ struct BuiltProgram
 {
     ProgramBuild build;
     GlProgram program;
+    // Set when the sources are a built-in pair as shipped (true: Gouraud): the renderer then
+    // draws that program compiled for the scene's lights instead (buildSpecialisedBuiltIn),
+    // the same pixels in fewer passes.
+    std::optional<bool> shippedBuiltIn;
 };
 
 // The names bound to each slot: the slides', the exercise's and common generic ones.
@@ -53,6 +59,20 @@ bool acceptsVersion100(QOpenGLExtraFunctions &gl);
 
 BuiltProgram buildBuiltIn(QOpenGLExtraFunctions &gl, const QString &name, QString &error,
                           const QString &fragment = {});
+
+// The built-in program of a shading mode compiled for `lights` lights (1 to kMaxLights): its
+// MAX_LIGHTS is the count, so a scene with only light 1 on runs one pass of the light loop, as
+// the single-light program did, instead of four (llvmpipe pays for every pass, on or off).
+// Elements past the count are never read: the scene's later lights are all off.
+BuiltProgram buildSpecialisedBuiltIn(QOpenGLExtraFunctions &gl, bool gouraud, int lights,
+                                     QString &error);
+// The lights a scene's built-in program must loop over: up to the last one that is on
+// (at least 1).
+int builtInLightCount(const Scene &scene);
+// Whether the pair is the built-in program of a shading mode as shipped (true: Gouraud).
+std::optional<bool> shippedBuiltIn(const QString &vertexSource, const QString &fragmentSource);
+// The built-in sources with MAX_LIGHTS set to `lights`; empty if they have no such line.
+QString withMaxLights(const QString &source, int lights);
 
 // Compiles both stages and links them.
 BuiltProgram buildProgram(QOpenGLExtraFunctions &gl, const QString &vertexSource,

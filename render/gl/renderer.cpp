@@ -29,8 +29,8 @@ QString Renderer::initialize()
     initializeOpenGLFunctions();
     noteDriverRefusesVersion100(!acceptsVersion100(*this));
     QString error;
-    m_gouraud = buildBuiltIn(*this, "gouraud", error);
-    m_phong = buildBuiltIn(*this, "phong", error);
+    for (bool gouraud : {true, false}) // the default scene's: one light
+        m_builtIns[gouraud][0] = buildSpecialisedBuiltIn(*this, gouraud, 1, error);
     m_differenceProgram = buildBuiltIn(*this, "difference", error);
     error += m_overlays.initialize(*this);
     if (!error.isEmpty())
@@ -55,8 +55,11 @@ void Renderer::cleanup()
     m_sideFbo[0].reset();
     m_sideFbo[1].reset();
     m_objectUploaded = m_objectTextureUploaded = false;
-    for (BuiltProgram *p : {&m_gouraud, &m_phong, &m_differenceProgram, &m_user, &m_candidate})
+    for (BuiltProgram *p : {&m_differenceProgram, &m_user, &m_candidate})
         *p = {};
+    for (auto &shading : m_builtIns)
+        for (BuiltProgram &p : shading)
+            p = {};
     m_checkerTexture.reset();
     m_objectTextureGl.reset();
     m_initialized = false;
@@ -69,6 +72,7 @@ ProgramBuild Renderer::setUserProgram(const QString &vertexSource, const QString
     ProgramBuild report = built.build;
     if (!report.ok())
         return report;
+    built.shippedBuiltIn = shippedBuiltIn(vertexSource, fragmentSource);
     std::swap(m_user, built); // `built` holds the previous program now
     if (trial)
         if (const std::optional<Diagnostic> refusal = trial()) {
@@ -82,6 +86,7 @@ ProgramBuild Renderer::setUserProgram(const QString &vertexSource, const QString
 ProgramBuild Renderer::buildCandidate(const QString &vertexSource, const QString &fragmentSource)
 {
     m_candidate = buildProgram(*this, vertexSource, fragmentSource);
+    m_candidate.shippedBuiltIn = shippedBuiltIn(vertexSource, fragmentSource);
     if (!m_candidate.build.ok()) {
         const ProgramBuild report = m_candidate.build;
         m_candidate = {};
@@ -107,14 +112,35 @@ void Renderer::prepareCandidate(const Scene &scene, QSize pixels)
     glDisable(GL_RASTERIZER_DISCARD);
 }
 
-const BuiltProgram &Renderer::objectProgram(const Scene &scene) const
+const BuiltProgram &Renderer::objectProgram(const Scene &scene)
 {
-    return m_user.program ? m_user : builtInProgram(scene);
+    if (!m_user.program)
+        return builtInProgram(scene);
+    // The editor's program is the built-in text as shipped: the same program, compiled for
+    // the lights the scene uses.
+    if (m_user.shippedBuiltIn)
+        return specialisedBuiltIn(*m_user.shippedBuiltIn, builtInLightCount(scene));
+    return m_user;
 }
 
-const BuiltProgram &Renderer::builtInProgram(const Scene &scene) const
+const BuiltProgram &Renderer::builtInProgram(const Scene &scene)
 {
-    return scene.shading.shading == Shading::Gouraud ? m_gouraud : m_phong;
+    return specialisedBuiltIn(scene.shading.shading == Shading::Gouraud, builtInLightCount(scene));
+}
+
+const BuiltProgram &Renderer::specialisedBuiltIn(bool gouraud, int lights)
+{
+    BuiltProgram &p = m_builtIns[gouraud][std::size_t(lights - 1)];
+    if (!p.program) {
+        QString error;
+        p = buildSpecialisedBuiltIn(*this, gouraud, lights, error);
+        if (!error.isEmpty()) { // the sources differ by one number from those built at start
+            qWarning("lightbench: %s", qPrintable(error));
+            return m_builtIns[gouraud][kMaxLights - 1].program ? m_builtIns[gouraud][kMaxLights - 1]
+                                                               : m_builtIns[gouraud][0];
+        }
+    }
+    return p;
 }
 
 void Renderer::setObject(std::shared_ptr<const Mesh> mesh, std::shared_ptr<const Texture> texture)

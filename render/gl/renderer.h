@@ -15,6 +15,7 @@
 #include <QOpenGLFramebufferObject>
 #include <QSize>
 
+#include <array>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -95,8 +96,11 @@ public:
     const Texture &texture() const { return m_objectTexture ? *m_objectTexture : m_checker; }
 
 private:
-    const BuiltProgram &objectProgram(const Scene &scene) const;
-    const BuiltProgram &builtInProgram(const Scene &scene) const;
+    const BuiltProgram &objectProgram(const Scene &scene);
+    // The built-in program of the scene's shading, compiled for the lights the scene uses
+    // (built once per shading and count, then kept).
+    const BuiltProgram &builtInProgram(const Scene &scene);
+    const BuiltProgram &specialisedBuiltIn(bool gouraud, int lights);
     void uploadObject();
     // One side: cleared and drawn in `view` (top-left origin in a frame `frameHeight` high),
     // only inside `clip`.
@@ -109,7 +113,9 @@ private:
     void measureDifference(QSize pixels);
 
     bool m_initialized = false;
-    BuiltProgram m_gouraud, m_phong, m_differenceProgram, m_user, m_candidate;
+    // The built-in programs: [gouraud][lights used - 1] (builtInProgram).
+    std::array<std::array<BuiltProgram, kMaxLights>, 2> m_builtIns;
+    BuiltProgram m_differenceProgram, m_user, m_candidate;
     Overlays m_overlays;
     Texture m_checker;
     GlTexture m_checkerTexture, m_objectTextureGl;

@@ -2,6 +2,8 @@
 // (render/lighting through render/probe). A failing case writes its frame to
 // build/tests/test-output/.
 #include "gpu_mesh.h"
+#include "presets.h"
+#include "program.h"
 #include "reference_compare.h"
 
 #include <QGuiApplication>
@@ -182,6 +184,66 @@ private slots:
         QCOMPARE(big.size(), std::size_t(3));
         QCOMPARE(big[0].count, GLsizei(0x7ffffffe));
         QCOMPARE(big[2].first + std::uint64_t(big[2].count), 0xffffffffull);
+    }
+
+    // The built-in programs are compiled for the lights a scene uses (issue 14: one light cost
+    // four passes of the loop). Each count draws what the shipped four-light text draws when
+    // it is a user's program.
+    void builtInsForFewerLightsDrawAsTheShippedText_data()
+    {
+        QTest::addColumn<bool>("gouraud");
+        QTest::addColumn<QList<int>>("on"); // lights switched on, 0-based
+        for (bool gouraud : {false, true}) {
+            const char *name = gouraud ? "gouraud" : "phong";
+            QTest::addRow("%s, light 1", name) << gouraud << QList<int>{0};
+            QTest::addRow("%s, lights 1 and 3", name) << gouraud << QList<int>{0, 2};
+            QTest::addRow("%s, light 2 alone", name) << gouraud << QList<int>{1};
+            QTest::addRow("%s, all four", name) << gouraud << QList<int>{0, 1, 2, 3};
+            QTest::addRow("%s, none", name) << gouraud << QList<int>{};
+        }
+    }
+
+    void builtInsForFewerLightsDrawAsTheShippedText()
+    {
+        QFETCH(bool, gouraud);
+        QFETCH(QList<int>, on);
+        Scene s = testScene();
+        s.shading.shading = gouraud ? Shading::Gouraud : Shading::Phong;
+        for (int i = 0; i < kMaxLights; ++i) {
+            Light &l = s.lights[std::size_t(i)];
+            l.enabled = on.contains(i);
+            l.position = glm::vec4(1.5f - float(i), 1.0f + 0.3f * float(i), 2.0f, 1.0f);
+            l.colors.id = glm::vec3(0.25f * float(i + 1), 0.5f, 0.3f);
+        }
+        int expected = 1;
+        for (int i : on)
+            expected = std::max(expected, i + 1);
+        QCOMPARE(builtInLightCount(s), expected);
+
+        const QImage specialised = m_offscreen.render(s);
+        // The shipped text with a comment added: a user's program, drawn as it is written.
+        const Preset &shipped = builtInPreset(gouraud);
+        QVERIFY(
+            m_offscreen.useProgram(shipped.vertexSource(), shipped.fragmentSource() + "\n// mine\n")
+                .ok());
+        const QImage asWritten = m_offscreen.render(s);
+        QVERIFY(largestDifference(specialised, asWritten) <= 1);
+        // The shipped text itself (what the editor holds until it is edited) is drawn
+        // specialised too.
+        QVERIFY(m_offscreen.useProgram(shipped.vertexSource(), shipped.fragmentSource()).ok());
+        QCOMPARE(largestDifference(specialised, m_offscreen.render(s)), 0);
+        m_offscreen.renderer().clearUserProgram();
+    }
+
+    void specialisationNeedsTheDefineLine()
+    {
+        QCOMPARE(withMaxLights("#version 330 core\n#define MAX_LIGHTS 4\nvoid main() {}", 2),
+                 QString("#version 330 core\n#define MAX_LIGHTS 2\nvoid main() {}"));
+        QVERIFY(withMaxLights("void main() {}", 2).isEmpty());
+        for (bool gouraud : {false, true}) {
+            const Preset &p = builtInPreset(gouraud);
+            QVERIFY(!withMaxLights(gouraud ? p.vertexSource() : p.fragmentSource(), 1).isEmpty());
+        }
     }
 
     void gouraudAndPhongDifferAtTheHighlight()
