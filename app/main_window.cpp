@@ -10,6 +10,7 @@
 #include "presets.h"
 #include "probe_panel.h"
 #include "scene_actions.h"
+#include "scene_file.h"
 #include "settings_autosave.h"
 #include "shading_panel.h"
 #include "status_line.h"
@@ -17,6 +18,8 @@
 #include "viewport.h"
 
 #include <QCloseEvent>
+#include <QDateTime>
+#include <QDir>
 #include <QDockWidget>
 #include <QFileInfo>
 #include <QGuiApplication>
@@ -24,6 +27,7 @@
 #include <QMessageBox>
 #include <QScreen>
 #include <QSettings>
+#include <QStandardPaths>
 #include <QStatusBar>
 
 #include <algorithm>
@@ -265,7 +269,25 @@ void MainWindow::writeSettings()
 void MainWindow::closeEvent(QCloseEvent *event)
 {
     saveSettings();
+    if (m_autosave->isFailing())
+        keepUnsavedSession();
     event->accept();
+}
+
+void MainWindow::keepUnsavedSession()
+{
+    // No dialog: a window closed by a script (--screenshot) must not wait for a click.
+    const QString path =
+        QDir(QStandardPaths::writableLocation(QStandardPaths::TempLocation))
+            .filePath(QString("lightbench-unsaved-%1.json")
+                          .arg(QDateTime::currentDateTime().toString("yyyyMMdd-HHmmss")));
+    const QString error = writeSceneFile(path, SceneFile{m_document.scene(), m_shaders.program()});
+    if (error.isEmpty())
+        qWarning("lightbench: the session could not be saved in %s; it is in %s (File > Open)",
+                 qPrintable(m_settings.fileName()), qPrintable(path));
+    else
+        qWarning("lightbench: the session could not be saved in %s, nor in %s",
+                 qPrintable(m_settings.fileName()), qPrintable(error));
 }
 
 } // namespace lb

@@ -86,6 +86,9 @@ protected:
 private:
     QDockWidget *addPanelDock(const QString &title, const QString &objectName, QWidget *panel);
     void writeSettings(); // puts the session's values into the settings, for the autosave
+    // Closing while the autosave fails: the scene and program go to a scene file in the
+    // temporary folder, named on stderr, instead of being lost.
+    void keepUnsavedSession();
     void buildMenus();
     void addViewMenu(QMenu *view);
     void updateStatus();

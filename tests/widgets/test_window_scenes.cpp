@@ -208,6 +208,22 @@ private slots:
         QCOMPARE(window.statusLine()->message(), QString("something else"));
         QVERIFY(window.autosave()->isFailing());
 
+        // Closed meanwhile, the window keeps the session in a scene file in the temporary
+        // folder instead of losing it.
+        const QByteArray tmp = qgetenv("TMPDIR");
+        qputenv("TMPDIR", QFile::encodeName(m_dir.path()));
+        window.close();
+        if (tmp.isEmpty())
+            qunsetenv("TMPDIR");
+        else
+            qputenv("TMPDIR", tmp);
+        const QStringList kept = QDir(m_dir.path()).entryList({"lightbench-unsaved-*.json"});
+        QCOMPARE(kept.size(), 1);
+        const SceneFileRead read = readSceneFile(m_dir.filePath(kept[0]));
+        QVERIFY2(read.file, qPrintable(read.error));
+        QCOMPARE(read.file->scene.material.shininess, 78.0f);
+        window.show();
+
         // The way cleared, the retry keeps the work without another edit, and says so.
         QVERIFY(QFile::remove(blocker));
         QTRY_VERIFY_WITH_TIMEOUT(!window.autosave()->isFailing(),
