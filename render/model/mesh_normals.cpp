@@ -4,6 +4,7 @@
 #include <glm/trigonometric.hpp>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstring>
 #include <thread>
@@ -60,13 +61,29 @@ float approximateAcos(float x)
     return x >= 0.0f ? r : 3.14159265f - r;
 }
 
-float cornerAngle(const glm::vec3 &at, const glm::vec3 &a, const glm::vec3 &b)
+// The angle at `at` between the edges to `a` and `b`, given those edges and their lengths.
+float cornerAngle(const glm::vec3 &toA, float lengthA, const glm::vec3 &toB, float lengthB)
 {
-    const glm::vec3 u = a - at, v = b - at;
-    const float lu = glm::length(u), lv = glm::length(v);
-    if (lu == 0.0f || lv == 0.0f)
+    if (lengthA == 0.0f || lengthB == 0.0f)
         return 0.0f;
-    return approximateAcos(std::clamp(glm::dot(u, v) / (lu * lv), -1.0f, 1.0f));
+    return approximateAcos(std::clamp(glm::dot(toA, toB) / (lengthA * lengthB), -1.0f, 1.0f));
+}
+
+// How far a face's normal may lie from the mean of the faces around a position for the fast
+// path below: half the crease, less a margin for float rounding (an error of 1e-7 in a dot
+// product near 1 is 5e-4 radians of angle), so that any two faces within it of the mean are
+// surely within the crease of each other as the exact comparison computes it.
+float halfCreaseCosine(float creaseDegrees)
+{
+    const float half = 0.5f * glm::radians(std::clamp(creaseDegrees, 0.0f, 180.0f)) - 2e-3f;
+    return half <= 0.0f ? 1.0f : std::cos(half);
+}
+
+// `v` made unit length, or +Z when it has none (the corners around it cancel out).
+glm::vec3 unitOr(const glm::vec3 &v)
+{
+    const float length = glm::length(v);
+    return length > 0.0f ? v / length : glm::vec3(0.0f, 0.0f, 1.0f);
 }
 
 // Positions with more corners than this (a fan, a cone's apex, bad data all moved to the
@@ -191,6 +208,66 @@ template <typename F> void parallelFor(std::size_t n, std::size_t parts, F &&wor
         t.join();
 }
 
+// The common smooth mesh, quickly and with a third of the memory: every position has one
+// vertex, used by some triangle, and every position takes the fast path of the general loop
+// in withGeneratedNormals (its faces lie within half the crease of their mean). Then each
+// vertex keeps its place and gets the sum of its corners, added in the same order as the
+// general loop adds them: the same mesh, bit for bit, without grouping the corners. Returns
+// nothing for any other mesh.
+std::optional<Mesh> withoutSplits(const Mesh &mesh, const std::vector<std::uint32_t> &position,
+                                  const std::vector<glm::vec3> &faceNormal,
+                                  const std::vector<float> &angle, float threshold,
+                                  float halfThreshold, std::size_t parts)
+{
+    const std::size_t vertexCount = mesh.vertexCount();
+    const std::size_t cornerCount = angle.size();
+    if (halfThreshold >= 1.0f) // flat or nearly: only exactly coplanar corners would fit
+        return std::nullopt;
+    for (std::size_t v = 0; v < vertexCount; ++v)
+        if (position[v] != v)
+            return std::nullopt;
+    std::vector<glm::vec3> normals(vertexCount, glm::vec3(0.0f));
+    std::atomic_bool fits{true};
+    // Each part sums the corners of its own vertices, in corner order (no two parts write
+    // the same vertex).
+    parallelFor(vertexCount, parts, [&](std::size_t first, std::size_t last, std::size_t) {
+        std::vector<std::uint8_t> used(last - first, 0);
+        for (std::size_t c = 0; c < cornerCount; ++c) {
+            const std::uint32_t v = mesh.indices[c];
+            if (v >= first && v < last) {
+                normals[v] += angle[c] * faceNormal[c / 3];
+                used[v - first] = 1;
+            }
+        }
+        for (std::size_t v = first; v < last; ++v) {
+            if (!used[v - first] || (threshold > -1.0f && normals[v] == glm::vec3(0.0f)))
+                fits = false;
+            normals[v] = unitOr(normals[v]);
+        }
+    });
+    if (!fits)
+        return std::nullopt;
+    if (threshold > -1.0f)
+        parallelFor(cornerCount, parts, [&](std::size_t first, std::size_t last, std::size_t) {
+            for (std::size_t c = first; c < last && fits.load(std::memory_order_relaxed); ++c) {
+                const glm::vec3 &n = faceNormal[c / 3];
+                if (n != glm::vec3(0.0f) && glm::dot(n, normals[mesh.indices[c]]) < halfThreshold)
+                    fits = false;
+            }
+        });
+    if (!fits)
+        return std::nullopt;
+    Mesh out;
+    out.positions = mesh.positions;
+    out.normals = std::move(normals);
+    if (mesh.colors.size() == vertexCount)
+        out.colors = mesh.colors;
+    if (mesh.uvs.size() == vertexCount)
+        out.uvs = mesh.uvs;
+    out.indices.assign(mesh.indices.begin(), mesh.indices.begin() + std::ptrdiff_t(cornerCount));
+    return out;
+}
+
 } // namespace
 
 std::optional<Mesh> withGeneratedNormals(const Mesh &mesh, float creaseDegrees,
@@ -221,16 +298,27 @@ std::optional<Mesh> withGeneratedNormals(const Mesh &mesh, float creaseDegrees,
                 std::max({glm::dot(b - a, b - a), glm::dot(c - b, c - b), glm::dot(a - c, a - c)});
             faceNormal[t] =
                 length > 1e-6f * edge && std::isfinite(length) ? n / length : glm::vec3(0.0f);
-            angle[3 * t] = cornerAngle(a, b, c);
-            angle[3 * t + 1] = cornerAngle(b, c, a);
-            angle[3 * t + 2] = cornerAngle(c, a, b);
+            const glm::vec3 ab = b - a, bc = c - b, ca = a - c;
+            const float lab = glm::length(ab), lbc = glm::length(bc), lca = glm::length(ca);
+            angle[3 * t] = cornerAngle(ab, lab, -ca, lca);
+            angle[3 * t + 1] = cornerAngle(bc, lbc, -ab, lab);
+            angle[3 * t + 2] = cornerAngle(ca, lca, -bc, lbc);
         }
     });
     if (cancelled())
         return std::nullopt;
 
-    // The corners at each position, grouped (counting sort by the position's first vertex).
+    // A small tolerance keeps coplanar triangles together at 0 degrees despite rounding.
+    const float threshold = std::cos(glm::radians(std::clamp(creaseDegrees, 0.0f, 180.0f))) - 1e-5f;
+    const float halfThreshold = halfCreaseCosine(creaseDegrees);
     const std::vector<std::uint32_t> position = weldPositions(mesh.positions);
+    if (std::optional<Mesh> smooth =
+            withoutSplits(mesh, position, faceNormal, angle, threshold, halfThreshold, parts))
+        return smooth;
+    if (cancelled())
+        return std::nullopt;
+
+    // The corners at each position, grouped (counting sort by the position's first vertex).
     std::vector<std::uint32_t> start(vertexCount + 1, 0);
     for (std::size_t c = 0; c < cornerCount; ++c)
         ++start[position[mesh.indices[c]] + 1];
@@ -246,8 +334,6 @@ std::optional<Mesh> withGeneratedNormals(const Mesh &mesh, float creaseDegrees,
         return std::nullopt;
 
     // Each part makes the output vertices of its positions; the parts are joined after.
-    // A small tolerance keeps coplanar triangles together at 0 degrees despite rounding.
-    const float threshold = std::cos(glm::radians(std::clamp(creaseDegrees, 0.0f, 180.0f))) - 1e-5f;
     const bool colors = mesh.colors.size() == vertexCount;
     const bool uvs = mesh.uvs.size() == vertexCount;
     std::vector<std::uint32_t> outIndex(cornerCount);
@@ -272,25 +358,37 @@ std::optional<Mesh> withGeneratedNormals(const Mesh &mesh, float creaseDegrees,
                 glm::vec3 all(0.0f);
                 for (const std::uint32_t *c = begin; c != end; ++c)
                     all += angle[*c] * faceNormal[*c / 3];
-                if (big && threshold > -1.0f)
+                const glm::vec3 allNormal = unitOr(all);
+                // The fast path, taken by most positions of a smooth mesh: when every face
+                // here lies within half the crease of their mean, each lies within the crease
+                // of every other, so every corner's sum is the whole sum (the same additions
+                // in the same order: the same normal, bit for bit) and needs no comparisons.
+                bool oneNormal = threshold <= -1.0f;
+                if (!oneNormal && all != glm::vec3(0.0f)) {
+                    oneNormal = true;
+                    for (const std::uint32_t *c = begin; c != end && oneNormal; ++c) {
+                        const glm::vec3 &n = faceNormal[*c / 3]; // 0: in no corner's way
+                        oneNormal = n == glm::vec3(0.0f) || glm::dot(n, allNormal) >= halfThreshold;
+                    }
+                }
+                if (big && !oneNormal)
                     bins.sum(begin, end, faceNormal, angle, threshold, binnedSum);
                 made.clear();
                 madeByKey.clear();
                 for (const std::uint32_t *c = begin; c != end; ++c) {
                     const glm::vec3 &own = faceNormal[*c / 3];
-                    glm::vec3 sum(0.0f);
-                    if (threshold <= -1.0f || own == glm::vec3(0.0f)) {
-                        sum = all; // fully smooth, or a degenerate triangle takes its neighbours'
-                    } else if (big) {
-                        sum = binnedSum[std::size_t(c - begin)];
-                    } else {
-                        for (const std::uint32_t *d = begin; d != end; ++d)
-                            if (glm::dot(own, faceNormal[*d / 3]) >= threshold)
-                                sum += angle[*d] * faceNormal[*d / 3];
+                    glm::vec3 normal = allNormal; // a degenerate triangle takes its neighbours'
+                    if (!oneNormal && own != glm::vec3(0.0f)) {
+                        glm::vec3 sum(0.0f);
+                        if (big) {
+                            sum = binnedSum[std::size_t(c - begin)];
+                        } else {
+                            for (const std::uint32_t *d = begin; d != end; ++d)
+                                if (glm::dot(own, faceNormal[*d / 3]) >= threshold)
+                                    sum += angle[*d] * faceNormal[*d / 3];
+                        }
+                        normal = unitOr(sum);
                     }
-                    const float length = glm::length(sum);
-                    const glm::vec3 normal =
-                        length > 0.0f ? sum / length : glm::vec3(0.0f, 0.0f, 1.0f);
                     // Share an output vertex with an earlier corner at this position that has the
                     // same normal, colour and texture coordinates.
                     const std::uint32_t vertex = mesh.indices[*c];

@@ -9,7 +9,11 @@
 #include <QTest>
 
 #include <glm/geometric.hpp>
+#include <glm/gtc/constants.hpp>
 #include <glm/trigonometric.hpp>
+
+#include <map>
+#include <tuple>
 
 using namespace lb;
 
@@ -36,6 +40,62 @@ float worstFlatness(const Mesh &m)
             worst = std::min(worst, glm::dot(m.normals[m.indices[3 * t + k]], glm::normalize(n)));
     }
     return worst;
+}
+
+// A torus whose ring and tube wrap around without seams: one vertex per position, the mesh
+// withGeneratedNormals takes its fast path on.
+Mesh seamlessTorus(int rings, int tubes)
+{
+    Mesh m;
+    for (int r = 0; r < rings; ++r)
+        for (int t = 0; t < tubes; ++t) {
+            const float u = glm::two_pi<float>() * float(r) / float(rings);
+            const float v = glm::two_pi<float>() * float(t) / float(tubes);
+            const float ring = 0.7f + 0.3f * std::cos(v);
+            m.positions.emplace_back(ring * std::cos(u), 0.3f * std::sin(v), ring * std::sin(u));
+        }
+    for (int r = 0; r < rings; ++r)
+        for (int t = 0; t < tubes; ++t) {
+            const auto at = [&](int i, int j) {
+                return std::uint32_t((i % rings) * tubes + (j % tubes));
+            };
+            const std::uint32_t a = at(r, t), b = at(r + 1, t), c = at(r + 1, t + 1),
+                                d = at(r, t + 1);
+            m.indices.insert(m.indices.end(), {a, c, b, a, d, c});
+        }
+    return m;
+}
+
+// The header's definition, corner by corner and plainly: for each corner, the sum of the unit
+// normals of the triangles at its position within the crease of its own, weighted by their
+// angle there (std::acos), made unit length.
+std::vector<glm::vec3> definedNormals(const Mesh &m, float creaseDegrees)
+{
+    const std::size_t corners = m.indices.size();
+    std::vector<glm::vec3> face(corners);
+    std::vector<float> angle(corners);
+    std::map<std::tuple<float, float, float>, std::vector<std::size_t>> at;
+    for (std::size_t c = 0; c < corners; ++c) {
+        const std::size_t t = c / 3, k = c % 3;
+        const glm::vec3 &p = m.positions[m.indices[c]];
+        const glm::vec3 &q = m.positions[m.indices[3 * t + (k + 1) % 3]];
+        const glm::vec3 &r = m.positions[m.indices[3 * t + (k + 2) % 3]];
+        face[c] = glm::normalize(glm::cross(q - p, r - p));
+        angle[c] = std::acos(
+            glm::clamp(glm::dot(glm::normalize(q - p), glm::normalize(r - p)), -1.0f, 1.0f));
+        at[{p.x, p.y, p.z}].push_back(c);
+    }
+    const float limit = std::cos(glm::radians(creaseDegrees)) - 1e-5f;
+    std::vector<glm::vec3> normals(corners);
+    for (std::size_t c = 0; c < corners; ++c) {
+        const glm::vec3 &p = m.positions[m.indices[c]];
+        glm::vec3 sum(0.0f);
+        for (const std::size_t d : at[{p.x, p.y, p.z}])
+            if (glm::dot(face[c], face[d]) >= limit)
+                sum += angle[d] * face[d];
+        normals[c] = glm::normalize(sum);
+    }
+    return normals;
 }
 
 } // namespace
@@ -222,6 +282,43 @@ private slots:
         object.shape = Shape::Torus;
         object.tessellation = 60;
         QCOMPARE(objectMeshWork(object, nullptr), shapeTriangleCount(Shape::Torus, 60));
+    }
+
+    // Smooth meshes with one vertex per position take a fast path (no grouping of corners);
+    // a crease, a seam or a spike sends them down the general one. Both give the definition.
+    void normalsFollowTheDefinition_data()
+    {
+        QTest::addColumn<int>("mesh");
+        QTest::addColumn<float>("crease");
+        QTest::newRow("seamless torus, 30 degrees (fast)") << 0 << 30.0f;
+        QTest::newRow("seamless torus, 180 degrees (fast)") << 0 << 180.0f;
+        QTest::newRow("seamless torus, 0 degrees (flat)") << 0 << 0.0f;
+        QTest::newRow("torus with a spike, 30 degrees") << 1 << 30.0f;
+        QTest::newRow("torus with seams, 30 degrees") << 2 << 30.0f;
+        QTest::newRow("cube, 30 degrees") << 3 << 30.0f;
+        QTest::newRow("cube, 100 degrees") << 3 << 100.0f;
+    }
+    void normalsFollowTheDefinition()
+    {
+        QFETCH(int, mesh);
+        QFETCH(float, crease);
+        Mesh in = mesh == 0 || mesh == 1 ? seamlessTorus(72, 36)
+                  : mesh == 2            ? withoutNormals(makeTorus(72, 36))
+                                         : withoutNormals(makeCube());
+        if (mesh == 1)
+            in.positions[100] *= 1.6f; // its faces meet at more than the crease
+        const std::optional<Mesh> out = withGeneratedNormals(in, crease);
+        QVERIFY(out);
+        QCOMPARE(out->indices.size(), in.indices.size());
+        const std::vector<glm::vec3> defined = definedNormals(in, crease);
+        float worst = 1.0f;
+        for (std::size_t c = 0; c < in.indices.size(); ++c) {
+            QCOMPARE(out->positions[out->indices[c]], in.positions[in.indices[c]]);
+            worst = std::min(worst, glm::dot(out->normals[out->indices[c]], defined[c]));
+        }
+        QVERIFY2(worst > 0.99999f, qPrintable(QString::number(double(worst), 'g', 8)));
+        if (mesh == 0 && crease > 0.0f) // nothing to split: every vertex kept as it was
+            QCOMPARE(out->vertexCount(), in.vertexCount());
     }
 
     void cancelStops()
