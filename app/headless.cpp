@@ -80,12 +80,50 @@ QJsonArray bytes(const glm::vec3 &v)
                       int(std::lround(v.z * 255.0f))};
 }
 
+// The end of a headless run that went well: what it used (the mesh, the driver's copies of
+// it, the context) is the system's to free, at once; tearing it all down took about 50 ms of
+// a 1M-triangle --render (issue 14). The sanitizer build tears down as usual, so that its leak
+// check sees the whole run. Only once the import helper has finished: its QProcess is what
+// ends a helper still running.
+int leave(int code)
+{
+#ifdef LIGHTBENCH_SANITIZE
+    return code;
+#else
+    std::fflush(nullptr);
+    std::_Exit(code);
+#endif
+}
+
 void printLine(const QByteArray &line, FILE *stream)
 {
     std::fputs(line.constData(), stream);
     std::fputc('\n', stream);
     std::fflush(stream);
 }
+
+// With LIGHTBENCH_PHASES set, a run's parts as one JSON line on stderr: for each, the
+// milliseconds since the run began when it ended (bench/mesh.sh's breakdown).
+class PhaseLog
+{
+public:
+    PhaseLog() { m_clock.start(); }
+    void mark(const char *phase)
+    {
+        if (m_on)
+            m_marks[phase] = std::round(double(m_clock.nsecsElapsed()) * 1e-5) / 10.0;
+    }
+    void print() const
+    {
+        if (m_on)
+            printLine("phases: " + QJsonDocument(m_marks).toJson(QJsonDocument::Compact), stderr);
+    }
+
+private:
+    bool m_on = qEnvironmentVariableIsSet("LIGHTBENCH_PHASES");
+    QElapsedTimer m_clock;
+    QJsonObject m_marks;
+};
 
 } // namespace
 
@@ -150,6 +188,7 @@ QString formatDiagnostic(const Diagnostic &d, const CommandLine &cl)
 
 int runHeadless(const CommandLine &cl, const Scene &requested)
 {
+    PhaseLog phases;
     Scene scene = requested;
     // The helper reads the mesh file while this process sets up OpenGL.
     ImportProcess import;
@@ -167,6 +206,7 @@ int runHeadless(const CommandLine &cl, const Scene &requested)
         printLine("lightbench: " + error.toUtf8(), stderr);
         return 1;
     }
+    phases.mark("openGl");
     if (!scene.object.meshPath.isEmpty()) {
         if (import.isRunning())
             waiting.exec();
@@ -174,6 +214,7 @@ int runHeadless(const CommandLine &cl, const Scene &requested)
             printLine("lightbench: " + imported.error.toUtf8(), stderr);
             return 1;
         }
+        phases.mark("import");
         offscreen.setMeshFile(imported.file);
         if (scene.object.adoptFileMaterial)
             scene.material = adoptMaterial(scene.material, imported.file->material);
@@ -198,30 +239,40 @@ int runHeadless(const CommandLine &cl, const Scene &requested)
             return 0;
     }
 
+    // Past here only pixels are needed, except by the probe: a big mesh's frame holds one
+    // copy of it (the driver's) instead of three.
+    const double loadSeconds = imported.ok() ? imported.file->seconds : 0.0;
+    const qint64 helperPeakKB = imported.ok() ? imported.file->helperPeakKB : 0;
+    if (!cl.probe) {
+        offscreen.dropCpuMeshes(scene);
+        imported.file.reset();
+    }
+    phases.mark("meshToGpu");
+
     if (cl.benchFrames > 0) {
         offscreen.renderFrames(scene, 3); // warm-up: uploads, shader variants
         QElapsedTimer timer;
         timer.start();
         offscreen.renderFrames(scene, cl.benchFrames);
         const double seconds = double(timer.nsecsElapsed()) * 1e-9;
-        const Mesh &mesh = offscreen.objectMesh(scene);
         QJsonObject o;
         o["frames"] = cl.benchFrames;
         o["seconds"] = seconds;
         o["fps"] = double(cl.benchFrames) / seconds;
-        o["triangles"] = qint64(mesh.triangleCount());
+        o["triangles"] = qint64(offscreen.objectTriangleCount());
         o["size"] = QString("%1x%2").arg(cl.size.width()).arg(cl.size.height());
         rusage usage{};
         getrusage(RUSAGE_SELF, &usage);
         o["peakMB"] = double(usage.ru_maxrss) / 1024.0; // this process, not the helper
-        if (imported.ok()) {
-            o["loadSeconds"] = imported.file->seconds;
-            o["helperPeakMB"] = double(imported.file->helperPeakKB) / 1024.0;
+        if (!scene.object.meshPath.isEmpty()) {
+            o["loadSeconds"] = loadSeconds;
+            o["helperPeakMB"] = double(helperPeakKB) / 1024.0;
         }
         printLine(QJsonDocument(o).toJson(QJsonDocument::Compact), stdout);
     }
 
     const QImage frame = offscreen.render(scene);
+    phases.mark("frame");
     if (offscreen.wasReset()) { // a GPU's recovery: the frame is no picture
         const QString why = "the driver reset the OpenGL context while it drew this frame";
         if (cl.hasUserProgram())
@@ -240,6 +291,8 @@ int runHeadless(const CommandLine &cl, const Scene &requested)
             printLine("lightbench: --render: cannot write " + error.toUtf8(), stderr);
             return 1;
         }
+    phases.mark("png");
+    phases.print();
     if (scene.compare.mode == CompareMode::Difference) {
         const DifferenceStats &d = offscreen.renderer().difference();
         QJsonObject o;
@@ -258,7 +311,7 @@ int runHeadless(const CommandLine &cl, const Scene &requested)
             o["side"] = view.sideB ? "B" : "A";
         printLine(QJsonDocument(o).toJson(QJsonDocument::Compact), stdout);
     }
-    return 0;
+    return leave(0);
 }
 
 } // namespace lb

@@ -46,6 +46,7 @@ public:
     void drawNormalLines(QOpenGLExtraFunctions &gl) const;
 
     bool hasTriangles() const { return m_indexCount > 0; }
+    std::uint64_t triangleCount() const { return m_indexCount / 3; }
     bool hasVertices() const { return m_vertexCount > 0; }
     // Fewer per call than GL allows: the same pixels, in more calls (tests draw big meshes'
     // pieces with small ones this way).

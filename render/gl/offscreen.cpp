@@ -65,6 +65,7 @@ void OffscreenRenderer::setObjectMesh(std::shared_ptr<const Mesh> mesh)
 
 const Mesh &OffscreenRenderer::objectMesh(const Scene &scene)
 {
+    Q_ASSERT(!m_gpuOnly);
     if (m_meshGiven)
         return *m_renderer.objectMesh();
     const MeshFile *file = scene.object.meshPath.isEmpty() ? nullptr : m_file.get();
@@ -76,15 +77,57 @@ const Mesh &OffscreenRenderer::objectMesh(const Scene &scene)
     return *m_renderer.objectMesh();
 }
 
+void OffscreenRenderer::prepareObject(const Scene &scene)
+{
+    if (!m_gpuOnly)
+        objectMesh(scene);
+}
+
+void OffscreenRenderer::dropCpuMeshes(const Scene &scene)
+{
+    prepareObject(scene);
+    m_context.makeCurrent(&m_surface);
+    m_renderer.uploadObjectAndDropMesh();
+    m_file.reset();
+    m_gpuOnly = true;
+}
+
 QImage OffscreenRenderer::render(const Scene &scene)
 {
-    objectMesh(scene);
+    prepareObject(scene);
     m_context.makeCurrent(&m_surface);
     m_fbo->bind();
     m_renderer.render(scene, m_size);
-    QImage image = m_fbo->toImage(); // flipped to the top-left origin of --probe and QImage
+    QImage image = readFrame();
     m_fbo->release();
-    return image.convertToFormat(QImage::Format_RGB32);
+    return image;
+}
+
+QImage OffscreenRenderer::readFrame()
+{
+    // Read straight into the image that is returned: QOpenGLFramebufferObject::toImage and a
+    // conversion to RGB32 made two more of 8 MB at 1920x1080. GL_BGRA bytes are QImage's
+    // 0xAARRGGBB words on a little-endian machine.
+    static_assert(Q_BYTE_ORDER == Q_LITTLE_ENDIAN, "GL_BGRA bytes read as 0xAARRGGBB words");
+    QImage image(m_size, QImage::Format_ARGB32_Premultiplied);
+    QOpenGLFunctions &gl = *m_context.functions();
+    gl.glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    gl.glReadPixels(0, 0, m_size.width(), m_size.height(), GL_BGRA, GL_UNSIGNED_BYTE,
+                    image.bits());
+    // A program that writes alpha below 1 gets what toImage() gave it (the framebuffer taken
+    // as premultiplied, then made opaque), converted in place; opaque pixels are as read.
+    bool opaque = true;
+    for (int y = 0; y < image.height() && opaque; ++y) {
+        const auto *row = reinterpret_cast<const QRgb *>(image.constScanLine(y));
+        for (int x = 0; x < image.width(); ++x)
+            opaque = opaque && qAlpha(row[x]) == 255;
+    }
+    if (opaque)
+        image.reinterpretAsFormat(QImage::Format_RGB32);
+    else
+        image.convertTo(QImage::Format_RGB32);
+    image.mirror(false, true); // rows top first, as --probe and QImage count them
+    return image;
 }
 
 ProgramBuild OffscreenRenderer::useProgram(const QString &vertexSource,
@@ -96,7 +139,7 @@ ProgramBuild OffscreenRenderer::useProgram(const QString &vertexSource,
 
 void OffscreenRenderer::renderFrames(const Scene &scene, int frames)
 {
-    objectMesh(scene);
+    prepareObject(scene);
     m_context.makeCurrent(&m_surface);
     m_fbo->bind();
     for (int i = 0; i < frames; ++i)
@@ -107,7 +150,7 @@ void OffscreenRenderer::renderFrames(const Scene &scene, int frames)
 
 double OffscreenRenderer::timeFrame(const Scene &scene, QSize size)
 {
-    objectMesh(scene);
+    prepareObject(scene);
     m_context.makeCurrent(&m_surface);
     QOpenGLFramebufferObjectFormat format;
     format.setAttachment(QOpenGLFramebufferObject::Depth);

@@ -47,8 +47,15 @@ public:
     bool wasReset();
     // The loaded file the scene's object names (--mesh); nullptr draws the shapes.
     void setMeshFile(std::shared_ptr<const MeshFile> file) { m_file = std::move(file); }
-    // The mesh drawn for `scene`, built when the object settings ask for another one.
+    // The mesh drawn for `scene`, built when the object settings ask for another one. Not
+    // after dropCpuMeshes().
     const Mesh &objectMesh(const Scene &scene);
+    // For frames that need only pixels from now on (the command line without --probe): the
+    // object of `scene` goes to the GPU now, and the file's mesh and the drawn one are let go,
+    // so that a big mesh's draw holds one copy of it, the driver's. The frames after draw
+    // that object whatever their scene's object settings say.
+    void dropCpuMeshes(const Scene &scene);
+    std::uint64_t objectTriangleCount() const { return m_renderer.objectTriangleCount(); }
     // Draws this mesh for every scene from now on, whatever its object says (the trial
     // helper is given the window's mesh).
     void setObjectMesh(std::shared_ptr<const Mesh> mesh);
@@ -62,6 +69,11 @@ private:
     std::shared_ptr<const MeshFile> m_file;
     std::optional<ObjectMeshKey> m_key;
     bool m_meshGiven = false;
+    bool m_gpuOnly = false; // dropCpuMeshes() was called
+    // Builds the object's mesh for `scene` unless it is given or only on the GPU.
+    void prepareObject(const Scene &scene);
+    // The bound framebuffer's pixels, top row first, in one image.
+    QImage readFrame();
     ResetStatus m_resetStatus;
 };
 

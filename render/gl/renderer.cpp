@@ -168,6 +168,12 @@ void Renderer::uploadObject()
     }
 }
 
+void Renderer::uploadObjectAndDropMesh()
+{
+    uploadObject();
+    m_objectMesh.reset();
+}
+
 void Renderer::render(const Scene &scene, QSize pixels)
 {
     if (!m_initialized || pixels.isEmpty())

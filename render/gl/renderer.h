@@ -90,6 +90,11 @@ public:
     // draws only the background and the light.
     void setObject(std::shared_ptr<const Mesh> mesh, std::shared_ptr<const Texture> texture);
     const Mesh *objectMesh() const { return m_objectMesh.get(); }
+    // Uploads the object now and lets go of its CPU mesh (objectMesh() is nullptr after; the
+    // frames draw what was uploaded): frames that need only pixels keep one copy of a big
+    // mesh, the driver's.
+    void uploadObjectAndDropMesh();
+    std::uint64_t objectTriangleCount() const { return m_object.triangleCount(); }
     // The most indices one draw call of the object takes (GpuMesh::setMaxPerDraw).
     void setMaxPerDraw(std::uint64_t most) { m_object.setMaxPerDraw(most); }
     const std::shared_ptr<const Mesh> &sharedObjectMesh() const { return m_objectMesh; }

@@ -59,6 +59,31 @@ private slots:
 
     void cleanup() { m_offscreen.useProgram({}, {}); } // an empty source never replaces
 
+    // A program that writes alpha below 1: the frame is read as the framebuffer taken as
+    // premultiplied and made opaque, what QOpenGLFramebufferObject::toImage() and a
+    // conversion gave before the frame was read into one image (issue 14), and what the
+    // window's export gives.
+    void translucentOutputIsReadAsPremultiplied()
+    {
+        const ProgramBuild build = m_offscreen.useProgram(
+            kPlainVertex, "precision mediump float;\n"
+                          "void main() { gl_FragColor = vec4(0.25, 0.5, 0.125, 0.5); }\n");
+        QVERIFY(build.ok());
+        Scene s;
+        s.showLight = false;
+        const QImage frame = m_offscreen.render(s);
+        QCOMPARE(frame.format(), QImage::Format_RGB32);
+        QImage stored(1, 1, QImage::Format_ARGB32_Premultiplied);
+        stored.setPixel(0, 0, qRgba(64, 128, 32, 128)); // what the framebuffer holds
+        const QRgb expected = stored.convertToFormat(QImage::Format_RGB32).pixel(0, 0);
+        const QRgb centre = frame.pixel(kSize.width() / 2, kSize.height() / 2);
+        QVERIFY2(std::abs(qRed(centre) - qRed(expected)) <= 1 &&
+                     std::abs(qGreen(centre) - qGreen(expected)) <= 1 &&
+                     std::abs(qBlue(centre) - qBlue(expected)) <= 1 && qAlpha(centre) == 255,
+                 qPrintable(QString("%1 against %2").arg(centre, 8, 16).arg(expected, 8, 16)));
+        QVERIFY(qRed(centre) >= 126); // 0.25 of a half: unpremultiplied to about a half
+    }
+
     void slidesShadersAsPasted_data()
     {
         QTest::addColumn<QString>("name");
