@@ -123,6 +123,8 @@ const OptionSpec kOptions[] = {
      "Normals: the mesh's own (generated smooth when it has none), smooth or flat."},
     {"crease-angle", "DEGREES", "Generated smooth normals stop at sharper edges (0 to 180)."},
     {"show-normals", "on|off", "Draw each vertex normal as a short line."},
+    {"cull-back-faces", "on|off",
+     "Leave out triangles facing away (closed meshes: the same picture, drawn faster)."},
     {"file-material", "on|off", "Take Ka, Kd, Ks and shininess from the mesh file."},
     {"import-memory-limit", "MB",
      "Memory limit of the import helper (default: half of physical memory)."},
@@ -357,6 +359,7 @@ void parseInto(const QCommandLineParser &parser, CommandLine &cl)
     }
     const std::pair<const char *, bool ObjectSettings::*> objectSwitches[] = {
         {"show-normals", &ObjectSettings::showNormals},
+        {"cull-back-faces", &ObjectSettings::cullBackFaces},
         {"file-material", &ObjectSettings::adoptFileMaterial}};
     for (const auto &[name, member] : objectSwitches) {
         if (given(name)) {

@@ -2,7 +2,10 @@
 # Mesh files: load plus first frame of a generated 1M-triangle binary PLY at 1920x1080,
 # lightbench against f3d (Debian's f3d package), alternating runs inside one Xvfb, wall time
 # and peak memory (GNU time's maximum resident set: the process or its largest child); then
-# a 5M-triangle file: its load and the frame rate at 1280x720.
+# a 5M-triangle file: its load and the frame rate at 1280x720. The tori are closed, so
+# lightbench culls back faces (--cull-back-faces on: the same picture); f3d runs as it comes.
+# Then lightbench's own breakdown (LIGHTBENCH_PHASES): milliseconds since its run began when
+# each part ended, medians over the runs.
 # Usage: bench/mesh.sh [RUNS]   (default 7; builds first, like scripts/run; needs python3)
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/../scripts/setup.sh"
@@ -24,19 +27,22 @@ trap 'rm -rf "$out"' EXIT
 
 median() { sort -g | awk '{a[NR]=$1} END {print a[int((NR+1)/2)]}'; }
 
-# timed NAME COMMAND...: appends "seconds kilobytes" to $out/NAME
+# timed NAME COMMAND...: appends "seconds kilobytes" to $out/NAME, and lightbench's
+# phases line (if any) to $out/NAME.phases
 timed() {
     local name=$1; shift
     /usr/bin/time -f "%e %M" -o "$out/t" "$@" >/dev/null 2>"$out/err" ||
         { cat "$out/err" >&2; exit 1; }
     cat "$out/t" >>"$out/$name"
+    sed -n 's/^phases: //p' "$out/err" >>"$out/$name.phases"
 }
 
 echo "| file | tool | median wall (s) | median peak (MB) | wall runs (s) |"
 echo "|---|---|---|---|---|"
 for file in torus-1m.ply torus-1m-normals.ply; do
     for ((i = 0; i < RUNS; i++)); do # alternating, so drifts hit both alike
-        timed "lb-$file" "$exe" --mesh "$DATA/$file" --render "$out/lb.png" --size 1920x1080
+        LIGHTBENCH_PHASES=1 timed "lb-$file" "$exe" --mesh "$DATA/$file" --render "$out/lb.png" \
+            --size 1920x1080 --cull-back-faces on
         timed "f3d-$file" f3d --output="$out/f3d.png" --resolution=1920,1080 "$DATA/$file"
     done
     for tool in lb f3d; do
@@ -52,12 +58,28 @@ for file in torus-1m.ply torus-1m-normals.ply; do
 done
 
 echo
-echo "5M triangles, 1280x720, $RUNS runs (--bench-frames 20 after the load):"
-for ((i = 0; i < RUNS; i++)); do
-    "$exe" --mesh "$DATA/torus-5m.ply" --size 1280x720 --bench-frames 20 >>"$out/5m"
+echo "lightbench's phases (ms since its run began, medians; wall includes start and exit):"
+for file in torus-1m.ply torus-1m-normals.ply; do
+    line="$file:"
+    for key in openGl import meshToGpu frame png; do
+        v=$(sed -E "s/.*\"$key\":([0-9.]+).*/\1/" "$out/lb-$file.phases" | median)
+        line+=" $key $v"
+    done
+    echo "$line"
 done
-for key in loadSeconds fps peakMB helperPeakMB; do
-    v=$(sed -E "s/.*\"$key\":([0-9.e+-]+).*/\1/" "$out/5m" | median)
-    printf '%s median %s (runs: %s)\n' "$key" "$v" \
-        "$(sed -E "s/.*\"$key\":([0-9.e+-]+).*/\1/" "$out/5m" | xargs printf '%.2f ')"
+
+echo
+echo "5M triangles, 1280x720, $RUNS runs (--bench-frames 20 after the load), culling off and on:"
+for ((i = 0; i < RUNS; i++)); do
+    for cull in off on; do
+        "$exe" --mesh "$DATA/torus-5m.ply" --size 1280x720 --bench-frames 20 \
+            --cull-back-faces $cull >>"$out/5m-$cull"
+    done
+done
+for cull in off on; do
+    for key in loadSeconds fps peakMB helperPeakMB; do
+        v=$(sed -E "s/.*\"$key\":([0-9.e+-]+).*/\1/" "$out/5m-$cull" | median)
+        printf 'culling %s: %s median %s (runs: %s)\n' $cull "$key" "$v" \
+            "$(sed -E "s/.*\"$key\":([0-9.e+-]+).*/\1/" "$out/5m-$cull" | xargs printf '%.2f ')"
+    done
 done

@@ -71,6 +71,13 @@ ObjectPanel::ObjectPanel(SceneDocument *document, QWidget *parent)
     connect(m_showNormals, &QCheckBox::toggled, this,
             [this](bool on) { edit([&](Scene &s) { s.object.showNormals = on; }); });
     form->addRow(m_showNormals);
+    m_cullBackFaces = new QCheckBox(tr("Cull back faces (closed meshes)"), this);
+    m_cullBackFaces->setToolTip(tr("Triangles facing away from the camera are not drawn: the "
+                                   "same picture for a closed mesh, about twice as fast; an "
+                                   "open mesh shows holes where its inside was"));
+    connect(m_cullBackFaces, &QCheckBox::toggled, this,
+            [this](bool on) { edit([&](Scene &s) { s.object.cullBackFaces = on; }); });
+    form->addRow(m_cullBackFaces);
     m_adoptMaterial = new QCheckBox(tr("Use the mesh file's material"), this);
     m_adoptMaterial->setToolTip(tr("The mesh file's ambient, diffuse and specular colours "
                                    "and shininess replace Ka, Kd, Ks and shininess: now, and "
@@ -123,7 +130,7 @@ void ObjectPanel::refresh(const Scene &scene)
 {
     const ObjectSettings &o = scene.object;
     const QSignalBlocker b1(m_shape), b2(m_tessellation), b3(m_autoRotate), b6(m_normals),
-        b7(m_crease), b8(m_showNormals), b9(m_adoptMaterial);
+        b7(m_crease), b8(m_showNormals), b9(m_adoptMaterial), b10(m_cullBackFaces);
     while (m_shape->count() > kShapeCount)
         m_shape->removeItem(kShapeCount);
     if (o.meshPath.isEmpty()) {
@@ -140,6 +147,7 @@ void ObjectPanel::refresh(const Scene &scene)
     m_crease->setValue(double(o.creaseDegrees));
     m_crease->setEnabled(o.normals != NormalMode::Flat);
     m_showNormals->setChecked(o.showNormals);
+    m_cullBackFaces->setChecked(o.cullBackFaces);
     m_adoptMaterial->setChecked(o.adoptFileMaterial);
     for (int i = 0; i < 3; ++i) {
         const QSignalBlocker b4(m_rotation[std::size_t(i)]), b5(m_scale[std::size_t(i)]);

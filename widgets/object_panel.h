@@ -28,6 +28,7 @@ public:
     QComboBox *normalsCombo() const { return m_normals; }
     QDoubleSpinBox *creaseBox() const { return m_crease; }
     QCheckBox *showNormalsCheck() const { return m_showNormals; }
+    QCheckBox *cullBackFacesCheck() const { return m_cullBackFaces; }
     QCheckBox *adoptMaterialCheck() const { return m_adoptMaterial; }
 
 signals:
@@ -48,6 +49,7 @@ private:
     QComboBox *m_normals;
     QDoubleSpinBox *m_crease;
     QCheckBox *m_showNormals;
+    QCheckBox *m_cullBackFaces;
     QCheckBox *m_adoptMaterial;
 };
 

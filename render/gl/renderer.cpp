@@ -230,7 +230,13 @@ void Renderer::drawView(const Scene &scene, const BuiltProgram &program, QRect v
     uploadUniforms(*this, program.build.uniforms, scene, frames);
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, m_objectTexture ? m_objectTextureGl.id() : m_checkerTexture.id());
+    if (scene.object.cullBackFaces) {
+        glEnable(GL_CULL_FACE);
+        glFrontFace(mirrors(frames) ? GL_CW : GL_CCW);
+    }
     m_object.draw(*this);
+    glDisable(GL_CULL_FACE);
+    glFrontFace(GL_CCW);
     glBindTexture(GL_TEXTURE_2D, 0);
     if (scene.object.showNormals)
         m_overlays.drawNormals(*this, m_object, scene, frames);

@@ -2,6 +2,7 @@
 
 #include <glm/ext/matrix_transform.hpp>
 #include <glm/gtc/matrix_inverse.hpp>
+#include <glm/matrix.hpp>
 #include <glm/trigonometric.hpp>
 
 namespace lb {
@@ -31,6 +32,11 @@ Frames computeFrames(const Scene &scene, float aspect)
     f.viewNormals = normalMatrix(f.view);
     f.projection = scene.camera.projection(aspect, scene.shading.projection);
     return f;
+}
+
+bool mirrors(const Frames &frames)
+{
+    return glm::determinant(glm::mat3(frames.modelView)) < 0.0f;
 }
 
 glm::vec4 lightInEye(const Frames &frames, const glm::vec4 &light, LightFrame frame)

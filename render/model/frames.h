@@ -25,6 +25,10 @@ glm::mat4 modelMatrix(const ObjectSettings &object);
 glm::mat4 normalMatrix(const glm::mat4 &m);
 Frames computeFrames(const Scene &scene, float aspect);
 
+// Whether the model-view mirrors (a negative scale): the mesh's counter-clockwise faces then
+// reach the screen clockwise, and back-face culling must keep the clockwise ones.
+bool mirrors(const Frames &frames);
+
 // The light in eye coordinates, as the slides' variants I, II and III compute it:
 // camera: as given; world: mView for a point, mViewNormals for a direction;
 // object: mModelView for a point, mNormals for a direction. The result keeps w.

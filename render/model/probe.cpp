@@ -17,14 +17,15 @@ struct Hit
     glm::vec3 barycentric;
 };
 
-// Möller-Trumbore; both faces count, as the renderer does not cull.
+// Möller-Trumbore. `front` > 0 takes only triangles counter-clockwise as the ray sees them
+// (front faces to GL), < 0 only clockwise ones, 0 both: as the renderer culls or not.
 std::optional<Hit> intersect(const glm::vec3 &origin, const glm::vec3 &dir, const glm::vec3 &a,
-                             const glm::vec3 &b, const glm::vec3 &c)
+                             const glm::vec3 &b, const glm::vec3 &c, float front)
 {
     const glm::vec3 e1 = b - a, e2 = c - a;
     const glm::vec3 p = glm::cross(dir, e2);
     const float det = glm::dot(e1, p);
-    if (std::abs(det) < 1e-12f)
+    if (std::abs(det) < 1e-12f || det * front < 0.0f)
         return std::nullopt;
     const float inv = 1.0f / det;
     const glm::vec3 s = origin - a;
@@ -82,11 +83,12 @@ ProbeResult probePixel(const Scene &scene, const Mesh &mesh, const Texture &text
     for (std::size_t i = 0; i < mesh.vertexCount(); ++i)
         eyePositions[i] = glm::vec3(frames.modelView * glm::vec4(mesh.positions[i], 1.0f));
 
+    const float front = !scene.object.cullBackFaces ? 0.0f : mirrors(frames) ? -1.0f : 1.0f;
     float nearest = std::numeric_limits<float>::max();
     for (std::size_t tri = 0; tri < mesh.triangleCount(); ++tri) {
         const std::uint32_t *idx = &mesh.indices[tri * 3];
         const auto hit = intersect(origin, dir, eyePositions[idx[0]], eyePositions[idx[1]],
-                                   eyePositions[idx[2]]);
+                                   eyePositions[idx[2]], front);
         if (hit && hit->t < nearest) {
             nearest = hit->t;
             r.hit = true;

@@ -198,9 +198,10 @@ bool operator==(const ShadingSettings &a, const ShadingSettings &b)
 bool operator==(const ObjectSettings &a, const ObjectSettings &b)
 {
     return std::tie(a.shape, a.tessellation, a.meshPath, a.normals, a.creaseDegrees, a.showNormals,
-                    a.adoptFileMaterial, a.rotationDegrees, a.scale, a.autoRotate) ==
+                    a.cullBackFaces, a.adoptFileMaterial, a.rotationDegrees, a.scale,
+                    a.autoRotate) ==
            std::tie(b.shape, b.tessellation, b.meshPath, b.normals, b.creaseDegrees, b.showNormals,
-                    b.adoptFileMaterial, b.rotationDegrees, b.scale, b.autoRotate);
+                    b.cullBackFaces, b.adoptFileMaterial, b.rotationDegrees, b.scale, b.autoRotate);
 }
 
 bool operator==(const OrbitCamera &a, const OrbitCamera &b)

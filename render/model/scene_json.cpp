@@ -203,6 +203,7 @@ QJsonObject Scene::toJson() const
     ob["normals"] = toName(object.normals);
     ob["creaseAngle"] = double(object.creaseDegrees);
     ob["showNormals"] = object.showNormals;
+    ob["cullBackFaces"] = object.cullBackFaces;
     ob["adoptFileMaterial"] = object.adoptFileMaterial;
 
     QJsonObject c;
@@ -290,6 +291,7 @@ Scene Scene::fromJson(const QJsonObject &json, QStringList *ignored)
     r.word(ob, "normals", "object", parseNormalMode, sc.object.normals);
     r.number(ob, "creaseAngle", "object", sc.object.creaseDegrees, 0.0f, limits::kMaxCreaseDegrees);
     r.boolean(ob, "showNormals", "object", sc.object.showNormals);
+    r.boolean(ob, "cullBackFaces", "object", sc.object.cullBackFaces);
     r.boolean(ob, "adoptFileMaterial", "object", sc.object.adoptFileMaterial);
 
     const QJsonObject c = r.object(json, "camera", "camera");

@@ -271,6 +271,61 @@ private slots:
         }
     }
 
+    // Back-face culling (issue 14, Object panel): a closed mesh draws the same pixels with it
+    // as without, also mirrored by a negative scale (whose front faces reach the screen
+    // clockwise), and still matches the reference.
+    void cullingLeavesClosedMeshesAsTheyAre_data()
+    {
+        QTest::addColumn<int>("shape");
+        QTest::addColumn<float>("scaleX");
+        QTest::newRow("sphere") << int(Shape::Sphere) << 1.3f;
+        QTest::newRow("sphere mirrored") << int(Shape::Sphere) << -1.3f;
+        QTest::newRow("torus mirrored") << int(Shape::Torus) << -1.0f;
+        QTest::newRow("cube") << int(Shape::Cube) << 1.0f;
+    }
+    void cullingLeavesClosedMeshesAsTheyAre()
+    {
+        QFETCH(int, shape);
+        QFETCH(float, scaleX);
+        Scene s = testScene();
+        s.object.shape = Shape(shape);
+        s.object.scale.x = scaleX;
+        const QImage all = m_offscreen.render(s);
+        s.object.cullBackFaces = true;
+        QCOMPARE(largestDifference(all, m_offscreen.render(s)), 0);
+        expectMatch(s, QTest::currentDataTag(), 100, 1);
+    }
+
+    // An open mesh seen from behind: culled, nothing is drawn and the probe finds nothing;
+    // not culled, both see its back. A mirrored plane facing the camera is drawn either way.
+    void culledBackFacesAreNeitherDrawnNorProbed()
+    {
+        Scene s = testScene();
+        s.object.shape = Shape::Plane;
+        s.object.scale = glm::vec3(1.0f);
+        s.object.rotationDegrees = {0.0f, 180.0f, 0.0f};
+        const QPoint centre(kSize.width() / 2, kSize.height() / 2);
+        const auto probeCentre = [&](const Scene &scene) {
+            return probePixel(scene, m_offscreen.objectMesh(scene),
+                              m_offscreen.renderer().texture(), kSize, centre);
+        };
+        const QRgb background = m_offscreen.render(s).pixel(0, 0);
+        QVERIFY(m_offscreen.render(s).pixel(centre) != background);
+        QVERIFY(probeCentre(s).hit);
+        s.object.cullBackFaces = true;
+        const QImage culled = m_offscreen.render(s);
+        for (int y = 0; y < culled.height(); y += 4)
+            for (int x = 0; x < culled.width(); x += 4)
+                QCOMPARE(culled.pixel(x, y), background);
+        QVERIFY(!probeCentre(s).hit);
+
+        s.object.rotationDegrees = glm::vec3(0.0f);
+        s.object.scale.x = -1.0f;
+        QVERIFY(m_offscreen.render(s).pixel(centre) != background);
+        QVERIFY(probeCentre(s).hit);
+        expectMatch(s, "mirrored plane, culled", 100, 0);
+    }
+
     void lightMarkerIsDrawnUnlit()
     {
         Scene s;

@@ -38,7 +38,7 @@ private slots:
                     "--is 0.5,0.5,0.5 --ka 0,1,0 --kd 1,1,0 --ks 0.2,0.2,0.2 "
                     "--shininess 250 --projection orthographic --camera-orbit 30,-10 "
                     "--model-rotate 10,20,30 --model-scale 2,1,0.5 --lighting off "
-                    "--vertex-colors on --texture on --show-light off");
+                    "--vertex-colors on --texture on --show-light off --cull-back-faces on");
         QCOMPARE(s.object.shape, Shape::Torus);
         QCOMPARE(s.object.tessellation, 30);
         QCOMPARE(s.shading.shading, Shading::Gouraud);
@@ -61,6 +61,7 @@ private slots:
         QVERIFY(s.shading.vertexColors);
         QVERIFY(s.shading.texture);
         QVERIFY(!s.showLight);
+        QVERIFY(s.object.cullBackFaces);
     }
 
     void renderProbeAndSize()

@@ -74,6 +74,7 @@ private slots:
         row("normals", P::Object, [](Scene &s) { s.object.normals = NormalMode::Flat; });
         row("crease", P::Object, [](Scene &s) { s.object.creaseDegrees = 44; });
         row("normal lines", P::Object, [](Scene &s) { s.object.showNormals = true; });
+        row("back-face culling", P::Object, [](Scene &s) { s.object.cullBackFaces = true; });
         row("file material", P::Object, [](Scene &s) { s.object.adoptFileMaterial = true; });
         row("rotation", P::Object, [](Scene &s) { s.object.rotationDegrees.z = 12; });
         row("scale", P::Object, [](Scene &s) { s.object.scale.y = 0.5f; });

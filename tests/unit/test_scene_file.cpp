@@ -30,6 +30,7 @@ SceneFile sampleFile(const QDir &dir)
     f.scene.shading.shading = Shading::Gouraud;
     f.scene.object.meshPath = dir.filePath("meshes/bunny.ply");
     f.scene.object.normals = NormalMode::Flat;
+    f.scene.object.cullBackFaces = true;
     f.scene.camera.orbit(30, -10);
     f.scene.compare.mode = CompareMode::SideBySide;
     f.scene.shaderValues["bands"] = {4.0f};
