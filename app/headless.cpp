@@ -83,8 +83,8 @@ QJsonArray bytes(const glm::vec3 &v)
 // The end of a headless run that went well: what it used (the mesh, the driver's copies of
 // it, the context) is the system's to free, at once; tearing it all down took about 50 ms of
 // a 1M-triangle --render (issue 14). The sanitizer build tears down as usual, so that its leak
-// check sees the whole run. Only once the import helper has finished: its QProcess is what
-// ends a helper still running.
+// check sees the whole run. A helper still running when this process ends is killed by the
+// system (PR_SET_PDEATHSIG in import_main.cpp), as ~ImportProcess would have done.
 int leave(int code)
 {
 #ifdef LIGHTBENCH_SANITIZE

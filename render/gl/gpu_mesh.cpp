@@ -74,7 +74,7 @@ void GpuMesh::upload(QOpenGLExtraFunctions &gl, const Mesh &mesh)
         const GLsizeiptr bytes =
             present[i] ? GLsizeiptr(n * std::size_t(sizes[i]) * sizeof(float)) : 0;
         gl.glBufferData(GL_ARRAY_BUFFER, bytes, present[i] ? data[i] : nullptr, GL_STATIC_DRAW);
-        if (i == 1 && present[i])
+        if (i == 1 && present[i] && bytes > 0)
             writeNormals(gl, mesh.normals, bytes);
         gl.glBindVertexArray(m_triangles.id());
         if (present[i]) {

@@ -65,7 +65,8 @@ void OffscreenRenderer::setObjectMesh(std::shared_ptr<const Mesh> mesh)
 
 const Mesh &OffscreenRenderer::objectMesh(const Scene &scene)
 {
-    Q_ASSERT(!m_gpuOnly);
+    if (m_gpuOnly) // the file's mesh is gone: rebuilding would draw the panel's shape
+        qFatal("lightbench: OffscreenRenderer::objectMesh() after dropCpuMeshes()");
     if (m_meshGiven)
         return *m_renderer.objectMesh();
     const MeshFile *file = scene.object.meshPath.isEmpty() ? nullptr : m_file.get();
@@ -112,8 +113,7 @@ QImage OffscreenRenderer::readFrame()
     QImage image(m_size, QImage::Format_ARGB32_Premultiplied);
     QOpenGLFunctions &gl = *m_context.functions();
     gl.glPixelStorei(GL_PACK_ALIGNMENT, 4);
-    gl.glReadPixels(0, 0, m_size.width(), m_size.height(), GL_BGRA, GL_UNSIGNED_BYTE,
-                    image.bits());
+    gl.glReadPixels(0, 0, m_size.width(), m_size.height(), GL_BGRA, GL_UNSIGNED_BYTE, image.bits());
     // A program that writes alpha below 1 gets what toImage() gave it (the framebuffer taken
     // as premultiplied, then made opaque), converted in place; opaque pixels are as read.
     bool opaque = true;

@@ -232,6 +232,7 @@ void Renderer::drawView(const Scene &scene, const BuiltProgram &program, QRect v
     glBindTexture(GL_TEXTURE_2D, m_objectTexture ? m_objectTextureGl.id() : m_checkerTexture.id());
     if (scene.object.cullBackFaces) {
         glEnable(GL_CULL_FACE);
+        glCullFace(GL_BACK);
         glFrontFace(mirrors(frames) ? GL_CW : GL_CCW);
     }
     m_object.draw(*this);

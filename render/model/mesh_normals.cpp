@@ -212,7 +212,8 @@ template <typename F> void parallelFor(std::size_t n, std::size_t parts, F &&wor
 // vertex, used by some triangle, and every position takes the fast path of the general loop
 // in withGeneratedNormals (its faces lie within half the crease of their mean). Then each
 // vertex keeps its place and gets the sum of its corners, added in the same order as the
-// general loop adds them: the same mesh, bit for bit, without grouping the corners. Returns
+// general loop adds them: the same mesh, bit for bit, without grouping the corners (positions
+// of over 64 corners get the exact sum, where the general loop bins them). Returns
 // nothing for any other mesh.
 std::optional<Mesh> withoutSplits(const Mesh &mesh, const std::vector<std::uint32_t> &position,
                                   const std::vector<glm::vec3> &faceNormal,
@@ -314,7 +315,7 @@ std::optional<Mesh> withGeneratedNormals(const Mesh &mesh, float creaseDegrees,
     const std::vector<std::uint32_t> position = weldPositions(mesh.positions);
     if (std::optional<Mesh> smooth =
             withoutSplits(mesh, position, faceNormal, angle, threshold, halfThreshold, parts))
-        return smooth;
+        return cancelled() ? std::nullopt : std::move(smooth);
     if (cancelled())
         return std::nullopt;
 
