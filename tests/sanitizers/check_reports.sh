@@ -10,7 +10,8 @@
 # (allocation-size-too-big, out-of-memory), after which the helper ends with its
 # "out of memory" exit code (app/import_main.cpp), which the tests ask for. A file with no
 # finding in it (LeakSanitizer's "Unable to get registers from thread": a process killed by
-# its parent while its leak check ran) is shown and not counted.
+# its parent while its leak check ran; "Tracer caught signal", its tracer's own crash, after
+# which scripts/test runs the failed tests once more) is shown and not counted.
 # Usage: check_reports.sh DIR CANARY
 set -uo pipefail
 dir=$1 canary=$2
