@@ -131,8 +131,17 @@ const OptionSpec kOptions[] = {
     {"import-time-limit", "SECONDS", "Time limit of the import helper (default 300)."},
     {"shading", "gouraud|phong", "Lighting per vertex (Gouraud) or per fragment (Phong)."},
     {"specular", "phong|blinn", "Specular term: Phong (R.V) or Blinn-Phong (N.H)."},
+    {"terms", "ambient,diffuse,specular",
+     "The terms of the model that are on: any of the three, or none (default all); the "
+     "others add nothing."},
     {"frame", "camera|world|object", "Frame the light position is given in."},
     {"light", "X,Y,Z,W", "Light position (W = 1) or direction towards the light (W = 0)."},
+    {"attenuation", "KC,KL,KQ",
+     "Attenuation of light 1 when it is a point: 1 / (KC + KL*d + KQ*d^2) (each 0 to 1000, "
+     "not all 0; default 1,0,0: none)."},
+    {"spot", "DX,DY,DZ,CUTOFF,EXPONENT",
+     "Make light 1 a spotlight: the cone's axis in the light's frame, its half-angle in "
+     "degrees (0 to 180; 180: no spot) and its exponent (0 to 128)."},
     {"ia", "R,G,B", "Ambient intensity of the light, Ia (0 to 1)."},
     {"id", "R,G,B", "Diffuse intensity of the light, Id (0 to 1)."},
     {"is", "R,G,B", "Specular intensity of the light, Is (0 to 1)."},
@@ -301,6 +310,43 @@ void parseInto(const QCommandLineParser &parser, CommandLine &cl)
             fail("light", "a directional light (W = 0) needs a non-zero direction");
         const glm::vec4 p(v[0], v[1], v[2], v[3]);
         add([p](Scene &s) { s.lights[0].position = p; });
+    }
+    if (given("attenuation")) {
+        const glm::vec3 k =
+            vec3Option("attenuation", value("attenuation"), 0.0f, limits::kMaxAttenuation);
+        if (k == glm::vec3(0.0f))
+            fail("attenuation", "KC, KL and KQ cannot all be 0 (the light would be infinite)");
+        add([k](Scene &s) { s.lights[0].attenuation = k; });
+    }
+    if (given("spot")) {
+        const auto v = numbers("spot", value("spot"), 5, "DX,DY,DZ,CUTOFF,EXPONENT");
+        for (int i = 0; i < 3; ++i)
+            checkRange("spot", v[std::size_t(i)], -limits::kMaxCoordinate, limits::kMaxCoordinate);
+        if (v[0] == 0.0f && v[1] == 0.0f && v[2] == 0.0f)
+            fail("spot", "the direction DX,DY,DZ cannot be 0,0,0");
+        if (v[3] < 0.0f || v[3] > limits::kMaxSpotCutoff)
+            fail("spot", QString("the cutoff %1 is outside 0 to 180 degrees").arg(v[3]));
+        if (v[4] < 0.0f || v[4] > limits::kMaxSpotExponent)
+            fail("spot", QString("the exponent %1 is outside 0 to 128").arg(v[4]));
+        const Spot spot{{v[0], v[1], v[2]}, v[3], v[4]};
+        add([spot](Scene &s) { s.lights[0].spot = spot; });
+    }
+    if (given("terms")) {
+        TermSwitches terms{false, false, false};
+        const QString text = value("terms");
+        for (const QString &word : text == "none" ? QStringList() : text.split(',')) {
+            if (word == "ambient")
+                terms.ambient = true;
+            else if (word == "diffuse")
+                terms.diffuse = true;
+            else if (word == "specular")
+                terms.specular = true;
+            else
+                fail("terms", QString("unknown term '%1' (expected ambient, diffuse or specular, "
+                                      "separated by commas)")
+                                  .arg(echoed(word)));
+        }
+        add([terms](Scene &s) { s.shading.terms = terms; });
     }
     const std::pair<const char *, glm::vec3 LightColors::*> lightColours[] = {
         {"ia", &LightColors::ia}, {"id", &LightColors::id}, {"is", &LightColors::is}};

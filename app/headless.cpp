@@ -137,6 +137,13 @@ QJsonObject probeJson(const ProbeResult &probe, const QImage &frame, QPoint pixe
     o["gpu"] = QJsonArray{qRed(gpu), qGreen(gpu), qBlue(gpu)};
     o["shading"] = toName(scene.shading.shading);
     o["specularModel"] = toName(scene.shading.specular);
+    const TermSwitches &on = scene.shading.terms;
+    QJsonArray terms;
+    for (const auto &[name, enabled] :
+         {std::pair{"ambient", on.ambient}, {"diffuse", on.diffuse}, {"specular", on.specular}})
+        if (enabled)
+            terms.append(name);
+    o["terms"] = terms; // those switched on; each light below lists all three
     if (!probe.hit)
         return o;
     const QJsonArray ref = bytes(probe.reference);
@@ -161,13 +168,17 @@ QJsonObject probeJson(const ProbeResult &probe, const QImage &frame, QPoint pixe
         l["NdotL"] = rounded(t.nDotL);
         l[scene.shading.specular == SpecularModel::Blinn ? "NdotH" : "RdotV"] =
             rounded(t.specularAngle);
-        l["ambient"] = array(t.ambient);
+        l["distance"] = rounded(t.distance); // 0 for a directional light
+        l["attenuation"] = rounded(t.attenuation);
+        l["spot"] = rounded(t.spot);
+        l["ambient"] = array(t.ambient); // with attenuation and spot, switched on or not
         l["diffuse"] = array(t.diffuse);
         l["specular"] = array(t.specular);
         lights.append(l);
     }
     o["lights"] = lights;
-    o["ambient"] = array(probe.total.ambient);
+    o["ambient"] = array(probe.total.ambient); // the sums: the terms switched on
+
     o["diffuse"] = array(probe.total.diffuse);
     o["specular"] = array(probe.total.specular);
     o["base"] = array(probe.base);

@@ -113,6 +113,19 @@ void MainWindow::buildMenus()
     addItem(shading, tr("Toggle &Lighting"), QKeySequence(tr("L")), [this] {
         m_document.edit([](Scene &s) { s.shading.lighting = !s.shading.lighting; });
     });
+    // The model taken apart: each term on or off (the built-in programs and any program that
+    // reads uEnableAmbient, uEnableDiffuse, uEnableSpecular).
+    const std::pair<QString, bool TermSwitches::*> terms[] = {
+        {tr("Toggle the &Ambient Term"), &TermSwitches::ambient},
+        {tr("Toggle the &Diffuse Term"), &TermSwitches::diffuse},
+        {tr("Toggle the &Specular Term"), &TermSwitches::specular}};
+    const char *termKeys[] = {"A", "D", "S"};
+    for (int i = 0; i < 3; ++i)
+        addItem(shading, terms[i].first, QKeySequence(tr(termKeys[i])),
+                [this, member = terms[i].second] {
+                    m_document.edit(
+                        [&](Scene &s) { s.shading.terms.*member = !(s.shading.terms.*member); });
+                });
     addItem(shading, tr("&Compare: Off / Side by Side / Wipe / Difference"), QKeySequence(tr("C")),
             [this] {
                 m_document.edit(

@@ -21,12 +21,22 @@ uniform int uLightFrame[MAX_LIGHTS];    // frame of lightPosition: 0 camera, 1 w
 uniform vec3 lightAmb[MAX_LIGHTS];      // Ia
 uniform vec3 lightDif[MAX_LIGHTS];      // Id
 uniform vec3 lightSpe[MAX_LIGHTS];      // Is
+// OpenGL 2.1's attenuation and spotlight: (kc, kl, kq) of 1 / (kc + kl d + kq d^2) for a
+// point light at distance d; the cone's axis in the light's frame, the cosine of its
+// half-angle (-1: no spot) and its exponent. (1, 0, 0) and -1 leave the light as it was.
+uniform vec3 lightAttenuation[MAX_LIGHTS];
+uniform vec3 spotDirection[MAX_LIGHTS];
+uniform float spotCosCutoff[MAX_LIGHTS];
+uniform float spotExponent[MAX_LIGHTS];
 uniform vec3 materialAmb;   // Ka
 uniform vec3 materialDif;   // Kd
 uniform vec3 materialSpe;   // Ks
 uniform float shininess;
 uniform int uSpecularModel; // 0: Phong (R.V), 1: Blinn-Phong (N.H)
 uniform int uProjection;    // 0: perspective, V = -posC; 1: parallel, V = (0,0,1)
+uniform bool uEnableAmbient;  // each term can be switched off to see the others alone
+uniform bool uEnableDiffuse;
+uniform bool uEnableSpecular;
 
 // Ambient + diffuse and specular travel apart so that the fragment stage can modulate the
 // first by the vertex colour and the texture, as phong.frag does.
@@ -49,11 +59,43 @@ vec4 lightInCamera(int i)
     return vec4(light.xyz, p.w);
 }
 
+// The spotlight's axis in the camera frame, carried as a light direction is.
+vec3 spotInCamera(int i)
+{
+    vec4 d = vec4(spotDirection[i], 0.0);
+    if (uLightFrame[i] == 1)
+        d = mViewNormals * d;
+    else if (uLightFrame[i] == 2)
+        d = mNormals * d;
+    return normalize(d.xyz);
+}
+
+// Attenuation times spot: what scales all three of light i's terms at P.
+float lightFactor(int i, vec4 light, vec3 P, vec3 L)
+{
+    float attenuation = 1.0; // a directional light is not attenuated
+    if (light.w != 0.0) {
+        float d = length(light.xyz - P);
+        vec3 k = lightAttenuation[i];
+        attenuation = 1.0 / max(k.x + k.y * d + k.z * d * d, 1e-6);
+    }
+    float spot = 1.0;
+    if (spotCosCutoff[i] > -1.0) {
+        float cosAngle = dot(-L, spotInCamera(i));
+        if (cosAngle < spotCosCutoff[i])
+            spot = 0.0; // outside the cone
+        else if (spotExponent[i] != 0.0) // pow(0, 0) is undefined in GLSL; here it is 1
+            spot = pow(max(cosAngle, 0.0), spotExponent[i]);
+    }
+    return attenuation * spot;
+}
+
 // One light's terms at P (camera frame), added to the sums.
 void addLight(int i, vec3 P, vec3 N, vec3 V, inout vec3 ambientDiffuse, inout vec3 specular)
 {
     vec4 light = lightInCamera(i);
     vec3 L = light.w == 0.0 ? normalize(light.xyz) : normalize(light.xyz - P);
+    float factor = lightFactor(i, light, P, L);
     vec3 H = normalize(L + V);
     // The slides write reflect(L, N), but GLSL's reflect() mirrors an incident direction that
     // points at the surface; L points away from it, so the mirrored light ray is reflect(-L, N).
@@ -67,8 +109,12 @@ void addLight(int i, vec3 P, vec3 N, vec3 V, inout vec3 ambientDiffuse, inout ve
     if (dot(L, N) < 0.0)
         spec = vec3(0.0); // light on the back of the face: no highlight
 
-    ambientDiffuse += ambient + diffuse;
-    specular += spec;
+    if (uEnableAmbient)
+        ambientDiffuse += factor * ambient;
+    if (uEnableDiffuse)
+        ambientDiffuse += factor * diffuse;
+    if (uEnableSpecular)
+        specular += factor * spec;
 }
 
 void main()

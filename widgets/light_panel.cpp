@@ -97,6 +97,70 @@ LightPanel::LightPanel(SceneDocument *document, QWidget *parent)
         form->addRow(symbols[i], colour);
     }
 
+    // OpenGL 2.1's attenuation and spotlight (issue 15): both scale all three terms.
+    const char *kNames[3] = {"kc", "kl", "kq"};
+    auto *attenuationRow = new QHBoxLayout;
+    for (int i = 0; i < 3; ++i) {
+        QDoubleSpinBox *spin = makeSpin(
+            0.0, limits::kMaxAttenuation, 2, 0.05,
+            tr("lightAttenuation.%1 (%2): a point light's terms are divided by kc + kl·d + "
+               "kq·d², d its distance to the surface (1, 0, 0: none; a directional "
+               "light is never attenuated)")
+                .arg(axes[i], kNames[i]));
+        connect(spin, &QDoubleSpinBox::valueChanged, this, [this, i](double v) {
+            edit([&](Scene &s) {
+                glm::vec3 k = current(s).attenuation;
+                k[i] = float(v);
+                if (k != glm::vec3(0.0f)) // all three 0 would make the light infinite
+                    current(s).attenuation = k;
+            });
+        });
+        m_attenuation[std::size_t(i)] = spin;
+        feeds(spin, {Semantic::LightAttenuation});
+        attenuationRow->addWidget(spin);
+    }
+    form->addRow(tr("Atten. kc kl kq"), attenuationRow);
+
+    auto *axisRow = new QHBoxLayout;
+    for (int i = 0; i < 3; ++i) {
+        QDoubleSpinBox *spin =
+            makeSpin(-limits::kMaxCoordinate, limits::kMaxCoordinate, 2, 0.1,
+                     tr("spotDirection.%1: the spotlight's axis, from the light, in the light's "
+                        "frame")
+                         .arg(axes[i]));
+        connect(spin, &QDoubleSpinBox::valueChanged, this, [this, i](double v) {
+            edit([&](Scene &s) {
+                glm::vec3 d = current(s).spot.direction;
+                d[i] = float(v);
+                if (d != glm::vec3(0.0f)) // an axis needs a direction
+                    current(s).spot.direction = d;
+            });
+        });
+        m_spotAxis[std::size_t(i)] = spin;
+        feeds(spin, {Semantic::SpotDirection});
+        axisRow->addWidget(spin);
+    }
+    form->addRow(tr("Spot axis"), axisRow);
+
+    auto *spotRow = new QHBoxLayout;
+    m_spotCutoff = makeSpin(0.0, limits::kMaxSpotCutoff, 1, 1.0,
+                            tr("spotCutoff: the cone's half-angle; outside it the light adds "
+                               "nothing, ambient included (180: no spot)"));
+    m_spotCutoff->setSuffix(QString::fromUtf8("°"));
+    connect(m_spotCutoff, &QDoubleSpinBox::valueChanged, this, [this](double v) {
+        edit([&](Scene &s) { current(s).spot.cutoffDegrees = float(v); });
+    });
+    feeds(m_spotCutoff, {Semantic::SpotCutoff, Semantic::SpotCosCutoff});
+    m_spotExponent = makeSpin(0.0, limits::kMaxSpotExponent, 1, 1.0,
+                              tr("spotExponent: inside the cone the terms are scaled by "
+                                 "max(-L·D, 0)^exponent, brighter towards the axis"));
+    connect(m_spotExponent, &QDoubleSpinBox::valueChanged, this,
+            [this](double v) { edit([&](Scene &s) { current(s).spot.exponent = float(v); }); });
+    feeds(m_spotExponent, {Semantic::SpotExponent});
+    spotRow->addWidget(m_spotCutoff);
+    spotRow->addWidget(m_spotExponent);
+    form->addRow(tr("Spot cutoff, exp"), spotRow);
+
     addResetButton(form, tr("Reset light"),
                    tr("This light's defaults; light 1's are the slides' (0, 1.8, 1.3, 1) in "
                       "world coordinates"),
@@ -131,7 +195,21 @@ void LightPanel::refresh(const Scene &scene)
         m_xyz[std::size_t(i)]->setValue(double(light.position[i]));
         m_colors[std::size_t(i)]->setColor(light.colors.*kColourMembers[i]);
     }
-    const QSignalBlocker b1(m_w), b2(m_frame);
+    for (int i = 0; i < 3; ++i) {
+        const QSignalBlocker block(m_attenuation[std::size_t(i)]),
+            blockAxis(m_spotAxis[std::size_t(i)]);
+        m_attenuation[std::size_t(i)]->setValue(double(light.attenuation[i]));
+        m_spotAxis[std::size_t(i)]->setValue(double(light.spot.direction[i]));
+        // A directional light is not attenuated: its numbers are kept but have no effect.
+        m_attenuation[std::size_t(i)]->setEnabled(light.position.w != 0.0f);
+    }
+    const bool spot = light.spot.cutoffDegrees < limits::kMaxSpotCutoff;
+    for (QDoubleSpinBox *spin : m_spotAxis)
+        spin->setEnabled(spot);
+    m_spotExponent->setEnabled(spot);
+    const QSignalBlocker b1(m_w), b2(m_frame), b3(m_spotCutoff), b4(m_spotExponent);
+    m_spotCutoff->setValue(double(light.spot.cutoffDegrees));
+    m_spotExponent->setValue(double(light.spot.exponent));
     m_w->setCurrentIndex(light.position.w == 0.0f ? 1 : 0);
     m_frame->setCurrentIndex(int(light.frame));
 }

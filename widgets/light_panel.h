@@ -28,7 +28,11 @@ public:
     QDoubleSpinBox *coordinate(int i) const { return m_xyz[std::size_t(i)]; }
     QComboBox *wCombo() const { return m_w; }
     QComboBox *frameCombo() const { return m_frame; }
-    ColorEdit *colorEdit(int i) const { return m_colors[std::size_t(i)]; } // Ia, Id, Is
+    ColorEdit *colorEdit(int i) const { return m_colors[std::size_t(i)]; }             // Ia, Id, Is
+    QDoubleSpinBox *attenuation(int i) const { return m_attenuation[std::size_t(i)]; } // kc..
+    QDoubleSpinBox *spotAxis(int i) const { return m_spotAxis[std::size_t(i)]; }
+    QDoubleSpinBox *spotCutoff() const { return m_spotCutoff; }
+    QDoubleSpinBox *spotExponent() const { return m_spotExponent; }
 
 protected:
     void refresh(const Scene &scene) override;
@@ -42,6 +46,10 @@ private:
     QComboBox *m_w;
     QComboBox *m_frame;
     std::array<ColorEdit *, 3> m_colors{};
+    std::array<QDoubleSpinBox *, 3> m_attenuation{};
+    std::array<QDoubleSpinBox *, 3> m_spotAxis{};
+    QDoubleSpinBox *m_spotCutoff;
+    QDoubleSpinBox *m_spotExponent;
 };
 
 } // namespace lb

@@ -180,9 +180,20 @@ void ProbePanel::showText()
         html += row(QString("N\u00b7L"), QString::number(double(t.nDotL), 'f', 4));
         html += row(blinn ? QString("N\u00b7H") : QString("R\u00b7V"),
                     QString::number(double(t.specularAngle), 'f', 4));
-        html += row(tr("ambient"), vec(t.ambient));
-        html += row(tr("diffuse"), vec(t.diffuse));
-        html += row(tr("specular"), vec(t.specular));
+        if (light.position.w != 0.0f)
+            html += row(tr("distance, attenuation"), QString("%1, %2")
+                                                         .arg(double(t.distance), 0, 'f', 4)
+                                                         .arg(double(t.attenuation), 0, 'f', 4));
+        if (light.spot.cutoffDegrees < limits::kMaxSpotCutoff)
+            html += row(tr("spot"), t.spot > 0.0f ? QString::number(double(t.spot), 'f', 4)
+                                                  : tr("0 (outside the cone)"));
+        const TermSwitches &on = side.shading.terms;
+        const auto term = [&](const QString &name, bool enabled, const glm::vec3 &value) {
+            html += row(enabled ? name : tr("%1 (off)").arg(name), vec(value));
+        };
+        term(tr("ambient"), on.ambient, t.ambient);
+        term(tr("diffuse"), on.diffuse, t.diffuse);
+        term(tr("specular"), on.specular, t.specular);
     }
     html += QString("<tr><td colspan='2'><hr><b>%1</b></td></tr>").arg(tr("Sum"));
     html += row(tr("ambient"), vec(r.total.ambient));

@@ -3,11 +3,14 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QFormLayout>
+#include <QHBoxLayout>
 #include <QLabel>
 #include <QSignalBlocker>
 #include <QSlider>
 
+#include <array>
 #include <cmath>
+#include <tuple>
 
 namespace lb {
 
@@ -59,6 +62,28 @@ ShadingPanel::ShadingPanel(SceneDocument *document, QWidget *parent)
                           tr("uEnableTexture: multiply ambient and diffuse by the texture "
                              "(uSampler): the mesh file's diffuse texture, or the checker"),
                           &ShadingSettings::texture);
+    // The terms on one row: the model taken apart, each term alone or in pairs.
+    auto *termsRow = new QHBoxLayout;
+    const std::tuple<QString, QString, bool TermSwitches::*, Semantic> terms[] = {
+        {tr("Ambient"), tr("Ia·Ka: uEnableAmbient (key A)"), &TermSwitches::ambient,
+         Semantic::EnableAmbient},
+        {tr("Diffuse"), tr("Id·Kd·max(N·L, 0): uEnableDiffuse (key D)"), &TermSwitches::diffuse,
+         Semantic::EnableDiffuse},
+        {tr("Specular"), tr("Is·Ks·(R·V or N·H)^n: uEnableSpecular (key S)"),
+         &TermSwitches::specular, Semantic::EnableSpecular}};
+    for (std::size_t i = 0; i < 3; ++i) {
+        const auto &[label, tip, member, semantic] = terms[i];
+        auto *check = new QCheckBox(label, this);
+        check->setToolTip(tip);
+        connect(check, &QCheckBox::toggled, this, [this, member = member](bool on) {
+            edit([&](Scene &s) { s.shading.terms.*member = on; });
+        });
+        feeds(check, {semantic});
+        termsRow->addWidget(check);
+        m_terms[i] = check;
+    }
+    termsRow->addStretch();
+    form->addRow(tr("Terms"), termsRow);
     feeds(m_lighting, {Semantic::EnableLighting});
     feeds(m_vertexColors, {Semantic::EnableVertexColor});
     feeds(m_texture, {Semantic::EnableTexture});
@@ -115,11 +140,17 @@ void ShadingPanel::refresh(const Scene &scene)
 {
     const QSignalBlocker b1(m_shading), b2(m_specular), b3(m_projection), b4(m_lighting),
         b5(m_vertexColors), b6(m_texture), b7(m_normalsByModelView), b8(m_compareMode),
-        b9(m_compareShading), b10(m_compareSpecular), b11(m_wipe);
+        b9(m_compareShading), b10(m_compareSpecular), b11(m_wipe), b12(m_terms[0]), b13(m_terms[1]),
+        b14(m_terms[2]);
     m_shading->setCurrentIndex(int(scene.shading.shading));
     m_specular->setCurrentIndex(int(scene.shading.specular));
     m_projection->setCurrentIndex(int(scene.shading.projection));
     m_lighting->setChecked(scene.shading.lighting);
+    m_terms[0]->setChecked(scene.shading.terms.ambient);
+    m_terms[1]->setChecked(scene.shading.terms.diffuse);
+    m_terms[2]->setChecked(scene.shading.terms.specular);
+    for (QCheckBox *check : m_terms)
+        check->setEnabled(scene.shading.lighting);
     m_vertexColors->setChecked(scene.shading.vertexColors);
     m_texture->setChecked(scene.shading.texture);
     m_normalsByModelView->setChecked(scene.shading.normalsByModelView);

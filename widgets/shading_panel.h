@@ -1,8 +1,10 @@
 #pragma once
-// Shading: Gouraud or Phong, the specular term, the projection, the switches, and the
-// comparison with a built-in program (side by side, wipe, difference; compare.h).
+// Shading: Gouraud or Phong, the specular term, the projection, the terms and switches, and
+// the comparison with a built-in program (side by side, wipe, difference; compare.h).
 
 #include "scene_panel.h"
+
+#include <array>
 
 class QCheckBox;
 class QComboBox;
@@ -23,6 +25,8 @@ public:
     QCheckBox *vertexColorsCheck() const { return m_vertexColors; }
     QCheckBox *textureCheck() const { return m_texture; }
     QCheckBox *normalsByModelViewCheck() const { return m_normalsByModelView; }
+    // Ambient, diffuse, specular.
+    QCheckBox *termCheck(int i) const { return m_terms[std::size_t(i)]; }
     QComboBox *compareModeCombo() const { return m_compareMode; }
     QComboBox *compareShadingCombo() const { return m_compareShading; }
     QComboBox *compareSpecularCombo() const { return m_compareSpecular; }
@@ -43,6 +47,7 @@ private:
     QCheckBox *m_vertexColors;
     QCheckBox *m_texture;
     QCheckBox *m_normalsByModelView;
+    std::array<QCheckBox *, 3> m_terms{};
     QComboBox *m_compareMode;
     QComboBox *m_compareShading;
     QComboBox *m_compareSpecular;

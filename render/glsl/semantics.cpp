@@ -33,6 +33,14 @@ const std::pair<const char *, Semantic> kTable[] = {
     {"uEnableVertexColor", Semantic::EnableVertexColor},
     {"uEnableTexture", Semantic::EnableTexture},
     {"uSampler", Semantic::Sampler},
+    {"lightAttenuation", Semantic::LightAttenuation},
+    {"spotDirection", Semantic::SpotDirection},
+    {"spotCutoff", Semantic::SpotCutoff},
+    {"spotCosCutoff", Semantic::SpotCosCutoff},
+    {"spotExponent", Semantic::SpotExponent},
+    {"uEnableAmbient", Semantic::EnableAmbient},
+    {"uEnableDiffuse", Semantic::EnableDiffuse},
+    {"uEnableSpecular", Semantic::EnableSpecular},
 };
 
 } // namespace
@@ -64,6 +72,11 @@ bool isPerLight(Semantic semantic)
     case Semantic::LightSpecular:
     case Semantic::LightFrame:
     case Semantic::LightEnabled:
+    case Semantic::LightAttenuation:
+    case Semantic::SpotDirection:
+    case Semantic::SpotCutoff:
+    case Semantic::SpotCosCutoff:
+    case Semantic::SpotExponent:
         return true;
     default:
         return false;

@@ -35,6 +35,14 @@ enum class Semantic {
     EnableVertexColor, // uEnableVertexColor
     EnableTexture,     // uEnableTexture
     Sampler,           // uSampler: the checker texture on unit 0
+    LightAttenuation,  // lightAttenuation: vec3 (kc, kl, kq)
+    SpotDirection,     // spotDirection: vec3, the cone's axis in the light's frame
+    SpotCutoff,        // spotCutoff: the cone's half-angle in degrees, 180 = no spot
+    SpotCosCutoff,     // spotCosCutoff: its cosine, -1 for no spot
+    SpotExponent,      // spotExponent
+    EnableAmbient,     // uEnableAmbient: the ambient term on or off
+    EnableDiffuse,     // uEnableDiffuse
+    EnableSpecular,    // uEnableSpecular
 };
 
 std::optional<Semantic> semanticOf(const QString &uniformName);

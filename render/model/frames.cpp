@@ -1,9 +1,12 @@
 #include "frames.h"
 
 #include <glm/ext/matrix_transform.hpp>
+#include <glm/geometric.hpp>
 #include <glm/gtc/matrix_inverse.hpp>
 #include <glm/matrix.hpp>
 #include <glm/trigonometric.hpp>
+
+#include <cmath>
 
 namespace lb {
 
@@ -57,6 +60,18 @@ glm::vec4 lightInEye(const Frames &frames, const glm::vec4 &light, LightFrame fr
     // keeps w = 0 and a point w = 1 (the matrices here are affine).
     eye.w = light.w;
     return eye;
+}
+
+glm::vec3 spotDirectionInEye(const Frames &frames, const Light &light)
+{
+    // normalize(), as the shaders write it; a direction of length 0 is refused on the way in.
+    return glm::normalize(
+        glm::vec3(lightInEye(frames, glm::vec4(light.spot.direction, 0.0f), light.frame)));
+}
+
+float spotCosCutoff(const Spot &spot)
+{
+    return spot.cutoffDegrees >= 180.0f ? -1.0f : std::cos(glm::radians(spot.cutoffDegrees));
 }
 
 glm::vec4 eyeToFrame(const Frames &frames, const glm::vec4 &eye, LightFrame frame)

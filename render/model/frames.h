@@ -33,6 +33,11 @@ bool mirrors(const Frames &frames);
 // camera: as given; world: mView for a point, mViewNormals for a direction;
 // object: mModelView for a point, mNormals for a direction. The result keeps w.
 glm::vec4 lightInEye(const Frames &frames, const glm::vec4 &light, LightFrame frame);
+// The spotlight's axis in eye coordinates, unit length: its direction in the light's frame,
+// carried as lightInEye() carries a direction (w = 0).
+glm::vec3 spotDirectionInEye(const Frames &frames, const Light &light);
+// cos(cutoff) as the shaders get it; exactly -1 for 180 degrees (no spot).
+float spotCosCutoff(const Spot &spot);
 // The way back: a point (w = 1) or direction (w = 0) in eye coordinates, in `frame`'s
 // coordinates, such that lightInEye() of the result gives `eye` again.
 glm::vec4 eyeToFrame(const Frames &frames, const glm::vec4 &eye, LightFrame frame);

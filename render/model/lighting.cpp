@@ -34,15 +34,40 @@ LightingTerms evaluateLighting(const glm::vec3 &positionEye, const glm::vec3 &no
 
     t.nDotL = glm::dot(t.L, t.N);
     t.specularAngle = in.specular == SpecularModel::Blinn ? glm::dot(t.N, t.H) : glm::dot(t.R, t.V);
-
     const Material &m = in.material;
-    t.ambient = in.colors.ia * m.ka;
-    t.diffuse = glm::max(t.nDotL, 0.0f) * (in.colors.id * m.kd); // no light from behind
-    const float specularFactor = glm::pow(glm::max(t.specularAngle, 0.0f), m.shininess);
-    t.specular = specularFactor * (in.colors.is * m.ks);
+    t.specularFactor = glm::pow(glm::max(t.specularAngle, 0.0f), m.shininess);
     if (t.nDotL < 0.0f) // light hits the back of the surface: no highlight (slides)
-        t.specular = glm::vec3(0.0f);
+        t.specularFactor = 0.0f;
+
+    if (in.lightEye.w != 0.0f)
+        t.distance = glm::length(glm::vec3(in.lightEye) - positionEye);
+    t.attenuation = attenuationFactor(in.lightEye, t.distance, in.attenuation);
+    t.spot = spotFactor(t.L, in.spotDirectionEye, in.spotCosCutoff, in.spotExponent);
+    // OpenGL 2.1's fixed-function equation: attenuation and spot scale all three terms.
+    const float scale = t.attenuation * t.spot;
+    t.ambient = scale * (in.colors.ia * m.ka);
+    t.diffuse = scale * (glm::max(t.nDotL, 0.0f) * (in.colors.id * m.kd)); // none from behind
+    t.specular = scale * (t.specularFactor * (in.colors.is * m.ks));
     return t;
+}
+
+float attenuationFactor(const glm::vec4 &lightEye, float distance, const glm::vec3 &k)
+{
+    if (lightEye.w == 0.0f)
+        return 1.0f;
+    return 1.0f / glm::max(k.x + k.y * distance + k.z * distance * distance, 1e-6f);
+}
+
+float spotFactor(const glm::vec3 &L, const glm::vec3 &D, float cosCutoff, float exponent)
+{
+    if (cosCutoff <= -1.0f)
+        return 1.0f;
+    const float cosAngle = glm::dot(-L, D);
+    if (cosAngle < cosCutoff)
+        return 0.0f;
+    // 0^0 is 1 here, as in OpenGL's equation; GLSL's pow() leaves it undefined, so the
+    // shaders test for exponent 0 the same way.
+    return exponent == 0.0f ? 1.0f : glm::pow(glm::max(cosAngle, 0.0f), exponent);
 }
 
 glm::vec3 shadedColor(const glm::vec3 &ambientPlusDiffuse, const glm::vec3 &specular,

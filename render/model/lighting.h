@@ -27,12 +27,36 @@ struct LightColors
     glm::vec3 is{1.0f}; // lightSpe
 };
 
+// The three terms of the model, each of which can be switched off to see the others alone.
+struct TermSwitches
+{
+    bool ambient = true;
+    bool diffuse = true;
+    bool specular = true;
+};
+
+// A spotlight, as OpenGL 2.1's fixed-function lights have it: the cone's axis (from the light,
+// in the light's own frame), its half-angle in degrees (180: no spot, light in every
+// direction) and how sharply the light falls off towards the cone's edge.
+struct Spot
+{
+    glm::vec3 direction{0.0f, 0.0f, -1.0f};
+    float cutoffDegrees = 180.0f;
+    float exponent = 0.0f;
+};
+
 // The vectors and terms of the model at one surface point, all in eye coordinates.
 struct LightingTerms
 {
     glm::vec3 L{0.0f}, N{0.0f}, V{0.0f}, H{0.0f}, R{0.0f};
     float nDotL = 0.0f;
-    float specularAngle = 0.0f; // N·H for Blinn-Phong, R·V for Phong (before clamping)
+    float specularAngle = 0.0f;  // N·H for Blinn-Phong, R·V for Phong (before clamping)
+    float specularFactor = 0.0f; // max(specularAngle, 0)^n, 0 where the light is behind
+    float distance = 0.0f;       // from the point to a point light (0 for a directional one)
+    float attenuation = 1.0f;    // 1 / (kc + kl·d + kq·d²); 1 for a directional light
+    float spot = 1.0f;           // 0 outside the cone, max(-L·D, 0)^exponent inside
+    // Each already multiplied by attenuation·spot; switched-off terms are still computed here
+    // (the probe shows them) and left out by LightingSum.
     glm::vec3 ambient{0.0f}, diffuse{0.0f}, specular{0.0f};
 };
 
@@ -43,7 +67,19 @@ struct LightingInputs
     LightColors colors;
     SpecularModel specular = SpecularModel::Blinn;
     Projection projection = Projection::Perspective;
+    glm::vec3 attenuation{1.0f, 0.0f, 0.0f}; // kc, kl, kq
+    glm::vec3 spotDirectionEye{0.0f, 0.0f, -1.0f};
+    float spotCosCutoff = -1.0f; // cos(cutoff); -1 (180 degrees): no spot
+    float spotExponent = 0.0f;
 };
+
+// 1 / (kc + kl·d + kq·d²) for a point light at distance d (the denominator kept above 1e-6
+// so that a light on the surface with kc = 0 gives a bright point, not infinity); 1 for a
+// directional light (w = 0).
+float attenuationFactor(const glm::vec4 &lightEye, float distance, const glm::vec3 &k);
+// 0 outside the cone (-L·D below cosCutoff), max(-L·D, 0)^exponent inside; 1 with no spot
+// (cosCutoff <= -1). L towards the light, D the cone's axis; both unit length.
+float spotFactor(const glm::vec3 &L, const glm::vec3 &D, float cosCutoff, float exponent);
 
 // L: towards the light. Directional (w = 0): the light's direction; point: light - P.
 glm::vec3 lightVector(const glm::vec4 &lightEye, const glm::vec3 &positionEye);
@@ -54,16 +90,19 @@ glm::vec3 viewVector(const glm::vec3 &positionEye, Projection projection);
 LightingTerms evaluateLighting(const glm::vec3 &positionEye, const glm::vec3 &normalEye,
                                const LightingInputs &in);
 
-// Lights add up: the sum of the ambient, diffuse and specular terms of each light.
+// Lights add up: the sum of the ambient, diffuse and specular terms of each light, of the
+// terms switched on.
 struct LightingSum
 {
     glm::vec3 ambient{0.0f}, diffuse{0.0f}, specular{0.0f};
-    LightingSum &operator+=(const LightingTerms &t)
+    void add(const LightingTerms &t, const TermSwitches &on)
     {
-        ambient += t.ambient;
-        diffuse += t.diffuse;
-        specular += t.specular;
-        return *this;
+        if (on.ambient)
+            ambient += t.ambient;
+        if (on.diffuse)
+            diffuse += t.diffuse;
+        if (on.specular)
+            specular += t.specular;
     }
 };
 

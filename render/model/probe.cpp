@@ -59,6 +59,10 @@ LightingInputs lightingInputs(const Scene &scene, const Frames &frames, int inde
     in.colors = light.colors;
     in.specular = scene.shading.specular;
     in.projection = scene.shading.projection;
+    in.attenuation = light.attenuation;
+    in.spotDirectionEye = spotDirectionInEye(frames, light);
+    in.spotCosCutoff = spotCosCutoff(light.spot);
+    in.spotExponent = light.spot.exponent;
     return in;
 }
 
@@ -135,7 +139,7 @@ ProbeResult probeSurface(const Scene &scene, const Mesh &mesh, const Texture &te
             continue;
         ProbeLight light{i, lightingInputs(scene, frames, i), {}};
         light.terms = evaluateLighting(r.position, r.normal, light.inputs);
-        r.total += light.terms;
+        r.total.add(light.terms, scene.shading.terms);
         r.lights.push_back(light);
     }
 
@@ -150,7 +154,8 @@ ProbeResult probeSurface(const Scene &scene, const Mesh &mesh, const Texture &te
         for (int k = 0; k < 3; ++k) {
             LightingSum v;
             for (const ProbeLight &light : r.lights)
-                v += evaluateLighting(corners[k], eyeNormal(mesh.normals[tri[k]]), light.inputs);
+                v.add(evaluateLighting(corners[k], eyeNormal(mesh.normals[tri[k]]), light.inputs),
+                      scene.shading.terms);
             ambientDiffuse += w[k] * (v.ambient + v.diffuse);
             specular += w[k] * v.specular;
         }

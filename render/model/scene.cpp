@@ -176,10 +176,21 @@ bool operator==(const LightColors &a, const LightColors &b)
     return std::tie(a.ia, a.id, a.is) == std::tie(b.ia, b.id, b.is);
 }
 
+bool operator==(const Spot &a, const Spot &b)
+{
+    return std::tie(a.direction, a.cutoffDegrees, a.exponent) ==
+           std::tie(b.direction, b.cutoffDegrees, b.exponent);
+}
+
 bool operator==(const Light &a, const Light &b)
 {
-    return std::tie(a.position, a.frame, a.colors, a.enabled) ==
-           std::tie(b.position, b.frame, b.colors, b.enabled);
+    return std::tie(a.position, a.frame, a.colors, a.enabled, a.attenuation, a.spot) ==
+           std::tie(b.position, b.frame, b.colors, b.enabled, b.attenuation, b.spot);
+}
+
+bool operator==(const TermSwitches &a, const TermSwitches &b)
+{
+    return std::tie(a.ambient, a.diffuse, a.specular) == std::tie(b.ambient, b.diffuse, b.specular);
 }
 
 bool operator==(const Material &a, const Material &b)
@@ -189,10 +200,10 @@ bool operator==(const Material &a, const Material &b)
 
 bool operator==(const ShadingSettings &a, const ShadingSettings &b)
 {
-    return std::tie(a.shading, a.specular, a.projection, a.lighting, a.vertexColors, a.texture,
-                    a.normalsByModelView) == std::tie(b.shading, b.specular, b.projection,
-                                                      b.lighting, b.vertexColors, b.texture,
-                                                      b.normalsByModelView);
+    return std::tie(a.shading, a.specular, a.projection, a.lighting, a.terms, a.vertexColors,
+                    a.texture, a.normalsByModelView) ==
+           std::tie(b.shading, b.specular, b.projection, b.lighting, b.terms, b.vertexColors,
+                    b.texture, b.normalsByModelView);
 }
 
 bool operator==(const ObjectSettings &a, const ObjectSettings &b)

@@ -35,6 +35,9 @@ struct Light
     LightFrame frame = LightFrame::World;       // the slides' complete shaders use world (II)
     LightColors colors;
     bool enabled = true; // a light switched off adds nothing and goes to shaders as black
+    // kc, kl, kq of 1 / (kc + kl·d + kq·d²) for a point light; (1, 0, 0): none.
+    glm::vec3 attenuation{1.0f, 0.0f, 0.0f};
+    Spot spot; // its direction in the light's frame; cutoff 180: none
 };
 
 // Up to four lights add up. Light 1 is the slides' light; a shader that declares one light
@@ -51,6 +54,7 @@ struct ShadingSettings
     SpecularModel specular = SpecularModel::Blinn; // the slides' complete shaders use H
     Projection projection = Projection::Perspective;
     bool lighting = true;
+    TermSwitches terms; // ambient, diffuse and specular, each on or off
     bool vertexColors = false;
     bool texture = false;
     // Wrong on purpose, to show why: normals transformed by the model-view itself instead of
@@ -64,8 +68,8 @@ struct ObjectSettings
     int tessellation = 16; // coarse on purpose: Gouraud and Phong visibly differ
     QString meshPath;      // a mesh file drawn instead of the shape; empty: the shape
     NormalMode normals = NormalMode::File;
-    float creaseDegrees = 30.0f;    // generated smooth normals don't blend across sharper edges
-    bool showNormals = false;       // draw each vertex normal as a short line
+    float creaseDegrees = 30.0f; // generated smooth normals don't blend across sharper edges
+    bool showNormals = false;    // draw each vertex normal as a short line
     // Triangles facing away from the camera are not drawn (nor probed): right for closed
     // meshes and about twice as fast to draw; an open mesh loses its inside faces.
     bool cullBackFaces = false;
@@ -129,6 +133,8 @@ inline bool operator!=(const Scene &a, const Scene &b)
 }
 bool operator==(const Light &a, const Light &b);
 bool operator==(const LightColors &a, const LightColors &b);
+bool operator==(const Spot &a, const Spot &b);
+bool operator==(const TermSwitches &a, const TermSwitches &b);
 bool operator==(const Material &a, const Material &b);
 bool operator==(const ShadingSettings &a, const ShadingSettings &b);
 bool operator==(const ObjectSettings &a, const ObjectSettings &b);
@@ -145,6 +151,9 @@ constexpr float kMaxCoordinate = 1000.0f;
 constexpr float kMinScale = 0.01f;
 constexpr float kMaxScale = 100.0f;
 constexpr float kMaxCreaseDegrees = 180.0f;
+constexpr float kMaxAttenuation = 1000.0f; // each of kc, kl, kq, at least 0; not all 0
+constexpr float kMaxSpotCutoff = 180.0f;   // degrees; 180: no spot
+constexpr float kMaxSpotExponent = 128.0f; // as OpenGL 2.1 allows
 } // namespace limits
 
 // Names used on the command line, in JSON and in the panels' combo boxes.

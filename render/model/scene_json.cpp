@@ -31,7 +31,22 @@ QJsonObject lightJson(const Light &light)
     l["ia"] = toArray(&light.colors.ia.x, 3);
     l["id"] = toArray(&light.colors.id.x, 3);
     l["is"] = toArray(&light.colors.is.x, 3);
+    l["attenuation"] = toArray(&light.attenuation.x, 3);
+    QJsonObject spot;
+    spot["direction"] = toArray(&light.spot.direction.x, 3);
+    spot["cutoff"] = light.spot.cutoffDegrees;
+    spot["exponent"] = light.spot.exponent;
+    l["spot"] = spot;
     return l;
+}
+
+QJsonObject termsJson(const TermSwitches &terms)
+{
+    QJsonObject t;
+    t["ambient"] = terms.ambient;
+    t["diffuse"] = terms.diffuse;
+    t["specular"] = terms.specular;
+    return t;
 }
 
 // Reads fields into a Scene, keeping the default of each field it cannot use and naming it
@@ -168,6 +183,21 @@ void readLight(Reader &r, const QJsonObject &l, const QString &path, Light &ligh
     r.numbers(l, "ia", path, &light.colors.ia.x, 3, 0.0f, 1.0f);
     r.numbers(l, "id", path, &light.colors.id.x, 3, 0.0f, 1.0f);
     r.numbers(l, "is", path, &light.colors.is.x, 3, 0.0f, 1.0f);
+    r.numbers(l, "attenuation", path, &light.attenuation.x, 3, 0.0f, limits::kMaxAttenuation);
+    if (light.attenuation == glm::vec3(0.0f)) {
+        r.ignore(Reader::join(path, "attenuation"), "kc, kl and kq all 0");
+        light.attenuation = before.attenuation;
+    }
+    const QString spotPath = Reader::join(path, "spot");
+    const QJsonObject spot = r.object(l, "spot", spotPath);
+    r.unknownKeys(spot, lightJson(light)["spot"].toObject(), spotPath);
+    r.numbers(spot, "direction", spotPath, &light.spot.direction.x, 3, -c, c);
+    if (light.spot.direction == glm::vec3(0.0f)) {
+        r.ignore(Reader::join(spotPath, "direction"), "a direction of length 0");
+        light.spot.direction = before.spot.direction;
+    }
+    r.number(spot, "cutoff", spotPath, light.spot.cutoffDegrees, 0.0f, limits::kMaxSpotCutoff);
+    r.number(spot, "exponent", spotPath, light.spot.exponent, 0.0f, limits::kMaxSpotExponent);
 }
 
 } // namespace
@@ -189,6 +219,7 @@ QJsonObject Scene::toJson() const
     s["specular"] = toName(shading.specular);
     s["projection"] = toName(shading.projection);
     s["lighting"] = shading.lighting;
+    s["terms"] = termsJson(shading.terms);
     s["vertexColors"] = shading.vertexColors;
     s["texture"] = shading.texture;
     s["normalsByModelView"] = shading.normalsByModelView;
@@ -275,6 +306,11 @@ Scene Scene::fromJson(const QJsonObject &json, QStringList *ignored)
     r.word(s, "specular", "shading", parseSpecularModel, sc.shading.specular);
     r.word(s, "projection", "shading", parseProjection, sc.shading.projection);
     r.boolean(s, "lighting", "shading", sc.shading.lighting);
+    const QJsonObject terms = r.object(s, "terms", "shading.terms");
+    r.unknownKeys(terms, termsJson(sc.shading.terms), "shading.terms");
+    r.boolean(terms, "ambient", "shading.terms", sc.shading.terms.ambient);
+    r.boolean(terms, "diffuse", "shading.terms", sc.shading.terms.diffuse);
+    r.boolean(terms, "specular", "shading.terms", sc.shading.terms.specular);
     r.boolean(s, "vertexColors", "shading", sc.shading.vertexColors);
     r.boolean(s, "texture", "shading", sc.shading.texture);
     r.boolean(s, "normalsByModelView", "shading", sc.shading.normalsByModelView);

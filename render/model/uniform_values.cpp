@@ -63,6 +63,22 @@ UniformValue uniformValue(Semantic semantic, const Scene &scene, const Frames &f
         return UniformValue::ofNumber(s.texture ? 1.0f : 0.0f);
     case Semantic::Sampler:
         return UniformValue::ofNumber(0.0f); // the object's texture is bound to unit 0
+    case Semantic::LightAttenuation:
+        return UniformValue::ofVector(glm::vec4(l.attenuation, 0.0f));
+    case Semantic::SpotDirection:
+        return UniformValue::ofVector(glm::vec4(l.spot.direction, 0.0f));
+    case Semantic::SpotCutoff:
+        return UniformValue::ofNumber(l.spot.cutoffDegrees);
+    case Semantic::SpotCosCutoff:
+        return UniformValue::ofNumber(spotCosCutoff(l.spot));
+    case Semantic::SpotExponent:
+        return UniformValue::ofNumber(l.spot.exponent);
+    case Semantic::EnableAmbient:
+        return UniformValue::ofNumber(s.terms.ambient ? 1.0f : 0.0f);
+    case Semantic::EnableDiffuse:
+        return UniformValue::ofNumber(s.terms.diffuse ? 1.0f : 0.0f);
+    case Semantic::EnableSpecular:
+        return UniformValue::ofNumber(s.terms.specular ? 1.0f : 0.0f);
     }
     return {};
 }

@@ -150,6 +150,68 @@ private slots:
         expectMatch(s, QString("four lights ") + QTest::currentDataTag(), 100, 3);
     }
 
+    // Issue 15's extensions of the model: terms switched off, attenuation and spotlights, in
+    // both shadings and both specular models, with lights in each frame.
+    void termsAttenuationAndSpotMatchTheReference_data()
+    {
+        QTest::addColumn<int>("shading");
+        QTest::addColumn<int>("specular");
+        QTest::addColumn<int>("terms"); // bits: 1 ambient, 2 diffuse, 4 specular
+        QTest::addColumn<int>("frame");
+        QTest::addColumn<bool>("attenuated");
+        QTest::addColumn<bool>("spot");
+        for (int sh = 0; sh < 2; ++sh)
+            for (int sp = 0; sp < 2; ++sp) {
+                const QString prefix = toName(Shading(sh)) + " " + toName(SpecularModel(sp));
+                for (int terms : {1, 2, 4, 3, 6})
+                    QTest::newRow(qPrintable(prefix + QString(" terms %1").arg(terms)))
+                        << sh << sp << terms << 1 << false << false;
+                for (int fr = 0; fr < 3; ++fr) {
+                    const QString frame = " " + toName(LightFrame(fr));
+                    QTest::newRow(qPrintable(prefix + frame + " attenuated"))
+                        << sh << sp << 7 << fr << true << false;
+                    QTest::newRow(qPrintable(prefix + frame + " spot"))
+                        << sh << sp << 7 << fr << false << true;
+                    QTest::newRow(qPrintable(prefix + frame + " spot attenuated diffuse"))
+                        << sh << sp << 2 << fr << true << true;
+                }
+            }
+    }
+    void termsAttenuationAndSpotMatchTheReference()
+    {
+        QFETCH(int, shading);
+        QFETCH(int, specular);
+        QFETCH(int, terms);
+        QFETCH(int, frame);
+        QFETCH(bool, attenuated);
+        QFETCH(bool, spot);
+        Scene s = testScene();
+        s.shading.shading = Shading(shading);
+        s.shading.specular = SpecularModel(specular);
+        s.shading.terms = {(terms & 1) != 0, (terms & 2) != 0, (terms & 4) != 0};
+        Light &l = s.lights[0];
+        l.frame = LightFrame(frame);
+        l.position = {0.6f, 0.9f, 2.2f, 1.0f};
+        l.colors.ia = glm::vec3(0.3f);
+        if (attenuated)
+            l.attenuation = {0.4f, 0.3f, 0.15f};
+        if (spot) // aimed past the middle, so that the cone's edge crosses the object
+            l.spot = {glm::vec3(-0.35f, -0.3f, -1.0f), 22.0f, 6.0f};
+        const int minSpecular = (terms & 4) && !spot ? 3 : 0;
+        expectMatch(s, QTest::currentDataTag(), spot ? 60 : 100, minSpecular);
+        if (!spot)
+            return;
+        // The cone leaves part of the object dark (ambient included): it is not all lit.
+        int dark = 0;
+        const QImage frameImage = m_offscreen.render(s);
+        const QRgb background = frameImage.pixel(0, 0);
+        for (int y = 0; y < frameImage.height(); y += 4)
+            for (int x = 0; x < frameImage.width(); x += 4)
+                if (const QRgb p = frameImage.pixel(x, y); p != background && qRed(p) == 0)
+                    ++dark;
+        QVERIFY2(dark > 50, qPrintable(QString("%1 dark samples").arg(dark)));
+    }
+
     void aLightSwitchedOffAddsNothing()
     {
         Scene one = testScene();

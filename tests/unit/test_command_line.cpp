@@ -38,7 +38,8 @@ private slots:
                     "--is 0.5,0.5,0.5 --ka 0,1,0 --kd 1,1,0 --ks 0.2,0.2,0.2 "
                     "--shininess 250 --projection orthographic --camera-orbit 30,-10 "
                     "--model-rotate 10,20,30 --model-scale 2,1,0.5 --lighting off "
-                    "--vertex-colors on --texture on --show-light off --cull-back-faces on");
+                    "--vertex-colors on --texture on --show-light off --cull-back-faces on "
+                    "--terms diffuse,specular --attenuation 1,0.5,0.25 --spot 0,-1,0,30,4");
         QCOMPARE(s.object.shape, Shape::Torus);
         QCOMPARE(s.object.tessellation, 30);
         QCOMPARE(s.shading.shading, Shading::Gouraud);
@@ -62,6 +63,14 @@ private slots:
         QVERIFY(s.shading.texture);
         QVERIFY(!s.showLight);
         QVERIFY(s.object.cullBackFaces);
+        QVERIFY(!s.shading.terms.ambient);
+        QVERIFY(s.shading.terms.diffuse && s.shading.terms.specular);
+        QCOMPARE(s.lights[0].attenuation, glm::vec3(1, 0.5f, 0.25f));
+        QCOMPARE(s.lights[0].spot.direction, glm::vec3(0, -1, 0));
+        QCOMPARE(s.lights[0].spot.cutoffDegrees, 30.0f);
+        QCOMPARE(s.lights[0].spot.exponent, 4.0f);
+        QVERIFY(!applied("--terms none").shading.terms.specular);
+        QVERIFY(applied("--terms specular").shading.terms.specular);
     }
 
     void renderProbeAndSize()
@@ -137,6 +146,26 @@ private slots:
                                         << "--lighting";
         QTest::newRow("tessellation 1") << "--tessellation 1"
                                         << "--tessellation";
+        QTest::newRow("unknown term") << "--terms ambient,emissive"
+                                      << "--terms";
+        QTest::newRow("empty terms") << "--terms ,"
+                                     << "--terms";
+        QTest::newRow("negative attenuation") << "--attenuation 1,-0.5,0"
+                                              << "--attenuation";
+        QTest::newRow("zero attenuation") << "--attenuation 0,0,0"
+                                          << "--attenuation";
+        QTest::newRow("attenuation of two") << "--attenuation 1,2"
+                                            << "--attenuation";
+        QTest::newRow("cutoff over 180") << "--spot 0,0,-1,200,1"
+                                         << "--spot";
+        QTest::newRow("negative cutoff") << "--spot 0,0,-1,-5,1"
+                                         << "--spot";
+        QTest::newRow("zero spot direction") << "--spot 0,0,0,30,1"
+                                             << "--spot";
+        QTest::newRow("spot exponent 500") << "--spot 0,0,-1,30,500"
+                                           << "--spot";
+        QTest::newRow("spot of four") << "--spot 0,0,-1,30"
+                                      << "--spot";
         QTest::newRow("unknown option") << "--teapot"
                                         << "teapot";
         QTest::newRow("missing value") << "--shape"

@@ -56,6 +56,10 @@ private slots:
         row("light colour", P::Lights, [](Scene &s) { s.lights[0].colors.ia.g = 0.5f; });
         row("light on", P::Lights, [](Scene &s) { s.lights[3].enabled = true; });
         row("light marker", P::Lights, [](Scene &s) { s.showLight = false; });
+        row("attenuation", P::Lights, [](Scene &s) { s.lights[0].attenuation.z = 0.5f; });
+        row("spot axis", P::Lights, [](Scene &s) { s.lights[1].spot.direction.x = 1; });
+        row("spot cutoff", P::Lights, [](Scene &s) { s.lights[2].spot.cutoffDegrees = 30; });
+        row("spot exponent", P::Lights, [](Scene &s) { s.lights[3].spot.exponent = 8; });
         row("ka", P::Material, [](Scene &s) { s.material.ka.b = 0.5f; });
         row("kd", P::Material, [](Scene &s) { s.material.kd.g = 0.5f; });
         row("ks", P::Material, [](Scene &s) { s.material.ks.r = 0.5f; });
@@ -65,6 +69,9 @@ private slots:
         row("projection", P::Shading,
             [](Scene &s) { s.shading.projection = Projection::Orthographic; });
         row("lighting", P::Shading, [](Scene &s) { s.shading.lighting = false; });
+        row("ambient term", P::Shading, [](Scene &s) { s.shading.terms.ambient = false; });
+        row("diffuse term", P::Shading, [](Scene &s) { s.shading.terms.diffuse = false; });
+        row("specular term", P::Shading, [](Scene &s) { s.shading.terms.specular = false; });
         row("vertex colours", P::Shading, [](Scene &s) { s.shading.vertexColors = true; });
         row("texture", P::Shading, [](Scene &s) { s.shading.texture = true; });
         row("wrong normals", P::Shading, [](Scene &s) { s.shading.normalsByModelView = true; });
@@ -151,6 +158,8 @@ private slots:
         light["frame"] = "sideways";
         light["ia"] = QJsonArray{1, "x", 0};
         light["colour"] = "red"; // no such field
+        light["attenuation"] = QJsonArray{0, 0, 0}; // an infinite light
+        light["spot"] = QJsonObject{{"direction", QJsonArray{0, 0, 0}}, {"cutoff", 200}};
         lights[0] = light;
         lights[1] = 12;
         lights.append(QJsonObject{}); // a fifth light
@@ -174,6 +183,9 @@ private slots:
         QCOMPARE(s.lights[0].position, defaults.lights[0].position);
         QCOMPARE(s.lights[0].frame, defaults.lights[0].frame);
         QCOMPARE(s.lights[0].colors.ia, defaults.lights[0].colors.ia);
+        QCOMPARE(s.lights[0].attenuation, defaults.lights[0].attenuation);
+        QCOMPARE(s.lights[0].spot.direction, defaults.lights[0].spot.direction);
+        QCOMPARE(s.lights[0].spot.cutoffDegrees, limits::kMaxSpotCutoff); // clamped
         QCOMPARE(s.material.shininess, limits::kMaxShininess);
         QCOMPARE(s.object.tessellation, limits::kMinTessellation);
         QCOMPARE(s.object.scale.x, limits::kMinScale);
@@ -185,11 +197,14 @@ private slots:
         const QString all = ignored.join('\n');
         for (const char *path :
              {"lights[0].position", "lights[0].frame", "lights[0].ia", "lights[0].colour",
+              "lights[0].attenuation (kc, kl and kq all 0)",
+              "lights[0].spot.direction (a direction of length 0)",
+              "lights[0].spot.cutoff (out of range, clamped)",
               "lights[1] (not an object)", "lights[4]", "material.shininess", "object.tessellation",
               "object.scale", "camera (not an object)", "future (unknown field)",
               "shaderValues.five", "shaderValues.word"})
             QVERIFY2(all.contains(QLatin1String(path)), path);
-        QCOMPARE(ignored.size(), 13);
+        QCOMPARE(ignored.size(), 16);
     }
 
     void namesRoundTrip()

@@ -11,6 +11,9 @@
 
 #include <glm/gtc/epsilon.hpp>
 #include <glm/gtc/matrix_inverse.hpp>
+#include <glm/trigonometric.hpp>
+
+#include <cmath>
 
 using namespace lb;
 
@@ -82,7 +85,7 @@ class TestUniformValues : public QObject
 private slots:
     void everySemanticHasANameAndEveryNameItsSemantic()
     {
-        for (int i = 0; i <= int(Semantic::Sampler); ++i) {
+        for (int i = 0; i <= int(Semantic::EnableSpecular); ++i) { // the last one
             const QStringList names = uniformNames(Semantic(i));
             QVERIFY2(!names.isEmpty(), qPrintable(QString("semantic %1 has no name").arg(i)));
             for (const QString &name : names)
@@ -202,6 +205,40 @@ private slots:
                                      "uEnableVertexColor", "uEnableTexture"})
                 QCOMPARE(value(name, scene, f).x, x);
         }
+        // Each term alone.
+        for (int term = 0; term < 3; ++term) {
+            scene.shading.terms = {term == 0, term == 1, term == 2};
+            QCOMPARE(value("uEnableAmbient", scene, f).x, term == 0 ? 1.0f : 0.0f);
+            QCOMPARE(value("uEnableDiffuse", scene, f).x, term == 1 ? 1.0f : 0.0f);
+            QCOMPARE(value("uEnableSpecular", scene, f).x, term == 2 ? 1.0f : 0.0f);
+        }
+    }
+
+    // Attenuation and spot go to the shaders per light, as given in the panel (the direction
+    // in the light's own frame, like lightPosition); the cosine of 180 degrees is exactly -1.
+    void attenuationAndSpotPerLight()
+    {
+        Scene scene = busyScene();
+        for (int i = 0; i < kMaxLights; ++i) {
+            Light &l = scene.lights[std::size_t(i)];
+            l.attenuation = {1.0f, 0.1f * float(i), 0.01f * float(i)};
+            l.spot = {{0.0f, -1.0f, float(i)}, 10.0f * float(i + 1), float(i)};
+        }
+        scene.lights[3].spot.cutoffDegrees = 180.0f;
+        const Frames f = computeFrames(scene, 1.0f);
+        for (int i = 0; i < kMaxLights; ++i) {
+            const float k = float(i);
+            QCOMPARE(value("lightAttenuation", scene, f, i),
+                     glm::vec4(1.0f, 0.1f * k, 0.01f * k, 0.0f));
+            QCOMPARE(value("spotDirection", scene, f, i), glm::vec4(0.0f, -1.0f, k, 0.0f));
+            QCOMPARE(value("spotExponent", scene, f, i).x, k);
+        }
+        QCOMPARE(value("spotCutoff", scene, f, 1).x, 20.0f);
+        QCOMPARE(value("spotCosCutoff", scene, f, 1).x, std::cos(glm::radians(20.0f)));
+        QCOMPARE(value("spotCutoff", scene, f, 3).x, 180.0f);
+        QCOMPARE(value("spotCosCutoff", scene, f, 3).x, -1.0f);
+        QVERIFY(isPerLight(*semanticOf("spotCosCutoff")));
+        QVERIFY(isPerLight(*semanticOf("lightAttenuation")));
     }
 };
 
