@@ -55,7 +55,10 @@ QList<QPair<QString, QString>> SceneActions::examples()
             {tr("Phong vs Blinn-Phong specular"), ":/examples/phong_vs_blinn.json"},
             {tr("The three light frames"), ":/examples/light_frames.json"},
             {tr("The normal matrix"), ":/examples/normal_matrix.json"},
-            {tr("Toon shading"), ":/examples/toon.json"}};
+            {tr("Toon shading"), ":/examples/toon.json"},
+            {tr("The terms one at a time (keys A, D, S)"), ":/examples/terms.json"},
+            {tr("Attenuation of a point light"), ":/examples/attenuation.json"},
+            {tr("A spotlight"), ":/examples/spotlight.json"}};
 }
 
 void SceneActions::addToMenu(QMenu *file)

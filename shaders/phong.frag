@@ -24,6 +24,9 @@ uniform vec3 lightSpe[MAX_LIGHTS];      // Is
 // OpenGL 2.1's attenuation and spotlight: (kc, kl, kq) of 1 / (kc + kl d + kq d^2) for a
 // point light at distance d; the cone's axis in the light's frame, the cosine of its
 // half-angle (-1: no spot) and its exponent. (1, 0, 0) and -1 leave the light as it was.
+// The workbench compiles this text with LIGHT_FACTORS 0 while no light that is on has
+// either, because evaluating them costs llvmpipe even at these defaults.
+#define LIGHT_FACTORS 1
 uniform vec3 lightAttenuation[MAX_LIGHTS];
 uniform vec3 spotDirection[MAX_LIGHTS];
 uniform float spotCosCutoff[MAX_LIGHTS];
@@ -73,6 +76,9 @@ vec3 spotInCamera(int i)
 // Attenuation times spot: what scales all three of light i's terms at P.
 float lightFactor(int i, vec4 light, vec3 P, vec3 L)
 {
+#if LIGHT_FACTORS == 0
+    return 1.0;
+#else
     float attenuation = 1.0; // a directional light is not attenuated
     if (light.w != 0.0) {
         float d = length(light.xyz - P);
@@ -88,6 +94,7 @@ float lightFactor(int i, vec4 light, vec3 P, vec3 L)
             spot = pow(max(cosAngle, 0.0), spotExponent[i]);
     }
     return attenuation * spot;
+#endif
 }
 
 // One light's terms at P (camera frame), added to the sums.

@@ -283,15 +283,20 @@ BuiltProgram buildBuiltIn(QOpenGLExtraFunctions &gl, const QString &name, QStrin
     return built;
 }
 
-QString withMaxLights(const QString &source, int lights)
+QString withDefine(const QString &source, const QString &name, int value)
 {
-    static const QRegularExpression line("^#define MAX_LIGHTS \\d+$",
-                                         QRegularExpression::MultilineOption);
+    const QRegularExpression line("^#define " + QRegularExpression::escape(name) + " \\d+$",
+                                  QRegularExpression::MultilineOption);
     QString out = source;
     if (!line.match(out).hasMatch())
         return {};
-    out.replace(line, QString("#define MAX_LIGHTS %1").arg(lights));
+    out.replace(line, QString("#define %1 %2").arg(name).arg(value));
     return out;
+}
+
+QString withMaxLights(const QString &source, int lights)
+{
+    return withDefine(source, "MAX_LIGHTS", lights);
 }
 
 std::optional<bool> shippedBuiltIn(const QString &vertexSource, const QString &fragmentSource)
@@ -313,15 +318,34 @@ int builtInLightCount(const Scene &scene)
     return count;
 }
 
-BuiltProgram buildSpecialisedBuiltIn(QOpenGLExtraFunctions &gl, bool gouraud, int lights,
+bool builtInNeedsLightFactors(const Scene &scene)
+{
+    const int count = builtInLightCount(scene);
+    for (int i = 0; i < count; ++i) {
+        const Light &l = scene.lights[std::size_t(i)];
+        const bool attenuated =
+            l.position.w != 0.0f && l.attenuation != glm::vec3(1.0f, 0.0f, 0.0f);
+        if (l.enabled && (attenuated || l.spot.cutoffDegrees < limits::kMaxSpotCutoff))
+            return true;
+    }
+    return false;
+}
+
+BuiltProgram buildSpecialisedBuiltIn(QOpenGLExtraFunctions &gl, const BuiltInVariant &variant,
                                      QString &error)
 {
-    const Preset &preset = builtInPreset(gouraud);
+    const Preset &preset = builtInPreset(variant.gouraud);
+    // The stage with the light loop has the lines; the other is used as it is.
+    const auto specialise = [&](const QString &source) {
+        const QString lights = withMaxLights(source, variant.lights);
+        return lights.isEmpty() ? lights
+                                : withDefine(lights, "LIGHT_FACTORS", variant.lightFactors ? 1 : 0);
+    };
     const QString vertex = preset.vertexSource(), fragment = preset.fragmentSource();
-    // The stage with the light loop has the line; the other is used as it is.
-    const QString v = withMaxLights(vertex, lights), f = withMaxLights(fragment, lights);
+    const QString v = specialise(vertex), f = specialise(fragment);
     if (v.isEmpty() && f.isEmpty()) {
-        error += "built-in shader '" + preset.name + "' has no '#define MAX_LIGHTS' line\n";
+        error += "built-in shader '" + preset.name +
+                 "' has no '#define MAX_LIGHTS' and '#define LIGHT_FACTORS' lines\n";
         return {};
     }
     BuiltProgram built = buildProgram(gl, v.isEmpty() ? vertex : v, f.isEmpty() ? fragment : f);

@@ -64,14 +64,26 @@ BuiltProgram buildBuiltIn(QOpenGLExtraFunctions &gl, const QString &name, QStrin
 // MAX_LIGHTS is the count, so a scene with only light 1 on runs one pass of the light loop, as
 // the single-light program did, instead of four (llvmpipe pays for every pass, on or off).
 // Elements past the count are never read: the scene's later lights are all off.
-BuiltProgram buildSpecialisedBuiltIn(QOpenGLExtraFunctions &gl, bool gouraud, int lights,
+// Likewise LIGHT_FACTORS: 0 compiles attenuation and spotlights out while no light that is
+// on has either (they cost llvmpipe a fifth of the default scene's frame rate at their
+// defaults, since it evaluates every branch).
+struct BuiltInVariant
+{
+    bool gouraud = false;
+    int lights = 1;            // MAX_LIGHTS
+    bool lightFactors = false; // LIGHT_FACTORS
+};
+BuiltProgram buildSpecialisedBuiltIn(QOpenGLExtraFunctions &gl, const BuiltInVariant &variant,
                                      QString &error);
 // The lights a scene's built-in program must loop over: up to the last one that is on
 // (at least 1).
 int builtInLightCount(const Scene &scene);
+// Whether a light the program loops over and that is on is attenuated or a spotlight.
+bool builtInNeedsLightFactors(const Scene &scene);
 // Whether the pair is the built-in program of a shading mode as shipped (true: Gouraud).
 std::optional<bool> shippedBuiltIn(const QString &vertexSource, const QString &fragmentSource);
-// The built-in sources with MAX_LIGHTS set to `lights`; empty if they have no such line.
+// The source with its "#define NAME N" line set to `value`; empty if it has no such line.
+QString withDefine(const QString &source, const QString &name, int value);
 QString withMaxLights(const QString &source, int lights);
 
 // Compiles both stages and links them.

@@ -30,7 +30,7 @@ QString Renderer::initialize()
     noteDriverRefusesVersion100(!acceptsVersion100(*this));
     QString error;
     for (bool gouraud : {true, false}) // the default scene's: one light
-        m_builtIns[gouraud][0] = buildSpecialisedBuiltIn(*this, gouraud, 1, error);
+        m_builtIns[gouraud][0][0] = buildSpecialisedBuiltIn(*this, {gouraud, 1, false}, error);
     m_differenceProgram = buildBuiltIn(*this, "difference", error);
     error += m_overlays.initialize(*this);
     if (!error.isEmpty())
@@ -58,8 +58,9 @@ void Renderer::cleanup()
     for (BuiltProgram *p : {&m_differenceProgram, &m_user, &m_candidate})
         *p = {};
     for (auto &shading : m_builtIns)
-        for (BuiltProgram &p : shading)
-            p = {};
+        for (auto &factors : shading)
+            for (BuiltProgram &p : factors)
+                p = {};
     m_checkerTexture.reset();
     m_objectTextureGl.reset();
     m_initialized = false;
@@ -119,25 +120,27 @@ const BuiltProgram &Renderer::objectProgram(const Scene &scene)
     // The editor's program is the built-in text as shipped: the same program, compiled for
     // the lights the scene uses.
     if (m_user.shippedBuiltIn)
-        return specialisedBuiltIn(*m_user.shippedBuiltIn, builtInLightCount(scene));
+        return specialisedBuiltIn(
+            {*m_user.shippedBuiltIn, builtInLightCount(scene), builtInNeedsLightFactors(scene)});
     return m_user;
 }
 
 const BuiltProgram &Renderer::builtInProgram(const Scene &scene)
 {
-    return specialisedBuiltIn(scene.shading.shading == Shading::Gouraud, builtInLightCount(scene));
+    return specialisedBuiltIn({scene.shading.shading == Shading::Gouraud, builtInLightCount(scene),
+                               builtInNeedsLightFactors(scene)});
 }
 
-const BuiltProgram &Renderer::specialisedBuiltIn(bool gouraud, int lights)
+const BuiltProgram &Renderer::specialisedBuiltIn(const BuiltInVariant &variant)
 {
-    BuiltProgram &p = m_builtIns[gouraud][std::size_t(lights - 1)];
+    auto &shading = m_builtIns[variant.gouraud];
+    BuiltProgram &p = shading[variant.lightFactors][std::size_t(variant.lights - 1)];
     if (!p.program) {
         QString error;
-        p = buildSpecialisedBuiltIn(*this, gouraud, lights, error);
-        if (!error.isEmpty()) { // the sources differ by one number from those built at start
+        p = buildSpecialisedBuiltIn(*this, variant, error);
+        if (!error.isEmpty()) { // the sources differ by two numbers from those built at start
             qWarning("lightbench: %s", qPrintable(error));
-            return m_builtIns[gouraud][kMaxLights - 1].program ? m_builtIns[gouraud][kMaxLights - 1]
-                                                               : m_builtIns[gouraud][0];
+            return shading[0][0];
         }
     }
     return p;

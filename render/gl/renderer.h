@@ -105,7 +105,7 @@ private:
     // The built-in program of the scene's shading, compiled for the lights the scene uses
     // (built once per shading and count, then kept).
     const BuiltProgram &builtInProgram(const Scene &scene);
-    const BuiltProgram &specialisedBuiltIn(bool gouraud, int lights);
+    const BuiltProgram &specialisedBuiltIn(const BuiltInVariant &variant);
     void uploadObject();
     // One side: cleared and drawn in `view` (top-left origin in a frame `frameHeight` high),
     // only inside `clip`.
@@ -118,8 +118,8 @@ private:
     void measureDifference(QSize pixels);
 
     bool m_initialized = false;
-    // The built-in programs: [gouraud][lights used - 1] (builtInProgram).
-    std::array<std::array<BuiltProgram, kMaxLights>, 2> m_builtIns;
+    // The built-in programs: [gouraud][light factors][lights used - 1] (builtInProgram).
+    std::array<std::array<std::array<BuiltProgram, kMaxLights>, 2>, 2> m_builtIns;
     BuiltProgram m_differenceProgram, m_user, m_candidate;
     Overlays m_overlays;
     Texture m_checker;

@@ -304,8 +304,23 @@ private slots:
         QVERIFY(withMaxLights("void main() {}", 2).isEmpty());
         for (bool gouraud : {false, true}) {
             const Preset &p = builtInPreset(gouraud);
-            QVERIFY(!withMaxLights(gouraud ? p.vertexSource() : p.fragmentSource(), 1).isEmpty());
+            const QString &lit = gouraud ? p.vertexSource() : p.fragmentSource();
+            QVERIFY(!withMaxLights(lit, 1).isEmpty());
+            QVERIFY(!withDefine(lit, "LIGHT_FACTORS", 0).isEmpty());
         }
+        // Attenuation and spot are compiled in only for a light that is on and uses them
+        // (attenuation only for a point light).
+        Scene s;
+        QVERIFY(!builtInNeedsLightFactors(s));
+        s.lights[1].spot.cutoffDegrees = 30.0f; // light 2 is off
+        QVERIFY(!builtInNeedsLightFactors(s));
+        s.lights[1].enabled = true;
+        QVERIFY(builtInNeedsLightFactors(s));
+        s = Scene{};
+        s.lights[0].attenuation = {1.0f, 0.5f, 0.0f};
+        QVERIFY(builtInNeedsLightFactors(s));
+        s.lights[0].position.w = 0.0f;
+        QVERIFY(!builtInNeedsLightFactors(s));
     }
 
     void gouraudAndPhongDifferAtTheHighlight()
