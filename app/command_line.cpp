@@ -131,6 +131,9 @@ const OptionSpec kOptions[] = {
     {"import-time-limit", "SECONDS", "Time limit of the import helper (default 300)."},
     {"shading", "gouraud|phong", "Lighting per vertex (Gouraud) or per fragment (Phong)."},
     {"specular", "phong|blinn", "Specular term: Phong (R.V) or Blinn-Phong (N.H)."},
+    {"show", "colour|normal|light|view|half|reflect|ndotl|specular|attenuation",
+     "What the surface shows: the lit colour, or N, L, V, H, R (as 0.5v + 0.5), N.L, the "
+     "specular factor or the attenuation (as grey); L, H, R and the numbers are light 1's."},
     {"terms", "ambient,diffuse,specular",
      "The terms of the model that are on: any of the three, or none (default all); the "
      "others add nothing."},
@@ -330,6 +333,10 @@ void parseInto(const QCommandLineParser &parser, CommandLine &cl)
             fail("spot", QString("the exponent %1 is outside 0 to 128").arg(v[4]));
         const Spot spot{{v[0], v[1], v[2]}, v[3], v[4]};
         add([spot](Scene &s) { s.lights[0].spot = spot; });
+    }
+    if (given("show")) {
+        const ShowChoice v = word("show", value("show"), parseShowChoice, showChoiceNames());
+        add([v](Scene &s) { s.shading.show = v; });
     }
     if (given("terms")) {
         TermSwitches terms{false, false, false};

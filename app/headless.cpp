@@ -144,6 +144,7 @@ QJsonObject probeJson(const ProbeResult &probe, const QImage &frame, QPoint pixe
         if (enabled)
             terms.append(name);
     o["terms"] = terms; // those switched on; each light below lists all three
+    o["show"] = toName(scene.shading.show);
     if (!probe.hit)
         return o;
     const QJsonArray ref = bytes(probe.reference);

@@ -12,11 +12,16 @@ uniform bool uEnableLighting;
 uniform bool uEnableVertexColor;
 uniform bool uEnableTexture;
 uniform sampler2D uSampler;
+uniform int uShow; // not 0: fAmbientDiffuse holds a vector or number of the model, shown as is
 
 out vec4 fragColor;
 
 void main()
 {
+    if (uShow != 0) {
+        fragColor = vec4(fAmbientDiffuse, 1.0);
+        return;
+    }
     vec3 base = vec3(1.0);
     if (uEnableVertexColor)
         base *= fColor;

@@ -40,6 +40,11 @@ uniform int uProjection;    // 0: perspective, V = -posC; 1: parallel, V = (0,0,
 uniform bool uEnableAmbient;  // each term can be switched off to see the others alone
 uniform bool uEnableDiffuse;
 uniform bool uEnableSpecular;
+// What the surface shows: 0 the lit colour; 1 to 5 N, L, V, H, R as 0.5 v + 0.5; 6 N.L,
+// 7 the specular factor, 8 the attenuation, as grey. L, H, R and the numbers are light 1's.
+// The workbench compiles this text with SHOW_CHOICES 0 while the colour is shown.
+#define SHOW_CHOICES 1
+uniform int uShow;
 
 uniform bool uEnableLighting;
 uniform bool uEnableVertexColor;
@@ -73,28 +78,55 @@ vec3 spotInCamera(int i)
     return normalize(d.xyz);
 }
 
-// Attenuation times spot: what scales all three of light i's terms at P.
-float lightFactor(int i, vec4 light, vec3 P, vec3 L)
+// OpenGL 2.1's attenuation of light i at P: 1 / (kc + kl d + kq d^2), 1 for a direction.
+float attenuationOf(int i, vec4 light, vec3 P)
 {
 #if LIGHT_FACTORS == 0
     return 1.0;
 #else
-    float attenuation = 1.0; // a directional light is not attenuated
-    if (light.w != 0.0) {
-        float d = length(light.xyz - P);
-        vec3 k = lightAttenuation[i];
-        attenuation = 1.0 / max(k.x + k.y * d + k.z * d * d, 1e-6);
-    }
-    float spot = 1.0;
-    if (spotCosCutoff[i] > -1.0) {
-        float cosAngle = dot(-L, spotInCamera(i));
-        if (cosAngle < spotCosCutoff[i])
-            spot = 0.0; // outside the cone
-        else if (spotExponent[i] != 0.0) // pow(0, 0) is undefined in GLSL; here it is 1
-            spot = pow(max(cosAngle, 0.0), spotExponent[i]);
-    }
-    return attenuation * spot;
+    if (light.w == 0.0)
+        return 1.0;
+    float d = length(light.xyz - P);
+    vec3 k = lightAttenuation[i];
+    return 1.0 / max(k.x + k.y * d + k.z * d * d, 1e-6);
 #endif
+}
+
+// Light i's spot factor for the direction L towards it: 0 outside the cone.
+float spotOf(int i, vec3 L)
+{
+#if LIGHT_FACTORS == 0
+    return 1.0;
+#else
+    if (spotCosCutoff[i] <= -1.0)
+        return 1.0; // no spot
+    float cosAngle = dot(-L, spotInCamera(i));
+    if (cosAngle < spotCosCutoff[i])
+        return 0.0;
+    if (spotExponent[i] == 0.0) // pow(0, 0) is undefined in GLSL; here it is 1
+        return 1.0;
+    return pow(max(cosAngle, 0.0), spotExponent[i]);
+#endif
+}
+
+// What uShow asks for at P, from light 1.
+vec3 shown(vec3 P, vec3 N, vec3 V)
+{
+    vec4 light = lightInCamera(0);
+    vec3 L = light.w == 0.0 ? normalize(light.xyz) : normalize(light.xyz - P);
+    vec3 H = normalize(L + V);
+    vec3 R = reflect(-L, N);
+    if (uShow <= 5) {
+        vec3 v = uShow == 1 ? N : uShow == 2 ? L : uShow == 3 ? V : uShow == 4 ? H : R;
+        return 0.5 * v + 0.5;
+    }
+    if (uShow == 6)
+        return vec3(dot(L, N)); // negative (the light behind) shows black
+    if (uShow == 7) {
+        float specularAngle = uSpecularModel == 1 ? dot(N, H) : dot(R, V);
+        return vec3(dot(L, N) < 0.0 ? 0.0 : pow(max(specularAngle, 0.0), shininess));
+    }
+    return vec3(attenuationOf(0, light, P));
 }
 
 // One light's terms at P (camera frame), added to the sums.
@@ -102,7 +134,7 @@ void addLight(int i, vec3 P, vec3 N, vec3 V, inout vec3 ambientDiffuse, inout ve
 {
     vec4 light = lightInCamera(i);
     vec3 L = light.w == 0.0 ? normalize(light.xyz) : normalize(light.xyz - P);
-    float factor = lightFactor(i, light, P, L);
+    float factor = attenuationOf(i, light, P) * spotOf(i, L); // scales all three terms
     vec3 H = normalize(L + V);
     // The slides write reflect(L, N), but GLSL's reflect() mirrors an incident direction that
     // points at the surface; L points away from it, so the mirrored light ray is reflect(-L, N).
@@ -126,6 +158,15 @@ void addLight(int i, vec3 P, vec3 N, vec3 V, inout vec3 ambientDiffuse, inout ve
 
 void main()
 {
+    vec3 V = uProjection == 0 ? normalize(-fPosition) : vec3(0.0, 0.0, 1.0);
+    vec3 N = normalize(fNormal);
+#if SHOW_CHOICES
+    if (uShow != 0) {
+        fragColor = vec4(shown(fPosition, N, V), 1.0);
+        return;
+    }
+#endif
+
     // Vertex colour and texture modulate the ambient and diffuse reflection.
     vec3 base = vec3(1.0);
     if (uEnableVertexColor)
@@ -137,8 +178,6 @@ void main()
         return;
     }
 
-    vec3 V = uProjection == 0 ? normalize(-fPosition) : vec3(0.0, 0.0, 1.0);
-    vec3 N = normalize(fNormal);
     vec3 ambientDiffuse = vec3(0.0);
     vec3 specular = vec3(0.0);
     for (int i = 0; i < MAX_LIGHTS; ++i)

@@ -53,6 +53,17 @@ ShadingPanel::ShadingPanel(SceneDocument *document, QWidget *parent)
         form->addRow(check);
         return check;
     };
+    m_show = makeCombo({tr("Colour (lit)"), tr("N as colour"), tr("L as colour"), tr("V as colour"),
+                        tr("H as colour"), tr("R as colour"), tr("N\u00b7L as grey"),
+                        tr("Specular factor as grey"), tr("Attenuation as grey")},
+                       tr("uShow: the model taken apart. Vectors as 0.5\u00b7v + 0.5 (x red, y "
+                          "green, z blue), numbers as grey; L, H, R and the numbers are light "
+                          "1's (with several lights on too)"));
+    connect(m_show, &QComboBox::currentIndexChanged, this,
+            [this](int i) { edit([&](Scene &s) { s.shading.show = ShowChoice(i); }); });
+    feeds(m_show, {Semantic::Show});
+    form->addRow(tr("Show"), m_show);
+
     m_lighting = makeCheck(tr("Lighting"), tr("uEnableLighting: off shows Kd unlit (key L)"),
                            &ShadingSettings::lighting);
     m_vertexColors = makeCheck(tr("Vertex colours"),
@@ -141,7 +152,8 @@ void ShadingPanel::refresh(const Scene &scene)
     const QSignalBlocker b1(m_shading), b2(m_specular), b3(m_projection), b4(m_lighting),
         b5(m_vertexColors), b6(m_texture), b7(m_normalsByModelView), b8(m_compareMode),
         b9(m_compareShading), b10(m_compareSpecular), b11(m_wipe), b12(m_terms[0]), b13(m_terms[1]),
-        b14(m_terms[2]);
+        b14(m_terms[2]), b15(m_show);
+    m_show->setCurrentIndex(int(scene.shading.show));
     m_shading->setCurrentIndex(int(scene.shading.shading));
     m_specular->setCurrentIndex(int(scene.shading.specular));
     m_projection->setCurrentIndex(int(scene.shading.projection));

@@ -27,6 +27,7 @@ public:
     QCheckBox *normalsByModelViewCheck() const { return m_normalsByModelView; }
     // Ambient, diffuse, specular.
     QCheckBox *termCheck(int i) const { return m_terms[std::size_t(i)]; }
+    QComboBox *showCombo() const { return m_show; }
     QComboBox *compareModeCombo() const { return m_compareMode; }
     QComboBox *compareShadingCombo() const { return m_compareShading; }
     QComboBox *compareSpecularCombo() const { return m_compareSpecular; }
@@ -48,6 +49,7 @@ private:
     QCheckBox *m_texture;
     QCheckBox *m_normalsByModelView;
     std::array<QCheckBox *, 3> m_terms{};
+    QComboBox *m_show;
     QComboBox *m_compareMode;
     QComboBox *m_compareShading;
     QComboBox *m_compareSpecular;

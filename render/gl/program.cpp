@@ -320,6 +320,10 @@ int builtInLightCount(const Scene &scene)
 
 bool builtInNeedsLightFactors(const Scene &scene)
 {
+    const Light &first = scene.lights[0]; // Show attenuation shows light 1's, on or off
+    if (scene.shading.show == ShowChoice::Attenuation && first.position.w != 0.0f &&
+        first.attenuation != glm::vec3(1.0f, 0.0f, 0.0f))
+        return true;
     const int count = builtInLightCount(scene);
     for (int i = 0; i < count; ++i) {
         const Light &l = scene.lights[std::size_t(i)];
@@ -331,6 +335,12 @@ bool builtInNeedsLightFactors(const Scene &scene)
     return false;
 }
 
+BuiltInVariant builtInVariant(const Scene &scene, bool gouraud)
+{
+    return {gouraud, builtInLightCount(scene), builtInNeedsLightFactors(scene),
+            scene.shading.show != ShowChoice::Colour};
+}
+
 BuiltProgram buildSpecialisedBuiltIn(QOpenGLExtraFunctions &gl, const BuiltInVariant &variant,
                                      QString &error)
 {
@@ -338,14 +348,17 @@ BuiltProgram buildSpecialisedBuiltIn(QOpenGLExtraFunctions &gl, const BuiltInVar
     // The stage with the light loop has the lines; the other is used as it is.
     const auto specialise = [&](const QString &source) {
         const QString lights = withMaxLights(source, variant.lights);
-        return lights.isEmpty() ? lights
-                                : withDefine(lights, "LIGHT_FACTORS", variant.lightFactors ? 1 : 0);
+        const QString factors =
+            lights.isEmpty() ? lights
+                             : withDefine(lights, "LIGHT_FACTORS", variant.lightFactors ? 1 : 0);
+        return factors.isEmpty() ? factors
+                                 : withDefine(factors, "SHOW_CHOICES", variant.showChoices ? 1 : 0);
     };
     const QString vertex = preset.vertexSource(), fragment = preset.fragmentSource();
     const QString v = specialise(vertex), f = specialise(fragment);
     if (v.isEmpty() && f.isEmpty()) {
         error += "built-in shader '" + preset.name +
-                 "' has no '#define MAX_LIGHTS' and '#define LIGHT_FACTORS' lines\n";
+                 "' lacks a '#define MAX_LIGHTS', 'LIGHT_FACTORS' or 'SHOW_CHOICES' line\n";
         return {};
     }
     BuiltProgram built = buildProgram(gl, v.isEmpty() ? vertex : v, f.isEmpty() ? fragment : f);

@@ -11,6 +11,7 @@
 #include <QString>
 
 #include <optional>
+#include <tuple>
 #include <vector>
 
 namespace lb {
@@ -66,13 +67,22 @@ BuiltProgram buildBuiltIn(QOpenGLExtraFunctions &gl, const QString &name, QStrin
 // Elements past the count are never read: the scene's later lights are all off.
 // Likewise LIGHT_FACTORS: 0 compiles attenuation and spotlights out while no light that is
 // on has either (they cost llvmpipe a fifth of the default scene's frame rate at their
-// defaults, since it evaluates every branch).
+// defaults, since it evaluates every branch), and SHOW_CHOICES 0 the Show choice while the
+// colour is shown.
 struct BuiltInVariant
 {
     bool gouraud = false;
     int lights = 1;            // MAX_LIGHTS
     bool lightFactors = false; // LIGHT_FACTORS
+    bool showChoices = false;  // SHOW_CHOICES: something other than the colour is shown
+    bool operator<(const BuiltInVariant &o) const
+    {
+        return std::tie(gouraud, lights, lightFactors, showChoices) <
+               std::tie(o.gouraud, o.lights, o.lightFactors, o.showChoices);
+    }
 };
+// The variant `scene` needs of the built-in program of a shading mode.
+BuiltInVariant builtInVariant(const Scene &scene, bool gouraud);
 BuiltProgram buildSpecialisedBuiltIn(QOpenGLExtraFunctions &gl, const BuiltInVariant &variant,
                                      QString &error);
 // The lights a scene's built-in program must loop over: up to the last one that is on

@@ -30,7 +30,7 @@ QString Renderer::initialize()
     noteDriverRefusesVersion100(!acceptsVersion100(*this));
     QString error;
     for (bool gouraud : {true, false}) // the default scene's: one light
-        m_builtIns[gouraud][0][0] = buildSpecialisedBuiltIn(*this, {gouraud, 1, false}, error);
+        m_builtIns[BuiltInVariant{gouraud}] = buildSpecialisedBuiltIn(*this, {gouraud}, error);
     m_differenceProgram = buildBuiltIn(*this, "difference", error);
     error += m_overlays.initialize(*this);
     if (!error.isEmpty())
@@ -57,10 +57,7 @@ void Renderer::cleanup()
     m_objectUploaded = m_objectTextureUploaded = false;
     for (BuiltProgram *p : {&m_differenceProgram, &m_user, &m_candidate})
         *p = {};
-    for (auto &shading : m_builtIns)
-        for (auto &factors : shading)
-            for (BuiltProgram &p : factors)
-                p = {};
+    m_builtIns.clear();
     m_checkerTexture.reset();
     m_objectTextureGl.reset();
     m_initialized = false;
@@ -120,27 +117,24 @@ const BuiltProgram &Renderer::objectProgram(const Scene &scene)
     // The editor's program is the built-in text as shipped: the same program, compiled for
     // the lights the scene uses.
     if (m_user.shippedBuiltIn)
-        return specialisedBuiltIn(
-            {*m_user.shippedBuiltIn, builtInLightCount(scene), builtInNeedsLightFactors(scene)});
+        return specialisedBuiltIn(builtInVariant(scene, *m_user.shippedBuiltIn));
     return m_user;
 }
 
 const BuiltProgram &Renderer::builtInProgram(const Scene &scene)
 {
-    return specialisedBuiltIn({scene.shading.shading == Shading::Gouraud, builtInLightCount(scene),
-                               builtInNeedsLightFactors(scene)});
+    return specialisedBuiltIn(builtInVariant(scene, scene.shading.shading == Shading::Gouraud));
 }
 
 const BuiltProgram &Renderer::specialisedBuiltIn(const BuiltInVariant &variant)
 {
-    auto &shading = m_builtIns[variant.gouraud];
-    BuiltProgram &p = shading[variant.lightFactors][std::size_t(variant.lights - 1)];
+    BuiltProgram &p = m_builtIns[variant];
     if (!p.program) {
         QString error;
         p = buildSpecialisedBuiltIn(*this, variant, error);
-        if (!error.isEmpty()) { // the sources differ by two numbers from those built at start
+        if (!error.isEmpty()) { // the sources differ by three numbers from those built at start
             qWarning("lightbench: %s", qPrintable(error));
-            return shading[0][0];
+            return m_builtIns[BuiltInVariant{variant.gouraud}];
         }
     }
     return p;

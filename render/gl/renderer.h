@@ -17,6 +17,7 @@
 
 #include <array>
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -118,8 +119,8 @@ private:
     void measureDifference(QSize pixels);
 
     bool m_initialized = false;
-    // The built-in programs: [gouraud][light factors][lights used - 1] (builtInProgram).
-    std::array<std::array<std::array<BuiltProgram, kMaxLights>, 2>, 2> m_builtIns;
+    // The built-in programs, by variant (builtInProgram), built when first needed.
+    std::map<BuiltInVariant, BuiltProgram> m_builtIns;
     BuiltProgram m_differenceProgram, m_user, m_candidate;
     Overlays m_overlays;
     Texture m_checker;

@@ -41,6 +41,7 @@ const std::pair<const char *, Semantic> kTable[] = {
     {"uEnableAmbient", Semantic::EnableAmbient},
     {"uEnableDiffuse", Semantic::EnableDiffuse},
     {"uEnableSpecular", Semantic::EnableSpecular},
+    {"uShow", Semantic::Show},
 };
 
 } // namespace

@@ -43,6 +43,7 @@ enum class Semantic {
     EnableAmbient,     // uEnableAmbient: the ambient term on or off
     EnableDiffuse,     // uEnableDiffuse
     EnableSpecular,    // uEnableSpecular
+    Show,              // uShow: 0 the colour, 1 N, 2 L, 3 V, 4 H, 5 R, 6 N·L, 7 specular, 8 att.
 };
 
 std::optional<Semantic> semanticOf(const QString &uniformName);

@@ -70,6 +70,32 @@ float spotFactor(const glm::vec3 &L, const glm::vec3 &D, float cosCutoff, float 
     return exponent == 0.0f ? 1.0f : glm::pow(glm::max(cosAngle, 0.0f), exponent);
 }
 
+glm::vec3 shownColor(ShowChoice show, const LightingTerms &t)
+{
+    const auto asColour = [](const glm::vec3 &v) { return 0.5f * v + 0.5f; };
+    switch (show) {
+    case ShowChoice::Colour:
+        break;
+    case ShowChoice::Normal:
+        return asColour(t.N);
+    case ShowChoice::Light:
+        return asColour(t.L);
+    case ShowChoice::View:
+        return asColour(t.V);
+    case ShowChoice::Half:
+        return asColour(t.H);
+    case ShowChoice::Reflect:
+        return asColour(t.R);
+    case ShowChoice::NDotL:
+        return glm::vec3(t.nDotL); // negative (light behind) shows black
+    case ShowChoice::Specular:
+        return glm::vec3(t.specularFactor);
+    case ShowChoice::Attenuation:
+        return glm::vec3(t.attenuation);
+    }
+    return glm::vec3(0.0f);
+}
+
 glm::vec3 shadedColor(const glm::vec3 &ambientPlusDiffuse, const glm::vec3 &specular,
                       const glm::vec3 &base)
 {

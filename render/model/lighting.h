@@ -27,6 +27,11 @@ struct LightColors
     glm::vec3 is{1.0f}; // lightSpe
 };
 
+// What the surface shows: the lit colour, or one of the model's vectors (as 0.5·v + 0.5) or
+// numbers (as grey) at each point. L, H, R, N·L, the specular factor and the attenuation are
+// light 1's.
+enum class ShowChoice { Colour, Normal, Light, View, Half, Reflect, NDotL, Specular, Attenuation };
+
 // The three terms of the model, each of which can be switched off to see the others alone.
 struct TermSwitches
 {
@@ -108,6 +113,10 @@ struct LightingSum
 
 // The colour the model gives, before the framebuffer clamps it: the base colour (vertex colour
 // and/or texture, white when off) modulates ambient and diffuse; specular is the light's own.
+// The colour `show` gives at a point where light 1's terms are `light1` (ShowChoice::Colour:
+// none; the caller uses the lit colour).
+glm::vec3 shownColor(ShowChoice show, const LightingTerms &light1);
+
 glm::vec3 shadedColor(const glm::vec3 &ambientPlusDiffuse, const glm::vec3 &specular,
                       const glm::vec3 &base);
 // With lighting switched off the surface shows its diffuse colour times the base colour.

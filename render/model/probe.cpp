@@ -143,8 +143,20 @@ ProbeResult probeSurface(const Scene &scene, const Mesh &mesh, const Texture &te
         r.lights.push_back(light);
     }
 
+    // The Show choice: light 1's vectors and numbers, on or off, at the point (Phong) or at
+    // the corners and interpolated (Gouraud), as the built-in programs compute them.
+    const ShowChoice show = scene.shading.show;
+    const LightingInputs light1 = lightingInputs(scene, frames, 0);
     glm::vec3 colour;
-    if (!scene.shading.lighting) {
+    if (show != ShowChoice::Colour && scene.shading.shading == Shading::Phong) {
+        colour = shownColor(show, evaluateLighting(r.position, r.normal, light1));
+    } else if (show != ShowChoice::Colour) {
+        colour = glm::vec3(0.0f);
+        for (int k = 0; k < 3; ++k)
+            colour +=
+                w[k] * shownColor(show, evaluateLighting(corners[k],
+                                                         eyeNormal(mesh.normals[tri[k]]), light1));
+    } else if (!scene.shading.lighting) {
         colour = unlitColor(scene.material, r.base);
     } else if (scene.shading.shading == Shading::Phong) {
         colour = shadedColor(r.total.ambient + r.total.diffuse, r.total.specular, r.base);

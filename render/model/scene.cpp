@@ -36,6 +36,16 @@ constexpr NameTable<CompareMode, 4> kCompareModes{{{CompareMode::Off, "off"},
                                                    {CompareMode::Wipe, "wipe"},
                                                    {CompareMode::Difference, "difference"}}};
 
+constexpr NameTable<ShowChoice, 9> kShowChoices{{{ShowChoice::Colour, "colour"},
+                                                 {ShowChoice::Normal, "normal"},
+                                                 {ShowChoice::Light, "light"},
+                                                 {ShowChoice::View, "view"},
+                                                 {ShowChoice::Half, "half"},
+                                                 {ShowChoice::Reflect, "reflect"},
+                                                 {ShowChoice::NDotL, "ndotl"},
+                                                 {ShowChoice::Specular, "specular"},
+                                                 {ShowChoice::Attenuation, "attenuation"}}};
+
 template <typename E, std::size_t N> QString nameOf(const NameTable<E, N> &table, E value)
 {
     for (const auto &[v, name] : table)
@@ -91,6 +101,10 @@ QString toName(CompareMode v)
 {
     return nameOf(kCompareModes, v);
 }
+QString toName(ShowChoice v)
+{
+    return nameOf(kShowChoices, v);
+}
 std::optional<LightFrame> parseLightFrame(const QString &s)
 {
     return valueOf(kFrames, s);
@@ -119,6 +133,10 @@ std::optional<CompareMode> parseCompareMode(const QString &s)
 {
     return valueOf(kCompareModes, s);
 }
+std::optional<ShowChoice> parseShowChoice(const QString &s)
+{
+    return valueOf(kShowChoices, s);
+}
 QStringList lightFrameNames()
 {
     return namesOf(kFrames);
@@ -146,6 +164,10 @@ QStringList normalModeNames()
 QStringList compareModeNames()
 {
     return namesOf(kCompareModes);
+}
+QStringList showChoiceNames()
+{
+    return namesOf(kShowChoices);
 }
 
 Lights defaultLights()
@@ -200,10 +222,10 @@ bool operator==(const Material &a, const Material &b)
 
 bool operator==(const ShadingSettings &a, const ShadingSettings &b)
 {
-    return std::tie(a.shading, a.specular, a.projection, a.lighting, a.terms, a.vertexColors,
-                    a.texture, a.normalsByModelView) ==
-           std::tie(b.shading, b.specular, b.projection, b.lighting, b.terms, b.vertexColors,
-                    b.texture, b.normalsByModelView);
+    return std::tie(a.shading, a.specular, a.projection, a.lighting, a.terms, a.show,
+                    a.vertexColors, a.texture, a.normalsByModelView) ==
+           std::tie(b.shading, b.specular, b.projection, b.lighting, b.terms, b.show,
+                    b.vertexColors, b.texture, b.normalsByModelView);
 }
 
 bool operator==(const ObjectSettings &a, const ObjectSettings &b)

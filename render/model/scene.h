@@ -54,7 +54,8 @@ struct ShadingSettings
     SpecularModel specular = SpecularModel::Blinn; // the slides' complete shaders use H
     Projection projection = Projection::Perspective;
     bool lighting = true;
-    TermSwitches terms; // ambient, diffuse and specular, each on or off
+    TermSwitches terms;                   // ambient, diffuse and specular, each on or off
+    ShowChoice show = ShowChoice::Colour; // the lit colour, or a vector or number of the model
     bool vertexColors = false;
     bool texture = false;
     // Wrong on purpose, to show why: normals transformed by the model-view itself instead of
@@ -164,6 +165,7 @@ QString toName(Projection v);
 QString toName(Shape v);
 QString toName(NormalMode v);
 QString toName(CompareMode v);
+QString toName(ShowChoice v);
 std::optional<LightFrame> parseLightFrame(const QString &s);
 std::optional<Shading> parseShading(const QString &s);
 std::optional<SpecularModel> parseSpecularModel(const QString &s);
@@ -171,6 +173,7 @@ std::optional<Projection> parseProjection(const QString &s);
 std::optional<Shape> parseShape(const QString &s);
 std::optional<NormalMode> parseNormalMode(const QString &s);
 std::optional<CompareMode> parseCompareMode(const QString &s);
+std::optional<ShowChoice> parseShowChoice(const QString &s);
 QStringList lightFrameNames();
 QStringList shadingNames();
 QStringList specularModelNames();
@@ -178,6 +181,7 @@ QStringList projectionNames();
 QStringList shapeNames();
 QStringList normalModeNames();
 QStringList compareModeNames();
+QStringList showChoiceNames();
 
 } // namespace lb
 

@@ -220,6 +220,7 @@ QJsonObject Scene::toJson() const
     s["projection"] = toName(shading.projection);
     s["lighting"] = shading.lighting;
     s["terms"] = termsJson(shading.terms);
+    s["show"] = toName(shading.show);
     s["vertexColors"] = shading.vertexColors;
     s["texture"] = shading.texture;
     s["normalsByModelView"] = shading.normalsByModelView;
@@ -311,6 +312,7 @@ Scene Scene::fromJson(const QJsonObject &json, QStringList *ignored)
     r.boolean(terms, "ambient", "shading.terms", sc.shading.terms.ambient);
     r.boolean(terms, "diffuse", "shading.terms", sc.shading.terms.diffuse);
     r.boolean(terms, "specular", "shading.terms", sc.shading.terms.specular);
+    r.word(s, "show", "shading", parseShowChoice, sc.shading.show);
     r.boolean(s, "vertexColors", "shading", sc.shading.vertexColors);
     r.boolean(s, "texture", "shading", sc.shading.texture);
     r.boolean(s, "normalsByModelView", "shading", sc.shading.normalsByModelView);

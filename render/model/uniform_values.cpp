@@ -79,6 +79,8 @@ UniformValue uniformValue(Semantic semantic, const Scene &scene, const Frames &f
         return UniformValue::ofNumber(s.terms.diffuse ? 1.0f : 0.0f);
     case Semantic::EnableSpecular:
         return UniformValue::ofNumber(s.terms.specular ? 1.0f : 0.0f);
+    case Semantic::Show:
+        return UniformValue::ofNumber(float(int(s.show)));
     }
     return {};
 }

@@ -212,6 +212,47 @@ private slots:
         QVERIFY2(dark > 50, qPrintable(QString("%1 dark samples").arg(dark)));
     }
 
+    // The Show choice: light 1's vectors and numbers instead of the colour, with light 2 on
+    // too (it must not count), in both shadings and each frame of light 1.
+    void showChoicesMatchTheReference_data()
+    {
+        QTest::addColumn<int>("show");
+        QTest::addColumn<int>("shading");
+        QTest::addColumn<int>("specular");
+        QTest::addColumn<int>("frame");
+        for (int show = 1; show <= int(ShowChoice::Attenuation); ++show)
+            for (int sh = 0; sh < 2; ++sh)
+                for (int fr = 0; fr < 3; ++fr) {
+                    const int sp = (show + fr) % 2; // both specular models across the rows
+                    QTest::newRow(
+                        qPrintable(QString("%1 %2 %3 %4")
+                                       .arg(toName(ShowChoice(show)), toName(Shading(sh)),
+                                            toName(SpecularModel(sp)), toName(LightFrame(fr)))))
+                        << show << sh << sp << fr;
+                }
+    }
+    void showChoicesMatchTheReference()
+    {
+        QFETCH(int, show);
+        QFETCH(int, shading);
+        QFETCH(int, specular);
+        QFETCH(int, frame);
+        Scene s = testScene();
+        s.shading.show = ShowChoice(show);
+        s.shading.shading = Shading(shading);
+        s.shading.specular = SpecularModel(specular);
+        s.material.shininess = 8;
+        s.lights[0].frame = LightFrame(frame);
+        s.lights[0].position = {0.8f, 1.1f, 1.9f, 1.0f};
+        s.lights[0].attenuation = {0.3f, 0.4f, 0.2f};
+        s.lights[1].enabled = true; // on, and not what is shown
+        expectMatch(s, QTest::currentDataTag(), 100, 0);
+        // Not the lit colour: the picture changes with the choice.
+        Scene lit = s;
+        lit.shading.show = ShowChoice::Colour;
+        QVERIFY(largestDifference(m_offscreen.render(s), m_offscreen.render(lit)) > 20);
+    }
+
     void aLightSwitchedOffAddsNothing()
     {
         Scene one = testScene();

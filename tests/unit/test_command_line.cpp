@@ -71,6 +71,8 @@ private slots:
         QCOMPARE(s.lights[0].spot.exponent, 4.0f);
         QVERIFY(!applied("--terms none").shading.terms.specular);
         QVERIFY(applied("--terms specular").shading.terms.specular);
+        QCOMPARE(applied("--show half").shading.show, ShowChoice::Half);
+        QCOMPARE(applied("--show ndotl").shading.show, ShowChoice::NDotL);
     }
 
     void renderProbeAndSize()
@@ -146,6 +148,8 @@ private slots:
                                         << "--lighting";
         QTest::newRow("tessellation 1") << "--tessellation 1"
                                         << "--tessellation";
+        QTest::newRow("unknown show") << "--show tangent"
+                                      << "--show";
         QTest::newRow("unknown term") << "--terms ambient,emissive"
                                       << "--terms";
         QTest::newRow("empty terms") << "--terms ,"

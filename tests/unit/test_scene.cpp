@@ -72,6 +72,7 @@ private slots:
         row("ambient term", P::Shading, [](Scene &s) { s.shading.terms.ambient = false; });
         row("diffuse term", P::Shading, [](Scene &s) { s.shading.terms.diffuse = false; });
         row("specular term", P::Shading, [](Scene &s) { s.shading.terms.specular = false; });
+        row("show", P::Shading, [](Scene &s) { s.shading.show = ShowChoice::Reflect; });
         row("vertex colours", P::Shading, [](Scene &s) { s.shading.vertexColors = true; });
         row("texture", P::Shading, [](Scene &s) { s.shading.texture = true; });
         row("wrong normals", P::Shading, [](Scene &s) { s.shading.normalsByModelView = true; });
@@ -157,7 +158,7 @@ private slots:
         light["position"] = QJsonArray{1, 2, 3, 0.5}; // w must be 0 or 1
         light["frame"] = "sideways";
         light["ia"] = QJsonArray{1, "x", 0};
-        light["colour"] = "red"; // no such field
+        light["colour"] = "red";                    // no such field
         light["attenuation"] = QJsonArray{0, 0, 0}; // an infinite light
         light["spot"] = QJsonObject{{"direction", QJsonArray{0, 0, 0}}, {"cutoff", 200}};
         lights[0] = light;
@@ -199,10 +200,10 @@ private slots:
              {"lights[0].position", "lights[0].frame", "lights[0].ia", "lights[0].colour",
               "lights[0].attenuation (kc, kl and kq all 0)",
               "lights[0].spot.direction (a direction of length 0)",
-              "lights[0].spot.cutoff (out of range, clamped)",
-              "lights[1] (not an object)", "lights[4]", "material.shininess", "object.tessellation",
-              "object.scale", "camera (not an object)", "future (unknown field)",
-              "shaderValues.five", "shaderValues.word"})
+              "lights[0].spot.cutoff (out of range, clamped)", "lights[1] (not an object)",
+              "lights[4]", "material.shininess", "object.tessellation", "object.scale",
+              "camera (not an object)", "future (unknown field)", "shaderValues.five",
+              "shaderValues.word"})
             QVERIFY2(all.contains(QLatin1String(path)), path);
         QCOMPARE(ignored.size(), 16);
     }
@@ -214,6 +215,9 @@ private slots:
         for (const QString &n : lightFrameNames())
             QCOMPARE(toName(*parseLightFrame(n)), n);
         QVERIFY(!parseShading("flat"));
+        QCOMPARE(showChoiceNames().size(), int(ShowChoice::Attenuation) + 1);
+        for (const QString &n : showChoiceNames())
+            QCOMPARE(toName(*parseShowChoice(n)), n);
     }
 
     void meshes_data()

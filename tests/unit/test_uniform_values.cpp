@@ -85,7 +85,7 @@ class TestUniformValues : public QObject
 private slots:
     void everySemanticHasANameAndEveryNameItsSemantic()
     {
-        for (int i = 0; i <= int(Semantic::EnableSpecular); ++i) { // the last one
+        for (int i = 0; i <= int(Semantic::Show); ++i) { // the last one
             const QStringList names = uniformNames(Semantic(i));
             QVERIFY2(!names.isEmpty(), qPrintable(QString("semantic %1 has no name").arg(i)));
             for (const QString &name : names)
@@ -204,6 +204,10 @@ private slots:
             for (const char *name : {"uSpecularModel", "uProjection", "uEnableLighting",
                                      "uEnableVertexColor", "uEnableTexture"})
                 QCOMPARE(value(name, scene, f).x, x);
+        }
+        for (int show = 0; show <= int(ShowChoice::Attenuation); ++show) {
+            scene.shading.show = ShowChoice(show);
+            QCOMPARE(value("uShow", scene, f).x, float(show));
         }
         // Each term alone.
         for (int term = 0; term < 3; ++term) {
