@@ -1,8 +1,12 @@
 #include "probe_panel.h"
 
+#include "probe_equation.h"
 #include "viewport.h"
 
+#include <QClipboard>
+#include <QGuiApplication>
 #include <QLabel>
+#include <QPushButton>
 #include <QVBoxLayout>
 
 #include <glm/geometric.hpp>
@@ -49,6 +53,11 @@ ProbePanel::ProbePanel(SceneDocument *document, Viewport *viewport, QWidget *par
     m_text->setWordWrap(true);
     m_text->setAlignment(Qt::AlignTop | Qt::AlignLeft);
     layout->addWidget(m_text);
+    m_copyEquation = new QPushButton(tr("Copy the Equation"), this);
+    m_copyEquation->setToolTip(tr("The lighting equation with this point's numbers, as text"));
+    connect(m_copyEquation, &QPushButton::clicked, this,
+            [this] { QGuiApplication::clipboard()->setText(m_equation); });
+    layout->addWidget(m_copyEquation, 0, Qt::AlignLeft);
     layout->addStretch();
     clear();
     connect(document, &SceneDocument::changed, this, &ProbePanel::update);
@@ -63,6 +72,8 @@ void ProbePanel::clear()
     m_point.reset();
     m_result = ProbeResult{};
     m_gpu.reset();
+    m_equation.clear();
+    m_copyEquation->setEnabled(false);
     m_viewport->setProbe({}, QPoint(-1, -1), {});
     m_text->setText(tr("Ctrl+click (or Shift+click) the surface to probe a point: the "
                        "vectors, N\u00b7L, the specular angle and the three terms, beside the "
@@ -211,6 +222,11 @@ void ProbePanel::showText()
         html += row(tr("difference"), tr("%1 of 255").arg(std::max({d.r, d.g, d.b})));
     }
     html += "</table>";
+    // The equation with the numbers, as the course writes it (also copied by the button).
+    m_equation = lightingEquation(side, r);
+    m_copyEquation->setEnabled(!m_equation.isEmpty());
+    html += QString("<hr><b>%1</b><pre style='white-space: pre-wrap'>%2</pre>")
+                .arg(tr("The equation at this point"), m_equation.toHtmlEscaped());
     if (!m_referenceNote.isEmpty())
         html += QString("<p><i>%1</i></p>").arg(m_referenceNote.toHtmlEscaped());
     m_text->setText(html);

@@ -13,6 +13,7 @@
 #include <optional>
 
 class QLabel;
+class QPushButton;
 
 namespace lb {
 
@@ -30,6 +31,9 @@ public:
     bool isActive() const { return m_point.has_value(); }
     const ProbeResult &result() const { return m_result; }
     QLabel *textLabel() const { return m_text; }
+    QPushButton *copyEquationButton() const { return m_copyEquation; }
+    // The lighting equation with the probed point's numbers (probe_equation.h); empty if none.
+    const QString &equation() const { return m_equation; }
     // What the reference does not know about the program on screen ("it computes V =
     // (0,0,1)..."), shown under the numbers; empty for none.
     void setReferenceNote(const QString &note);
@@ -49,6 +53,8 @@ private:
     SceneDocument *m_document;
     Viewport *m_viewport;
     QLabel *m_text;
+    QPushButton *m_copyEquation;
+    QString m_equation;
     std::optional<Point> m_point;
     ProbeResult m_result;
     std::optional<glm::ivec3> m_gpu;

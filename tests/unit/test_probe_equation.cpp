@@ -1,0 +1,107 @@
+// The Probe panel's equation with the numbers in it (probe_equation.h), on a probed sphere:
+// the symbols follow Phong / Blinn-Phong and the terms switched on, each light's line carries
+// the probe's own factors and terms, and the sum and the pixel are the reference's.
+#include "mesh.h"
+#include "probe.h"
+#include "probe_equation.h"
+
+#include <QTest>
+
+#include <cmath>
+
+using namespace lb;
+
+namespace {
+
+const QSize kView(400, 300);
+
+QString fixed(float v)
+{
+    return QString::number(double(v), 'f', 4);
+}
+
+} // namespace
+
+class TestProbeEquation : public QObject
+{
+    Q_OBJECT
+private:
+    Mesh m_sphere = makeSphere(32, 32);
+    Texture m_checker;
+
+    ProbeResult probe(const Scene &scene) const
+    {
+        return probePixel(scene, m_sphere, m_checker, kView, QPoint(210, 140));
+    }
+
+private slots:
+    void symbolsFollowTheSpecularModelAndTheTerms()
+    {
+        Scene s;
+        s.shading.specular = SpecularModel::Phong;
+        QString text = lightingEquation(s, probe(s));
+        QString first = text.section('\n', 0, 0);
+        QVERIFY2(first.contains("Ia·Ka + Id·Kd·max(N·L, 0) + Is·Ks·max(R·V, 0)^n"),
+                 qPrintable(first));
+        s.shading.specular = SpecularModel::Blinn;
+        s.shading.terms.ambient = false;
+        text = lightingEquation(s, probe(s));
+        first = text.section('\n', 0, 0);
+        QVERIFY2(first.contains("att·spot·(Id·Kd·max(N·L, 0) + Is·Ks·max(N·H, 0)^n)"),
+                 qPrintable(first));
+        QVERIFY(!first.contains("Ia·Ka"));
+        QVERIFY(text.contains("[off] att·spot·Ia·Ka")); // still listed, marked
+        QVERIFY(lightingEquation(s, ProbeResult{}).isEmpty());
+    }
+
+    // Two lights, the first attenuated and a spotlight: the numbers are the probe's, and the
+    // last lines give the reference's sum and pixel.
+    void numbersAreTheProbes()
+    {
+        Scene s;
+        s.lights[0].frame = LightFrame::Camera;
+        s.lights[0].position = {0.5f, 0.5f, 0.0f, 1.0f};
+        s.lights[0].attenuation = {1.0f, 0.0f, 1.0f};
+        s.lights[0].spot = {{0.0f, 0.0f, -1.0f}, 60.0f, 2.0f};
+        s.lights[1].enabled = true;
+        const ProbeResult p = probe(s);
+        QVERIFY(p.hit);
+        QCOMPARE(int(p.lights.size()), 2);
+        const LightingTerms &t = p.lights[0].terms;
+        // 1 / (1 + d²) by hand from the probe's distance.
+        QVERIFY(std::abs(t.attenuation - 1.0f / (1.0f + t.distance * t.distance)) < 1e-6f);
+        QVERIFY(t.spot > 0.0f && t.spot < 1.0f);
+        const QString text = lightingEquation(s, p);
+        qInfo("%s", qPrintable(text));
+        QVERIFY2(text.contains(QString("light 1: att·spot = %1·%2 = %3 (d = %4)")
+                                   .arg(fixed(t.attenuation), fixed(t.spot),
+                                        fixed(t.attenuation * t.spot), fixed(t.distance))),
+                 qPrintable(text));
+        QVERIFY(
+            text.contains(QString("= (%1, %2, %3)")
+                              .arg(fixed(t.diffuse.x), fixed(t.diffuse.y), fixed(t.diffuse.z))));
+        QVERIFY(text.contains("light 2: att·spot = 1.0000·1.0000 = 1.0000 (d = "));
+        const glm::vec3 sum = p.total.ambient + p.total.diffuse + p.total.specular;
+        QVERIFY2(text.contains(
+                     QString("= (%1, %2, %3)\n").arg(fixed(sum.x), fixed(sum.y), fixed(sum.z))),
+                 qPrintable(text));
+        QVERIFY(text.contains(QString("pixel = (%1, %2, %3) of 255")
+                                  .arg(std::lround(p.reference.r * 255.0f))
+                                  .arg(std::lround(p.reference.g * 255.0f))
+                                  .arg(std::lround(p.reference.b * 255.0f))));
+    }
+
+    void saysWhatThePixelIsNot()
+    {
+        Scene s;
+        s.shading.shading = Shading::Gouraud;
+        QVERIFY(lightingEquation(s, probe(s)).contains("interpolated"));
+        s.shading.show = ShowChoice::Normal;
+        QVERIFY(lightingEquation(s, probe(s)).contains("shows normal"));
+        s.shading.lighting = false;
+        QVERIFY(lightingEquation(s, probe(s)).contains("Lighting is off"));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestProbeEquation)
+#include "test_probe_equation.moc"
