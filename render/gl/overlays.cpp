@@ -4,7 +4,11 @@
 
 #include <glm/common.hpp>
 #include <glm/ext/matrix_transform.hpp>
+#include <glm/ext/scalar_constants.hpp>
 #include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+#include <cmath>
 
 namespace lb {
 
@@ -74,8 +78,24 @@ void Overlays::drawLightMarker(QOpenGLExtraFunctions &gl, const Light &light, co
     // The marker takes the light's diffuse colour at full brightness, so it stays visible.
     const glm::vec3 id = light.colors.id;
     const float peak = glm::max(id.x, glm::max(id.y, id.z));
-    useUnlit(gl, modelView, frames.projection, peak > 0.0f ? id / peak : glm::vec3(1.0f));
+    const glm::vec3 colour = peak > 0.0f ? id / peak : glm::vec3(1.0f);
+    useUnlit(gl, modelView, frames.projection, colour);
     marker->draw(gl);
+    if (eye.w == 0.0f || light.spot.cutoffDegrees >= limits::kMaxSpotCutoff)
+        return;
+    // A spotlight: eight rays along the cone's edge, from the light.
+    const glm::vec3 axis = spotDirectionInEye(frames, light);
+    const glm::vec3 helper = std::abs(axis.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
+    const glm::vec3 x = glm::normalize(glm::cross(helper, axis)), y = glm::cross(axis, x);
+    const float cutoff = glm::radians(light.spot.cutoffDegrees);
+    constexpr int kRays = 8;
+    for (int k = 0; k < kRays; ++k) {
+        const float around = 2.0f * glm::pi<float>() * float(k) / float(kRays);
+        const glm::vec3 ray = std::cos(cutoff) * axis +
+                              std::sin(cutoff) * (std::cos(around) * x + std::sin(around) * y);
+        useUnlit(gl, orientAlong(glm::vec3(eye), ray, 0.45f), frames.projection, colour);
+        m_arrow.draw(gl);
+    }
 }
 
 void Overlays::drawNormals(QOpenGLExtraFunctions &gl, const GpuMesh &mesh, const Scene &scene,

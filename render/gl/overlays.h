@@ -1,8 +1,8 @@
 #pragma once
-// What is drawn over the object, unlit: the lights' markers (a sphere for a point light, an
-// arrow along a directional light's rays), the normals as short lines, and the probe's
-// arrows. Their programs take their matrices through the semantic table (mModelView,
-// mNormals, mProjection), like every other program.
+// What is drawn over the object, unlit: the lights' markers (a sphere for a point light, with
+// rays along its cone's edge for a spotlight; an arrow along a directional light's rays),
+// the normals as short lines, and the probe's arrows. Their programs take their matrices through
+// the semantic table (mModelView, mNormals, mProjection), like every other program.
 
 #include "frames.h"
 #include "gpu_mesh.h"

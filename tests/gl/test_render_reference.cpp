@@ -444,6 +444,30 @@ private slots:
         expectMatch(s, "mirrored plane, culled", 100, 0);
     }
 
+    // A spotlight's marker adds rays along its cone: more of the frame changes than for the
+    // point light's sphere alone, and nothing when the markers are hidden.
+    void spotlightMarkerShowsTheCone()
+    {
+        Scene s;
+        s.lights[0].position = {0.0f, 1.6f, 0.0f, 1.0f};
+        s.lights[0].spot = {{0.0f, -1.0f, 0.0f}, 30.0f, 2.0f};
+        const auto markerPixels = [&](const Scene &scene) {
+            Scene hidden = scene;
+            hidden.showLight = false;
+            const QImage with = m_offscreen.render(scene), without = m_offscreen.render(hidden);
+            int changed = 0;
+            for (int y = 0; y < with.height(); ++y)
+                for (int x = 0; x < with.width(); ++x)
+                    changed += with.pixel(x, y) != without.pixel(x, y);
+            return changed;
+        };
+        Scene point = s;
+        point.lights[0].spot.cutoffDegrees = 180.0f;
+        const int sphere = markerPixels(point), cone = markerPixels(s);
+        QVERIFY2(sphere > 10 && cone > sphere + 20,
+                 qPrintable(QString("sphere %1 pixels, with the cone %2").arg(sphere).arg(cone)));
+    }
+
     void lightMarkerIsDrawnUnlit()
     {
         Scene s;
