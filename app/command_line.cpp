@@ -315,8 +315,10 @@ void parseInto(const QCommandLineParser &parser, CommandLine &cl)
         add([p](Scene &s) { s.lights[0].position = p; });
     }
     if (given("attenuation")) {
-        const glm::vec3 k =
-            vec3Option("attenuation", value("attenuation"), 0.0f, limits::kMaxAttenuation);
+        const auto v = numbers("attenuation", value("attenuation"), 3, "KC,KL,KQ");
+        for (float x : v)
+            checkRange("attenuation", x, 0.0f, limits::kMaxAttenuation);
+        const glm::vec3 k(v[0], v[1], v[2]);
         if (k == glm::vec3(0.0f))
             fail("attenuation", "KC, KL and KQ cannot all be 0 (the light would be infinite)");
         add([k](Scene &s) { s.lights[0].attenuation = k; });
@@ -350,7 +352,7 @@ void parseInto(const QCommandLineParser &parser, CommandLine &cl)
                 terms.specular = true;
             else
                 fail("terms", QString("unknown term '%1' (expected ambient, diffuse or specular, "
-                                      "separated by commas)")
+                                      "separated by commas, or none)")
                                   .arg(echoed(word)));
         }
         add([terms](Scene &s) { s.shading.terms = terms; });

@@ -114,6 +114,7 @@ LightPanel::LightPanel(SceneDocument *document, QWidget *parent)
                 if (k != glm::vec3(0.0f)) // all three 0 would make the light infinite
                     current(s).attenuation = k;
             });
+            refreshNow(); // a refused edit changes nothing: show the value that holds
         });
         m_attenuation[std::size_t(i)] = spin;
         feeds(spin, {Semantic::LightAttenuation});
@@ -135,6 +136,7 @@ LightPanel::LightPanel(SceneDocument *document, QWidget *parent)
                 if (d != glm::vec3(0.0f)) // an axis needs a direction
                     current(s).spot.direction = d;
             });
+            refreshNow();
         });
         m_spotAxis[std::size_t(i)] = spin;
         feeds(spin, {Semantic::SpotDirection});
@@ -201,12 +203,12 @@ void LightPanel::refresh(const Scene &scene)
         m_attenuation[std::size_t(i)]->setValue(double(light.attenuation[i]));
         m_spotAxis[std::size_t(i)]->setValue(double(light.spot.direction[i]));
         // A directional light is not attenuated: its numbers are kept but have no effect.
-        m_attenuation[std::size_t(i)]->setEnabled(light.position.w != 0.0f);
+        setApplies(m_attenuation[std::size_t(i)], light.position.w != 0.0f);
     }
     const bool spot = light.spot.cutoffDegrees < limits::kMaxSpotCutoff;
     for (QDoubleSpinBox *spin : m_spotAxis)
-        spin->setEnabled(spot);
-    m_spotExponent->setEnabled(spot);
+        setApplies(spin, spot);
+    setApplies(m_spotExponent, spot);
     const QSignalBlocker b1(m_w), b2(m_frame), b3(m_spotCutoff), b4(m_spotExponent);
     m_spotCutoff->setValue(double(light.spot.cutoffDegrees));
     m_spotExponent->setValue(double(light.spot.exponent));

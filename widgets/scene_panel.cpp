@@ -1,7 +1,9 @@
 #include "scene_panel.h"
 
 #include <QComboBox>
+#include <QCoreApplication>
 #include <QDoubleSpinBox>
+#include <QEvent>
 #include <QFormLayout>
 #include <QPushButton>
 
@@ -26,7 +28,21 @@ QDoubleSpinBox *ScenePanel::makeSpin(double lo, double hi, int decimals, double 
     spin->setToolTip(toolTip);
     spin->setAccessibleName(toolTip.section(':', 0, 0));
     spin->setKeyboardTracking(false); // typing "1.25" edits once, not four times
+    // The wheel scrolls the panel over a spin box it passes; it edits one clicked first.
+    spin->setFocusPolicy(Qt::StrongFocus);
+    spin->installEventFilter(this);
     return spin;
+}
+
+bool ScenePanel::eventFilter(QObject *watched, QEvent *event)
+{
+    if (event->type() == QEvent::Wheel)
+        if (auto *widget = qobject_cast<QWidget *>(watched); widget && !widget->hasFocus()) {
+            if (QWidget *parent = widget->parentWidget()) // on to the scroll area around
+                QCoreApplication::sendEvent(parent, event);
+            return true;
+        }
+    return QWidget::eventFilter(watched, event);
 }
 
 QComboBox *ScenePanel::makeCombo(const QStringList &labels, const QString &toolTip)
@@ -51,13 +67,27 @@ QString ScenePanel::namesOf(const std::vector<Semantic> &semantics)
     return names.isEmpty() ? last : names.join(", ") + tr(" or ") + last;
 }
 
+void ScenePanel::setApplies(QWidget *control, bool applies)
+{
+    if (applies)
+        m_notApplying.erase(control);
+    else
+        m_notApplying.insert(control);
+    bool used = true;
+    for (const Use &use : m_uses)
+        if (use.control == control)
+            used = use.used;
+    control->setEnabled(applies && used);
+}
+
 void ScenePanel::showUsage(const std::set<Semantic> &read)
 {
-    for (const Use &use : m_uses) {
+    for (Use &use : m_uses) {
         bool used = false;
         for (Semantic s : use.semantics)
             used = used || read.count(s) > 0;
-        use.control->setEnabled(used);
+        use.used = used;
+        use.control->setEnabled(used && m_notApplying.count(use.control) == 0);
         use.control->setToolTip(
             used ? use.toolTip
                  : tr("Unused: the program on screen has no uniform %1 (a constant in the "

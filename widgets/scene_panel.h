@@ -31,6 +31,9 @@ public:
 protected:
     // `control` feeds the program through any of `semantics` (semantics.h names them).
     void feeds(QWidget *control, std::vector<Semantic> semantics);
+    // Whether `control` applies to the scene as it is (a spot's axis does not without a spot):
+    // it is enabled when it applies and, if it feeds the program, the program reads it.
+    void setApplies(QWidget *control, bool applies);
     // The uniform names of `semantics` in words: "lightDif or uLightColor".
     static QString namesOf(const std::vector<Semantic> &semantics);
 
@@ -48,6 +51,7 @@ protected:
                         std::function<void(Scene &)> reset);
 
     SceneDocument *m_document;
+    bool eventFilter(QObject *watched, QEvent *event) override;
 
 private:
     struct Use
@@ -55,8 +59,10 @@ private:
         QWidget *control;
         std::vector<Semantic> semantics;
         QString toolTip; // as written by the panel
+        bool used = true;
     };
     std::vector<Use> m_uses;
+    std::set<QWidget *> m_notApplying;
 };
 
 } // namespace lb

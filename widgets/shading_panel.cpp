@@ -162,7 +162,7 @@ void ShadingPanel::refresh(const Scene &scene)
     m_terms[1]->setChecked(scene.shading.terms.diffuse);
     m_terms[2]->setChecked(scene.shading.terms.specular);
     for (QCheckBox *check : m_terms)
-        check->setEnabled(scene.shading.lighting);
+        setApplies(check, scene.shading.lighting);
     m_vertexColors->setChecked(scene.shading.vertexColors);
     m_texture->setChecked(scene.shading.texture);
     m_normalsByModelView->setChecked(scene.shading.normalsByModelView);

@@ -185,6 +185,10 @@ Lights defaultLights()
     lights[2].colors.id = {0.6f, 0.45f, 0.2f};
     lights[2].colors.is = {0.6f, 0.5f, 0.3f};
     lights[3].position = {0.0f, 0.0f, 1.0f, 0.0f}; // a headlight: along the view direction
+    // Made a spotlight, a point light aims at the object's centre from where it starts.
+    for (Light &l : lights)
+        if (l.position.w != 0.0f)
+            l.spot.direction = -glm::vec3(l.position);
     lights[3].frame = LightFrame::Camera;
     lights[3].colors.id = glm::vec3(0.3f);
     lights[3].colors.is = glm::vec3(0.3f);

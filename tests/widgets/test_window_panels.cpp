@@ -72,6 +72,35 @@ private slots:
         QCOMPARE(p->coordinate(0)->value(), -2.0);
     }
 
+    // Issue 15's controls: terms, Show, attenuation and spot, each reaching the pixels; the
+    // spot's axis and exponent apply only to a spot; an attenuation of 0, 0, 0 is refused and
+    // the panel shows the value that holds.
+    void modelControlsChangeSceneAndPixels()
+    {
+        ShadingPanel *sp = m_window->shadingPanel();
+        expectNewImage([&] { sp->termCheck(2)->setChecked(false); }, "specular off");
+        QVERIFY(!scene().shading.terms.specular);
+        expectNewImage([&] { sp->showCombo()->setCurrentIndex(1); }, "show N");
+        QCOMPARE(scene().shading.show, ShowChoice::Normal);
+        sp->showCombo()->setCurrentIndex(0);
+        sp->lightingCheck()->setChecked(false);
+        QVERIFY(!sp->termCheck(0)->isEnabled()); // terms of an unlit surface
+        sp->lightingCheck()->setChecked(true);
+        QVERIFY(sp->termCheck(0)->isEnabled());
+
+        LightPanel *p = m_window->lightPanel();
+        QVERIFY(!p->spotAxis(0)->isEnabled() && !p->spotExponent()->isEnabled());
+        expectNewImage([&] { p->spotCutoff()->setValue(20.0); }, "spot");
+        QCOMPARE(scene().lights[0].spot.cutoffDegrees, 20.0f);
+        QVERIFY(p->spotAxis(0)->isEnabled() && p->spotExponent()->isEnabled());
+        expectNewImage([&] { p->attenuation(1)->setValue(1.0); }, "kl 1");
+        QCOMPARE(scene().lights[0].attenuation, glm::vec3(1.0f, 1.0f, 0.0f));
+        p->attenuation(0)->setValue(0.0);
+        p->attenuation(1)->setValue(0.0); // all three 0: refused
+        QCOMPARE(scene().lights[0].attenuation, glm::vec3(0.0f, 1.0f, 0.0f));
+        QCOMPARE(p->attenuation(1)->value(), 1.0);
+    }
+
     void objectControlsChangeSceneAndPixels()
     {
         ObjectPanel *p = m_window->objectPanel();
