@@ -129,7 +129,9 @@ const OptionSpec kOptions[] = {
     {"import-memory-limit", "MB",
      "Memory limit of the import helper (default: half of physical memory)."},
     {"import-time-limit", "SECONDS", "Time limit of the import helper (default 300)."},
-    {"shading", "gouraud|phong", "Lighting per vertex (Gouraud) or per fragment (Phong)."},
+    {"shading", "gouraud|phong|flat",
+     "Lighting per vertex (Gouraud), per fragment (Phong) or per triangle at its last vertex "
+     "(flat)."},
     {"specular", "phong|blinn", "Specular term: Phong (R.V) or Blinn-Phong (N.H)."},
     {"show", "colour|normal|light|view|half|reflect|ndotl|specular|attenuation",
      "What the surface shows: the lit colour, or N, L, V, H, R (as 0.5v + 0.5), N.L, the "

@@ -89,7 +89,7 @@ MainWindow::MainWindow(QSettings &settings, QWidget *parent)
     });
 
     if (!m_editor->restoreState(m_settings))
-        m_editor->loadPreset(builtInPreset(m_document.scene().shading.shading == Shading::Gouraud));
+        m_editor->loadPreset(builtInPreset(perVertex(m_document.scene().shading.shading)));
     m_editor->setUiScale(m_scale);
     connect(&m_shaders, &ShaderDocument::changed, this, [this] {
         syncShadingWithProgram();
@@ -135,7 +135,7 @@ MainWindow::MainWindow(QSettings &settings, QWidget *parent)
         updateStatus();
         updateTitle();
         if (parts & ScenePart::Shading) {
-            m_shaders.followShading(m_document.scene().shading.shading == Shading::Gouraud);
+            m_shaders.followShading(perVertex(m_document.scene().shading.shading));
             syncShadingWithProgram(); // a reset or an option cannot unfix a fixed model
         }
         m_autosave->schedule();
@@ -153,7 +153,7 @@ void MainWindow::resetEverything()
     // The editor first (undoable there): while an edited program still drew, the scene's
     // shading would be held to that program's.
     const bool hadEdits = !m_shaders.showsBuiltIn();
-    m_shaders.loadPreset(builtInPreset(Scene{}.shading.shading == Shading::Gouraud));
+    m_shaders.loadPreset(builtInPreset(perVertex(Scene{}.shading.shading)));
     m_document.set(Scene{});
     m_status->showMessage(hadEdits ? tr("Everything reset; Ctrl+Z in the editor brings your "
                                         "shader text back")

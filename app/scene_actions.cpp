@@ -103,7 +103,7 @@ bool SceneActions::open(const QString &path)
     if (example)
         file.scene.object.meshPath.clear();
     // The program first: the scene's shading is held to a program that fixes its own.
-    m_shaders->setProgram(file.program, file.scene.shading.shading == Shading::Gouraud);
+    m_shaders->setProgram(file.program, perVertex(file.scene.shading.shading));
     m_document->set(file.scene);
     const QString name = example ? path.section('/', -1) : QFileInfo(path).fileName();
     setCurrentPath(example ? QString() : QFileInfo(path).absoluteFilePath(), name);

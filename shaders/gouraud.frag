@@ -2,8 +2,15 @@
 // Gouraud shading, fragment stage: the interpolated vertex colour is the pixel's colour
 // (modulated by the vertex colour and the texture when those are on).
 
+// 1: flat shading, one colour per triangle (see gouraud.vert).
+#define FLAT_SHADING 0
+#if FLAT_SHADING
+flat in vec3 fAmbientDiffuse;
+flat in vec3 fSpecular;
+#else
 in vec3 fAmbientDiffuse;
 in vec3 fSpecular;
+#endif
 in vec3 fColor;
 in vec2 fTexCoord;
 

@@ -48,8 +48,17 @@ uniform int uShow;
 
 // Ambient + diffuse and specular travel apart so that the fragment stage can modulate the
 // first by the vertex colour and the texture, as phong.frag does.
+// Flat shading is this program with FLAT_SHADING 1 (the workbench compiles it so for the
+// Flat choice): each triangle takes the values of its last vertex, GL's provoking vertex,
+// uninterpolated.
+#define FLAT_SHADING 0
+#if FLAT_SHADING
+flat out vec3 fAmbientDiffuse;
+flat out vec3 fSpecular;
+#else
 out vec3 fAmbientDiffuse;
 out vec3 fSpecular;
+#endif
 out vec3 fColor;
 out vec2 fTexCoord;
 

@@ -20,10 +20,12 @@ ShadingPanel::ShadingPanel(SceneDocument *document, QWidget *parent)
     auto *form = new QFormLayout(this);
     form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
 
-    m_shading = makeCombo({tr("Gouraud (per vertex)"), tr("Phong (per fragment)")},
-                          tr("Gouraud: the model runs in the vertex shader and colours are "
-                             "interpolated; Phong: N, L, V are interpolated and the model runs "
-                             "for every fragment (key G)"));
+    m_shading = makeCombo(
+        {tr("Gouraud (per vertex)"), tr("Phong (per fragment)"), tr("Flat (per triangle)")},
+        tr("Gouraud: the model runs in the vertex shader and colours are "
+           "interpolated; Phong: N, L, V are interpolated and the model runs "
+           "for every fragment; flat: each triangle takes the colour of its "
+           "last (provoking) vertex (key G: Gouraud / Phong)"));
     connect(m_shading, &QComboBox::currentIndexChanged, this,
             [this](int i) { edit([&](Scene &s) { s.shading.shading = Shading(i); }); });
     form->addRow(tr("Shading"), m_shading);
@@ -115,7 +117,7 @@ ShadingPanel::ShadingPanel(SceneDocument *document, QWidget *parent)
     connect(m_compareMode, &QComboBox::currentIndexChanged, this,
             [this](int i) { edit([&](Scene &s) { s.compare.mode = CompareMode(i); }); });
     form->addRow(tr("View"), m_compareMode);
-    m_compareShading = makeCombo({tr("B: Gouraud"), tr("B: Phong")},
+    m_compareShading = makeCombo({tr("B: Gouraud"), tr("B: Phong"), tr("B: Flat")},
                                  tr("Side B's shading: per vertex or per fragment"));
     connect(m_compareShading, &QComboBox::currentIndexChanged, this,
             [this](int i) { edit([&](Scene &s) { s.compare.shading = Shading(i); }); });

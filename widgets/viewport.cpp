@@ -203,7 +203,9 @@ QString Viewport::compareText() const
     const Scene &s = m_document->scene();
     const QString b =
         tr("B: built-in %1, %2")
-            .arg(s.compare.shading == Shading::Gouraud ? tr("Gouraud") : tr("Phong"),
+            .arg(s.compare.shading == Shading::Gouraud ? tr("Gouraud")
+                 : s.compare.shading == Shading::Flat  ? tr("flat")
+                                                       : tr("Phong"),
                  s.compare.specular == SpecularModel::Blinn ? tr("Blinn-Phong (N\u00b7H)")
                                                             : tr("Phong (R\u00b7V)"));
     switch (s.compare.mode) {

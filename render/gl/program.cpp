@@ -9,6 +9,9 @@
 #include <QElapsedTimer>
 #include <QRegularExpression>
 
+#include <algorithm>
+#include <utility>
+
 namespace lb {
 
 namespace {
@@ -338,30 +341,37 @@ bool builtInNeedsLightFactors(const Scene &scene)
 BuiltInVariant builtInVariant(const Scene &scene, bool gouraud)
 {
     return {gouraud, builtInLightCount(scene), builtInNeedsLightFactors(scene),
-            scene.shading.show != ShowChoice::Colour};
+            scene.shading.show != ShowChoice::Colour,
+            gouraud && scene.shading.shading == Shading::Flat};
 }
 
 BuiltProgram buildSpecialisedBuiltIn(QOpenGLExtraFunctions &gl, const BuiltInVariant &variant,
                                      QString &error)
 {
     const Preset &preset = builtInPreset(variant.gouraud);
-    // The stage with the light loop has the lines; the other is used as it is.
-    const auto specialise = [&](const QString &source) {
-        const QString lights = withMaxLights(source, variant.lights);
-        const QString factors =
-            lights.isEmpty() ? lights
-                             : withDefine(lights, "LIGHT_FACTORS", variant.lightFactors ? 1 : 0);
-        return factors.isEmpty() ? factors
-                                 : withDefine(factors, "SHOW_CHOICES", variant.showChoices ? 1 : 0);
+    // Each "#define NAME N" line a stage has is set; the stage with the light loop must have
+    // MAX_LIGHTS, LIGHT_FACTORS and SHOW_CHOICES.
+    const std::pair<const char *, int> defines[] = {{"MAX_LIGHTS", variant.lights},
+                                                    {"LIGHT_FACTORS", variant.lightFactors ? 1 : 0},
+                                                    {"SHOW_CHOICES", variant.showChoices ? 1 : 0},
+                                                    {"FLAT_SHADING", variant.flat ? 1 : 0}};
+    const auto specialise = [&](QString source, int &set) {
+        for (const auto &[name, value] : defines)
+            if (const QString changed = withDefine(source, name, value); !changed.isEmpty()) {
+                source = changed;
+                ++set;
+            }
+        return source;
     };
-    const QString vertex = preset.vertexSource(), fragment = preset.fragmentSource();
-    const QString v = specialise(vertex), f = specialise(fragment);
-    if (v.isEmpty() && f.isEmpty()) {
+    int vertexSet = 0, fragmentSet = 0;
+    const QString v = specialise(preset.vertexSource(), vertexSet);
+    const QString f = specialise(preset.fragmentSource(), fragmentSet);
+    if (std::max(vertexSet, fragmentSet) < 3) {
         error += "built-in shader '" + preset.name +
                  "' lacks a '#define MAX_LIGHTS', 'LIGHT_FACTORS' or 'SHOW_CHOICES' line\n";
         return {};
     }
-    BuiltProgram built = buildProgram(gl, v.isEmpty() ? vertex : v, f.isEmpty() ? fragment : f);
+    BuiltProgram built = buildProgram(gl, v, f);
     if (!built.build.ok())
         error += "built-in shader '" + preset.name + "' failed:\n" + built.build.log();
     return built;

@@ -75,13 +75,15 @@ struct BuiltInVariant
     int lights = 1;            // MAX_LIGHTS
     bool lightFactors = false; // LIGHT_FACTORS
     bool showChoices = false;  // SHOW_CHOICES: something other than the colour is shown
+    bool flat = false;         // FLAT_SHADING: the Gouraud program, one colour per triangle
     bool operator<(const BuiltInVariant &o) const
     {
-        return std::tie(gouraud, lights, lightFactors, showChoices) <
-               std::tie(o.gouraud, o.lights, o.lightFactors, o.showChoices);
+        return std::tie(gouraud, lights, lightFactors, showChoices, flat) <
+               std::tie(o.gouraud, o.lights, o.lightFactors, o.showChoices, o.flat);
     }
 };
-// The variant `scene` needs of the built-in program of a shading mode.
+// The variant `scene` needs of the built-in program of a shading mode (gouraud: the per-vertex
+// text, drawn flat when the scene's shading is flat).
 BuiltInVariant builtInVariant(const Scene &scene, bool gouraud);
 BuiltProgram buildSpecialisedBuiltIn(QOpenGLExtraFunctions &gl, const BuiltInVariant &variant,
                                      QString &error);

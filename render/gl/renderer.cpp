@@ -123,7 +123,7 @@ const BuiltProgram &Renderer::objectProgram(const Scene &scene)
 
 const BuiltProgram &Renderer::builtInProgram(const Scene &scene)
 {
-    return specialisedBuiltIn(builtInVariant(scene, scene.shading.shading == Shading::Gouraud));
+    return specialisedBuiltIn(builtInVariant(scene, perVertex(scene.shading.shading)));
 }
 
 const BuiltProgram &Renderer::specialisedBuiltIn(const BuiltInVariant &variant)

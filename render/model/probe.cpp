@@ -148,8 +148,17 @@ ProbeResult probeSurface(const Scene &scene, const Mesh &mesh, const Texture &te
     const ShowChoice show = scene.shading.show;
     const LightingInputs light1 = lightingInputs(scene, frames, 0);
     glm::vec3 colour;
+    // Flat shading: the model once per triangle, at its provoking vertex (GL's default, the
+    // last one), its colour uninterpolated; the base colour still varies over the triangle.
+    const bool flat = scene.shading.shading == Shading::Flat;
+    const int provoking = 2;
+    const auto atCorner = [&](int k, const LightingInputs &in) {
+        return evaluateLighting(corners[k], eyeNormal(mesh.normals[tri[k]]), in);
+    };
     if (show != ShowChoice::Colour && scene.shading.shading == Shading::Phong) {
         colour = shownColor(show, evaluateLighting(r.position, r.normal, light1));
+    } else if (show != ShowChoice::Colour && flat) {
+        colour = shownColor(show, atCorner(provoking, light1));
     } else if (show != ShowChoice::Colour) {
         colour = glm::vec3(0.0f);
         for (int k = 0; k < 3; ++k)
@@ -160,6 +169,11 @@ ProbeResult probeSurface(const Scene &scene, const Mesh &mesh, const Texture &te
         colour = unlitColor(scene.material, r.base);
     } else if (scene.shading.shading == Shading::Phong) {
         colour = shadedColor(r.total.ambient + r.total.diffuse, r.total.specular, r.base);
+    } else if (flat) {
+        LightingSum v;
+        for (const ProbeLight &light : r.lights)
+            v.add(atCorner(provoking, light.inputs), scene.shading.terms);
+        colour = shadedColor(v.ambient + v.diffuse, v.specular, r.base);
     } else {
         // Gouraud: the model at each vertex, interpolated over the triangle.
         glm::vec3 ambientDiffuse(0.0f), specular(0.0f);

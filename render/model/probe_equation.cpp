@@ -87,6 +87,9 @@ QString lightingEquation(const Scene &scene, const ProbeResult &probe)
                           .arg(std::lround(clamped.b * 255.0f)));
     if (!scene.shading.lighting)
         lines << "Lighting is off: the surface shows Kd times the base colour instead.";
+    if (scene.shading.shading == Shading::Flat)
+        lines << "Flat shading draws the model at the triangle's last (provoking) vertex, one "
+                 "colour for the triangle; these numbers are the model at this point.";
     if (scene.shading.shading == Shading::Gouraud)
         lines << "Gouraud shading draws the model at the triangle's vertices, interpolated; "
                  "these numbers are the model at this point.";

@@ -19,8 +19,8 @@ template <typename E, std::size_t N> using NameTable = std::array<std::pair<E, c
 
 constexpr NameTable<LightFrame, 3> kFrames{
     {{LightFrame::Camera, "camera"}, {LightFrame::World, "world"}, {LightFrame::Object, "object"}}};
-constexpr NameTable<Shading, 2> kShadings{
-    {{Shading::Gouraud, "gouraud"}, {Shading::Phong, "phong"}}};
+constexpr NameTable<Shading, 3> kShadings{
+    {{Shading::Gouraud, "gouraud"}, {Shading::Phong, "phong"}, {Shading::Flat, "flat"}}};
 constexpr NameTable<SpecularModel, 2> kSpeculars{
     {{SpecularModel::Phong, "phong"}, {SpecularModel::Blinn, "blinn"}}};
 constexpr NameTable<Projection, 2> kProjections{

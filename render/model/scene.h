@@ -21,7 +21,14 @@
 namespace lb {
 
 enum class LightFrame { Camera, World, Object };
-enum class Shading { Gouraud, Phong };
+// Gouraud: the model at the vertices, interpolated; Phong: at every fragment; flat: at each
+// triangle's provoking (last) vertex, one colour per triangle, as GL's flat shading gives.
+enum class Shading { Gouraud, Phong, Flat };
+// Whether the model runs at the vertices (the Gouraud program's text, flat or not).
+inline bool perVertex(Shading s)
+{
+    return s != Shading::Phong;
+}
 enum class Shape { Cube, Sphere, Torus, Plane };
 // Where the object's normals come from: the mesh's own (generated smooth when it has none),
 // or generated smooth (within the crease angle) or flat, whatever the mesh has.

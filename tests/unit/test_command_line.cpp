@@ -114,7 +114,7 @@ private slots:
                                         << "--light";
         QTest::newRow("unknown shape") << "--shape teapot"
                                        << "--shape";
-        QTest::newRow("unknown shading") << "--shading flat"
+        QTest::newRow("unknown shading") << "--shading toon"
                                          << "--shading";
         QTest::newRow("unknown frame") << "--frame screen"
                                        << "--frame";

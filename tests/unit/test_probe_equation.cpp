@@ -96,6 +96,8 @@ private slots:
         Scene s;
         s.shading.shading = Shading::Gouraud;
         QVERIFY(lightingEquation(s, probe(s)).contains("interpolated"));
+        s.shading.shading = Shading::Flat;
+        QVERIFY(lightingEquation(s, probe(s)).contains("provoking"));
         s.shading.show = ShowChoice::Normal;
         QVERIFY(lightingEquation(s, probe(s)).contains("shows normal"));
         s.shading.lighting = false;

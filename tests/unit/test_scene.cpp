@@ -214,7 +214,8 @@ private slots:
             QCOMPARE(toName(*parseShape(n)), n);
         for (const QString &n : lightFrameNames())
             QCOMPARE(toName(*parseLightFrame(n)), n);
-        QVERIFY(!parseShading("flat"));
+        QCOMPARE(*parseShading("flat"), Shading::Flat);
+        QVERIFY(!parseShading("toon"));
         QCOMPARE(showChoiceNames().size(), int(ShowChoice::Attenuation) + 1);
         for (const QString &n : showChoiceNames())
             QCOMPARE(toName(*parseShowChoice(n)), n);
