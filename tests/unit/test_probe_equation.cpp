@@ -1,6 +1,7 @@
-// The Probe panel's equation with the numbers in it (probe_equation.h), on a probed sphere:
-// the symbols follow Phong / Blinn-Phong and the terms switched on, each light's line carries
-// the probe's own factors and terms, and the sum and the pixel are the reference's.
+// The probe's attenuation and spot at points worked out by hand, and the Probe panel's equation
+// with the numbers in it (probe_equation.h), on a probed sphere: the symbols follow Phong /
+// Blinn-Phong and the terms switched on, each light's line carries the probe's own factors and
+// terms, and the sum and the pixel are the reference's.
 #include "mesh.h"
 #include "probe.h"
 #include "probe_equation.h"
@@ -89,6 +90,33 @@ private slots:
                                   .arg(std::lround(p.reference.r * 255.0f))
                                   .arg(std::lround(p.reference.g * 255.0f))
                                   .arg(std::lround(p.reference.b * 255.0f))));
+    }
+
+    // The probe's spot factor at a point worked out by hand: a light in camera space at the
+    // eye, its cone's axis straight ahead; at a probed point P the angle off the axis is
+    // acos(dot(normalize(P), (0, 0, -1))). A cutoff half a degree above it: inside, cos^4;
+    // half a degree below: outside, nothing at all.
+    void spotFactorInsideAndOutsideTheCutoff()
+    {
+        Scene s;
+        s.lights[0].frame = LightFrame::Camera;
+        s.lights[0].position = {0.0f, 0.0f, 0.0f, 1.0f};
+        s.lights[0].spot = {{0.0f, 0.0f, -1.0f}, 180.0f, 4.0f};
+        const ProbeResult plain = probe(s);
+        QVERIFY(plain.hit);
+        const glm::vec3 P = plain.position;
+        const float cosAngle = -P.z / std::sqrt(P.x * P.x + P.y * P.y + P.z * P.z);
+        const float degrees = std::acos(cosAngle) * 180.0f / 3.14159265f;
+        QVERIFY(degrees > 2.0f); // off the axis, so that half a degree either way is clear
+        s.lights[0].spot.cutoffDegrees = degrees + 0.5f;
+        const ProbeResult inside = probe(s);
+        QVERIFY(std::abs(inside.lights[0].terms.spot - std::pow(cosAngle, 4.0f)) < 1e-4f);
+        QVERIFY(inside.lights[0].terms.diffuse.r > 0.0f);
+        s.lights[0].spot.cutoffDegrees = degrees - 0.5f;
+        const ProbeResult outside = probe(s);
+        QCOMPARE(outside.lights[0].terms.spot, 0.0f);
+        QCOMPARE(outside.total.ambient + outside.total.diffuse + outside.total.specular,
+                 glm::vec3(0.0f));
     }
 
     void saysWhatThePixelIsNot()
