@@ -19,16 +19,20 @@ uniform bool uEnableLighting;
 uniform bool uEnableVertexColor;
 uniform bool uEnableTexture;
 uniform sampler2D uSampler;
-uniform int uShow; // not 0: fAmbientDiffuse holds a vector or number of the model, shown as is
+// Not 0: fAmbientDiffuse holds a vector or number of the model, shown as is (gouraud.vert).
+#define SHOW_CHOICES 1
+uniform int uShow;
 
 out vec4 fragColor;
 
 void main()
 {
+#if SHOW_CHOICES
     if (uShow != 0) {
         fragColor = vec4(fAmbientDiffuse, 1.0);
         return;
     }
+#endif
     vec3 base = vec3(1.0);
     if (uEnableVertexColor)
         base *= fColor;
