@@ -7,6 +7,8 @@
 #include <QFile>
 #include <QFileInfo>
 
+#include <glm/geometric.hpp>
+
 #include <cmath>
 
 namespace lb {
@@ -329,8 +331,8 @@ void parseInto(const QCommandLineParser &parser, CommandLine &cl)
         const auto v = numbers("spot", value("spot"), 5, "DX,DY,DZ,CUTOFF,EXPONENT");
         for (int i = 0; i < 3; ++i)
             checkRange("spot", v[std::size_t(i)], -limits::kMaxCoordinate, limits::kMaxCoordinate);
-        if (v[0] == 0.0f && v[1] == 0.0f && v[2] == 0.0f)
-            fail("spot", "the direction DX,DY,DZ cannot be 0,0,0");
+        if (glm::length(glm::vec3(v[0], v[1], v[2])) < limits::kMinDirectionLength)
+            fail("spot", "the direction DX,DY,DZ cannot be 0,0,0 (or nearly)");
         if (v[3] < 0.0f || v[3] > limits::kMaxSpotCutoff)
             fail("spot", QString("the cutoff %1 is outside 0 to 180 degrees").arg(v[3]));
         if (v[4] < 0.0f || v[4] > limits::kMaxSpotExponent)

@@ -10,6 +10,10 @@
 #include <QSignalBlocker>
 #include <QTabBar>
 
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+
 namespace lb {
 
 namespace {
@@ -111,7 +115,9 @@ LightPanel::LightPanel(SceneDocument *document, QWidget *parent)
             edit([&](Scene &s) {
                 glm::vec3 k = current(s).attenuation;
                 k[i] = float(v);
-                if (k != glm::vec3(0.0f)) // all three 0 would make the light infinite
+                // All three 0 would make the light infinite; all three under what the boxes
+                // show (2 decimals) would leave a blinding light behind "0.00 0.00 0.00".
+                if (std::max({k.x, k.y, k.z}) >= 0.005f)
                     current(s).attenuation = k;
             });
             refreshNow(); // a refused edit changes nothing: show the value that holds
@@ -133,7 +139,7 @@ LightPanel::LightPanel(SceneDocument *document, QWidget *parent)
             edit([&](Scene &s) {
                 glm::vec3 d = current(s).spot.direction;
                 d[i] = float(v);
-                if (d != glm::vec3(0.0f)) // an axis needs a direction
+                if (glm::length(d) >= limits::kMinDirectionLength) // an axis needs a direction
                     current(s).spot.direction = d;
             });
             refreshNow();

@@ -1,5 +1,6 @@
 #include "scene_panel.h"
 
+#include <QAbstractScrollArea>
 #include <QComboBox>
 #include <QCoreApplication>
 #include <QDoubleSpinBox>
@@ -38,8 +39,13 @@ bool ScenePanel::eventFilter(QObject *watched, QEvent *event)
 {
     if (event->type() == QEvent::Wheel)
         if (auto *widget = qobject_cast<QWidget *>(watched); widget && !widget->hasFocus()) {
-            if (QWidget *parent = widget->parentWidget()) // on to the scroll area around
-                QCoreApplication::sendEvent(parent, event);
+            // On to the scroll area around the panel (a wheel event sent to a parent is not
+            // passed further up, so it goes straight to the area's viewport).
+            for (QWidget *w = widget->parentWidget(); w; w = w->parentWidget())
+                if (auto *area = qobject_cast<QAbstractScrollArea *>(w)) {
+                    QCoreApplication::sendEvent(area->viewport(), event);
+                    break;
+                }
             return true;
         }
     return QWidget::eventFilter(watched, event);

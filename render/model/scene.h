@@ -159,9 +159,10 @@ constexpr float kMaxCoordinate = 1000.0f;
 constexpr float kMinScale = 0.01f;
 constexpr float kMaxScale = 100.0f;
 constexpr float kMaxCreaseDegrees = 180.0f;
-constexpr float kMaxAttenuation = 1000.0f; // each of kc, kl, kq, at least 0; not all 0
-constexpr float kMaxSpotCutoff = 180.0f;   // degrees; 180: no spot
-constexpr float kMaxSpotExponent = 128.0f; // as OpenGL 2.1 allows
+constexpr float kMaxAttenuation = 1000.0f;   // each of kc, kl, kq, at least 0; not all 0
+constexpr float kMaxSpotCutoff = 180.0f;     // degrees; 180: no spot
+constexpr float kMaxSpotExponent = 128.0f;   // as OpenGL 2.1 allows
+constexpr float kMinDirectionLength = 1e-6f; // shorter spot axes are refused (normalize fails)
 } // namespace limits
 
 // Names used on the command line, in JSON and in the panels' combo boxes.

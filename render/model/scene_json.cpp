@@ -5,6 +5,7 @@
 #include <QJsonArray>
 
 #include <glm/common.hpp>
+#include <glm/geometric.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -192,7 +193,7 @@ void readLight(Reader &r, const QJsonObject &l, const QString &path, Light &ligh
     const QJsonObject spot = r.object(l, "spot", spotPath);
     r.unknownKeys(spot, lightJson(light)["spot"].toObject(), spotPath);
     r.numbers(spot, "direction", spotPath, &light.spot.direction.x, 3, -c, c);
-    if (light.spot.direction == glm::vec3(0.0f)) {
+    if (glm::length(light.spot.direction) < limits::kMinDirectionLength) {
         r.ignore(Reader::join(spotPath, "direction"), "a direction of length 0");
         light.spot.direction = before.spot.direction;
     }

@@ -362,6 +362,16 @@ private slots:
         QVERIFY(builtInNeedsLightFactors(s));
         s.lights[0].position.w = 0.0f;
         QVERIFY(!builtInNeedsLightFactors(s));
+        s.lights[0].spot.cutoffDegrees = 40.0f; // a directional light's spot still applies
+        QVERIFY(builtInNeedsLightFactors(s));
+        // Show attenuation shows light 1's, on or off.
+        s = Scene{};
+        s.lights[0].enabled = false;
+        s.lights[0].attenuation = {1.0f, 0.5f, 0.0f};
+        s.lights[1].enabled = true;
+        QVERIFY(!builtInNeedsLightFactors(s));
+        s.shading.show = ShowChoice::Attenuation;
+        QVERIFY(builtInNeedsLightFactors(s));
     }
 
     // Flat shading is its own picture: one colour per triangle, so it differs from Gouraud's

@@ -166,6 +166,8 @@ private slots:
                                          << "--spot";
         QTest::newRow("zero spot direction") << "--spot 0,0,0,30,1"
                                              << "--spot";
+        QTest::newRow("tiny spot direction") << "--spot 1e-30,0,0,30,1"
+                                             << "--spot";
         QTest::newRow("spot exponent 500") << "--spot 0,0,-1,30,500"
                                            << "--spot";
         QTest::newRow("spot of four") << "--spot 0,0,-1,30"

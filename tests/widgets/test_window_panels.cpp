@@ -99,6 +99,21 @@ private slots:
         p->attenuation(1)->setValue(0.0); // all three 0: refused
         QCOMPARE(scene().lights[0].attenuation, glm::vec3(0.0f, 1.0f, 0.0f));
         QCOMPARE(p->attenuation(1)->value(), 1.0);
+
+        // The wheel over a spin box not clicked first scrolls the panel, not the value.
+        QDoubleSpinBox *kc = p->attenuation(0);
+        const double before = kc->value();
+        m_window->viewport()->setFocus();
+        const QPointF at(kc->width() / 2.0, kc->height() / 2.0);
+        QWheelEvent wheel(at, kc->mapToGlobal(at), QPoint(), QPoint(0, 120), Qt::NoButton,
+                          Qt::NoModifier, Qt::NoScrollPhase, false);
+        QCoreApplication::sendEvent(kc, &wheel);
+        QCOMPARE(kc->value(), before);
+        kc->setFocus();
+        QWheelEvent focused(at, kc->mapToGlobal(at), QPoint(), QPoint(0, 120), Qt::NoButton,
+                            Qt::NoModifier, Qt::NoScrollPhase, false);
+        QCoreApplication::sendEvent(kc, &focused);
+        QVERIFY(kc->value() != before); // clicked first: the wheel edits it
     }
 
     void objectControlsChangeSceneAndPixels()
