@@ -228,6 +228,10 @@ void MainWindow::updateStatus()
                 tr(" in the %1 frame").arg(toName(first.frame));
     m_viewport->setProgramName(m_editor->programName()); // side A of a compare view
     QString program = tr("Program: %1").arg(m_editor->programName());
+    if (m_shaders.showsBuiltIn() && s.shading.shading == Shading::Flat)
+        program += tr(", drawn flat (per triangle)"); // the same text, FLAT_SHADING 1
+    if (m_shaders.showsBuiltIn() && s.shading.show != ShowChoice::Colour)
+        program += tr(", showing %1").arg(toName(s.shading.show));
     if (m_shaders.showsBuiltIn()) // the Shading panel's specular choice applies
         program += s.shading.specular == SpecularModel::Blinn
                        ? tr(", Blinn-Phong specular (N\u00b7H)")
