@@ -19,14 +19,20 @@ namespace {
 const QString kColour = QStringLiteral("uColor");
 const QString kLineLength = QStringLiteral("uLineLength");
 
-// A marker's matrix in eye space: +Z of the arrow along `forward`, starting at `origin`.
-glm::mat4 orientAlong(const glm::vec3 &origin, const glm::vec3 &forward, float length)
+// Unit axes x, y, z with z along `forward` (any x, y square to it).
+glm::mat3 axesAlong(const glm::vec3 &forward)
 {
     const glm::vec3 z = glm::normalize(forward);
     const glm::vec3 helper = std::abs(z.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
     const glm::vec3 x = glm::normalize(glm::cross(helper, z));
-    const glm::vec3 y = glm::cross(z, x);
-    glm::mat4 m(glm::vec4(x, 0), glm::vec4(y, 0), glm::vec4(z, 0), glm::vec4(origin, 1));
+    return glm::mat3(x, glm::cross(z, x), z);
+}
+
+// A marker's matrix in eye space: +Z of the arrow along `forward`, starting at `origin`.
+glm::mat4 orientAlong(const glm::vec3 &origin, const glm::vec3 &forward, float length)
+{
+    glm::mat4 m(axesAlong(forward));
+    m[3] = glm::vec4(origin, 1.0f);
     return glm::scale(m, glm::vec3(length));
 }
 
@@ -84,15 +90,14 @@ void Overlays::drawLightMarker(QOpenGLExtraFunctions &gl, const Light &light, co
     if (eye.w == 0.0f || light.spot.cutoffDegrees >= limits::kMaxSpotCutoff)
         return;
     // A spotlight: eight rays along the cone's edge, from the light.
-    const glm::vec3 axis = spotDirectionInEye(frames, light);
-    const glm::vec3 helper = std::abs(axis.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
-    const glm::vec3 x = glm::normalize(glm::cross(helper, axis)), y = glm::cross(axis, x);
+    const glm::mat3 axes = axesAlong(spotDirectionInEye(frames, light));
     const float cutoff = glm::radians(light.spot.cutoffDegrees);
     constexpr int kRays = 8;
     for (int k = 0; k < kRays; ++k) {
         const float around = 2.0f * glm::pi<float>() * float(k) / float(kRays);
-        const glm::vec3 ray = std::cos(cutoff) * axis +
-                              std::sin(cutoff) * (std::cos(around) * x + std::sin(around) * y);
+        const glm::vec3 ray =
+            axes * glm::vec3(std::sin(cutoff) * std::cos(around),
+                             std::sin(cutoff) * std::sin(around), std::cos(cutoff));
         useUnlit(gl, orientAlong(glm::vec3(eye), ray, 0.45f), frames.projection, colour);
         m_arrow.draw(gl);
     }

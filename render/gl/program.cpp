@@ -297,11 +297,6 @@ QString withDefine(const QString &source, const QString &name, int value)
     return out;
 }
 
-QString withMaxLights(const QString &source, int lights)
-{
-    return withDefine(source, "MAX_LIGHTS", lights);
-}
-
 std::optional<bool> shippedBuiltIn(const QString &vertexSource, const QString &fragmentSource)
 {
     for (bool gouraud : {true, false}) {

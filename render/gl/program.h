@@ -96,7 +96,6 @@ bool builtInNeedsLightFactors(const Scene &scene);
 std::optional<bool> shippedBuiltIn(const QString &vertexSource, const QString &fragmentSource);
 // The source with its "#define NAME N" line set to `value`; empty if it has no such line.
 QString withDefine(const QString &source, const QString &name, int value);
-QString withMaxLights(const QString &source, int lights);
 
 // Compiles both stages and links them.
 BuiltProgram buildProgram(QOpenGLExtraFunctions &gl, const QString &vertexSource,

@@ -340,13 +340,14 @@ private slots:
 
     void specialisationNeedsTheDefineLine()
     {
-        QCOMPARE(withMaxLights("#version 330 core\n#define MAX_LIGHTS 4\nvoid main() {}", 2),
-                 QString("#version 330 core\n#define MAX_LIGHTS 2\nvoid main() {}"));
-        QVERIFY(withMaxLights("void main() {}", 2).isEmpty());
+        QCOMPARE(
+            withDefine("#version 330 core\n#define MAX_LIGHTS 4\nvoid main() {}", "MAX_LIGHTS", 2),
+            QString("#version 330 core\n#define MAX_LIGHTS 2\nvoid main() {}"));
+        QVERIFY(withDefine("void main() {}", "MAX_LIGHTS", 2).isEmpty());
         for (bool gouraud : {false, true}) {
             const Preset &p = builtInPreset(gouraud);
             const QString &lit = gouraud ? p.vertexSource() : p.fragmentSource();
-            QVERIFY(!withMaxLights(lit, 1).isEmpty());
+            QVERIFY(!withDefine(lit, "MAX_LIGHTS", 1).isEmpty());
             QVERIFY(!withDefine(lit, "LIGHT_FACTORS", 0).isEmpty());
         }
         // Attenuation and spot are compiled in only for a light that is on and uses them
