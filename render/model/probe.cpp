@@ -143,47 +143,37 @@ ProbeResult probeSurface(const Scene &scene, const Mesh &mesh, const Texture &te
         r.lights.push_back(light);
     }
 
-    // The Show choice: light 1's vectors and numbers, on or off, at the point (Phong) or at
-    // the corners and interpolated (Gouraud), as the built-in programs compute them.
-    const ShowChoice show = scene.shading.show;
-    const LightingInputs light1 = lightingInputs(scene, frames, 0);
-    glm::vec3 colour;
-    // Flat shading: the model once per triangle, at its provoking vertex (GL's default, the
-    // last one), its colour uninterpolated; the base colour still varies over the triangle.
-    const bool flat = scene.shading.shading == Shading::Flat;
-    const int provoking = 2;
+    // The per-vertex shadings weight the model at the corners: Gouraud by the point's
+    // barycentric weights, flat all on the provoking vertex (GL's default, the last one), so
+    // one colour per triangle; the base colour varies over the triangle in both.
+    const glm::vec3 weights =
+        scene.shading.shading == Shading::Flat ? glm::vec3(0.0f, 0.0f, 1.0f) : w;
     const auto atCorner = [&](int k, const LightingInputs &in) {
         return evaluateLighting(corners[k], eyeNormal(mesh.normals[tri[k]]), in);
     };
-    if (show != ShowChoice::Colour && scene.shading.shading == Shading::Phong) {
+    // The Show choice: light 1's vectors and numbers, on or off, at the point (Phong) or at
+    // the corners, weighted (Gouraud, flat), as the built-in programs compute them.
+    const ShowChoice show = scene.shading.show;
+    const bool phong = scene.shading.shading == Shading::Phong;
+    const LightingInputs light1 = lightingInputs(scene, frames, 0);
+    glm::vec3 colour(0.0f);
+    if (show != ShowChoice::Colour && phong) {
         colour = shownColor(show, evaluateLighting(r.position, r.normal, light1));
-    } else if (show != ShowChoice::Colour && flat) {
-        colour = shownColor(show, atCorner(provoking, light1));
     } else if (show != ShowChoice::Colour) {
-        colour = glm::vec3(0.0f);
         for (int k = 0; k < 3; ++k)
-            colour +=
-                w[k] * shownColor(show, evaluateLighting(corners[k],
-                                                         eyeNormal(mesh.normals[tri[k]]), light1));
+            colour += weights[k] * shownColor(show, atCorner(k, light1));
     } else if (!scene.shading.lighting) {
         colour = unlitColor(scene.material, r.base);
-    } else if (scene.shading.shading == Shading::Phong) {
+    } else if (phong) {
         colour = shadedColor(r.total.ambient + r.total.diffuse, r.total.specular, r.base);
-    } else if (flat) {
-        LightingSum v;
-        for (const ProbeLight &light : r.lights)
-            v.add(atCorner(provoking, light.inputs), scene.shading.terms);
-        colour = shadedColor(v.ambient + v.diffuse, v.specular, r.base);
     } else {
-        // Gouraud: the model at each vertex, interpolated over the triangle.
         glm::vec3 ambientDiffuse(0.0f), specular(0.0f);
         for (int k = 0; k < 3; ++k) {
             LightingSum v;
             for (const ProbeLight &light : r.lights)
-                v.add(evaluateLighting(corners[k], eyeNormal(mesh.normals[tri[k]]), light.inputs),
-                      scene.shading.terms);
-            ambientDiffuse += w[k] * (v.ambient + v.diffuse);
-            specular += w[k] * v.specular;
+                v.add(atCorner(k, light.inputs), scene.shading.terms);
+            ambientDiffuse += weights[k] * (v.ambient + v.diffuse);
+            specular += weights[k] * v.specular;
         }
         colour = shadedColor(ambientDiffuse, specular, r.base);
     }
