@@ -118,6 +118,11 @@ const OptionSpec kOptions[] = {
     {"render", "FILE.png", "Draw one frame offscreen into FILE.png and exit."},
     {"probe", "X,Y", "Print the probe's JSON for pixel X,Y (origin top-left) and exit."},
     {"size", "WxH", "Frame size for --render and --probe (default 800x600)."},
+    {"object", "SHAPE|FILE",
+     "Add an object: cube, sphere, torus, plane or a mesh file (repeatable; placed side by side "
+     "and the camera framing them). The object options (shape, mesh, model, material, texture) "
+     "apply to the last object named; without --object, to the scene's selected object. "
+     "Without --scene the objects named replace the saved session's."},
     {"shape", "cube|sphere|torus|plane", "Object shape."},
     {"tessellation", "N", "Subdivisions of the sphere, torus and plane (3 to 2000)."},
     {"mesh", "FILE", "Draw a mesh file (any format Assimp reads) instead of the shape."},
@@ -142,6 +147,8 @@ const OptionSpec kOptions[] = {
      "The terms of the model that are on: any of the three, or none (default all); the "
      "others add nothing."},
     {"frame", "camera|world|object", "Frame the light position is given in."},
+    {"light-object", "INDEX",
+     "The object (0 for the first) whose frame an object-frame light 1 is given in."},
     {"light", "X,Y,Z,W", "Light position (W = 1) or direction towards the light (W = 0)."},
     {"attenuation", "KC,KL,KQ",
      "Attenuation of light 1 when it is a point: 1 / (KC + KL*d + KQ*d^2) (each 0 to 1000, "
@@ -160,6 +167,7 @@ const OptionSpec kOptions[] = {
     {"camera-orbit", "YAW,PITCH", "Camera orbit in degrees (pitch -89 to 89)."},
     {"model-rotate", "X,Y,Z", "Model rotation in degrees about X, then Y, then Z."},
     {"model-scale", "X,Y,Z", "Model scale per axis (0.01 to 100)."},
+    {"model-translate", "X,Y,Z", "Where the object's centre lies in the world (-1000 to 1000)."},
     {"lighting", "on|off", "Lighting model on, or the diffuse colour unlit."},
     {"vertex-colors", "on|off", "Modulate ambient and diffuse by the vertex colours."},
     {"texture", "on|off", "Modulate ambient and diffuse by the checker texture."},
@@ -265,34 +273,65 @@ void parseInto(const QCommandLineParser &parser, CommandLine &cl)
             integer("import-memory-limit", value("import-memory-limit"), 16, 1 << 30);
     if (given("import-time-limit"))
         cl.importSeconds = integer("import-time-limit", value("import-time-limit"), 1, 86400);
+    if (given("object")) {
+        // First, so that the other object options apply to the last object named.
+        std::vector<ObjectSettings> objects;
+        for (const QString &named : parser.values("object")) {
+            ObjectSettings o;
+            if (const std::optional<Shape> shape = parseShape(named))
+                o.shape = *shape;
+            else if (named.isEmpty())
+                fail("object", "needs a shape (" + shapeNames().join(", ") + ") or a file name");
+            else
+                o.meshPath = QFileInfo(named).absoluteFilePath();
+            objects.push_back(o);
+        }
+        if (int(objects.size()) > kMaxObjects)
+            fail("object", QString("at most %1 objects").arg(kMaxObjects));
+        const bool replace = !given("scene");
+        add([objects, replace](Scene &s) {
+            std::vector<ObjectSettings> placed = objects;
+            placeInRow(placed);
+            if (replace) {
+                s.objects.clear();
+                for (Light &light : s.lights)
+                    light.object = 0;
+            }
+            for (const ObjectSettings &o : placed)
+                if (int(s.objects.size()) < kMaxObjects)
+                    s.objects.push_back(o);
+            s.selected = int(s.objects.size()) - 1;
+            frameScene(s);
+        });
+    }
     if (given("mesh")) {
         if (value("mesh").isEmpty())
             fail("mesh", "needs a file name");
         const QString path = QFileInfo(value("mesh")).absoluteFilePath();
-        add([path](Scene &s) { s.object.meshPath = path; });
+        add([path](Scene &s) { s.selectedObject().meshPath = path; });
     }
     if (given("normals")) {
         const NormalMode v = word("normals", value("normals"), parseNormalMode, normalModeNames());
-        add([v](Scene &s) { s.object.normals = v; });
+        add([v](Scene &s) { s.selectedObject().normals = v; });
     }
     if (given("crease-angle")) {
         const float v = numbers("crease-angle", value("crease-angle"), 1, "a number")[0];
         checkRange("crease-angle", v, 0.0f, limits::kMaxCreaseDegrees);
-        add([v](Scene &s) { s.object.creaseDegrees = v; });
+        add([v](Scene &s) { s.selectedObject().creaseDegrees = v; });
     }
     if (given("shape")) {
         if (given("mesh"))
             fail("shape", "a shape or a --mesh file, not both");
         const Shape v = word("shape", value("shape"), parseShape, shapeNames());
         add([v](Scene &s) {
-            s.object.shape = v;
-            s.object.meshPath.clear(); // also when the saved session showed a file
+            s.selectedObject().shape = v;
+            s.selectedObject().meshPath.clear(); // also when the saved session showed a file
         });
     }
     if (given("tessellation")) {
         const int v = integer("tessellation", value("tessellation"), limits::kMinTessellation,
                               limits::kMaxTessellation);
-        add([v](Scene &s) { s.object.tessellation = v; });
+        add([v](Scene &s) { s.selectedObject().tessellation = v; });
     }
     if (given("shading")) {
         const Shading v = word("shading", value("shading"), parseShading, shadingNames());
@@ -374,13 +413,13 @@ void parseInto(const QCommandLineParser &parser, CommandLine &cl)
     for (const auto &[name, member] : materialColours) {
         if (given(name)) {
             const glm::vec3 c = colourOption(name, value(name));
-            add([c, member = member](Scene &s) { s.material.*member = c; });
+            add([c, member = member](Scene &s) { s.selectedObject().material.*member = c; });
         }
     }
     if (given("shininess")) {
         const float v = numbers("shininess", value("shininess"), 1, "a number")[0];
         checkRange("shininess", v, limits::kMinShininess, limits::kMaxShininess);
-        add([v](Scene &s) { s.material.shininess = v; });
+        add([v](Scene &s) { s.selectedObject().material.shininess = v; });
     }
     if (given("projection")) {
         const Projection v =
@@ -399,17 +438,25 @@ void parseInto(const QCommandLineParser &parser, CommandLine &cl)
     }
     if (given("model-rotate")) {
         const glm::vec3 r = vec3Option("model-rotate", value("model-rotate"), -3600.0f, 3600.0f);
-        add([r](Scene &s) { s.object.rotationDegrees = r; });
+        add([r](Scene &s) { s.selectedObject().rotationDegrees = r; });
     }
     if (given("model-scale")) {
         const glm::vec3 sc =
             vec3Option("model-scale", value("model-scale"), limits::kMinScale, limits::kMaxScale);
-        add([sc](Scene &s) { s.object.scale = sc; });
+        add([sc](Scene &s) { s.selectedObject().scale = sc; });
+    }
+    if (given("model-translate")) {
+        const float c = limits::kMaxCoordinate;
+        const glm::vec3 t = vec3Option("model-translate", value("model-translate"), -c, c);
+        add([t](Scene &s) { s.selectedObject().translation = t; });
+    }
+    if (given("light-object")) {
+        const int v = integer("light-object", value("light-object"), 0, kMaxObjects - 1);
+        add([v](Scene &s) { s.lights[0].object = std::min(v, int(s.objects.size()) - 1); });
     }
     const std::pair<const char *, bool ShadingSettings::*> switches[] = {
         {"lighting", &ShadingSettings::lighting},
-        {"vertex-colors", &ShadingSettings::vertexColors},
-        {"texture", &ShadingSettings::texture}};
+        {"vertex-colors", &ShadingSettings::vertexColors}};
     for (const auto &[name, member] : switches) {
         if (given(name)) {
             const bool on = onOff(name, value(name));
@@ -419,11 +466,12 @@ void parseInto(const QCommandLineParser &parser, CommandLine &cl)
     const std::pair<const char *, bool ObjectSettings::*> objectSwitches[] = {
         {"show-normals", &ObjectSettings::showNormals},
         {"cull-back-faces", &ObjectSettings::cullBackFaces},
-        {"file-material", &ObjectSettings::adoptFileMaterial}};
+        {"file-material", &ObjectSettings::adoptFileMaterial},
+        {"texture", &ObjectSettings::texture}};
     for (const auto &[name, member] : objectSwitches) {
         if (given(name)) {
             const bool on = onOff(name, value(name));
-            add([on, member = member](Scene &s) { s.object.*member = on; });
+            add([on, member = member](Scene &s) { s.selectedObject().*member = on; });
         }
     }
     if (given("show-light")) {

@@ -153,6 +153,7 @@ QJsonObject probeJson(const ProbeResult &probe, const QImage &frame, QPoint pixe
     for (int c = 0; c < 3; ++c)
         worst = std::max(worst, std::abs(o["gpu"].toArray()[c].toInt() - ref[c].toInt()));
     o["maxDifference"] = worst;
+    o["object"] = probe.object;
     o["triangle"] = qint64(probe.triangle);
     o["position"] = array(probe.position);
     o["normal"] = array(probe.normal);
@@ -210,8 +211,13 @@ int runHeadless(const CommandLine &cl, const Scene &requested)
         imported = r;
         waiting.quit();
     });
-    if (!scene.object.meshPath.isEmpty())
-        import.start(scene.object.meshPath, cl.importLimits());
+    // Each file once, however many objects draw it.
+    QStringList paths;
+    for (const ObjectSettings &o : scene.objects)
+        if (!o.meshPath.isEmpty() && !paths.contains(o.meshPath))
+            paths << o.meshPath;
+    if (!paths.isEmpty())
+        import.start(paths.front(), cl.importLimits());
 
     OffscreenRenderer offscreen;
     if (const QString error = offscreen.initialize(cl.size); !error.isEmpty()) {
@@ -219,18 +225,26 @@ int runHeadless(const CommandLine &cl, const Scene &requested)
         return 1;
     }
     phases.mark("openGl");
-    if (!scene.object.meshPath.isEmpty()) {
+    double loadSeconds = 0.0;
+    qint64 helperPeakKB = 0;
+    for (int i = 0; i < int(paths.size()); ++i) {
+        if (i > 0)
+            import.start(paths[i], cl.importLimits());
         if (import.isRunning())
             waiting.exec();
         if (!imported.ok()) {
             printLine("lightbench: " + imported.error.toUtf8(), stderr);
             return 1;
         }
-        phases.mark("import");
-        offscreen.setMeshFile(imported.file);
-        if (scene.object.adoptFileMaterial)
-            scene.material = adoptMaterial(scene.material, imported.file->material);
+        offscreen.addMeshFile(imported.file);
+        for (ObjectSettings &o : scene.objects)
+            if (o.meshPath == imported.file->path && o.adoptFileMaterial)
+                o.material = adoptMaterial(o.material, imported.file->material);
+        loadSeconds += imported.file->seconds;
+        helperPeakKB = std::max(helperPeakKB, imported.file->helperPeakKB);
     }
+    if (!paths.isEmpty())
+        phases.mark("import");
     if (cl.hasUserProgram()) {
         FILE *out = cl.check ? stdout : stderr;
         const ProgramBuild build = offscreen.useProgram(cl.vertexSource, cl.fragmentSource);
@@ -253,8 +267,6 @@ int runHeadless(const CommandLine &cl, const Scene &requested)
 
     // Past here only pixels are needed, except by the probe: a big mesh's frame holds one
     // copy of it (the driver's) instead of three.
-    const double loadSeconds = imported.ok() ? imported.file->seconds : 0.0;
-    const qint64 helperPeakKB = imported.ok() ? imported.file->helperPeakKB : 0;
     if (!cl.probe) {
         offscreen.dropCpuMeshes(scene);
         imported.file.reset();
@@ -276,7 +288,7 @@ int runHeadless(const CommandLine &cl, const Scene &requested)
         rusage usage{};
         getrusage(RUSAGE_SELF, &usage);
         o["peakMB"] = double(usage.ru_maxrss) / 1024.0; // this process, not the helper
-        if (!scene.object.meshPath.isEmpty()) {
+        if (!paths.isEmpty()) {
             o["loadSeconds"] = loadSeconds;
             o["helperPeakMB"] = double(helperPeakKB) / 1024.0;
         }
@@ -314,10 +326,9 @@ int runHeadless(const CommandLine &cl, const Scene &requested)
         printLine(QJsonDocument(o).toJson(QJsonDocument::Compact), stdout);
     }
     if (cl.probe) {
-        const Mesh &mesh = offscreen.objectMesh(scene);
         PixelView view;
         const ProbeResult probe =
-            probeFramePixel(scene, mesh, offscreen.renderer().texture(), cl.size, *cl.probe, &view);
+            probeFramePixel(scene, offscreen.probedObjects(scene), cl.size, *cl.probe, &view);
         QJsonObject o = probeJson(probe, frame, *cl.probe, sceneOfSide(scene, view.sideB));
         if (scene.compare.mode != CompareMode::Off)
             o["side"] = view.sideB ? "B" : "A";

@@ -50,7 +50,10 @@ MainWindow::MainWindow(QSettings &settings, QWidget *parent)
     setCentralWidget(m_viewport);
     m_loader = new ObjectLoader(&m_document, this);
     connect(m_loader, &ObjectLoader::meshReady, m_viewport, &Viewport::setObject);
-    m_viewport->setObject(m_loader->mesh(), m_loader->texture());
+    connect(m_loader, &ObjectLoader::objectCountChanged, m_viewport, &Viewport::setObjectCount);
+    m_viewport->setObjectCount(m_loader->objectCount());
+    for (int i = 0; i < m_loader->objectCount(); ++i)
+        m_viewport->setObject(i, m_loader->mesh(i), m_loader->texture(i));
     m_light = new LightPanel(&m_document);
     m_material = new MaterialPanel(&m_document);
     m_shading = new ShadingPanel(&m_document);
@@ -63,6 +66,14 @@ MainWindow::MainWindow(QSettings &settings, QWidget *parent)
     addPanelDock(tr("Object"), "objectDock", m_object);
     addPanelDock(tr("Uniforms"), "uniformDock", m_uniforms);
     QDockWidget *probeDock = addPanelDock(tr("Probe"), "probeDock", m_probe);
+    // A click on an object selects it for the Object and Material panels.
+    connect(m_viewport, &Viewport::clicked, this, [this](QPoint pixel) {
+        const QSize frame = m_viewport->size() * m_viewport->devicePixelRatio();
+        const ProbeResult hit = probeFramePixel(
+            m_document.scene(), m_viewport->renderer().probedObjects(), frame, pixel);
+        if (hit.hit)
+            m_document.edit([&](Scene &s) { s.selected = hit.object; });
+    });
     connect(m_viewport, &Viewport::probeRequested, this, [this, probeDock](QPoint pixel) {
         m_probe->probeAt(pixel);
         probeDock->show();

@@ -137,7 +137,10 @@ void MainWindow::buildMenus()
             [this] { m_viewport->resetCamera(); });
     addItem(view, tr("Clear the &Probe"), QKeySequence(tr("Esc")), [this] { m_probe->clear(); });
     addItem(view, tr("&Auto-rotate"), QKeySequence(tr("Space")), [this] {
-        m_document.edit([](Scene &s) { s.object.autoRotate = !s.object.autoRotate; });
+        m_document.edit([](Scene &s) {
+            bool &turning = s.selectedObject().autoRotate;
+            turning = !turning;
+        });
     });
     addViewMenu(view);
 

@@ -82,7 +82,10 @@ void MeshActions::addToMenus(QMenu *file, QMenu *edit, QMenu *view)
         preferences->setShortcut(QKeySequence(tr("Ctrl+,")));
 
     QAction *normals = view->addAction(tr("Show &Normals"), this, [this] {
-        m_document->edit([](Scene &s) { s.object.showNormals = !s.object.showNormals; });
+        m_document->edit([](Scene &s) {
+            bool &shown = s.selectedObject().showNormals;
+            shown = !shown;
+        });
     });
     normals->setShortcut(QKeySequence(tr("N")));
 }
@@ -95,10 +98,10 @@ void MeshActions::showSummary()
     if (!mesh)
         return;
     const MeshFile *file = m_loader->file();
-    QString shortForm =
-        tr("%1: %2 triangles")
-            .arg(file ? QFileInfo(file->path).fileName() : toName(m_document->scene().object.shape),
-                 QLocale().toString(qulonglong(mesh->triangleCount())));
+    QString shortForm = tr("%1: %2 triangles")
+                            .arg(file ? QFileInfo(file->path).fileName()
+                                      : displayName(m_document->scene().selectedObject()),
+                                 QLocale().toString(qulonglong(mesh->triangleCount())));
     if (file)
         shortForm += tr(", %1 s").arg(file->seconds, 0, 'f', 2);
     m_summary->setText(shortForm);

@@ -101,7 +101,8 @@ bool SceneActions::open(const QString &path)
     SceneFile file = *read.file;
     // An example's mesh (none today) would name a file beside the resource: keep shapes.
     if (example)
-        file.scene.object.meshPath.clear();
+        for (ObjectSettings &o : file.scene.objects)
+            o.meshPath.clear();
     // The program first: the scene's shading is held to a program that fixes its own.
     m_shaders->setProgram(file.program, perVertex(file.scene.shading.shading));
     m_document->set(file.scene);
@@ -251,8 +252,9 @@ bool SceneActions::isModified() const
     SceneFile now{m_document->scene(), m_shaders->program()};
     const SceneFile saved = m_saved.value_or(SceneFile{Scene{}, std::nullopt});
     // Auto-rotation turns the object 60 times a second: the turn is not an edit.
-    if (now.scene.object.autoRotate)
-        now.scene.object.rotationDegrees.y = saved.scene.object.rotationDegrees.y;
+    for (std::size_t i = 0; i < now.scene.objects.size(); ++i)
+        if (now.scene.objects[i].autoRotate && i < saved.scene.objects.size())
+            now.scene.objects[i].rotationDegrees.y = saved.scene.objects[i].rotationDegrees.y;
     // The program's text decides, not its name or 'edited' flag (a saved scene's program
     // reads back under the file's name).
     auto text = [](const std::optional<ProgramText> &p) {

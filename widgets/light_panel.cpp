@@ -22,7 +22,7 @@ glm::vec3 LightColors::*const kColourMembers[3] = {&LightColors::ia, &LightColor
 }
 
 LightPanel::LightPanel(SceneDocument *document, QWidget *parent)
-    : ScenePanel(document, ScenePart::Lights, parent)
+    : ScenePanel(document, ScenePart::Lights | ScenePart::Object, parent)
 {
     auto *form = new QFormLayout(this);
     form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
@@ -81,7 +81,16 @@ LightPanel::LightPanel(SceneDocument *document, QWidget *parent)
     connect(m_frame, &QComboBox::currentIndexChanged, this,
             [this](int index) { edit([&](Scene &s) { current(s).frame = LightFrame(index); }); });
     feeds(m_frame, {Semantic::LightFrame, Semantic::LightPositionEye});
+    m_frameObject = makeCombo({}, tr("The object whose frame an object-frame light is given in: "
+                                     "the light turns and moves with it, and lights every "
+                                     "object from there"));
+    connect(m_frameObject, &QComboBox::currentIndexChanged, this, [this](int index) {
+        if (index >= 0)
+            edit([&](Scene &s) { current(s).object = index; });
+    });
+    feeds(m_frameObject, {Semantic::LightPosition, Semantic::LightPositionEye});
     form->addRow(tr("Frame"), m_frame);
+    form->addRow(tr("Of object"), m_frameObject);
 
     const char *symbols[3] = {"Ia", "Id", "Is"};
     const Semantic semantics[3] = {Semantic::LightAmbient, Semantic::LightDiffuse,
@@ -215,7 +224,20 @@ void LightPanel::refresh(const Scene &scene)
     for (QDoubleSpinBox *spin : m_spotAxis)
         setApplies(spin, spot);
     setApplies(m_spotExponent, spot);
-    const QSignalBlocker b1(m_w), b2(m_frame), b3(m_spotCutoff), b4(m_spotExponent);
+    const QSignalBlocker b1(m_w), b2(m_frame), b3(m_spotCutoff), b4(m_spotExponent),
+        b5(m_frameObject);
+    QStringList names;
+    for (const ObjectSettings &o : scene.objects)
+        names << displayName(o);
+    QStringList shown;
+    for (int i = 0; i < m_frameObject->count(); ++i)
+        shown << m_frameObject->itemText(i);
+    if (shown != names) {
+        m_frameObject->clear();
+        m_frameObject->addItems(names);
+    }
+    m_frameObject->setCurrentIndex(std::clamp(light.object, 0, int(names.size()) - 1));
+    setApplies(m_frameObject, light.frame == LightFrame::Object);
     m_spotCutoff->setValue(double(light.spot.cutoffDegrees));
     m_spotExponent->setValue(double(light.spot.exponent));
     m_w->setCurrentIndex(light.position.w == 0.0f ? 1 : 0);

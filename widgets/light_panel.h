@@ -28,6 +28,7 @@ public:
     QDoubleSpinBox *coordinate(int i) const { return m_xyz[std::size_t(i)]; }
     QComboBox *wCombo() const { return m_w; }
     QComboBox *frameCombo() const { return m_frame; }
+    QComboBox *frameObjectCombo() const { return m_frameObject; }
     ColorEdit *colorEdit(int i) const { return m_colors[std::size_t(i)]; }             // Ia, Id, Is
     QDoubleSpinBox *attenuation(int i) const { return m_attenuation[std::size_t(i)]; } // kc..
     QDoubleSpinBox *spotAxis(int i) const { return m_spotAxis[std::size_t(i)]; }
@@ -45,6 +46,7 @@ private:
     std::array<QDoubleSpinBox *, 3> m_xyz{};
     QComboBox *m_w;
     QComboBox *m_frame;
+    QComboBox *m_frameObject; // the object an object-frame light belongs to
     std::array<ColorEdit *, 3> m_colors{};
     std::array<QDoubleSpinBox *, 3> m_attenuation{};
     std::array<QDoubleSpinBox *, 3> m_spotAxis{};

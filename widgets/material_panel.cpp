@@ -42,7 +42,7 @@ MaterialPanel::MaterialPanel(SceneDocument *document, QWidget *parent)
         colour->setToolTip(tr("%1 (%2): the material's %3 reflection coefficients")
                                .arg(symbols[i], namesOf({semantics[i]}), terms[i]));
         connect(colour, &ColorEdit::colorChanged, this, [this, i](const glm::vec3 &c) {
-            edit([&](Scene &s) { s.material.*kColourMembers[i] = c; });
+            edit([&](Scene &s) { s.selectedObject().material.*kColourMembers[i] = c; });
         });
         m_colors[std::size_t(i)] = colour;
         feeds(colour, {semantics[i]});
@@ -56,10 +56,11 @@ MaterialPanel::MaterialPanel(SceneDocument *document, QWidget *parent)
     m_slider->setToolTip(tip);
     m_box = makeSpin(limits::kMinShininess, limits::kMaxShininess, 1, 1.0, tip);
     connect(m_slider, &QSlider::valueChanged, this, [this](int position) {
-        edit([&](Scene &s) { s.material.shininess = shininessAt(position); });
+        edit([&](Scene &s) { s.selectedObject().material.shininess = shininessAt(position); });
     });
-    connect(m_box, &QDoubleSpinBox::valueChanged, this,
-            [this](double v) { edit([&](Scene &s) { s.material.shininess = float(v); }); });
+    connect(m_box, &QDoubleSpinBox::valueChanged, this, [this](double v) {
+        edit([&](Scene &s) { s.selectedObject().material.shininess = float(v); });
+    });
     feeds(m_slider, {Semantic::Shininess});
     feeds(m_box, {Semantic::Shininess});
     auto *row = new QHBoxLayout;
@@ -68,18 +69,19 @@ MaterialPanel::MaterialPanel(SceneDocument *document, QWidget *parent)
     form->addRow(tr("Shininess"), row);
 
     addResetButton(form, tr("Reset material"),
-                   tr("The slides' red plastic: Ka = Kd = (1, 0, 0), Ks = (1, 1, 1), n = 6"),
-                   [](Scene &s) { s.material = Material{}; });
+                   tr("The selected object's material back to the slides' red plastic: Ka = Kd = "
+                      "(1, 0, 0), Ks = (1, 1, 1), n = 6"),
+                   [](Scene &s) { s.selectedObject().material = Material{}; });
     refreshNow();
 }
 
 void MaterialPanel::refresh(const Scene &scene)
 {
     for (int i = 0; i < 3; ++i)
-        m_colors[std::size_t(i)]->setColor(scene.material.*kColourMembers[i]);
+        m_colors[std::size_t(i)]->setColor(scene.selectedObject().material.*kColourMembers[i]);
     const QSignalBlocker b1(m_slider), b2(m_box);
-    m_slider->setValue(sliderPosition(scene.material.shininess));
-    m_box->setValue(double(scene.material.shininess));
+    m_slider->setValue(sliderPosition(scene.selectedObject().material.shininess));
+    m_box->setValue(double(scene.selectedObject().material.shininess));
 }
 
 } // namespace lb

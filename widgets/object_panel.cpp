@@ -6,6 +6,7 @@
 #include <QFileInfo>
 #include <QFormLayout>
 #include <QHBoxLayout>
+#include <QListWidget>
 #include <QPushButton>
 #include <QSignalBlocker>
 #include <QSpinBox>
@@ -22,14 +23,77 @@ ObjectPanel::ObjectPanel(SceneDocument *document, QWidget *parent)
     auto *form = new QFormLayout(this);
     form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
 
+    // The list: a tick shows or hides an object, a double click (or F2) renames it.
+    m_list = new QListWidget(this);
+    m_list->setToolTip(tr("The scene's objects, each with its own mesh, transform and material: "
+                          "select one to edit it here and in the Material panel (or click it "
+                          "in the view). Untick to hide; double-click to rename"));
+    m_list->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed);
+    m_list->setMaximumHeight(m_list->fontMetrics().height() * 5 + 8);
+    connect(m_list, &QListWidget::currentRowChanged, this, [this](int row) {
+        if (row >= 0)
+            edit([&](Scene &s) {
+                if (row < int(s.objects.size()))
+                    s.selected = row;
+            });
+    });
+    connect(m_list, &QListWidget::itemChanged, this, [this](QListWidgetItem *item) {
+        const int row = m_list->row(item);
+        const bool visible = item->checkState() == Qt::Checked;
+        const QString name = item->text().trimmed();
+        edit([&](Scene &s) {
+            if (row < 0 || row >= int(s.objects.size()))
+                return;
+            ObjectSettings &o = s.objects[std::size_t(row)];
+            o.visible = visible;
+            if (name != displayName(o)) // the shown name typed again keeps following the shape
+                o.name = name;
+        });
+        refreshNow(); // an emptied name shows the shape's or file's again
+    });
+    form->addRow(m_list);
+    m_add = new QPushButton(tr("Add"), this);
+    m_add->setToolTip(
+        tr("A new sphere beside the selected object (at most %1 objects)").arg(kMaxObjects));
+    connect(m_add, &QPushButton::clicked, this, [this] {
+        edit([](Scene &s) {
+            ObjectSettings added;
+            added.translation = s.selectedObject().translation + glm::vec3(2.5f, 0.0f, 0.0f);
+            addObject(s, added);
+        });
+    });
+    m_duplicate = new QPushButton(tr("Duplicate"), this);
+    m_duplicate->setToolTip(tr("A copy of the selected object, material and all, beside it"));
+    connect(m_duplicate, &QPushButton::clicked, this, [this] {
+        const QString suffix = tr(" copy");
+        edit([&](Scene &s) {
+            ObjectSettings copy = s.selectedObject();
+            copy.translation += glm::vec3(2.5f, 0.0f, 0.0f);
+            if (!copy.name.isEmpty())
+                copy.name += suffix;
+            addObject(s, copy);
+        });
+    });
+    m_remove = new QPushButton(tr("Remove"), this);
+    m_remove->setToolTip(tr("Removes the selected object (the last one stays); lights in its "
+                            "frame go to the object before it"));
+    connect(m_remove, &QPushButton::clicked, this,
+            [this] { edit([](Scene &s) { removeObject(s, s.selected); }); });
+    auto *listButtons = new QHBoxLayout;
+    listButtons->addWidget(m_add);
+    listButtons->addWidget(m_duplicate);
+    listButtons->addWidget(m_remove);
+    listButtons->addStretch();
+    form->addRow(listButtons);
+
     m_shape = makeCombo({tr("Cube (flat faces)"), tr("Sphere (smooth)"), tr("Torus"), tr("Plane")},
                         tr("The object: vPosition and vNormal come from this mesh. A built-in "
                            "shape replaces a mesh file"));
     connect(m_shape, &QComboBox::currentIndexChanged, this, [this](int i) {
         if (i < kShapeCount)
             edit([&](Scene &s) {
-                s.object.shape = Shape(i);
-                s.object.meshPath.clear();
+                s.selectedObject().shape = Shape(i);
+                s.selectedObject().meshPath.clear();
             });
     });
     auto *open = new QPushButton(tr("Open..."), this);
@@ -47,7 +111,7 @@ ObjectPanel::ObjectPanel(SceneDocument *document, QWidget *parent)
     m_tessellation->setToolTip(tr("Subdivisions of the sphere, torus and plane. Few vertices "
                                   "show Gouraud's weakness: its highlight follows the vertices"));
     connect(m_tessellation, &QSpinBox::valueChanged, this,
-            [this](int v) { edit([&](Scene &s) { s.object.tessellation = v; }); });
+            [this](int v) { edit([&](Scene &s) { s.selectedObject().tessellation = v; }); });
     form->addRow(tr("Tessellation"), m_tessellation);
 
     m_normals = makeCombo({tr("From the mesh"), tr("Smooth (crease angle)"), tr("Flat")},
@@ -56,28 +120,36 @@ ObjectPanel::ObjectPanel(SceneDocument *document, QWidget *parent)
                              "around a vertex within the crease angle, or flat, one per "
                              "triangle"));
     connect(m_normals, &QComboBox::currentIndexChanged, this,
-            [this](int i) { edit([&](Scene &s) { s.object.normals = NormalMode(i); }); });
+            [this](int i) { edit([&](Scene &s) { s.selectedObject().normals = NormalMode(i); }); });
     form->addRow(tr("Normals"), m_normals);
     m_crease = makeSpin(0.0, double(limits::kMaxCreaseDegrees), 0, 5.0,
                         tr("Generated smooth normals average only triangles that meet at less "
                            "than this angle: 0 is flat, 180 smooths every edge"));
     m_crease->setSuffix(QStringLiteral("\u00b0"));
-    connect(m_crease, &QDoubleSpinBox::valueChanged, this,
-            [this](double v) { edit([&](Scene &s) { s.object.creaseDegrees = float(v); }); });
+    connect(m_crease, &QDoubleSpinBox::valueChanged, this, [this](double v) {
+        edit([&](Scene &s) { s.selectedObject().creaseDegrees = float(v); });
+    });
     form->addRow(tr("Crease angle"), m_crease);
     m_showNormals = new QCheckBox(tr("Show normals as lines"), this);
     m_showNormals->setToolTip(tr("A short line along each vertex normal, transformed by "
                                  "mNormals as the shaders do (key N)"));
     connect(m_showNormals, &QCheckBox::toggled, this,
-            [this](bool on) { edit([&](Scene &s) { s.object.showNormals = on; }); });
+            [this](bool on) { edit([&](Scene &s) { s.selectedObject().showNormals = on; }); });
     form->addRow(m_showNormals);
     m_cullBackFaces = new QCheckBox(tr("Cull back faces (closed meshes)"), this);
     m_cullBackFaces->setToolTip(tr("Triangles facing away from the camera are not drawn: the "
                                    "same picture for a closed mesh, about twice as fast; an "
                                    "open mesh shows holes where its inside was"));
     connect(m_cullBackFaces, &QCheckBox::toggled, this,
-            [this](bool on) { edit([&](Scene &s) { s.object.cullBackFaces = on; }); });
+            [this](bool on) { edit([&](Scene &s) { s.selectedObject().cullBackFaces = on; }); });
     form->addRow(m_cullBackFaces);
+    m_texture = new QCheckBox(tr("Texture"), this);
+    m_texture->setToolTip(tr("uEnableTexture: multiply ambient and diffuse by the texture "
+                             "(uSampler): the mesh file's diffuse texture, or the checker"));
+    connect(m_texture, &QCheckBox::toggled, this,
+            [this](bool on) { edit([&](Scene &s) { s.selectedObject().texture = on; }); });
+    feeds(m_texture, {Semantic::EnableTexture});
+    form->addRow(m_texture);
     m_adoptMaterial = new QCheckBox(tr("Use the mesh file's material"), this);
     m_adoptMaterial->setToolTip(tr("The mesh file's ambient, diffuse and specular colours "
                                    "and shininess replace Ka, Kd, Ks and shininess: now, and "
@@ -89,6 +161,7 @@ ObjectPanel::ObjectPanel(SceneDocument *document, QWidget *parent)
     const char *axes[3] = {"X", "Y", "Z"};
     auto *rotationRow = new QHBoxLayout;
     auto *scaleRow = new QHBoxLayout;
+    auto *translationRow = new QHBoxLayout;
     for (int i = 0; i < 3; ++i) {
         QDoubleSpinBox *r = makeSpin(-360.0, 360.0, 1, 5.0,
                                      tr("Rotation about %1 in degrees (model matrix; applied X, "
@@ -96,7 +169,7 @@ ObjectPanel::ObjectPanel(SceneDocument *document, QWidget *parent)
                                          .arg(axes[i]));
         r->setWrapping(true);
         connect(r, &QDoubleSpinBox::valueChanged, this, [this, i](double v) {
-            edit([&](Scene &s) { s.object.rotationDegrees[i] = float(v); });
+            edit([&](Scene &s) { s.selectedObject().rotationDegrees[i] = float(v); });
         });
         m_rotation[std::size_t(i)] = r;
         rotationRow->addWidget(r);
@@ -105,32 +178,76 @@ ObjectPanel::ObjectPanel(SceneDocument *document, QWidget *parent)
                                       tr("Scale along %1. A non-uniform scale is why normals "
                                          "need mNormals, the inverse transpose of mModelView")
                                           .arg(axes[i]));
-        connect(sc, &QDoubleSpinBox::valueChanged, this,
-                [this, i](double v) { edit([&](Scene &s) { s.object.scale[i] = float(v); }); });
+        connect(sc, &QDoubleSpinBox::valueChanged, this, [this, i](double v) {
+            edit([&](Scene &s) { s.selectedObject().scale[i] = float(v); });
+        });
         m_scale[std::size_t(i)] = sc;
         scaleRow->addWidget(sc);
+
+        QDoubleSpinBox *t = makeSpin(-limits::kMaxCoordinate, limits::kMaxCoordinate, 2, 0.25,
+                                     tr("Translation along world %1: where the object's centre "
+                                        "lies (model matrix, applied last)")
+                                         .arg(axes[i]));
+        connect(t, &QDoubleSpinBox::valueChanged, this, [this, i](double v) {
+            edit([&](Scene &s) { s.selectedObject().translation[i] = float(v); });
+        });
+        m_translation[std::size_t(i)] = t;
+        translationRow->addWidget(t);
     }
     form->addRow(tr("Rotate"), rotationRow);
     form->addRow(tr("Scale"), scaleRow);
+    form->addRow(tr("Move"), translationRow);
 
     m_autoRotate = new QCheckBox(tr("Auto-rotate about Y"), this);
     m_autoRotate->setToolTip(tr("Turns the model: a light in the object frame turns with it "
                                 "(key Space)"));
     connect(m_autoRotate, &QCheckBox::toggled, this,
-            [this](bool on) { edit([&](Scene &s) { s.object.autoRotate = on; }); });
+            [this](bool on) { edit([&](Scene &s) { s.selectedObject().autoRotate = on; }); });
     form->addRow(m_autoRotate);
 
     addResetButton(form, tr("Reset object"),
-                   tr("The coarse unit sphere, untransformed, not rotating"),
-                   [](Scene &s) { s.object = ObjectSettings{}; });
+                   tr("The selected object back to the coarse unit sphere, unrotated, unscaled "
+                      "and not turning; its name, place and material stay"),
+                   [](Scene &s) {
+                       ObjectSettings &o = s.selectedObject();
+                       ObjectSettings reset;
+                       reset.name = o.name;
+                       reset.translation = o.translation;
+                       reset.material = o.material;
+                       o = reset;
+                   });
     refreshNow();
+}
+
+void ObjectPanel::refreshList(const Scene &scene)
+{
+    const QSignalBlocker block(m_list);
+    const int n = int(scene.objects.size());
+    while (m_list->count() > n)
+        delete m_list->takeItem(m_list->count() - 1);
+    while (m_list->count() < n) {
+        auto *item = new QListWidgetItem(m_list);
+        item->setFlags(item->flags() | Qt::ItemIsEditable | Qt::ItemIsUserCheckable);
+    }
+    for (int i = 0; i < n; ++i) {
+        const ObjectSettings &o = scene.objects[std::size_t(i)];
+        QListWidgetItem *item = m_list->item(i);
+        item->setText(displayName(o));
+        item->setCheckState(o.visible ? Qt::Checked : Qt::Unchecked);
+        item->setToolTip(o.meshPath.isEmpty() ? displayName(o) : o.meshPath);
+    }
+    m_list->setCurrentRow(scene.selected);
+    m_add->setEnabled(n < kMaxObjects);
+    m_duplicate->setEnabled(n < kMaxObjects);
+    m_remove->setEnabled(n > 1);
 }
 
 void ObjectPanel::refresh(const Scene &scene)
 {
-    const ObjectSettings &o = scene.object;
+    refreshList(scene);
+    const ObjectSettings &o = scene.selectedObject();
     const QSignalBlocker b1(m_shape), b2(m_tessellation), b3(m_autoRotate), b6(m_normals),
-        b7(m_crease), b8(m_showNormals), b9(m_adoptMaterial), b10(m_cullBackFaces);
+        b7(m_crease), b8(m_showNormals), b9(m_adoptMaterial), b10(m_cullBackFaces), b11(m_texture);
     while (m_shape->count() > kShapeCount)
         m_shape->removeItem(kShapeCount);
     if (o.meshPath.isEmpty()) {
@@ -149,10 +266,13 @@ void ObjectPanel::refresh(const Scene &scene)
     m_showNormals->setChecked(o.showNormals);
     m_cullBackFaces->setChecked(o.cullBackFaces);
     m_adoptMaterial->setChecked(o.adoptFileMaterial);
+    m_texture->setChecked(o.texture);
     for (int i = 0; i < 3; ++i) {
-        const QSignalBlocker b4(m_rotation[std::size_t(i)]), b5(m_scale[std::size_t(i)]);
-        m_rotation[std::size_t(i)]->setValue(double(scene.object.rotationDegrees[i]));
-        m_scale[std::size_t(i)]->setValue(double(scene.object.scale[i]));
+        const QSignalBlocker b4(m_rotation[std::size_t(i)]), b5(m_scale[std::size_t(i)]),
+            b12(m_translation[std::size_t(i)]);
+        m_rotation[std::size_t(i)]->setValue(double(o.rotationDegrees[i]));
+        m_scale[std::size_t(i)]->setValue(double(o.scale[i]));
+        m_translation[std::size_t(i)]->setValue(double(o.translation[i]));
     }
 }
 

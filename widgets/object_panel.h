@@ -1,7 +1,8 @@
 #pragma once
-// Object: the shape or mesh file and its tessellation, normals (the file's, smooth within a
-// crease angle, or flat; shown as lines), rotation and (possibly non-uniform) scale per axis,
-// and auto-rotate.
+// Object: the scene's objects as a list (add, duplicate, remove, rename, show or hide, select),
+// and the selected one's shape or mesh file and its tessellation, normals (the file's, smooth
+// within a crease angle, or flat; shown as lines), texture switch, rotation, (possibly
+// non-uniform) scale and translation per axis, and auto-rotate.
 
 #include "scene_panel.h"
 
@@ -10,6 +11,8 @@
 class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
+class QListWidget;
+class QPushButton;
 class QSpinBox;
 
 namespace lb {
@@ -20,10 +23,16 @@ class ObjectPanel : public ScenePanel
 public:
     explicit ObjectPanel(SceneDocument *document, QWidget *parent = nullptr);
 
+    QListWidget *objectList() const { return m_list; }
+    QPushButton *addButton() const { return m_add; }
+    QPushButton *duplicateButton() const { return m_duplicate; }
+    QPushButton *removeButton() const { return m_remove; }
     QComboBox *shapeCombo() const { return m_shape; }
     QSpinBox *tessellationBox() const { return m_tessellation; }
     QDoubleSpinBox *rotation(int i) const { return m_rotation[std::size_t(i)]; }
     QDoubleSpinBox *scale(int i) const { return m_scale[std::size_t(i)]; }
+    QDoubleSpinBox *translation(int i) const { return m_translation[std::size_t(i)]; }
+    QCheckBox *textureCheck() const { return m_texture; }
     QCheckBox *autoRotateCheck() const { return m_autoRotate; }
     QComboBox *normalsCombo() const { return m_normals; }
     QDoubleSpinBox *creaseBox() const { return m_crease; }
@@ -41,10 +50,16 @@ protected:
     void refresh(const Scene &scene) override;
 
 private:
+    void refreshList(const Scene &scene);
+
+    QListWidget *m_list;
+    QPushButton *m_add, *m_duplicate, *m_remove;
     QComboBox *m_shape;
     QSpinBox *m_tessellation;
     std::array<QDoubleSpinBox *, 3> m_rotation{};
     std::array<QDoubleSpinBox *, 3> m_scale{};
+    std::array<QDoubleSpinBox *, 3> m_translation{};
+    QCheckBox *m_texture;
     QCheckBox *m_autoRotate;
     QComboBox *m_normals;
     QDoubleSpinBox *m_crease;

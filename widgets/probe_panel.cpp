@@ -90,19 +90,16 @@ void ProbePanel::setReferenceNote(const QString &note)
 
 void ProbePanel::probeAt(QPoint framePixel)
 {
-    const Mesh *mesh = m_viewport->renderer().objectMesh();
-    if (!mesh)
-        return;
     const QSize frame = m_viewport->size() * m_viewport->devicePixelRatio();
     PixelView view;
     const ProbeResult r = probeFramePixel(
-        m_document->scene(), *mesh, m_viewport->renderer().texture(), frame, framePixel, &view);
+        m_document->scene(), m_viewport->renderer().probedObjects(), frame, framePixel, &view);
     if (!r.hit) {
         clear();
         m_text->setText(tr("No surface at (%1, %2).").arg(framePixel.x()).arg(framePixel.y()));
         return;
     }
-    m_point = Point{r.triangle, r.barycentric, view.sideB};
+    m_point = Point{r.object, r.triangle, r.barycentric, view.sideB};
     update();
 }
 
@@ -110,17 +107,18 @@ void ProbePanel::update()
 {
     if (!m_point)
         return;
-    const Mesh *mesh = m_viewport->renderer().objectMesh();
-    if (!mesh || m_point->triangle >= mesh->triangleCount()) {
+    const Scene &scene = m_document->scene();
+    const Mesh *mesh = m_viewport->renderer().objectMesh(m_point->object);
+    if (!mesh || m_point->triangle >= mesh->triangleCount() ||
+        m_point->object >= int(scene.objects.size())) {
         clear();
         return;
     }
-    const Scene &scene = m_document->scene();
     const QSize frame = m_viewport->size() * m_viewport->devicePixelRatio();
     const QRect view = viewRect(scene, frame, m_point->sideB);
-    m_result =
-        probeSurface(sceneOfSide(scene, m_point->sideB), *mesh, m_viewport->renderer().texture(),
-                     view.size(), m_point->triangle, m_point->barycentric);
+    m_result = probeSurface(sceneOfSide(scene, m_point->sideB), m_point->object, *mesh,
+                            m_viewport->renderer().texture(m_point->object), view.size(),
+                            m_point->triangle, m_point->barycentric);
 
     // Arrows from the point: N yellow, V cyan, and for each light L in its diffuse colour
     // with H (Blinn-Phong) or R (Phong) in magenta.
@@ -161,16 +159,18 @@ void ProbePanel::showText()
     const bool blinn = side.shading.specular == SpecularModel::Blinn;
     const QSize frame = m_viewport->size() * m_viewport->devicePixelRatio();
     const QRect view = viewRect(scene, frame, m_point->sideB);
-    const Frames frames = computeFrames(side, float(view.width()) / float(view.height()));
+    const Frames frames = computeFrames(side, float(view.width()) / float(view.height()), r.object);
 
     QString html = "<table cellspacing='2'>";
-    html += row(tr("Point"), tr("pixel (%1, %2), triangle %3%4")
-                                 .arg(std::lround(r.pixel.x() + view.x()))
-                                 .arg(std::lround(r.pixel.y() + view.y()))
-                                 .arg(r.triangle)
-                                 .arg(scene.compare.mode == CompareMode::Off
-                                          ? QString()
-                                          : (m_point->sideB ? tr(", side B") : tr(", side A"))));
+    html +=
+        row(tr("Point"), tr("pixel (%1, %2), %3, triangle %4%5")
+                             .arg(std::lround(r.pixel.x() + view.x()))
+                             .arg(std::lround(r.pixel.y() + view.y()))
+                             .arg(displayName(scene.objects[std::size_t(r.object)]).toHtmlEscaped())
+                             .arg(r.triangle)
+                             .arg(scene.compare.mode == CompareMode::Off
+                                      ? QString()
+                                      : (m_point->sideB ? tr(", side B") : tr(", side A"))));
     html += row(tr("P (eye)"), vec(r.position));
     html += row(tr("N"), vec(r.normal));
     html += row(tr("V"), vec(viewVector(r.position, side.shading.projection)));
@@ -183,10 +183,12 @@ void ProbePanel::showText()
         html += row(blinn ? "H" : "R", vec(blinn ? t.H : t.R));
         // The light's own frame: the way lightInEye() came, undone.
         if (light.frame != LightFrame::Camera) {
-            const glm::vec4 p = eyeToFrame(frames, glm::vec4(r.position, 1.0f), light.frame);
-            const glm::vec4 l = eyeToFrame(frames, glm::vec4(t.L, 0.0f), light.frame);
+            const glm::vec4 p =
+                eyeToFrame(frames, l.index, glm::vec4(r.position, 1.0f), light.frame);
+            const glm::vec4 towards =
+                eyeToFrame(frames, l.index, glm::vec4(t.L, 0.0f), light.frame);
             html += row(tr("P, L (%1)").arg(toName(light.frame)),
-                        vec(glm::vec3(p)) + ", " + vec(glm::normalize(glm::vec3(l))));
+                        vec(glm::vec3(p)) + ", " + vec(glm::normalize(glm::vec3(towards))));
         }
         html += row(QString("N\u00b7L"), QString::number(double(t.nDotL), 'f', 4));
         html += row(blinn ? QString("N\u00b7H") : QString("R\u00b7V"),

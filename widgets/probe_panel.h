@@ -43,6 +43,7 @@ public:
 private:
     struct Point
     {
+        int object; // index into Scene::objects
         std::size_t triangle;
         glm::vec3 barycentric;
         bool sideB;

@@ -71,10 +71,6 @@ ShadingPanel::ShadingPanel(SceneDocument *document, QWidget *parent)
     m_vertexColors = makeCheck(tr("Vertex colours"),
                                tr("Multiply ambient and diffuse by the vertex colour (vColor)"),
                                &ShadingSettings::vertexColors);
-    m_texture = makeCheck(tr("Texture"),
-                          tr("uEnableTexture: multiply ambient and diffuse by the texture "
-                             "(uSampler): the mesh file's diffuse texture, or the checker"),
-                          &ShadingSettings::texture);
     // The terms on one row: the model taken apart, each term alone or in pairs.
     auto *termsRow = new QHBoxLayout;
     const std::tuple<QString, QString, bool TermSwitches::*, Semantic> terms[] = {
@@ -99,7 +95,6 @@ ShadingPanel::ShadingPanel(SceneDocument *document, QWidget *parent)
     form->addRow(tr("Terms"), termsRow);
     feeds(m_lighting, {Semantic::EnableLighting});
     feeds(m_vertexColors, {Semantic::EnableVertexColor});
-    feeds(m_texture, {Semantic::EnableTexture});
     m_normalsByModelView = makeCheck(
         tr("Normals by the model-view (wrong)"),
         tr("Transform normals by mModelView instead of its inverse transpose, to see why the "
@@ -152,9 +147,9 @@ void ShadingPanel::setShadingFixed(bool fixed, const QString &reason)
 void ShadingPanel::refresh(const Scene &scene)
 {
     const QSignalBlocker b1(m_shading), b2(m_specular), b3(m_projection), b4(m_lighting),
-        b5(m_vertexColors), b6(m_texture), b7(m_normalsByModelView), b8(m_compareMode),
-        b9(m_compareShading), b10(m_compareSpecular), b11(m_wipe), b12(m_terms[0]), b13(m_terms[1]),
-        b14(m_terms[2]), b15(m_show);
+        b5(m_vertexColors), b7(m_normalsByModelView), b8(m_compareMode), b9(m_compareShading),
+        b10(m_compareSpecular), b11(m_wipe), b12(m_terms[0]), b13(m_terms[1]), b14(m_terms[2]),
+        b15(m_show);
     m_show->setCurrentIndex(int(scene.shading.show));
     m_shading->setCurrentIndex(int(scene.shading.shading));
     m_specular->setCurrentIndex(int(scene.shading.specular));
@@ -166,7 +161,6 @@ void ShadingPanel::refresh(const Scene &scene)
     for (QCheckBox *check : m_terms)
         setApplies(check, scene.shading.lighting);
     m_vertexColors->setChecked(scene.shading.vertexColors);
-    m_texture->setChecked(scene.shading.texture);
     m_normalsByModelView->setChecked(scene.shading.normalsByModelView);
     m_compareMode->setCurrentIndex(int(scene.compare.mode));
     m_compareShading->setCurrentIndex(int(scene.compare.shading));

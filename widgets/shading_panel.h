@@ -23,7 +23,6 @@ public:
     QComboBox *projectionCombo() const { return m_projection; }
     QCheckBox *lightingCheck() const { return m_lighting; }
     QCheckBox *vertexColorsCheck() const { return m_vertexColors; }
-    QCheckBox *textureCheck() const { return m_texture; }
     QCheckBox *normalsByModelViewCheck() const { return m_normalsByModelView; }
     // Ambient, diffuse, specular.
     QCheckBox *termCheck(int i) const { return m_terms[std::size_t(i)]; }
@@ -46,7 +45,6 @@ private:
     QComboBox *m_projection;
     QCheckBox *m_lighting;
     QCheckBox *m_vertexColors;
-    QCheckBox *m_texture;
     QCheckBox *m_normalsByModelView;
     std::array<QCheckBox *, 3> m_terms{};
     QComboBox *m_show;

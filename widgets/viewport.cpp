@@ -459,10 +459,27 @@ void Viewport::resizeGL(int, int)
     emit resized();
 }
 
-void Viewport::setObject(std::shared_ptr<const Mesh> mesh, std::shared_ptr<const Texture> texture)
+void Viewport::setObjectCount(int count)
 {
-    const bool changed = mesh.get() != m_renderer.objectMesh();
-    m_renderer.setObject(std::move(mesh), std::move(texture)); // uploaded by the next paint
+    if (count == m_renderer.objectCount())
+        return;
+    // Fewer objects release GL buffers: the context must be current for that.
+    const bool current = m_renderer.isInitialized() && count < m_renderer.objectCount();
+    if (current)
+        makeCurrent();
+    m_renderer.setObjectCount(count);
+    if (current)
+        doneCurrent();
+    update();
+    emit objectChanged();
+}
+
+void Viewport::setObject(int index, std::shared_ptr<const Mesh> mesh,
+                         std::shared_ptr<const Texture> texture)
+{
+    const bool changed = mesh.get() != m_renderer.objectMesh(index);
+    // Uploaded by the next paint.
+    m_renderer.setObject(index, std::move(mesh), std::move(texture));
     if (m_trialWithoutObject && m_renderer.objectMesh() && m_renderer.isInitialized()) {
         // The program was tried on an empty view: tried again on the object, as if new.
         makeCurrent();
@@ -519,13 +536,21 @@ void Viewport::mousePressEvent(QMouseEvent *event)
                 (event->modifiers() & (Qt::ControlModifier | Qt::ShiftModifier));
     if (m_probing)
         emit probeRequested((event->position() * devicePixelRatio()).toPoint());
+    const bool plain = event->button() == Qt::LeftButton && !m_probing && !m_draggingWipe;
+    m_pressedAt = plain ? m_lastMouse : QPoint(-1, -1);
     setFocus();
 }
 
-void Viewport::mouseReleaseEvent(QMouseEvent *)
+void Viewport::mouseReleaseEvent(QMouseEvent *event)
 {
     m_draggingWipe = false;
     m_probing = false;
+    // A press and release a few pixels apart is a click (the camera hardly turned).
+    const QPoint at = event->position().toPoint();
+    if (event->button() == Qt::LeftButton && m_pressedAt.x() >= 0 &&
+        (at - m_pressedAt).manhattanLength() <= 4)
+        emit clicked((event->position() * devicePixelRatio()).toPoint());
+    m_pressedAt = QPoint(-1, -1);
 }
 
 void Viewport::mouseMoveEvent(QMouseEvent *event)
@@ -565,7 +590,9 @@ void Viewport::wheelEvent(QWheelEvent *event)
 
 void Viewport::syncAnimation()
 {
-    const bool on = m_document->scene().object.autoRotate;
+    const std::vector<ObjectSettings> &objects = m_document->scene().objects;
+    const bool on = std::any_of(objects.begin(), objects.end(),
+                                [](const ObjectSettings &o) { return o.autoRotate; });
     if (on && !m_animation.isActive()) {
         m_clock.start();
         m_animation.start();
@@ -578,8 +605,11 @@ void Viewport::advanceAnimation()
 {
     const float seconds = float(m_clock.restart()) / 1000.0f;
     m_document->edit([&](Scene &s) {
-        float &y = s.object.rotationDegrees.y;
-        y = std::fmod(y + kAutoRotateDegreesPerSecond * seconds, 360.0f);
+        for (ObjectSettings &o : s.objects)
+            if (o.autoRotate) {
+                float &y = o.rotationDegrees.y;
+                y = std::fmod(y + kAutoRotateDegreesPerSecond * seconds, 360.0f);
+            }
     });
 }
 

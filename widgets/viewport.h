@@ -42,9 +42,12 @@ public:
     QString tooSlowAt(QSize pixels) const;
     // What the trial of the program on screen measured (none: not tried, or no loop).
     const std::optional<TrialResult> &drawingTrial() const { return m_goodTrial; }
-    // The mesh to draw from now on (ObjectLoader builds it) and its texture (nullptr: the
-    // checker).
-    void setObject(std::shared_ptr<const Mesh> mesh, std::shared_ptr<const Texture> texture);
+    // The mesh to draw for object `index` from now on (ObjectLoader builds it) and its
+    // texture (nullptr: the checker).
+    void setObject(int index, std::shared_ptr<const Mesh> mesh,
+                   std::shared_ptr<const Texture> texture);
+    // The scene has `count` objects: the meshes of those beyond go.
+    void setObjectCount(int count);
     const Renderer &renderer() const { return m_renderer; }
     QString renderError() const { return m_error; }
     QString banner() const; // the message over the picture; empty when there is none
@@ -77,6 +80,7 @@ signals:
     void glInfo(const QString &info); // the driver, once the context exists
     void programBuilt(const lb::ProgramBuild &build);
     void probeRequested(QPoint framePixel); // Ctrl+click or Shift+click, in device pixels
+    void clicked(QPoint framePixel);        // a plain click, not a drag: selects an object
     void objectChanged();                   // a new mesh: probed points are gone
     void resized();                         // a new frame size
 
@@ -91,7 +95,8 @@ protected:
     void wheelEvent(QWheelEvent *event) override;
 
 private:
-    void releaseGl(); // with the context made current: the renderer's GL objects go
+    QPoint m_pressedAt{-1, -1}; // where a plain left press began (a click, if it ends there)
+    void releaseGl();           // with the context made current: the renderer's GL objects go
     // The driver lost the context (context_loss.h): the program that drew is refused, the
     // one before it is brought back, and the widget gets a new context.
     void recoverLostContext();

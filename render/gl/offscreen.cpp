@@ -57,45 +57,72 @@ bool OffscreenRenderer::wasReset()
     return m_resetStatus.wasReset();
 }
 
+void OffscreenRenderer::addMeshFile(std::shared_ptr<const MeshFile> file)
+{
+    if (file)
+        m_files[file->path] = std::move(file);
+}
+
 void OffscreenRenderer::setObjectMesh(std::shared_ptr<const Mesh> mesh)
 {
-    m_renderer.setObject(std::move(mesh), nullptr);
+    m_renderer.setObjectCount(1);
+    m_renderer.setObject(0, std::move(mesh), nullptr);
     m_meshGiven = true;
 }
 
-const Mesh &OffscreenRenderer::objectMesh(const Scene &scene)
+const Mesh &OffscreenRenderer::objectMesh(const Scene &scene, int index)
 {
     if (m_gpuOnly) // the file's mesh is gone: rebuilding would draw the panel's shape
         qFatal("lightbench: OffscreenRenderer::objectMesh() after dropCpuMeshes()");
-    if (m_meshGiven)
-        return *m_renderer.objectMesh();
-    const MeshFile *file = scene.object.meshPath.isEmpty() ? nullptr : m_file.get();
-    const ObjectMeshKey key = objectMeshKey(scene.object, file);
-    if (key != m_key || !m_renderer.objectMesh()) {
-        m_renderer.setObject(buildObjectMesh(scene.object, file), file ? file->texture : nullptr);
-        m_key = key;
+    index = std::clamp(index, 0, int(scene.objects.size()) - 1);
+    if (m_meshGiven) {
+        static const Mesh none;
+        const Mesh *given = m_renderer.objectMesh(index);
+        return given ? *given : none;
     }
-    return *m_renderer.objectMesh();
+    const ObjectSettings &object = scene.objects[std::size_t(index)];
+    const auto found = m_files.find(object.meshPath);
+    const MeshFile *file =
+        object.meshPath.isEmpty() || found == m_files.end() ? nullptr : found->second.get();
+    const ObjectMeshKey key = objectMeshKey(object, file);
+    if (m_keys.size() < scene.objects.size())
+        m_keys.resize(scene.objects.size());
+    std::optional<ObjectMeshKey> &built = m_keys[std::size_t(index)];
+    if (key != built || !m_renderer.objectMesh(index)) {
+        m_renderer.setObject(index, buildObjectMesh(object, file), file ? file->texture : nullptr);
+        built = key;
+    }
+    return *m_renderer.objectMesh(index);
 }
 
-void OffscreenRenderer::prepareObject(const Scene &scene)
+ProbedObjects OffscreenRenderer::probedObjects(const Scene &scene)
 {
-    if (!m_gpuOnly)
-        objectMesh(scene);
+    prepareObjects(scene);
+    return m_renderer.probedObjects();
+}
+
+void OffscreenRenderer::prepareObjects(const Scene &scene)
+{
+    if (m_gpuOnly || m_meshGiven)
+        return;
+    m_renderer.setObjectCount(int(scene.objects.size()));
+    m_keys.resize(scene.objects.size());
+    for (int i = 0; i < int(scene.objects.size()); ++i)
+        objectMesh(scene, i);
 }
 
 void OffscreenRenderer::dropCpuMeshes(const Scene &scene)
 {
-    prepareObject(scene);
+    prepareObjects(scene);
     m_context.makeCurrent(&m_surface);
-    m_renderer.uploadObjectAndDropMesh();
-    m_file.reset();
+    m_renderer.uploadObjectsAndDropMeshes();
+    m_files.clear();
     m_gpuOnly = true;
 }
 
 QImage OffscreenRenderer::render(const Scene &scene)
 {
-    prepareObject(scene);
+    prepareObjects(scene);
     m_context.makeCurrent(&m_surface);
     m_fbo->bind();
     m_renderer.render(scene, m_size);
@@ -139,7 +166,7 @@ ProgramBuild OffscreenRenderer::useProgram(const QString &vertexSource,
 
 void OffscreenRenderer::renderFrames(const Scene &scene, int frames)
 {
-    prepareObject(scene);
+    prepareObjects(scene);
     m_context.makeCurrent(&m_surface);
     m_fbo->bind();
     for (int i = 0; i < frames; ++i)
@@ -150,7 +177,7 @@ void OffscreenRenderer::renderFrames(const Scene &scene, int frames)
 
 double OffscreenRenderer::timeFrame(const Scene &scene, QSize size)
 {
-    prepareObject(scene);
+    prepareObjects(scene);
     m_context.makeCurrent(&m_surface);
     QOpenGLFramebufferObjectFormat format;
     format.setAttachment(QOpenGLFramebufferObject::Depth);

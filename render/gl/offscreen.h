@@ -15,6 +15,7 @@
 #include <QOpenGLFramebufferObject>
 #include <QSize>
 
+#include <map>
 #include <memory>
 #include <optional>
 
@@ -45,19 +46,22 @@ public:
     Renderer &renderer() { return m_renderer; }
     // Whether the driver reset the context (context_loss.h): nothing drawn since counts.
     bool wasReset();
-    // The loaded file the scene's object names (--mesh); nullptr draws the shapes.
-    void setMeshFile(std::shared_ptr<const MeshFile> file) { m_file = std::move(file); }
-    // The mesh drawn for `scene`, built when the object settings ask for another one. Not
-    // after dropCpuMeshes().
-    const Mesh &objectMesh(const Scene &scene);
+    // A loaded file that the scene's objects may name (by its path); an object naming a
+    // file not added here is drawn as its shape.
+    void addMeshFile(std::shared_ptr<const MeshFile> file);
+    // The mesh drawn for object `index` of `scene`, built when its settings ask for another
+    // one. Not after dropCpuMeshes().
+    const Mesh &objectMesh(const Scene &scene, int index = 0);
+    // What the probe needs of every object of `scene` (probe.h), built as objectMesh() builds.
+    ProbedObjects probedObjects(const Scene &scene);
     // For frames that need only pixels from now on (the command line without --probe): the
-    // object of `scene` goes to the GPU now, and the file's mesh and the drawn one are let go,
-    // so that a big mesh's draw holds one copy of it, the driver's. The frames after draw
-    // that object whatever their scene's object settings say.
+    // objects of `scene` go to the GPU now, and the files' meshes and the drawn ones are let
+    // go, so that a big mesh's draw holds one copy of it, the driver's. The frames after draw
+    // those objects whatever their scene's object settings say.
     void dropCpuMeshes(const Scene &scene);
     std::uint64_t objectTriangleCount() const { return m_renderer.objectTriangleCount(); }
-    // Draws this mesh for every scene from now on, whatever its object says (the trial
-    // helper is given the window's mesh).
+    // Draws this mesh for the first object of every scene from now on, whatever it says, and
+    // no other (the trial helper is given the window's mesh).
     void setObjectMesh(std::shared_ptr<const Mesh> mesh);
 
 private:
@@ -66,12 +70,12 @@ private:
     std::unique_ptr<QOpenGLFramebufferObject> m_fbo;
     Renderer m_renderer;
     QSize m_size;
-    std::shared_ptr<const MeshFile> m_file;
-    std::optional<ObjectMeshKey> m_key;
+    std::map<QString, std::shared_ptr<const MeshFile>> m_files; // by path
+    std::vector<std::optional<ObjectMeshKey>> m_keys;           // by object
     bool m_meshGiven = false;
     bool m_gpuOnly = false; // dropCpuMeshes() was called
-    // Builds the object's mesh for `scene` unless it is given or only on the GPU.
-    void prepareObject(const Scene &scene);
+    // Builds the objects' meshes for `scene` unless given or only on the GPU.
+    void prepareObjects(const Scene &scene);
     // The bound framebuffer's pixels, top row first, in one image.
     QImage readFrame();
     ResetStatus m_resetStatus;

@@ -66,17 +66,18 @@ void Overlays::useUnlit(QOpenGLExtraFunctions &gl, const glm::mat4 &modelView,
     uploadNamed(gl, uniforms, kColour, UniformValue::ofVector(glm::vec4(colour, 1.0f)));
 }
 
-void Overlays::drawLightMarker(QOpenGLExtraFunctions &gl, const Light &light, const Frames &frames)
+void Overlays::drawLightMarker(QOpenGLExtraFunctions &gl, const Light &light, int index,
+                               const Frames &frames)
 {
-    const glm::vec4 eye = lightInEye(frames, light.position, light.frame);
+    const glm::vec4 eye = lightInEye(frames, index, light.position, light.frame);
     glm::mat4 modelView;
     const GpuMesh *marker = nullptr;
     if (eye.w != 0.0f) {
         modelView = glm::scale(glm::translate(glm::mat4(1.0f), glm::vec3(eye)), glm::vec3(0.06f));
         marker = &m_sphere;
     } else {
-        // An arrow outside the object, pointing along the light's rays towards it.
-        const glm::vec3 centre(frames.modelView[3]);
+        // An arrow outside the object the light belongs to, along the light's rays towards it.
+        const glm::vec3 centre(frames.lightModelView[std::size_t(index)][3]);
         const glm::vec3 towardsLight = glm::normalize(glm::vec3(eye));
         modelView = orientAlong(centre + 2.2f * towardsLight, -towardsLight, 0.7f);
         marker = &m_arrow;
@@ -90,7 +91,7 @@ void Overlays::drawLightMarker(QOpenGLExtraFunctions &gl, const Light &light, co
     if (eye.w == 0.0f || light.spot.cutoffDegrees >= limits::kMaxSpotCutoff)
         return;
     // A spotlight: eight rays along the cone's edge, from the light.
-    const glm::mat3 axes = axesAlong(spotDirectionInEye(frames, light));
+    const glm::mat3 axes = axesAlong(spotDirectionInEye(frames, index, light));
     const float cutoff = glm::radians(light.spot.cutoffDegrees);
     constexpr int kRays = 8;
     for (int k = 0; k < kRays; ++k) {
@@ -110,7 +111,7 @@ void Overlays::drawNormals(QOpenGLExtraFunctions &gl, const GpuMesh &mesh, const
     const std::vector<ActiveUniform> &uniforms = m_normals.build.uniforms;
     for (Semantic s : {Semantic::ModelView, Semantic::Normals, Semantic::Projection})
         uploadSemantic(gl, uniforms, s, uniformValue(s, scene, frames));
-    const glm::vec3 &scale = scene.object.scale;
+    const glm::vec3 &scale = scene.objects[std::size_t(frames.object)].scale;
     const float length = 0.05f * (scale.x + scale.y + scale.z) / 3.0f;
     uploadNamed(gl, uniforms, kLineLength, UniformValue::ofNumber(length));
     uploadNamed(gl, uniforms, kColour, UniformValue::ofVector(glm::vec4(1.0f, 0.82f, 0.2f, 1.0f)));

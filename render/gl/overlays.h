@@ -32,8 +32,9 @@ public:
     QString initialize(QOpenGLExtraFunctions &gl);
     void release(); // with the context current
 
-    // The marker of one light, in the light's diffuse colour at full brightness.
-    void drawLightMarker(QOpenGLExtraFunctions &gl, const Light &light, const Frames &frames);
+    // The marker of light `index`, in its diffuse colour at full brightness.
+    void drawLightMarker(QOpenGLExtraFunctions &gl, const Light &light, int index,
+                         const Frames &frames);
     // The mesh's normals as lines, transformed by mNormals as the shaders do.
     void drawNormals(QOpenGLExtraFunctions &gl, const GpuMesh &mesh, const Scene &scene,
                      const Frames &frames);

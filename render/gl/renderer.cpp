@@ -49,17 +49,20 @@ void Renderer::cleanup()
 {
     if (!m_initialized)
         return;
-    m_object.release();
+    for (const std::unique_ptr<GpuObject> &o : m_objects) {
+        o->gpu.release();
+        o->textureGl.reset();
+        o->uploaded = false;
+        o->textureUploaded = !o->texture;
+    }
     m_screenTriangle.release();
     m_overlays.release();
     m_sideFbo[0].reset();
     m_sideFbo[1].reset();
-    m_objectUploaded = m_objectTextureUploaded = false;
     for (BuiltProgram *p : {&m_differenceProgram, &m_user, &m_candidate})
         *p = {};
     m_builtIns.clear();
     m_checkerTexture.reset();
-    m_objectTextureGl.reset();
     m_initialized = false;
 }
 
@@ -103,7 +106,7 @@ void Renderer::prepareCandidate(const Scene &scene, QSize pixels)
 {
     if (!m_initialized || !m_candidate.program || pixels.isEmpty())
         return;
-    uploadObject();
+    uploadObjects();
     const QRect whole(QPoint(0, 0), pixels);
     glEnable(GL_RASTERIZER_DISCARD);
     drawView(scene, m_candidate, whole, whole, pixels.height());
@@ -140,42 +143,111 @@ const BuiltProgram &Renderer::specialisedBuiltIn(const BuiltInVariant &variant)
     return p;
 }
 
-void Renderer::setObject(std::shared_ptr<const Mesh> mesh, std::shared_ptr<const Texture> texture)
+void Renderer::setObject(int index, std::shared_ptr<const Mesh> mesh,
+                         std::shared_ptr<const Texture> texture)
 {
-    if (mesh != m_objectMesh)
-        m_objectUploaded = false;
-    m_objectMesh = std::move(mesh);
-    if (texture != m_objectTexture)
-        m_objectTextureUploaded = false;
-    m_objectTexture = std::move(texture);
+    if (index < 0 || index >= kMaxObjects)
+        return;
+    if (index >= int(m_objects.size()))
+        setObjectCount(index + 1);
+    GpuObject &o = *m_objects[std::size_t(index)];
+    if (mesh != o.mesh)
+        o.uploaded = false;
+    o.mesh = std::move(mesh);
+    if (texture != o.texture)
+        o.textureUploaded = false;
+    o.texture = std::move(texture);
 }
 
-void Renderer::uploadObject()
+void Renderer::setObjectCount(int count)
 {
-    if (!m_objectUploaded) {
-        if (m_objectMesh)
-            m_object.upload(*this, *m_objectMesh);
-        else
-            m_object.release();
-        m_objectUploaded = true;
+    count = std::clamp(count, 0, kMaxObjects);
+    // Let go with the context current when there is one; GL objects of a lost context are
+    // gone anyway (cleanup() released them).
+    while (int(m_objects.size()) > count) {
+        if (m_initialized) {
+            m_objects.back()->gpu.release();
+            m_objects.back()->textureGl.reset();
+        }
+        m_objects.pop_back();
     }
-    if (!m_objectTextureUploaded) {
-        m_objectTextureGl = m_objectTexture ? uploadTexture(*this, *m_objectTexture) : GlTexture();
-        m_objectTextureUploaded = true;
+    while (int(m_objects.size()) < count) {
+        m_objects.push_back(std::make_unique<GpuObject>());
+        m_objects.back()->gpu.setMaxPerDraw(m_maxPerDraw);
     }
 }
 
-void Renderer::uploadObjectAndDropMesh()
+const Mesh *Renderer::objectMesh(int index) const
 {
-    uploadObject();
-    m_objectMesh.reset();
+    return index >= 0 && index < int(m_objects.size()) ? m_objects[std::size_t(index)]->mesh.get()
+                                                       : nullptr;
+}
+
+const std::shared_ptr<const Mesh> &Renderer::sharedObjectMesh(int index) const
+{
+    static const std::shared_ptr<const Mesh> none;
+    return index >= 0 && index < int(m_objects.size()) ? m_objects[std::size_t(index)]->mesh : none;
+}
+
+const Texture &Renderer::texture(int index) const
+{
+    const bool own =
+        index >= 0 && index < int(m_objects.size()) && m_objects[std::size_t(index)]->texture;
+    return own ? *m_objects[std::size_t(index)]->texture : m_checker;
+}
+
+ProbedObjects Renderer::probedObjects() const
+{
+    ProbedObjects objects;
+    for (int i = 0; i < int(m_objects.size()); ++i)
+        objects.push_back({objectMesh(i), &texture(i)});
+    return objects;
+}
+
+std::uint64_t Renderer::objectTriangleCount() const
+{
+    std::uint64_t n = 0;
+    for (const std::unique_ptr<GpuObject> &o : m_objects)
+        n += o->gpu.triangleCount();
+    return n;
+}
+
+void Renderer::setMaxPerDraw(std::uint64_t most)
+{
+    m_maxPerDraw = most;
+    for (const std::unique_ptr<GpuObject> &o : m_objects)
+        o->gpu.setMaxPerDraw(most);
+}
+
+void Renderer::uploadObjects()
+{
+    for (const std::unique_ptr<GpuObject> &o : m_objects) {
+        if (!o->uploaded) {
+            if (o->mesh)
+                o->gpu.upload(*this, *o->mesh);
+            else
+                o->gpu.release();
+            o->uploaded = true;
+        }
+        if (!o->textureUploaded) {
+            o->textureGl = o->texture ? uploadTexture(*this, *o->texture) : GlTexture();
+            o->textureUploaded = true;
+        }
+    }
+}
+
+void Renderer::uploadObjectsAndDropMeshes()
+{
+    uploadObjects();
+    for (const std::unique_ptr<GpuObject> &o : m_objects)
+        o->mesh.reset();
 }
 
 void Renderer::render(const Scene &scene, QSize pixels)
 {
     if (!m_initialized || pixels.isEmpty())
         return;
-    uploadObject();
+    uploadObjects();
     const QRect whole(QPoint(0, 0), pixels);
     glEnable(GL_SCISSOR_TEST);
     if (scene.compare.mode == CompareMode::Off)
@@ -222,30 +294,45 @@ void Renderer::drawView(const Scene &scene, const BuiltProgram &program, QRect v
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
 
-    const Frames frames = computeFrames(scene, float(view.width()) / float(view.height()));
-    glUseProgram(program.program.id());
-    uploadUniforms(*this, program.build.uniforms, scene, frames);
-    glActiveTexture(GL_TEXTURE0);
-    glBindTexture(GL_TEXTURE_2D, m_objectTexture ? m_objectTextureGl.id() : m_checkerTexture.id());
-    if (scene.object.cullBackFaces) {
-        glEnable(GL_CULL_FACE);
-        glCullFace(GL_BACK);
-        glFrontFace(mirrors(frames) ? GL_CW : GL_CCW);
-    }
-    m_object.draw(*this);
-    glDisable(GL_CULL_FACE);
-    glFrontFace(GL_CCW);
-    glBindTexture(GL_TEXTURE_2D, 0);
-    if (scene.object.showNormals)
-        m_overlays.drawNormals(*this, m_object, scene, frames);
+    const float aspect = float(view.width()) / float(view.height());
+    drawObjects(scene, program, aspect);
 
     // A program that hard-codes its light (the slides' constants) gets no marker at the
     // panel's position, where its light is not.
-    if (scene.showLight && program.build.readsLightPosition())
-        for (const Light &light : scene.lights)
-            if (light.enabled)
-                m_overlays.drawLightMarker(*this, light, frames);
+    if (scene.showLight && program.build.readsLightPosition()) {
+        const Frames frames = computeFrames(scene, aspect);
+        for (int i = 0; i < kMaxLights; ++i)
+            if (scene.lights[std::size_t(i)].enabled)
+                m_overlays.drawLightMarker(*this, scene.lights[std::size_t(i)], i, frames);
+    }
     glDisable(GL_DEPTH_TEST);
+}
+
+void Renderer::drawObjects(const Scene &scene, const BuiltProgram &program, float aspect)
+{
+    const int count = std::min(int(scene.objects.size()), int(m_objects.size()));
+    for (int i = 0; i < count; ++i) {
+        const ObjectSettings &object = scene.objects[std::size_t(i)];
+        const GpuObject &o = *m_objects[std::size_t(i)];
+        if (!object.visible || !o.gpu.hasTriangles())
+            continue;
+        const Frames frames = computeFrames(scene, aspect, i);
+        glUseProgram(program.program.id());
+        uploadUniforms(*this, program.build.uniforms, scene, frames);
+        glActiveTexture(GL_TEXTURE0);
+        glBindTexture(GL_TEXTURE_2D, o.texture ? o.textureGl.id() : m_checkerTexture.id());
+        if (object.cullBackFaces) {
+            glEnable(GL_CULL_FACE);
+            glCullFace(GL_BACK);
+            glFrontFace(mirrors(frames) ? GL_CW : GL_CCW);
+        }
+        o.gpu.draw(*this);
+        glDisable(GL_CULL_FACE);
+        glFrontFace(GL_CCW);
+        glBindTexture(GL_TEXTURE_2D, 0);
+        if (object.showNormals)
+            m_overlays.drawNormals(*this, o.gpu, scene, frames);
+    }
 }
 
 void Renderer::setProbe(std::vector<Arrow> arrows, QPoint framePixel)

@@ -7,6 +7,7 @@
 #include "compare.h"
 #include "gpu_mesh.h"
 #include "overlays.h"
+#include "probe.h"
 #include "program.h"
 #include "scene.h"
 #include "texture.h"
@@ -86,20 +87,26 @@ public:
         return result;
     }
 
-    // The object's mesh (object_mesh.h builds it) and the texture the texture switch puts on
-    // it (nullptr: the checker). Uploaded by the next render(). Without a mesh, render()
-    // draws only the background and the light.
-    void setObject(std::shared_ptr<const Mesh> mesh, std::shared_ptr<const Texture> texture);
-    const Mesh *objectMesh() const { return m_objectMesh.get(); }
-    // Uploads the object now and lets go of its CPU mesh (objectMesh() is nullptr after; the
-    // frames draw what was uploaded): frames that need only pixels keep one copy of a big
-    // mesh, the driver's.
-    void uploadObjectAndDropMesh();
-    std::uint64_t objectTriangleCount() const { return m_object.triangleCount(); }
-    // The most indices one draw call of the object takes (GpuMesh::setMaxPerDraw).
-    void setMaxPerDraw(std::uint64_t most) { m_object.setMaxPerDraw(most); }
-    const std::shared_ptr<const Mesh> &sharedObjectMesh() const { return m_objectMesh; }
-    const Texture &texture() const { return m_objectTexture ? *m_objectTexture : m_checker; }
+    // What object `index` of the scene is drawn with: its mesh (object_mesh.h builds it) and
+    // the texture its texture switch puts on it (nullptr: the checker). Uploaded by the next
+    // render(). An object without a mesh (loading, or index beyond those set) is not drawn.
+    void setObject(int index, std::shared_ptr<const Mesh> mesh,
+                   std::shared_ptr<const Texture> texture);
+    // Objects from `count` on are let go (the scene has fewer).
+    void setObjectCount(int count);
+    int objectCount() const { return int(m_objects.size()); }
+    const Mesh *objectMesh(int index = 0) const;
+    const std::shared_ptr<const Mesh> &sharedObjectMesh(int index = 0) const;
+    const Texture &texture(int index = 0) const;
+    // What the probe needs of each object (probe.h); valid until the next setObject().
+    ProbedObjects probedObjects() const;
+    // Uploads the objects now and lets go of their CPU meshes (objectMesh() is nullptr
+    // after; the frames draw what was uploaded): frames that need only pixels keep one copy
+    // of a big mesh, the driver's.
+    void uploadObjectsAndDropMeshes();
+    std::uint64_t objectTriangleCount() const; // all objects' together
+    // The most indices one draw call of an object takes (GpuMesh::setMaxPerDraw).
+    void setMaxPerDraw(std::uint64_t most);
 
 private:
     const BuiltProgram &objectProgram(const Scene &scene);
@@ -107,7 +114,9 @@ private:
     // (built once per shading and count, then kept).
     const BuiltProgram &builtInProgram(const Scene &scene);
     const BuiltProgram &specialisedBuiltIn(const BuiltInVariant &variant);
-    void uploadObject();
+    void uploadObjects();
+    // The objects of `scene`, each with its own matrices, material and texture.
+    void drawObjects(const Scene &scene, const BuiltProgram &program, float aspect);
     // One side: cleared and drawn in `view` (top-left origin in a frame `frameHeight` high),
     // only inside `clip`.
     void drawView(const Scene &scene, const BuiltProgram &program, QRect view, QRect clip,
@@ -124,12 +133,18 @@ private:
     BuiltProgram m_differenceProgram, m_user, m_candidate;
     Overlays m_overlays;
     Texture m_checker;
-    GlTexture m_checkerTexture, m_objectTextureGl;
+    GlTexture m_checkerTexture;
 
-    std::shared_ptr<const Mesh> m_objectMesh;
-    std::shared_ptr<const Texture> m_objectTexture;
-    bool m_objectUploaded = false, m_objectTextureUploaded = true;
-    GpuMesh m_object;
+    struct GpuObject
+    {
+        std::shared_ptr<const Mesh> mesh;
+        std::shared_ptr<const Texture> texture;
+        bool uploaded = false, textureUploaded = true;
+        GpuMesh gpu;
+        GlTexture textureGl;
+    };
+    std::vector<std::unique_ptr<GpuObject>> m_objects; // by index into Scene::objects
+    std::uint64_t m_maxPerDraw = GpuMesh::kMaxPerDraw;
     // The difference view draws each side into its own framebuffer first.
     std::unique_ptr<QOpenGLFramebufferObject> m_sideFbo[2];
     GpuMesh m_screenTriangle; // covers the viewport: the difference pass draws it

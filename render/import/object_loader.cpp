@@ -3,6 +3,8 @@
 #include <QFileInfo>
 #include <QLocale>
 
+#include <algorithm>
+
 namespace lb {
 
 namespace {
@@ -37,21 +39,52 @@ ObjectLoader::~ObjectLoader()
     m_pool.waitForDone();
 }
 
+int ObjectLoader::resolve(int index) const
+{
+    return index < 0 ? m_document->scene().selected : index;
+}
+
+const MeshFile *ObjectLoader::file(int index) const
+{
+    index = resolve(index);
+    return index < int(m_slots.size()) ? m_slots[std::size_t(index)].file.get() : nullptr;
+}
+
+std::shared_ptr<const Mesh> ObjectLoader::mesh(int index) const
+{
+    index = resolve(index);
+    return index < int(m_slots.size()) ? m_slots[std::size_t(index)].mesh : nullptr;
+}
+
+std::shared_ptr<const Texture> ObjectLoader::texture(int index) const
+{
+    index = resolve(index);
+    return index < int(m_slots.size()) ? m_slots[std::size_t(index)].texture : nullptr;
+}
+
+std::shared_ptr<const MeshFile> ObjectLoader::loadedFile(const QString &path) const
+{
+    const auto found = m_files.find(path);
+    return found == m_files.end() ? nullptr : found->second;
+}
+
 QString ObjectLoader::summary() const
 {
-    if (!m_mesh)
+    const std::shared_ptr<const Mesh> drawn = mesh();
+    if (!drawn)
         return {};
+    const MeshFile *loaded = file();
     const QLocale locale;
-    const QString name =
-        m_file ? QFileInfo(m_file->path).fileName() : toName(m_document->scene().object.shape);
+    const QString name = loaded ? QFileInfo(loaded->path).fileName()
+                                : toName(m_document->scene().selectedObject().shape);
     QString s = tr("%1: %2 vertices, %3 triangles")
-                    .arg(name, locale.toString(qulonglong(m_mesh->vertexCount())),
-                         locale.toString(qulonglong(m_mesh->triangleCount())));
-    if (m_file) {
-        s += tr(", loaded in %1 s").arg(m_file->seconds, 0, 'f', 2);
-        if (!m_file->hasNormals())
+                    .arg(name, locale.toString(qulonglong(drawn->vertexCount())),
+                         locale.toString(qulonglong(drawn->triangleCount())));
+    if (loaded) {
+        s += tr(", loaded in %1 s").arg(loaded->seconds, 0, 'f', 2);
+        if (!loaded->hasNormals())
             s += tr(", normals generated (the file has none)");
-        const QStringList remarks = m_file->remarks();
+        const QStringList remarks = loaded->remarks();
         if (!remarks.isEmpty())
             s += " (" + remarks.join("; ") + ")";
     }
@@ -66,18 +99,22 @@ void ObjectLoader::open(const QString &path)
     }
     m_loading = true;
     m_loadingPath = path;
+    m_loadingObject = m_document->scene().selected;
     emit loadStarted(path);
     m_import.start(path, m_limits);
 }
 
 void ObjectLoader::setAdoptFileMaterial(bool on)
 {
-    const bool onScreen = m_file && m_file->path == m_document->scene().object.meshPath;
-    const std::shared_ptr<const MeshFile> file = onScreen ? m_file : nullptr;
+    const ObjectSettings &object = m_document->scene().selectedObject();
+    const MeshFile *drawn = file();
+    const std::shared_ptr<const MeshFile> loaded =
+        drawn && drawn->path == object.meshPath ? loadedFile(drawn->path) : nullptr;
     m_document->edit([&](Scene &s) {
-        s.object.adoptFileMaterial = on;
-        if (on && file)
-            s.material = adoptMaterial(s.material, file->material);
+        ObjectSettings &o = s.selectedObject();
+        o.adoptFileMaterial = on;
+        if (on && loaded)
+            o.material = adoptMaterial(o.material, loaded->material);
     });
 }
 
@@ -97,50 +134,115 @@ void ObjectLoader::imported(const ImportResult &result)
             return;
         m_loading = false;
         emit loadFinished(false, result.cancelled ? tr("Loading cancelled") : result.error);
-        // A scene that names this file (a restart, a scene file) falls back to its shape.
-        if (m_document->scene().object.meshPath == m_loadingPath && !result.cancelled)
-            m_document->edit([](Scene &s) { s.object.meshPath.clear(); });
+        // Objects that name this file (a restart, a scene file) fall back to their shapes.
+        const QString failed = m_loadingPath;
+        const std::vector<ObjectSettings> &objects = m_document->scene().objects;
+        const bool named = std::any_of(objects.begin(), objects.end(),
+                                       [&](const auto &o) { return o.meshPath == failed; });
+        if (named)
+            m_document->edit([&](Scene &s) {
+                for (ObjectSettings &o : s.objects)
+                    if (o.meshPath == failed)
+                        o.meshPath.clear();
+            });
+        sync(); // another file a scene names, maybe
         return;
     }
-    ObjectSettings object = m_document->scene().object;
+    m_files[result.file->path] = result.file;
+    const Scene &scene = m_document->scene();
+    const int index =
+        m_loadingObject < int(scene.objects.size()) ? m_loadingObject : scene.selected;
+    ObjectSettings object = scene.objects[std::size_t(index)];
     object.meshPath = result.file->path;
     if (m_job) // a shape build in flight is superseded; its result is dropped
         m_job->cancel = true;
     m_job.reset();
-    startBuild(object, result.file, true);
+    startBuild(index, object, result.file, true);
+}
+
+void ObjectLoader::matchSlots()
+{
+    const std::vector<ObjectSettings> &objects = m_document->scene().objects;
+    const std::size_t n = objects.size();
+    std::vector<ObjectMeshKey> wanted(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::shared_ptr<const MeshFile> f =
+            objects[i].meshPath.isEmpty() ? nullptr : loadedFile(objects[i].meshPath);
+        wanted[i] = objectMeshKey(objects[i], f.get());
+    }
+    std::vector<Slot> old = std::move(m_slots);
+    std::vector<bool> taken(old.size(), false);
+    m_slots.assign(n, Slot{});
+    std::vector<bool> matched(n, false);
+    // What an object still wants it keeps, wherever it was; then the rest keep what they
+    // drew (shown until their new mesh is built).
+    const auto take = [&](std::size_t i, std::size_t j) {
+        m_slots[i] = old[j];
+        taken[j] = matched[i] = true;
+    };
+    for (std::size_t i = 0; i < n; ++i)
+        if (i < old.size() && old[i].mesh && old[i].key == wanted[i])
+            take(i, i);
+    for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t j = 0; j < old.size() && !matched[i]; ++j)
+            if (!taken[j] && old[j].mesh && old[j].key == wanted[i])
+                take(i, j);
+    for (std::size_t i = 0; i < n; ++i)
+        if (!matched[i] && i < old.size() && !taken[i])
+            take(i, i);
+    if (old.size() != n)
+        emit objectCountChanged(int(n));
+    for (std::size_t i = 0; i < n; ++i)
+        if (i >= old.size() || m_slots[i].mesh != old[i].mesh)
+            emit meshReady(int(i), m_slots[i].mesh, m_slots[i].texture);
 }
 
 void ObjectLoader::sync()
 {
     if (m_job)
         return; // one build at a time; finishBuild() syncs again with the newest scene
-    const ObjectSettings &object = m_document->scene().object;
-    std::shared_ptr<const MeshFile> file;
-    if (!object.meshPath.isEmpty()) {
-        if (m_file && m_file->path == object.meshPath) {
-            file = m_file;
-        } else {
-            if (!m_loading || m_loadingPath != object.meshPath)
-                open(object.meshPath); // named by a restored or opened scene
-            if (m_mesh)
-                return; // what is on screen stays until the file is in
+    matchSlots();
+    const Scene &scene = m_document->scene();
+    for (int i = 0; i < int(scene.objects.size()); ++i) {
+        const ObjectSettings &object = scene.objects[std::size_t(i)];
+        const Slot &slot = m_slots[std::size_t(i)];
+        std::shared_ptr<const MeshFile> file;
+        if (!object.meshPath.isEmpty()) {
+            file = loadedFile(object.meshPath);
+            if (!file) {
+                if (!m_loading) { // named by a restored or opened scene
+                    m_loading = true;
+                    m_loadingPath = object.meshPath;
+                    m_loadingObject = i;
+                    emit loadStarted(object.meshPath);
+                    m_import.start(object.meshPath, m_limits);
+                }
+                if (slot.mesh)
+                    continue; // what is on screen stays until the file is in
+            }
         }
-    } else if (m_file) {
-        m_file.reset(); // back to the shapes
+        if (slot.mesh && objectMeshKey(object, file.get()) == slot.key)
+            continue;
+        ObjectSettings shape = object;
+        if (!file)
+            shape.meshPath.clear();
+        startBuild(i, shape, file, false);
+        return; // finishBuild() syncs again for the next one
     }
-    const ObjectMeshKey key = objectMeshKey(object, file.get());
-    if (m_mesh && key == m_key)
-        return;
-    ObjectSettings shape = object;
-    if (!file)
-        shape.meshPath.clear();
-    startBuild(shape, file, false);
+    // Files no object names any more are let go.
+    for (auto it = m_files.begin(); it != m_files.end();) {
+        const bool named =
+            std::any_of(scene.objects.begin(), scene.objects.end(),
+                        [&](const ObjectSettings &o) { return o.meshPath == it->first; });
+        it = named ? std::next(it) : m_files.erase(it);
+    }
 }
 
-void ObjectLoader::startBuild(const ObjectSettings &object, std::shared_ptr<const MeshFile> file,
-                              bool commit)
+void ObjectLoader::startBuild(int index, const ObjectSettings &object,
+                              std::shared_ptr<const MeshFile> file, bool commit)
 {
     auto job = std::make_shared<Job>();
+    job->index = index;
     job->object = object;
     job->file = std::move(file);
     job->key = objectMeshKey(object, job->file.get());
@@ -167,13 +269,15 @@ void ObjectLoader::finishBuild(const std::shared_ptr<Job> &job)
     if (job != m_job)
         return; // superseded by a newer build or file
     m_job.reset();
-    const bool built = job->mesh && !job->cancel;
+    const int index = job->index;
+    // The list may have changed while the build ran: the object must still be there.
+    const bool there = index < int(m_document->scene().objects.size());
+    const bool built = job->mesh && !job->cancel && there;
     if (built) {
-        m_mesh = job->mesh;
-        m_key = job->key;
-        m_texture = job->file ? job->file->texture : nullptr;
-        if (job->commit)
-            m_file = job->file;
+        if (int(m_slots.size()) <= index)
+            m_slots.resize(std::size_t(index) + 1);
+        m_slots[std::size_t(index)] = {job->file, job->mesh,
+                                       job->file ? job->file->texture : nullptr, job->key};
     }
     if (job->commit) {
         m_loading = false;
@@ -182,14 +286,16 @@ void ObjectLoader::finishBuild(const std::shared_ptr<Job> &job)
             const bool adopt = job->object.adoptFileMaterial;
             const FileMaterial material = job->file->material;
             m_document->edit([&](Scene &s) {
-                s.object.meshPath = path;
+                ObjectSettings &o = s.objects[std::size_t(index)];
+                o.meshPath = path;
                 if (adopt)
-                    s.material = adoptMaterial(s.material, material);
+                    o.material = adoptMaterial(o.material, material);
             });
         }
     }
     if (built)
-        emit meshReady(m_mesh, m_texture);
+        emit meshReady(index, m_slots[std::size_t(index)].mesh,
+                       m_slots[std::size_t(index)].texture);
     if (job->commit)
         emit loadFinished(built, built ? summary() : tr("Loading cancelled"));
     sync(); // whatever the scene asked for meanwhile

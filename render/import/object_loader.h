@@ -1,9 +1,10 @@
 #pragma once
-// Keeps the drawn object in step with the scene, without ever blocking the GUI thread on a big
-// mesh: mesh files are read by the import helper (ImportProcess), and meshes with many
-// triangles are built (shape, generated normals) on a worker thread while the previous mesh
-// keeps drawing. A file becomes the scene's object only once it is loaded and built; a file
-// that fails leaves the scene, and the mesh on screen, as they were.
+// Keeps the drawn objects in step with the scene, without ever blocking the GUI thread on a
+// big mesh: mesh files are read by the import helper (ImportProcess), one at a time, and
+// meshes with many triangles are built (shape, generated normals) on a worker thread while
+// the previous mesh keeps drawing. A file opened becomes the selected object's mesh only once
+// it is loaded and built; a file that fails leaves the scene, and the mesh on screen, as
+// they were. Each loaded file is read once, however many objects draw it.
 
 #include "import_process.h"
 #include "object_mesh.h"
@@ -13,6 +14,7 @@
 #include <QThreadPool>
 
 #include <atomic>
+#include <map>
 #include <memory>
 
 namespace lb {
@@ -24,10 +26,11 @@ public:
     explicit ObjectLoader(SceneDocument *document, QObject *parent = nullptr);
     ~ObjectLoader() override; // stops the helper and waits for a running build
 
-    // Loads a mesh file; on success the scene's object becomes it. loadFinished() follows.
+    // Loads a mesh file; on success the object selected now becomes it. loadFinished()
+    // follows.
     void open(const QString &path);
-    // "Use the mesh file's material": switches it in the scene and, with a file on screen,
-    // takes the file's Ka, Kd, Ks and shininess in the same edit.
+    // "Use the mesh file's material": switches it for the selected object and, with its
+    // file on screen, takes the file's Ka, Kd, Ks and shininess in the same edit.
     void setAdoptFileMaterial(bool on);
     // Stops a running open(): the helper is killed, a build in progress dropped.
     void cancel();
@@ -36,18 +39,23 @@ public:
     void setLimits(const ImportLimits &limits) { m_limits = limits; }
     const ImportLimits &limits() const { return m_limits; }
 
-    // The loaded file (nullptr while the object is a shape) and the mesh being drawn.
-    const MeshFile *file() const { return m_file.get(); }
-    std::shared_ptr<const Mesh> mesh() const { return m_mesh; }
-    std::shared_ptr<const Texture> texture() const { return m_texture; }
-    // "teapot.obj: 6,320 vertices, 12,288 triangles, loaded in 0.21 s", or the shape's.
+    // Object `index`'s loaded file (nullptr while it is a shape) and the mesh and texture
+    // being drawn for it; -1: the selected object.
+    const MeshFile *file(int index = -1) const;
+    std::shared_ptr<const Mesh> mesh(int index = -1) const;
+    std::shared_ptr<const Texture> texture(int index = -1) const;
+    int objectCount() const { return int(m_slots.size()); }
+    // "teapot.obj: 6,320 vertices, 12,288 triangles, loaded in 0.21 s", or the shape's, for
+    // the selected object.
     QString summary() const;
     // True while a build runs on the worker thread (tests wait for it).
     bool isBuilding() const { return m_job != nullptr; }
 
 signals:
-    void meshReady(std::shared_ptr<const lb::Mesh> mesh,
+    // Object `index` draws this now (and the list may have grown or shrunk: objectCount()).
+    void meshReady(int index, std::shared_ptr<const lb::Mesh> mesh,
                    std::shared_ptr<const lb::Texture> texture);
+    void objectCountChanged(int count);
     void loadStarted(const QString &path);
     void loadProgress(double fraction, const QString &stage);
     // `message`: the summary on success, "FILE: what went wrong" otherwise.
@@ -56,19 +64,33 @@ signals:
 private:
     struct Job
     {
+        int index = 0; // the object built
         ObjectSettings object;
         std::shared_ptr<const MeshFile> file;
         ObjectMeshKey key;
-        bool commit = false; // the last step of open(): the file becomes the scene's object
+        bool commit = false; // the last step of open(): the file becomes the object's mesh
         std::atomic_bool cancel{false};
         std::shared_ptr<const Mesh> mesh;
     };
+    // What one object draws, and what it was built from.
+    struct Slot
+    {
+        std::shared_ptr<const MeshFile> file;
+        std::shared_ptr<const Mesh> mesh;
+        std::shared_ptr<const Texture> texture;
+        ObjectMeshKey key;
+    };
 
     void sync();
-    void startBuild(const ObjectSettings &object, std::shared_ptr<const MeshFile> file,
+    // Slots follow the objects when the list changes: a slot whose key an object still
+    // wants is kept for it, wherever it moved to.
+    void matchSlots();
+    void startBuild(int index, const ObjectSettings &object, std::shared_ptr<const MeshFile> file,
                     bool commit);
     void finishBuild(const std::shared_ptr<Job> &job);
     void imported(const ImportResult &result);
+    std::shared_ptr<const MeshFile> loadedFile(const QString &path) const;
+    int resolve(int index) const;
 
     SceneDocument *m_document;
     ImportProcess m_import;
@@ -77,10 +99,10 @@ private:
     std::shared_ptr<Job> m_job; // the build in flight; one at a time
     bool m_loading = false;
     QString m_loadingPath;
-    std::shared_ptr<const MeshFile> m_file;
-    std::shared_ptr<const Mesh> m_mesh;
-    std::shared_ptr<const Texture> m_texture;
-    ObjectMeshKey m_key;
+    int m_loadingObject = -1; // the object open() loads for; -1: a file a scene names
+    std::map<QString, std::shared_ptr<const MeshFile>> m_files; // loaded, by path
+    QStringList m_failed;      // files a scene named that could not be read (not asked again)
+    std::vector<Slot> m_slots; // by object
 };
 
 } // namespace lb

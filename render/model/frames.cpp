@@ -6,6 +6,7 @@
 #include <glm/matrix.hpp>
 #include <glm/trigonometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace lb {
@@ -13,7 +14,7 @@ namespace lb {
 glm::mat4 modelMatrix(const ObjectSettings &object)
 {
     const glm::vec3 r = glm::radians(object.rotationDegrees);
-    glm::mat4 m(1.0f);
+    glm::mat4 m = glm::translate(glm::mat4(1.0f), object.translation);
     m = glm::rotate(m, r.z, glm::vec3(0, 0, 1));
     m = glm::rotate(m, r.y, glm::vec3(0, 1, 0));
     m = glm::rotate(m, r.x, glm::vec3(1, 0, 0));
@@ -25,15 +26,30 @@ glm::mat4 normalMatrix(const glm::mat4 &m)
     return glm::inverseTranspose(m);
 }
 
-Frames computeFrames(const Scene &scene, float aspect)
+Frames computeFrames(const Scene &scene, float aspect, int object)
 {
     Frames f;
-    f.model = modelMatrix(scene.object);
+    const int last = int(scene.objects.size()) - 1;
+    f.object = std::clamp(object, 0, last);
     f.view = scene.camera.view();
+    const auto normalsOf = [&](const glm::mat4 &modelView) {
+        return scene.shading.normalsByModelView ? modelView : normalMatrix(modelView);
+    };
+    f.model = modelMatrix(scene.objects[std::size_t(f.object)]);
     f.modelView = f.view * f.model;
-    f.normals = scene.shading.normalsByModelView ? f.modelView : normalMatrix(f.modelView);
+    f.normals = normalsOf(f.modelView);
     f.viewNormals = normalMatrix(f.view);
     f.projection = scene.camera.projection(aspect, scene.shading.projection);
+    for (std::size_t i = 0; i < f.lightModelView.size(); ++i) {
+        const int attached = std::clamp(scene.lights[i].object, 0, last);
+        if (attached == f.object) {
+            f.lightModelView[i] = f.modelView;
+            f.lightNormals[i] = f.normals;
+        } else {
+            f.lightModelView[i] = f.view * modelMatrix(scene.objects[std::size_t(attached)]);
+            f.lightNormals[i] = normalsOf(f.lightModelView[i]);
+        }
+    }
     return f;
 }
 
@@ -42,9 +58,10 @@ bool mirrors(const Frames &frames)
     return glm::determinant(glm::mat3(frames.modelView)) < 0.0f;
 }
 
-glm::vec4 lightInEye(const Frames &frames, const glm::vec4 &light, LightFrame frame)
+glm::vec4 lightInEye(const Frames &frames, int index, const glm::vec4 &light, LightFrame frame)
 {
     const bool directional = light.w == 0.0f;
+    const std::size_t i = std::size_t(std::clamp(index, 0, kMaxLights - 1));
     glm::vec4 eye = light;
     switch (frame) {
     case LightFrame::Camera:
@@ -53,7 +70,7 @@ glm::vec4 lightInEye(const Frames &frames, const glm::vec4 &light, LightFrame fr
         eye = directional ? frames.viewNormals * light : frames.view * light;
         break;
     case LightFrame::Object:
-        eye = directional ? frames.normals * light : frames.modelView * light;
+        eye = directional ? frames.lightNormals[i] * light : frames.lightModelView[i] * light;
         break;
     }
     // The inverse transpose of an affine matrix puts a translation term into w; a direction
@@ -62,11 +79,25 @@ glm::vec4 lightInEye(const Frames &frames, const glm::vec4 &light, LightFrame fr
     return eye;
 }
 
-glm::vec3 spotDirectionInEye(const Frames &frames, const Light &light)
+glm::vec4 lightForDrawnObject(const Frames &frames, int index, const glm::vec4 &light,
+                              LightFrame frame)
+{
+    const std::size_t i = std::size_t(std::clamp(index, 0, kMaxLights - 1));
+    if (frame != LightFrame::Object || frames.lightModelView[i] == frames.modelView)
+        return light;
+    // Into eye coordinates through the attached object, and back through the drawn one.
+    const bool directional = light.w == 0.0f;
+    glm::vec4 back = glm::inverse(directional ? frames.normals : frames.modelView) *
+                     lightInEye(frames, index, light, frame);
+    back.w = light.w;
+    return back;
+}
+
+glm::vec3 spotDirectionInEye(const Frames &frames, int index, const Light &light)
 {
     // normalize(), as the shaders write it; a direction of length 0 is refused on the way in.
     return glm::normalize(
-        glm::vec3(lightInEye(frames, glm::vec4(light.spot.direction, 0.0f), light.frame)));
+        glm::vec3(lightInEye(frames, index, glm::vec4(light.spot.direction, 0.0f), light.frame)));
 }
 
 float spotCosCutoff(const Spot &spot)
@@ -74,14 +105,15 @@ float spotCosCutoff(const Spot &spot)
     return spot.cutoffDegrees >= 180.0f ? -1.0f : std::cos(glm::radians(spot.cutoffDegrees));
 }
 
-glm::vec4 eyeToFrame(const Frames &frames, const glm::vec4 &eye, LightFrame frame)
+glm::vec4 eyeToFrame(const Frames &frames, int index, const glm::vec4 &eye, LightFrame frame)
 {
     if (frame == LightFrame::Camera)
         return eye;
+    const std::size_t i = std::size_t(std::clamp(index, 0, kMaxLights - 1));
     const bool directional = eye.w == 0.0f;
     const bool world = frame == LightFrame::World;
-    const glm::mat4 &there = directional ? (world ? frames.viewNormals : frames.normals)
-                                         : (world ? frames.view : frames.modelView);
+    const glm::mat4 &there = directional ? (world ? frames.viewNormals : frames.lightNormals[i])
+                                         : (world ? frames.view : frames.lightModelView[i]);
     glm::vec4 back = glm::inverse(there) * eye;
     back.w = eye.w;
     return back;

@@ -4,6 +4,7 @@
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
+#include <algorithm>
 #include <limits>
 #include <optional>
 
@@ -54,67 +55,83 @@ LightingInputs lightingInputs(const Scene &scene, const Frames &frames, int inde
 {
     const Light &light = scene.lights[std::size_t(index)];
     LightingInputs in;
-    in.lightEye = lightInEye(frames, light.position, light.frame);
-    in.material = scene.material;
+    in.lightEye = lightInEye(frames, index, light.position, light.frame);
+    in.material = scene.objects[std::size_t(frames.object)].material;
     in.colors = light.colors;
     in.specular = scene.shading.specular;
     in.projection = scene.shading.projection;
     in.attenuation = light.attenuation;
-    in.spotDirectionEye = spotDirectionInEye(frames, light);
+    in.spotDirectionEye = spotDirectionInEye(frames, index, light);
     in.spotCosCutoff = spotCosCutoff(light.spot);
     in.spotExponent = light.spot.exponent;
     return in;
 }
 
-ProbeResult probePixel(const Scene &scene, const Mesh &mesh, const Texture &texture, QSize size,
-                       QPoint pixel)
+ProbeResult probePixel(const Scene &scene, const ProbedObjects &objects, QSize size, QPoint pixel)
 {
     ProbeResult r;
-    if (size.isEmpty() || mesh.indices.empty())
+    if (size.isEmpty())
         return r;
-    const Frames frames = computeFrames(scene, float(size.width()) / float(size.height()));
+    const float aspect = float(size.width()) / float(size.height());
+    const Frames view = computeFrames(scene, aspect);
 
     // The pixel centre on the near and far planes, back through the projection.
     const float ndcX = 2.0f * (float(pixel.x()) + 0.5f) / float(size.width()) - 1.0f;
     const float ndcY = 1.0f - 2.0f * (float(pixel.y()) + 0.5f) / float(size.height());
-    const glm::mat4 unproject = glm::inverse(frames.projection);
+    const glm::mat4 unproject = glm::inverse(view.projection);
     glm::vec4 nearP = unproject * glm::vec4(ndcX, ndcY, -1.0f, 1.0f);
     glm::vec4 farP = unproject * glm::vec4(ndcX, ndcY, 1.0f, 1.0f);
     const glm::vec3 origin = glm::vec3(nearP) / nearP.w;
     const glm::vec3 dir = glm::vec3(farP) / farP.w - origin;
 
-    std::vector<glm::vec3> eyePositions(mesh.vertexCount());
-    for (std::size_t i = 0; i < mesh.vertexCount(); ++i)
-        eyePositions[i] = glm::vec3(frames.modelView * glm::vec4(mesh.positions[i], 1.0f));
-
-    const float front = !scene.object.cullBackFaces ? 0.0f : mirrors(frames) ? -1.0f : 1.0f;
+    // Eye space is shared by every object: the nearest hit over all of them is the one drawn.
     float nearest = std::numeric_limits<float>::max();
-    for (std::size_t tri = 0; tri < mesh.triangleCount(); ++tri) {
-        const std::uint32_t *idx = &mesh.indices[tri * 3];
-        const auto hit = intersect(origin, dir, eyePositions[idx[0]], eyePositions[idx[1]],
-                                   eyePositions[idx[2]], front);
-        if (hit && hit->t < nearest) {
-            nearest = hit->t;
-            r.hit = true;
-            r.triangle = tri;
-            r.barycentric = hit->barycentric;
+    std::vector<glm::vec3> eyePositions;
+    const int count = std::min(int(objects.size()), int(scene.objects.size()));
+    for (int o = 0; o < count; ++o) {
+        const Mesh *mesh = objects[std::size_t(o)].mesh;
+        const ObjectSettings &object = scene.objects[std::size_t(o)];
+        if (!mesh || !object.visible)
+            continue;
+        const Frames frames = computeFrames(scene, aspect, o);
+        eyePositions.resize(mesh->vertexCount());
+        for (std::size_t i = 0; i < mesh->vertexCount(); ++i)
+            eyePositions[i] = glm::vec3(frames.modelView * glm::vec4(mesh->positions[i], 1.0f));
+        const float front = !object.cullBackFaces ? 0.0f : mirrors(frames) ? -1.0f : 1.0f;
+        for (std::size_t tri = 0; tri < mesh->triangleCount(); ++tri) {
+            const std::uint32_t *idx = &mesh->indices[tri * 3];
+            const auto hit = intersect(origin, dir, eyePositions[idx[0]], eyePositions[idx[1]],
+                                       eyePositions[idx[2]], front);
+            if (hit && hit->t < nearest) {
+                nearest = hit->t;
+                r.hit = true;
+                r.object = o;
+                r.triangle = tri;
+                r.barycentric = hit->barycentric;
+            }
         }
     }
     if (!r.hit)
         return r;
-    return probeSurface(scene, mesh, texture, size, r.triangle, r.barycentric);
+    static const Texture checker;
+    const ProbedObject &hit = objects[std::size_t(r.object)];
+    return probeSurface(scene, r.object, *hit.mesh, hit.texture ? *hit.texture : checker, size,
+                        r.triangle, r.barycentric);
 }
 
-ProbeResult probeSurface(const Scene &scene, const Mesh &mesh, const Texture &texture, QSize size,
-                         std::size_t triangle, const glm::vec3 &barycentric)
+ProbeResult probeSurface(const Scene &scene, int object, const Mesh &mesh, const Texture &texture,
+                         QSize size, std::size_t triangle, const glm::vec3 &barycentric)
 {
     ProbeResult r;
-    if (size.isEmpty() || triangle >= mesh.triangleCount())
+    if (size.isEmpty() || triangle >= mesh.triangleCount() || object < 0 ||
+        object >= int(scene.objects.size()))
         return r;
     r.hit = true;
+    r.object = object;
     r.triangle = triangle;
     r.barycentric = barycentric;
-    const Frames frames = computeFrames(scene, float(size.width()) / float(size.height()));
+    const ObjectSettings &settings = scene.objects[std::size_t(object)];
+    const Frames frames = computeFrames(scene, float(size.width()) / float(size.height()), object);
     const std::uint32_t *tri = &mesh.indices[r.triangle * 3];
     // The triangle's corners in eye coordinates.
     glm::vec3 corners[3];
@@ -130,7 +147,7 @@ ProbeResult probeSurface(const Scene &scene, const Mesh &mesh, const Texture &te
     // constant attribute values the renderer gives the GPU.
     if (scene.shading.vertexColors && !mesh.colors.empty())
         r.base *= interpolate(mesh.colors, tri, w);
-    if (scene.shading.texture)
+    if (settings.texture)
         r.base *=
             texture.sample(mesh.uvs.empty() ? glm::vec2(0.0f) : interpolate(mesh.uvs, tri, w));
 
@@ -163,7 +180,7 @@ ProbeResult probeSurface(const Scene &scene, const Mesh &mesh, const Texture &te
         for (int k = 0; k < 3; ++k)
             colour += weights[k] * shownColor(show, atCorner(k, light1));
     } else if (!scene.shading.lighting) {
-        colour = unlitColor(scene.material, r.base);
+        colour = unlitColor(settings.material, r.base);
     } else if (phong) {
         colour = shadedColor(r.total.ambient + r.total.diffuse, r.total.specular, r.base);
     } else {
@@ -183,13 +200,13 @@ ProbeResult probeSurface(const Scene &scene, const Mesh &mesh, const Texture &te
     return r;
 }
 
-ProbeResult probeFramePixel(const Scene &scene, const Mesh &mesh, const Texture &texture,
-                            QSize frame, QPoint pixel, PixelView *view)
+ProbeResult probeFramePixel(const Scene &scene, const ProbedObjects &objects, QSize frame,
+                            QPoint pixel, PixelView *view)
 {
     const PixelView v = viewOfPixel(scene, frame, pixel);
     if (view)
         *view = v;
-    return probePixel(sceneOfSide(scene, v.sideB), mesh, texture, v.size, v.pixel);
+    return probePixel(sceneOfSide(scene, v.sideB), objects, v.size, v.pixel);
 }
 
 } // namespace lb

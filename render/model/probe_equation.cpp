@@ -27,7 +27,7 @@ QString lightingEquation(const Scene &scene, const ProbeResult &probe)
     const TermSwitches &on = scene.shading.terms;
     const bool blinn = scene.shading.specular == SpecularModel::Blinn;
     const QString angle = blinn ? "N·H" : "R·V";
-    const float n = scene.material.shininess;
+    const float n = scene.objects[std::size_t(probe.object)].material.shininess;
 
     // In symbols: OpenGL 2.1's fixed-function form, attenuation and spot scaling all three.
     QStringList symbols;

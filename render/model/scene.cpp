@@ -2,13 +2,16 @@
 
 #include <tuple>
 
+#include <QFileInfo>
 #include <QJsonArray>
 
 #include <glm/common.hpp>
+#include <glm/geometric.hpp>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 namespace lb {
@@ -69,6 +72,17 @@ template <typename E, std::size_t N> QStringList namesOf(const NameTable<E, N> &
     for (const auto &entry : table)
         names << QString::fromLatin1(entry.second);
     return names;
+}
+
+// Every field of ObjectSettings but its material (which is ScenePart::Material).
+bool sameExceptMaterial(const ObjectSettings &a, const ObjectSettings &b)
+{
+    return std::tie(a.name, a.visible, a.shape, a.tessellation, a.meshPath, a.normals,
+                    a.creaseDegrees, a.showNormals, a.cullBackFaces, a.adoptFileMaterial,
+                    a.rotationDegrees, a.scale, a.translation, a.autoRotate, a.texture) ==
+           std::tie(b.name, b.visible, b.shape, b.tessellation, b.meshPath, b.normals,
+                    b.creaseDegrees, b.showNormals, b.cullBackFaces, b.adoptFileMaterial,
+                    b.rotationDegrees, b.scale, b.translation, b.autoRotate, b.texture);
 }
 
 } // namespace
@@ -210,8 +224,8 @@ bool operator==(const Spot &a, const Spot &b)
 
 bool operator==(const Light &a, const Light &b)
 {
-    return std::tie(a.position, a.frame, a.colors, a.enabled, a.attenuation, a.spot) ==
-           std::tie(b.position, b.frame, b.colors, b.enabled, b.attenuation, b.spot);
+    return std::tie(a.position, a.frame, a.colors, a.enabled, a.attenuation, a.spot, a.object) ==
+           std::tie(b.position, b.frame, b.colors, b.enabled, b.attenuation, b.spot, b.object);
 }
 
 bool operator==(const TermSwitches &a, const TermSwitches &b)
@@ -227,18 +241,14 @@ bool operator==(const Material &a, const Material &b)
 bool operator==(const ShadingSettings &a, const ShadingSettings &b)
 {
     return std::tie(a.shading, a.specular, a.projection, a.lighting, a.terms, a.show,
-                    a.vertexColors, a.texture, a.normalsByModelView) ==
+                    a.vertexColors, a.normalsByModelView) ==
            std::tie(b.shading, b.specular, b.projection, b.lighting, b.terms, b.show,
-                    b.vertexColors, b.texture, b.normalsByModelView);
+                    b.vertexColors, b.normalsByModelView);
 }
 
 bool operator==(const ObjectSettings &a, const ObjectSettings &b)
 {
-    return std::tie(a.shape, a.tessellation, a.meshPath, a.normals, a.creaseDegrees, a.showNormals,
-                    a.cullBackFaces, a.adoptFileMaterial, a.rotationDegrees, a.scale,
-                    a.autoRotate) ==
-           std::tie(b.shape, b.tessellation, b.meshPath, b.normals, b.creaseDegrees, b.showNormals,
-                    b.cullBackFaces, b.adoptFileMaterial, b.rotationDegrees, b.scale, b.autoRotate);
+    return sameExceptMaterial(a, b) && a.material == b.material;
 }
 
 bool operator==(const OrbitCamera &a, const OrbitCamera &b)
@@ -257,13 +267,85 @@ SceneParts differingParts(const Scene &a, const Scene &b)
 {
     SceneParts parts;
     parts.setFlag(ScenePart::Lights, a.lights != b.lights || a.showLight != b.showLight);
-    parts.setFlag(ScenePart::Material, !(a.material == b.material));
+    bool materials = a.objects.size() != b.objects.size() || a.selected != b.selected;
+    bool objects = materials;
+    for (std::size_t i = 0; i < std::min(a.objects.size(), b.objects.size()); ++i) {
+        materials = materials || !(a.objects[i].material == b.objects[i].material);
+        objects = objects || !sameExceptMaterial(a.objects[i], b.objects[i]);
+    }
+    // Another object selected: the Material panel shows another material.
+    parts.setFlag(ScenePart::Material, materials);
     parts.setFlag(ScenePart::Shading, !(a.shading == b.shading));
-    parts.setFlag(ScenePart::Object, !(a.object == b.object));
+    parts.setFlag(ScenePart::Object, objects);
     parts.setFlag(ScenePart::Camera, !(a.camera == b.camera));
     parts.setFlag(ScenePart::Compare, !(a.compare == b.compare));
     parts.setFlag(ScenePart::Program, a.shaderValues != b.shaderValues);
     return parts;
+}
+
+bool addObject(Scene &scene, const ObjectSettings &object)
+{
+    if (int(scene.objects.size()) >= kMaxObjects)
+        return false;
+    scene.objects.push_back(object);
+    scene.selected = int(scene.objects.size()) - 1;
+    return true;
+}
+
+bool removeObject(Scene &scene, int index)
+{
+    if (scene.objects.size() <= 1 || index < 0 || index >= int(scene.objects.size()))
+        return false;
+    scene.objects.erase(scene.objects.begin() + index);
+    for (Light &light : scene.lights)
+        if (light.object >= index && light.object > 0)
+            --light.object;
+    if (scene.selected >= index && scene.selected > 0)
+        --scene.selected;
+    return true;
+}
+
+void placeInRow(std::vector<ObjectSettings> &objects)
+{
+    const float middle = 0.5f * float(objects.size() - 1);
+    for (std::size_t i = 0; i < objects.size(); ++i)
+        objects[i].translation = glm::vec3(2.5f * (float(i) - middle), 0.0f, 0.0f);
+}
+
+void frameScene(Scene &scene)
+{
+    // Every shape and mesh file fits the cube from -1 to 1 (meshes are scaled to it when
+    // read): a sphere of radius sqrt(3) times the largest scale holds it, however turned.
+    glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+    std::vector<std::pair<glm::vec3, float>> spheres;
+    for (const ObjectSettings &o : scene.objects)
+        if (o.visible) {
+            const glm::vec3 a = glm::abs(o.scale);
+            const float r = std::sqrt(3.0f) * std::max({a.x, a.y, a.z});
+            spheres.emplace_back(o.translation, r);
+            lo = glm::min(lo, o.translation - r);
+            hi = glm::max(hi, o.translation + r);
+        }
+    OrbitCamera camera;
+    if (!spheres.empty()) {
+        camera.target = 0.5f * (lo + hi);
+        float radius = 0.0f;
+        for (const auto &[centre, r] : spheres)
+            radius = std::max(radius, glm::length(centre - camera.target) + r);
+        // The default distance shows one unscaled object well: keep its proportion.
+        camera.distance =
+            std::clamp(camera.distance * radius / std::sqrt(3.0f), camera.distance, 50.0f);
+    }
+    scene.camera = camera;
+}
+
+QString displayName(const ObjectSettings &object)
+{
+    if (!object.name.isEmpty())
+        return object.name;
+    if (!object.meshPath.isEmpty())
+        return QFileInfo(object.meshPath).fileName();
+    return toName(object.shape);
 }
 
 bool operator==(const Scene &a, const Scene &b)

@@ -45,6 +45,9 @@ struct Light
     // kc, kl, kq of 1 / (kc + kl·d + kq·d²) for a point light; (1, 0, 0): none.
     glm::vec3 attenuation{1.0f, 0.0f, 0.0f};
     Spot spot; // its direction in the light's frame; cutoff 180: none
+    // The object whose frame an object-frame light is given in (an index into
+    // Scene::objects): the light turns and moves with that object, whichever it lights.
+    int object = 0;
 };
 
 // Up to four lights add up. Light 1 is the slides' light; a shader that declares one light
@@ -64,7 +67,6 @@ struct ShadingSettings
     TermSwitches terms;                   // ambient, diffuse and specular, each on or off
     ShowChoice show = ShowChoice::Colour; // the lit colour, or a vector or number of the model
     bool vertexColors = false;
-    bool texture = false;
     // Wrong on purpose, to show why: normals transformed by the model-view itself instead of
     // its inverse transpose (they tilt under a non-uniform scale).
     bool normalsByModelView = false;
@@ -72,6 +74,8 @@ struct ShadingSettings
 
 struct ObjectSettings
 {
+    QString name;        // as the Object panel lists it; empty: named after its shape or file
+    bool visible = true; // a hidden object is neither drawn nor probed
     Shape shape = Shape::Sphere;
     int tessellation = 16; // coarse on purpose: Gouraud and Phong visibly differ
     QString meshPath;      // a mesh file drawn instead of the shape; empty: the shape
@@ -84,8 +88,14 @@ struct ObjectSettings
     bool adoptFileMaterial = false; // a mesh file's material replaces Ka, Kd, Ks, shininess
     glm::vec3 rotationDegrees{0.0f};
     glm::vec3 scale{1.0f};
+    glm::vec3 translation{0.0f}; // where the object's origin lies in the world
     bool autoRotate = false;
+    Material material;
+    bool texture = false; // the texture switch: the checker, or the mesh file's texture
 };
+
+// A scene holds from one to this many objects.
+constexpr int kMaxObjects = 32;
 
 struct CompareSettings
 {
@@ -100,15 +110,19 @@ struct CompareSettings
 struct Scene
 {
     Lights lights = defaultLights();
-    Material material;
     ShadingSettings shading;
-    ObjectSettings object;
+    // Never empty; each object has its own mesh, transform and material.
+    std::vector<ObjectSettings> objects = std::vector<ObjectSettings>(1);
+    int selected = 0; // the object the Object and Material panels edit
     OrbitCamera camera;
     bool showLight = true; // draw the lights' markers (unlit sphere or arrow)
     CompareSettings compare;
     // Values of the user shader's own uniforms (those no panel feeds), by name; they outlive
     // recompiles and restarts. 1 to 4 numbers each.
     std::map<QString, std::vector<float>> shaderValues;
+
+    ObjectSettings &selectedObject() { return objects[std::size_t(selected)]; }
+    const ObjectSettings &selectedObject() const { return objects[std::size_t(selected)]; }
 
     QJsonObject toJson() const;
     // Missing or ill-typed fields keep their defaults. Those present but not used (unknown,
@@ -120,16 +134,29 @@ struct Scene
 // changed, so that each listener does only its own work (the object loader rebuilds on Object
 // alone, the Light panel refreshes on Lights alone).
 enum class ScenePart : unsigned {
-    Lights = 1u << 0, // the lights and whether their markers show
-    Material = 1u << 1,
+    Lights = 1u << 0,   // the lights and whether their markers show
+    Material = 1u << 1, // any object's material
     Shading = 1u << 2,
-    Object = 1u << 3,
+    Object = 1u << 3, // the object list, the selection, and every object's settings
     Camera = 1u << 4,
     Compare = 1u << 5,
     Program = 1u << 6, // the values of the program's own uniforms (shaderValues)
 };
 Q_DECLARE_FLAGS(SceneParts, ScenePart)
 constexpr SceneParts kAllSceneParts = SceneParts(0x7f);
+
+// Object list edits that keep the lights' attachments and the selection pointing at the
+// same objects. Each returns false and changes nothing where the list would leave 1 to
+// kMaxObjects objects or the index is out of range.
+bool addObject(Scene &scene, const ObjectSettings &object); // appended and selected
+bool removeObject(Scene &scene, int index);                 // its lights go to the object before it
+// Puts the objects side by side along world X, 2.5 apart, centred on the origin.
+void placeInRow(std::vector<ObjectSettings> &objects);
+// The camera at its default angles, aimed at the middle of the scene's visible objects and
+// far enough to see them all (each taken as its unit bounds, scaled).
+void frameScene(Scene &scene);
+// The name the Object panel shows: the object's own, or its shape's or file's.
+QString displayName(const ObjectSettings &object);
 
 // Field by field: the parts in which `a` and `b` differ.
 SceneParts differingParts(const Scene &a, const Scene &b);
@@ -155,7 +182,7 @@ constexpr int kMinTessellation = 3;
 constexpr int kMaxTessellation = 2000;
 constexpr float kMinShininess = 1.0f;
 constexpr float kMaxShininess = 1000.0f;
-constexpr float kMaxCoordinate = 1000.0f;
+constexpr float kMaxCoordinate = 1000.0f; // light positions, translations, the camera
 constexpr float kMinScale = 0.01f;
 constexpr float kMaxScale = 100.0f;
 constexpr float kMaxCreaseDegrees = 180.0f;

@@ -6,6 +6,7 @@
 #include "safe_write.h"
 
 #include <QFileInfo>
+#include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 
@@ -39,10 +40,17 @@ ProgramText programText(const QJsonObject &p, QStringList &ignored)
 QByteArray sceneFileBytes(const SceneFile &file, const QDir &dir)
 {
     QJsonObject root = file.scene.toJson();
-    QJsonObject object = root["object"].toObject();
-    if (!file.scene.object.meshPath.isEmpty())
-        object["mesh"] = dir.relativeFilePath(file.scene.object.meshPath);
-    root["object"] = object;
+    // Mesh files are stored relative to the scene file, so that a folder moves as a whole.
+    QJsonArray objects = root["objects"].toArray();
+    for (int i = 0; i < int(objects.size()); ++i) {
+        const QString &mesh = file.scene.objects[std::size_t(i)].meshPath;
+        if (mesh.isEmpty())
+            continue;
+        QJsonObject object = objects[i].toObject();
+        object["mesh"] = dir.relativeFilePath(mesh);
+        objects[i] = object;
+    }
+    root["objects"] = objects;
     root["format"] = kFormat;
     root["version"] = kSceneFileVersion;
     if (file.program)
@@ -100,9 +108,9 @@ SceneFileRead parseSceneFile(const QByteArray &bytes, const QDir &dir, const QSt
     }
 
     file.scene = Scene::fromJson(root, &read.ignored);
-    QString &mesh = file.scene.object.meshPath;
-    if (!mesh.isEmpty())
-        mesh = QDir::cleanPath(dir.absoluteFilePath(mesh));
+    for (ObjectSettings &object : file.scene.objects)
+        if (!object.meshPath.isEmpty())
+            object.meshPath = QDir::cleanPath(dir.absoluteFilePath(object.meshPath));
     read.file = file;
     return read;
 }

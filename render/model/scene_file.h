@@ -16,7 +16,8 @@
 
 namespace lb {
 
-constexpr int kSceneFileVersion = 2; // 1: the settings' single-light scene, no program
+constexpr int kSceneFileVersion = 3; // 1: the settings' single-light scene, no program;
+                                     // 2: one object; 3: a list of objects
 constexpr qint64 kMaxSceneFileBytes = 64 * 1024 * 1024;
 
 // The program drawn with: where it came from (a preset's or a file's name, as data: never

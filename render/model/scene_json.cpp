@@ -38,7 +38,42 @@ QJsonObject lightJson(const Light &light)
     spot["cutoff"] = light.spot.cutoffDegrees;
     spot["exponent"] = light.spot.exponent;
     l["spot"] = spot;
+    l["object"] = light.object;
     return l;
+}
+
+QJsonObject materialJson(const Material &material)
+{
+    QJsonObject m;
+    m["ka"] = toArray(&material.ka.x, 3);
+    m["kd"] = toArray(&material.kd.x, 3);
+    m["ks"] = toArray(&material.ks.x, 3);
+    m["shininess"] = double(material.shininess);
+    return m;
+}
+
+// Version 2's "object" held all of this but the name, visibility, translation, material and
+// texture switch (those were "material" and "shading.texture").
+QJsonObject objectJson(const ObjectSettings &object)
+{
+    QJsonObject ob;
+    ob["name"] = object.name;
+    ob["visible"] = object.visible;
+    ob["shape"] = toName(object.shape);
+    ob["tessellation"] = object.tessellation;
+    ob["rotation"] = toArray(&object.rotationDegrees.x, 3);
+    ob["scale"] = toArray(&object.scale.x, 3);
+    ob["translation"] = toArray(&object.translation.x, 3);
+    ob["autoRotate"] = object.autoRotate;
+    ob["mesh"] = object.meshPath;
+    ob["normals"] = toName(object.normals);
+    ob["creaseAngle"] = double(object.creaseDegrees);
+    ob["showNormals"] = object.showNormals;
+    ob["cullBackFaces"] = object.cullBackFaces;
+    ob["adoptFileMaterial"] = object.adoptFileMaterial;
+    ob["material"] = materialJson(object.material);
+    ob["texture"] = object.texture;
+    return ob;
 }
 
 QJsonObject termsJson(const TermSwitches &terms)
@@ -199,6 +234,43 @@ void readLight(Reader &r, const QJsonObject &l, const QString &path, Light &ligh
     }
     r.number(spot, "cutoff", spotPath, light.spot.cutoffDegrees, 0.0f, limits::kMaxSpotCutoff);
     r.number(spot, "exponent", spotPath, light.spot.exponent, 0.0f, limits::kMaxSpotExponent);
+    r.number(l, "object", path, light.object, 0, kMaxObjects - 1);
+}
+
+void readMaterial(Reader &r, const QJsonObject &m, const QString &path, Material &material)
+{
+    r.unknownKeys(m, materialJson(material), path);
+    r.numbers(m, "ka", path, &material.ka.x, 3, 0.0f, 1.0f);
+    r.numbers(m, "kd", path, &material.kd.x, 3, 0.0f, 1.0f);
+    r.numbers(m, "ks", path, &material.ks.x, 3, 0.0f, 1.0f);
+    r.number(m, "shininess", path, material.shininess, limits::kMinShininess,
+             limits::kMaxShininess);
+}
+
+// One object; version 2's "object" is read by the same code (it has fewer fields).
+void readObject(Reader &r, const QJsonObject &ob, const QString &path, ObjectSettings &object)
+{
+    r.unknownKeys(ob, objectJson(object), path);
+    r.text(ob, "name", path, object.name);
+    r.boolean(ob, "visible", path, object.visible);
+    r.word(ob, "shape", path, parseShape, object.shape);
+    r.number(ob, "tessellation", path, object.tessellation, limits::kMinTessellation,
+             limits::kMaxTessellation);
+    r.numbers(ob, "rotation", path, &object.rotationDegrees.x, 3, -3600.0f, 3600.0f);
+    r.numbers(ob, "scale", path, &object.scale.x, 3, limits::kMinScale, limits::kMaxScale);
+    const float c = limits::kMaxCoordinate;
+    r.numbers(ob, "translation", path, &object.translation.x, 3, -c, c);
+    r.boolean(ob, "autoRotate", path, object.autoRotate);
+    r.text(ob, "mesh", path, object.meshPath);
+    r.word(ob, "normals", path, parseNormalMode, object.normals);
+    r.number(ob, "creaseAngle", path, object.creaseDegrees, 0.0f, limits::kMaxCreaseDegrees);
+    r.boolean(ob, "showNormals", path, object.showNormals);
+    r.boolean(ob, "cullBackFaces", path, object.cullBackFaces);
+    r.boolean(ob, "adoptFileMaterial", path, object.adoptFileMaterial);
+    if (ob.contains("material"))
+        readMaterial(r, r.object(ob, "material", Reader::join(path, "material")),
+                     Reader::join(path, "material"), object.material);
+    r.boolean(ob, "texture", path, object.texture);
 }
 
 } // namespace
@@ -209,12 +281,6 @@ QJsonObject Scene::toJson() const
     for (const Light &light : lights)
         ls.append(lightJson(light));
 
-    QJsonObject m;
-    m["ka"] = toArray(&material.ka.x, 3);
-    m["kd"] = toArray(&material.kd.x, 3);
-    m["ks"] = toArray(&material.ks.x, 3);
-    m["shininess"] = double(material.shininess);
-
     QJsonObject s;
     s["shading"] = toName(shading.shading);
     s["specular"] = toName(shading.specular);
@@ -223,21 +289,11 @@ QJsonObject Scene::toJson() const
     s["terms"] = termsJson(shading.terms);
     s["show"] = toName(shading.show);
     s["vertexColors"] = shading.vertexColors;
-    s["texture"] = shading.texture;
     s["normalsByModelView"] = shading.normalsByModelView;
 
-    QJsonObject ob;
-    ob["shape"] = toName(object.shape);
-    ob["tessellation"] = object.tessellation;
-    ob["rotation"] = toArray(&object.rotationDegrees.x, 3);
-    ob["scale"] = toArray(&object.scale.x, 3);
-    ob["autoRotate"] = object.autoRotate;
-    ob["mesh"] = object.meshPath;
-    ob["normals"] = toName(object.normals);
-    ob["creaseAngle"] = double(object.creaseDegrees);
-    ob["showNormals"] = object.showNormals;
-    ob["cullBackFaces"] = object.cullBackFaces;
-    ob["adoptFileMaterial"] = object.adoptFileMaterial;
+    QJsonArray obs;
+    for (const ObjectSettings &object : objects)
+        obs.append(objectJson(object));
 
     QJsonObject c;
     c["target"] = toArray(&camera.target.x, 3);
@@ -253,9 +309,9 @@ QJsonObject Scene::toJson() const
 
     QJsonObject root;
     root["lights"] = ls;
-    root["material"] = m;
     root["shading"] = s;
-    root["object"] = ob;
+    root["objects"] = obs;
+    root["selected"] = selected;
     root["camera"] = c;
     root["compare"] = cmp;
     root["showLight"] = showLight;
@@ -272,7 +328,9 @@ Scene Scene::fromJson(const QJsonObject &json, QStringList *ignored)
     Reader r(ignored);
     const QJsonObject known = sc.toJson();
     QJsonObject knownRoot = known;
-    knownRoot["light"] = QJsonObject(); // version 1 had a single light
+    knownRoot["light"] = QJsonObject();  // version 1 had a single light
+    knownRoot["object"] = QJsonObject(); // versions 1 and 2 had one object and its material
+    knownRoot["material"] = QJsonObject();
     r.unknownKeys(json, knownRoot, {});
 
     // Version 1 files and settings hold one light under "light".
@@ -294,16 +352,10 @@ Scene Scene::fromJson(const QJsonObject &json, QStringList *ignored)
         }
     }
 
-    const QJsonObject m = r.object(json, "material", "material");
-    r.unknownKeys(m, known["material"].toObject(), "material");
-    r.numbers(m, "ka", "material", &sc.material.ka.x, 3, 0.0f, 1.0f);
-    r.numbers(m, "kd", "material", &sc.material.kd.x, 3, 0.0f, 1.0f);
-    r.numbers(m, "ks", "material", &sc.material.ks.x, 3, 0.0f, 1.0f);
-    r.number(m, "shininess", "material", sc.material.shininess, limits::kMinShininess,
-             limits::kMaxShininess);
-
     const QJsonObject s = r.object(json, "shading", "shading");
-    r.unknownKeys(s, known["shading"].toObject(), "shading");
+    QJsonObject knownShading = known["shading"].toObject();
+    knownShading["texture"] = false; // version 2's texture switch, now each object's
+    r.unknownKeys(s, knownShading, "shading");
     r.word(s, "shading", "shading", parseShading, sc.shading.shading);
     r.word(s, "specular", "shading", parseSpecularModel, sc.shading.specular);
     r.word(s, "projection", "shading", parseProjection, sc.shading.projection);
@@ -315,23 +367,49 @@ Scene Scene::fromJson(const QJsonObject &json, QStringList *ignored)
     r.boolean(terms, "specular", "shading.terms", sc.shading.terms.specular);
     r.word(s, "show", "shading", parseShowChoice, sc.shading.show);
     r.boolean(s, "vertexColors", "shading", sc.shading.vertexColors);
-    r.boolean(s, "texture", "shading", sc.shading.texture);
     r.boolean(s, "normalsByModelView", "shading", sc.shading.normalsByModelView);
 
-    const QJsonObject ob = r.object(json, "object", "object");
-    r.unknownKeys(ob, known["object"].toObject(), "object");
-    r.word(ob, "shape", "object", parseShape, sc.object.shape);
-    r.number(ob, "tessellation", "object", sc.object.tessellation, limits::kMinTessellation,
-             limits::kMaxTessellation);
-    r.numbers(ob, "rotation", "object", &sc.object.rotationDegrees.x, 3, -3600.0f, 3600.0f);
-    r.numbers(ob, "scale", "object", &sc.object.scale.x, 3, limits::kMinScale, limits::kMaxScale);
-    r.boolean(ob, "autoRotate", "object", sc.object.autoRotate);
-    r.text(ob, "mesh", "object", sc.object.meshPath);
-    r.word(ob, "normals", "object", parseNormalMode, sc.object.normals);
-    r.number(ob, "creaseAngle", "object", sc.object.creaseDegrees, 0.0f, limits::kMaxCreaseDegrees);
-    r.boolean(ob, "showNormals", "object", sc.object.showNormals);
-    r.boolean(ob, "cullBackFaces", "object", sc.object.cullBackFaces);
-    r.boolean(ob, "adoptFileMaterial", "object", sc.object.adoptFileMaterial);
+    if (json.contains("objects")) {
+        const QJsonValue v = json.value("objects");
+        const QJsonArray obs = v.toArray();
+        if (!v.isArray())
+            r.ignore("objects", "not an array");
+        else if (obs.isEmpty())
+            r.ignore("objects", "empty: one object drawn instead");
+        std::vector<ObjectSettings> read;
+        for (int i = 0; i < int(obs.size()); ++i) {
+            const QString path = QString("objects[%1]").arg(i);
+            if (i >= kMaxObjects) {
+                r.ignore(path, "at most 32 objects");
+                break;
+            }
+            if (!obs[i].isObject()) {
+                r.ignore(path, "not an object");
+                continue;
+            }
+            read.emplace_back();
+            readObject(r, obs[i].toObject(), path, read.back());
+        }
+        if (!read.empty())
+            sc.objects = std::move(read);
+    } else {
+        // Versions 1 and 2: one object, the material and the texture switch apart from it.
+        ObjectSettings &only = sc.objects.front();
+        if (json.contains("object"))
+            readObject(r, r.object(json, "object", "object"), "object", only);
+        if (json.contains("material"))
+            readMaterial(r, r.object(json, "material", "material"), "material", only.material);
+        r.boolean(s, "texture", "shading", only.texture);
+    }
+    const int last = int(sc.objects.size()) - 1;
+    r.number(json, "selected", {}, sc.selected, 0, last);
+    for (int i = 0; i < kMaxLights; ++i) {
+        Light &light = sc.lights[std::size_t(i)];
+        if (light.object > last) {
+            r.ignore(QString("lights[%1].object").arg(i), "no such object; the first one");
+            light.object = 0;
+        }
+    }
 
     const QJsonObject c = r.object(json, "camera", "camera");
     r.unknownKeys(c, known["camera"].toObject(), "camera");

@@ -15,8 +15,10 @@ UniformValue colour(const Light &l, const glm::vec3 &c)
 
 UniformValue uniformValue(Semantic semantic, const Scene &scene, const Frames &frames, int light)
 {
-    const Light &l = scene.lights[std::size_t(std::clamp(light, 0, kMaxLights - 1))];
-    const Material &m = scene.material;
+    light = std::clamp(light, 0, kMaxLights - 1);
+    const Light &l = scene.lights[std::size_t(light)];
+    const ObjectSettings &object = scene.objects[std::size_t(frames.object)];
+    const Material &m = object.material;
     const ShadingSettings &s = scene.shading;
     switch (semantic) {
     case Semantic::ModelView:
@@ -30,9 +32,9 @@ UniformValue uniformValue(Semantic semantic, const Scene &scene, const Frames &f
     case Semantic::Projection:
         return UniformValue::ofMatrix(frames.projection);
     case Semantic::LightPosition:
-        return UniformValue::ofVector(l.position);
+        return UniformValue::ofVector(lightForDrawnObject(frames, light, l.position, l.frame));
     case Semantic::LightPositionEye:
-        return UniformValue::ofVector(lightInEye(frames, l.position, l.frame));
+        return UniformValue::ofVector(lightInEye(frames, light, l.position, l.frame));
     case Semantic::LightAmbient:
         return colour(l, l.colors.ia);
     case Semantic::LightDiffuse:
@@ -60,13 +62,14 @@ UniformValue uniformValue(Semantic semantic, const Scene &scene, const Frames &f
     case Semantic::EnableVertexColor:
         return UniformValue::ofNumber(s.vertexColors ? 1.0f : 0.0f);
     case Semantic::EnableTexture:
-        return UniformValue::ofNumber(s.texture ? 1.0f : 0.0f);
+        return UniformValue::ofNumber(object.texture ? 1.0f : 0.0f);
     case Semantic::Sampler:
         return UniformValue::ofNumber(0.0f); // the object's texture is bound to unit 0
     case Semantic::LightAttenuation:
         return UniformValue::ofVector(glm::vec4(l.attenuation, 0.0f));
     case Semantic::SpotDirection:
-        return UniformValue::ofVector(glm::vec4(l.spot.direction, 0.0f));
+        return UniformValue::ofVector(
+            lightForDrawnObject(frames, light, glm::vec4(l.spot.direction, 0.0f), l.frame));
     case Semantic::SpotCutoff:
         return UniformValue::ofNumber(l.spot.cutoffDegrees);
     case Semantic::SpotCosCutoff:

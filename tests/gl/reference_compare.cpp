@@ -61,12 +61,11 @@ bool sameSideOfEveryCone(const ProbeResult &a, const ProbeResult &b)
 Comparison compareWithReference(OffscreenRenderer &offscreen, const Scene &scene,
                                 const QImage &frame, int step)
 {
-    const Mesh &mesh = offscreen.objectMesh(scene);
-    const Texture &texture = offscreen.renderer().texture();
+    const ProbedObjects objects = offscreen.probedObjects(scene);
     const QSize size = frame.size();
     // A compared frame may show two sides; the divider between them is no surface.
     const int divider = dividerColumn(scene, size);
-    auto probe = [&](QPoint pixel) { return probeFramePixel(scene, mesh, texture, size, pixel); };
+    auto probe = [&](QPoint pixel) { return probeFramePixel(scene, objects, size, pixel); };
     Comparison c;
     for (int y = 3; y < size.height() - 3; y += step) {
         for (int x = 3; x < size.width() - 3; x += step) {
@@ -78,8 +77,8 @@ Comparison compareWithReference(OffscreenRenderer &offscreen, const Scene &scene
             bool interior = true;
             for (const QPoint d : {QPoint(2, 0), QPoint(-2, 0), QPoint(0, 2), QPoint(0, -2)}) {
                 const ProbeResult n = probe(QPoint(x, y) + d);
-                interior = interior && n.hit && glm::dot(n.normal, p.normal) > 0.98f &&
-                           sameSideOfEveryCone(n, p);
+                interior = interior && n.hit && n.object == p.object &&
+                           glm::dot(n.normal, p.normal) > 0.98f && sameSideOfEveryCone(n, p);
             }
             if (!interior)
                 continue;
@@ -139,9 +138,9 @@ Scene testScene()
 {
     Scene s;
     s.showLight = false;
-    s.object.tessellation = 24;
-    s.object.rotationDegrees = {20, 30, 0};
-    s.object.scale = {1.2f, 0.8f, 1.0f};
+    s.objects[0].tessellation = 24;
+    s.objects[0].rotationDegrees = {20, 30, 0};
+    s.objects[0].scale = {1.2f, 0.8f, 1.0f};
     s.camera.distance = 3.8f; // the object fills most of the small frame
     return s;
 }

@@ -404,9 +404,11 @@ private slots:
         for (int i = 0; i < 200000; ++i)
             lights.append(QJsonObject{{"position", QJsonArray{0, 1, 2, 1}}});
         scene["lights"] = lights;
-        QJsonObject object = scene["object"].toObject();
+        QJsonArray objects = scene["objects"].toArray();
+        QJsonObject object = objects[0].toObject();
         object["mesh"] = "/nowhere/" + QString(2'000'000, 'a') + ".obj";
-        scene["object"] = object;
+        objects[0] = object;
+        scene["objects"] = objects;
         const QString path = m_dir.filePath("echo.json");
         QFile f(path);
         QVERIFY(f.open(QIODevice::WriteOnly));

@@ -28,9 +28,9 @@ private:
         const ImportResult r = ImportProcess::import(path);
         if (!r.ok())
             qFatal("%s", qPrintable(r.error));
-        m_offscreen.setMeshFile(r.file);
+        m_offscreen.addMeshFile(r.file);
         Scene s = testScene();
-        s.object.meshPath = r.file->path;
+        s.objects[0].meshPath = r.file->path;
         return s;
     }
 
@@ -67,10 +67,10 @@ private slots:
         QFETCH(int, shading);
         QFETCH(int, minCompared);
         Scene s = sceneWith(kCorpus + "/" + file);
-        s.object.normals = NormalMode(normals);
+        s.objects[0].normals = NormalMode(normals);
         s.shading.shading = Shading(shading);
         s.lights[0].position = glm::vec4(1.0f, 2.0f, 3.0f, 1.0f);
-        s.material.shininess = 10;
+        s.objects[0].material.shininess = 10;
         const QString failure =
             checkAgainstReference(m_offscreen, s, QTest::currentDataTag(), minCompared, 0);
         QVERIFY2(failure.isEmpty(), qPrintable(failure));
@@ -96,10 +96,10 @@ private slots:
                   "f 1/1/1 2/2/1 3/3/1\nf 1/1/1 3/3/1 4/4/1\n");
         obj.close();
         Scene s = sceneWith(m_dir.filePath("quad.obj"));
-        s.object.rotationDegrees = glm::vec3(0.0f);
-        s.object.scale = glm::vec3(1.0f);
+        s.objects[0].rotationDegrees = glm::vec3(0.0f);
+        s.objects[0].scale = glm::vec3(1.0f);
         s.camera.yawDegrees = s.camera.pitchDegrees = 0.0f;
-        s.shading.texture = true;
+        s.objects[0].texture = true;
         const QString failure = checkAgainstReference(m_offscreen, s, "textured quad", 400, 0);
         QVERIFY2(failure.isEmpty(), qPrintable(failure));
         QCOMPARE(m_offscreen.renderer().texture().image().width(), 2); // the file's, no checker
@@ -122,10 +122,11 @@ private slots:
                 }
             return n;
         };
-        s.material.kd = s.material.ka = glm::vec3(0.2f, 0.2f, 0.8f); // a blue cube
-        s.object.showNormals = false;
+        s.objects[0].material.kd = s.objects[0].material.ka =
+            glm::vec3(0.2f, 0.2f, 0.8f); // a blue cube
+        s.objects[0].showNormals = false;
         const int without = yellowish(m_offscreen.render(s));
-        s.object.showNormals = true;
+        s.objects[0].showNormals = true;
         const int with = yellowish(m_offscreen.render(s));
         QCOMPARE(without, 0);
         QVERIFY2(with > 20, qPrintable(QString::number(with)));

@@ -67,7 +67,7 @@ private slots:
         s.lights[0].frame = LightFrame(frame);
         s.lights[0].position =
             w == 0.0f ? glm::vec4(1.0f, 1.5f, 2.0f, 0.0f) : glm::vec4(1.5f, 2.0f, 2.5f, 1.0f);
-        s.material.shininess = 20;
+        s.objects[0].material.shininess = 20;
         expectMatch(s, QTest::currentDataTag(), 100, 3);
     }
 
@@ -86,8 +86,8 @@ private slots:
         if (what == "vertex colours")
             s.shading.vertexColors = true;
         if (what.startsWith("texture")) {
-            s.shading.texture = true;
-            s.material.kd = s.material.ka = glm::vec3(1.0f);
+            s.objects[0].texture = true;
+            s.objects[0].material.kd = s.objects[0].material.ka = glm::vec3(1.0f);
         }
         if (what == "texture gouraud")
             s.shading.shading = Shading::Gouraud;
@@ -96,19 +96,19 @@ private slots:
             s.shading.vertexColors = true;
         }
         if (what.startsWith("cube"))
-            s.object.shape = Shape::Cube;
+            s.objects[0].shape = Shape::Cube;
         if (what == "cube orthographic")
             s.shading.projection = Projection::Orthographic;
         if (what == "torus")
-            s.object.shape = Shape::Torus;
+            s.objects[0].shape = Shape::Torus;
         if (what == "plane") {
-            s.object.shape = Shape::Plane;
-            s.object.rotationDegrees = {-30, 20, 0};
+            s.objects[0].shape = Shape::Plane;
+            s.objects[0].rotationDegrees = {-30, 20, 0};
         }
         if (what == "shininess 300")
-            s.material.shininess = 300;
+            s.objects[0].material.shininess = 300;
         const bool lit = s.shading.lighting;
-        expectMatch(s, what, s.object.shape == Shape::Cube ? 60 : 100, lit ? 1 : 0);
+        expectMatch(s, what, s.objects[0].shape == Shape::Cube ? 60 : 100, lit ? 1 : 0);
     }
 
     void fourLightsMatchTheReference_data()
@@ -128,7 +128,7 @@ private slots:
         Scene s = testScene();
         s.shading.shading = Shading(shading);
         s.shading.specular = SpecularModel(specular);
-        s.material.shininess = 30;
+        s.objects[0].material.shininess = 30;
         // One light in each frame, points and directions, coloured apart so that each one's
         // share shows; dim enough that the sum rarely saturates.
         const glm::vec4 positions[4] = {{1.5f, 2.0f, 2.5f, 1.0f},
@@ -241,7 +241,7 @@ private slots:
         s.shading.show = ShowChoice(show);
         s.shading.shading = Shading(shading);
         s.shading.specular = SpecularModel(specular);
-        s.material.shininess = 8;
+        s.objects[0].material.shininess = 8;
         s.lights[0].frame = LightFrame(frame);
         s.lights[0].position = {0.8f, 1.1f, 1.9f, 1.0f};
         s.lights[0].attenuation = {0.3f, 0.4f, 0.2f};
@@ -272,7 +272,7 @@ private slots:
     void meshesDrawnInPiecesDrawTheSamePixels()
     {
         Scene s = testScene();
-        s.object.showNormals = true;
+        s.objects[0].showNormals = true;
         const QImage whole = m_offscreen.render(s);
         for (std::uint64_t most : {3, 100, 1000}) {
             m_offscreen.renderer().setMaxPerDraw(most);
@@ -403,11 +403,10 @@ private slots:
             qPrintable(
                 QString("only %1/255 apart at (%2, %3)").arg(diff).arg(peak.x()).arg(peak.y())));
         // And each is what the reference says for its own mode there.
-        const Mesh &mesh = m_offscreen.objectMesh(s);
+        const ProbedObjects objects = m_offscreen.probedObjects(s);
         for (Shading mode : {Shading::Phong, Shading::Gouraud}) {
             s.shading.shading = mode;
-            const ProbeResult p =
-                probePixel(s, mesh, m_offscreen.renderer().texture(), kSize, peak);
+            const ProbeResult p = probePixel(s, objects, kSize, peak);
             const QImage &img = mode == Shading::Phong ? phong : gouraud;
             QVERIFY(p.hit);
             QVERIFY(channelDifference(img.pixel(peak), p.reference) <= kTolerance);
@@ -431,10 +430,10 @@ private slots:
         QFETCH(int, shape);
         QFETCH(float, scaleX);
         Scene s = testScene();
-        s.object.shape = Shape(shape);
-        s.object.scale.x = scaleX;
+        s.objects[0].shape = Shape(shape);
+        s.objects[0].scale.x = scaleX;
         const QImage all = m_offscreen.render(s);
-        s.object.cullBackFaces = true;
+        s.objects[0].cullBackFaces = true;
         QCOMPARE(largestDifference(all, m_offscreen.render(s)), 0);
         expectMatch(s, QTest::currentDataTag(), 100, 1);
     }
@@ -444,26 +443,25 @@ private slots:
     void culledBackFacesAreNeitherDrawnNorProbed()
     {
         Scene s = testScene();
-        s.object.shape = Shape::Plane;
-        s.object.scale = glm::vec3(1.0f);
-        s.object.rotationDegrees = {0.0f, 180.0f, 0.0f};
+        s.objects[0].shape = Shape::Plane;
+        s.objects[0].scale = glm::vec3(1.0f);
+        s.objects[0].rotationDegrees = {0.0f, 180.0f, 0.0f};
         const QPoint centre(kSize.width() / 2, kSize.height() / 2);
         const auto probeCentre = [&](const Scene &scene) {
-            return probePixel(scene, m_offscreen.objectMesh(scene),
-                              m_offscreen.renderer().texture(), kSize, centre);
+            return probePixel(scene, m_offscreen.probedObjects(scene), kSize, centre);
         };
         const QRgb background = m_offscreen.render(s).pixel(0, 0);
         QVERIFY(m_offscreen.render(s).pixel(centre) != background);
         QVERIFY(probeCentre(s).hit);
-        s.object.cullBackFaces = true;
+        s.objects[0].cullBackFaces = true;
         const QImage culled = m_offscreen.render(s);
         for (int y = 0; y < culled.height(); y += 4)
             for (int x = 0; x < culled.width(); x += 4)
                 QCOMPARE(culled.pixel(x, y), background);
         QVERIFY(!probeCentre(s).hit);
 
-        s.object.rotationDegrees = glm::vec3(0.0f);
-        s.object.scale.x = -1.0f;
+        s.objects[0].rotationDegrees = glm::vec3(0.0f);
+        s.objects[0].scale.x = -1.0f;
         QVERIFY(m_offscreen.render(s).pixel(centre) != background);
         QVERIFY(probeCentre(s).hit);
         expectMatch(s, "mirrored plane, culled", 100, 0);

@@ -145,7 +145,7 @@ private slots:
         s.shading.shading = Shading::Phong;
         s.lights[0].position = {1.5f, 2.0f, 2.5f, 1.0f};
         s.lights[0].colors = {glm::vec3(0.0f), glm::vec3(0.9f, 0.6f, 0.3f), glm::vec3(0.0f)};
-        s.material.kd = glm::vec3(1.0f);
+        s.objects[0].material.kd = glm::vec3(1.0f);
         // The exercise normalises N per vertex before interpolating; under the non-uniform
         // scale that moves a few pixels by up to 3 levels from the reference, which
         // interpolates the unnormalised normal. (A wrong normal matrix is off by far more.)

@@ -128,7 +128,7 @@ private slots:
             const Outcome o = load(loader, path);
             if (o.ok) {
                 ++loaded;
-                QCOMPARE(document.scene().object.meshPath, path);
+                QCOMPARE(document.scene().objects[0].meshPath, path);
                 QVERIFY(loader.mesh() && loader.mesh()->triangleCount() > 0);
                 for (std::uint32_t i : loader.mesh()->indices)
                     QVERIFY(i < loader.mesh()->vertexCount());
@@ -206,7 +206,7 @@ private slots:
         QVERIFY2(o.message.startsWith(path + ": ") && o.message.contains(expected),
                  qPrintable(o.message));
         QCOMPARE(loader.mesh(), shape);
-        QVERIFY(document.scene().object.meshPath.isEmpty());
+        QVERIFY(document.scene().objects[0].meshPath.isEmpty());
     }
 
     void missingFileAndDirectory()
@@ -239,11 +239,11 @@ private slots:
                                           "v -1 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
                                           "usemtl paint\nf 1/1 2/2 3/3\nf 1/1 3/3 4/4\n");
         SceneDocument document;
-        document.edit([](Scene &s) { s.object.adoptFileMaterial = true; });
+        document.edit([](Scene &s) { s.objects[0].adoptFileMaterial = true; });
         ObjectLoader loader(&document);
         const Outcome o = load(loader, m_dir.filePath("quad.obj"));
         QVERIFY2(o.ok, qPrintable(o.message));
-        const Material &m = document.scene().material;
+        const Material &m = document.scene().objects[0].material;
         QVERIFY(glm::all(
             glm::lessThan(glm::abs(m.kd - glm::vec3(0.2f, 0.4f, 0.6f)), glm::vec3(1e-5f))));
         QCOMPARE(m.shininess, 50.0f);
@@ -256,9 +256,9 @@ private slots:
         // Ticked after the load (the Object panel's check box asks the loader), the option
         // takes the file's material at once.
         loader.setAdoptFileMaterial(false);
-        document.edit([](Scene &s) { s.material = Material{}; });
+        document.edit([](Scene &s) { s.objects[0].material = Material{}; });
         loader.setAdoptFileMaterial(true);
-        QCOMPARE(document.scene().material.shininess, 50.0f);
+        QCOMPARE(document.scene().objects[0].material.shininess, 50.0f);
 
         // The texture gone: the mesh still loads, the message says what is missing.
         QFile::remove(m_dir.filePath("green.png"));
@@ -312,8 +312,8 @@ private slots:
         for (NormalMode mode : {NormalMode::Flat, NormalMode::Smooth, NormalMode::File}) {
             const auto before = loader.mesh();
             document.edit([mode](Scene &s) {
-                s.object.normals = mode;
-                s.object.creaseDegrees = 180.0f;
+                s.objects[0].normals = mode;
+                s.objects[0].creaseDegrees = 180.0f;
             });
             QTRY_VERIFY(loader.mesh() != before || mode == NormalMode::File);
         }

@@ -40,8 +40,8 @@ private slots:
                     "--model-rotate 10,20,30 --model-scale 2,1,0.5 --lighting off "
                     "--vertex-colors on --texture on --show-light off --cull-back-faces on "
                     "--terms diffuse,specular --attenuation 1,0.5,0.25 --spot 0,-1,0,30,4");
-        QCOMPARE(s.object.shape, Shape::Torus);
-        QCOMPARE(s.object.tessellation, 30);
+        QCOMPARE(s.objects[0].shape, Shape::Torus);
+        QCOMPARE(s.objects[0].tessellation, 30);
         QCOMPARE(s.shading.shading, Shading::Gouraud);
         QCOMPARE(s.shading.specular, SpecularModel::Phong);
         QCOMPARE(s.lights[0].frame, LightFrame::Camera);
@@ -49,20 +49,20 @@ private slots:
         QCOMPARE(s.lights[0].colors.ia, glm::vec3(0.1f, 0.2f, 0.3f));
         QCOMPARE(s.lights[0].colors.id, glm::vec3(0, 0, 1));
         QCOMPARE(s.lights[0].colors.is, glm::vec3(0.5f));
-        QCOMPARE(s.material.ka, glm::vec3(0, 1, 0));
-        QCOMPARE(s.material.kd, glm::vec3(1, 1, 0));
-        QCOMPARE(s.material.ks, glm::vec3(0.2f));
-        QCOMPARE(s.material.shininess, 250.0f);
+        QCOMPARE(s.objects[0].material.ka, glm::vec3(0, 1, 0));
+        QCOMPARE(s.objects[0].material.kd, glm::vec3(1, 1, 0));
+        QCOMPARE(s.objects[0].material.ks, glm::vec3(0.2f));
+        QCOMPARE(s.objects[0].material.shininess, 250.0f);
         QCOMPARE(s.shading.projection, Projection::Orthographic);
         QCOMPARE(s.camera.yawDegrees, 30.0f);
         QCOMPARE(s.camera.pitchDegrees, -10.0f);
-        QCOMPARE(s.object.rotationDegrees, glm::vec3(10, 20, 30));
-        QCOMPARE(s.object.scale, glm::vec3(2, 1, 0.5f));
+        QCOMPARE(s.objects[0].rotationDegrees, glm::vec3(10, 20, 30));
+        QCOMPARE(s.objects[0].scale, glm::vec3(2, 1, 0.5f));
         QVERIFY(!s.shading.lighting);
         QVERIFY(s.shading.vertexColors);
-        QVERIFY(s.shading.texture);
+        QVERIFY(s.objects[0].texture);
         QVERIFY(!s.showLight);
-        QVERIFY(s.object.cullBackFaces);
+        QVERIFY(s.objects[0].cullBackFaces);
         QVERIFY(!s.shading.terms.ambient);
         QVERIFY(s.shading.terms.diffuse && s.shading.terms.specular);
         QCOMPARE(s.lights[0].attenuation, glm::vec3(1, 0.5f, 0.25f));

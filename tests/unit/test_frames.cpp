@@ -42,8 +42,8 @@ private slots:
         std::uniform_real_distribution<float> angle(-180, 180), scale(0.2f, 3.0f), unit(-1, 1);
         for (int i = 0; i < 200; ++i) {
             Scene s;
-            s.object.rotationDegrees = {angle(rng), angle(rng), angle(rng)};
-            s.object.scale = {scale(rng), scale(rng), scale(rng)};
+            s.objects[0].rotationDegrees = {angle(rng), angle(rng), angle(rng)};
+            s.objects[0].scale = {scale(rng), scale(rng), scale(rng)};
             s.camera.yawDegrees = angle(rng);
             s.camera.pitchDegrees = angle(rng) / 3;
             const Frames f = computeFrames(s, 1.5f);
@@ -63,8 +63,8 @@ private slots:
     void normalMatrixIsNotTheModelViewUnderNonUniformScale()
     {
         Scene s;
-        s.object.scale = {3, 1, 1};
-        s.object.rotationDegrees = {0, 0, 30};
+        s.objects[0].scale = {3, 1, 1};
+        s.objects[0].rotationDegrees = {0, 0, 30};
         const Frames f = computeFrames(s, 1);
         const glm::vec3 n = glm::normalize(glm::vec3(1, 1, 0));
         const glm::vec3 wrong = glm::normalize(glm::vec3(f.modelView * glm::vec4(n, 0)));
@@ -143,15 +143,15 @@ private slots:
         QFETCH(glm::vec4, light);
         QFETCH(glm::vec4, expected);
         Scene s = straightOnScene();
-        s.object.rotationDegrees = {0, 90, 0};
-        s.object.scale = {2, 1, 1};
+        s.objects[0].rotationDegrees = {0, 90, 0};
+        s.objects[0].scale = {2, 1, 1};
         const Frames f = computeFrames(s, 1);
-        const glm::vec4 eye = lb::lightInEye(f, light, LightFrame(frame));
+        const glm::vec4 eye = lb::lightInEye(f, 0, light, LightFrame(frame));
         if (!near(eye, expected))
             QFAIL(qPrintable(
                 QString("got (%1, %2, %3, %4)").arg(eye.x).arg(eye.y).arg(eye.z).arg(eye.w)));
         // And back, as the probe shows P and L in the light's frame.
-        QVERIFY(near(eyeToFrame(f, eye, LightFrame(frame)), light));
+        QVERIFY(near(eyeToFrame(f, 0, eye, LightFrame(frame)), light));
     }
 
     void worldLightStaysInTheSceneWhenTheCameraOrbits()
@@ -161,14 +161,14 @@ private slots:
         b.camera.orbit(90, 0);
         const glm::vec4 light(0, 1.8f, 1.3f, 1);
         const Frames fa = computeFrames(a, 1), fb = computeFrames(b, 1);
-        QVERIFY(!near(lb::lightInEye(fa, light, LightFrame::World),
-                      lb::lightInEye(fb, light, LightFrame::World)));
-        QVERIFY(near(lb::lightInEye(fa, light, LightFrame::Camera),
-                     lb::lightInEye(fb, light, LightFrame::Camera)));
+        QVERIFY(!near(lb::lightInEye(fa, 0, light, LightFrame::World),
+                      lb::lightInEye(fb, 0, light, LightFrame::World)));
+        QVERIFY(near(lb::lightInEye(fa, 0, light, LightFrame::Camera),
+                     lb::lightInEye(fb, 0, light, LightFrame::Camera)));
         // ... and the world light keeps its distance to the world origin.
-        const float da = glm::length(glm::vec3(lb::lightInEye(fa, light, LightFrame::World)) -
+        const float da = glm::length(glm::vec3(lb::lightInEye(fa, 0, light, LightFrame::World)) -
                                      glm::vec3(fa.view[3]));
-        const float db = glm::length(glm::vec3(lb::lightInEye(fb, light, LightFrame::World)) -
+        const float db = glm::length(glm::vec3(lb::lightInEye(fb, 0, light, LightFrame::World)) -
                                      glm::vec3(fb.view[3]));
         QVERIFY(std::abs(da - db) < 1e-4f);
     }
@@ -176,10 +176,10 @@ private slots:
     void objectLightTurnsWithTheModel()
     {
         Scene a = straightOnScene(), b = straightOnScene();
-        b.object.rotationDegrees.y = 90;
+        b.objects[0].rotationDegrees.y = 90;
         const glm::vec4 light(0, 0, 2, 1);
-        const glm::vec4 ea = lb::lightInEye(computeFrames(a, 1), light, LightFrame::Object);
-        const glm::vec4 eb = lb::lightInEye(computeFrames(b, 1), light, LightFrame::Object);
+        const glm::vec4 ea = lb::lightInEye(computeFrames(a, 1), 0, light, LightFrame::Object);
+        const glm::vec4 eb = lb::lightInEye(computeFrames(b, 1), 0, light, LightFrame::Object);
         QVERIFY(near(ea, glm::vec4(0, 0, -2, 1)));
         QVERIFY(near(eb, glm::vec4(2, 0, -4, 1)));
     }

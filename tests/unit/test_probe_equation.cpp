@@ -32,7 +32,7 @@ private:
 
     ProbeResult probe(const Scene &scene) const
     {
-        return probePixel(scene, m_sphere, m_checker, kView, QPoint(210, 140));
+        return probePixel(scene, {{&m_sphere, &m_checker}}, kView, QPoint(210, 140));
     }
 
 private slots:

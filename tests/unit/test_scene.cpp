@@ -25,14 +25,14 @@ private slots:
         s.lights[0].position = {1, -2, 3, 0};
         s.lights[0].frame = LightFrame::Object;
         s.lights[0].colors.is = {0.1f, 0.2f, 0.3f};
-        s.material.shininess = 123;
+        s.objects[0].material.shininess = 123;
         s.shading.shading = Shading::Gouraud;
         s.shading.specular = SpecularModel::Phong;
         s.shading.projection = Projection::Orthographic;
-        s.shading.texture = true;
-        s.object.shape = Shape::Torus;
-        s.object.tessellation = 40;
-        s.object.scale = {2, 1, 0.5f};
+        s.objects[0].texture = true;
+        s.objects[0].shape = Shape::Torus;
+        s.objects[0].tessellation = 40;
+        s.objects[0].scale = {2, 1, 0.5f};
         s.camera.orbit(10, 10);
         s.shaderValues["bands"] = {6.0f};
         s.shaderValues["tint"] = {0.1f, 0.2f, 0.3f, 1.0f};
@@ -60,10 +60,10 @@ private slots:
         row("spot axis", P::Lights, [](Scene &s) { s.lights[1].spot.direction.x = 1; });
         row("spot cutoff", P::Lights, [](Scene &s) { s.lights[2].spot.cutoffDegrees = 30; });
         row("spot exponent", P::Lights, [](Scene &s) { s.lights[3].spot.exponent = 8; });
-        row("ka", P::Material, [](Scene &s) { s.material.ka.b = 0.5f; });
-        row("kd", P::Material, [](Scene &s) { s.material.kd.g = 0.5f; });
-        row("ks", P::Material, [](Scene &s) { s.material.ks.r = 0.5f; });
-        row("shininess", P::Material, [](Scene &s) { s.material.shininess = 7; });
+        row("ka", P::Material, [](Scene &s) { s.objects[0].material.ka.b = 0.5f; });
+        row("kd", P::Material, [](Scene &s) { s.objects[0].material.kd.g = 0.5f; });
+        row("ks", P::Material, [](Scene &s) { s.objects[0].material.ks.r = 0.5f; });
+        row("shininess", P::Material, [](Scene &s) { s.objects[0].material.shininess = 7; });
         row("shading", P::Shading, [](Scene &s) { s.shading.shading = Shading::Gouraud; });
         row("specular", P::Shading, [](Scene &s) { s.shading.specular = SpecularModel::Phong; });
         row("projection", P::Shading,
@@ -74,19 +74,19 @@ private slots:
         row("specular term", P::Shading, [](Scene &s) { s.shading.terms.specular = false; });
         row("show", P::Shading, [](Scene &s) { s.shading.show = ShowChoice::Reflect; });
         row("vertex colours", P::Shading, [](Scene &s) { s.shading.vertexColors = true; });
-        row("texture", P::Shading, [](Scene &s) { s.shading.texture = true; });
+        row("texture", P::Object, [](Scene &s) { s.objects[0].texture = true; });
         row("wrong normals", P::Shading, [](Scene &s) { s.shading.normalsByModelView = true; });
-        row("shape", P::Object, [](Scene &s) { s.object.shape = Shape::Torus; });
-        row("tessellation", P::Object, [](Scene &s) { s.object.tessellation = 33; });
-        row("mesh", P::Object, [](Scene &s) { s.object.meshPath = "/tmp/a.obj"; });
-        row("normals", P::Object, [](Scene &s) { s.object.normals = NormalMode::Flat; });
-        row("crease", P::Object, [](Scene &s) { s.object.creaseDegrees = 44; });
-        row("normal lines", P::Object, [](Scene &s) { s.object.showNormals = true; });
-        row("back-face culling", P::Object, [](Scene &s) { s.object.cullBackFaces = true; });
-        row("file material", P::Object, [](Scene &s) { s.object.adoptFileMaterial = true; });
-        row("rotation", P::Object, [](Scene &s) { s.object.rotationDegrees.z = 12; });
-        row("scale", P::Object, [](Scene &s) { s.object.scale.y = 0.5f; });
-        row("auto-rotate", P::Object, [](Scene &s) { s.object.autoRotate = true; });
+        row("shape", P::Object, [](Scene &s) { s.objects[0].shape = Shape::Torus; });
+        row("tessellation", P::Object, [](Scene &s) { s.objects[0].tessellation = 33; });
+        row("mesh", P::Object, [](Scene &s) { s.objects[0].meshPath = "/tmp/a.obj"; });
+        row("normals", P::Object, [](Scene &s) { s.objects[0].normals = NormalMode::Flat; });
+        row("crease", P::Object, [](Scene &s) { s.objects[0].creaseDegrees = 44; });
+        row("normal lines", P::Object, [](Scene &s) { s.objects[0].showNormals = true; });
+        row("back-face culling", P::Object, [](Scene &s) { s.objects[0].cullBackFaces = true; });
+        row("file material", P::Object, [](Scene &s) { s.objects[0].adoptFileMaterial = true; });
+        row("rotation", P::Object, [](Scene &s) { s.objects[0].rotationDegrees.z = 12; });
+        row("scale", P::Object, [](Scene &s) { s.objects[0].scale.y = 0.5f; });
+        row("auto-rotate", P::Object, [](Scene &s) { s.objects[0].autoRotate = true; });
         row("target", P::Camera, [](Scene &s) { s.camera.target.x = 1; });
         row("distance", P::Camera, [](Scene &s) { s.camera.distance = 9; });
         row("yaw", P::Camera, [](Scene &s) { s.camera.yawDegrees = 3; });
@@ -165,10 +165,12 @@ private slots:
         lights[1] = 12;
         lights.append(QJsonObject{}); // a fifth light
         json["lights"] = lights;
-        QJsonObject material = json["material"].toObject();
+        // Version 2's single object and its material, apart (version 3 files: below).
+        json.remove("objects");
+        QJsonObject material;
         material["shininess"] = 1e9;
         json["material"] = material;
-        QJsonObject object = json["object"].toObject();
+        QJsonObject object;
         object["tessellation"] = -5;
         object["scale"] = QJsonArray{0, 1, 1};
         json["object"] = object;
@@ -187,9 +189,9 @@ private slots:
         QCOMPARE(s.lights[0].attenuation, defaults.lights[0].attenuation);
         QCOMPARE(s.lights[0].spot.direction, defaults.lights[0].spot.direction);
         QCOMPARE(s.lights[0].spot.cutoffDegrees, limits::kMaxSpotCutoff); // clamped
-        QCOMPARE(s.material.shininess, limits::kMaxShininess);
-        QCOMPARE(s.object.tessellation, limits::kMinTessellation);
-        QCOMPARE(s.object.scale.x, limits::kMinScale);
+        QCOMPARE(s.objects[0].material.shininess, limits::kMaxShininess);
+        QCOMPARE(s.objects[0].tessellation, limits::kMinTessellation);
+        QCOMPARE(s.objects[0].scale.x, limits::kMinScale);
         QCOMPARE(s.camera.distance, defaults.camera.distance);
         QCOMPARE(int(s.shaderValues.size()), 1);
         QCOMPARE(s.shaderValues.at("ok"), std::vector<float>{2.5f});

@@ -26,11 +26,11 @@ SceneFile sampleFile(const QDir &dir)
     SceneFile f;
     f.scene.lights[1].enabled = true;
     f.scene.lights[1].frame = LightFrame::Object;
-    f.scene.material.shininess = 42;
+    f.scene.objects[0].material.shininess = 42;
     f.scene.shading.shading = Shading::Gouraud;
-    f.scene.object.meshPath = dir.filePath("meshes/bunny.ply");
-    f.scene.object.normals = NormalMode::Flat;
-    f.scene.object.cullBackFaces = true;
+    f.scene.objects[0].meshPath = dir.filePath("meshes/bunny.ply");
+    f.scene.objects[0].normals = NormalMode::Flat;
+    f.scene.objects[0].cullBackFaces = true;
     f.scene.camera.orbit(30, -10);
     f.scene.compare.mode = CompareMode::SideBySide;
     f.scene.shaderValues["bands"] = {4.0f};
@@ -53,14 +53,15 @@ QString outsideLimits(const Scene &s)
                 if (!(c[i] >= 0.0f && c[i] <= 1.0f))
                     return "light colour";
     }
-    if (!(s.material.shininess >= limits::kMinShininess &&
-          s.material.shininess <= limits::kMaxShininess))
+    if (!(s.objects[0].material.shininess >= limits::kMinShininess &&
+          s.objects[0].material.shininess <= limits::kMaxShininess))
         return "shininess";
-    if (s.object.tessellation < limits::kMinTessellation ||
-        s.object.tessellation > limits::kMaxTessellation)
+    if (s.objects[0].tessellation < limits::kMinTessellation ||
+        s.objects[0].tessellation > limits::kMaxTessellation)
         return "tessellation";
     for (int i = 0; i < 3; ++i)
-        if (!(s.object.scale[i] >= limits::kMinScale && s.object.scale[i] <= limits::kMaxScale))
+        if (!(s.objects[0].scale[i] >= limits::kMinScale &&
+              s.objects[0].scale[i] <= limits::kMaxScale))
             return "scale";
     if (!(s.compare.wipe >= 0.0f && s.compare.wipe <= 1.0f))
         return "wipe";
@@ -152,12 +153,13 @@ private slots:
         QFile raw(path);
         QVERIFY(raw.open(QIODevice::ReadOnly));
         const QJsonObject json = QJsonDocument::fromJson(raw.readAll()).object();
-        QCOMPARE(json["object"]["mesh"].toString(), QString("meshes/bunny.ply"));
+        QCOMPARE(json["objects"][0]["mesh"].toString(), QString("meshes/bunny.ply"));
         QCOMPARE(json["version"].toInt(), kSceneFileVersion);
         QCOMPARE(json["program"]["fragment"].toString(), f.program->fragment);
         const QDir moved("/elsewhere/class");
         const SceneFileRead there = parseSceneFile(sceneFileBytes(f, dir), moved, "moved.json");
-        QCOMPARE(there.file->scene.object.meshPath, QString("/elsewhere/class/meshes/bunny.ply"));
+        QCOMPARE(there.file->scene.objects[0].meshPath,
+                 QString("/elsewhere/class/meshes/bunny.ply"));
 
         // No program: the built-in one, which follows the shading choice.
         SceneFile builtIn = f;
@@ -255,12 +257,16 @@ private slots:
         json["version"] = 7;
         json["hologram"] = QJsonObject{{"on", true}};
         json["program"] = QJsonObject{{"vertex", 12}};
-        QJsonObject material = json["material"].toObject();
+        QJsonArray objects = json["objects"].toArray();
+        QJsonObject first = objects[0].toObject();
+        QJsonObject material = first["material"].toObject();
         material["shininess"] = 77;
-        json["material"] = material;
+        first["material"] = material;
+        objects[0] = first;
+        json["objects"] = objects;
         const SceneFileRead read = parseSceneFile(QJsonDocument(json).toJson(), QDir(), "new.json");
         QVERIFY(read.file);
-        QCOMPARE(read.file->scene.material.shininess, 77.0f); // what it knows is used
+        QCOMPARE(read.file->scene.objects[0].material.shininess, 77.0f); // what it knows is used
         QCOMPARE(read.ignored.size(), 3);
         QVERIFY(read.ignored[0].startsWith("version 7 (newer"));
         QVERIFY(read.ignored.join(' ').contains("hologram (unknown field)"));

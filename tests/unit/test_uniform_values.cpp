@@ -37,14 +37,14 @@ bool near(const glm::mat4 &a, const glm::mat4 &b)
 Scene busyScene()
 {
     Scene s;
-    s.object.rotationDegrees = {30.0f, -50.0f, 10.0f};
-    s.object.scale = {1.8f, 0.6f, 1.0f};
+    s.objects[0].rotationDegrees = {30.0f, -50.0f, 10.0f};
+    s.objects[0].scale = {1.8f, 0.6f, 1.0f};
     s.camera.yawDegrees = 40.0f;
     s.camera.pitchDegrees = -15.0f;
-    s.material.ka = {0.1f, 0.2f, 0.3f};
-    s.material.kd = {0.4f, 0.5f, 0.6f};
-    s.material.ks = {0.7f, 0.8f, 0.9f};
-    s.material.shininess = 42.0f;
+    s.objects[0].material.ka = {0.1f, 0.2f, 0.3f};
+    s.objects[0].material.kd = {0.4f, 0.5f, 0.6f};
+    s.objects[0].material.ks = {0.7f, 0.8f, 0.9f};
+    s.objects[0].material.shininess = 42.0f;
     for (int i = 0; i < kMaxLights; ++i) {
         Light &l = s.lights[std::size_t(i)];
         l.enabled = true;
@@ -199,7 +199,7 @@ private slots:
             scene.shading.projection = on ? Projection::Orthographic : Projection::Perspective;
             scene.shading.lighting = on;
             scene.shading.vertexColors = on;
-            scene.shading.texture = on;
+            scene.objects[0].texture = on;
             const float x = on ? 1.0f : 0.0f;
             for (const char *name : {"uSpecularModel", "uProjection", "uEnableLighting",
                                      "uEnableVertexColor", "uEnableTexture"})

@@ -13,7 +13,7 @@ private slots:
         const QImage sphere = frame();
         const auto [ok, message] = openMesh(kCube);
         QVERIFY2(ok, qPrintable(message));
-        QCOMPARE(scene().object.meshPath, kCube);
+        QCOMPARE(scene().objects[0].meshPath, kCube);
         QVERIFY(imageDifference(sphere, frame()) > 10);
         const QString summary = m_window->meshActions()->summaryLabel()->toolTip();
         QVERIFY2(summary.startsWith("cube.ply: ") && summary.contains("triangles") &&
@@ -23,7 +23,7 @@ private slots:
         QCOMPARE(m_window->meshActions()->recent()->files().value(0), kCube);
         // A built-in shape is one click away.
         m_window->objectPanel()->shapeCombo()->setCurrentIndex(int(Shape::Torus));
-        QVERIFY(scene().object.meshPath.isEmpty());
+        QVERIFY(scene().objects[0].meshPath.isEmpty());
         QTRY_VERIFY(m_window->meshActions()->summaryLabel()->text().startsWith("torus: "));
         // The status bar has the short form; the whole summary is the tooltip.
         QVERIFY(!m_window->meshActions()->summaryLabel()->text().contains("vertices"));
@@ -41,7 +41,7 @@ private slots:
         QVERIFY2(box->informativeText().contains("malformed.obj") &&
                      box->informativeText().contains("Invalid face index"),
                  qPrintable(box->informativeText()));
-        QCOMPARE(scene().object.meshPath, kCube);
+        QCOMPARE(scene().objects[0].meshPath, kCube);
         QVERIFY(imageDifference(cube, frame()) <= 2);
         box->close();
     }
@@ -67,7 +67,7 @@ private slots:
             "flat cube");
         QVERIFY(!panel->creaseBox()->isEnabled()); // flat has no crease angle
         expectNewImage([&] { QTest::keyClick(m_window.get(), Qt::Key_N); }, "normal lines");
-        QVERIFY(scene().object.showNormals);
+        QVERIFY(scene().objects[0].showNormals);
         QCOMPARE(started.count(), 0);
     }
 
@@ -91,12 +91,12 @@ private slots:
         QVERIFY(pid > 0 && ::kill(pid_t(pid), 0) == 0);
         // The window answers meanwhile.
         m_window->materialPanel()->shininessBox()->setValue(12);
-        QCOMPARE(scene().material.shininess, 12.0f);
+        QCOMPARE(scene().objects[0].material.shininess, 12.0f);
         QTest::mouseClick(progress->cancelButton(), Qt::LeftButton);
         QTRY_COMPARE(finished.count(), 1);
         QVERIFY(!progress->isVisible());
         QVERIFY(::kill(pid_t(pid), 0) != 0); // the helper is gone
-        QCOMPARE(scene().object.meshPath, before.object.meshPath);
+        QCOMPARE(scene().objects[0].meshPath, before.objects[0].meshPath);
         QVERIFY(!m_window->meshActions()->errorBox()); // cancelling is no error
         qputenv("LIGHTBENCH_IMPORT_HELPER", saved);
     }
@@ -113,7 +113,7 @@ private slots:
         QSignalSpy finished(m_window->objectLoader(), &ObjectLoader::loadFinished);
         QApplication::sendEvent(m_window.get(), &drop);
         QVERIFY(finished.wait(30000));
-        QCOMPARE(scene().object.meshPath, kCube);
+        QCOMPARE(scene().objects[0].meshPath, kCube);
     }
 
     // A slow program kept with a mesh file: at the next start the file is read by the helper
@@ -145,7 +145,7 @@ private slots:
         QVERIFY(openMesh(kCube).first);
         m_window->close(); // saves
         m_window = std::make_unique<MainWindow>(*m_settings);
-        QCOMPARE(scene().object.meshPath, kCube);
+        QCOMPARE(scene().objects[0].meshPath, kCube);
         QTRY_VERIFY(m_window->objectLoader()->file() &&
                     m_window->objectLoader()->file()->path == kCube);
         // A file gone since then: the shape comes back, with a message.
@@ -153,7 +153,7 @@ private slots:
         const QByteArray saved = m_settings->value("scene").toByteArray();
         m_settings->setValue("scene", QByteArray(saved).replace(kCube.toUtf8(), "/gone/away.ply"));
         m_window = std::make_unique<MainWindow>(*m_settings);
-        QTRY_VERIFY(scene().object.meshPath.isEmpty());
+        QTRY_VERIFY(scene().objects[0].meshPath.isEmpty());
         QTRY_VERIFY(m_window->meshActions()->errorBox());
         QVERIFY(m_window->meshActions()->errorBox()->informativeText().contains("/gone/away.ply"));
     }

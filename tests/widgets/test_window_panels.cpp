@@ -13,7 +13,7 @@ private slots:
     {
         ColorEdit *kd = m_window->materialPanel()->colorEdit(1);
         expectNewImage([&] { kd->channel(1)->setValue(1.0); }, "Kd green");
-        QCOMPARE(scene().material.kd, glm::vec3(1, 1, 0));
+        QCOMPARE(scene().objects[0].material.kd, glm::vec3(1, 1, 0));
     }
 
     void shininessSliderIsLogarithmic()
@@ -21,7 +21,7 @@ private slots:
         QSlider *slider = m_window->materialPanel()->shininessSlider();
         expectNewImage([&] { slider->setValue(MaterialPanel::kSliderSteps / 2); }, "shininess");
         // Half way on a log scale from 1 to 1000 is about 31.6.
-        QVERIFY(std::abs(scene().material.shininess - 31.62f) < 0.1f);
+        QVERIFY(std::abs(scene().objects[0].material.shininess - 31.62f) < 0.1f);
         QVERIFY(std::abs(m_window->materialPanel()->shininessBox()->value() - 31.6) < 0.1);
         m_window->materialPanel()->shininessBox()->setValue(1000);
         QCOMPARE(slider->value(), MaterialPanel::kSliderSteps);
@@ -36,8 +36,9 @@ private slots:
         QCOMPARE(scene().shading.specular, SpecularModel::Phong);
         expectNewImage([&] { p->projectionCombo()->setCurrentIndex(1); }, "orthographic");
         QCOMPARE(scene().shading.projection, Projection::Orthographic);
-        expectNewImage([&] { p->textureCheck()->setChecked(true); }, "texture");
-        QVERIFY(scene().shading.texture);
+        expectNewImage([&] { m_window->objectPanel()->textureCheck()->setChecked(true); },
+                       "texture");
+        QVERIFY(scene().objects[0].texture);
         expectNewImage([&] { p->vertexColorsCheck()->setChecked(true); }, "vertex colours");
         expectNewImage([&] { p->lightingCheck()->setChecked(false); }, "lighting off");
         QVERIFY(!scene().shading.lighting);
@@ -120,20 +121,20 @@ private slots:
     {
         ObjectPanel *p = m_window->objectPanel();
         expectNewImage([&] { p->shapeCombo()->setCurrentIndex(0); }, "cube");
-        QCOMPARE(scene().object.shape, Shape::Cube);
+        QCOMPARE(scene().objects[0].shape, Shape::Cube);
         QVERIFY(!p->tessellationBox()->isEnabled());
         expectNewImage([&] { p->scale(0)->setValue(0.5); }, "scale x");
-        QCOMPARE(scene().object.scale.x, 0.5f);
+        QCOMPARE(scene().objects[0].scale.x, 0.5f);
         expectNewImage([&] { p->rotation(1)->setValue(45); }, "rotate y");
         p->shapeCombo()->setCurrentIndex(1);
         expectNewImage([&] { p->tessellationBox()->setValue(64); }, "tessellation");
-        QCOMPARE(scene().object.tessellation, 64);
+        QCOMPARE(scene().objects[0].tessellation, 64);
     }
 
     void autoRotateTurnsTheModelAndTheSessionIsStillSaved()
     {
         m_window->objectPanel()->autoRotateCheck()->setChecked(true);
-        QTRY_VERIFY(scene().object.rotationDegrees.y > 3.0f);
+        QTRY_VERIFY(scene().objects[0].rotationDegrees.y > 3.0f);
         // While it turns, the scene still reaches the settings (a kill loses little).
         QTRY_VERIFY(m_settings->value("scene").toByteArray().contains("\"autoRotate\": true"));
         m_window->objectPanel()->autoRotateCheck()->setChecked(false);
@@ -196,7 +197,7 @@ private slots:
         const auto buttons = m_window->materialPanel()->findChildren<QPushButton *>();
         QCOMPARE(buttons.size(), 1);
         buttons.first()->click();
-        QCOMPARE(scene().material.shininess, Material{}.shininess);
+        QCOMPARE(scene().objects[0].material.shininess, Material{}.shininess);
     }
 };
 

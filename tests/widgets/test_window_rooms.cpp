@@ -187,13 +187,13 @@ private slots:
         };
         for (const auto &[name, resource] : SceneActions::examples()) {
             QVERIFY(m_window->sceneActions()->open(resource));
-            const float start = scene().object.rotationDegrees.y;
+            const float start = scene().objects[0].rotationDegrees.y;
             for (float turn : {0.0f, 45.0f, 90.0f, 135.0f}) {
                 m_window->document().edit([&](Scene &s) {
                     s.showLight = false;
-                    s.object.showNormals = false;
-                    s.object.autoRotate = false;
-                    s.object.rotationDegrees.y = start + turn;
+                    s.objects[0].showNormals = false;
+                    s.objects[0].autoRotate = false;
+                    s.objects[0].rotationDegrees.y = start + turn;
                 });
                 const QImage image = m_window->viewport()->renderImage(view);
                 QVERIFY(!image.isNull());
@@ -434,7 +434,7 @@ private slots:
         // Ctrl+S saves the scene (the document), with its program inline.
         QTest::keyClick(m_window.get(), Qt::Key_S, Qt::ControlModifier);
         QTRY_VERIFY(!m_window->isWindowModified());
-        QVERIFY(readSceneFile(path).file->scene.material.shininess == 40.0f);
+        QVERIFY(readSceneFile(path).file->scene.objects[0].material.shininess == 40.0f);
         // An edit of the shader is an unsaved edit of the scene too.
         ShaderEditor *fragment = m_window->editorPanel()->editor(ShaderStage::Fragment);
         fragment->setText(fragment->text() + "\n// note\n");

@@ -16,7 +16,7 @@ private slots:
         m_window->editorPanel()->loadPreset(presets().back()); // toon
         m_window->document().edit([](Scene &s) {
             s.lights[1].enabled = true;
-            s.material.kd = {0.2f, 0.5f, 0.9f};
+            s.objects[0].material.kd = {0.2f, 0.5f, 0.9f};
             s.camera.orbit(25, 10);
         });
         const QImage before = frame();
@@ -42,7 +42,7 @@ private slots:
 
     void badSceneFileChangesNothing()
     {
-        m_window->document().edit([](Scene &s) { s.material.shininess = 77; });
+        m_window->document().edit([](Scene &s) { s.objects[0].material.shininess = 77; });
         const Scene before = scene();
         const QString path = m_dir.filePath("broken.json");
         QFile f(path);
@@ -62,7 +62,7 @@ private slots:
         f.write(R"({"version": 1, "material": {"shininess": -4, "kd": "red"}, "wobble": 1})");
         f.close();
         QVERIFY(m_window->sceneActions()->open(path));
-        QCOMPARE(scene().material.shininess, limits::kMinShininess);
+        QCOMPARE(scene().objects[0].material.shininess, limits::kMinShininess);
         box = m_window->sceneActions()->messageBox();
         QVERIFY(box && box->isVisible());
         const QString listed = box->informativeText();
@@ -195,7 +195,7 @@ private slots:
         QSettings settings(path, QSettings::IniFormat);
         MainWindow window(settings);
         window.show();
-        window.document().edit([](Scene &s) { s.material.shininess = 77.0f; });
+        window.document().edit([](Scene &s) { s.objects[0].material.shininess = 77.0f; });
         QTRY_VERIFY_WITH_TIMEOUT(window.autosave()->isFailing(), 3000);
         const QString said = window.statusLine()->message();
         QVERIFY2(said.contains("Your work is not saved, trying again") && said.contains(path),
@@ -203,7 +203,7 @@ private slots:
 
         // Said once: a later save that fails too leaves the status line to other messages.
         window.statusLine()->showMessage("something else", 0);
-        window.document().edit([](Scene &s) { s.material.shininess = 78.0f; });
+        window.document().edit([](Scene &s) { s.objects[0].material.shininess = 78.0f; });
         QTest::qWait(SettingsAutosave::kDelayMs * 3);
         QCOMPARE(window.statusLine()->message(), QString("something else"));
         QVERIFY(window.autosave()->isFailing());
@@ -221,7 +221,7 @@ private slots:
         QCOMPARE(kept.size(), 1);
         const SceneFileRead read = readSceneFile(m_dir.filePath(kept[0]));
         QVERIFY2(read.file, qPrintable(read.error));
-        QCOMPARE(read.file->scene.material.shininess, 78.0f);
+        QCOMPARE(read.file->scene.objects[0].material.shininess, 78.0f);
         window.show();
 
         // The way cleared, the retry keeps the work without another edit, and says so.
