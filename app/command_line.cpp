@@ -451,7 +451,14 @@ void parseInto(const QCommandLineParser &parser, CommandLine &cl)
         add([t](Scene &s) { s.selectedObject().translation = t; });
     }
     if (given("light-object")) {
-        const int v = integer("light-object", value("light-object"), 0, kMaxObjects - 1);
+        // Checked against the objects where the command line knows them all.
+        int known = kMaxObjects;
+        if (given("object"))
+            known = int(parser.values("object").size()) +
+                    (cl.sceneFile ? int(cl.sceneFile->scene.objects.size()) : 0);
+        else if (cl.sceneFile)
+            known = int(cl.sceneFile->scene.objects.size());
+        const int v = integer("light-object", value("light-object"), 0, known - 1);
         add([v](Scene &s) { s.lights[0].object = std::min(v, int(s.objects.size()) - 1); });
     }
     const std::pair<const char *, bool ShadingSettings::*> switches[] = {

@@ -332,9 +332,12 @@ void frameScene(Scene &scene)
         float radius = 0.0f;
         for (const auto &[centre, r] : spheres)
             radius = std::max(radius, glm::length(centre - camera.target) + r);
-        // The default distance shows one unscaled object well: keep its proportion.
+        // The default distance shows one unscaled object well, with room to spare; a bounding
+        // sphere of several is looser than theirs (a row is wider than it is tall, as views
+        // are), so it comes in closer by 0.7.
+        const float closer = spheres.size() > 1 ? 0.7f : 1.0f;
         camera.distance =
-            std::clamp(camera.distance * radius / std::sqrt(3.0f), camera.distance, 50.0f);
+            std::clamp(closer * camera.distance * radius / std::sqrt(3.0f), camera.distance, 50.0f);
     }
     scene.camera = camera;
 }

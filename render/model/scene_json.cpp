@@ -379,8 +379,8 @@ Scene Scene::fromJson(const QJsonObject &json, QStringList *ignored)
         std::vector<ObjectSettings> read;
         for (int i = 0; i < int(obs.size()); ++i) {
             const QString path = QString("objects[%1]").arg(i);
-            if (i >= kMaxObjects) {
-                r.ignore(path, "at most 32 objects");
+            if (int(read.size()) >= kMaxObjects) {
+                r.ignore(path, "at most 32 objects; the rest left out");
                 break;
             }
             if (!obs[i].isObject()) {

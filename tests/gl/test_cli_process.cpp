@@ -1,4 +1,5 @@
 // The lightbench executable as a user scripts it: exit codes, messages, PNG and probe JSON.
+#include "frames.h"
 #include "reference_compare.h"
 
 #include <QDir>
@@ -79,6 +80,29 @@ private slots:
         // The background has no surface.
         const Run miss = run({"--probe", "2,2"});
         QCOMPARE(QJsonDocument::fromJson(miss.out).object()["hit"].toBool(true), false);
+    }
+
+    // --object twice: the probe names the object it hits, 0 for the first.
+    void probeNamesTheObjectHit()
+    {
+        using namespace lb;
+        Scene s;
+        s.objects = {ObjectSettings{}, ObjectSettings{}};
+        s.objects[0].shape = Shape::Cube;
+        placeInRow(s.objects);
+        frameScene(s);
+        for (int i = 0; i < 2; ++i) {
+            const Frames f = computeFrames(s, 800.0f / 600.0f, i);
+            const glm::vec2 p = pixelOf(f, glm::vec3(f.modelView[3]), 800.0f, 600.0f);
+            const QString pixel = QString("%1,%2").arg(int(p.x)).arg(int(p.y));
+            const Run r = run({"--object", "cube", "--object", "sphere", "--probe", pixel,
+                               "--show-light", "off"});
+            QVERIFY2(r.exitCode == 0, r.err.constData());
+            const QJsonObject o = QJsonDocument::fromJson(r.out).object();
+            QVERIFY(o["hit"].toBool());
+            QCOMPARE(o["object"].toInt(-1), i);
+            QVERIFY(o["maxDifference"].toInt(99) <= 2);
+        }
     }
 
     void savedSceneRendersTheSameFrame()

@@ -96,10 +96,44 @@ private slots:
         QVERIFY(r.message.contains("--camera-orbit"));
     }
 
+    // --object lists the objects; the object options apply to the last one named.
+    void objectsAndTheirOptions()
+    {
+        const Scene s = applied("--object cube --object torus --object /tmp/teapot.obj "
+                                "--model-translate 1,2,-3 --kd 0,0,1 --texture on "
+                                "--frame object --light-object 1");
+        QCOMPARE(int(s.objects.size()), 3);
+        QCOMPARE(s.objects[0].shape, Shape::Cube);
+        QCOMPARE(s.objects[1].shape, Shape::Torus);
+        QCOMPARE(s.objects[2].meshPath, QString("/tmp/teapot.obj"));
+        QCOMPARE(s.selected, 2);
+        QCOMPARE(s.objects[2].translation, glm::vec3(1, 2, -3));
+        QCOMPARE(s.objects[0].translation, glm::vec3(-2.5f, 0, 0)); // placed in a row
+        QCOMPARE(s.objects[2].material.kd, glm::vec3(0, 0, 1));
+        QCOMPARE(s.objects[0].material.kd, Material{}.kd);
+        QVERIFY(s.objects[2].texture && !s.objects[0].texture);
+        QCOMPARE(s.lights[0].frame, LightFrame::Object);
+        QCOMPARE(s.lights[0].object, 1);
+        QVERIFY(s.camera.distance > OrbitCamera{}.distance); // framed
+        // Without --object, the one object as before.
+        const Scene one = applied("--model-translate 0,1,0 --shape cube");
+        QCOMPARE(int(one.objects.size()), 1);
+        QCOMPARE(one.objects[0].translation, glm::vec3(0, 1, 0));
+        QCOMPARE(one.objects[0].shape, Shape::Cube);
+    }
+
     void badValues_data()
     {
         QTest::addColumn<QString>("args");
         QTest::addColumn<QString>("named"); // what the message must name
+        QTest::newRow("translate, two numbers") << "--model-translate 1,2"
+                                                << "--model-translate";
+        QTest::newRow("translate, too far") << "--model-translate 0,5000,0"
+                                            << "--model-translate";
+        QTest::newRow("light object, negative") << "--light-object -1"
+                                                << "--light-object";
+        QTest::newRow("light object, none such") << "--object cube --light-object 1"
+                                                 << "--light-object";
         QTest::newRow("missing number") << "--light 1,2,3"
                                         << "--light";
         QTest::newRow("empty number") << "--ka 1,,0"

@@ -1,4 +1,5 @@
 // The scene's JSON (what QSettings keeps between runs) and the procedural meshes.
+#include "frames.h"
 #include "mesh.h"
 #include "scene.h"
 #include "scene_document.h"
@@ -48,8 +49,8 @@ private slots:
         QTest::addColumn<int>("part");
         QTest::addColumn<std::function<void(Scene &)>>("change");
         using P = ScenePart;
-        auto row = [](const char *name, P part, std::function<void(Scene &)> change) {
-            QTest::newRow(name) << int(part) << change;
+        auto row = [](const char *name, SceneParts part, std::function<void(Scene &)> change) {
+            QTest::newRow(name) << int(part.toInt()) << change;
         };
         row("light position", P::Lights, [](Scene &s) { s.lights[1].position.y = 7; });
         row("light frame", P::Lights, [](Scene &s) { s.lights[2].frame = LightFrame::Camera; });
@@ -87,6 +88,19 @@ private slots:
         row("rotation", P::Object, [](Scene &s) { s.objects[0].rotationDegrees.z = 12; });
         row("scale", P::Object, [](Scene &s) { s.objects[0].scale.y = 0.5f; });
         row("auto-rotate", P::Object, [](Scene &s) { s.objects[0].autoRotate = true; });
+        row("name", P::Object, [](Scene &s) { s.objects[0].name = "teapot"; });
+        row("visible", P::Object, [](Scene &s) { s.objects[0].visible = false; });
+        row("translation", P::Object, [](Scene &s) { s.objects[0].translation.z = -2; });
+        row("second object", P::Object | P::Material,
+            [](Scene &s) { s.objects.push_back(ObjectSettings{}); });
+        row("selected", P::Object | P::Material, [](Scene &s) {
+            s.objects.push_back(ObjectSettings{});
+            s.selected = 1;
+        });
+        row("light's object", P::Lights | P::Object | P::Material, [](Scene &s) {
+            s.objects.push_back(ObjectSettings{});
+            s.lights[2].object = 1;
+        });
         row("target", P::Camera, [](Scene &s) { s.camera.target.x = 1; });
         row("distance", P::Camera, [](Scene &s) { s.camera.distance = 9; });
         row("yaw", P::Camera, [](Scene &s) { s.camera.yawDegrees = 3; });
@@ -208,6 +222,117 @@ private slots:
               "shaderValues.word"})
             QVERIFY2(all.contains(QLatin1String(path)), path);
         QCOMPARE(ignored.size(), 16);
+    }
+
+    // Version 3's list: bad entries are named and left out, the rest opens.
+    void badObjectListsAreNamed()
+    {
+        QJsonObject json = Scene{}.toJson();
+        QJsonArray objects;
+        objects.append(7);
+        QJsonObject cube;
+        cube["shape"] = "cube";
+        cube["translation"] = QJsonArray{1, "x", 0};
+        cube["material"] = QJsonObject{{"shininess", -4}};
+        objects.append(cube);
+        for (int i = 0; i < kMaxObjects + 3; ++i)
+            objects.append(QJsonObject{{"shape", "torus"}});
+        json["objects"] = objects;
+        QJsonArray lights = json["lights"].toArray();
+        QJsonObject light = lights[1].toObject();
+        light["object"] = 40;
+        lights[1] = light;
+        json["lights"] = lights;
+        json["selected"] = 99;
+        QStringList ignored;
+        const Scene s = Scene::fromJson(json, &ignored);
+        QCOMPARE(int(s.objects.size()), kMaxObjects);
+        QCOMPARE(s.objects[0].shape, Shape::Cube);
+        QCOMPARE(s.objects[0].translation, glm::vec3(0.0f));
+        QCOMPARE(s.objects[0].material.shininess, limits::kMinShininess);
+        QCOMPARE(s.objects[1].shape, Shape::Torus);
+        QCOMPARE(s.selected, kMaxObjects - 1);
+        QCOMPARE(s.lights[1].object, kMaxObjects - 1); // 40 clamped to the largest index
+        const QString all = ignored.join('\n');
+        for (const char *path :
+             {"objects[0] (not an object)", "objects[1].translation (not an array of numbers)",
+              "objects[1].material.shininess (out of range, clamped)",
+              "objects[33] (at most 32 objects", "selected (out of range, clamped)",
+              "lights[1].object (out of range, clamped)"})
+            QVERIFY2(all.contains(QLatin1String(path)), qPrintable(all));
+
+        for (const QJsonValue &bad : {QJsonValue(3), QJsonValue(QJsonArray{})}) {
+            json = Scene{}.toJson();
+            json["objects"] = bad;
+            ignored.clear();
+            QVERIFY(Scene::fromJson(json, &ignored) == Scene{});
+            QCOMPARE(ignored.size(), 1);
+            QVERIFY(ignored[0].startsWith("objects ("));
+        }
+        // A light naming an object the file does not have goes to the first one.
+        json = Scene{}.toJson();
+        lights = json["lights"].toArray();
+        light = lights[0].toObject();
+        light["object"] = 3;
+        lights[0] = light;
+        json["lights"] = lights;
+        ignored.clear();
+        QCOMPARE(Scene::fromJson(json, &ignored).lights[0].object, 0);
+        QVERIFY(ignored.join(' ').contains("lights[0].object (no such object"));
+    }
+
+    // Removing an object keeps every light on the object it was attached to (or, for the
+    // removed one's, the one before it) and the selection on the same object.
+    void objectListEditsKeepAttachments()
+    {
+        Scene s;
+        s.objects[0].name = "a";
+        for (const char *name : {"b", "c", "d"}) {
+            ObjectSettings o;
+            o.name = name;
+            QVERIFY(addObject(s, o));
+        }
+        QCOMPARE(s.selected, 3);
+        s.lights[0].object = 3; // d
+        s.lights[1].object = 2; // c, removed below
+        s.lights[2].object = 0; // a
+        s.selected = 3;
+        QVERIFY(removeObject(s, 2));
+        QCOMPARE(int(s.objects.size()), 3);
+        QCOMPARE(s.objects[s.lights[0].object].name, QString("d"));
+        QCOMPARE(s.objects[s.lights[1].object].name, QString("b"));
+        QCOMPARE(s.objects[s.lights[2].object].name, QString("a"));
+        QCOMPARE(s.selectedObject().name, QString("d"));
+        QVERIFY(!removeObject(s, 3));
+        QVERIFY(removeObject(s, 0) && removeObject(s, 0));
+        QVERIFY(!removeObject(s, 0)); // the last one stays
+        while (int(s.objects.size()) < kMaxObjects)
+            QVERIFY(addObject(s, ObjectSettings{}));
+        QVERIFY(!addObject(s, ObjectSettings{}));
+        QCOMPARE(displayName(ObjectSettings{}), QString("sphere"));
+        ObjectSettings file;
+        file.meshPath = "/x/teapot.obj";
+        QCOMPARE(displayName(file), QString("teapot.obj"));
+    }
+
+    void framingSeesEveryObject()
+    {
+        Scene s;
+        s.objects.resize(5);
+        placeInRow(s.objects);
+        QCOMPARE(s.objects[0].translation.x, -5.0f);
+        QCOMPARE(s.objects[4].translation.x, 5.0f);
+        frameScene(s);
+        QCOMPARE(s.camera.target, glm::vec3(0.0f));
+        QVERIFY(s.camera.distance > OrbitCamera{}.distance);
+        for (const ObjectSettings &o : s.objects) {
+            const Frames f = computeFrames(s, 16.0f / 9.0f);
+            const glm::vec4 clip = f.projection * f.view * glm::vec4(o.translation, 1.0f);
+            QVERIFY(std::abs(clip.x / clip.w) < 1.0f && std::abs(clip.y / clip.w) < 1.0f);
+        }
+        Scene one;
+        frameScene(one);
+        QVERIFY(one.camera == OrbitCamera{}); // one unit object: the default view
     }
 
     void namesRoundTrip()

@@ -2,6 +2,11 @@
 // the session survives a restart.
 #include "window_fixture.h"
 
+#include "frames.h"
+
+#include <QListWidget>
+#include <QPushButton>
+
 using namespace lb;
 using namespace lb::test;
 
@@ -129,6 +134,49 @@ private slots:
         p->shapeCombo()->setCurrentIndex(1);
         expectNewImage([&] { p->tessellationBox()->setValue(64); }, "tessellation");
         QCOMPARE(scene().objects[0].tessellation, 64);
+    }
+
+    // The list: Add draws a second object and selects it (the Material panel edits its
+    // material), a click on the first in the view selects that one, Remove takes it away.
+    void objectListAddsSelectsAndRemoves()
+    {
+        ObjectPanel *p = m_window->objectPanel();
+        QVERIFY(!p->removeButton()->isEnabled()); // the last object stays
+        expectNewImage([&] { p->addButton()->click(); }, "second object");
+        QCOMPARE(int(scene().objects.size()), 2);
+        QCOMPARE(scene().selected, 1);
+        QCOMPARE(p->objectList()->count(), 2);
+        QCOMPARE(p->objectList()->currentRow(), 1);
+        expectNewImage([&] { m_window->materialPanel()->colorEdit(1)->channel(1)->setValue(1.0); },
+                       "second object's Kd");
+        QCOMPARE(scene().objects[1].material.kd.g, 1.0f);
+        QCOMPARE(scene().objects[0].material.kd, Material{}.kd);
+        expectNewImage([&] { p->translation(1)->setValue(1.0); }, "moved up");
+        QCOMPARE(scene().objects[1].translation.y, 1.0f);
+
+        // A click on the first object's centre selects it.
+        Viewport *view = m_window->viewport();
+        const QSize frame = view->size() * view->devicePixelRatio();
+        const Frames f = computeFrames(scene(), float(frame.width()) / float(frame.height()), 0);
+        const glm::vec2 centre =
+            pixelOf(f, glm::vec3(f.modelView[3]), float(frame.width()), float(frame.height()));
+        const QPoint at = (QPointF(centre.x, centre.y) / view->devicePixelRatio()).toPoint();
+        QTest::mouseClick(view, Qt::LeftButton, Qt::NoModifier, at);
+        QTRY_COMPARE(scene().selected, 0);
+        QCOMPARE(p->objectList()->currentRow(), 0);
+        QCOMPARE(m_window->materialPanel()->colorEdit(1)->color(), Material{}.kd);
+
+        // Hidden by its tick, then renamed and removed.
+        expectNewImage([&] { p->objectList()->item(1)->setCheckState(Qt::Unchecked); }, "hidden");
+        QVERIFY(!scene().objects[1].visible);
+        p->objectList()->item(1)->setText("moon");
+        QCOMPARE(scene().objects[1].name, QString("moon"));
+        p->objectList()->setCurrentRow(1);
+        QCOMPARE(scene().selected, 1);
+        p->removeButton()->click();
+        QCOMPARE(int(scene().objects.size()), 1);
+        QCOMPARE(p->objectList()->count(), 1);
+        QVERIFY(!p->removeButton()->isEnabled());
     }
 
     void autoRotateTurnsTheModelAndTheSessionIsStillSaved()
