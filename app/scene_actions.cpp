@@ -58,7 +58,11 @@ QList<QPair<QString, QString>> SceneActions::examples()
             {tr("Toon shading"), ":/examples/toon.json"},
             {tr("The terms one at a time (keys A, D, S)"), ":/examples/terms.json"},
             {tr("Attenuation of a point light"), ":/examples/attenuation.json"},
-            {tr("A spotlight"), ":/examples/spotlight.json"}};
+            {tr("A spotlight"), ":/examples/spotlight.json"},
+            {tr("The exercise: a textured cube and a sphere, light in camera coordinates"),
+             ":/examples/exercise.json"},
+            {tr("A light in one object's frame (it turns with the torus)"),
+             ":/examples/attached_light.json"}};
 }
 
 void SceneActions::addToMenu(QMenu *file)

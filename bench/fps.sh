@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Frames per second at 1280x720 under Xvfb (Mesa llvmpipe here), for the default scene and a
-# generated 1M-triangle torus. Each figure is the median of RUNS processes; each process
+# Frames per second at 1280x720 under Xvfb (Mesa llvmpipe here), for the default scene, a
+# generated 1M-triangle torus, and 16 objects of 1,024 triangles beside one sphere of as many. Each figure is the median of RUNS processes; each process
 # draws FRAMES frames offscreen through the same renderer as the window (--bench-frames).
 # Usage: bench/fps.sh [RUNS] [FRAMES]   (builds first, like scripts/run)
 set -euo pipefail
@@ -35,3 +35,8 @@ measure "default (sphere, Phong shading)"
 measure "default, Gouraud" --shading gouraud
 measure "torus 1M triangles, Phong shading" --shape torus --tessellation 500
 measure "torus 1M triangles, Gouraud" --shape torus --tessellation 500 --shading gouraud
+sixteen=$(mktemp --suffix=.json)
+trap 'rm -f "$sixteen"' EXIT
+python3 "$(dirname "${BASH_SOURCE[0]}")/sixteen_objects.py" "$sixteen"
+measure "16 spheres of 1,024 triangles, 16 materials (4x4 grid)" --scene "$sixteen"
+measure "one sphere of as many triangles" --tessellation 128

@@ -525,7 +525,7 @@ QImage Viewport::renderImage(QSize pixels)
 
 void Viewport::resetCamera()
 {
-    m_document->edit([](Scene &s) { s.camera = OrbitCamera{}; });
+    m_document->edit([](Scene &s) { frameScene(s); }); // every visible object in sight
 }
 
 void Viewport::mousePressEvent(QMouseEvent *event)

@@ -334,8 +334,8 @@ void frameScene(Scene &scene)
             radius = std::max(radius, glm::length(centre - camera.target) + r);
         // The default distance shows one unscaled object well, with room to spare; a bounding
         // sphere of several is looser than theirs (a row is wider than it is tall, as views
-        // are), so it comes in closer by 0.7.
-        const float closer = spheres.size() > 1 ? 0.7f : 1.0f;
+        // are), so it comes in closer by 0.85, as far as a narrow view allows.
+        const float closer = spheres.size() > 1 ? 0.85f : 1.0f;
         camera.distance =
             std::clamp(closer * camera.distance * radius / std::sqrt(3.0f), camera.distance, 50.0f);
     }
