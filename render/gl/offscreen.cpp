@@ -105,6 +105,7 @@ void OffscreenRenderer::prepareObjects(const Scene &scene)
 {
     if (m_gpuOnly || m_meshGiven)
         return;
+    m_context.makeCurrent(&m_surface); // fewer objects release their buffers
     m_renderer.setObjectCount(int(scene.objects.size()));
     m_keys.resize(scene.objects.size());
     for (int i = 0; i < int(scene.objects.size()); ++i)

@@ -4,6 +4,7 @@
 #include <QLocale>
 
 #include <algorithm>
+#include <utility>
 
 namespace lb {
 
@@ -21,14 +22,22 @@ ObjectLoader::ObjectLoader(SceneDocument *document, QObject *parent)
 {
     m_pool.setMaxThreadCount(1);
     connect(document, &SceneDocument::changed, this, [this](SceneParts parts) {
-        if (parts & ScenePart::Object)
-            sync();
+        if (!(parts & ScenePart::Object) || m_busy)
+            return;
+        // A removal moves the objects after it: a file opened for one of them would land on
+        // another, so it stops with a message instead.
+        const std::size_t count = m_document->scene().objects.size();
+        if (count < m_objectCount && (m_loading || (m_job && m_job->commit)))
+            cancel();
+        m_objectCount = count;
+        sync();
     });
     connect(&m_import, &ImportProcess::progress, this,
             [this](double fraction, const QString &stage) {
                 emit loadProgress(0.9 * fraction, stage); // the build takes the last tenth
             });
     connect(&m_import, &ImportProcess::finished, this, &ObjectLoader::imported);
+    m_objectCount = document->scene().objects.size();
     sync();
 }
 
@@ -97,11 +106,20 @@ void ObjectLoader::open(const QString &path)
         m_job->cancel = true; // a file still being built gives way to the newer one
         m_job.reset();
     }
+    startImport(path, m_document->scene().selected);
+}
+
+void ObjectLoader::startImport(const QString &path, int index)
+{
     m_loading = true;
     m_loadingPath = path;
-    m_loadingObject = m_document->scene().selected;
+    m_loadingObject = index;
     emit loadStarted(path);
+    // start() ends an import still running at once, and reports that one's cancellation
+    // from inside: imported() leaves it unreported while m_busy is set.
+    const bool busy = std::exchange(m_busy, true);
     m_import.start(path, m_limits);
+    m_busy = busy;
 }
 
 void ObjectLoader::setAdoptFileMaterial(bool on)
@@ -130,7 +148,7 @@ void ObjectLoader::imported(const ImportResult &result)
 {
     if (!result.ok()) {
         // A newer open() replaced this one: that one reports for itself.
-        if (result.cancelled && m_import.isRunning())
+        if (result.cancelled && (m_busy || m_import.isRunning()))
             return;
         m_loading = false;
         emit loadFinished(false, result.cancelled ? tr("Loading cancelled") : result.error);
@@ -139,12 +157,15 @@ void ObjectLoader::imported(const ImportResult &result)
         const std::vector<ObjectSettings> &objects = m_document->scene().objects;
         const bool named = std::any_of(objects.begin(), objects.end(),
                                        [&](const auto &o) { return o.meshPath == failed; });
-        if (named)
+        if (named) {
+            const bool busy = std::exchange(m_busy, true);
             m_document->edit([&](Scene &s) {
                 for (ObjectSettings &o : s.objects)
                     if (o.meshPath == failed)
                         o.meshPath.clear();
             });
+            m_busy = busy;
+        }
         sync(); // another file a scene names, maybe
         return;
     }
@@ -199,28 +220,23 @@ void ObjectLoader::matchSlots()
 
 void ObjectLoader::sync()
 {
+    matchSlots(); // also while a build runs: the view draws each object's own mesh meanwhile
     if (m_job)
         return; // one build at a time; finishBuild() syncs again with the newest scene
-    matchSlots();
     const Scene &scene = m_document->scene();
     for (int i = 0; i < int(scene.objects.size()); ++i) {
         const ObjectSettings &object = scene.objects[std::size_t(i)];
-        const Slot &slot = m_slots[std::size_t(i)];
         std::shared_ptr<const MeshFile> file;
         if (!object.meshPath.isEmpty()) {
             file = loadedFile(object.meshPath);
             if (!file) {
-                if (!m_loading) { // named by a restored or opened scene
-                    m_loading = true;
-                    m_loadingPath = object.meshPath;
-                    m_loadingObject = i;
-                    emit loadStarted(object.meshPath);
-                    m_import.start(object.meshPath, m_limits);
-                }
-                if (slot.mesh)
+                if (!m_loading) // named by a restored or opened scene
+                    startImport(object.meshPath, i);
+                if (m_slots[std::size_t(i)].mesh)
                     continue; // what is on screen stays until the file is in
             }
         }
+        const Slot &slot = m_slots[std::size_t(i)];
         if (slot.mesh && objectMeshKey(object, file.get()) == slot.key)
             continue;
         ObjectSettings shape = object;
@@ -270,9 +286,17 @@ void ObjectLoader::finishBuild(const std::shared_ptr<Job> &job)
         return; // superseded by a newer build or file
     m_job.reset();
     const int index = job->index;
-    // The list may have changed while the build ran: the object must still be there.
-    const bool there = index < int(m_document->scene().objects.size());
-    const bool built = job->mesh && !job->cancel && there;
+    // The list may have changed while the build ran: the object must still be there and, for
+    // a shape or a file already in, still want this mesh (a file being opened is checked
+    // when the list shrinks: see the constructor).
+    const std::vector<ObjectSettings> &objects = m_document->scene().objects;
+    const bool there = index < int(objects.size());
+    const bool wanted =
+        there && (job->commit || objectMeshKey(objects[std::size_t(index)],
+                                               objects[std::size_t(index)].meshPath.isEmpty()
+                                                   ? nullptr
+                                                   : job->file.get()) == job->key);
+    const bool built = job->mesh && !job->cancel && wanted;
     if (built) {
         if (int(m_slots.size()) <= index)
             m_slots.resize(std::size_t(index) + 1);
@@ -285,12 +309,14 @@ void ObjectLoader::finishBuild(const std::shared_ptr<Job> &job)
             const QString path = job->file->path;
             const bool adopt = job->object.adoptFileMaterial;
             const FileMaterial material = job->file->material;
+            const bool busy = std::exchange(m_busy, true); // synced below, after the signals
             m_document->edit([&](Scene &s) {
                 ObjectSettings &o = s.objects[std::size_t(index)];
                 o.meshPath = path;
                 if (adopt)
                     o.material = adoptMaterial(o.material, material);
             });
+            m_busy = busy;
         }
     }
     if (built)

@@ -99,10 +99,15 @@ private:
     std::shared_ptr<Job> m_job; // the build in flight; one at a time
     bool m_loading = false;
     QString m_loadingPath;
-    int m_loadingObject = -1; // the object open() loads for; -1: a file a scene names
+    int m_loadingObject = 0; // the object the file being read is for
     std::map<QString, std::shared_ptr<const MeshFile>> m_files; // loaded, by path
-    QStringList m_failed;      // files a scene named that could not be read (not asked again)
-    std::vector<Slot> m_slots; // by object
+    std::vector<Slot> m_slots;                                  // by object
+    // The loader's own edits and imports: while one runs, the document's changed() and a
+    // replaced import's cancellation are not acted on (each site syncs itself afterwards).
+    bool m_busy = false;
+    std::size_t m_objectCount = 1; // the list's length at the last change (removals)
+    // Starts reading `path` for object `index` (a replaced import is not reported).
+    void startImport(const QString &path, int index);
 };
 
 } // namespace lb

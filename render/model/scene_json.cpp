@@ -383,11 +383,11 @@ Scene Scene::fromJson(const QJsonObject &json, QStringList *ignored)
                 r.ignore(path, "at most 32 objects; the rest left out");
                 break;
             }
+            read.emplace_back(); // in its place, so that the indices after it stay right
             if (!obs[i].isObject()) {
-                r.ignore(path, "not an object");
+                r.ignore(path, "not an object; a sphere in its place");
                 continue;
             }
-            read.emplace_back();
             readObject(r, obs[i].toObject(), path, read.back());
         }
         if (!read.empty())

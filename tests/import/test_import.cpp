@@ -209,6 +209,37 @@ private slots:
         QVERIFY(document.scene().objects[0].meshPath.isEmpty());
     }
 
+    // A scene of several objects: each file read once, each object its own mesh; a removed
+    // object's neighbours keep theirs (the slots follow the objects), and a file that cannot
+    // be read leaves only the objects naming it, as their shapes.
+    void severalObjectsEachGetTheirMesh()
+    {
+        SceneDocument document;
+        Scene scene;
+        ObjectSettings cube, torus, missing;
+        cube.meshPath = kCorpus + "/PLY/cube.ply";
+        torus.shape = Shape::Torus;
+        missing.meshPath = m_dir.filePath("nowhere.ply");
+        scene.objects = {cube, torus, cube, missing};
+        document.set(scene);
+        ObjectLoader loader(&document);
+        QSignalSpy finished(&loader, &ObjectLoader::loadFinished);
+        QTRY_VERIFY(finished.count() >= 2 && !loader.isLoading() && !loader.isBuilding());
+        QCOMPARE(loader.objectCount(), 4);
+        QVERIFY(loader.file(0) && loader.file(0) == loader.file(2)); // read once
+        QCOMPARE(loader.mesh(0)->triangleCount(), std::size_t(12));
+        QCOMPARE(loader.mesh(1)->triangleCount(), shapeTriangleCount(Shape::Torus, 16));
+        QVERIFY(document.scene().objects[3].meshPath.isEmpty()); // a sphere now
+        QVERIFY(!document.scene().objects[0].meshPath.isEmpty());
+        QCOMPARE(loader.mesh(3)->triangleCount(), shapeTriangleCount(Shape::Sphere, 16));
+
+        const std::shared_ptr<const Mesh> torusMesh = loader.mesh(1);
+        document.edit([](Scene &s) { removeObject(s, 0); });
+        QCOMPARE(loader.objectCount(), 3);
+        QCOMPARE(loader.mesh(0), torusMesh); // moved with its object, not rebuilt
+        QCOMPARE(loader.mesh(1)->triangleCount(), std::size_t(12));
+    }
+
     void missingFileAndDirectory()
     {
         SceneDocument document;

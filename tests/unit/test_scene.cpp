@@ -247,17 +247,19 @@ private slots:
         QStringList ignored;
         const Scene s = Scene::fromJson(json, &ignored);
         QCOMPARE(int(s.objects.size()), kMaxObjects);
-        QCOMPARE(s.objects[0].shape, Shape::Cube);
-        QCOMPARE(s.objects[0].translation, glm::vec3(0.0f));
-        QCOMPARE(s.objects[0].material.shininess, limits::kMinShininess);
-        QCOMPARE(s.objects[1].shape, Shape::Torus);
+        QCOMPARE(s.objects[0].shape, Shape::Sphere); // in place of the 7: indices stay
+        QCOMPARE(s.objects[1].shape, Shape::Cube);
+        QCOMPARE(s.objects[1].translation, glm::vec3(0.0f));
+        QCOMPARE(s.objects[1].material.shininess, limits::kMinShininess);
+        QCOMPARE(s.objects[2].shape, Shape::Torus);
         QCOMPARE(s.selected, kMaxObjects - 1);
         QCOMPARE(s.lights[1].object, kMaxObjects - 1); // 40 clamped to the largest index
         const QString all = ignored.join('\n');
         for (const char *path :
-             {"objects[0] (not an object)", "objects[1].translation (not an array of numbers)",
+             {"objects[0] (not an object; a sphere in its place)",
+              "objects[1].translation (not an array of numbers)",
               "objects[1].material.shininess (out of range, clamped)",
-              "objects[33] (at most 32 objects", "selected (out of range, clamped)",
+              "objects[32] (at most 32 objects", "selected (out of range, clamped)",
               "lights[1].object (out of range, clamped)"})
             QVERIFY2(all.contains(QLatin1String(path)), qPrintable(all));
 
