@@ -82,6 +82,7 @@ QString shortcutsHtml(const QMenuBar *menus)
     html += row("Ctrl+L / Ctrl+D", QObject::tr("delete / duplicate the line"));
     html += QString("<tr><td colspan='2'><h3>%1</h3></td></tr>").arg(QObject::tr("View"));
     html += row(QObject::tr("left drag"), QObject::tr("orbit the camera"));
+    html += row(QObject::tr("click"), QObject::tr("select the object under the cursor"));
     html += row(QObject::tr("right or middle drag"), QObject::tr("pan"));
     html += row(QObject::tr("wheel"), QObject::tr("zoom"));
     html += row(QObject::tr("Ctrl+click, Shift+click"),

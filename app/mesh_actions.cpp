@@ -63,6 +63,11 @@ MeshActions::MeshActions(QMainWindow *window, SceneDocument *document, ObjectLoa
     connect(loader, &ObjectLoader::loadProgress, m_progress, &LoadProgress::setProgress);
     connect(loader, &ObjectLoader::loadFinished, this, &MeshActions::finished);
     connect(loader, &ObjectLoader::meshReady, this, &MeshActions::showSummary);
+    // Another object selected: the status bar describes that one.
+    connect(m_document, &SceneDocument::changed, this, [this](SceneParts parts) {
+        if (parts & ScenePart::Object)
+            showSummary();
+    });
     showSummary();
 
     window->setAcceptDrops(true);

@@ -53,22 +53,24 @@ ObjectPanel::ObjectPanel(SceneDocument *document, QWidget *parent)
     });
     form->addRow(m_list);
     m_add = new QPushButton(tr("Add"), this);
-    m_add->setToolTip(
-        tr("A new sphere beside the selected object (at most %1 objects)").arg(kMaxObjects));
+    m_add->setToolTip(tr("A new sphere in the first free place near the centre (at most %1 "
+                         "objects; R frames them all)")
+                          .arg(kMaxObjects));
     connect(m_add, &QPushButton::clicked, this, [this] {
         edit([](Scene &s) {
             ObjectSettings added;
-            added.translation = s.selectedObject().translation + glm::vec3(2.5f, 0.0f, 0.0f);
+            added.translation = freePlace(s);
             addObject(s, added);
         });
     });
     m_duplicate = new QPushButton(tr("Duplicate"), this);
-    m_duplicate->setToolTip(tr("A copy of the selected object, material and all, beside it"));
+    m_duplicate->setToolTip(tr("A copy of the selected object, material and all, in the first free "
+                               "place near the centre"));
     connect(m_duplicate, &QPushButton::clicked, this, [this] {
         const QString suffix = tr(" copy");
         edit([&](Scene &s) {
             ObjectSettings copy = s.selectedObject();
-            copy.translation += glm::vec3(2.5f, 0.0f, 0.0f);
+            copy.translation = freePlace(s);
             if (!copy.name.isEmpty())
                 copy.name += suffix;
             addObject(s, copy);

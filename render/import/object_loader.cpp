@@ -24,12 +24,10 @@ ObjectLoader::ObjectLoader(SceneDocument *document, QObject *parent)
     connect(document, &SceneDocument::changed, this, [this](SceneParts parts) {
         if (!(parts & ScenePart::Object) || m_busy)
             return;
-        // A removal moves the objects after it: a file opened for one of them would land on
-        // another, so it stops with a message instead.
-        const std::size_t count = m_document->scene().objects.size();
-        if (count < m_objectCount && (m_loading || (m_job && m_job->commit)))
-            cancel();
-        m_objectCount = count;
+        const std::vector<ObjectSettings> &now = m_document->scene().objects;
+        if (now.size() < m_objectsBefore.size())
+            followRemoval(now);
+        m_objectsBefore = now;
         sync();
     });
     connect(&m_import, &ImportProcess::progress, this,
@@ -37,7 +35,7 @@ ObjectLoader::ObjectLoader(SceneDocument *document, QObject *parent)
                 emit loadProgress(0.9 * fraction, stage); // the build takes the last tenth
             });
     connect(&m_import, &ImportProcess::finished, this, &ObjectLoader::imported);
-    m_objectCount = document->scene().objects.size();
+    m_objectsBefore = document->scene().objects;
     sync();
 }
 
@@ -109,6 +107,36 @@ void ObjectLoader::open(const QString &path)
     startImport(path, m_document->scene().selected);
 }
 
+void ObjectLoader::followRemoval(const std::vector<ObjectSettings> &now)
+{
+    const bool opening = m_loading || (m_job && m_job->commit);
+    if (!opening && !m_job)
+        return;
+    // Which one went: the first place where the lists differ.
+    int removed = -1;
+    if (now.size() + 1 == m_objectsBefore.size()) {
+        removed = int(now.size());
+        for (std::size_t i = 0; i < now.size(); ++i)
+            if (!(now[i] == m_objectsBefore[i])) {
+                removed = int(i);
+                break;
+            }
+    }
+    const auto follow = [&](int &index) { // false: its object is gone
+        if (removed < 0 || index == removed)
+            return false;
+        if (index > removed)
+            --index;
+        return true;
+    };
+    if (m_job && !follow(m_job->index))
+        m_job->cancel = true; // dropped by finishBuild()
+    if (m_loading && !follow(m_loadingObject)) {
+        m_removedWhileLoading = true;
+        m_import.cancel();
+    }
+}
+
 void ObjectLoader::startImport(const QString &path, int index)
 {
     m_loading = true;
@@ -151,7 +179,11 @@ void ObjectLoader::imported(const ImportResult &result)
         if (result.cancelled && (m_busy || m_import.isRunning()))
             return;
         m_loading = false;
-        emit loadFinished(false, result.cancelled ? tr("Loading cancelled") : result.error);
+        const bool removed = std::exchange(m_removedWhileLoading, false);
+        emit loadFinished(false, removed ? tr("%1: not loaded: its object was removed")
+                                               .arg(QFileInfo(m_loadingPath).fileName())
+                                 : result.cancelled ? tr("Loading cancelled")
+                                                    : result.error);
         // Objects that name this file (a restart, a scene file) fall back to their shapes.
         const QString failed = m_loadingPath;
         const std::vector<ObjectSettings> &objects = m_document->scene().objects;

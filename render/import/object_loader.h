@@ -105,7 +105,11 @@ private:
     // The loader's own edits and imports: while one runs, the document's changed() and a
     // replaced import's cancellation are not acted on (each site syncs itself afterwards).
     bool m_busy = false;
-    std::size_t m_objectCount = 1; // the list's length at the last change (removals)
+    std::vector<ObjectSettings> m_objectsBefore; // the list at the last change (removals)
+    // One object removed: the file being opened and the build in flight follow their objects
+    // to their new indices (or stop, if it was theirs); several at once: they stop.
+    void followRemoval(const std::vector<ObjectSettings> &now);
+    bool m_removedWhileLoading = false;
     // Starts reading `path` for object `index` (a replaced import is not reported).
     void startImport(const QString &path, int index);
 };

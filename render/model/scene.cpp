@@ -305,6 +305,36 @@ bool removeObject(Scene &scene, int index)
     return true;
 }
 
+glm::vec3 freePlace(const Scene &scene)
+{
+    constexpr float kSpacing = 2.5f;
+    const auto free = [&](const glm::vec3 &p) {
+        return std::none_of(scene.objects.begin(), scene.objects.end(),
+                            [&](const auto &o) { return glm::length(o.translation - p) < 2.0f; });
+    };
+    // Rings of the square spiral: ring r holds the cells at Chebyshev distance r, the row
+    // through the origin first (x, then -x), then the rows above and below.
+    for (int ring = 0; ring < 64; ++ring)
+        for (int dy = 0; dy <= ring; ++dy)
+            for (int sy : {1, -1}) {
+                if (dy == 0 && sy < 0)
+                    continue;
+                for (int dx = 0; dx <= ring; ++dx) {
+                    if (std::max(dx, dy) != ring)
+                        continue;
+                    for (int sx : {1, -1}) {
+                        if (dx == 0 && sx < 0)
+                            continue;
+                        const glm::vec3 p(kSpacing * float(sx * dx), kSpacing * float(sy * dy),
+                                          0.0f);
+                        if (free(p))
+                            return p;
+                    }
+                }
+            }
+    return glm::vec3(0.0f);
+}
+
 void placeInRow(std::vector<ObjectSettings> &objects)
 {
     const float middle = 0.5f * float(objects.size() - 1);

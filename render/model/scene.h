@@ -150,6 +150,10 @@ constexpr SceneParts kAllSceneParts = SceneParts(0x7f);
 // kMaxObjects objects or the index is out of range.
 bool addObject(Scene &scene, const ObjectSettings &object); // appended and selected
 bool removeObject(Scene &scene, int index);                 // its lights go to the object before it
+// The first place, on a grid 2.5 apart in the world's XY plane spiralling out from the
+// origin, that no object of `scene` occupies (none within 2 of it): where Add and Duplicate
+// put a new object.
+glm::vec3 freePlace(const Scene &scene);
 // Puts the objects side by side along world X, 2.5 apart, centred on the origin.
 void placeInRow(std::vector<ObjectSettings> &objects);
 // The camera at its default angles, aimed at the middle of the scene's visible objects and

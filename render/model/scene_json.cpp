@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <type_traits>
 
 namespace lb {
@@ -234,7 +235,8 @@ void readLight(Reader &r, const QJsonObject &l, const QString &path, Light &ligh
     }
     r.number(spot, "cutoff", spotPath, light.spot.cutoffDegrees, 0.0f, limits::kMaxSpotCutoff);
     r.number(spot, "exponent", spotPath, light.spot.exponent, 0.0f, limits::kMaxSpotExponent);
-    r.number(l, "object", path, light.object, 0, kMaxObjects - 1);
+    // Checked against the objects once they are read (fromJson): one message, not two.
+    r.number(l, "object", path, light.object, 0, std::numeric_limits<int>::max());
 }
 
 void readMaterial(Reader &r, const QJsonObject &m, const QString &path, Material &material)

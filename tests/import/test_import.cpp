@@ -238,6 +238,23 @@ private slots:
         QCOMPARE(loader.objectCount(), 3);
         QCOMPARE(loader.mesh(0), torusMesh); // moved with its object, not rebuilt
         QCOMPARE(loader.mesh(1)->triangleCount(), std::size_t(12));
+
+        // A file opened for the last object, and the first removed while it loads: the file
+        // follows its object to its new place.
+        document.edit([](Scene &s) { s.selected = 2; });
+        loader.open(kCorpus + "/OBJ/spider.obj");
+        QVERIFY(loader.isLoading());
+        document.edit([](Scene &s) { removeObject(s, 0); });
+        QTRY_VERIFY(!loader.isLoading() && !loader.isBuilding());
+        QCOMPARE(int(document.scene().objects.size()), 2);
+        QVERIFY(document.scene().objects[1].meshPath.endsWith("spider.obj"));
+        QVERIFY(document.scene().objects[0].meshPath.endsWith("cube.ply"));
+        // Its own object removed: not loaded, and the message says why.
+        loader.open(kCorpus + "/OBJ/spider.obj");
+        document.edit([](Scene &s) { removeObject(s, 1); });
+        QTRY_VERIFY(!loader.isLoading() && !loader.isBuilding());
+        QVERIFY(finished.last().at(1).toString().contains("its object was removed"));
+        QCOMPARE(int(document.scene().objects.size()), 1);
     }
 
     void missingFileAndDirectory()

@@ -253,15 +253,16 @@ private slots:
         QCOMPARE(s.objects[1].material.shininess, limits::kMinShininess);
         QCOMPARE(s.objects[2].shape, Shape::Torus);
         QCOMPARE(s.selected, kMaxObjects - 1);
-        QCOMPARE(s.lights[1].object, kMaxObjects - 1); // 40 clamped to the largest index
+        QCOMPARE(s.lights[1].object, 0); // no object 40: the first one
         const QString all = ignored.join('\n');
         for (const char *path :
              {"objects[0] (not an object; a sphere in its place)",
               "objects[1].translation (not an array of numbers)",
               "objects[1].material.shininess (out of range, clamped)",
               "objects[32] (at most 32 objects", "selected (out of range, clamped)",
-              "lights[1].object (out of range, clamped)"})
+              "lights[1].object (no such object; the first one)"})
             QVERIFY2(all.contains(QLatin1String(path)), qPrintable(all));
+        QCOMPARE(all.count("lights[1].object"), 1); // one message, not two
 
         for (const QJsonValue &bad : {QJsonValue(3), QJsonValue(QJsonArray{})}) {
             json = Scene{}.toJson();
@@ -332,6 +333,27 @@ private slots:
             const glm::vec4 clip = f.projection * f.view * glm::vec4(o.translation, 1.0f);
             QVERIFY(std::abs(clip.x / clip.w) < 1.0f && std::abs(clip.y / clip.w) < 1.0f);
         }
+        // Add and Duplicate: the first free place near the centre, never inside another.
+        Scene two;
+        two.objects.resize(2);
+        two.objects[1].translation = {2.5f, 0, 0};
+        QCOMPARE(freePlace(two), glm::vec3(-2.5f, 0, 0));
+        Scene full;
+        while (int(full.objects.size()) < kMaxObjects) {
+            const glm::vec3 p = freePlace(full);
+            for (const ObjectSettings &o : full.objects)
+                QVERIFY(glm::length(o.translation - p) >= 2.0f);
+            ObjectSettings o;
+            o.translation = p;
+            QVERIFY(addObject(full, o));
+        }
+        frameScene(full); // 32 objects on the grid are all in sight
+        for (const ObjectSettings &o : full.objects) {
+            const Frames f = computeFrames(full, 16.0f / 9.0f);
+            const glm::vec4 clip = f.projection * f.view * glm::vec4(o.translation, 1.0f);
+            QVERIFY(std::abs(clip.x / clip.w) < 1.0f && std::abs(clip.y / clip.w) < 1.0f);
+        }
+
         Scene one;
         frameScene(one);
         QVERIFY(one.camera == OrbitCamera{}); // one unit object: the default view
