@@ -65,8 +65,11 @@ MeshActions::MeshActions(QMainWindow *window, SceneDocument *document, ObjectLoa
     connect(loader, &ObjectLoader::meshReady, this, &MeshActions::showSummary);
     // Another object selected: the status bar describes that one.
     connect(m_document, &SceneDocument::changed, this, [this](SceneParts parts) {
-        if (parts & ScenePart::Object)
+        const int selected = m_document->scene().selected;
+        if ((parts & ScenePart::Object) && selected != m_summaryObject) {
+            m_summaryObject = selected;
             showSummary();
+        }
     });
     showSummary();
 

@@ -65,7 +65,8 @@ private:
     ElidedLabel *m_summary;
     RecentFiles *m_recent;
     QPointer<QMessageBox> m_errorBox;
-    QString m_pendingPath; // the file being loaded, for the recent list
+    QString m_pendingPath;   // the file being loaded, for the recent list
+    int m_summaryObject = 0; // the object the status bar's summary describes
 };
 
 } // namespace lb

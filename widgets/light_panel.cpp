@@ -22,7 +22,7 @@ glm::vec3 LightColors::*const kColourMembers[3] = {&LightColors::ia, &LightColor
 }
 
 LightPanel::LightPanel(SceneDocument *document, QWidget *parent)
-    : ScenePanel(document, ScenePart::Lights | ScenePart::Object, parent)
+    : ScenePanel(document, ScenePart::Lights, parent)
 {
     auto *form = new QFormLayout(this);
     form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
@@ -34,6 +34,12 @@ LightPanel::LightPanel(SceneDocument *document, QWidget *parent)
     m_tabs->setToolTip(tr("Up to four lights; their terms add up. A shader that declares one "
                           "light (not an array) reads light 1"));
     connect(m_tabs, &QTabBar::currentChanged, this, [this] { refreshNow(); });
+    // The object list only names the objects a light may belong to: an object turning 60
+    // times a second does not refresh the whole panel.
+    connect(document, &SceneDocument::changed, this, [this](SceneParts parts) {
+        if (parts & ScenePart::Object)
+            refreshObjectNames(m_document->scene());
+    });
     form->addRow(m_tabs);
 
     m_enabled = new QCheckBox(tr("On"), this);
@@ -195,6 +201,23 @@ void LightPanel::setCurrentLight(int index)
     m_tabs->setCurrentIndex(index);
 }
 
+void LightPanel::refreshObjectNames(const Scene &scene)
+{
+    QStringList names;
+    for (const ObjectSettings &o : scene.objects)
+        names << displayName(o);
+    QStringList shown;
+    for (int i = 0; i < m_frameObject->count(); ++i)
+        shown << m_frameObject->itemText(i);
+    if (shown == names)
+        return;
+    const QSignalBlocker block(m_frameObject);
+    m_frameObject->clear();
+    m_frameObject->addItems(names);
+    const Light &light = scene.lights[std::size_t(currentLight())];
+    m_frameObject->setCurrentIndex(std::clamp(light.object, 0, int(names.size()) - 1));
+}
+
 void LightPanel::refresh(const Scene &scene)
 {
     // Lights that are off have grey tabs.
@@ -226,17 +249,8 @@ void LightPanel::refresh(const Scene &scene)
     setApplies(m_spotExponent, spot);
     const QSignalBlocker b1(m_w), b2(m_frame), b3(m_spotCutoff), b4(m_spotExponent),
         b5(m_frameObject);
-    QStringList names;
-    for (const ObjectSettings &o : scene.objects)
-        names << displayName(o);
-    QStringList shown;
-    for (int i = 0; i < m_frameObject->count(); ++i)
-        shown << m_frameObject->itemText(i);
-    if (shown != names) {
-        m_frameObject->clear();
-        m_frameObject->addItems(names);
-    }
-    m_frameObject->setCurrentIndex(std::clamp(light.object, 0, int(names.size()) - 1));
+    refreshObjectNames(scene);
+    m_frameObject->setCurrentIndex(std::clamp(light.object, 0, m_frameObject->count() - 1));
     setApplies(m_frameObject, light.frame == LightFrame::Object);
     m_spotCutoff->setValue(double(light.spot.cutoffDegrees));
     m_spotExponent->setValue(double(light.spot.exponent));

@@ -39,6 +39,8 @@ protected:
     void refresh(const Scene &scene) override;
 
 private:
+    // The "Of object" choices, when the objects' names changed.
+    void refreshObjectNames(const Scene &scene);
     Light &current(Scene &scene) const { return scene.lights[std::size_t(currentLight())]; }
 
     QTabBar *m_tabs;

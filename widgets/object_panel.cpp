@@ -29,7 +29,10 @@ ObjectPanel::ObjectPanel(SceneDocument *document, QWidget *parent)
                           "select one to edit it here and in the Material panel (or click it "
                           "in the view). Untick to hide; double-click to rename"));
     m_list->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed);
-    m_list->setMaximumHeight(m_list->fontMetrics().height() * 5 + 8);
+    // Five rows, fixed: a list that may grow makes the panel take all the dock's height and
+    // spreads the rest of the form apart.
+    m_list->setFixedHeight(m_list->fontMetrics().height() * 5 + 8);
+    m_list->setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Fixed);
     connect(m_list, &QListWidget::currentRowChanged, this, [this](int row) {
         if (row >= 0)
             edit([&](Scene &s) {
@@ -164,37 +167,36 @@ ObjectPanel::ObjectPanel(SceneDocument *document, QWidget *parent)
     auto *rotationRow = new QHBoxLayout;
     auto *scaleRow = new QHBoxLayout;
     auto *translationRow = new QHBoxLayout;
+    // One spin box per axis of a model transform vector of the selected object.
+    const auto axisSpin = [this](QHBoxLayout *row, glm::vec3 ObjectSettings::*member, int i,
+                                 double lo, double hi, int decimals, double step,
+                                 const QString &tip) {
+        QDoubleSpinBox *spin = makeSpin(lo, hi, decimals, step, tip);
+        connect(spin, &QDoubleSpinBox::valueChanged, this, [this, member, i](double v) {
+            edit([&](Scene &s) { (s.selectedObject().*member)[i] = float(v); });
+        });
+        row->addWidget(spin);
+        return spin;
+    };
     for (int i = 0; i < 3; ++i) {
-        QDoubleSpinBox *r = makeSpin(-360.0, 360.0, 1, 5.0,
-                                     tr("Rotation about %1 in degrees (model matrix; applied X, "
-                                        "then Y, then Z)")
-                                         .arg(axes[i]));
+        QDoubleSpinBox *r =
+            axisSpin(rotationRow, &ObjectSettings::rotationDegrees, i, -360.0, 360.0, 1, 5.0,
+                     tr("Rotation about %1 in degrees (model matrix; applied X, "
+                        "then Y, then Z)")
+                         .arg(axes[i]));
         r->setWrapping(true);
-        connect(r, &QDoubleSpinBox::valueChanged, this, [this, i](double v) {
-            edit([&](Scene &s) { s.selectedObject().rotationDegrees[i] = float(v); });
-        });
         m_rotation[std::size_t(i)] = r;
-        rotationRow->addWidget(r);
-
-        QDoubleSpinBox *sc = makeSpin(limits::kMinScale, limits::kMaxScale, 2, 0.1,
-                                      tr("Scale along %1. A non-uniform scale is why normals "
-                                         "need mNormals, the inverse transpose of mModelView")
-                                          .arg(axes[i]));
-        connect(sc, &QDoubleSpinBox::valueChanged, this, [this, i](double v) {
-            edit([&](Scene &s) { s.selectedObject().scale[i] = float(v); });
-        });
-        m_scale[std::size_t(i)] = sc;
-        scaleRow->addWidget(sc);
-
-        QDoubleSpinBox *t = makeSpin(-limits::kMaxCoordinate, limits::kMaxCoordinate, 2, 0.25,
-                                     tr("Translation along world %1: where the object's centre "
-                                        "lies (model matrix, applied last)")
-                                         .arg(axes[i]));
-        connect(t, &QDoubleSpinBox::valueChanged, this, [this, i](double v) {
-            edit([&](Scene &s) { s.selectedObject().translation[i] = float(v); });
-        });
-        m_translation[std::size_t(i)] = t;
-        translationRow->addWidget(t);
+        m_scale[std::size_t(i)] = axisSpin(
+            scaleRow, &ObjectSettings::scale, i, limits::kMinScale, limits::kMaxScale, 2, 0.1,
+            tr("Scale along %1. A non-uniform scale is why normals need mNormals, the "
+               "inverse transpose of mModelView")
+                .arg(axes[i]));
+        m_translation[std::size_t(i)] =
+            axisSpin(translationRow, &ObjectSettings::translation, i, -limits::kMaxCoordinate,
+                     limits::kMaxCoordinate, 2, 0.25,
+                     tr("Translation along world %1: where the object's centre lies (model matrix, "
+                        "applied last)")
+                         .arg(axes[i]));
     }
     form->addRow(tr("Rotate"), rotationRow);
     form->addRow(tr("Scale"), scaleRow);

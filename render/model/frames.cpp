@@ -11,6 +11,14 @@
 
 namespace lb {
 
+namespace {
+// Light `index`'s place in Frames' per-light arrays (a bad index reads light 1's).
+std::size_t lightSlot(int index)
+{
+    return std::size_t(std::clamp(index, 0, kMaxLights - 1));
+}
+} // namespace
+
 glm::mat4 modelMatrix(const ObjectSettings &object)
 {
     const glm::vec3 r = glm::radians(object.rotationDegrees);
@@ -61,7 +69,7 @@ bool mirrors(const Frames &frames)
 glm::vec4 lightInEye(const Frames &frames, int index, const glm::vec4 &light, LightFrame frame)
 {
     const bool directional = light.w == 0.0f;
-    const std::size_t i = std::size_t(std::clamp(index, 0, kMaxLights - 1));
+    const std::size_t i = lightSlot(index);
     glm::vec4 eye = light;
     switch (frame) {
     case LightFrame::Camera:
@@ -82,7 +90,7 @@ glm::vec4 lightInEye(const Frames &frames, int index, const glm::vec4 &light, Li
 glm::vec4 lightForDrawnObject(const Frames &frames, int index, const glm::vec4 &light,
                               LightFrame frame)
 {
-    const std::size_t i = std::size_t(std::clamp(index, 0, kMaxLights - 1));
+    const std::size_t i = lightSlot(index);
     if (frame != LightFrame::Object || frames.lightModelView[i] == frames.modelView)
         return light;
     // Into eye coordinates through the attached object, and back through the drawn one.
@@ -109,7 +117,7 @@ glm::vec4 eyeToFrame(const Frames &frames, int index, const glm::vec4 &eye, Ligh
 {
     if (frame == LightFrame::Camera)
         return eye;
-    const std::size_t i = std::size_t(std::clamp(index, 0, kMaxLights - 1));
+    const std::size_t i = lightSlot(index);
     const bool directional = eye.w == 0.0f;
     const bool world = frame == LightFrame::World;
     const glm::mat4 &there = directional ? (world ? frames.viewNormals : frames.lightNormals[i])

@@ -312,25 +312,17 @@ glm::vec3 freePlace(const Scene &scene)
         return std::none_of(scene.objects.begin(), scene.objects.end(),
                             [&](const auto &o) { return glm::length(o.translation - p) < 2.0f; });
     };
-    // Rings of the square spiral: ring r holds the cells at Chebyshev distance r, the row
-    // through the origin first (x, then -x), then the rows above and below.
+    // 0, 1, -1, 2, -2, ...: the k-th step out from the middle.
+    const auto outward = [](int k) { return k % 2 ? (k + 1) / 2 : -(k / 2); };
+    // Square rings around the origin, nearest first; in each, the row through the origin
+    // first, then those above and below, each from the middle out.
     for (int ring = 0; ring < 64; ++ring)
-        for (int dy = 0; dy <= ring; ++dy)
-            for (int sy : {1, -1}) {
-                if (dy == 0 && sy < 0)
-                    continue;
-                for (int dx = 0; dx <= ring; ++dx) {
-                    if (std::max(dx, dy) != ring)
-                        continue;
-                    for (int sx : {1, -1}) {
-                        if (dx == 0 && sx < 0)
-                            continue;
-                        const glm::vec3 p(kSpacing * float(sx * dx), kSpacing * float(sy * dy),
-                                          0.0f);
-                        if (free(p))
-                            return p;
-                    }
-                }
+        for (int ky = 0; ky <= 2 * ring; ++ky)
+            for (int kx = 0; kx <= 2 * ring; ++kx) {
+                const int x = outward(kx), y = outward(ky);
+                const glm::vec3 p(kSpacing * float(x), kSpacing * float(y), 0.0f);
+                if (std::max(std::abs(x), std::abs(y)) == ring && free(p))
+                    return p;
             }
     return glm::vec3(0.0f);
 }
