@@ -170,7 +170,17 @@ const OptionSpec kOptions[] = {
     {"model-translate", "X,Y,Z", "Where the object's centre lies in the world (-1000 to 1000)."},
     {"lighting", "on|off", "Lighting model on, or the diffuse colour unlit."},
     {"vertex-colors", "on|off", "Modulate ambient and diffuse by the vertex colours."},
-    {"texture", "on|off", "Modulate ambient and diffuse by the checker texture."},
+    {"texture", "on|off",
+     "Modulate ambient and diffuse by the texture: the image file, else the mesh file's own, "
+     "else the checker."},
+    {"texture-file", "FILE",
+     "An image (PNG, JPEG, any format Qt reads; at most 16384 x 16384) as the texture; "
+     "switches the texture on."},
+    {"texture-wrap", "repeat|clamp", "Texture coordinates outside 0 to 1 repeat or clamp."},
+    {"texture-filter", "nearest|linear", "The nearest texel or the four around, weighted."},
+    {"texture-mipmaps", "on|off",
+     "Read smaller copies of the texture where it is minified (trilinear with the linear "
+     "filter)."},
     {"show-light", "on|off", "Draw the light's marker."},
     {"screenshot", "FILE.png", "Open the window, save a screenshot once it has drawn, exit."},
     {"presentation", "",
@@ -469,6 +479,29 @@ void parseInto(const QCommandLineParser &parser, CommandLine &cl)
             const bool on = onOff(name, value(name));
             add([on, member = member](Scene &s) { s.shading.*member = on; });
         }
+    }
+    if (given("texture-file")) {
+        if (value("texture-file").isEmpty())
+            fail("texture-file", "needs a file name");
+        const QString path = QFileInfo(value("texture-file")).absoluteFilePath();
+        add([path](Scene &s) {
+            s.selectedObject().textureFile = path;
+            s.selectedObject().texture = true;
+        });
+    }
+    if (given("texture-wrap")) {
+        const TextureWrap v =
+            word("texture-wrap", value("texture-wrap"), parseTextureWrap, textureWrapNames());
+        add([v](Scene &s) { s.selectedObject().sampling.wrap = v; });
+    }
+    if (given("texture-filter")) {
+        const TextureFilter v = word("texture-filter", value("texture-filter"), parseTextureFilter,
+                                     textureFilterNames());
+        add([v](Scene &s) { s.selectedObject().sampling.filter = v; });
+    }
+    if (given("texture-mipmaps")) {
+        const bool on = onOff("texture-mipmaps", value("texture-mipmaps"));
+        add([on](Scene &s) { s.selectedObject().sampling.mipmaps = on; });
     }
     const std::pair<const char *, bool ObjectSettings::*> objectSwitches[] = {
         {"show-normals", &ObjectSettings::showNormals},

@@ -4,6 +4,7 @@
 #include "offscreen.h"
 #include "program_trial.h"
 #include "safe_write.h"
+#include "texture_file.h"
 
 #include <QElapsedTimer>
 #include <QEventLoop>
@@ -245,6 +246,19 @@ int runHeadless(const CommandLine &cl, const Scene &requested)
     }
     if (!paths.isEmpty())
         phases.mark("import");
+    // Image textures, each file once.
+    QStringList images;
+    for (const ObjectSettings &o : scene.objects)
+        if (!o.textureFile.isEmpty() && !images.contains(o.textureFile))
+            images << o.textureFile;
+    for (const QString &image : images) {
+        const TextureFileRead read = readTextureFile(image);
+        if (!read.texture) {
+            printLine("lightbench: " + read.error.toUtf8(), stderr);
+            return 1;
+        }
+        offscreen.addTextureFile(image, read.texture);
+    }
     if (cl.hasUserProgram()) {
         FILE *out = cl.check ? stdout : stderr;
         const ProgramBuild build = offscreen.useProgram(cl.vertexSource, cl.fragmentSource);

@@ -57,6 +57,12 @@ bool OffscreenRenderer::wasReset()
     return m_resetStatus.wasReset();
 }
 
+void OffscreenRenderer::addTextureFile(const QString &path, std::shared_ptr<const Texture> texture)
+{
+    if (texture)
+        m_textures[path] = std::move(texture);
+}
+
 void OffscreenRenderer::addMeshFile(std::shared_ptr<const MeshFile> file)
 {
     if (file)
@@ -88,9 +94,14 @@ const Mesh &OffscreenRenderer::objectMesh(const Scene &scene, int index)
     if (m_keys.size() < scene.objects.size())
         m_keys.resize(scene.objects.size());
     std::optional<ObjectMeshKey> &built = m_keys[std::size_t(index)];
+    std::shared_ptr<const Texture> texture = file ? file->texture : nullptr;
+    if (const auto image = m_textures.find(object.textureFile); image != m_textures.end())
+        texture = image->second;
     if (key != built || !m_renderer.objectMesh(index)) {
-        m_renderer.setObject(index, buildObjectMesh(object, file), file ? file->texture : nullptr);
+        m_renderer.setObject(index, buildObjectMesh(object, file), texture);
         built = key;
+    } else {
+        m_renderer.setObject(index, m_renderer.sharedObjectMesh(index), texture);
     }
     return *m_renderer.objectMesh(index);
 }

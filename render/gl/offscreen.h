@@ -49,6 +49,9 @@ public:
     // A loaded file that the scene's objects may name (by its path); an object naming a
     // file not added here is drawn as its shape.
     void addMeshFile(std::shared_ptr<const MeshFile> file);
+    // An image file the scene's objects may name as their texture (ObjectSettings::
+    // textureFile); an object naming one not added here shows what it would without it.
+    void addTextureFile(const QString &path, std::shared_ptr<const Texture> texture);
     // The mesh drawn for object `index` of `scene`, built when its settings ask for another
     // one. Not after dropCpuMeshes().
     const Mesh &objectMesh(const Scene &scene, int index = 0);
@@ -70,8 +73,9 @@ private:
     std::unique_ptr<QOpenGLFramebufferObject> m_fbo;
     Renderer m_renderer;
     QSize m_size;
-    std::map<QString, std::shared_ptr<const MeshFile>> m_files; // by path
-    std::vector<std::optional<ObjectMeshKey>> m_keys;           // by object
+    std::map<QString, std::shared_ptr<const MeshFile>> m_files;   // by path
+    std::map<QString, std::shared_ptr<const Texture>> m_textures; // by path
+    std::vector<std::optional<ObjectMeshKey>> m_keys;             // by object
     bool m_meshGiven = false;
     bool m_gpuOnly = false; // dropCpuMeshes() was called
     // Builds the objects' meshes for `scene` unless given or only on the GPU.

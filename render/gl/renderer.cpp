@@ -321,6 +321,7 @@ void Renderer::drawObjects(const Scene &scene, const BuiltProgram &program, floa
         uploadUniforms(*this, program.build.uniforms, scene, frames);
         glActiveTexture(GL_TEXTURE0);
         glBindTexture(GL_TEXTURE_2D, o.texture ? o.textureGl.id() : m_checkerTexture.id());
+        applySampling(*this, object.sampling); // objects sharing the checker differ in this
         if (object.cullBackFaces) {
             glEnable(GL_CULL_FACE);
             glCullFace(GL_BACK);

@@ -27,7 +27,6 @@ ObjectLoader::ObjectLoader(SceneDocument *document, QObject *parent)
         const std::vector<ObjectSettings> &now = m_document->scene().objects;
         if (now.size() < m_objectsBefore.size())
             followRemoval(now);
-        m_objectsBefore = now;
         sync();
     });
     connect(&m_import, &ImportProcess::progress, this,
@@ -35,7 +34,7 @@ ObjectLoader::ObjectLoader(SceneDocument *document, QObject *parent)
                 emit loadProgress(0.9 * fraction, stage); // the build takes the last tenth
             });
     connect(&m_import, &ImportProcess::finished, this, &ObjectLoader::imported);
-    m_objectsBefore = document->scene().objects;
+    connect(&m_textures, &TextureFiles::decoded, this, &ObjectLoader::textureDecoded);
     sync();
 }
 
@@ -65,8 +64,66 @@ std::shared_ptr<const Mesh> ObjectLoader::mesh(int index) const
 
 std::shared_ptr<const Texture> ObjectLoader::texture(int index) const
 {
-    index = resolve(index);
+    return drawnTexture(resolve(index));
+}
+
+std::shared_ptr<const Texture> ObjectLoader::drawnTexture(int index) const
+{
+    const std::vector<ObjectSettings> &objects = m_document->scene().objects;
+    if (index < int(objects.size()) && !objects[std::size_t(index)].textureFile.isEmpty())
+        if (std::shared_ptr<const Texture> image =
+                m_textures.find(objects[std::size_t(index)].textureFile))
+            return image;
     return index < int(m_slots.size()) ? m_slots[std::size_t(index)].texture : nullptr;
+}
+
+void ObjectLoader::emitChanged()
+{
+    const std::size_t n = m_slots.size();
+    m_sent.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        std::pair drawn{m_slots[i].mesh, drawnTexture(int(i))};
+        if (m_sent[i] == drawn)
+            continue;
+        m_sent[i] = drawn;
+        emit meshReady(int(i), drawn.first, drawn.second);
+    }
+}
+
+void ObjectLoader::openTexture(const QString &path)
+{
+    m_textureOpen = TextureOpen{path, m_document->scene().selected};
+    m_textures.request(path); // textureDecoded() follows, maybe at once
+}
+
+void ObjectLoader::textureDecoded(const QString &path, const TextureFileRead &read)
+{
+    const bool opened = m_textureOpen && m_textureOpen->path == path;
+    const int index = opened ? m_textureOpen->index : -1;
+    if (opened)
+        m_textureOpen.reset();
+    const std::vector<ObjectSettings> &objects = m_document->scene().objects;
+    const bool named = std::any_of(objects.begin(), objects.end(),
+                                   [&](const auto &o) { return o.textureFile == path; });
+    const bool busy = std::exchange(m_busy, true); // synced below
+    if (read.texture && opened && index < int(objects.size())) {
+        m_document->edit([&](Scene &s) {
+            ObjectSettings &o = s.objects[std::size_t(index)];
+            o.textureFile = path;
+            o.texture = true;
+        });
+    } else if (!read.texture && named) {
+        // Named by a scene file or a restart: those objects show what they would without it.
+        m_document->edit([&](Scene &s) {
+            for (ObjectSettings &o : s.objects)
+                if (o.textureFile == path)
+                    o.textureFile.clear();
+        });
+    }
+    m_busy = busy;
+    if (opened || !read.texture)
+        emit textureFinished(bool(read.texture), read.texture ? read.summary : read.error);
+    sync();
 }
 
 std::shared_ptr<const MeshFile> ObjectLoader::loadedFile(const QString &path) const
@@ -110,7 +167,7 @@ void ObjectLoader::open(const QString &path)
 void ObjectLoader::followRemoval(const std::vector<ObjectSettings> &now)
 {
     const bool opening = m_loading || (m_job && m_job->commit);
-    if (!opening && !m_job)
+    if (!opening && !m_job && !m_textureOpen)
         return;
     // Which one went: the first place where the lists differ.
     int removed = -1;
@@ -134,6 +191,11 @@ void ObjectLoader::followRemoval(const std::vector<ObjectSettings> &now)
     if (m_loading && !follow(m_loadingObject)) {
         m_removedWhileLoading = true;
         m_import.cancel();
+    }
+    if (m_textureOpen && !follow(m_textureOpen->index)) {
+        emit textureFinished(false, tr("%1: not used: its object was removed")
+                                        .arg(QFileInfo(m_textureOpen->path).fileName()));
+        m_textureOpen.reset();
     }
 }
 
@@ -245,17 +307,28 @@ void ObjectLoader::matchSlots()
             take(i, i);
     if (old.size() != n)
         emit objectCountChanged(int(n));
-    for (std::size_t i = 0; i < n; ++i)
-        if (i >= old.size() || m_slots[i].mesh != old[i].mesh)
-            emit meshReady(int(i), m_slots[i].mesh, m_slots[i].texture);
+    emitChanged();
 }
 
 void ObjectLoader::sync()
 {
+    const Scene &scene = m_document->scene();
+    m_objectsBefore = scene.objects;
+    // Images: those named and not in yet are decoded; the rest let go.
+    QStringList images;
+    for (const ObjectSettings &object : scene.objects)
+        if (!object.textureFile.isEmpty()) {
+            images << object.textureFile;
+            if (!m_textures.find(object.textureFile))
+                m_textures.request(object.textureFile);
+        }
+    if (m_textureOpen)
+        images << m_textureOpen->path;
+    m_textures.keepOnly(images);
+
     matchSlots(); // also while a build runs: the view draws each object's own mesh meanwhile
     if (m_job)
         return; // one build at a time; finishBuild() syncs again with the newest scene
-    const Scene &scene = m_document->scene();
     for (int i = 0; i < int(scene.objects.size()); ++i) {
         const ObjectSettings &object = scene.objects[std::size_t(i)];
         std::shared_ptr<const MeshFile> file;
@@ -352,8 +425,7 @@ void ObjectLoader::finishBuild(const std::shared_ptr<Job> &job)
         }
     }
     if (built)
-        emit meshReady(index, m_slots[std::size_t(index)].mesh,
-                       m_slots[std::size_t(index)].texture);
+        emitChanged();
     if (job->commit)
         emit loadFinished(built, built ? summary() : tr("Loading cancelled"));
     sync(); // whatever the scene asked for meanwhile

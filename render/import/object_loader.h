@@ -9,6 +9,7 @@
 #include "import_process.h"
 #include "object_mesh.h"
 #include "scene_document.h"
+#include "texture_files.h"
 
 #include <QObject>
 #include <QThreadPool>
@@ -16,6 +17,7 @@
 #include <atomic>
 #include <map>
 #include <memory>
+#include <optional>
 
 namespace lb {
 
@@ -32,6 +34,11 @@ public:
     // "Use the mesh file's material": switches it for the selected object and, with its
     // file on screen, takes the file's Ka, Kd, Ks and shininess in the same edit.
     void setAdoptFileMaterial(bool on);
+    // Decodes an image file (off the GUI thread); on success it becomes the texture of the
+    // object selected now, with its texture switch on. textureFinished() follows; a file that
+    // fails changes nothing.
+    void openTexture(const QString &path);
+    bool isDecodingTexture() const { return m_textures.isDecoding(); }
     // Stops a running open(): the helper is killed, a build in progress dropped.
     void cancel();
     bool isLoading() const { return m_loading; }
@@ -40,7 +47,8 @@ public:
     const ImportLimits &limits() const { return m_limits; }
 
     // Object `index`'s loaded file (nullptr while it is a shape) and the mesh and texture
-    // being drawn for it; -1: the selected object.
+    // being drawn for it (its image file, else its mesh file's texture, else nullptr: the
+    // checker); -1: the selected object.
     const MeshFile *file(int index = -1) const;
     std::shared_ptr<const Mesh> mesh(int index = -1) const;
     std::shared_ptr<const Texture> texture(int index = -1) const;
@@ -60,6 +68,10 @@ signals:
     void loadProgress(double fraction, const QString &stage);
     // `message`: the summary on success, "FILE: what went wrong" otherwise.
     void loadFinished(bool ok, const QString &message);
+    // An image file opened, or one a scene names that could not be read: "brick.png: 512 x
+    // 512, 10 mipmap levels", or "FILE: what went wrong" (the scene's objects then show what
+    // they showed without it).
+    void textureFinished(bool ok, const QString &message);
 
 private:
     struct Job
@@ -82,6 +94,10 @@ private:
     };
 
     void sync();
+    // Sends meshReady() for each object whose mesh or texture differs from what it last sent.
+    void emitChanged();
+    std::shared_ptr<const Texture> drawnTexture(int index) const;
+    void textureDecoded(const QString &path, const TextureFileRead &read);
     // Slots follow the objects when the list changes: a slot whose key an object still
     // wants is kept for it, wherever it moved to.
     void matchSlots();
@@ -102,6 +118,16 @@ private:
     int m_loadingObject = 0; // the object the file being read is for
     std::map<QString, std::shared_ptr<const MeshFile>> m_files; // loaded, by path
     std::vector<Slot> m_slots;                                  // by object
+    // What meshReady() last said of each object.
+    using Drawn = std::pair<std::shared_ptr<const Mesh>, std::shared_ptr<const Texture>>;
+    std::vector<std::optional<Drawn>> m_sent;
+    TextureFiles m_textures;
+    struct TextureOpen
+    {
+        QString path;
+        int index = 0; // the object it is for
+    };
+    std::optional<TextureOpen> m_textureOpen;
     // The loader's own edits and imports: while one runs, the document's changed() and a
     // replaced import's cancellation are not acted on (each site syncs itself afterwards).
     bool m_busy = false;

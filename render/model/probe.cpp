@@ -43,10 +43,61 @@ std::optional<Hit> intersect(const glm::vec3 &origin, const glm::vec3 &dir, cons
     return Hit{t, glm::vec3(1.0f - u - v, u, v)};
 }
 
+// Where the ray meets the plane of triangle abc, as barycentric weights (outside the
+// triangle too); nothing when the ray runs along the plane.
+std::optional<glm::vec3> planeWeights(const glm::vec3 &origin, const glm::vec3 &dir,
+                                      const glm::vec3 &a, const glm::vec3 &b, const glm::vec3 &c)
+{
+    const glm::vec3 e1 = b - a, e2 = c - a;
+    const glm::vec3 p = glm::cross(dir, e2);
+    const float det = glm::dot(e1, p);
+    if (std::abs(det) < 1e-20f)
+        return std::nullopt;
+    const glm::vec3 s = origin - a;
+    const float u = glm::dot(s, p) / det;
+    const float v = glm::dot(dir, glm::cross(s, e1)) / det;
+    return glm::vec3(1.0f - u - v, u, v);
+}
+
+// The ray through a point of the view, in GL window coordinates (origin bottom-left), in eye
+// coordinates: its origin on the near plane and its direction to the far plane.
+std::pair<glm::vec3, glm::vec3> eyeRay(const glm::mat4 &unproject, glm::vec2 window, QSize size)
+{
+    const float ndcX = 2.0f * window.x / float(size.width()) - 1.0f;
+    const float ndcY = 2.0f * window.y / float(size.height()) - 1.0f;
+    const glm::vec4 nearP = unproject * glm::vec4(ndcX, ndcY, -1.0f, 1.0f);
+    const glm::vec4 farP = unproject * glm::vec4(ndcX, ndcY, 1.0f, 1.0f);
+    const glm::vec3 origin = glm::vec3(nearP) / nearP.w;
+    return {origin, glm::vec3(farP) / farP.w - origin};
+}
+
 template <typename T>
 T interpolate(const std::vector<T> &values, const std::uint32_t *tri, const glm::vec3 &w)
 {
     return w.x * values[tri[0]] + w.y * values[tri[1]] + w.z * values[tri[2]];
+}
+
+// GL's level of detail where the pixel containing `pixel` (top-left origin) shows triangle
+// `tri`: the texture coordinate's change from the first pixel of the pixel's 2x2 quad to its
+// neighbours in x and in y, as GPUs take derivatives (one level of detail per quad). The
+// neighbours' coordinates are those of the triangle's plane, also where they lie outside it.
+float levelOfDetail(const Frames &frames, const glm::vec3 (&corners)[3], const Mesh &mesh,
+                    const std::uint32_t *tri, const Texture &texture, QSize size, QPointF pixel)
+{
+    const int x = int(std::floor(pixel.x()));
+    const int y = size.height() - 1 - int(std::floor(pixel.y())); // GL rows count from below
+    const glm::vec2 first(float(x & ~1) + 0.5f, float(y & ~1) + 0.5f);
+    const glm::mat4 unproject = glm::inverse(frames.projection);
+    glm::vec2 uv[3];
+    const glm::vec2 steps[3] = {{0.0f, 0.0f}, {1.0f, 0.0f}, {0.0f, 1.0f}};
+    for (int k = 0; k < 3; ++k) {
+        const auto [origin, dir] = eyeRay(unproject, first + steps[k], size);
+        const auto w = planeWeights(origin, dir, corners[0], corners[1], corners[2]);
+        if (!w)
+            return 0.0f; // the plane seen edge-on: no pixel shows it anyway
+        uv[k] = interpolate(mesh.uvs, tri, *w);
+    }
+    return texture.levelOfDetail(uv[1] - uv[0], uv[2] - uv[0]);
 }
 
 } // namespace
@@ -76,13 +127,9 @@ ProbeResult probePixel(const Scene &scene, const ProbedObjects &objects, QSize s
     const Frames view = computeFrames(scene, aspect);
 
     // The pixel centre on the near and far planes, back through the projection.
-    const float ndcX = 2.0f * (float(pixel.x()) + 0.5f) / float(size.width()) - 1.0f;
-    const float ndcY = 1.0f - 2.0f * (float(pixel.y()) + 0.5f) / float(size.height());
-    const glm::mat4 unproject = glm::inverse(view.projection);
-    glm::vec4 nearP = unproject * glm::vec4(ndcX, ndcY, -1.0f, 1.0f);
-    glm::vec4 farP = unproject * glm::vec4(ndcX, ndcY, 1.0f, 1.0f);
-    const glm::vec3 origin = glm::vec3(nearP) / nearP.w;
-    const glm::vec3 dir = glm::vec3(farP) / farP.w - origin;
+    const auto [origin, dir] =
+        eyeRay(glm::inverse(view.projection),
+               glm::vec2(float(pixel.x()) + 0.5f, float(size.height() - pixel.y()) - 0.5f), size);
 
     // Eye space is shared by every object: the nearest hit over all of them is the one drawn.
     float nearest = std::numeric_limits<float>::max();
@@ -147,9 +194,14 @@ ProbeResult probeSurface(const Scene &scene, int object, const Mesh &mesh, const
     // constant attribute values the renderer gives the GPU.
     if (scene.shading.vertexColors && !mesh.colors.empty())
         r.base *= interpolate(mesh.colors, tri, w);
+    const glm::vec2 pixel = pixelOf(frames, r.position, float(size.width()), float(size.height()));
+    r.pixel = QPointF(pixel.x, pixel.y);
+    if (!mesh.uvs.empty()) {
+        r.uv = interpolate(mesh.uvs, tri, w);
+        r.lod = levelOfDetail(frames, corners, mesh, tri, texture, size, r.pixel);
+    }
     if (settings.texture)
-        r.base *=
-            texture.sample(mesh.uvs.empty() ? glm::vec2(0.0f) : interpolate(mesh.uvs, tri, w));
+        r.base *= texture.sample(r.uv, settings.sampling, r.lod);
 
     for (int i = 0; i < kMaxLights; ++i) {
         if (!scene.lights[std::size_t(i)].enabled)
@@ -195,8 +247,6 @@ ProbeResult probeSurface(const Scene &scene, int object, const Mesh &mesh, const
         colour = shadedColor(ambientDiffuse, specular, r.base);
     }
     r.reference = glm::clamp(colour, 0.0f, 1.0f);
-    const glm::vec2 pixel = pixelOf(frames, r.position, float(size.width()), float(size.height()));
-    r.pixel = QPointF(pixel.x, pixel.y);
     return r;
 }
 

@@ -34,6 +34,10 @@ struct ProbeResult
     std::vector<ProbeLight> lights; // each enabled light's vectors and terms
     LightingSum total;              // their sum at this point (the Phong-shading view)
     glm::vec3 base{1.0f};           // vertex colour x texture, white where switched off
+    // The texture coordinate at the point and GL's level of detail there (log2 of the texels
+    // one pixel step crosses, from the pixel's 2x2 quad, as the GPU takes it).
+    glm::vec2 uv{0.0f};
+    float lod = 0.0f;
     glm::vec3 reference{0.0f};      // the pixel in the active shading mode, clamped to [0, 1]
     QPointF pixel;                  // where the point lies in the view, top-left origin
 };

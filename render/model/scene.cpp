@@ -39,6 +39,11 @@ constexpr NameTable<CompareMode, 4> kCompareModes{{{CompareMode::Off, "off"},
                                                    {CompareMode::Wipe, "wipe"},
                                                    {CompareMode::Difference, "difference"}}};
 
+constexpr NameTable<TextureWrap, 2> kTextureWraps{
+    {{TextureWrap::Repeat, "repeat"}, {TextureWrap::Clamp, "clamp"}}};
+constexpr NameTable<TextureFilter, 2> kTextureFilters{
+    {{TextureFilter::Nearest, "nearest"}, {TextureFilter::Linear, "linear"}}};
+
 constexpr NameTable<ShowChoice, 9> kShowChoices{{{ShowChoice::Colour, "colour"},
                                                  {ShowChoice::Normal, "normal"},
                                                  {ShowChoice::Light, "light"},
@@ -79,10 +84,12 @@ bool sameExceptMaterial(const ObjectSettings &a, const ObjectSettings &b)
 {
     return std::tie(a.name, a.visible, a.shape, a.tessellation, a.meshPath, a.normals,
                     a.creaseDegrees, a.showNormals, a.cullBackFaces, a.adoptFileMaterial,
-                    a.rotationDegrees, a.scale, a.translation, a.autoRotate, a.texture) ==
+                    a.rotationDegrees, a.scale, a.translation, a.autoRotate, a.texture,
+                    a.textureFile, a.sampling) ==
            std::tie(b.name, b.visible, b.shape, b.tessellation, b.meshPath, b.normals,
                     b.creaseDegrees, b.showNormals, b.cullBackFaces, b.adoptFileMaterial,
-                    b.rotationDegrees, b.scale, b.translation, b.autoRotate, b.texture);
+                    b.rotationDegrees, b.scale, b.translation, b.autoRotate, b.texture,
+                    b.textureFile, b.sampling);
 }
 
 } // namespace
@@ -119,6 +126,14 @@ QString toName(ShowChoice v)
 {
     return nameOf(kShowChoices, v);
 }
+QString toName(TextureWrap v)
+{
+    return nameOf(kTextureWraps, v);
+}
+QString toName(TextureFilter v)
+{
+    return nameOf(kTextureFilters, v);
+}
 std::optional<LightFrame> parseLightFrame(const QString &s)
 {
     return valueOf(kFrames, s);
@@ -151,6 +166,14 @@ std::optional<ShowChoice> parseShowChoice(const QString &s)
 {
     return valueOf(kShowChoices, s);
 }
+std::optional<TextureWrap> parseTextureWrap(const QString &s)
+{
+    return valueOf(kTextureWraps, s);
+}
+std::optional<TextureFilter> parseTextureFilter(const QString &s)
+{
+    return valueOf(kTextureFilters, s);
+}
 QStringList lightFrameNames()
 {
     return namesOf(kFrames);
@@ -182,6 +205,14 @@ QStringList compareModeNames()
 QStringList showChoiceNames()
 {
     return namesOf(kShowChoices);
+}
+QStringList textureWrapNames()
+{
+    return namesOf(kTextureWraps);
+}
+QStringList textureFilterNames()
+{
+    return namesOf(kTextureFilters);
 }
 
 Lights defaultLights()

@@ -4,6 +4,7 @@
 
 #include "camera.h"
 #include "lighting.h"
+#include "texture_sampling.h"
 
 #include <QFlags>
 #include <QJsonObject>
@@ -91,7 +92,11 @@ struct ObjectSettings
     glm::vec3 translation{0.0f}; // where the object's origin lies in the world
     bool autoRotate = false;
     Material material;
-    bool texture = false; // the texture switch: the checker, or the mesh file's texture
+    // The texture switch: the image file when one is named, else the mesh file's texture,
+    // else the checker.
+    bool texture = false;
+    QString textureFile; // an image (absolute path); empty: none
+    TextureSampling sampling;
 };
 
 // A scene holds from one to this many objects.
@@ -205,6 +210,8 @@ QString toName(Shape v);
 QString toName(NormalMode v);
 QString toName(CompareMode v);
 QString toName(ShowChoice v);
+QString toName(TextureWrap v);
+QString toName(TextureFilter v);
 std::optional<LightFrame> parseLightFrame(const QString &s);
 std::optional<Shading> parseShading(const QString &s);
 std::optional<SpecularModel> parseSpecularModel(const QString &s);
@@ -213,6 +220,8 @@ std::optional<Shape> parseShape(const QString &s);
 std::optional<NormalMode> parseNormalMode(const QString &s);
 std::optional<CompareMode> parseCompareMode(const QString &s);
 std::optional<ShowChoice> parseShowChoice(const QString &s);
+std::optional<TextureWrap> parseTextureWrap(const QString &s);
+std::optional<TextureFilter> parseTextureFilter(const QString &s);
 QStringList lightFrameNames();
 QStringList shadingNames();
 QStringList specularModelNames();
@@ -221,6 +230,8 @@ QStringList shapeNames();
 QStringList normalModeNames();
 QStringList compareModeNames();
 QStringList showChoiceNames();
+QStringList textureWrapNames();
+QStringList textureFilterNames();
 
 } // namespace lb
 

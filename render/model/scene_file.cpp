@@ -40,14 +40,16 @@ ProgramText programText(const QJsonObject &p, QStringList &ignored)
 QByteArray sceneFileBytes(const SceneFile &file, const QDir &dir)
 {
     QJsonObject root = file.scene.toJson();
-    // Mesh files are stored relative to the scene file, so that a folder moves as a whole.
+    // Mesh and image files are stored relative to the scene file, so that a folder moves as a
+    // whole.
     QJsonArray objects = root["objects"].toArray();
     for (int i = 0; i < int(objects.size()); ++i) {
-        const QString &mesh = file.scene.objects[std::size_t(i)].meshPath;
-        if (mesh.isEmpty())
-            continue;
+        const ObjectSettings &o = file.scene.objects[std::size_t(i)];
         QJsonObject object = objects[i].toObject();
-        object["mesh"] = dir.relativeFilePath(mesh);
+        if (!o.meshPath.isEmpty())
+            object["mesh"] = dir.relativeFilePath(o.meshPath);
+        if (!o.textureFile.isEmpty())
+            object["textureFile"] = dir.relativeFilePath(o.textureFile);
         objects[i] = object;
     }
     root["objects"] = objects;
@@ -109,8 +111,9 @@ SceneFileRead parseSceneFile(const QByteArray &bytes, const QDir &dir, const QSt
 
     file.scene = Scene::fromJson(root, &read.ignored);
     for (ObjectSettings &object : file.scene.objects)
-        if (!object.meshPath.isEmpty())
-            object.meshPath = QDir::cleanPath(dir.absoluteFilePath(object.meshPath));
+        for (QString *path : {&object.meshPath, &object.textureFile})
+            if (!path->isEmpty())
+                *path = QDir::cleanPath(dir.absoluteFilePath(*path));
     read.file = file;
     return read;
 }

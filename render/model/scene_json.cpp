@@ -74,6 +74,10 @@ QJsonObject objectJson(const ObjectSettings &object)
     ob["adoptFileMaterial"] = object.adoptFileMaterial;
     ob["material"] = materialJson(object.material);
     ob["texture"] = object.texture;
+    ob["textureFile"] = object.textureFile;
+    ob["textureWrap"] = toName(object.sampling.wrap);
+    ob["textureFilter"] = toName(object.sampling.filter);
+    ob["textureMipmaps"] = object.sampling.mipmaps;
     return ob;
 }
 
@@ -273,6 +277,10 @@ void readObject(Reader &r, const QJsonObject &ob, const QString &path, ObjectSet
         readMaterial(r, r.object(ob, "material", Reader::join(path, "material")),
                      Reader::join(path, "material"), object.material);
     r.boolean(ob, "texture", path, object.texture);
+    r.text(ob, "textureFile", path, object.textureFile);
+    r.word(ob, "textureWrap", path, parseTextureWrap, object.sampling.wrap);
+    r.word(ob, "textureFilter", path, parseTextureFilter, object.sampling.filter);
+    r.boolean(ob, "textureMipmaps", path, object.sampling.mipmaps);
 }
 
 } // namespace

@@ -56,6 +56,29 @@ bool sameSideOfEveryCone(const ProbeResult &a, const ProbeResult &b)
     return true;
 }
 
+// Whether the texture lookup at `p` sits by a step: the nearest filter's texel edges and
+// the nearest-mipmap level switches are steps in colour, where the GPU's coordinate (or level
+// of detail) and the probe's, a rounding apart, may rightly fall on different sides.
+bool byATextureStep(const ProbeResult &p, const ObjectSettings &object, const Texture &texture)
+{
+    if (!object.texture || object.sampling.filter != TextureFilter::Nearest)
+        return false;
+    const Texture::Levels levels = texture.levelsAt(p.lod, object.sampling);
+    if (object.sampling.mipmaps && p.lod > 0.0f) {
+        const float toSwitch = std::abs(p.lod - 0.5f - std::round(p.lod - 0.5f));
+        if (toSwitch < 0.05f)
+            return true;
+    }
+    for (const int level : {levels.first, levels.second}) {
+        const QImage &image = texture.level(level);
+        const glm::vec2 texels = p.uv * glm::vec2(float(image.width()), float(image.height()));
+        for (const float t : {texels.x, texels.y})
+            if (std::abs(t - std::round(t)) < 0.02f)
+                return true;
+    }
+    return false;
+}
+
 } // namespace
 
 Comparison compareWithReference(OffscreenRenderer &offscreen, const Scene &scene,
@@ -85,7 +108,10 @@ Comparison compareWithReference(OffscreenRenderer &offscreen, const Scene &scene
                            glm::dot(n.normal, p.normal) > 0.98f && sameSideOfEveryCone(n, p) &&
                            (!flat || n.triangle == p.triangle);
             }
-            if (!interior)
+            static const Texture checker;
+            const Texture *texture = objects[std::size_t(p.object)].texture;
+            if (!interior || byATextureStep(p, scene.objects[std::size_t(p.object)],
+                                            texture ? *texture : checker))
                 continue;
             ++c.compared;
             if (p.total.specular.r > 0.05f)

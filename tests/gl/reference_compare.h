@@ -33,7 +33,8 @@ int largestDifference(const QImage &a, const QImage &b);
 // Compares a grid of pixels. Pixels on a silhouette or a crease (a neighbour two pixels away
 // misses the object or sees a surface turned by more than ~11 degrees) are skipped: there
 // the rasteriser and the ray may rightly pick different triangles; so are pixels by the edge
-// of a spotlight's cone (a neighbour on its other side).
+// of a spotlight's cone (a neighbour on its other side), and by a nearest-filtered texture's
+// texel edges and level switches.
 Comparison compareWithReference(OffscreenRenderer &offscreen, const Scene &scene,
                                 const QImage &frame, int step = 5);
 

@@ -296,7 +296,7 @@ private slots:
             glm::lessThan(glm::abs(m.kd - glm::vec3(0.2f, 0.4f, 0.6f)), glm::vec3(1e-5f))));
         QCOMPARE(m.shininess, 50.0f);
         QVERIFY(loader.texture());
-        const glm::vec3 texel = loader.texture()->sample({0.5f, 0.5f});
+        const glm::vec3 texel = loader.texture()->sample({0.5f, 0.5f}, lb::TextureSampling{});
         QVERIFY(std::abs(texel.g - 200.0f / 255.0f) < 1e-3f);
         QVERIFY(!loader.file()->hasNormals()); // none in the file: generated
         QCOMPARE(loader.mesh()->normals.size(), loader.mesh()->vertexCount());

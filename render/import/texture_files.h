@@ -1,0 +1,44 @@
+#pragma once
+// Image files decoded for textures, off the GUI thread, one at a time, and kept by path while
+// an object names them (each file decoded once, however many objects show it).
+
+#include "texture_file.h"
+
+#include <QObject>
+#include <QStringList>
+#include <QThreadPool>
+
+#include <map>
+#include <memory>
+
+namespace lb {
+
+class TextureFiles : public QObject
+{
+    Q_OBJECT
+public:
+    explicit TextureFiles(QObject *parent = nullptr);
+    ~TextureFiles() override; // waits for a decode in flight
+
+    // The decoded image of `path`, or nullptr (not asked for, being decoded, or failed).
+    std::shared_ptr<const Texture> find(const QString &path) const;
+    // Decodes `path` on the worker unless it is in already or queued; decoded() follows
+    // (at once, from inside, when it is in).
+    void request(const QString &path);
+    bool isDecoding() const { return !m_decoding.isEmpty(); }
+    // Lets go of the images of paths not in `keep` (requests still queued for them too).
+    void keepOnly(const QStringList &keep);
+
+signals:
+    void decoded(const QString &path, const lb::TextureFileRead &read);
+
+private:
+    void startNext();
+
+    QThreadPool m_pool;
+    QString m_decoding; // the path on the worker; empty when idle
+    QStringList m_queue;
+    std::map<QString, TextureFileRead> m_images; // decoded ones only
+};
+
+} // namespace lb

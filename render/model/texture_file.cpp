@@ -1,0 +1,63 @@
+#include "texture_file.h"
+
+#include "bounded_read.h"
+
+#include <QFileInfo>
+#include <QImageReader>
+
+namespace lb {
+
+TextureFileRead readTextureFile(const QString &path)
+{
+    TextureFileRead read;
+    const QString name = QFileInfo(path).fileName();
+    read.error = unreadableFile(path, {"an image", kMaxTextureFileBytes});
+    if (!read.error.isEmpty())
+        return read;
+    QImageReader reader(path);
+    reader.setAutoTransform(true); // a photo's EXIF orientation, as viewers show it
+    if (!reader.canRead()) {
+        read.error = QObject::tr("%1: not an image (%2)")
+                         .arg(name, reader.error() == QImageReader::UnsupportedFormatError
+                                        ? QObject::tr("the formats read are %1")
+                                              .arg(QString::fromLatin1(
+                                                  QImageReader::supportedImageFormats().join(", ")))
+                                        : reader.errorString());
+        return read;
+    }
+    const QSize size = reader.size(); // from the header, before anything is decoded
+    if (size.width() > kMaxTextureFileSide || size.height() > kMaxTextureFileSide) {
+        read.error = QObject::tr("%1: %2 x %3 texels is more than a texture may have (%4 x %4)")
+                         .arg(name)
+                         .arg(size.width())
+                         .arg(size.height())
+                         .arg(kMaxTextureFileSide);
+        return read;
+    }
+    // The largest image allowed decodes to 1 GiB of RGBA; Qt refuses more than 256 MiB unless
+    // told. Bigger ones are decoded at the size drawn where the format can (JPEG).
+    QImageReader::setAllocationLimit(
+        int((qint64(kMaxTextureFileSide) * kMaxTextureFileSide * 4) >> 20) + 64);
+    if (size.isValid() && (size.width() > Texture::kMaxSize || size.height() > Texture::kMaxSize))
+        reader.setScaledSize(
+            size.scaled(Texture::kMaxSize, Texture::kMaxSize, Qt::KeepAspectRatio));
+    const QImage image = reader.read();
+    if (image.isNull()) {
+        read.error =
+            QObject::tr("%1: could not be read as an image: %2").arg(name, reader.errorString());
+        return read;
+    }
+    auto texture = std::make_shared<Texture>(Texture::fromImage(image));
+    const QImage &drawn = texture->image();
+    read.summary = QObject::tr("%1: %2 x %3, %4 mipmap levels")
+                       .arg(name)
+                       .arg(drawn.width())
+                       .arg(drawn.height())
+                       .arg(texture->levelCount());
+    if (size.isValid() && size != drawn.size())
+        read.summary += QObject::tr(" (scaled from %1 x %2)").arg(size.width()).arg(size.height());
+    read.texture = std::move(texture);
+    return read;
+}
+
+} // namespace lb
