@@ -185,6 +185,9 @@ QJsonObject probeJson(const ProbeResult &probe, const QImage &frame, QPoint pixe
     o["diffuse"] = array(probe.total.diffuse);
     o["specular"] = array(probe.total.specular);
     o["base"] = array(probe.base);
+    // Where the texture is read and at which level of detail (as the GPU picks its mipmap).
+    o["uv"] = QJsonArray{rounded(probe.uv.x), rounded(probe.uv.y)};
+    o["levelOfDetail"] = rounded(probe.lod);
     return o;
 }
 

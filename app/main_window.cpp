@@ -123,6 +123,8 @@ MainWindow::MainWindow(QSettings &settings, QWidget *parent)
     connect(m_sceneActions, &SceneActions::documentChanged, this, &MainWindow::updateTitle);
     connect(m_sceneActions, &SceneActions::sceneOpened, m_probe, &ProbePanel::clear);
     connect(m_object, &ObjectPanel::openMeshRequested, m_meshActions, &MeshActions::showOpenDialog);
+    connect(m_object, &ObjectPanel::openImageRequested, m_meshActions,
+            &MeshActions::showImageDialog);
     connect(m_object, &ObjectPanel::adoptFileMaterialRequested, m_loader,
             &ObjectLoader::setAdoptFileMaterial);
     buildMenus();

@@ -9,6 +9,7 @@
 #include <QDropEvent>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QImageReader>
 #include <QLocale>
 #include <QMainWindow>
 #include <QMenu>
@@ -29,11 +30,18 @@ const char *kTimeKey = "import/timeLimitSeconds";
 const char *kBudgetKey = "editor/frameBudgetSeconds";
 const char *kRecentKey = "recentMeshes";
 const char *kDialogDirKey = "import/lastDirectory";
+const char *kImageDirKey = "texture/lastDirectory";
 
 bool isShaderFile(const QString &path)
 {
     const QString suffix = QFileInfo(path).suffix().toLower();
     return suffix == "vert" || suffix == "frag";
+}
+
+bool isImageFile(const QString &path)
+{
+    return QImageReader::supportedImageFormats().contains(
+        QFileInfo(path).suffix().toLower().toLatin1());
 }
 
 } // namespace
@@ -63,6 +71,15 @@ MeshActions::MeshActions(QMainWindow *window, SceneDocument *document, ObjectLoa
     connect(loader, &ObjectLoader::loadProgress, m_progress, &LoadProgress::setProgress);
     connect(loader, &ObjectLoader::loadFinished, this, &MeshActions::finished);
     connect(loader, &ObjectLoader::meshReady, this, &MeshActions::showSummary);
+    connect(loader, &ObjectLoader::textureFinished, this, [this](bool ok, const QString &message) {
+        if (ok)
+            showStatusMessage(m_window, message, 5000);
+        else
+            showError(tr("Texture not used"),
+                      tr("The image could not be used as a texture; the texture stays as it "
+                         "was."),
+                      message);
+    });
     // Another object selected: the status bar describes that one.
     connect(m_document, &SceneDocument::changed, this, [this](SceneParts parts) {
         const int selected = m_document->scene().selected;
@@ -82,6 +99,9 @@ void MeshActions::addToMenus(QMenu *file, QMenu *edit, QMenu *view)
     QAction *open = file->addAction(tr("Open &Mesh..."), this, &MeshActions::showOpenDialog);
     open->setShortcut(QKeySequence(tr("Ctrl+M")));
     file->addMenu(m_recent);
+    QAction *image =
+        file->addAction(tr("Open &Texture Image..."), this, &MeshActions::showImageDialog);
+    image->setShortcut(QKeySequence(tr("Ctrl+T")));
 
     QAction *preferences =
         edit->addAction(tr("&Preferences..."), this, &MeshActions::showPreferences);
@@ -140,6 +160,26 @@ void MeshActions::open(const QString &path)
     m_loader->open(QFileInfo(path).absoluteFilePath());
 }
 
+void MeshActions::showImageDialog()
+{
+    QStringList patterns;
+    for (const QByteArray &format : QImageReader::supportedImageFormats())
+        patterns << "*." + QString::fromLatin1(format);
+    const QString path =
+        QFileDialog::getOpenFileName(m_window, tr("Open an image as the selected object's texture"),
+                                     m_settings.value(kImageDirKey).toString(),
+                                     tr("Images (%1);;All files (*)").arg(patterns.join(' ')));
+    if (path.isEmpty())
+        return;
+    m_settings.setValue(kImageDirKey, QFileInfo(path).absolutePath());
+    openImage(path);
+}
+
+void MeshActions::openImage(const QString &path)
+{
+    m_loader->openTexture(QFileInfo(path).absoluteFilePath());
+}
+
 double MeshActions::frameBudgetSeconds() const
 {
     const double s =
@@ -173,12 +213,16 @@ void MeshActions::finished(bool ok, const QString &message)
         showStatusMessage(m_window, message, 5000);
         return;
     }
+    showError(tr("Mesh not loaded"), tr("The mesh could not be loaded; the previous one stays."),
+              message);
+}
+
+void MeshActions::showError(const QString &title, const QString &text, const QString &message)
+{
     // Not modal for the application: the window stays usable behind the message.
     if (m_errorBox)
         m_errorBox->close();
-    m_errorBox = new QMessageBox(QMessageBox::Warning, tr("Mesh not loaded"),
-                                 tr("The mesh could not be loaded; the previous one stays."),
-                                 QMessageBox::Ok, m_window);
+    m_errorBox = new QMessageBox(QMessageBox::Warning, title, text, QMessageBox::Ok, m_window);
     m_errorBox->setInformativeText(message);
     m_errorBox->setAttribute(Qt::WA_DeleteOnClose);
     m_errorBox->setWindowModality(Qt::NonModal);
@@ -198,13 +242,15 @@ bool MeshActions::eventFilter(QObject *watched, QEvent *event)
         }
     } else if (event->type() == QEvent::Drop) {
         auto *drop = static_cast<QDropEvent *>(event);
-        QStringList shaders, meshes, scenes;
+        QStringList shaders, meshes, scenes, images;
         for (const QUrl &url : drop->mimeData()->urls()) {
             const QString path = url.toLocalFile();
             if (!url.isLocalFile())
                 continue;
             if (QFileInfo(path).suffix().toLower() == "json")
                 scenes << path;
+            else if (isImageFile(path))
+                images << path;
             else
                 (isShaderFile(path) ? shaders : meshes) << path;
         }
@@ -217,6 +263,8 @@ bool MeshActions::eventFilter(QObject *watched, QEvent *event)
             emit shaderFilesDropped(shaders);
         if (!meshes.isEmpty())
             open(meshes.first()); // one object at a time
+        if (!images.isEmpty())
+            openImage(images.first()); // the selected object's texture
         drop->acceptProposedAction();
         return true;
     }

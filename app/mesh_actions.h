@@ -1,8 +1,9 @@
 #pragma once
-// The window's mesh controls around ObjectLoader: File > Open Mesh and Open Recent Mesh,
-// files dropped on the window, the status bar's load progress (with Cancel) and mesh summary,
-// load errors, View > Show Normals, and the import limits (Edit > Preferences, kept in
-// QSettings; the command line can override them for one session).
+// The window's mesh and texture controls around ObjectLoader: File > Open Mesh, Open Recent
+// Mesh and Open Texture Image, files dropped on the window (an image: the texture), the
+// status bar's load progress (with Cancel) and mesh summary, load errors, View > Show Normals, and
+// the import limits (Edit > Preferences, kept in QSettings; the command line can override them for
+// one session).
 
 #include "object_loader.h"
 
@@ -32,6 +33,9 @@ public:
     void addToMenus(QMenu *file, QMenu *edit, QMenu *view);
     void showOpenDialog();
     void open(const QString &path);
+    // File > Open Texture Image (Ctrl+T): an image as the selected object's texture.
+    void showImageDialog();
+    void openImage(const QString &path);
     void showPreferences();
     // Edit > Preferences' frame budget for user programs (seconds), from the settings.
     double frameBudgetSeconds() const;
@@ -54,6 +58,7 @@ protected:
 
 private:
     void finished(bool ok, const QString &message);
+    void showError(const QString &title, const QString &text, const QString &message);
     void showSummary();
     QString fileFilter() const;
 

@@ -62,7 +62,9 @@ QList<QPair<QString, QString>> SceneActions::examples()
             {tr("The exercise: a textured cube and a sphere, light in camera coordinates"),
              ":/examples/exercise.json"},
             {tr("A light in one object's frame (it turns with the torus)"),
-             ":/examples/attached_light.json"}};
+             ":/examples/attached_light.json"},
+            {tr("Texture filtering: nearest, linear and mipmaps"),
+             ":/examples/texture_filtering.json"}};
 }
 
 void SceneActions::addToMenu(QMenu *file)

@@ -1,5 +1,7 @@
 #include "object_panel.h"
 
+#include "texture_controls.h"
+
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -148,12 +150,9 @@ ObjectPanel::ObjectPanel(SceneDocument *document, QWidget *parent)
     connect(m_cullBackFaces, &QCheckBox::toggled, this,
             [this](bool on) { edit([&](Scene &s) { s.selectedObject().cullBackFaces = on; }); });
     form->addRow(m_cullBackFaces);
-    m_texture = new QCheckBox(tr("Texture"), this);
-    m_texture->setToolTip(tr("uEnableTexture: multiply ambient and diffuse by the texture "
-                             "(uSampler): the mesh file's diffuse texture, or the checker"));
-    connect(m_texture, &QCheckBox::toggled, this,
-            [this](bool on) { edit([&](Scene &s) { s.selectedObject().texture = on; }); });
-    feeds(m_texture, {Semantic::EnableTexture});
+    m_texture = new TextureControls(document, this);
+    connect(m_texture, &TextureControls::openImageRequested, this,
+            &ObjectPanel::openImageRequested);
     form->addRow(m_texture);
     m_adoptMaterial = new QCheckBox(tr("Use the mesh file's material"), this);
     m_adoptMaterial->setToolTip(tr("The mesh file's ambient, diffuse and specular colours "
@@ -251,7 +250,7 @@ void ObjectPanel::refresh(const Scene &scene)
     refreshList(scene);
     const ObjectSettings &o = scene.selectedObject();
     const QSignalBlocker b1(m_shape), b2(m_tessellation), b3(m_autoRotate), b6(m_normals),
-        b7(m_crease), b8(m_showNormals), b9(m_adoptMaterial), b10(m_cullBackFaces), b11(m_texture);
+        b7(m_crease), b8(m_showNormals), b9(m_adoptMaterial), b10(m_cullBackFaces);
     while (m_shape->count() > kShapeCount)
         m_shape->removeItem(kShapeCount);
     if (o.meshPath.isEmpty()) {
@@ -270,7 +269,6 @@ void ObjectPanel::refresh(const Scene &scene)
     m_showNormals->setChecked(o.showNormals);
     m_cullBackFaces->setChecked(o.cullBackFaces);
     m_adoptMaterial->setChecked(o.adoptFileMaterial);
-    m_texture->setChecked(o.texture);
     for (int i = 0; i < 3; ++i) {
         const QSignalBlocker b4(m_rotation[std::size_t(i)]), b5(m_scale[std::size_t(i)]),
             b12(m_translation[std::size_t(i)]);

@@ -1,8 +1,8 @@
 #pragma once
 // Object: the scene's objects as a list (add, duplicate, remove, rename, show or hide, select),
 // and the selected one's shape or mesh file and its tessellation, normals (the file's, smooth
-// within a crease angle, or flat; shown as lines), texture switch, rotation, (possibly
-// non-uniform) scale and translation per axis, and auto-rotate.
+// within a crease angle, or flat; shown as lines), texture (texture_controls.h), rotation,
+// (possibly non-uniform) scale and translation per axis, and auto-rotate.
 
 #include "scene_panel.h"
 
@@ -16,6 +16,8 @@ class QPushButton;
 class QSpinBox;
 
 namespace lb {
+
+class TextureControls;
 
 class ObjectPanel : public ScenePanel
 {
@@ -32,7 +34,7 @@ public:
     QDoubleSpinBox *rotation(int i) const { return m_rotation[std::size_t(i)]; }
     QDoubleSpinBox *scale(int i) const { return m_scale[std::size_t(i)]; }
     QDoubleSpinBox *translation(int i) const { return m_translation[std::size_t(i)]; }
-    QCheckBox *textureCheck() const { return m_texture; }
+    TextureControls *texture() const { return m_texture; }
     QCheckBox *autoRotateCheck() const { return m_autoRotate; }
     QComboBox *normalsCombo() const { return m_normals; }
     QDoubleSpinBox *creaseBox() const { return m_crease; }
@@ -41,7 +43,8 @@ public:
     QCheckBox *adoptMaterialCheck() const { return m_adoptMaterial; }
 
 signals:
-    void openMeshRequested(); // the "Open..." button: the window shows its file dialog
+    void openMeshRequested();  // the "Open..." button: the window shows its file dialog
+    void openImageRequested(); // the texture's "Image..." button: likewise
     // "Use the mesh file's material": the object loader switches it and, with a file on
     // screen, takes its material in the same edit (ObjectLoader::setAdoptFileMaterial).
     void adoptFileMaterialRequested(bool on);
@@ -59,7 +62,7 @@ private:
     std::array<QDoubleSpinBox *, 3> m_rotation{};
     std::array<QDoubleSpinBox *, 3> m_scale{};
     std::array<QDoubleSpinBox *, 3> m_translation{};
-    QCheckBox *m_texture;
+    TextureControls *m_texture;
     QCheckBox *m_autoRotate;
     QComboBox *m_normals;
     QDoubleSpinBox *m_crease;

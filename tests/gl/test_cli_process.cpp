@@ -220,6 +220,40 @@ private slots:
         QVERIFY(o["maxDifference"].toInt() <= 2);
     }
 
+    // An image as the texture: drawn (not the checker), its level of detail in the probe's
+    // JSON; a missing or broken one exits 1 naming the file.
+    void textureFileRendersAndProbes()
+    {
+        QImage image(256, 256, QImage::Format_RGB32);
+        image.fill(QColor(30, 200, 60));
+        const QString green = m_dir.filePath("green.png");
+        QVERIFY(image.save(green));
+        const QString png = m_dir.filePath("textured.png");
+        const QStringList scene = {
+            "--shape",           "cube", "--show-light", "off",   "--size", "200x150",
+            "--texture-mipmaps", "on",   "--kd",         "1,1,1", "--ka",   "1,1,1"};
+        Run r = run(scene + QStringList{"--texture-file", green, "--render", png});
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        const QRgb middle = QImage(png).pixel(100, 75);
+        QVERIFY2(qGreen(middle) > 2 * qRed(middle), qPrintable(QString::number(middle, 16)));
+        r = run(scene + QStringList{"--texture-file", green, "--probe", "100,75"});
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        const QJsonObject probe = QJsonDocument::fromJson(r.out).object();
+        QCOMPARE(probe["uv"].toArray().size(), 2);
+        const double lod = probe["levelOfDetail"].toDouble();
+        QVERIFY2(lod > -1.0 && lod < 3.0, qPrintable(QString::number(lod))); // 256 texels, ~80 px
+        QVERIFY2(probe["maxDifference"].toInt() <= 2, r.out.constData());
+
+        for (const QString &bad : {m_dir.filePath("none.png"), m_dir.filePath("not.png")}) {
+            if (bad.endsWith("not.png"))
+                QVERIFY(writeFile(bad, "this is no image"));
+            r = run(scene + QStringList{"--texture-file", bad, "--render", png});
+            QCOMPARE(r.exitCode, 1);
+            QVERIFY2(r.err.contains(QFileInfo(bad).fileName().toUtf8()), r.err.constData());
+            QCOMPARE(r.err.count("lightbench: "), 1); // one message (Qt may warn besides)
+        }
+    }
+
     void meshThatCannotLoadExitsWithOne_data()
     {
         QTest::addColumn<QStringList>("args");

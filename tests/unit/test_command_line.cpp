@@ -115,6 +115,17 @@ private slots:
         QCOMPARE(s.lights[0].frame, LightFrame::Object);
         QCOMPARE(s.lights[0].object, 1);
         QVERIFY(s.camera.distance > OrbitCamera{}.distance); // framed
+        // An image for the last object: its path made absolute, the texture switched on; an
+        // explicit --texture off still wins.
+        const Scene image = applied("--object cube --object sphere --texture-file bricks.png "
+                                    "--texture-wrap clamp --texture-filter nearest "
+                                    "--texture-mipmaps on");
+        QCOMPARE(image.objects[1].textureFile, QDir::current().absoluteFilePath("bricks.png"));
+        QVERIFY(image.objects[1].texture);
+        QVERIFY(image.objects[1].sampling ==
+                (TextureSampling{TextureWrap::Clamp, TextureFilter::Nearest, true}));
+        QVERIFY(image.objects[0].textureFile.isEmpty());
+        QVERIFY(!applied("--texture-file a.png --texture off").objects[0].texture);
         // Without --object, the one object as before.
         const Scene one = applied("--model-translate 0,1,0 --shape cube");
         QCOMPARE(int(one.objects.size()), 1);
@@ -134,6 +145,14 @@ private slots:
                                                 << "--light-object";
         QTest::newRow("light object, none such") << "--object cube --light-object 1"
                                                  << "--light-object";
+        QTest::newRow("texture wrap") << "--texture-wrap mirror"
+                                      << "--texture-wrap";
+        QTest::newRow("texture filter") << "--texture-filter cubic"
+                                        << "--texture-filter";
+        QTest::newRow("texture mipmaps") << "--texture-mipmaps maybe"
+                                         << "--texture-mipmaps";
+        QTest::newRow("texture file, empty") << "--texture-file="
+                                             << "--texture-file";
         QTest::newRow("missing number") << "--light 1,2,3"
                                         << "--light";
         QTest::newRow("empty number") << "--ka 1,,0"

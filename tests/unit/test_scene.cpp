@@ -76,6 +76,12 @@ private slots:
         row("show", P::Shading, [](Scene &s) { s.shading.show = ShowChoice::Reflect; });
         row("vertex colours", P::Shading, [](Scene &s) { s.shading.vertexColors = true; });
         row("texture", P::Object, [](Scene &s) { s.objects[0].texture = true; });
+        row("texture file", P::Object, [](Scene &s) { s.objects[0].textureFile = "/tmp/a.png"; });
+        row("texture wrap", P::Object,
+            [](Scene &s) { s.objects[0].sampling.wrap = TextureWrap::Clamp; });
+        row("texture filter", P::Object,
+            [](Scene &s) { s.objects[0].sampling.filter = TextureFilter::Nearest; });
+        row("mipmaps", P::Object, [](Scene &s) { s.objects[0].sampling.mipmaps = true; });
         row("wrong normals", P::Shading, [](Scene &s) { s.shading.normalsByModelView = true; });
         row("shape", P::Object, [](Scene &s) { s.objects[0].shape = Shape::Torus; });
         row("tessellation", P::Object, [](Scene &s) { s.objects[0].tessellation = 33; });
@@ -234,6 +240,10 @@ private slots:
         cube["shape"] = "cube";
         cube["translation"] = QJsonArray{1, "x", 0};
         cube["material"] = QJsonObject{{"shininess", -4}};
+        cube["textureFile"] = 5;
+        cube["textureWrap"] = "mirror";
+        cube["textureFilter"] = "cubic";
+        cube["textureMipmaps"] = "yes";
         objects.append(cube);
         for (int i = 0; i < kMaxObjects + 3; ++i)
             objects.append(QJsonObject{{"shape", "torus"}});
@@ -251,6 +261,8 @@ private slots:
         QCOMPARE(s.objects[1].shape, Shape::Cube);
         QCOMPARE(s.objects[1].translation, glm::vec3(0.0f));
         QCOMPARE(s.objects[1].material.shininess, limits::kMinShininess);
+        QVERIFY(s.objects[1].textureFile.isEmpty());
+        QVERIFY(s.objects[1].sampling == TextureSampling{});
         QCOMPARE(s.objects[2].shape, Shape::Torus);
         QCOMPARE(s.selected, kMaxObjects - 1);
         QCOMPARE(s.lights[1].object, 0); // no object 40: the first one
@@ -258,7 +270,8 @@ private slots:
         for (const char *path :
              {"objects[0] (not an object; a sphere in its place)",
               "objects[1].translation (not an array of numbers)",
-              "objects[1].material.shininess (out of range, clamped)",
+              "objects[1].material.shininess (out of range, clamped)", "objects[1].textureFile",
+              "objects[1].textureWrap", "objects[1].textureFilter", "objects[1].textureMipmaps",
               "objects[32] (at most 32 objects", "selected (out of range, clamped)",
               "lights[1].object (no such object; the first one)"})
             QVERIFY2(all.contains(QLatin1String(path)), qPrintable(all));
@@ -370,6 +383,12 @@ private slots:
         QCOMPARE(showChoiceNames().size(), int(ShowChoice::Attenuation) + 1);
         for (const QString &n : showChoiceNames())
             QCOMPARE(toName(*parseShowChoice(n)), n);
+        QCOMPARE(textureWrapNames(), QStringList({"repeat", "clamp"}));
+        QCOMPARE(textureFilterNames(), QStringList({"nearest", "linear"}));
+        for (const QString &n : textureWrapNames())
+            QCOMPARE(toName(*parseTextureWrap(n)), n);
+        for (const QString &n : textureFilterNames())
+            QCOMPARE(toName(*parseTextureFilter(n)), n);
     }
 
     void meshes_data()

@@ -29,6 +29,8 @@ SceneFile sampleFile(const QDir &dir)
     f.scene.objects[0].material.shininess = 42;
     f.scene.shading.shading = Shading::Gouraud;
     f.scene.objects[0].meshPath = dir.filePath("meshes/bunny.ply");
+    f.scene.objects[0].textureFile = dir.filePath("images/fur.jpg");
+    f.scene.objects[0].sampling = {TextureWrap::Clamp, TextureFilter::Nearest, true};
     f.scene.objects[0].normals = NormalMode::Flat;
     f.scene.objects[0].cullBackFaces = true;
     f.scene.camera.orbit(30, -10);
@@ -149,17 +151,21 @@ private slots:
         QVERIFY(read.file->scene == f.scene);
         QVERIFY(read.file->program == f.program);
 
-        // The mesh is written relative to the file, so a folder handed out keeps working.
+        // The mesh and the image are written relative to the file, so a folder handed out keeps
+        // working.
         QFile raw(path);
         QVERIFY(raw.open(QIODevice::ReadOnly));
         const QJsonObject json = QJsonDocument::fromJson(raw.readAll()).object();
         QCOMPARE(json["objects"][0]["mesh"].toString(), QString("meshes/bunny.ply"));
+        QCOMPARE(json["objects"][0]["textureFile"].toString(), QString("images/fur.jpg"));
         QCOMPARE(json["version"].toInt(), kSceneFileVersion);
         QCOMPARE(json["program"]["fragment"].toString(), f.program->fragment);
         const QDir moved("/elsewhere/class");
         const SceneFileRead there = parseSceneFile(sceneFileBytes(f, dir), moved, "moved.json");
         QCOMPARE(there.file->scene.objects[0].meshPath,
                  QString("/elsewhere/class/meshes/bunny.ply"));
+        QCOMPARE(there.file->scene.objects[0].textureFile,
+                 QString("/elsewhere/class/images/fur.jpg"));
 
         // No program: the built-in one, which follows the shading choice.
         SceneFile builtIn = f;

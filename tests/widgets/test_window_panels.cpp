@@ -3,9 +3,14 @@
 #include "window_fixture.h"
 
 #include "frames.h"
+#include "texture_controls.h"
 
+#include <QCheckBox>
+#include <QComboBox>
+#include <QLabel>
 #include <QListWidget>
 #include <QPushButton>
+#include <QToolButton>
 
 using namespace lb;
 using namespace lb::test;
@@ -41,8 +46,9 @@ private slots:
         QCOMPARE(scene().shading.specular, SpecularModel::Phong);
         expectNewImage([&] { p->projectionCombo()->setCurrentIndex(1); }, "orthographic");
         QCOMPARE(scene().shading.projection, Projection::Orthographic);
-        expectNewImage([&] { m_window->objectPanel()->textureCheck()->setChecked(true); },
-                       "texture");
+        expectNewImage(
+            [&] { m_window->objectPanel()->texture()->textureCheck()->setChecked(true); },
+            "texture");
         QVERIFY(scene().objects[0].texture);
         expectNewImage([&] { p->vertexColorsCheck()->setChecked(true); }, "vertex colours");
         expectNewImage([&] { p->lightingCheck()->setChecked(false); }, "lighting off");
@@ -134,6 +140,48 @@ private slots:
         p->shapeCombo()->setCurrentIndex(1);
         expectNewImage([&] { p->tessellationBox()->setValue(64); }, "tessellation");
         QCOMPARE(scene().objects[0].tessellation, 64);
+    }
+
+    // An image opened (as File > Open Texture Image or a drop does) is drawn once decoded;
+    // the sampling controls edit the selected object and change the pixels; a file that is
+    // no image leaves the scene as it was and says so; x goes back to the checker.
+    void textureImageAndSampling()
+    {
+        QImage image(512, 512, QImage::Format_RGB32);
+        for (int y = 0; y < 512; ++y)
+            for (int x = 0; x < 512; ++x)
+                image.setPixel(x, y, (x / 2 + y / 2) % 2 ? qRgb(250, 250, 250) : qRgb(10, 60, 10));
+        const QString path = m_dir.filePath("fine.png");
+        QVERIFY(image.save(path));
+        TextureControls *t = m_window->objectPanel()->texture();
+        t->textureCheck()->setChecked(true);
+        const QImage checker = frame();
+        m_window->meshActions()->openImage(path);
+        QTRY_COMPARE(scene().objects[0].textureFile, path);
+        QTRY_VERIFY(imageDifference(checker, frame()) > 10);
+        QCOMPARE(t->imageLabel()->text(), QString("fine.png"));
+        // 2-texel stripes on the sphere: minified, so mipmaps and the filter show.
+        expectNewImage([&] { t->mipmapsCheck()->setChecked(true); }, "mipmaps");
+        QVERIFY(scene().objects[0].sampling.mipmaps);
+        expectNewImage([&] { t->filterCombo()->setCurrentIndex(0); }, "nearest");
+        QCOMPARE(scene().objects[0].sampling.filter, TextureFilter::Nearest);
+        t->wrapCombo()->setCurrentIndex(1);
+        QCOMPARE(scene().objects[0].sampling.wrap, TextureWrap::Clamp);
+
+        const QString notAnImage = m_dir.filePath("notes.png");
+        QFile notes(notAnImage);
+        QVERIFY(notes.open(QIODevice::WriteOnly) && notes.write("vec3 n;\n") > 0);
+        notes.close();
+        const Scene before = scene();
+        m_window->meshActions()->openImage(notAnImage);
+        QTRY_VERIFY(m_window->meshActions()->errorBox());
+        QVERIFY2(m_window->meshActions()->errorBox()->informativeText().contains("notes.png"),
+                 qPrintable(m_window->meshActions()->errorBox()->informativeText()));
+        QVERIFY(scene() == before);
+
+        t->clearButton()->click();
+        QVERIFY(scene().objects[0].textureFile.isEmpty());
+        QCOMPARE(t->imageLabel()->text(), QString("the checker"));
     }
 
     // The list: Add draws a second object and selects it (the Material panel edits its
