@@ -174,6 +174,24 @@ void ProbePanel::showText()
     html += row(tr("P (eye)"), vec(r.position));
     html += row(tr("N"), vec(r.normal));
     html += row(tr("V"), vec(viewVector(r.position, side.shading.projection)));
+    const ObjectSettings &object = side.objects[std::size_t(r.object)];
+    if (object.texture) {
+        // Where the texture is read, and which mipmap levels the level of detail picks.
+        const Texture &texture = m_viewport->renderer().texture(r.object);
+        const Texture::Levels levels = texture.levelsAt(r.lod, object.sampling);
+        const QString read = levels.weight > 0.0f ? tr("levels %1 and %2 (%3% of %2)")
+                                                        .arg(levels.first)
+                                                        .arg(levels.second)
+                                                        .arg(std::lround(100.0f * levels.weight))
+                                                  : tr("level %1").arg(levels.first);
+        html += row(tr("texture"),
+                    tr("uv (%1, %2), level of detail %3: %4, %5")
+                        .arg(double(r.uv.x), 0, 'f', 3)
+                        .arg(double(r.uv.y), 0, 'f', 3)
+                        .arg(double(r.lod), 0, 'f', 2)
+                        .arg(read, object.sampling.mipmaps ? tr("mipmaps") : tr("no mipmaps")));
+        html += row(tr("base colour"), vec(r.base));
+    }
     for (const ProbeLight &l : r.lights) {
         const Light &light = scene.lights[std::size_t(l.index)];
         const LightingTerms &t = l.terms;

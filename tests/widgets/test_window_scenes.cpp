@@ -129,6 +129,8 @@ private slots:
             s.showLight = false;
             s.lights[1].enabled = true; // two lights: both listed
             s.shading.shading = Shading::Gouraud;
+            s.objects[0].texture = true; // the checker, mipmapped: the texture row shows
+            s.objects[0].sampling.mipmaps = true;
         });
         frame();
         Viewport *v = m_window->viewport();
@@ -141,6 +143,9 @@ private slots:
         const ProbeResult &r = probe->result();
         QCOMPARE(int(r.lights.size()), 2);
         QVERIFY(probe->textLabel()->text().contains("Light 2"));
+        QVERIFY2(probe->textLabel()->text().contains(
+                     QString("level of detail %1").arg(double(r.lod), 0, 'f', 2)),
+                 qPrintable(probe->textLabel()->text()));
         QCOMPARE(scene().camera.yawDegrees, Scene{}.camera.yawDegrees); // the click did not orbit
 
         const QString path = m_dir.filePath("probe.json");
@@ -160,6 +165,8 @@ private slots:
                    std::abs(a[1].toDouble() - v.y) < 1e-4 && std::abs(a[2].toDouble() - v.z) < 1e-4;
         };
         QCOMPARE(o["triangle"].toInteger(), qint64(r.triangle));
+        QVERIFY(std::abs(o["levelOfDetail"].toDouble() - double(r.lod)) < 1e-3);
+        QVERIFY(std::abs(o["uv"][0].toDouble() - double(r.uv.x)) < 1e-4);
         QVERIFY(near(o["position"], r.position));
         QVERIFY(near(o["normal"], r.normal));
         QVERIFY(near(o["specular"], r.total.specular));
