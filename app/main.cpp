@@ -129,7 +129,8 @@ int main(int argc, char **argv)
             Qt::SingleShotConnection);
         QObject::connect(settle, &QTimer::timeout, &window, [&, settle] {
             const lb::ObjectLoader *loader = window.objectLoader();
-            if (loader->isLoading() || loader->isBuilding() || window.viewport()->isTrying())
+            if (loader->isLoading() || loader->isBuilding() || loader->isDecodingTexture() ||
+                window.viewport()->isTrying())
                 return; // the timer fires again (a program being tried draws once accepted)
             settle->stop();
             const QString path = cl.screenshotPath;

@@ -75,9 +75,7 @@ MeshActions::MeshActions(QMainWindow *window, SceneDocument *document, ObjectLoa
         if (ok)
             showStatusMessage(m_window, message, 5000);
         else
-            showError(tr("Texture not used"),
-                      tr("The image could not be used as a texture; the texture stays as it "
-                         "was."),
+            showError(tr("Texture not used"), tr("An image could not be used as a texture."),
                       message);
     });
     // Another object selected: the status bar describes that one.
@@ -219,6 +217,16 @@ void MeshActions::finished(bool ok, const QString &message)
 
 void MeshActions::showError(const QString &title, const QString &text, const QString &message)
 {
+    // Several at once (a scene whose folder lost its files): one box lists them all.
+    if (m_errorBox && m_errorBox->isVisible()) {
+        if (m_errorBox->windowTitle() != title) {
+            m_errorBox->setWindowTitle(tr("Files not used"));
+            m_errorBox->setText(tr("Some files could not be used."));
+        }
+        m_errorBox->setInformativeText(m_errorBox->informativeText() + "\n" + message);
+        showStatusMessage(m_window, message, 10000);
+        return;
+    }
     // Not modal for the application: the window stays usable behind the message.
     if (m_errorBox)
         m_errorBox->close();

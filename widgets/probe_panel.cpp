@@ -62,6 +62,7 @@ ProbePanel::ProbePanel(SceneDocument *document, Viewport *viewport, QWidget *par
     clear();
     connect(document, &SceneDocument::changed, this, &ProbePanel::update);
     connect(viewport, &Viewport::objectChanged, this, &ProbePanel::clear);
+    connect(viewport, &Viewport::textureChanged, this, &ProbePanel::update);
     // A new view size moves the point's pixel: read the GPU where the point now is.
     connect(viewport, &Viewport::resized, this, &ProbePanel::update);
     connect(viewport, &QOpenGLWidget::frameSwapped, this, &ProbePanel::showText);

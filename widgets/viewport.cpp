@@ -478,6 +478,8 @@ void Viewport::setObject(int index, std::shared_ptr<const Mesh> mesh,
                          std::shared_ptr<const Texture> texture)
 {
     const bool changed = mesh.get() != m_renderer.objectMesh(index);
+    const bool retextured = !changed && index < m_renderer.objectCount() &&
+                            texture.get() != m_renderer.ownTexture(index);
     // Uploaded by the next paint.
     m_renderer.setObject(index, std::move(mesh), std::move(texture));
     if (m_trialWithoutObject && m_renderer.objectMesh() && m_renderer.isInitialized()) {
@@ -495,6 +497,8 @@ void Viewport::setObject(int index, std::shared_ptr<const Mesh> mesh,
     update();
     if (changed)
         emit objectChanged();
+    else if (retextured)
+        emit textureChanged();
 }
 
 QImage Viewport::renderImage(QSize pixels)

@@ -82,7 +82,8 @@ signals:
     void probeRequested(QPoint framePixel); // Ctrl+click or Shift+click, in device pixels
     void clicked(QPoint framePixel);        // a plain click, not a drag: selects an object
     void objectChanged();                   // a new mesh: probed points are gone
-    void resized();                         // a new frame size
+    void textureChanged(); // an object's texture (an image decoded): probed points stay
+    void resized();        // a new frame size
 
 protected:
     void paintEvent(QPaintEvent *event) override;

@@ -189,6 +189,13 @@ const std::shared_ptr<const Mesh> &Renderer::sharedObjectMesh(int index) const
     return index >= 0 && index < int(m_objects.size()) ? m_objects[std::size_t(index)]->mesh : none;
 }
 
+const Texture *Renderer::ownTexture(int index) const
+{
+    return index >= 0 && index < int(m_objects.size())
+               ? m_objects[std::size_t(index)]->texture.get()
+               : nullptr;
+}
+
 const Texture &Renderer::texture(int index) const
 {
     const bool own =
@@ -230,7 +237,13 @@ void Renderer::uploadObjects()
             o->uploaded = true;
         }
         if (!o->textureUploaded) {
-            o->textureGl = o->texture ? uploadTexture(*this, *o->texture) : GlTexture();
+            o->textureGl.reset();
+            for (const std::unique_ptr<GpuObject> &other : m_objects)
+                if (other != o && other->texture == o->texture && other->textureUploaded &&
+                    other->textureGl)
+                    o->textureGl = other->textureGl;
+            if (o->texture && !o->textureGl)
+                o->textureGl = std::make_shared<GlTexture>(uploadTexture(*this, *o->texture));
             o->textureUploaded = true;
         }
     }
@@ -320,7 +333,7 @@ void Renderer::drawObjects(const Scene &scene, const BuiltProgram &program, floa
         glUseProgram(program.program.id());
         uploadUniforms(*this, program.build.uniforms, scene, frames);
         glActiveTexture(GL_TEXTURE0);
-        glBindTexture(GL_TEXTURE_2D, o.texture ? o.textureGl.id() : m_checkerTexture.id());
+        glBindTexture(GL_TEXTURE_2D, o.textureGl ? o.textureGl->id() : m_checkerTexture.id());
         applySampling(*this, object.sampling); // objects sharing the checker differ in this
         if (object.cullBackFaces) {
             glEnable(GL_CULL_FACE);

@@ -98,6 +98,8 @@ public:
     const Mesh *objectMesh(int index = 0) const;
     const std::shared_ptr<const Mesh> &sharedObjectMesh(int index = 0) const;
     const Texture &texture(int index = 0) const;
+    // The texture set for object `index` (nullptr: the checker, or no such object).
+    const Texture *ownTexture(int index) const;
     // What the probe needs of each object (probe.h); valid until the next setObject().
     ProbedObjects probedObjects() const;
     // Uploads the objects now and lets go of their CPU meshes (objectMesh() is nullptr
@@ -141,7 +143,9 @@ private:
         std::shared_ptr<const Texture> texture;
         bool uploaded = false, textureUploaded = true;
         GpuMesh gpu;
-        GlTexture textureGl;
+        // Shared by the objects showing one image (a class's 32 duplicates of a 4096 x 4096
+        // photo hold one GPU copy, not 32).
+        std::shared_ptr<GlTexture> textureGl;
     };
     std::vector<std::unique_ptr<GpuObject>> m_objects; // by index into Scene::objects
     std::uint64_t m_maxPerDraw = GpuMesh::kMaxPerDraw;

@@ -22,8 +22,13 @@ ObjectLoader::ObjectLoader(SceneDocument *document, QObject *parent)
 {
     m_pool.setMaxThreadCount(1);
     connect(document, &SceneDocument::changed, this, [this](SceneParts parts) {
-        if (!(parts & ScenePart::Object) || m_busy)
+        if (m_busy)
             return;
+        if (!(parts & ScenePart::Object)) {
+            if (parts & ScenePart::Material) // so that a removal is told apart from this
+                m_objectsBefore = m_document->scene().objects;
+            return;
+        }
         const std::vector<ObjectSettings> &now = m_document->scene().objects;
         if (now.size() < m_objectsBefore.size())
             followRemoval(now);
@@ -92,27 +97,35 @@ void ObjectLoader::emitChanged()
 
 void ObjectLoader::openTexture(const QString &path)
 {
-    m_textureOpen = TextureOpen{path, m_document->scene().selected};
-    m_textures.request(path); // textureDecoded() follows, maybe at once
+    m_textureOpens.push_back({path, m_document->scene().selected});
+    m_textures.reread(path); // textureDecoded() follows
 }
 
 void ObjectLoader::textureDecoded(const QString &path, const TextureFileRead &read)
 {
-    const bool opened = m_textureOpen && m_textureOpen->path == path;
-    const int index = opened ? m_textureOpen->index : -1;
-    if (opened)
-        m_textureOpen.reset();
+    // Every object this file was opened for (one open may follow another before either is in).
+    std::vector<int> openedFor;
+    for (auto it = m_textureOpens.begin(); it != m_textureOpens.end();)
+        if (it->path == path) {
+            openedFor.push_back(it->index);
+            it = m_textureOpens.erase(it);
+        } else {
+            ++it;
+        }
+    const bool opened = !openedFor.empty();
     const std::vector<ObjectSettings> &objects = m_document->scene().objects;
     const bool named = std::any_of(objects.begin(), objects.end(),
                                    [&](const auto &o) { return o.textureFile == path; });
     const bool busy = std::exchange(m_busy, true); // synced below
-    if (read.texture && opened && index < int(objects.size())) {
+    if (read.texture && opened) {
         m_document->edit([&](Scene &s) {
-            ObjectSettings &o = s.objects[std::size_t(index)];
-            o.textureFile = path;
-            o.texture = true;
+            for (const int index : openedFor)
+                if (index < int(s.objects.size())) {
+                    s.objects[std::size_t(index)].textureFile = path;
+                    s.objects[std::size_t(index)].texture = true;
+                }
         });
-    } else if (!read.texture && named) {
+    } else if (!read.texture && named && !opened) {
         // Named by a scene file or a restart: those objects show what they would without it.
         m_document->edit([&](Scene &s) {
             for (ObjectSettings &o : s.objects)
@@ -122,7 +135,12 @@ void ObjectLoader::textureDecoded(const QString &path, const TextureFileRead &re
     }
     m_busy = busy;
     if (opened || !read.texture)
-        emit textureFinished(bool(read.texture), read.texture ? read.summary : read.error);
+        emit textureFinished(bool(read.texture),
+                             read.texture ? read.summary
+                             : opened     ? read.error
+                                          : tr("%1 (the objects naming it show the mesh file's "
+                                                   "texture or the checker)")
+                                            .arg(read.error));
     sync();
 }
 
@@ -167,7 +185,7 @@ void ObjectLoader::open(const QString &path)
 void ObjectLoader::followRemoval(const std::vector<ObjectSettings> &now)
 {
     const bool opening = m_loading || (m_job && m_job->commit);
-    if (!opening && !m_job && !m_textureOpen)
+    if (!opening && !m_job && m_textureOpens.empty())
         return;
     // Which one went: the first place where the lists differ.
     int removed = -1;
@@ -192,10 +210,14 @@ void ObjectLoader::followRemoval(const std::vector<ObjectSettings> &now)
         m_removedWhileLoading = true;
         m_import.cancel();
     }
-    if (m_textureOpen && !follow(m_textureOpen->index)) {
-        emit textureFinished(false, tr("%1: not used: its object was removed")
-                                        .arg(QFileInfo(m_textureOpen->path).fileName()));
-        m_textureOpen.reset();
+    for (auto it = m_textureOpens.begin(); it != m_textureOpens.end();) {
+        if (follow(it->index)) {
+            ++it;
+            continue;
+        }
+        emit textureFinished(
+            false, tr("%1: not used: its object was removed").arg(QFileInfo(it->path).fileName()));
+        it = m_textureOpens.erase(it);
     }
 }
 
@@ -322,8 +344,8 @@ void ObjectLoader::sync()
             if (!m_textures.find(object.textureFile))
                 m_textures.request(object.textureFile);
         }
-    if (m_textureOpen)
-        images << m_textureOpen->path;
+    for (const TextureOpen &open : m_textureOpens)
+        images << open.path;
     m_textures.keepOnly(images);
 
     matchSlots(); // also while a build runs: the view draws each object's own mesh meanwhile

@@ -34,9 +34,9 @@ public:
     // "Use the mesh file's material": switches it for the selected object and, with its
     // file on screen, takes the file's Ka, Kd, Ks and shininess in the same edit.
     void setAdoptFileMaterial(bool on);
-    // Decodes an image file (off the GUI thread); on success it becomes the texture of the
-    // object selected now, with its texture switch on. textureFinished() follows; a file that
-    // fails changes nothing.
+    // Decodes an image file (off the GUI thread; again, if it was in: it may have changed); on
+    // success it becomes the texture of the object selected now, with its texture switch on.
+    // textureFinished() follows; a file that fails changes nothing.
     void openTexture(const QString &path);
     bool isDecodingTexture() const { return m_textures.isDecoding(); }
     // Stops a running open(): the helper is killed, a build in progress dropped.
@@ -127,7 +127,7 @@ private:
         QString path;
         int index = 0; // the object it is for
     };
-    std::optional<TextureOpen> m_textureOpen;
+    std::vector<TextureOpen> m_textureOpens; // opened, not decoded yet; oldest first
     // The loader's own edits and imports: while one runs, the document's changed() and a
     // replaced import's cancellation are not acted on (each site syncs itself afterwards).
     bool m_busy = false;

@@ -22,11 +22,15 @@ std::shared_ptr<const Texture> TextureFiles::find(const QString &path) const
 
 void TextureFiles::request(const QString &path)
 {
-    if (const auto found = m_images.find(path); found != m_images.end()) {
-        emit decoded(path, found->second);
+    if (m_images.count(path) || path == m_decoding || m_queue.contains(path))
         return;
-    }
-    if (path == m_decoding || m_queue.contains(path))
+    m_queue << path;
+    startNext();
+}
+
+void TextureFiles::reread(const QString &path)
+{
+    if (m_queue.contains(path))
         return;
     m_queue << path;
     startNext();

@@ -22,9 +22,11 @@ public:
 
     // The decoded image of `path`, or nullptr (not asked for, being decoded, or failed).
     std::shared_ptr<const Texture> find(const QString &path) const;
-    // Decodes `path` on the worker unless it is in already or queued; decoded() follows
-    // (at once, from inside, when it is in).
+    // Decodes `path` on the worker unless it is in already or queued; decoded() follows.
     void request(const QString &path);
+    // Decodes `path` again (the file may have changed since): the image in stays until the
+    // new one replaces it; one that fails leaves it as it was. decoded() follows.
+    void reread(const QString &path);
     bool isDecoding() const { return !m_decoding.isEmpty(); }
     // Lets go of the images of paths not in `keep` (requests still queued for them too).
     void keepOnly(const QStringList &keep);

@@ -46,10 +46,14 @@ QByteArray sceneFileBytes(const SceneFile &file, const QDir &dir)
     for (int i = 0; i < int(objects.size()); ++i) {
         const ObjectSettings &o = file.scene.objects[std::size_t(i)];
         QJsonObject object = objects[i].toObject();
+        // An example's image (":/examples/bricks.png") is built in: it stays as it is.
+        const auto relative = [&](const QString &path) {
+            return path.startsWith(":/") ? path : dir.relativeFilePath(path);
+        };
         if (!o.meshPath.isEmpty())
-            object["mesh"] = dir.relativeFilePath(o.meshPath);
+            object["mesh"] = relative(o.meshPath);
         if (!o.textureFile.isEmpty())
-            object["textureFile"] = dir.relativeFilePath(o.textureFile);
+            object["textureFile"] = relative(o.textureFile);
         objects[i] = object;
     }
     root["objects"] = objects;

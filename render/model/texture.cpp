@@ -108,7 +108,10 @@ float Texture::levelOfDetail(const glm::vec2 &dx, const glm::vec2 &dy) const
 Texture::Levels Texture::levelsAt(float lod, const TextureSampling &sampling) const
 {
     const int last = levelCount() - 1;
-    if (!sampling.mipmaps || lod <= 0.0f) // magnified, or one level only
+    if (std::isnan(lod))
+        lod = 0.0f;
+    lod = std::min(lod, float(last) + 1.0f); // far past the last level (an edge-on plane)
+    if (!sampling.mipmaps || lod <= 0.0f)    // magnified, or one level only
         return {};
     if (sampling.filter == TextureFilter::Nearest) {
         const int d = lod <= 0.5f ? 0 : int(std::ceil(lod + 0.5f)) - 1;

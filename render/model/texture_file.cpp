@@ -3,7 +3,10 @@
 #include "bounded_read.h"
 
 #include <QFileInfo>
+#include <QImageIOHandler>
 #include <QImageReader>
+
+#include <mutex>
 
 namespace lb {
 
@@ -35,12 +38,21 @@ TextureFileRead readTextureFile(const QString &path)
         return read;
     }
     // The largest image allowed decodes to 1 GiB of RGBA; Qt refuses more than 256 MiB unless
-    // told. Bigger ones are decoded at the size drawn where the format can (JPEG).
-    QImageReader::setAllocationLimit(
-        int((qint64(kMaxTextureFileSide) * kMaxTextureFileSide * 4) >> 20) + 64);
+    // told (a process-wide setting: set once, before the first image is read here).
+    static std::once_flag limitSet;
+    std::call_once(limitSet, [] {
+        QImageReader::setAllocationLimit(
+            int((qint64(kMaxTextureFileSide) * kMaxTextureFileSide * 4) >> 20) + 64);
+    });
+    // Bigger ones are decoded at the size drawn where the format can (JPEG); a thin one keeps
+    // at least one texel across.
     if (size.isValid() && (size.width() > Texture::kMaxSize || size.height() > Texture::kMaxSize))
-        reader.setScaledSize(
-            size.scaled(Texture::kMaxSize, Texture::kMaxSize, Qt::KeepAspectRatio));
+        reader.setScaledSize(size.scaled(Texture::kMaxSize, Texture::kMaxSize, Qt::KeepAspectRatio)
+                                 .expandedTo(QSize(1, 1)));
+    // The size as shown: a photo's EXIF rotation by 90 degrees swaps it.
+    const QSize shown = reader.transformation() & QImageIOHandler::TransformationRotate90
+                            ? size.transposed()
+                            : size;
     const QImage image = reader.read();
     if (image.isNull()) {
         read.error =
@@ -54,8 +66,9 @@ TextureFileRead readTextureFile(const QString &path)
                        .arg(drawn.width())
                        .arg(drawn.height())
                        .arg(texture->levelCount());
-    if (size.isValid() && size != drawn.size())
-        read.summary += QObject::tr(" (scaled from %1 x %2)").arg(size.width()).arg(size.height());
+    if (shown.isValid() && shown != drawn.size())
+        read.summary +=
+            QObject::tr(" (scaled from %1 x %2)").arg(shown.width()).arg(shown.height());
     read.texture = std::move(texture);
     return read;
 }

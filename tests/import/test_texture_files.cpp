@@ -149,6 +149,60 @@ private slots:
         QVERIFY(!loader.texture(1));
     }
 
+    // Opened again after it changed on disk (a student repainted it), the image is read
+    // again; the old one draws until the new one is in.
+    void anImageOpenedAgainIsReadAgain()
+    {
+        const QString path = m_dir.filePath("repainted.png");
+        QImage image(8, 8, QImage::Format_RGB32);
+        image.fill(QColor(255, 0, 0));
+        QVERIFY(image.save(path));
+        SceneDocument document;
+        ObjectLoader loader(&document);
+        QVERIFY(openTexture(loader, path).ok);
+        const std::shared_ptr<const Texture> red = loader.texture(0);
+        image.fill(QColor(0, 255, 0));
+        QVERIFY(image.save(path));
+        loader.openTexture(path);
+        QCOMPARE(loader.texture(0), red); // still drawn meanwhile
+        QTRY_VERIFY(loader.texture(0) != red);
+        QCOMPARE(qGreen(loader.texture(0)->image().pixel(0, 0)), 255);
+    }
+
+    // Two images opened for two objects before either is in: each gets its own.
+    void twoOpensBeforeEitherIsIn()
+    {
+        const QString blue = m_dir.filePath("blue.png");
+        QImage image(4, 4, QImage::Format_RGB32);
+        image.fill(Qt::blue);
+        QVERIFY(image.save(blue));
+        SceneDocument document;
+        document.edit([](Scene &s) { s.objects.resize(2); });
+        ObjectLoader loader(&document);
+        QSignalSpy finished(&loader, &ObjectLoader::textureFinished);
+        loader.openTexture(m_good);
+        document.edit([](Scene &s) { s.selected = 1; });
+        loader.openTexture(blue);
+        QTRY_COMPARE(finished.size(), 2);
+        QCOMPARE(document.scene().objects[0].textureFile, m_good);
+        QCOMPARE(document.scene().objects[1].textureFile, blue);
+    }
+
+    // A thin image (a toon ramp) wider than a texture may be is scaled to 4096 x 1, not
+    // refused.
+    void aThinWideRampIsScaledNotRefused()
+    {
+        QImage ramp(5000, 1, QImage::Format_RGB32);
+        for (int x = 0; x < ramp.width(); ++x)
+            ramp.setPixel(x, 0, qRgb(x * 255 / 4999, 0, 0));
+        const QString path = m_dir.filePath("ramp.png");
+        QVERIFY(ramp.save(path));
+        const TextureFileRead read = readTextureFile(path);
+        QVERIFY2(read.texture, qPrintable(read.error));
+        QCOMPARE(read.texture->image().size(), QSize(4096, 1));
+        QVERIFY2(read.summary.contains("scaled from 5000 x 1"), qPrintable(read.summary));
+    }
+
     // A scene (a file, a restart) naming an image that is gone: a message, and those objects
     // show the checker; the rest of the scene is untouched.
     void aSceneNamingAMissingImage()
@@ -183,6 +237,8 @@ private slots:
         ObjectLoader loader(&document);
         QSignalSpy finished(&loader, &ObjectLoader::textureFinished);
         loader.openTexture(m_good);
+        // A material edit before the removal does not make the loader blame the wrong object.
+        document.edit([](Scene &s) { s.objects[0].material.shininess = 3; });
         document.edit([](Scene &s) {
             s.objects.pop_back();
             s.selected = 0;
@@ -193,6 +249,23 @@ private slots:
                  qPrintable(finished.first().at(1).toString()));
         for (const ObjectSettings &o : document.scene().objects)
             QVERIFY(o.textureFile.isEmpty());
+
+        // The same after a material edit, for an object before it: the image follows its object.
+        finished.clear();
+        document.edit([](Scene &s) {
+            s.objects.resize(3);
+            s.selected = 2;
+        });
+        loader.openTexture(m_good);
+        document.edit([](Scene &s) { s.objects[1].material.shininess = 9; });
+        document.edit([](Scene &s) {
+            s.objects.erase(s.objects.begin());
+            s.selected = 0;
+        });
+        QTRY_VERIFY(!finished.isEmpty());
+        QVERIFY2(finished.first().at(0).toBool(), qPrintable(finished.first().at(1).toString()));
+        QCOMPARE(document.scene().objects[1].textureFile, m_good);
+        QVERIFY(document.scene().objects[0].textureFile.isEmpty());
     }
 };
 

@@ -166,6 +166,13 @@ private slots:
                  QString("/elsewhere/class/meshes/bunny.ply"));
         QCOMPARE(there.file->scene.objects[0].textureFile,
                  QString("/elsewhere/class/images/fur.jpg"));
+        // An example's built-in image stays built in.
+        SceneFile example = f;
+        example.scene.objects[0].textureFile = ":/examples/bricks.png";
+        QCOMPARE(parseSceneFile(sceneFileBytes(example, dir), moved, "e.json")
+                     .file->scene.objects[0]
+                     .textureFile,
+                 QString(":/examples/bricks.png"));
 
         // No program: the built-in one, which follows the shading choice.
         SceneFile builtIn = f;

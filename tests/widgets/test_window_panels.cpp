@@ -3,6 +3,7 @@
 #include "window_fixture.h"
 
 #include "frames.h"
+#include "probe_panel.h"
 #include "texture_controls.h"
 
 #include <QCheckBox>
@@ -156,9 +157,25 @@ private slots:
         TextureControls *t = m_window->objectPanel()->texture();
         t->textureCheck()->setChecked(true);
         const QImage checker = frame();
+        // A point probed on the checker follows the image when it comes in.
+        Viewport *v = m_window->viewport();
+        QTest::mouseClick(v, Qt::LeftButton, Qt::ControlModifier, v->rect().center());
+        frame();
+        ProbePanel *probe = m_window->probePanel();
+        QVERIFY(probe->isActive());
+        const glm::vec3 checkerBase = probe->result().base;
         m_window->meshActions()->openImage(path);
         QTRY_COMPARE(scene().objects[0].textureFile, path);
         QTRY_VERIFY(imageDifference(checker, frame()) > 10);
+        QVERIFY(probe->isActive());
+        QVERIFY(probe->result().base != checkerBase);
+        frame();
+        QVERIFY(probe->gpuColour());
+        const glm::vec3 ref = probe->result().reference * 255.0f;
+        for (int c = 0; c < 3; ++c)
+            QVERIFY2(std::abs((*probe->gpuColour())[c] - int(std::lround(ref[c]))) <= 2,
+                     qPrintable(probe->textLabel()->text()));
+        QTest::keyClick(m_window.get(), Qt::Key_Escape);
         QCOMPARE(t->imageLabel()->text(), QString("fine.png"));
         // 2-texel stripes on the sphere: minified, so mipmaps and the filter show.
         expectNewImage([&] { t->mipmapsCheck()->setChecked(true); }, "mipmaps");

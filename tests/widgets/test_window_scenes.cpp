@@ -80,7 +80,20 @@ private slots:
             QVERIFY2(!m_window->sceneActions()->messageBox(), qPrintable(resource));
             QVERIFY2(m_window->viewport()->banner().isEmpty(), qPrintable(resource));
             QVERIFY2(imageDifference(before, frame()) > 10, qPrintable(resource));
+            // Every image an example names is built in and comes in (not the checker).
+            for (int i = 0; i < int(scene().objects.size()); ++i)
+                if (!scene().objects[std::size_t(i)].textureFile.isEmpty())
+                    QTRY_VERIFY2(m_window->objectLoader()->texture(i), qPrintable(resource));
+            QVERIFY2(!m_window->meshActions()->errorBox(), qPrintable(resource));
         }
+        // Saved and opened again, the example's image is still the built-in one.
+        QVERIFY(m_window->sceneActions()->open(":/examples/texture_filtering.json"));
+        const QString saved = m_dir.filePath("floors.json");
+        QCOMPARE(m_window->sceneActions()->save(saved), QString());
+        QVERIFY(m_window->sceneActions()->open(saved));
+        QCOMPARE(scene().objects[0].textureFile, QString(":/examples/bricks.png"));
+        QTRY_VERIFY(m_window->objectLoader()->texture(0));
+        QVERIFY(!m_window->meshActions()->errorBox());
     }
 
     void exportWritesTheChosenSize()
