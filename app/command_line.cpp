@@ -174,8 +174,8 @@ const OptionSpec kOptions[] = {
      "Modulate ambient and diffuse by the texture: the image file, else the mesh file's own, "
      "else the checker."},
     {"texture-file", "FILE",
-     "An image (PNG, JPEG, any format Qt reads; at most 16384 x 16384) as the texture; "
-     "switches the texture on."},
+     "An image (PNG, JPEG, any format Qt reads; at most 16384 x 16384, drawn at most 4096 on a "
+     "side) as the texture; switches the texture on."},
     {"texture-wrap", "repeat|clamp", "Texture coordinates outside 0 to 1 repeat or clamp."},
     {"texture-filter", "nearest|linear", "The nearest texel or the four around, weighted."},
     {"texture-mipmaps", "on|off",

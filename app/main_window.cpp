@@ -14,6 +14,7 @@
 #include "settings_autosave.h"
 #include "shading_panel.h"
 #include "status_line.h"
+#include "texture_controls.h"
 #include "uniform_panel.h"
 #include "viewport.h"
 
@@ -67,13 +68,7 @@ MainWindow::MainWindow(QSettings &settings, QWidget *parent)
     addPanelDock(tr("Uniforms"), "uniformDock", m_uniforms);
     QDockWidget *probeDock = addPanelDock(tr("Probe"), "probeDock", m_probe);
     // A click on an object selects it for the Object and Material panels.
-    connect(m_viewport, &Viewport::clicked, this, [this](QPoint pixel) {
-        const QSize frame = m_viewport->size() * m_viewport->devicePixelRatio();
-        const ProbeResult hit = probeFramePixel(
-            m_document.scene(), m_viewport->renderer().probedObjects(), frame, pixel);
-        if (hit.hit)
-            m_document.edit([&](Scene &s) { s.selected = hit.object; });
-    });
+    connect(m_viewport, &Viewport::clicked, this, &MainWindow::selectObjectAt);
     connect(m_viewport, &Viewport::probeRequested, this, [this, probeDock](QPoint pixel) {
         m_probe->probeAt(pixel);
         probeDock->show();
@@ -110,6 +105,13 @@ MainWindow::MainWindow(QSettings &settings, QWidget *parent)
     });
 
     m_meshActions = new MeshActions(this, &m_document, m_loader, m_settings, m_status);
+    connect(m_meshActions, &MeshActions::imageDropped, this,
+            [this](const QString &path, QPoint globalPos) {
+                const QPoint local = m_viewport->mapFromGlobal(globalPos);
+                if (m_viewport->rect().contains(local))
+                    selectObjectAt((QPointF(local) * m_viewport->devicePixelRatio()).toPoint());
+                m_meshActions->openImage(path);
+            });
     connect(m_meshActions, &MeshActions::shaderFilesDropped, this,
             [this](const QStringList &paths) {
                 if (const QString error = m_shaders.openFiles(paths); !error.isEmpty())
@@ -305,6 +307,15 @@ void MainWindow::keepUnsavedSession()
     else
         qWarning("lightbench: the session could not be saved in %s, nor in %s",
                  qPrintable(m_settings.fileName()), qPrintable(error));
+}
+
+void MainWindow::selectObjectAt(QPoint framePixel)
+{
+    const QSize frame = m_viewport->size() * m_viewport->devicePixelRatio();
+    const ProbeResult hit = probeFramePixel(
+        m_document.scene(), m_viewport->renderer().probedObjects(), frame, framePixel);
+    if (hit.hit)
+        m_document.edit([&](Scene &s) { s.selected = hit.object; });
 }
 
 } // namespace lb

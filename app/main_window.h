@@ -84,6 +84,8 @@ protected:
     void resizeEvent(QResizeEvent *event) override;
 
 private:
+    // A click in the view (or an image dropped there) selects the object under it, if any.
+    void selectObjectAt(QPoint framePixel);
     QDockWidget *addPanelDock(const QString &title, const QString &objectName, QWidget *panel);
     void writeSettings(); // puts the session's values into the settings, for the autosave
     // Closing while the autosave fails: the scene and program go to a scene file in the

@@ -271,8 +271,8 @@ bool MeshActions::eventFilter(QObject *watched, QEvent *event)
             emit shaderFilesDropped(shaders);
         if (!meshes.isEmpty())
             open(meshes.first()); // one object at a time
-        if (!images.isEmpty())
-            openImage(images.first()); // the selected object's texture
+        if (!images.isEmpty())    // the texture of the object it lands on, or the selected one
+            emit imageDropped(images.first(), m_window->mapToGlobal(drop->position().toPoint()));
         drop->acceptProposedAction();
         return true;
     }

@@ -51,6 +51,9 @@ public:
 signals:
     void shaderFilesDropped(const QStringList &paths);
     void sceneFileDropped(const QString &path);
+    // An image dropped at `globalPos`: the window selects the object there, if any, and
+    // opens the image for the selected object (openImage()).
+    void imageDropped(const QString &path, QPoint globalPos);
     void frameBudgetChanged(double seconds);
 
 protected:

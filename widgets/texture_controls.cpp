@@ -6,10 +6,11 @@
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QSignalBlocker>
 #include <QToolButton>
 
+#include "status_line.h"
 #include "texture_file.h"
-#include <QSignalBlocker>
 
 namespace lb {
 
@@ -31,9 +32,8 @@ TextureControls::TextureControls(SceneDocument *document, QWidget *parent)
             [this](bool on) { edit([&](Scene &s) { s.selectedObject().texture = on; }); });
     feeds(m_texture, {Semantic::EnableTexture});
     imageRow->addWidget(m_texture);
-    m_image = new QLabel(this);
+    m_image = new ElidedLabel(this); // a long name ends in "...", the whole path as tooltip
     m_image->setMinimumWidth(30);
-    m_image->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
     imageRow->addWidget(m_image, 1);
     m_open = new QToolButton(this);
     m_open->setText(tr("Image..."));
@@ -83,10 +83,13 @@ void TextureControls::refresh(const Scene &scene)
     const QSignalBlocker b1(m_texture), b2(m_wrap), b3(m_filter), b4(m_mipmaps);
     m_texture->setChecked(o.texture);
     const bool image = !o.textureFile.isEmpty();
-    m_image->setText(image                  ? QFileInfo(o.textureFile).fileName()
+    const QString problem = image && m_problem ? m_problem() : QString();
+    m_image->setText(image && !problem.isEmpty()
+                         ? tr("%1 (not shown)").arg(QFileInfo(o.textureFile).fileName())
+                     : image                ? QFileInfo(o.textureFile).fileName()
                      : o.meshPath.isEmpty() ? tr("the checker")
                                             : tr("the mesh file's texture, or the checker"));
-    m_image->setToolTip(image ? o.textureFile : QString());
+    m_image->setFullText(!problem.isEmpty() ? problem : image ? o.textureFile : QString());
     m_clear->setEnabled(image);
     m_wrap->setCurrentIndex(int(o.sampling.wrap));
     m_filter->setCurrentIndex(int(o.sampling.filter));

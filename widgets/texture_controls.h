@@ -5,12 +5,16 @@
 
 #include "scene_panel.h"
 
+#include <functional>
+
 class QCheckBox;
 class QComboBox;
 class QLabel;
 class QToolButton;
 
 namespace lb {
+
+class ElidedLabel;
 
 class TextureControls : public ScenePanel
 {
@@ -19,7 +23,11 @@ public:
     explicit TextureControls(SceneDocument *document, QWidget *parent = nullptr);
 
     QCheckBox *textureCheck() const { return m_texture; }
-    QLabel *imageLabel() const { return m_image; }
+    ElidedLabel *imageLabel() const { return m_image; }
+    // Where the panel learns why the selected object's image is not shown (the object
+    // loader's textureProblem()); refreshProblem() shows it again.
+    void setProblemLookup(std::function<QString()> lookup) { m_problem = std::move(lookup); }
+    void refreshProblem() { refreshNow(); }
     QToolButton *openButton() const { return m_open; }
     QToolButton *clearButton() const { return m_clear; }
     QComboBox *wrapCombo() const { return m_wrap; }
@@ -34,7 +42,8 @@ protected:
 
 private:
     QCheckBox *m_texture;
-    QLabel *m_image;
+    ElidedLabel *m_image;
+    std::function<QString()> m_problem;
     QToolButton *m_open, *m_clear;
     QComboBox *m_wrap, *m_filter;
     QCheckBox *m_mipmaps;

@@ -72,6 +72,14 @@ std::shared_ptr<const Texture> ObjectLoader::texture(int index) const
     return drawnTexture(resolve(index));
 }
 
+QString ObjectLoader::textureProblem(int index) const
+{
+    index = resolve(index);
+    const std::vector<ObjectSettings> &objects = m_document->scene().objects;
+    return index < int(objects.size()) ? m_textures.failure(objects[std::size_t(index)].textureFile)
+                                       : QString();
+}
+
 std::shared_ptr<const Texture> ObjectLoader::drawnTexture(int index) const
 {
     const std::vector<ObjectSettings> &objects = m_document->scene().objects;
@@ -113,9 +121,6 @@ void ObjectLoader::textureDecoded(const QString &path, const TextureFileRead &re
             ++it;
         }
     const bool opened = !openedFor.empty();
-    const std::vector<ObjectSettings> &objects = m_document->scene().objects;
-    const bool named = std::any_of(objects.begin(), objects.end(),
-                                   [&](const auto &o) { return o.textureFile == path; });
     const bool busy = std::exchange(m_busy, true); // synced below
     if (read.texture && opened) {
         m_document->edit([&](Scene &s) {
@@ -125,21 +130,17 @@ void ObjectLoader::textureDecoded(const QString &path, const TextureFileRead &re
                     s.objects[std::size_t(index)].texture = true;
                 }
         });
-    } else if (!read.texture && named && !opened) {
-        // Named by a scene file or a restart: those objects show what they would without it.
-        m_document->edit([&](Scene &s) {
-            for (ObjectSettings &o : s.objects)
-                if (o.textureFile == path)
-                    o.textureFile.clear();
-        });
     }
+    // Named by a scene file or a restart and not readable: those objects keep naming it (a
+    // scene saved now loses nothing) and show what they would without it.
     m_busy = busy;
     if (opened || !read.texture)
         emit textureFinished(bool(read.texture),
                              read.texture ? read.summary
                              : opened     ? read.error
                                           : tr("%1 (the objects naming it show the mesh file's "
-                                                   "texture or the checker)")
+                                                   "texture or the checker, and keep its name for when "
+                                                   "the file is back)")
                                             .arg(read.error));
     sync();
 }

@@ -52,6 +52,8 @@ public:
     const MeshFile *file(int index = -1) const;
     std::shared_ptr<const Mesh> mesh(int index = -1) const;
     std::shared_ptr<const Texture> texture(int index = -1) const;
+    // Why object `index`'s image file is not shown (missing, not an image, ...), or empty.
+    QString textureProblem(int index = -1) const;
     int objectCount() const { return int(m_slots.size()); }
     // "teapot.obj: 6,320 vertices, 12,288 triangles, loaded in 0.21 s", or the shape's, for
     // the selected object.
@@ -69,8 +71,8 @@ signals:
     // `message`: the summary on success, "FILE: what went wrong" otherwise.
     void loadFinished(bool ok, const QString &message);
     // An image file opened, or one a scene names that could not be read: "brick.png: 512 x
-    // 512, 10 mipmap levels", or "FILE: what went wrong" (the scene's objects then show what
-    // they showed without it).
+    // 512 texels", or "FILE: what went wrong" (the scene's objects keep naming it and show
+    // what they would without it; textureProblem() says why).
     void textureFinished(bool ok, const QString &message);
 
 private:

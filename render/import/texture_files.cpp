@@ -1,8 +1,23 @@
 #include "texture_files.h"
 
+#include <QDateTime>
+#include <QFileInfo>
+
 #include <algorithm>
 
 namespace lb {
+
+namespace {
+
+QString fileState(const QString &path)
+{
+    const QFileInfo info(path);
+    return info.exists()
+               ? QString("%1 %2").arg(info.size()).arg(info.lastModified().toMSecsSinceEpoch())
+               : QString();
+}
+
+} // namespace
 
 TextureFiles::TextureFiles(QObject *parent) : QObject(parent)
 {
@@ -22,14 +37,25 @@ std::shared_ptr<const Texture> TextureFiles::find(const QString &path) const
 
 void TextureFiles::request(const QString &path)
 {
-    if (m_images.count(path) || path == m_decoding || m_queue.contains(path))
+    if (const auto failed = m_failed.find(path);
+        failed != m_failed.end() && failed->second.state != fileState(path))
+        m_failed.erase(failed);
+    if (m_images.count(path) || m_failed.count(path) || path == m_decoding ||
+        m_queue.contains(path))
         return;
     m_queue << path;
     startNext();
 }
 
+QString TextureFiles::failure(const QString &path) const
+{
+    const auto found = m_failed.find(path);
+    return found == m_failed.end() ? QString() : found->second.error;
+}
+
 void TextureFiles::reread(const QString &path)
 {
+    m_failed.erase(path);
     if (m_queue.contains(path))
         return;
     m_queue << path;
@@ -40,6 +66,8 @@ void TextureFiles::keepOnly(const QStringList &keep)
 {
     for (auto it = m_images.begin(); it != m_images.end();)
         it = keep.contains(it->first) ? std::next(it) : m_images.erase(it);
+    for (auto it = m_failed.begin(); it != m_failed.end();)
+        it = keep.contains(it->first) ? std::next(it) : m_failed.erase(it);
     m_queue.erase(std::remove_if(m_queue.begin(), m_queue.end(),
                                  [&](const QString &p) { return !keep.contains(p); }),
                   m_queue.end());
@@ -60,6 +88,8 @@ void TextureFiles::startNext()
                 m_decoding.clear();
                 if (read->texture)
                     m_images[path] = *read;
+                else if (!m_images.count(path)) // a reread that fails keeps the image in
+                    m_failed[path] = {read->error, fileState(path)};
                 emit decoded(path, *read);
                 startNext();
             },

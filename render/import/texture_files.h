@@ -22,8 +22,11 @@ public:
 
     // The decoded image of `path`, or nullptr (not asked for, being decoded, or failed).
     std::shared_ptr<const Texture> find(const QString &path) const;
-    // Decodes `path` on the worker unless it is in already or queued; decoded() follows.
+    // Decodes `path` on the worker unless it is in already, queued, or failed before and
+    // unchanged since (a file put back, or saved again, is tried again); decoded() follows.
     void request(const QString &path);
+    // Why `path` could not be read, when it was tried and failed (empty otherwise).
+    QString failure(const QString &path) const;
     // Decodes `path` again (the file may have changed since): the image in stays until the
     // new one replaces it; one that fails leaves it as it was. decoded() follows.
     void reread(const QString &path);
@@ -41,6 +44,12 @@ private:
     QString m_decoding; // the path on the worker; empty when idle
     QStringList m_queue;
     std::map<QString, TextureFileRead> m_images; // decoded ones only
+    struct Failure
+    {
+        QString error;
+        QString state; // the file's existence, size and time when it failed
+    };
+    std::map<QString, Failure> m_failed; // until read again
 };
 
 } // namespace lb

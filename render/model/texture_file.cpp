@@ -1,6 +1,7 @@
 #include "texture_file.h"
 
 #include "bounded_read.h"
+#include "message_text.h"
 
 #include <QFileInfo>
 #include <QImageIOHandler>
@@ -13,10 +14,15 @@ namespace lb {
 TextureFileRead readTextureFile(const QString &path)
 {
     TextureFileRead read;
-    const QString name = QFileInfo(path).fileName();
+    // Messages name the path as the user gave it, like those of unreadableFile().
+    const QString name = echoedValue(path, 300);
     read.error = unreadableFile(path, {"an image", kMaxTextureFileBytes});
     if (!read.error.isEmpty())
         return read;
+    if (QFileInfo(path).size() == 0) {
+        read.error = QObject::tr("%1: an empty file, not an image").arg(name);
+        return read;
+    }
     QImageReader reader(path);
     reader.setAutoTransform(true); // a photo's EXIF orientation, as viewers show it
     if (!reader.canRead()) {
@@ -61,11 +67,10 @@ TextureFileRead readTextureFile(const QString &path)
     }
     auto texture = std::make_shared<Texture>(Texture::fromImage(image));
     const QImage &drawn = texture->image();
-    read.summary = QObject::tr("%1: %2 x %3, %4 mipmap levels")
-                       .arg(name)
+    read.summary = QObject::tr("%1: %2 x %3 texels")
+                       .arg(QFileInfo(path).fileName())
                        .arg(drawn.width())
-                       .arg(drawn.height())
-                       .arg(texture->levelCount());
+                       .arg(drawn.height());
     if (shown.isValid() && shown != drawn.size())
         read.summary +=
             QObject::tr(" (scaled from %1 x %2)").arg(shown.width()).arg(shown.height());

@@ -19,7 +19,7 @@ struct TextureFileRead
 {
     std::shared_ptr<const Texture> texture; // null on failure
     QString error;                          // "FILE: what went wrong"; empty on success
-    // "brick.png: 512 x 512, 10 mipmap levels" (and "scaled to 4096 x 2048" where it was).
+    // "brick.png: 512 x 512 texels" (and "(scaled from 8192 x 4096)" where it was).
     QString summary;
 };
 

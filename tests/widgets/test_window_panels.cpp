@@ -8,8 +8,10 @@
 
 #include <QCheckBox>
 #include <QComboBox>
+#include <QDropEvent>
 #include <QLabel>
 #include <QListWidget>
+#include <QMimeData>
 #include <QPushButton>
 #include <QToolButton>
 
@@ -199,6 +201,40 @@ private slots:
         t->clearButton()->click();
         QVERIFY(scene().objects[0].textureFile.isEmpty());
         QCOMPARE(t->imageLabel()->text(), QString("the checker"));
+    }
+
+    // An image dropped on an object is that object's texture (it becomes the selected one).
+    void anImageDroppedOnAnObjectTexturesThatOne()
+    {
+        m_window->document().edit([](Scene &s) {
+            s.objects.resize(2);
+            s.objects[0].translation.x = -1.3f;
+            s.objects[1].translation.x = 1.3f;
+            s.selected = 0;
+            s.showLight = false;
+        });
+        frame();
+        QImage image(16, 16, QImage::Format_RGB32);
+        image.fill(Qt::yellow);
+        const QString path = m_dir.filePath("yellow.png");
+        QVERIFY(image.save(path));
+        // Where object 1's centre is drawn, in the window's coordinates.
+        Viewport *v = m_window->viewport();
+        const QSize size = v->size() * v->devicePixelRatio();
+        const Frames f = computeFrames(scene(), float(size.width()) / float(size.height()), 1);
+        const glm::vec2 p =
+            pixelOf(f, glm::vec3(f.modelView[3]), float(size.width()), float(size.height()));
+        const QPoint at =
+            v->mapTo(m_window.get(), (QPointF(p.x, p.y) / v->devicePixelRatio()).toPoint());
+        QMimeData mime;
+        mime.setUrls({QUrl::fromLocalFile(path)});
+        QDragEnterEvent enter(at, Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+        QApplication::sendEvent(m_window.get(), &enter); // Qt drops only where a drag entered
+        QDropEvent drop(QPointF(at), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+        QApplication::sendEvent(m_window.get(), &drop);
+        QCOMPARE(scene().selected, 1);
+        QTRY_COMPARE(scene().objects[1].textureFile, path);
+        QVERIFY(scene().objects[0].textureFile.isEmpty());
     }
 
     // The list: Add draws a second object and selects it (the Material panel edits its
