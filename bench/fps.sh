@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Frames per second at 1280x720 under Xvfb (Mesa llvmpipe here), for the default scene, a
-# generated 1M-triangle torus, and 16 objects of 1,024 triangles beside one sphere of as many. Each figure is the median of RUNS processes; each process
+# generated 1M-triangle torus, 16 objects of 1,024 triangles beside one sphere of as many, and
+# the default scene textured (the checker, an image, an image with mipmaps). Each figure is the
+# median of RUNS processes; each process
 # draws FRAMES frames offscreen through the same renderer as the window (--bench-frames).
 # Usage: bench/fps.sh [RUNS] [FRAMES]   (builds first, like scripts/run)
 set -euo pipefail
@@ -40,3 +42,10 @@ trap 'rm -f "$sixteen"' EXIT
 python3 "$(dirname "${BASH_SOURCE[0]}")/sixteen_objects.py" "$sixteen"
 measure "16 spheres of 1,024 triangles, 16 materials (4x4 grid)" --scene "$sixteen"
 measure "one sphere of as many triangles" --tessellation 128
+examples="$(dirname "${BASH_SOURCE[0]}")/../resources/examples"
+measure "default, texture on (the checker, linear)" --texture on
+measure "default, 512x512 image, linear" --texture-file "$examples/bricks.png"
+measure "default, 512x512 image, trilinear mipmaps" --texture-file "$examples/bricks.png" \
+    --texture-mipmaps on
+measure "texture filtering example (3 floors: nearest, linear, mipmaps)" \
+    --scene "$examples/texture_filtering.json"
