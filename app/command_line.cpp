@@ -196,6 +196,20 @@ const OptionSpec kOptions[] = {
     {"translate-webgl1", "",
      "Run WebGL 1 shaders (no #version) translated to GLSL 3.30 core instead of under "
      "\"#version 100\" (automatic where the driver refuses #version 100)."},
+    {"grade", "",
+     "Grade submissions (the arguments after the options: NAME.vert + NAME.frag, a folder "
+     "with one such pair, or a scene file with a program) against --exercise; one line per "
+     "submission; exit 0, or 2 when one could not be read (the others are graded)."},
+    {"exercise", "FILE.json",
+     "The exercise to grade against: a scene file with an \"exercise\" section (reference "
+     "program, cases, tolerance)."},
+    {"report", "FILE.csv", "With --grade: one CSV row per submission."},
+    {"sheets", "DIR",
+     "With --grade: one PNG per submission (its worst case: student, "
+     "reference, difference)."},
+    {"seed", "N",
+     "With --grade: the cases' random parameters (default 1; the same seed gives "
+     "the same cases)."},
     {"check", "",
      "Compile and link --vertex and --fragment and try them on small frames, print each "
      "diagnostic as FILE:LINE:COLUMN: error|warning: message; exit 0 if the program links and "
@@ -275,6 +289,24 @@ void parseInto(const QCommandLineParser &parser, CommandLine &cl)
     if (given("ui-scale"))
         cl.uiScalePercent = integer("ui-scale", value("ui-scale"), 100, 250);
     cl.check = given("check");
+    cl.grade = given("grade");
+    if (given("grade-one"))
+        cl.gradeOne = value("grade-one");
+    for (const char *option : {"exercise", "report", "sheets", "seed"})
+        if (given(option) && !cl.grade && cl.gradeOne.isEmpty())
+            fail(option, "goes with --grade");
+    if (cl.grade || !cl.gradeOne.isEmpty()) {
+        cl.submissions = parser.positionalArguments();
+        if (!given("exercise") || value("exercise").isEmpty())
+            fail("grade", "needs --exercise FILE.json");
+        if (cl.grade && cl.submissions.isEmpty())
+            fail("grade", "needs submissions to grade (NAME.vert, a folder, or a scene file)");
+        cl.exercisePath = value("exercise");
+        cl.reportPath = value("report");
+        cl.sheetsDir = value("sheets");
+        if (given("seed"))
+            cl.seed = std::uint32_t(integer("seed", value("seed"), 0, 2147483647));
+    }
     if (cl.check && !cl.hasUserProgram())
         fail("check", "needs --vertex FILE and --fragment FILE");
 
@@ -557,6 +589,10 @@ std::optional<ProgramText> CommandLine::program() const
 CommandLineResult parseCommandLine(const QStringList &arguments)
 {
     QCommandLineParser parser;
+    // The batch's child process: one submission (grade.h); not for people.
+    QCommandLineOption gradeOne("grade-one", "One submission of --grade.", "SUBMISSION");
+    gradeOne.setFlags(QCommandLineOption::HiddenFromHelp);
+    parser.addOption(gradeOne);
     parser.setApplicationDescription(
         "lightbench: a lighting workbench for the Phong and Blinn-Phong models.\n"
         "Without --render, --probe or --bench-frames it opens the window.");
@@ -576,7 +612,7 @@ CommandLineResult parseCommandLine(const QStringList &arguments)
         result.message = parser.helpText();
         return result;
     }
-    if (!parser.positionalArguments().isEmpty()) {
+    if (!parser.positionalArguments().isEmpty() && !parser.isSet("grade")) {
         result.exitCode = 2;
         result.message = QString("unexpected argument '%1' (see --help)")
                              .arg(echoed(parser.positionalArguments().first()));

@@ -12,6 +12,7 @@
 #include <QString>
 #include <QStringList>
 
+#include <cstdint>
 #include <functional>
 #include <optional>
 #include <vector>
@@ -47,6 +48,13 @@ struct CommandLine
                         // add a second pair to time)
     // --import-memory-limit MB, --import-time-limit S; unset: the preferences' (window) or
     // the defaults (headless).
+    // --grade SUBMISSION... --exercise FILE [--report CSV] [--sheets DIR] [--seed N]
+    // (grade.h); --grade-one SUBMISSION is one submission, in the batch's child process.
+    bool grade = false;
+    QStringList submissions;
+    QString gradeOne;
+    QString exercisePath, reportPath, sheetsDir;
+    std::uint32_t seed = 1;
     std::optional<qint64> importMemoryMB;
     std::optional<int> importSeconds;
     ImportLimits importLimits() const;
@@ -55,7 +63,7 @@ struct CommandLine
     bool headless() const
     {
         return !renderPath.isEmpty() || probe || benchFrames > 0 || check ||
-               !saveScenePath.isEmpty();
+               !saveScenePath.isEmpty() || grade || !gradeOne.isEmpty();
     }
     // The scene options given, on top of `scene`.
     void applyTo(Scene &scene) const;

@@ -2,6 +2,7 @@
 
 #include "command_line.h"
 #include "edit_bench.h"
+#include "grade.h"
 #include "headless.h"
 #include "main_window.h"
 #include "mesh_actions.h"
@@ -72,11 +73,17 @@ int main(int argc, char **argv)
                      qPrintable(lb::summarisedList(cl.sceneIgnored, "; ")));
     if (cl.headless()) {
         QGuiApplication app(argc, argv);
+        if (cl.grade)
+            return lb::runGrade(cl);
+        if (!cl.gradeOne.isEmpty())
+            return lb::runGradeOne(cl);
         // Headless frames start from the scene file or the defaults, not the saved session.
         const lb::Scene scene = cl.headlessScene();
         if (!cl.saveScenePath.isEmpty()) {
-            const QString error =
-                lb::writeSceneFile(cl.saveScenePath, lb::SceneFile{scene, cl.program()});
+            const QString error = lb::writeSceneFile(
+                cl.saveScenePath,
+                lb::SceneFile{scene, cl.program(),
+                              cl.sceneFile ? cl.sceneFile->exercise : std::nullopt});
             if (!error.isEmpty()) {
                 std::fprintf(stderr, "lightbench: --save-scene: %s\n", qPrintable(error));
                 return 1;

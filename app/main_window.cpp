@@ -300,7 +300,8 @@ void MainWindow::keepUnsavedSession()
         QDir(QStandardPaths::writableLocation(QStandardPaths::TempLocation))
             .filePath(QString("lightbench-unsaved-%1.json")
                           .arg(QDateTime::currentDateTime().toString("yyyyMMdd-HHmmss")));
-    const QString error = writeSceneFile(path, SceneFile{m_document.scene(), m_shaders.program()});
+    const QString error =
+        writeSceneFile(path, SceneFile{m_document.scene(), m_shaders.program(), std::nullopt});
     if (error.isEmpty())
         qWarning("lightbench: the session could not be saved in %s; it is in %s (File > Open)",
                  qPrintable(m_settings.fileName()), qPrintable(path));

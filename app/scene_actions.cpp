@@ -105,6 +105,9 @@ bool SceneActions::open(const QString &path)
         return false;
     }
     SceneFile file = *read.file;
+    // An exercise's reference and grading ride along, so that saving it keeps them (the
+    // window does not show them yet).
+    m_exercise = file.exercise;
     // An example's mesh (none today) would name a file beside the resource: keep shapes.
     if (example)
         for (ObjectSettings &o : file.scene.objects)
@@ -131,7 +134,7 @@ bool SceneActions::open(const QString &path)
 QString SceneActions::save(const QString &path)
 {
     const QString error =
-        writeSceneFile(path, SceneFile{m_document->scene(), m_shaders->program()});
+        writeSceneFile(path, SceneFile{m_document->scene(), m_shaders->program(), m_exercise});
     if (!error.isEmpty()) {
         showMessage(QMessageBox::Warning, tr("The scene was not saved."), error);
         return error;
@@ -244,19 +247,20 @@ void SceneActions::forgetFile()
 {
     setCurrentPath({}, {});
     m_saved.reset();
+    m_exercise.reset();
     emit documentChanged();
 }
 
 void SceneActions::remember()
 {
-    m_saved = SceneFile{m_document->scene(), m_shaders->program()};
+    m_saved = SceneFile{m_document->scene(), m_shaders->program(), m_exercise};
     emit documentChanged();
 }
 
 bool SceneActions::isModified() const
 {
-    SceneFile now{m_document->scene(), m_shaders->program()};
-    const SceneFile saved = m_saved.value_or(SceneFile{Scene{}, std::nullopt});
+    SceneFile now{m_document->scene(), m_shaders->program(), m_exercise};
+    const SceneFile saved = m_saved.value_or(SceneFile{Scene{}, std::nullopt, std::nullopt});
     // Auto-rotation turns the object 60 times a second: the turn is not an edit.
     for (std::size_t i = 0; i < now.scene.objects.size(); ++i)
         if (now.scene.objects[i].autoRotate && i < saved.scene.objects.size())

@@ -78,6 +78,7 @@ private:
     QString m_path; // the scene file last opened or saved; empty for an example or none
     QString m_name;
     std::optional<SceneFile> m_saved;
+    std::optional<Exercise> m_exercise; // the open scene file's, kept when it is saved
 };
 
 } // namespace lb

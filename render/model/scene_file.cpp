@@ -59,6 +59,8 @@ QByteArray sceneFileBytes(const SceneFile &file, const QDir &dir)
     root["objects"] = objects;
     root["format"] = kFormat;
     root["version"] = kSceneFileVersion;
+    if (file.exercise)
+        root["exercise"] = exerciseJson(*file.exercise);
     if (file.program)
         root["program"] = QJsonObject{{"name", file.program->name},
                                       {"edited", file.program->edited},
@@ -113,6 +115,12 @@ SceneFileRead parseSceneFile(const QByteArray &bytes, const QDir &dir, const QSt
         read.ignored << "program (not an object)";
     }
 
+    const QJsonValue exercise = root.take("exercise");
+    if (!exercise.isUndefined()) {
+        ExerciseRead e = readExercise(exercise, &read.ignored);
+        file.exercise = e.exercise;
+        read.exerciseError = e.error;
+    }
     file.scene = Scene::fromJson(root, &read.ignored);
     for (ObjectSettings &object : file.scene.objects)
         for (QString *path : {&object.meshPath, &object.textureFile})

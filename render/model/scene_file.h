@@ -5,6 +5,7 @@
 //
 // {"format": "lightbench-scene", "version": 2, "program": {...}, "lights": [...], ...}
 
+#include "exercise.h"
 #include "scene.h"
 
 #include <QByteArray>
@@ -39,7 +40,9 @@ struct SceneFile
 {
     Scene scene; // the mesh path is absolute here
     // Absent: the built-in program of the scene's shading (it follows Gouraud / Phong).
+    // In an exercise, the student's starting point.
     std::optional<ProgramText> program;
+    std::optional<Exercise> exercise; // exercise.h
 };
 
 struct SceneFileRead
@@ -47,6 +50,7 @@ struct SceneFileRead
     std::optional<SceneFile> file; // empty when the file cannot be used at all
     QString error;                 // why, as "PATH: message"
     QStringList ignored;           // what was read but not used, for one message
+    QString exerciseError;         // an "exercise" that cannot be graded against: why
 };
 
 // The document; a mesh inside `dir` (or below, or beside) is written relative to it.

@@ -153,6 +153,14 @@ private slots:
                                          << "--texture-mipmaps";
         QTest::newRow("texture file, empty") << "--texture-file="
                                              << "--texture-file";
+        QTest::newRow("exercise without grade") << "--exercise e.json"
+                                                << "--exercise";
+        QTest::newRow("grade without exercise") << "--grade a.vert"
+                                                << "--grade";
+        QTest::newRow("grade without submissions") << "--grade --exercise e.json"
+                                                   << "--grade";
+        QTest::newRow("negative seed") << "--grade a --exercise e.json --seed -3"
+                                       << "--seed";
         QTest::newRow("missing number") << "--light 1,2,3"
                                         << "--light";
         QTest::newRow("empty number") << "--ka 1,,0"

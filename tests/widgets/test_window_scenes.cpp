@@ -96,6 +96,21 @@ private slots:
         QVERIFY(!m_window->meshActions()->errorBox());
     }
 
+    // An exercise opened and saved keeps its reference and grading (the window does not
+    // show them yet; a teacher's save must not lose them).
+    void anExerciseKeepsItsReferenceWhenSaved()
+    {
+        const QString exercise =
+            QStringLiteral(LB_TEST_DATA "/../../resources/examples/exercise_lighting.json");
+        QVERIFY(m_window->sceneActions()->open(exercise));
+        const QString saved = m_dir.filePath("lesson.json");
+        QCOMPARE(m_window->sceneActions()->save(saved), QString());
+        const SceneFileRead read = readSceneFile(saved);
+        QVERIFY(read.file && read.file->exercise);
+        QVERIFY(!read.file->exercise->reference.builtIn());
+        QCOMPARE(read.file->exercise->grading.cases, 20);
+    }
+
     void exportWritesTheChosenSize()
     {
         const QString path = m_dir.filePath("view.png");

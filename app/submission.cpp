@@ -1,0 +1,81 @@
+#include "submission.h"
+
+#include "scene_file.h"
+#include "shader_document.h"
+
+#include <QDir>
+#include <QFileInfo>
+
+namespace lb {
+
+namespace {
+
+Submission pair(const QString &name, const QString &vertexPath, const QString &fragmentPath)
+{
+    Submission s;
+    s.name = name;
+    s.vertexPath = vertexPath;
+    s.fragmentPath = fragmentPath;
+    for (const auto &[path, text] :
+         {std::pair{vertexPath, &s.vertex}, {fragmentPath, &s.fragment}}) {
+        const ShaderFileRead read = readShaderFile(path);
+        if (!read.ok()) {
+            s.error = read.error;
+            return s;
+        }
+        *text = read.text;
+    }
+    return s;
+}
+
+} // namespace
+
+Submission readSubmission(const QString &path)
+{
+    const QFileInfo info(path);
+    Submission s;
+    s.name = info.completeBaseName();
+    if (info.isDir()) {
+        s.name = info.fileName();
+        const QDir dir(path);
+        const QStringList verts = dir.entryList({"*.vert"}, QDir::Files);
+        const QStringList frags = dir.entryList({"*.frag"}, QDir::Files);
+        if (verts.size() != 1 || frags.size() != 1) {
+            s.error = QString("%1: a folder needs one NAME.vert and one NAME.frag (it has %2 and "
+                              "%3)")
+                          .arg(path)
+                          .arg(verts.size())
+                          .arg(frags.size());
+            return s;
+        }
+        return pair(s.name, dir.filePath(verts[0]), dir.filePath(frags[0]));
+    }
+    const QString suffix = info.suffix().toLower();
+    if (suffix == "json") {
+        const SceneFileRead read = readSceneFile(path);
+        if (!read.file) {
+            s.error = read.error;
+        } else if (!read.file->program) {
+            s.error = QString("%1: the scene file has no program").arg(path);
+        } else {
+            s.vertexPath = s.fragmentPath = path;
+            s.vertex = read.file->program->vertex;
+            s.fragment = read.file->program->fragment;
+        }
+        return s;
+    }
+    // NAME.vert, NAME.frag or NAME: the pair beside each other.
+    const QString stem =
+        suffix == "vert" || suffix == "frag" ? info.dir().filePath(info.completeBaseName()) : path;
+    if (suffix != "vert" && suffix != "frag")
+        s.name = info.fileName();
+    const QString vertex = stem + ".vert", fragment = stem + ".frag";
+    for (const QString &p : {vertex, fragment})
+        if (!QFileInfo::exists(p)) {
+            s.error = QString("%1: no %2").arg(path, p);
+            return s;
+        }
+    return pair(s.name, vertex, fragment);
+}
+
+} // namespace lb

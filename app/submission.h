@@ -1,0 +1,19 @@
+#pragma once
+// A student's submission as --grade names it: NAME.vert + NAME.frag (either file, or NAME
+// alone), a folder holding one such pair, or a scene file with a program.
+
+#include <QString>
+
+namespace lb {
+
+struct Submission
+{
+    QString name;                     // NAME, the folder's or the scene file's base name
+    QString vertexPath, fragmentPath; // for messages: where each stage's lines are
+    QString vertex, fragment;
+    QString error; // "PATH: why" when it cannot be read; empty otherwise
+};
+
+Submission readSubmission(const QString &path);
+
+} // namespace lb

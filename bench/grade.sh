@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# Grading a class: 100 submissions x 20 cases at 320x240 (the example exercise,
+# resources/examples/exercise_lighting.json), made of the five sample submissions in
+# tests/data/grading 20 times each (correct, reflection sign wrong, normal matrix wrong, not
+# compiling, endless loop), graded by one `lightbench --grade` run inside Xvfb, each
+# submission in its own process, two at a time. Prints the wall time per run and the median.
+# Usage: bench/grade.sh [RUNS]   (default 3; builds first, like scripts/run)
+set -euo pipefail
+source "$(dirname "${BASH_SOURCE[0]}")/../scripts/setup.sh"
+RUNS=${1:-3}
+if [[ -z "${LIGHTBENCH_IN_XVFB:-}" ]]; then
+    ensure_packages
+    build lightbench >/dev/null
+    LIGHTBENCH_IN_XVFB=1 exec xvfb-run -a -s "$XVFB_SCREEN" bash "$0" "$RUNS"
+fi
+exe="$BUILD_DIR/app/lightbench"
+samples="$ROOT/tests/data/grading"
+class=$(mktemp -d)
+trap 'rm -rf "$class"' EXIT
+for i in $(seq -w 1 20); do
+    for s in reflect_sign normal_matrix syntax loop; do
+        cp "$samples/$s.vert" "$class/$s-$i.vert"
+        cp "$samples/$s.frag" "$class/$s-$i.frag"
+    done
+    cp "$samples/correct/lighting.vert" "$class/correct-$i.vert"
+    cp "$samples/correct/lighting.frag" "$class/correct-$i.frag"
+done
+times=()
+for ((r = 0; r < RUNS; r++)); do
+    start=$(date +%s.%N)
+    "$exe" --grade "$class"/*.vert --exercise "$ROOT/resources/examples/exercise_lighting.json" \
+        --report "$class/grades.csv" >/dev/null
+    end=$(date +%s.%N)
+    times+=("$(awk "BEGIN {printf \"%.1f\", $end - $start}")")
+    echo "run $((r + 1)): ${times[-1]} s, load $(cut -d' ' -f1-3 /proc/loadavg)"
+done
+median=$(printf '%s\n' "${times[@]}" | sort -g | awk '{a[NR]=$1} END {print a[int((NR+1)/2)]}')
+echo "100 submissions x 20 cases at 320x240: median $median s over $RUNS runs"
+cut -d, -f2 "$class/grades.csv" | tail -n +2 | sort | uniq -c

@@ -1,0 +1,225 @@
+#include "exercise.h"
+
+#include <QJsonArray>
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <random>
+
+namespace lb {
+
+namespace {
+
+constexpr std::array<const char *, 8> kVaryNames{"light",    "lightW", "lightFrame", "lightColour",
+                                                 "material", "camera", "projection", "scale"};
+constexpr int kMaxCases = 200;
+constexpr int kMaxSide = 2048;
+
+// Uniform in [lo, hi) from the generator's bits, the same with every standard library
+// (std::uniform_real_distribution is not specified bit for bit).
+class Draw
+{
+public:
+    explicit Draw(std::uint32_t seed) : m_engine(seed) {}
+    float uniform(float lo, float hi)
+    {
+        return lo + (hi - lo) * float(m_engine() >> 8) * (1.0f / 16777216.0f);
+    }
+    int index(int n) { return std::min(n - 1, int(uniform(0.0f, float(n)))); }
+    glm::vec3 colour(float lo, float hi)
+    {
+        const float r = uniform(lo, hi), g = uniform(lo, hi);
+        return {r, g, uniform(lo, hi)};
+    }
+    // A direction on the unit sphere.
+    glm::vec3 direction()
+    {
+        const float z = uniform(-1.0f, 1.0f), a = uniform(0.0f, 6.2831853f);
+        const float r = std::sqrt(std::max(0.0f, 1.0f - z * z));
+        return {r * std::cos(a), r * std::sin(a), z};
+    }
+
+private:
+    std::mt19937 m_engine;
+};
+
+QString text(const QJsonObject &o, const char *key)
+{
+    return o.value(QLatin1String(key)).toString();
+}
+
+} // namespace
+
+QStringList varyNames()
+{
+    QStringList names;
+    for (const char *n : kVaryNames)
+        names << QLatin1String(n);
+    return names;
+}
+
+QJsonObject exerciseJson(const Exercise &exercise)
+{
+    QJsonObject reference;
+    if (exercise.reference.builtIn())
+        reference["builtIn"] = QJsonObject{{"shading", toName(exercise.reference.shading)},
+                                           {"specular", toName(exercise.reference.specular)}};
+    else
+        reference = QJsonObject{{"vertex", exercise.reference.vertex},
+                                {"fragment", exercise.reference.fragment}};
+    const GradingSpec &g = exercise.grading;
+    QJsonArray vary;
+    for (int i = 0; i < int(kVaryNames.size()); ++i)
+        if (g.vary & (1u << i))
+            vary.append(QLatin1String(kVaryNames[std::size_t(i)]));
+    return QJsonObject{
+        {"title", exercise.title},
+        {"task", exercise.task},
+        {"reference", reference},
+        {"grading", QJsonObject{{"cases", g.cases},
+                                {"size", QJsonArray{g.size.width(), g.size.height()}},
+                                {"tolerance", g.tolerance},
+                                {"passShare", g.passShare},
+                                {"vary", vary}}}};
+}
+
+ExerciseRead readExercise(const QJsonValue &json, QStringList *ignored)
+{
+    ExerciseRead read;
+    const auto ignore = [&](const QString &path, const QString &why) {
+        if (ignored)
+            ignored->append(QString("exercise.%1 (%2)").arg(path, why));
+    };
+    if (!json.isObject()) {
+        read.error = "exercise: not an object";
+        return read;
+    }
+    const QJsonObject o = json.toObject();
+    Exercise e;
+    e.title = text(o, "title");
+    e.task = text(o, "task");
+    const QJsonObject known = exerciseJson(e);
+    for (auto it = o.begin(); it != o.end(); ++it)
+        if (!known.contains(it.key()))
+            ignore(it.key(), "unknown field");
+
+    const QJsonObject ref = o.value("reference").toObject();
+    if (ref.contains("vertex") || ref.contains("fragment")) {
+        e.reference.vertex = text(ref, "vertex");
+        e.reference.fragment = text(ref, "fragment");
+        if (e.reference.vertex.trimmed().isEmpty() || e.reference.fragment.trimmed().isEmpty()) {
+            read.error = "exercise.reference: needs both a vertex and a fragment shader";
+            return read;
+        }
+    } else if (ref.contains("builtIn")) {
+        const QJsonObject b = ref.value("builtIn").toObject();
+        if (const auto s = parseShading(text(b, "shading")))
+            e.reference.shading = *s;
+        else if (b.contains("shading"))
+            ignore("reference.builtIn.shading", "not " + shadingNames().join(", "));
+        if (const auto s = parseSpecularModel(text(b, "specular")))
+            e.reference.specular = *s;
+        else if (b.contains("specular"))
+            ignore("reference.builtIn.specular", "not " + specularModelNames().join(", "));
+    } else {
+        read.error = "exercise: no reference program (\"reference\": {\"vertex\": ..., "
+                     "\"fragment\": ...} or {\"builtIn\": {...}})";
+        return read;
+    }
+
+    const QJsonObject g = o.value("grading").toObject();
+    GradingSpec &spec = e.grading;
+    const auto number = [&](const char *key, double lo, double hi, auto &value) {
+        const QJsonValue v = g.value(QLatin1String(key));
+        if (v.isUndefined())
+            return;
+        if (!v.isDouble() || !std::isfinite(v.toDouble())) {
+            ignore(QString("grading.%1").arg(key), "not a number");
+            return;
+        }
+        const double d = v.toDouble();
+        if (d < lo || d > hi)
+            ignore(QString("grading.%1").arg(key), "out of range, clamped");
+        value = std::remove_reference_t<decltype(value)>(std::clamp(d, lo, hi));
+    };
+    number("cases", 1, kMaxCases, spec.cases);
+    number("tolerance", 0, 255, spec.tolerance);
+    number("passShare", 0.0, 1.0, spec.passShare);
+    if (g.contains("size")) {
+        const QJsonArray a = g.value("size").toArray();
+        if (a.size() == 2 && a[0].isDouble() && a[1].isDouble())
+            spec.size = QSize(std::clamp(a[0].toInt(), 16, kMaxSide),
+                              std::clamp(a[1].toInt(), 16, kMaxSide));
+        else
+            ignore("grading.size", "not [width, height]");
+    }
+    if (g.contains("vary")) {
+        spec.vary = 0;
+        for (const QJsonValue &v : g.value("vary").toArray()) {
+            const int i = varyNames().indexOf(v.toString());
+            if (i < 0)
+                ignore("grading.vary", QString("no such parameter '%1'; those are %2")
+                                           .arg(v.toString().left(40), varyNames().join(", ")));
+            else
+                spec.vary |= 1u << i;
+        }
+    }
+    read.exercise = e;
+    return read;
+}
+
+std::vector<Scene> gradingCases(const Scene &base, const GradingSpec &spec, std::uint32_t seed)
+{
+    std::vector<Scene> cases;
+    const auto varies = [&](Vary v) { return (spec.vary & unsigned(v)) != 0; };
+    for (int k = 0; k < spec.cases; ++k) {
+        Scene s = base;
+        if (k > 0) {
+            // Each case from its own stream: a case does not depend on how many come before.
+            Draw draw(seed * 2654435761u + std::uint32_t(k) * 40503u + 1u);
+            Light &light = s.lights[0];
+            light.enabled = true;
+            if (varies(Vary::Light)) {
+                const glm::vec3 p = draw.direction() * draw.uniform(2.0f, 4.0f);
+                light.position = glm::vec4(p, light.position.w);
+            }
+            if (varies(Vary::LightW))
+                light.position.w = draw.index(2) ? 1.0f : 0.0f;
+            if (varies(Vary::LightFrame))
+                light.frame = LightFrame(draw.index(3));
+            if (varies(Vary::LightColour)) {
+                light.colors.ia = draw.colour(0.0f, 0.4f);
+                light.colors.id = draw.colour(0.3f, 1.0f);
+                light.colors.is = draw.colour(0.3f, 1.0f);
+            }
+            for (ObjectSettings &o : s.objects) {
+                if (varies(Vary::Material)) {
+                    o.material.ka = draw.colour(0.0f, 1.0f);
+                    o.material.kd = draw.colour(0.0f, 1.0f);
+                    o.material.ks = draw.colour(0.0f, 1.0f);
+                    o.material.shininess = std::exp(draw.uniform(std::log(2.0f), std::log(200.0f)));
+                }
+                if (varies(Vary::Scale)) {
+                    o.scale = o.scale * draw.colour(0.5f, 1.6f);
+                    o.rotationDegrees = draw.colour(-180.0f, 180.0f);
+                }
+            }
+            if (varies(Vary::Camera)) {
+                s.camera.yawDegrees = draw.uniform(-180.0f, 180.0f);
+                s.camera.pitchDegrees = draw.uniform(-60.0f, 60.0f);
+            }
+            if (varies(Vary::Projection))
+                s.shading.projection = Projection(draw.index(2));
+        }
+        for (ObjectSettings &o : s.objects)
+            o.autoRotate = false; // a case is one still frame
+        s.showLight = false;      // the marker is no part of either program's picture
+        cases.push_back(s);
+    }
+    return cases;
+}
+
+} // namespace lb

@@ -1,0 +1,83 @@
+#pragma once
+// An exercise: a scene file with a task for the student, the reference program (the teacher's
+// solution, or the built-in program with given switches) and how a student's program is
+// graded: how many cases, which of the scene's parameters each case varies, the frame size
+// and the tolerance per pixel. The scene file's own program is the student's starting point.
+//
+// In a scene file, the "exercise" object:
+//   {"title": "...", "task": "...",
+//    "reference": {"vertex": "...", "fragment": "..."}            (the teacher's solution)
+//             or {"builtIn": {"shading": "phong", "specular": "phong"}},
+//    "grading": {"cases": 20, "size": [320, 240], "tolerance": 2, "passShare": 0.99,
+//                "vary": ["light", "lightW", "lightFrame", "lightColour", "material",
+//                         "camera", "projection", "scale"]}}
+
+#include "scene.h"
+
+#include <QJsonObject>
+#include <QSize>
+#include <QString>
+#include <QStringList>
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+namespace lb {
+
+// What the cases of an exercise vary (light 1 and every object), each a bit.
+enum class Vary : unsigned {
+    Light = 1u << 0,       // light 1's position (kept 2 to 4 units from the origin)
+    LightW = 1u << 1,      // point (w = 1) or directional (w = 0)
+    LightFrame = 1u << 2,  // camera, world or object frame
+    LightColour = 1u << 3, // Ia, Id, Is
+    Material = 1u << 4,    // Ka, Kd, Ks and shininess
+    Camera = 1u << 5,      // the orbit's yaw and pitch
+    Projection = 1u << 6,  // perspective or orthographic
+    Scale = 1u << 7,       // a non-uniform scale and a rotation: a wrong normal matrix shows
+};
+constexpr unsigned kVaryAll = (1u << 8) - 1;
+QStringList varyNames(); // as the file names them, in the order above
+
+struct ExerciseReference
+{
+    // The teacher's solution; absent: the built-in program with these choices.
+    QString vertex, fragment;
+    Shading shading = Shading::Phong;
+    SpecularModel specular = SpecularModel::Phong;
+    bool builtIn() const { return vertex.isEmpty(); }
+};
+
+struct GradingSpec
+{
+    int cases = 20; // case 0 is the exercise's scene as it is
+    QSize size{320, 240};
+    int tolerance = 2;       // per channel, out of 255
+    double passShare = 0.99; // a case passes when this share of its pixels is within tolerance
+    unsigned vary = kVaryAll;
+};
+
+struct Exercise
+{
+    QString title, task;
+    ExerciseReference reference;
+    GradingSpec grading;
+};
+
+QJsonObject exerciseJson(const Exercise &exercise);
+// Fields it cannot use keep their defaults and are named in `ignored` ("exercise.grading.
+// cases (out of range, clamped)"); a reference that is neither a program nor a built-in
+// choice, or a missing one, is an error: nothing to grade against.
+struct ExerciseRead
+{
+    std::optional<Exercise> exercise;
+    QString error;
+};
+ExerciseRead readExercise(const QJsonValue &json, QStringList *ignored);
+
+// The scenes of the cases, from `base`: case 0 is `base`, each other one varies what
+// `spec.vary` names, drawn from `seed` and its index alone (the same seed gives the same
+// cases, and case 3 is the same whether 5 or 20 are asked for).
+std::vector<Scene> gradingCases(const Scene &base, const GradingSpec &spec, std::uint32_t seed);
+
+} // namespace lb

@@ -1,0 +1,33 @@
+#pragma once
+// One case of a grading: the student's frame against the reference's, pixel by pixel, over
+// the pixels either of them covers (the background, the same in both, would make any program
+// look nearly right); and the sheet a teacher looks at: student | reference | heat map, with
+// the numbers.
+
+#include <QImage>
+#include <QPoint>
+#include <QString>
+
+namespace lb {
+
+struct CaseResult
+{
+    int largest = 0;        // the largest channel difference, out of 255
+    QPoint at{-1, -1};      // where (top-left origin); (-1, -1) when nothing differs
+    double shareWithin = 1; // of the pixels compared, those within the tolerance
+    int compared = 0;       // pixels either frame covers
+    bool passed = false;    // shareWithin >= the exercise's passShare
+};
+
+// `background`: the clear colour both frames share where nothing is drawn.
+CaseResult measureCase(const QImage &student, const QImage &reference, QRgb background,
+                       int tolerance, double passShare);
+
+// |student - reference| per pixel, black at 0 to white at 64/255 (the difference view's scale).
+QImage differenceHeatMap(const QImage &student, const QImage &reference);
+
+// The three frames side by side with a line of text under each and a title above.
+QImage gradingSheet(const QString &title, const QImage &student, const QImage &reference,
+                    const CaseResult &result, int caseIndex);
+
+} // namespace lb
