@@ -70,9 +70,14 @@ Submission readSubmission(const QString &path)
     if (suffix != "vert" && suffix != "frag")
         s.name = info.fileName();
     const QString vertex = stem + ".vert", fragment = stem + ".frag";
+    if ((suffix == "vert" || suffix == "frag") && !info.exists()) {
+        s.error = QString("%1: no such file").arg(path);
+        return s;
+    }
     for (const QString &p : {vertex, fragment})
         if (!QFileInfo::exists(p)) {
-            s.error = QString("%1: no %2").arg(path, p);
+            s.error = QString("%1: no %2 beside it (a submission is NAME.vert and NAME.frag)")
+                          .arg(path, QFileInfo(p).fileName());
             return s;
         }
     return pair(s.name, vertex, fragment);
