@@ -291,12 +291,13 @@ int runGrade(const CommandLine &cl)
     // Both cores (or as many as there are): each submission in a process of its own.
     const int parallel = std::max(1, std::min(QThread::idealThreadCount(), 4));
     QEventLoop loop;
+    QObject children; // owns the processes: each goes with it, whatever the loop left undone
     std::size_t next = 0;
     int running = 0;
     std::function<void()> startMore = [&] {
         while (running < parallel && next < toRun.size()) {
             const int i = toRun[next++];
-            auto *p = new QProcess;
+            auto *p = new QProcess(&children);
             QStringList args{"--grade-one",   cl.submissions[i], "--exercise",
                              cl.exercisePath, "--seed",          QString::number(cl.seed)};
             if (!cl.sheetsDir.isEmpty())
