@@ -288,8 +288,11 @@ int runGrade(const CommandLine &cl)
         }
     }
 
-    // Both cores (or as many as there are): each submission in a process of its own.
-    const int parallel = std::max(1, std::min(QThread::idealThreadCount(), 4));
+    // Both cores (or as many as there are, up to 4): each submission in a process of its own.
+    // LIGHTBENCH_GRADE_PROCESSES sets how many run at once (bench/grade.sh compares).
+    const int asked = qEnvironmentVariableIntValue("LIGHTBENCH_GRADE_PROCESSES");
+    const int parallel =
+        asked > 0 ? std::min(asked, 16) : std::max(1, std::min(QThread::idealThreadCount(), 4));
     QEventLoop loop;
     QObject children; // owns the processes: each goes with it, whatever the loop left undone
     std::size_t next = 0;
