@@ -290,8 +290,10 @@ void parseInto(const QCommandLineParser &parser, CommandLine &cl)
         cl.uiScalePercent = integer("ui-scale", value("ui-scale"), 100, 250);
     cl.check = given("check");
     cl.grade = given("grade");
-    if (given("grade-one"))
+    if (given("grade-one")) {
         cl.gradeOne = value("grade-one");
+        cl.gradeName = value("grade-name");
+    }
     for (const char *option : {"exercise", "report", "sheets", "seed"})
         if (given(option) && !cl.grade && cl.gradeOne.isEmpty())
             fail(option, "goes with --grade");
@@ -593,6 +595,9 @@ CommandLineResult parseCommandLine(const QStringList &arguments)
     QCommandLineOption gradeOne("grade-one", "One submission of --grade.", "SUBMISSION");
     gradeOne.setFlags(QCommandLineOption::HiddenFromHelp);
     parser.addOption(gradeOne);
+    QCommandLineOption gradeName("grade-name", "Its name in the report.", "NAME");
+    gradeName.setFlags(QCommandLineOption::HiddenFromHelp);
+    parser.addOption(gradeName);
     parser.setApplicationDescription(
         "lightbench: a lighting workbench for the Phong and Blinn-Phong models.\n"
         "Without --render, --probe or --bench-frames it opens the window.");

@@ -52,7 +52,7 @@ struct CommandLine
     // (grade.h); --grade-one SUBMISSION is one submission, in the batch's child process.
     bool grade = false;
     QStringList submissions;
-    QString gradeOne;
+    QString gradeOne, gradeName; // --grade-name: the name the batch gives it (unique)
     QString exercisePath, reportPath, sheetsDir;
     std::uint32_t seed = 1;
     std::optional<qint64> importMemoryMB;

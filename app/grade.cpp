@@ -2,13 +2,13 @@
 
 #include "grading.h"
 #include "import_process.h"
+#include "message_text.h"
 #include "offscreen.h"
 #include "submission.h"
 #include "texture_file.h"
 
 #include <QCoreApplication>
 #include <QDir>
-#include <QElapsedTimer>
 #include <QEventLoop>
 #include <QFileInfo>
 #include <QJsonArray>
@@ -16,11 +16,14 @@
 #include <QJsonObject>
 #include <QProcess>
 #include <QSaveFile>
+#include <QSet>
 #include <QThread>
 #include <QTimer>
 
+#include <csignal>
 #include <cstdio>
-#include <memory>
+#include <cstring>
+#include <functional>
 
 namespace lb {
 
@@ -28,6 +31,9 @@ namespace {
 
 constexpr QRgb kBackground = qRgb(41, 43, 48); // the renderer's clear colour
 constexpr double kTrialBudgetMs = 2000.0;      // one frame at the grading size, at most
+// What a child says when the exercise, not the submission, is at fault: the batch stops.
+const QStringList kBatchFailures{"no exercise", "no OpenGL", "exercise files",
+                                 "reference does not build"};
 
 void printLine(const QString &line, FILE *stream)
 {
@@ -35,17 +41,23 @@ void printLine(const QString &line, FILE *stream)
     std::fflush(stream);
 }
 
-// The exercise file, checked: "PATH: why" when it cannot be graded against.
+// The exercise file, checked: "PATH: why" when it cannot be graded against. A field of the
+// exercise section that cannot be used is an error too: a misspelt "vary" would grade every
+// case alike and pass wrong answers without a word.
 struct ExerciseFile
 {
     SceneFile file;
     QString error;
+    QStringList ignored; // the scene's own fields that could not be used
 };
 
 ExerciseFile readExerciseFile(const QString &path)
 {
     ExerciseFile e;
     const SceneFileRead read = readSceneFile(path);
+    QStringList exerciseFields;
+    for (const QString &i : read.ignored)
+        (i.startsWith("exercise") ? exerciseFields : e.ignored) << i;
     if (!read.file)
         e.error = read.error;
     else if (!read.exerciseError.isEmpty())
@@ -53,17 +65,27 @@ ExerciseFile readExerciseFile(const QString &path)
     else if (!read.file->exercise)
         e.error =
             QString("%1: not an exercise (the scene file has no \"exercise\" section)").arg(path);
+    else if (!exerciseFields.isEmpty())
+        e.error = QString("%1: %2").arg(path, summarisedList(exerciseFields, "; "));
     else
         e.file = *read.file;
     return e;
 }
 
+// "lighting.frag:26: message": the student's file and line. A link error belongs to no one
+// stage; a scene file's program is text inside the file, so its stage is named.
 QString diagnosticText(const Diagnostic &d, const Submission &s)
 {
-    const QString file =
-        QFileInfo(d.stage == ShaderStage::Fragment ? s.fragmentPath : s.vertexPath).fileName();
-    return d.line > 0 ? QString("%1:%2: %3").arg(file).arg(d.line).arg(d.message)
-                      : QString("%1: %2").arg(file, d.message);
+    const bool scene = s.vertexPath == s.fragmentPath;
+    QString where;
+    if (d.stage == ShaderStage::Link)
+        where = scene ? QFileInfo(s.vertexPath).fileName() + " (link)" : QString("link");
+    else
+        where =
+            QFileInfo(d.stage == ShaderStage::Fragment ? s.fragmentPath : s.vertexPath).fileName() +
+            (scene ? QString(" (%1)").arg(stageName(d.stage)) : QString());
+    return d.line > 0 ? QString("%1:%2: %3").arg(where).arg(d.line).arg(d.message)
+                      : QString("%1: %2").arg(where, d.message);
 }
 
 // What one child said, or what became of it.
@@ -79,9 +101,10 @@ struct Graded
 Graded fromJson(const QJsonObject &o)
 {
     Graded g;
-    g.name = o["submission"].toString();
     g.status = o["status"].toString();
     g.diagnostic = o["diagnostic"].toString();
+    if (o.contains("sheetError"))
+        g.diagnostic = o["sheetError"].toString();
     const QJsonArray cases = o["cases"].toArray();
     g.cases = int(cases.size());
     double share = 0.0;
@@ -94,23 +117,42 @@ Graded fromJson(const QJsonObject &o)
     return g;
 }
 
+// The child's result: the last line of its output that is a result (a driver may print more).
+QJsonObject resultOf(const QByteArray &out)
+{
+    const QList<QByteArray> lines = out.split('\n');
+    for (auto it = lines.rbegin(); it != lines.rend(); ++it) {
+        const QJsonObject o = QJsonDocument::fromJson(it->trimmed()).object();
+        if (o.contains("status"))
+            return o;
+    }
+    return {};
+}
+
 QString summaryLine(const Graded &g)
 {
+    const QString diagnostic = g.diagnostic.section('\n', 0, 0);
     if (g.status != "graded")
         return QString("%1: %2%3")
-            .arg(g.name, g.status, g.diagnostic.isEmpty() ? QString() : ": " + g.diagnostic);
-    return QString("%1: %2 %3/%4 cases, largest difference %5/255, %6% of pixels within "
-                   "tolerance")
+            .arg(g.name, g.status, diagnostic.isEmpty() ? QString() : ": " + diagnostic);
+    return QString("%1: %2, %3/%4 cases passed, largest difference %5/255, %6% of pixels within "
+                   "tolerance%7")
         .arg(g.name, g.passed == g.cases ? "passed" : "failed")
         .arg(g.passed)
         .arg(g.cases)
         .arg(g.worst)
-        .arg(100.0 * g.meanShare, 0, 'f', 1);
+        .arg(100.0 * g.meanShare, 0, 'f', 1)
+        .arg(diagnostic.isEmpty() ? QString() : " (" + diagnostic + ")");
 }
 
 QString csvField(QString s)
 {
-    if (s.contains(',') || s.contains('"') || s.contains('\n')) {
+    s.replace('\r', ' ');
+    // A leading = + - @ is a formula to a spreadsheet: quoted and led by a quote mark.
+    const bool formula = !s.isEmpty() && QString("=+-@").contains(s[0]);
+    if (formula)
+        s.prepend('\'');
+    if (formula || s.contains(',') || s.contains('"') || s.contains('\n')) {
         s.replace('"', "\"\"");
         s = '"' + s + '"';
     }
@@ -121,16 +163,18 @@ QString csv(const std::vector<Graded> &rows)
 {
     QString out = "submission,status,cases_passed,cases,worst_difference,mean_share_within,"
                   "first_diagnostic\n";
-    for (const Graded &g : rows)
+    for (const Graded &g : rows) {
+        const bool graded = g.status == "graded";
         out += QStringList{csvField(g.name),
                            csvField(g.status),
-                           QString::number(g.passed),
-                           QString::number(g.cases),
-                           QString::number(g.worst),
-                           QString::number(g.meanShare, 'f', 4),
+                           graded ? QString::number(g.passed) : QString(),
+                           graded ? QString::number(g.cases) : QString(),
+                           graded ? QString::number(g.worst) : QString(),
+                           graded ? QString::number(g.meanShare, 'f', 4) : QString(),
                            csvField(g.diagnostic.section('\n', 0, 0))}
                    .join(',') +
                "\n";
+    }
     return out;
 }
 
@@ -157,6 +201,24 @@ QString loadSceneFiles(OffscreenRenderer &offscreen, const Scene &scene)
     return {};
 }
 
+// Names as the report gives them: a submission's own, made unique ("lighting", "lighting-2")
+// so that rows and sheets are told apart.
+QStringList uniqueNames(const QStringList &names)
+{
+    QStringList unique;
+    QSet<QString> taken;
+    for (QString name : names) {
+        if (name.isEmpty())
+            name = "submission";
+        QString candidate = name;
+        for (int n = 2; taken.contains(candidate); ++n)
+            candidate = QString("%1-%2").arg(name).arg(n);
+        taken.insert(candidate);
+        unique << candidate;
+    }
+    return unique;
+}
+
 } // namespace
 
 int runGradeOne(const CommandLine &cl)
@@ -170,7 +232,8 @@ int runGradeOne(const CommandLine &cl)
         return 0;
     };
     const Submission s = readSubmission(cl.gradeOne);
-    out["submission"] = s.name;
+    const QString name = cl.gradeName.isEmpty() ? s.name : cl.gradeName;
+    out["submission"] = name;
     if (!s.error.isEmpty())
         return finish("unreadable", s.error);
     const ExerciseFile e = readExerciseFile(cl.exercisePath);
@@ -199,7 +262,7 @@ int runGradeOne(const CommandLine &cl)
         const ProgramBuild build =
             offscreen.useProgram(exercise.reference.vertex, exercise.reference.fragment);
         if (!build.ok())
-            return finish("reference does not link", build.log());
+            return finish("reference does not build", build.log());
         for (const Scene &c : cases)
             reference.push_back(offscreen.render(c));
     }
@@ -226,6 +289,12 @@ int runGradeOne(const CommandLine &cl)
     QImage worstFrame;
     for (std::size_t k = 0; k < cases.size(); ++k) {
         const QImage frame = offscreen.render(cases[k]);
+        // A driver that reset its context drew nothing worth grading (a real GPU stopping a
+        // program that ran too long in this case).
+        if (offscreen.wasReset())
+            return finish("GPU reset", QString("the driver reset the context in case %1: a "
+                                               "loop too long for this case?")
+                                           .arg(k));
         const CaseResult r =
             measureCase(frame, reference[k], kBackground, spec.tolerance, spec.passShare);
         results.append(QJsonObject{{"case", int(k)},
@@ -246,10 +315,13 @@ int runGradeOne(const CommandLine &cl)
     out["cases"] = results;
     out["worstCase"] = worst;
     if (!cl.sheetsDir.isEmpty()) {
-        const QString path = QDir(cl.sheetsDir).filePath(s.name + ".png");
-        if (!gradingSheet(s.name, worstFrame, reference[std::size_t(worst)], worstResult, worst)
-                 .save(path))
-            out["sheetError"] = QString("%1: cannot write").arg(path);
+        const QString path = QDir(cl.sheetsDir).filePath(name + ".png");
+        QSaveFile file(path); // a sheet is whole or not there
+        if (!file.open(QIODevice::WriteOnly) ||
+            !gradingSheet(name, worstFrame, reference[std::size_t(worst)], worstResult, worst)
+                 .save(&file, "PNG") ||
+            !file.commit())
+            out["sheetError"] = QString("%1: cannot write the sheet").arg(path);
         else
             out["sheet"] = path;
     }
@@ -263,46 +335,96 @@ int runGrade(const CommandLine &cl)
         printLine("lightbench: --exercise: " + e.error, stderr);
         return 2;
     }
+    if (!e.ignored.isEmpty())
+        printLine(QString("lightbench: --exercise: %1: ignored: %2")
+                      .arg(cl.exercisePath, summarisedList(e.ignored, "; ")),
+                  stderr);
     if (!cl.sheetsDir.isEmpty() && !QDir().mkpath(cl.sheetsDir)) {
         printLine(QString("lightbench: --sheets: %1: cannot make the folder").arg(cl.sheetsDir),
                   stderr);
         return 2;
     }
     const int cases = e.file.exercise->grading.cases;
-    // Time for one submission: its frames and its process; a hang ends here.
-    const int limitMs = 30000 + 1500 * cases;
+    // Time for one submission: its process, its trial and its frames; a hang ends here.
+    const int asked = qEnvironmentVariableIntValue("LIGHTBENCH_GRADE_TIME_LIMIT_MS");
+    const int limitMs = asked > 0 ? asked : int(30000 + 2 * kTrialBudgetMs * cases);
 
     std::vector<Graded> rows(std::size_t(cl.submissions.size()));
+    QStringList names;
+    std::vector<Submission> submissions;
+    for (const QString &path : cl.submissions) {
+        submissions.push_back(readSubmission(path));
+        names << submissions.back().name;
+    }
+    names = uniqueNames(names);
     bool anyUnreadable = false;
     std::vector<int> toRun;
-    for (int i = 0; i < int(cl.submissions.size()); ++i) {
-        const Submission s = readSubmission(cl.submissions[i]);
-        rows[std::size_t(i)].name = s.name.isEmpty() ? cl.submissions[i] : s.name;
-        if (!s.error.isEmpty()) {
-            printLine("lightbench: " + s.error, stderr);
-            rows[std::size_t(i)].status = "unreadable";
-            rows[std::size_t(i)].diagnostic = s.error;
+    for (int i = 0; i < int(submissions.size()); ++i) {
+        Graded &row = rows[std::size_t(i)];
+        row.name = names[i];
+        if (!submissions[std::size_t(i)].error.isEmpty()) {
+            printLine("lightbench: " + submissions[std::size_t(i)].error, stderr);
+            row.status = "unreadable";
+            row.diagnostic = submissions[std::size_t(i)].error;
             anyUnreadable = true;
         } else {
             toRun.push_back(i);
         }
     }
 
-    // Both cores (or as many as there are, up to 4): each submission in a process of its own.
-    // LIGHTBENCH_GRADE_PROCESSES sets how many run at once (bench/grade.sh compares).
-    const int asked = qEnvironmentVariableIntValue("LIGHTBENCH_GRADE_PROCESSES");
-    const int parallel =
-        asked > 0 ? std::min(asked, 16) : std::max(1, std::min(QThread::idealThreadCount(), 4));
+    // One process per core (two here, at most four): each submission in a process of its
+    // own. LIGHTBENCH_GRADE_PROCESSES sets how many (bench/grade.sh compares).
+    const int processes = qEnvironmentVariableIntValue("LIGHTBENCH_GRADE_PROCESSES");
+    const int parallel = processes > 0 ? std::min(processes, 16)
+                                       : std::max(1, std::min(QThread::idealThreadCount(), 4));
     QEventLoop loop;
     QObject children; // owns the processes: each goes with it, whatever the loop left undone
     std::size_t next = 0;
     int running = 0;
-    std::function<void()> startMore = [&] {
-        while (running < parallel && next < toRun.size()) {
+    QString batchFailure; // the exercise's fault, said by a child: no more are started
+    std::function<void()> startMore;
+    const auto ended = [&](int i, QProcess *p, int code, QProcess::ExitStatus status) {
+        Graded &row = rows[std::size_t(i)];
+        const QJsonObject json = resultOf(p->readAllStandardOutput());
+        if (row.status == "timed out") {
+            row.diagnostic = QString("more than %1 s").arg(limitMs / 1000.0, 0, 'f', 1);
+        } else if (!json.isEmpty()) { // a result printed counts, whatever came after it
+            const QString name = row.name;
+            row = fromJson(json);
+            row.name = name;
+            if (kBatchFailures.contains(row.status) && batchFailure.isEmpty())
+                batchFailure = row.status + ": " + row.diagnostic.section('\n', 0, 0);
+        } else {
+            row.status = "crashed";
+            const QString said = QString::fromUtf8(p->readAllStandardError())
+                                     .split('\n')
+                                     .filter("lightbench")
+                                     .value(0)
+                                     .trimmed();
+            row.diagnostic = status == QProcess::CrashExit && p->error() == QProcess::Crashed
+                                 ? QString("killed by signal %1 (%2)")
+                                       .arg(code)
+                                       .arg(QString::fromLatin1(strsignal(code)))
+                             : p->error() == QProcess::FailedToStart
+                                 ? QString("could not start: %1").arg(p->errorString())
+                                 : QString("exit code %1").arg(code);
+            if (!said.isEmpty())
+                row.diagnostic += "; " + said;
+        }
+        p->deleteLater();
+        --running;
+        if ((next >= toRun.size() || !batchFailure.isEmpty()) && running == 0)
+            loop.quit();
+        else
+            startMore();
+    };
+    startMore = [&] {
+        while (running < parallel && next < toRun.size() && batchFailure.isEmpty()) {
             const int i = toRun[next++];
             auto *p = new QProcess(&children);
-            QStringList args{"--grade-one",   cl.submissions[i], "--exercise",
-                             cl.exercisePath, "--seed",          QString::number(cl.seed)};
+            QStringList args{
+                "--grade-one", cl.submissions[i], "--grade-name", names[i],
+                "--exercise",  cl.exercisePath,   "--seed",       QString::number(cl.seed)};
             if (!cl.sheetsDir.isEmpty())
                 args << "--sheets" << cl.sheetsDir;
             auto *timer = new QTimer(p);
@@ -311,45 +433,35 @@ int runGrade(const CommandLine &cl)
                 rows[std::size_t(i)].status = "timed out";
                 p->kill();
             });
+            // Queued: a process that fails to start says so from inside start(), before
+            // the loop runs.
             QObject::connect(
-                p, &QProcess::finished, &loop, [&, i, p](int code, QProcess::ExitStatus status) {
-                    Graded &row = rows[std::size_t(i)];
-                    const QByteArray out = p->readAllStandardOutput();
-                    const QJsonObject json =
-                        QJsonDocument::fromJson(out.trimmed().split('\n').last()).object();
-                    if (row.status == "timed out") {
-                        row.diagnostic = QString("more than %1 s").arg(limitMs / 1000);
-                    } else if (status == QProcess::CrashExit || json.isEmpty()) {
-                        row.status = "crashed";
-                        row.diagnostic = QString::fromUtf8(p->readAllStandardError())
-                                             .trimmed()
-                                             .section('\n', -1);
-                        if (row.diagnostic.isEmpty())
-                            row.diagnostic = QString("exit code %1").arg(code);
-                    } else {
-                        const QString name = row.name;
-                        row = fromJson(json);
-                        row.name = name;
-                    }
-                    p->deleteLater();
-                    --running;
-                    if (next >= toRun.size() && running == 0)
-                        loop.quit();
-                    else
-                        startMore();
-                });
+                p, &QProcess::finished, &loop,
+                [&, i, p, timer](int code, QProcess::ExitStatus status) {
+                    timer->stop();
+                    ended(i, p, code, status);
+                },
+                Qt::QueuedConnection);
             QObject::connect(p, &QProcess::errorOccurred, p, [p](QProcess::ProcessError error) {
                 if (error == QProcess::FailedToStart) // no finished() follows: say it ended
                     emit p->finished(-1, QProcess::CrashExit);
             });
             ++running;
-            p->start(QCoreApplication::applicationFilePath(), args);
+            // LIGHTBENCH_GRADE_PROGRAM stands in for this program in the children (the tests
+            // give one that crashes, chatters or is not there).
+            const QString program = qEnvironmentVariable("LIGHTBENCH_GRADE_PROGRAM");
+            p->start(program.isEmpty() ? QCoreApplication::applicationFilePath() : program, args);
             timer->start(limitMs);
         }
     };
     if (!toRun.empty()) {
-        startMore();
+        QTimer::singleShot(0, &loop, startMore); // from inside the loop, so its quit counts
         loop.exec();
+    }
+    if (!batchFailure.isEmpty()) {
+        printLine(QString("lightbench: --exercise: %1: %2").arg(cl.exercisePath, batchFailure),
+                  stderr);
+        return 2;
     }
 
     for (const Graded &g : rows)

@@ -30,8 +30,9 @@ Submission pair(const QString &name, const QString &vertexPath, const QString &f
 
 } // namespace
 
-Submission readSubmission(const QString &path)
+Submission readSubmission(const QString &given)
 {
+    const QString path = QDir::cleanPath(given); // "alice/" is the folder alice
     const QFileInfo info(path);
     Submission s;
     s.name = info.completeBaseName();

@@ -53,6 +53,8 @@ QString text(const QJsonObject &o, const char *key)
 
 } // namespace
 
+ExerciseRead readExerciseSection(const QJsonValue &json, QStringList *ignored);
+
 QStringList varyNames()
 {
     QStringList names;
@@ -63,6 +65,8 @@ QStringList varyNames()
 
 QJsonObject exerciseJson(const Exercise &exercise)
 {
+    if (!exercise.unread.isUndefined())
+        return exercise.unread.toObject();
     QJsonObject reference;
     if (exercise.reference.builtIn())
         reference["builtIn"] = QJsonObject{{"shading", toName(exercise.reference.shading)},
@@ -87,6 +91,20 @@ QJsonObject exerciseJson(const Exercise &exercise)
 }
 
 ExerciseRead readExercise(const QJsonValue &json, QStringList *ignored)
+{
+    const qsizetype before = ignored ? ignored->size() : 0;
+    ExerciseRead read = readExerciseSection(json, ignored);
+    if (!read.error.isEmpty()) {
+        // Kept as it is: its fields are not read, so none is named; the error says why.
+        if (ignored)
+            ignored->erase(ignored->begin() + before, ignored->end());
+        read.exercise = Exercise{};
+        read.exercise->unread = json;
+    }
+    return read;
+}
+
+ExerciseRead readExerciseSection(const QJsonValue &json, QStringList *ignored)
 {
     ExerciseRead read;
     const auto ignore = [&](const QString &path, const QString &why) {
@@ -150,13 +168,19 @@ ExerciseRead readExercise(const QJsonValue &json, QStringList *ignored)
     number("passShare", 0.0, 1.0, spec.passShare);
     if (g.contains("size")) {
         const QJsonArray a = g.value("size").toArray();
-        if (a.size() == 2 && a[0].isDouble() && a[1].isDouble())
+        if (a.size() == 2 && a[0].isDouble() && a[1].isDouble() &&
+            a[0].toDouble() == a[0].toInt() && a[1].toDouble() == a[1].toInt() &&
+            a[0].toInt() >= 16 && a[1].toInt() >= 16 && a[0].toInt() <= kMaxSide &&
+            a[1].toInt() <= kMaxSide)
             spec.size = QSize(std::clamp(a[0].toInt(), 16, kMaxSide),
                               std::clamp(a[1].toInt(), 16, kMaxSide));
         else
-            ignore("grading.size", "not [width, height]");
+            ignore("grading.size",
+                   QString("not [width, height] in whole pixels, 16 to %1").arg(kMaxSide));
     }
-    if (g.contains("vary")) {
+    if (g.contains("vary") && (!g.value("vary").isArray() || g.value("vary").toArray().isEmpty())) {
+        ignore("grading.vary", "not a list of parameters; all of them vary");
+    } else if (g.contains("vary")) {
         spec.vary = 0;
         for (const QJsonValue &v : g.value("vary").toArray()) {
             const int i = varyNames().indexOf(v.toString());
@@ -214,9 +238,14 @@ std::vector<Scene> gradingCases(const Scene &base, const GradingSpec &spec, std:
             if (varies(Vary::Projection))
                 s.shading.projection = Projection(draw.index(2));
         }
-        for (ObjectSettings &o : s.objects)
-            o.autoRotate = false; // a case is one still frame
-        s.showLight = false;      // the marker is no part of either program's picture
+        // A case is one still frame of the programs alone: no turning, no marker, no normal
+        // lines and no compare view, whatever the scene was saved with.
+        for (ObjectSettings &o : s.objects) {
+            o.autoRotate = false;
+            o.showNormals = false;
+        }
+        s.showLight = false;
+        s.compare.mode = CompareMode::Off;
         cases.push_back(s);
     }
     return cases;

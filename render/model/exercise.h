@@ -15,6 +15,7 @@
 #include "scene.h"
 
 #include <QJsonObject>
+#include <QJsonValue>
 #include <QSize>
 #include <QString>
 #include <QStringList>
@@ -62,12 +63,16 @@ struct Exercise
     QString title, task;
     ExerciseReference reference;
     GradingSpec grading;
+    // A section that cannot be graded against (no reference yet, while the teacher writes
+    // it) is kept as it was read and written back so; set only then.
+    QJsonValue unread{QJsonValue::Undefined};
 };
 
 QJsonObject exerciseJson(const Exercise &exercise);
 // Fields it cannot use keep their defaults and are named in `ignored` ("exercise.grading.
 // cases (out of range, clamped)"); a reference that is neither a program nor a built-in
-// choice, or a missing one, is an error: nothing to grade against.
+// choice, or a missing one, is an error: nothing to grade against (the exercise then holds
+// the section as `unread`, so that saving the scene keeps it).
 struct ExerciseRead
 {
     std::optional<Exercise> exercise;

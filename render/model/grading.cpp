@@ -45,7 +45,8 @@ CaseResult measureCase(const QImage &student, const QImage &reference, QRgb back
             }
         }
     r.shareWithin = r.compared ? double(within) / double(r.compared) : 1.0;
-    r.passed = r.shareWithin >= passShare && student.size() == reference.size();
+    // Nothing drawn by either program tells nothing: not passed.
+    r.passed = r.compared > 0 && r.shareWithin >= passShare && student.size() == reference.size();
     return r;
 }
 

@@ -16,7 +16,7 @@ struct CaseResult
     QPoint at{-1, -1};      // where (top-left origin); (-1, -1) when nothing differs
     double shareWithin = 1; // of the pixels compared, those within the tolerance
     int compared = 0;       // pixels either frame covers
-    bool passed = false;    // shareWithin >= the exercise's passShare
+    bool passed = false;    // shareWithin >= the exercise's passShare, something drawn
 };
 
 // `background`: the clear colour both frames share where nothing is drawn.

@@ -38,8 +38,8 @@ struct ProbeResult
     // one pixel step crosses, from the pixel's 2x2 quad, as the GPU takes it).
     glm::vec2 uv{0.0f};
     float lod = 0.0f;
-    glm::vec3 reference{0.0f};      // the pixel in the active shading mode, clamped to [0, 1]
-    QPointF pixel;                  // where the point lies in the view, top-left origin
+    glm::vec3 reference{0.0f}; // the pixel in the active shading mode, clamped to [0, 1]
+    QPointF pixel;             // where the point lies in the view, top-left origin
 };
 
 // What the probe knows of one of the scene's objects: the mesh drawn and the texture the

@@ -60,7 +60,9 @@ QByteArray sceneFileBytes(const SceneFile &file, const QDir &dir)
     root["format"] = kFormat;
     root["version"] = kSceneFileVersion;
     if (file.exercise)
-        root["exercise"] = exerciseJson(*file.exercise);
+        root["exercise"] = file.exercise->unread.isUndefined()
+                               ? QJsonValue(exerciseJson(*file.exercise))
+                               : file.exercise->unread;
     if (file.program)
         root["program"] = QJsonObject{{"name", file.program->name},
                                       {"edited", file.program->edited},
@@ -120,6 +122,8 @@ SceneFileRead parseSceneFile(const QByteArray &bytes, const QDir &dir, const QSt
         ExerciseRead e = readExercise(exercise, &read.ignored);
         file.exercise = e.exercise;
         read.exerciseError = e.error;
+        if (!e.error.isEmpty())
+            read.ignored << e.error + " (the section is kept as it is)";
     }
     file.scene = Scene::fromJson(root, &read.ignored);
     for (ObjectSettings &object : file.scene.objects)

@@ -1,8 +1,10 @@
 // Grading a class (--grade) as a teacher runs it: the sample submissions in tests/data/grading
 // against the example exercise (the sheet's per-fragment lighting task): the correct one
 // passes every case, each wrong one fails the cases that expose its mistake, the one that does
-// not compile names its line, the endless loop is reported without stalling the batch; the
-// CSV and the sheets; the same seed gives the same report; bad input exits 2 naming it.
+// not compile names its line, the endless loop is refused without stalling the batch; the
+// CSV and the sheets; the same seed gives the same report; bad input exits 2 naming it; a
+// faulty exercise stops the batch; children that crash, chatter, cannot start or run past the
+// time limit (a stand-in program and a tiny limit play them) are reported and the batch goes on.
 #include <QDir>
 #include <QElapsedTimer>
 #include <QFile>
@@ -28,11 +30,13 @@ struct Run
     qint64 ms;
 };
 
-Run run(const QStringList &args)
+Run run(const QStringList &args,
+        const QProcessEnvironment &env = QProcessEnvironment::systemEnvironment())
 {
     QElapsedTimer clock;
     clock.start();
     QProcess p;
+    p.setProcessEnvironment(env);
     p.start(LIGHTBENCH_EXE, args);
     if (!p.waitForFinished(300000))
         return {-1, {}, "timed out", clock.elapsed()};
@@ -47,15 +51,32 @@ QJsonObject gradeOne(const QString &submission, const QString &exercise = kExerc
     return QJsonDocument::fromJson(r.out.trimmed()).object();
 }
 
+// RFC 4180: fields with commas or quotes are quoted, quotes doubled.
 QList<QStringList> csvRows(const QString &path)
 {
     QFile f(path);
     QList<QStringList> rows;
     if (!f.open(QIODevice::ReadOnly))
         return rows;
-    for (const QByteArray &line : f.readAll().split('\n'))
-        if (!line.isEmpty())
-            rows << QString::fromUtf8(line).split(','); // the fields tested hold no commas
+    for (const QByteArray &bytes : f.readAll().split('\n')) {
+        const QString line = QString::fromUtf8(bytes);
+        if (line.isEmpty())
+            continue;
+        QStringList fields{QString()};
+        bool quoted = false;
+        for (int i = 0; i < line.size(); ++i) {
+            const QChar c = line[i];
+            if (quoted && c == '"' && i + 1 < line.size() && line[i + 1] == '"')
+                fields.last() += line[++i];
+            else if (c == '"')
+                quoted = !quoted;
+            else if (c == ',' && !quoted)
+                fields << QString();
+            else
+                fields.last() += c;
+        }
+        rows << fields;
+    }
     return rows;
 }
 
@@ -85,9 +106,9 @@ private slots:
         qInfo("five submissions in %lld ms", r.ms);
         const QList<QByteArray> lines = r.out.trimmed().split('\n');
         QCOMPARE(lines.size(), 5);
-        QVERIFY2(lines[0].startsWith("correct: passed 20/20 cases"), lines[0].constData());
-        QVERIFY2(lines[1].startsWith("reflect_sign: failed"), lines[1].constData());
-        QVERIFY2(lines[2].startsWith("normal_matrix: failed"), lines[2].constData());
+        QVERIFY2(lines[0].startsWith("correct: passed, 20/20 cases passed"), lines[0].constData());
+        QVERIFY2(lines[1].startsWith("reflect_sign: failed, "), lines[1].constData());
+        QVERIFY2(lines[2].startsWith("normal_matrix: failed, "), lines[2].constData());
         QVERIFY2(lines[3].startsWith("syntax: does not compile: syntax.frag:26:"),
                  lines[3].constData());
         QVERIFY2(lines[4].startsWith("loop: refused: loop.frag:"), lines[4].constData());
@@ -102,8 +123,10 @@ private slots:
         QCOMPARE(rows[2][1], QString("graded"));
         QVERIFY(rows[2][2].toInt() < 20);
         QCOMPARE(rows[4][1], QString("does not compile"));
-        QVERIFY(rows[4][6].contains("syntax.frag:26"));
+        QVERIFY(rows[4][6].startsWith("syntax.frag:26: syntax error"));
+        QCOMPARE(rows[4][2], QString()); // not graded: no numbers
         QCOMPARE(rows[5][1], QString("refused"));
+        QVERIFY(rows[5][6].startsWith("loop.frag:24:"));
 
         // One sheet per graded submission: student | reference | heat map, with a title.
         for (const char *name : {"correct", "reflect_sign", "normal_matrix"}) {
@@ -220,7 +243,124 @@ private slots:
         QCOMPARE(r.err.count("lightbench: "), 1);
         // Where only a submission is bad, the others are still graded.
         if (submissions.size() > 1)
-            QVERIFY2(r.out.startsWith("correct: passed 20/20"), r.out.constData());
+            QVERIFY2(r.out.startsWith("correct: passed, 20/20"), r.out.constData());
+    }
+
+    // The exercise's fault (a misspelt "vary", a reference that does not build) stops the
+    // batch with one line, instead of grading everyone against it.
+    void aFaultyExerciseStopsTheBatch_data()
+    {
+        QTest::addColumn<QString>("field");
+        QTest::addColumn<QJsonValue>("value");
+        QTest::addColumn<QString>("named");
+        QTest::newRow("misspelt vary") << "vary" << QJsonValue(QJsonArray{"lights", "camra"})
+                                       << "exercise.grading.vary (no such parameter 'lights'";
+        QTest::newRow("reference that does not build")
+            << "reference"
+            << QJsonValue(QJsonObject{{"vertex", "void main() { gl_Position = vec4(0.0) }"},
+                                      {"fragment", "void main() {}"}})
+            << "reference does not build";
+    }
+
+    void aFaultyExerciseStopsTheBatch()
+    {
+        QFETCH(QString, field);
+        QFETCH(QJsonValue, value);
+        QFETCH(QString, named);
+        QFile f(kExercise);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        QJsonObject root = QJsonDocument::fromJson(f.readAll()).object();
+        QJsonObject exercise = root["exercise"].toObject();
+        if (field == "vary") {
+            QJsonObject grading = exercise["grading"].toObject();
+            grading["vary"] = value;
+            exercise["grading"] = grading;
+        } else {
+            exercise[field] = value;
+        }
+        root["exercise"] = exercise;
+        const QString path = m_dir.filePath(field + ".json");
+        QVERIFY(write(path, QJsonDocument(root).toJson()));
+        const Run r =
+            run({"--grade", kData + "/correct", kData + "/reflect_sign", "--exercise", path});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains(named.toUtf8()), r.err.constData());
+        QCOMPARE(r.err.count("lightbench: "), 1);
+        QVERIFY(r.out.isEmpty());
+    }
+
+    // Two submissions with one name (each student's folder holds lighting.vert) are told
+    // apart in the report and the sheets; a trailing slash names the folder.
+    void sameNamesAreToldApart()
+    {
+        for (const char *student : {"amy", "ben"}) {
+            QVERIFY(QDir(m_dir.path()).mkpath(student));
+            for (const char *suffix : {".vert", ".frag"})
+                QVERIFY(QFile::copy(kData + "/correct/lighting" + suffix,
+                                    m_dir.filePath(QString(student) + "/lighting" + suffix)));
+        }
+        const QString sheets = m_dir.filePath("named-sheets");
+        const Run r = run({"--grade", m_dir.filePath("amy") + "/lighting.vert",
+                           m_dir.filePath("ben") + "/lighting.vert", m_dir.filePath("amy") + "/",
+                           "--exercise", kExercise, "--sheets", sheets});
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        const QList<QByteArray> lines = r.out.trimmed().split('\n');
+        QCOMPARE(lines.size(), 3);
+        QVERIFY2(lines[0].startsWith("lighting: passed"), r.out.constData());
+        QVERIFY2(lines[1].startsWith("lighting-2: passed"), r.out.constData());
+        QVERIFY2(lines[2].startsWith("amy: passed"), r.out.constData());
+        for (const char *sheet : {"lighting.png", "lighting-2.png", "amy.png"})
+            QVERIFY2(QFileInfo::exists(QDir(sheets).filePath(sheet)), sheet);
+    }
+
+    // A child that crashes, one that prints more after its result, one that cannot start:
+    // each is reported for what it is (a stand-in program plays the child).
+    void childrenThatMisbehave_data()
+    {
+        QTest::addColumn<QByteArray>("script");
+        QTest::addColumn<QString>("expected");
+        QTest::newRow("crash") << QByteArray("#!/bin/sh\nkill -SEGV $$\n")
+                               << "correct: crashed: killed by signal 11";
+        QTest::newRow("chatter after the result")
+            << QByteArray("#!/bin/sh\necho '{\"status\":\"graded\",\"submission\":\"x\","
+                          "\"cases\":[{\"passed\":true,\"largest\":1,\"shareWithin\":1}]}'\n"
+                          "echo 'driver: goodbye'\nkill -SEGV $$\n")
+            << "correct: passed, 1/1 cases passed";
+        QTest::newRow("not there") << QByteArray() << "correct: crashed: could not start";
+    }
+
+    void childrenThatMisbehave()
+    {
+        QFETCH(QByteArray, script);
+        QFETCH(QString, expected);
+        const QString program = m_dir.filePath(QString("child-%1.sh").arg(QTest::currentDataTag()));
+        if (!script.isEmpty()) {
+            QVERIFY(write(program, script));
+            QVERIFY(QFile::setPermissions(program, QFile::ReadOwner | QFile::ExeOwner));
+        }
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.insert("LIGHTBENCH_GRADE_PROGRAM", program);
+        const Run r = run({"--grade", kData + "/correct", "--exercise", kExercise}, env);
+        QCOMPARE(r.exitCode, 0);
+        QVERIFY2(r.out.startsWith(expected.toUtf8()), r.out.constData());
+    }
+
+    // A submission past the time limit is killed and reported; the batch goes on. (The limit
+    // is made tiny here; it is 30 s plus 4 s a case.)
+    void aSubmissionPastTheTimeLimitIsReported()
+    {
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.insert("LIGHTBENCH_GRADE_TIME_LIMIT_MS", "50");
+        const QString report = m_dir.filePath("late.csv");
+        const Run r = run({"--grade", kData + "/correct", kData + "/syntax", "--exercise",
+                           kExercise, "--report", report},
+                          env);
+        QCOMPARE(r.exitCode, 0);
+        const QList<QStringList> rows = csvRows(report);
+        QCOMPARE(rows.size(), 3);
+        QCOMPARE(rows[1][1], QString("timed out"));
+        QCOMPARE(rows[2][1], QString("timed out"));
+        QVERIFY(r.out.contains("correct: timed out: more than 0.1 s"));
     }
 };
 

@@ -93,9 +93,22 @@ private slots:
               QJsonValue(QJsonObject{{"reference", QJsonObject{{"vertex", "void main(){}"}}}}),
               QJsonValue(5)}) {
             const ExerciseRead r = readExercise(bad, nullptr);
-            QVERIFY(!r.exercise);
             QVERIFY(!r.error.isEmpty());
+            // Kept as it was, so that a scene saved meanwhile loses none of it.
+            QVERIFY(r.exercise && r.exercise->unread == bad);
         }
+        SceneFile f;
+        const QJsonObject draft{{"title", "Lighting"},
+                                {"reference", QJsonObject{{"vertex", "void main(){}"}}}};
+        QJsonObject root = QJsonDocument::fromJson(sceneFileBytes(f, QDir("/tmp"))).object();
+        root["exercise"] = draft;
+        const SceneFileRead draftRead =
+            parseSceneFile(QJsonDocument(root).toJson(), QDir("/tmp"), "draft.json");
+        QVERIFY(draftRead.exerciseError.contains("needs both"));
+        QVERIFY(draftRead.ignored.join(' ').contains("kept as it is"));
+        const QJsonObject again =
+            QJsonDocument::fromJson(sceneFileBytes(*draftRead.file, QDir("/tmp"))).object();
+        QCOMPARE(again["exercise"].toObject(), draft);
     }
 
     void casesComeFromTheSeed()
@@ -110,6 +123,12 @@ private slots:
         Scene still = base;
         still.showLight = false;
         QVERIFY(a[0] == still); // the exercise as it is (no marker: it is no program's)
+        // Saved with a compare view or normal lines: the cases show the programs alone.
+        Scene shown = base;
+        shown.compare.mode = CompareMode::Difference;
+        shown.objects[0].showNormals = true;
+        for (const Scene &s : gradingCases(shown, spec, 7))
+            QVERIFY(s.compare.mode == CompareMode::Off && !s.objects[0].showNormals);
         for (int k = 0; k < 6; ++k)
             QVERIFY(a[std::size_t(k)] == b[std::size_t(k)]);
         QVERIFY(!(a[3] == other[3]));
