@@ -121,6 +121,18 @@ MainWindow::MainWindow(QSettings &settings, QWidget *parent)
     connect(m_meshActions, &MeshActions::frameBudgetChanged, this,
             [this](double seconds) { m_viewport->setFrameBudget(seconds * 1000.0); });
     m_sceneActions = new SceneActions(this, &m_document, &m_shaders, m_viewport, m_settings);
+    // An exercise's reference program is side B of the compare views (C: side by side, wipe
+    // or difference): the student sees the difference, not the teacher's source.
+    const auto showReference = [this] {
+        const std::optional<Exercise> &e = m_sceneActions->exercise();
+        if (e && e->unread.isUndefined() && !e->reference.builtIn())
+            m_viewport->setSideBProgram(e->reference.vertex, e->reference.fragment,
+                                        tr("the exercise's reference"));
+        else
+            m_viewport->setSideBProgram({}, {});
+    };
+    connect(m_sceneActions, &SceneActions::exerciseChanged, this, showReference);
+    showReference(); // the session's scene file may be an exercise
     connect(m_meshActions, &MeshActions::sceneFileDropped, m_sceneActions, &SceneActions::open);
     connect(m_sceneActions, &SceneActions::documentChanged, this, &MainWindow::updateTitle);
     connect(m_sceneActions, &SceneActions::sceneOpened, m_probe, &ProbePanel::clear);

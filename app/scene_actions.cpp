@@ -45,6 +45,7 @@ SceneActions::SceneActions(QMainWindow *window, SceneDocument *document, ShaderD
             m_path = current;
             m_name = QFileInfo(current).fileName();
             m_saved = *read.file;
+            m_exercise = read.file->exercise; // saving the session's scene keeps it
         }
     }
 }
@@ -108,6 +109,7 @@ bool SceneActions::open(const QString &path)
     // An exercise's reference and grading ride along, so that saving it keeps them (the
     // window does not show them yet).
     m_exercise = file.exercise;
+    emit exerciseChanged();
     // An example's mesh (none today) would name a file beside the resource: keep shapes.
     if (example)
         for (ObjectSettings &o : file.scene.objects)
@@ -247,7 +249,10 @@ void SceneActions::forgetFile()
 {
     setCurrentPath({}, {});
     m_saved.reset();
-    m_exercise.reset();
+    if (m_exercise) {
+        m_exercise.reset();
+        emit exerciseChanged();
+    }
     emit documentChanged();
 }
 

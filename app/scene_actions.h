@@ -57,8 +57,13 @@ public:
 
     void showSaveDialog();
 
+    // The open scene file's exercise (exercise.h), if it has one.
+    const std::optional<Exercise> &exercise() const { return m_exercise; }
+
 signals:
     void sceneOpened(const QString &path);
+    // The open scene's exercise came or went (exercise()): side B shows its reference.
+    void exerciseChanged();
     void documentChanged(); // opened, saved, or another name
 
 private:

@@ -250,6 +250,10 @@ void ProbePanel::showText()
                 .arg(tr("The equation at this point"), m_equation.toHtmlEscaped());
     if (!m_referenceNote.isEmpty())
         html += QString("<p><i>%1</i></p>").arg(m_referenceNote.toHtmlEscaped());
+    if (m_point->sideB && m_viewport->hasSideBProgram())
+        html += QString("<p><i>%1</i></p>")
+                    .arg(tr("Side B draws the exercise's reference program: these numbers are "
+                            "the built-in model's, which that program need not follow."));
     m_text->setText(html);
 }
 

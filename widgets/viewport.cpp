@@ -92,6 +92,8 @@ void Viewport::initializeGL()
         else if (!m_goodVertex.isEmpty())
             m_renderer.setUserProgram(m_goodVertex, m_goodFragment);
         m_pending = false;
+        if (!m_sideBVertex.isEmpty())
+            m_renderer.setSideBProgram(m_sideBVertex, m_sideBFragment);
     }
     const QSurfaceFormat f = context()->format();
     auto *gl = context()->functions();
@@ -202,12 +204,14 @@ QString Viewport::compareText() const
 {
     const Scene &s = m_document->scene();
     const QString b =
-        tr("B: built-in %1, %2")
-            .arg(s.compare.shading == Shading::Gouraud ? tr("Gouraud")
-                 : s.compare.shading == Shading::Flat  ? tr("flat")
-                                                       : tr("Phong"),
-                 s.compare.specular == SpecularModel::Blinn ? tr("Blinn-Phong (N\u00b7H)")
-                                                            : tr("Phong (R\u00b7V)"));
+        !m_sideBVertex.isEmpty()
+            ? tr("B: %1").arg(m_sideBName.isEmpty() ? tr("the reference program") : m_sideBName)
+            : tr("B: built-in %1, %2")
+                  .arg(s.compare.shading == Shading::Gouraud ? tr("Gouraud")
+                       : s.compare.shading == Shading::Flat  ? tr("flat")
+                                                             : tr("Phong"),
+                       s.compare.specular == SpecularModel::Blinn ? tr("Blinn-Phong (N\u00b7H)")
+                                                                  : tr("Phong (R\u00b7V)"));
     switch (s.compare.mode) {
     case CompareMode::Off:
         return {};
@@ -499,6 +503,28 @@ void Viewport::setObject(int index, std::shared_ptr<const Mesh> mesh,
         emit objectChanged();
     else if (retextured)
         emit textureChanged();
+}
+
+ProgramBuild Viewport::setSideBProgram(const QString &vertexSource, const QString &fragmentSource,
+                                       const QString &name)
+{
+    m_sideBVertex = vertexSource;
+    m_sideBFragment = fragmentSource;
+    m_sideBName = name;
+    ProgramBuild build;
+    build.linked = true;
+    if (m_renderer.isInitialized()) {
+        makeCurrent();
+        if (vertexSource.isEmpty())
+            m_renderer.clearSideBProgram();
+        else
+            build = m_renderer.setSideBProgram(vertexSource, fragmentSource);
+        doneCurrent();
+    }
+    if (!build.ok()) // the built-in program stays side B
+        m_sideBVertex.clear(), m_sideBFragment.clear(), m_sideBName.clear();
+    update();
+    return build;
 }
 
 QImage Viewport::renderImage(QSize pixels)

@@ -56,6 +56,12 @@ public:
     QString compareText() const;
     // The name of the program on screen, for side A's words ("Toon (edited)").
     void setProgramName(const QString &name);
+    // Side B of the compare views draws this program (an exercise's reference; `name` for
+    // the words) instead of the built-in one; empty sources: the built-in one again. Kept
+    // across a new context. Returns what the build said (linked when there is no context yet).
+    ProgramBuild setSideBProgram(const QString &vertexSource, const QString &fragmentSource,
+                                 const QString &name = {});
+    bool hasSideBProgram() const { return !m_sideBVertex.isEmpty(); }
 
     // Builds the user's program (now, or once the context exists) and reports it through
     // programBuilt(). When it fails, the last good program keeps drawing under a banner.
@@ -142,6 +148,7 @@ private:
     // The last sources that linked, built again when the widget gets a new context, and the
     // ones asked for before there was a context.
     QString m_goodVertex, m_goodFragment;
+    QString m_sideBVertex, m_sideBFragment, m_sideBName; // empty: the built-in program
     QString m_previousVertex, m_previousFragment; // the good program before (empty: built-in)
     // What their trials measured (none: not tried, no loop), for a bigger frame later.
     std::optional<TrialResult> m_goodTrial, m_previousTrial;

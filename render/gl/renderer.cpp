@@ -59,7 +59,7 @@ void Renderer::cleanup()
     m_overlays.release();
     m_sideFbo[0].reset();
     m_sideFbo[1].reset();
-    for (BuiltProgram *p : {&m_differenceProgram, &m_user, &m_candidate})
+    for (BuiltProgram *p : {&m_differenceProgram, &m_user, &m_candidate, &m_sideB})
         *p = {};
     m_builtIns.clear();
     m_checkerTexture.reset();
@@ -111,6 +111,19 @@ void Renderer::prepareCandidate(const Scene &scene, QSize pixels)
     glEnable(GL_RASTERIZER_DISCARD);
     drawView(scene, m_candidate, whole, whole, pixels.height());
     glDisable(GL_RASTERIZER_DISCARD);
+}
+
+ProgramBuild Renderer::setSideBProgram(const QString &vertexSource, const QString &fragmentSource)
+{
+    BuiltProgram built = buildProgram(*this, vertexSource, fragmentSource);
+    if (built.build.ok())
+        m_sideB = std::move(built);
+    return built.build.ok() ? m_sideB.build : built.build;
+}
+
+const BuiltProgram &Renderer::sideBProgram(const Scene &sceneB)
+{
+    return m_sideB.program ? m_sideB : builtInProgram(sceneB);
 }
 
 const BuiltProgram &Renderer::objectProgram(const Scene &scene)
@@ -288,8 +301,8 @@ void Renderer::drawSides(const Scene &scene, QSize pixels)
         const QRect clip = !wipe   ? view
                            : sideB ? QRect(divider, 0, pixels.width() - divider, pixels.height())
                                    : QRect(0, 0, divider, pixels.height());
-        drawView(sideB ? sceneB : scene, sideB ? builtInProgram(sceneB) : objectProgram(scene),
-                 view, clip, pixels.height());
+        drawView(sideB ? sceneB : scene, sideB ? sideBProgram(sceneB) : objectProgram(scene), view,
+                 clip, pixels.height());
     }
     drawDivider(divider, pixels);
 }
@@ -400,7 +413,7 @@ void Renderer::drawDifference(const Scene &scene, QSize pixels)
         }
         fbo->bind();
         const Scene sideScene = sceneOfSide(scene, side == 1);
-        drawView(sideScene, side == 1 ? builtInProgram(sideScene) : objectProgram(scene), whole,
+        drawView(sideScene, side == 1 ? sideBProgram(sideScene) : objectProgram(scene), whole,
                  whole, pixels.height());
     }
     measureDifference(pixels);

@@ -76,6 +76,11 @@ public:
     // elsewhere, instead of in the first frame after it.
     void prepareCandidate(const Scene &scene, QSize pixels);
     void clearUserProgram() { m_user = {}; } // the built-in programs draw again
+    // Side B of the compare views draws this program instead of the built-in one (an
+    // exercise's reference) when it links; what the build said either way.
+    ProgramBuild setSideBProgram(const QString &vertexSource, const QString &fragmentSource);
+    void clearSideBProgram() { m_sideB = {}; }
+    bool hasSideBProgram() const { return bool(m_sideB.program); }
     // Runs `f` while the built-in programs draw in the user program's place (a trial's
     // reference), then puts the user program back.
     template <typename F> auto withBuiltIn(F &&f)
@@ -112,6 +117,7 @@ public:
 
 private:
     const BuiltProgram &objectProgram(const Scene &scene);
+    const BuiltProgram &sideBProgram(const Scene &sceneB);
     // The built-in program of the scene's shading, compiled for the lights the scene uses
     // (built once per shading and count, then kept).
     const BuiltProgram &builtInProgram(const Scene &scene);
@@ -132,7 +138,7 @@ private:
     bool m_initialized = false;
     // The built-in programs, by variant (builtInProgram), built when first needed.
     std::map<BuiltInVariant, BuiltProgram> m_builtIns;
-    BuiltProgram m_differenceProgram, m_user, m_candidate;
+    BuiltProgram m_differenceProgram, m_user, m_candidate, m_sideB;
     Overlays m_overlays;
     Texture m_checker;
     GlTexture m_checkerTexture;

@@ -111,6 +111,39 @@ private slots:
         QCOMPARE(read.file->exercise->grading.cases, 20);
     }
 
+    // An exercise's reference is side B: the student's program against it in the difference
+    // view, without the teacher's source in the editor.
+    void anExercisesReferenceIsSideB()
+    {
+        const QString exercise =
+            QStringLiteral(LB_TEST_DATA "/../../resources/examples/exercise_lighting.json");
+        QVERIFY(buildAfter([&] { QVERIFY(m_window->sceneActions()->open(exercise)); }));
+        QVERIFY(m_window->viewport()->hasSideBProgram());
+        m_window->document().edit([](Scene &s) { s.compare.mode = CompareMode::Difference; });
+        frame();
+        // The starting point (the ambient term alone) is far from the reference.
+        QVERIFY2(m_window->viewport()->renderer().difference().largest > 20,
+                 qPrintable(m_window->viewport()->compareText()));
+        QVERIFY(m_window->viewport()->compareText().contains("the exercise's reference"));
+        QVERIFY(!m_window->editorPanel()
+                     ->editor(ShaderStage::Fragment)
+                     ->text()
+                     .contains("specularFactor = pow")); // the teacher's source is not shown
+        // The correct answer: no difference.
+        QFile answer(LB_TEST_DATA "/grading/correct/lighting.frag");
+        QVERIFY(answer.open(QIODevice::ReadOnly));
+        const QString text = QString::fromUtf8(answer.readAll());
+        const std::optional<ProgramBuild> built = buildAfter(
+            [&] { m_window->editorPanel()->editor(ShaderStage::Fragment)->setText(text); });
+        QVERIFY(built && built->ok());
+        frame();
+        QVERIFY2(m_window->viewport()->renderer().difference().largest <= 2,
+                 qPrintable(m_window->viewport()->compareText()));
+        // Another scene: the built-in program is side B again.
+        QVERIFY(m_window->sceneActions()->open(":/examples/toon.json"));
+        QVERIFY(!m_window->viewport()->hasSideBProgram());
+    }
+
     void exportWritesTheChosenSize()
     {
         const QString path = m_dir.filePath("view.png");
