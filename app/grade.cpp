@@ -1,11 +1,11 @@
 #include "grade.h"
 
+#include "compare.h"
 #include "grading.h"
 #include "import_process.h"
 #include "message_text.h"
 #include "offscreen.h"
 #include "submission.h"
-#include "texture_file.h"
 
 #include <QCoreApplication>
 #include <QDir>
@@ -29,8 +29,7 @@ namespace lb {
 
 namespace {
 
-constexpr QRgb kBackground = qRgb(41, 43, 48); // the renderer's clear colour
-constexpr double kTrialBudgetMs = 2000.0;      // one frame at the grading size, at most
+constexpr double kTrialBudgetMs = 2000.0; // one frame at the grading size, at most
 // What a child says when the exercise, not the submission, is at fault: the batch stops.
 const QStringList kBatchFailures{"no exercise", "no OpenGL", "exercise files",
                                  "reference does not build"};
@@ -190,15 +189,8 @@ QString loadSceneFiles(OffscreenRenderer &offscreen, const Scene &scene)
             offscreen.addMeshFile(r.file);
             done << o.meshPath;
         }
-        if (!o.textureFile.isEmpty() && !done.contains(o.textureFile)) {
-            const TextureFileRead read = readTextureFile(o.textureFile);
-            if (!read.texture)
-                return read.error;
-            offscreen.addTextureFile(o.textureFile, read.texture);
-            done << o.textureFile;
-        }
     }
-    return {};
+    return offscreen.readTextureFiles(scene);
 }
 
 // Names as the report gives them: a submission's own, made unique ("lighting", "lighting-2")
@@ -296,7 +288,7 @@ int runGradeOne(const CommandLine &cl)
                                                "loop too long for this case?")
                                            .arg(k));
         const CaseResult r =
-            measureCase(frame, reference[k], kBackground, spec.tolerance, spec.passShare);
+            measureCase(frame, reference[k], kBackgroundPixel, spec.tolerance, spec.passShare);
         results.append(QJsonObject{{"case", int(k)},
                                    {"largest", r.largest},
                                    {"at", QJsonArray{r.at.x(), r.at.y()}},

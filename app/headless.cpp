@@ -4,7 +4,6 @@
 #include "offscreen.h"
 #include "program_trial.h"
 #include "safe_write.h"
-#include "texture_file.h"
 
 #include <QElapsedTimer>
 #include <QEventLoop>
@@ -249,18 +248,9 @@ int runHeadless(const CommandLine &cl, const Scene &requested)
     }
     if (!paths.isEmpty())
         phases.mark("import");
-    // Image textures, each file once.
-    QStringList images;
-    for (const ObjectSettings &o : scene.objects)
-        if (!o.textureFile.isEmpty() && !images.contains(o.textureFile))
-            images << o.textureFile;
-    for (const QString &image : images) {
-        const TextureFileRead read = readTextureFile(image);
-        if (!read.texture) {
-            printLine("lightbench: " + read.error.toUtf8(), stderr);
-            return 1;
-        }
-        offscreen.addTextureFile(image, read.texture);
+    if (const QString error = offscreen.readTextureFiles(scene); !error.isEmpty()) {
+        printLine("lightbench: " + error.toUtf8(), stderr);
+        return 1;
     }
     if (cl.hasUserProgram()) {
         FILE *out = cl.check ? stdout : stderr;

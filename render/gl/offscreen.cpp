@@ -1,5 +1,7 @@
 #include "offscreen.h"
 
+#include "texture_file.h"
+
 #include <QElapsedTimer>
 #include <QOpenGLFunctions>
 
@@ -61,6 +63,19 @@ void OffscreenRenderer::addTextureFile(const QString &path, std::shared_ptr<cons
 {
     if (texture)
         m_textures[path] = std::move(texture);
+}
+
+QString OffscreenRenderer::readTextureFiles(const Scene &scene)
+{
+    for (const ObjectSettings &o : scene.objects) {
+        if (o.textureFile.isEmpty() || m_textures.count(o.textureFile))
+            continue;
+        const TextureFileRead read = readTextureFile(o.textureFile);
+        if (!read.texture)
+            return read.error;
+        addTextureFile(o.textureFile, read.texture);
+    }
+    return {};
 }
 
 void OffscreenRenderer::addMeshFile(std::shared_ptr<const MeshFile> file)

@@ -52,6 +52,9 @@ public:
     // An image file the scene's objects may name as their texture (ObjectSettings::
     // textureFile); an object naming one not added here shows what it would without it.
     void addTextureFile(const QString &path, std::shared_ptr<const Texture> texture);
+    // Reads every image file `scene` names (each once) and adds it; the first that cannot be
+    // read stops it: "FILE: why", or empty when all are in.
+    QString readTextureFiles(const Scene &scene);
     // The mesh drawn for object `index` of `scene`, built when its settings ask for another
     // one. Not after dropCpuMeshes().
     const Mesh &objectMesh(const Scene &scene, int index = 0);

@@ -11,8 +11,6 @@ namespace lb {
 
 namespace {
 
-constexpr glm::vec3 kBackground{0.16f, 0.17f, 0.19f};
-
 // GL counts rows from the bottom; `rect` has its origin top-left in a frame `height` high.
 void setViewport(QOpenGLExtraFunctions &gl, QRect rect, int height)
 {
@@ -313,7 +311,7 @@ void Renderer::drawView(const Scene &scene, const BuiltProgram &program, QRect v
     setViewport(*this, view, frameHeight);
     glScissor(clip.x(), frameHeight - clip.y() - clip.height(), std::max(clip.width(), 0),
               clip.height());
-    glClearColor(kBackground.r, kBackground.g, kBackground.b, 1.0f);
+    glClearColor(kBackgroundRgb[0], kBackgroundRgb[1], kBackgroundRgb[2], 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     if (view.isEmpty() || clip.isEmpty())
         return;

@@ -5,6 +5,7 @@
 
 #include "scene.h"
 
+#include <QColor>
 #include <QPoint>
 #include <QRect>
 #include <QSize>
@@ -15,6 +16,11 @@ namespace lb {
 
 // |A - B| at or above this (out of 1) is white in the difference view's heat map.
 constexpr float kDifferenceScale = 64.0f / 255.0f;
+
+// The colour a view is cleared to where nothing is drawn (the renderer's), and as it reads
+// back in 8 bits: grading and the tests tell drawn pixels from it.
+constexpr float kBackgroundRgb[3] = {0.16f, 0.17f, 0.19f};
+constexpr QRgb kBackgroundPixel = qRgb(41, 43, 48);
 
 // The scene side B draws: the same scene with the compare settings' shading choices.
 Scene sceneOfSide(const Scene &scene, bool sideB);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace lb {
 
@@ -47,7 +48,9 @@ int wrapped(int i, int size, TextureWrap wrap)
 
 } // namespace
 
-Texture::Texture() : m_levels{checkerImage()}
+Texture::Texture() : Texture(checkerImage()) {}
+
+Texture::Texture(QImage level0) : m_levels{std::move(level0)}
 {
     buildLevels();
 }
@@ -57,12 +60,7 @@ Texture Texture::fromImage(const QImage &image)
     QImage flipped = image.convertToFormat(QImage::Format_RGBA8888).mirrored();
     if (flipped.width() > kMaxSize || flipped.height() > kMaxSize)
         flipped = flipped.scaled(kMaxSize, kMaxSize, Qt::KeepAspectRatio, Qt::SmoothTransformation);
-    Texture t;
-    if (!flipped.isNull()) {
-        t.m_levels = {flipped};
-        t.buildLevels();
-    }
-    return t;
+    return flipped.isNull() ? Texture() : Texture(std::move(flipped));
 }
 
 void Texture::buildLevels()

@@ -48,6 +48,7 @@ public:
     Levels levelsAt(float lod, const TextureSampling &sampling) const;
 
 private:
+    explicit Texture(QImage level0); // and the levels below it
     glm::vec3 sampleLevel(int level, const glm::vec2 &uv, const TextureSampling &sampling) const;
     void buildLevels();
 

@@ -179,7 +179,7 @@ private slots:
     void examplesFrameTheirObjects()
     {
         const QSize view(470, 620);
-        const QRgb background = qRgb(41, 43, 48); // the renderer's clear colour
+        const QRgb background = kBackgroundPixel; // the renderer's clear colour
         auto isBackground = [&](QRgb p) {
             return std::abs(qRed(p) - qRed(background)) <= 3 &&
                    std::abs(qGreen(p) - qGreen(background)) <= 3 &&
