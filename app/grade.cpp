@@ -2,18 +2,18 @@
 
 #include "compare.h"
 #include "grading.h"
+#include "grading_report.h"
 #include "import_process.h"
 #include "message_text.h"
 #include "offscreen.h"
 #include "submission.h"
+#include "work_check.h"
 
 #include <QCoreApplication>
 #include <QDir>
 #include <QEventLoop>
 #include <QFileInfo>
-#include <QJsonArray>
 #include <QJsonDocument>
-#include <QJsonObject>
 #include <QProcess>
 #include <QSaveFile>
 #include <QSet>
@@ -97,35 +97,16 @@ struct Graded
     double meanShare = 0.0;
 };
 
-Graded fromJson(const QJsonObject &o)
+Graded fromReport(const GradingReport &r)
 {
     Graded g;
-    g.status = o["status"].toString();
-    g.diagnostic = o["diagnostic"].toString();
-    if (o.contains("sheetError"))
-        g.diagnostic = o["sheetError"].toString();
-    const QJsonArray cases = o["cases"].toArray();
-    g.cases = int(cases.size());
-    double share = 0.0;
-    for (const QJsonValue &c : cases) {
-        g.passed += c["passed"].toBool();
-        g.worst = std::max(g.worst, c["largest"].toInt());
-        share += c["shareWithin"].toDouble();
-    }
-    g.meanShare = g.cases ? share / g.cases : 0.0;
+    g.status = r.status;
+    g.diagnostic = r.sheetError.isEmpty() ? r.diagnostic : r.sheetError;
+    g.cases = int(r.cases.size());
+    g.passed = r.passedCount();
+    g.worst = r.largest();
+    g.meanShare = r.meanShare();
     return g;
-}
-
-// The child's result: the last line of its output that is a result (a driver may print more).
-QJsonObject resultOf(const QByteArray &out)
-{
-    const QList<QByteArray> lines = out.split('\n');
-    for (auto it = lines.rbegin(); it != lines.rend(); ++it) {
-        const QJsonObject o = QJsonDocument::fromJson(it->trimmed()).object();
-        if (o.contains("status"))
-            return o;
-    }
-    return {};
 }
 
 QString summaryLine(const Graded &g)
@@ -215,17 +196,18 @@ QStringList uniqueNames(const QStringList &names)
 
 int runGradeOne(const CommandLine &cl)
 {
-    QJsonObject out;
+    GradingReport out;
     const auto finish = [&](const QString &status, const QString &diagnostic = {}) {
-        out["status"] = status;
-        if (!diagnostic.isEmpty())
-            out["diagnostic"] = diagnostic;
-        printLine(QString::fromUtf8(QJsonDocument(out).toJson(QJsonDocument::Compact)), stdout);
+        out.status = status;
+        out.diagnostic = diagnostic;
+        printLine(
+            QString::fromUtf8(QJsonDocument(gradingReportJson(out)).toJson(QJsonDocument::Compact)),
+            stdout);
         return 0;
     };
     const Submission s = readSubmission(cl.gradeOne);
     const QString name = cl.gradeName.isEmpty() ? s.name : cl.gradeName;
-    out["submission"] = name;
+    out.submission = name;
     if (!s.error.isEmpty())
         return finish("unreadable", s.error);
     const ExerciseFile e = readExerciseFile(cl.exercisePath);
@@ -275,7 +257,6 @@ int runGradeOne(const CommandLine &cl)
     if (trial.refusal)
         return finish("refused", diagnosticText(*trial.refusal, s));
 
-    QJsonArray results;
     int worst = -1;
     CaseResult worstResult;
     QImage worstFrame;
@@ -289,12 +270,7 @@ int runGradeOne(const CommandLine &cl)
                                            .arg(k));
         const CaseResult r =
             measureCase(frame, reference[k], kBackgroundPixel, spec.tolerance, spec.passShare);
-        results.append(QJsonObject{{"case", int(k)},
-                                   {"largest", r.largest},
-                                   {"at", QJsonArray{r.at.x(), r.at.y()}},
-                                   {"shareWithin", r.shareWithin},
-                                   {"compared", r.compared},
-                                   {"passed", r.passed}});
+        out.cases.push_back(r);
         const bool worse =
             worst < 0 || r.shareWithin < worstResult.shareWithin ||
             (r.shareWithin == worstResult.shareWithin && r.largest > worstResult.largest);
@@ -304,8 +280,7 @@ int runGradeOne(const CommandLine &cl)
             worstFrame = frame;
         }
     }
-    out["cases"] = results;
-    out["worstCase"] = worst;
+    out.worstCase = worst;
     if (!cl.sheetsDir.isEmpty()) {
         const QString path = QDir(cl.sheetsDir).filePath(name + ".png");
         QSaveFile file(path); // a sheet is whole or not there
@@ -313,9 +288,9 @@ int runGradeOne(const CommandLine &cl)
             !gradingSheet(name, worstFrame, reference[std::size_t(worst)], worstResult, worst)
                  .save(&file, "PNG") ||
             !file.commit())
-            out["sheetError"] = QString("%1: cannot write the sheet").arg(path);
+            out.sheetError = QString("%1: cannot write the sheet").arg(path);
         else
-            out["sheet"] = path;
+            out.sheet = path;
     }
     return finish("graded");
 }
@@ -338,8 +313,7 @@ int runGrade(const CommandLine &cl)
     }
     const int cases = e.file.exercise->grading.cases;
     // Time for one submission: its process, its trial and its frames; a hang ends here.
-    const int asked = qEnvironmentVariableIntValue("LIGHTBENCH_GRADE_TIME_LIMIT_MS");
-    const int limitMs = asked > 0 ? asked : int(30000 + 2 * kTrialBudgetMs * cases);
+    const int limitMs = gradingTimeLimitMs(cases);
 
     std::vector<Graded> rows(std::size_t(cl.submissions.size()));
     QStringList names;
@@ -377,12 +351,12 @@ int runGrade(const CommandLine &cl)
     std::function<void()> startMore;
     const auto ended = [&](int i, QProcess *p, int code, QProcess::ExitStatus status) {
         Graded &row = rows[std::size_t(i)];
-        const QJsonObject json = resultOf(p->readAllStandardOutput());
+        const std::optional<GradingReport> report = readGradingReport(p->readAllStandardOutput());
         if (row.status == "timed out") {
             row.diagnostic = QString("more than %1 s").arg(limitMs / 1000.0, 0, 'f', 1);
-        } else if (!json.isEmpty()) { // a result printed counts, whatever came after it
+        } else if (report) { // a result printed counts, whatever came after it
             const QString name = row.name;
-            row = fromJson(json);
+            row = fromReport(*report);
             row.name = name;
             if (kBatchFailures.contains(row.status) && batchFailure.isEmpty())
                 batchFailure = row.status + ": " + row.diagnostic.section('\n', 0, 0);
@@ -441,8 +415,7 @@ int runGrade(const CommandLine &cl)
             ++running;
             // LIGHTBENCH_GRADE_PROGRAM stands in for this program in the children (the tests
             // give one that crashes, chatters or is not there).
-            const QString program = qEnvironmentVariable("LIGHTBENCH_GRADE_PROGRAM");
-            p->start(program.isEmpty() ? QCoreApplication::applicationFilePath() : program, args);
+            p->start(gradingChildProgram(), args);
             timer->start(limitMs);
         }
     };

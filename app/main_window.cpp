@@ -1,6 +1,7 @@
 #include "main_window.h"
 
 #include "editor_panel.h"
+#include "exercise_panel.h"
 #include "light_panel.h"
 #include "main_window_settings.h"
 #include "material_panel.h"
@@ -67,6 +68,8 @@ MainWindow::MainWindow(QSettings &settings, QWidget *parent)
     addPanelDock(tr("Object"), "objectDock", m_object);
     addPanelDock(tr("Uniforms"), "uniformDock", m_uniforms);
     QDockWidget *probeDock = addPanelDock(tr("Probe"), "probeDock", m_probe);
+    m_exercisePanel = new ExercisePanel;
+    m_exerciseDock = addPanelDock(tr("Exercise"), "exerciseDock", m_exercisePanel);
     // A click on an object selects it for the Object and Material panels.
     connect(m_viewport, &Viewport::clicked, this, &MainWindow::selectObjectAt);
     connect(m_viewport, &Viewport::probeRequested, this, [this, probeDock](QPoint pixel) {
@@ -121,18 +124,7 @@ MainWindow::MainWindow(QSettings &settings, QWidget *parent)
     connect(m_meshActions, &MeshActions::frameBudgetChanged, this,
             [this](double seconds) { m_viewport->setFrameBudget(seconds * 1000.0); });
     m_sceneActions = new SceneActions(this, &m_document, &m_shaders, m_viewport, m_settings);
-    // An exercise's reference program is side B of the compare views (C: side by side, wipe
-    // or difference): the student sees the difference, not the teacher's source.
-    const auto showReference = [this] {
-        const std::optional<Exercise> &e = m_sceneActions->exercise();
-        if (e && e->unread.isUndefined() && !e->reference.builtIn())
-            m_viewport->setSideBProgram(e->reference.vertex, e->reference.fragment,
-                                        tr("the exercise's reference"));
-        else
-            m_viewport->setSideBProgram({}, {});
-    };
-    connect(m_sceneActions, &SceneActions::exerciseChanged, this, showReference);
-    showReference(); // the session's scene file may be an exercise
+    setUpExercise(); // the Exercise panel, Check my work and side B
     connect(m_meshActions, &MeshActions::sceneFileDropped, m_sceneActions, &SceneActions::open);
     connect(m_sceneActions, &SceneActions::documentChanged, this, &MainWindow::updateTitle);
     connect(m_sceneActions, &SceneActions::sceneOpened, m_probe, &ProbePanel::clear);
@@ -170,6 +162,7 @@ MainWindow::MainWindow(QSettings &settings, QWidget *parent)
     syncShadingWithProgram();
     updateStatus();
     updateTitle();
+    m_exerciseDock->setVisible(m_sceneActions->exercise().has_value()); // a saved state's aside
     if (m_editor->restoredUnsavedEdits())
         m_status->showMessage(tr("Unsaved shader edits from the last session are back"), 20000);
 }

@@ -12,6 +12,7 @@
 
 #include <QMainWindow>
 
+#include <optional>
 #include <vector>
 
 class QActionGroup;
@@ -21,6 +22,7 @@ class QSettings;
 namespace lb {
 
 class EditorPanel;
+class ExercisePanel;
 class LightPanel;
 class MaterialPanel;
 class MeshActions;
@@ -33,6 +35,7 @@ class ShadingPanel;
 class StatusLine;
 class UniformPanel;
 class Viewport;
+class WorkCheck;
 
 class MainWindow : public QMainWindow
 {
@@ -55,9 +58,16 @@ public:
     SceneActions *sceneActions() const { return m_sceneActions; }
     ProbePanel *probePanel() const { return m_probe; }
     StatusLine *statusLine() const { return m_status; }
+    ExercisePanel *exercisePanel() const { return m_exercisePanel; }
+    QDockWidget *exerciseDock() const { return m_exerciseDock; }
+    WorkCheck *workCheck() const { return m_workCheck; }
+    // Side B of the compare views draws the shader pair at `path` (NAME.vert/NAME.frag, either
+    // file, or a scene file's program); empty: what it drew before (the exercise's reference
+    // or the built-in program). Returns an empty string or the message shown.
+    QString setSideBFiles(const QString &path);
     SettingsAutosave *autosave() const { return m_autosave; }
-    // The docks of the panels (Light, Material, Shading, Object, Uniforms, Probe) and the
-    // editor's.
+    // The docks of the panels (Light, Material, Shading, Object, Uniforms, Probe, Exercise;
+    // the Exercise dock is hidden while no exercise is open) and the editor's.
     const std::vector<QDockWidget *> &panelDocks() const { return m_panelDocks; }
     QDockWidget *editorDock() const { return m_editorDock; }
 
@@ -104,6 +114,14 @@ private:
     void applyTabPositions();
     bool presentationIsShort() const; // a screen under 900 lines: panels beside the editor
     void keepInsideScreen();
+    // The Exercise panel, Check my work and side B (main_window_exercise.cpp).
+    void setUpExercise();
+    void exerciseChanged();
+    void applySideB();
+    void checkWork();
+    void showCase(int index);
+    void showOwnScene();
+    void chooseSideBFiles();
 
     QSettings &m_settings;
     SceneDocument m_document;
@@ -137,6 +155,12 @@ private:
     QAction *m_presentationAction = nullptr;
     QActionGroup *m_scaleGroup = nullptr;
     SettingsAutosave *m_autosave; // saves shortly after each change, so a kill loses little
+    ExercisePanel *m_exercisePanel;
+    QDockWidget *m_exerciseDock;
+    WorkCheck *m_workCheck;
+    QAction *m_checkAction = nullptr;
+    std::optional<Scene> m_ownScene; // the student's scene before the first case was shown
+    QString m_sideBPath;             // side B's shader files; empty: none chosen
 };
 
 } // namespace lb

@@ -4,6 +4,7 @@
 
 #include "editor_panel.h"
 #include "main_window_settings.h"
+#include "scene_actions.h"
 
 #include <QAction>
 #include <QActionGroup>
@@ -108,8 +109,8 @@ void MainWindow::arrangeDocks(DockLayout layout)
             tabifyDockWidget(light, m_panelDocks[i]);
     }
     applyTabPositions();
-    for (QDockWidget *dock : m_panelDocks)
-        dock->show();
+    for (QDockWidget *dock : m_panelDocks) // the Exercise panel only with an exercise open
+        dock->setVisible(dock != m_exerciseDock || m_sceneActions->exercise().has_value());
     m_editorDock->show();
     (layout == DockLayout::Wide                                    ? shading
      : layout == DockLayout::Presentation && presentationIsShort() ? m_editorDock
@@ -229,6 +230,7 @@ void MainWindow::setPresentation(bool on)
                 return;
             setGeometry(m_normalRect);
             restoreState(m_normalState, kStateVersion);
+            m_exerciseDock->setVisible(m_sceneActions->exercise().has_value());
             if (m_normalUnsized || panelsNeed() > m_panelDocks[0]->width())
                 applyDockWidths();
         });

@@ -46,26 +46,29 @@ SceneActions::SceneActions(QMainWindow *window, SceneDocument *document, ShaderD
             m_name = QFileInfo(current).fileName();
             m_saved = *read.file;
             m_exercise = read.file->exercise; // saving the session's scene keeps it
+            m_exerciseScene = read.file->scene;
         }
     }
 }
 
 QList<QPair<QString, QString>> SceneActions::examples()
 {
-    return {{tr("Gouraud vs Phong (the slides)"), ":/examples/gouraud_vs_phong.json"},
-            {tr("Phong vs Blinn-Phong specular"), ":/examples/phong_vs_blinn.json"},
-            {tr("The three light frames"), ":/examples/light_frames.json"},
-            {tr("The normal matrix"), ":/examples/normal_matrix.json"},
-            {tr("Toon shading"), ":/examples/toon.json"},
-            {tr("The terms one at a time (keys A, D, S)"), ":/examples/terms.json"},
-            {tr("Attenuation of a point light"), ":/examples/attenuation.json"},
-            {tr("A spotlight"), ":/examples/spotlight.json"},
-            {tr("The exercise: a textured cube and a sphere, light in camera coordinates"),
-             ":/examples/exercise.json"},
-            {tr("A light in one object's frame (it turns with the torus)"),
-             ":/examples/attached_light.json"},
-            {tr("Texture filtering: nearest, linear and mipmaps"),
-             ":/examples/texture_filtering.json"}};
+    return {
+        {tr("Gouraud vs Phong (the slides)"), ":/examples/gouraud_vs_phong.json"},
+        {tr("Phong vs Blinn-Phong specular"), ":/examples/phong_vs_blinn.json"},
+        {tr("The three light frames"), ":/examples/light_frames.json"},
+        {tr("The normal matrix"), ":/examples/normal_matrix.json"},
+        {tr("Toon shading"), ":/examples/toon.json"},
+        {tr("The terms one at a time (keys A, D, S)"), ":/examples/terms.json"},
+        {tr("Attenuation of a point light"), ":/examples/attenuation.json"},
+        {tr("A spotlight"), ":/examples/spotlight.json"},
+        {tr("The exercise: a textured cube and a sphere, light in camera coordinates"),
+         ":/examples/exercise.json"},
+        {tr("A light in one object's frame (it turns with the torus)"),
+         ":/examples/attached_light.json"},
+        {tr("Texture filtering: nearest, linear and mipmaps"), ":/examples/texture_filtering.json"},
+        {tr("Exercise: per-fragment lighting (Check My Work, F5)"),
+         ":/examples/exercise_lighting.json"}};
 }
 
 void SceneActions::addToMenu(QMenu *file)
@@ -106,17 +109,17 @@ bool SceneActions::open(const QString &path)
         return false;
     }
     SceneFile file = *read.file;
-    // An exercise's reference and grading ride along, so that saving it keeps them (the
-    // window does not show them yet).
-    m_exercise = file.exercise;
-    emit exerciseChanged();
     // An example's mesh (none today) would name a file beside the resource: keep shapes.
     if (example)
         for (ObjectSettings &o : file.scene.objects)
             o.meshPath.clear();
+    // An exercise's reference and grading ride along, so that saving it keeps them.
+    m_exercise = file.exercise;
+    m_exerciseScene = file.scene;
     // The program first: the scene's shading is held to a program that fixes its own.
     m_shaders->setProgram(file.program, perVertex(file.scene.shading.shading));
     m_document->set(file.scene);
+    emit exerciseChanged(); // after the scene: side B's choices may follow the exercise
     const QString name = example ? path.section('/', -1) : QFileInfo(path).fileName();
     setCurrentPath(example ? QString() : QFileInfo(path).absoluteFilePath(), name);
     remember();

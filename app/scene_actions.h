@@ -59,6 +59,9 @@ public:
 
     // The open scene file's exercise (exercise.h), if it has one.
     const std::optional<Exercise> &exercise() const { return m_exercise; }
+    // The exercise's scene as its file has it: the base of its cases, whatever the student
+    // changed since.
+    const Scene &exerciseScene() const { return m_exerciseScene; }
 
 signals:
     void sceneOpened(const QString &path);
@@ -84,6 +87,7 @@ private:
     QString m_name;
     std::optional<SceneFile> m_saved;
     std::optional<Exercise> m_exercise; // the open scene file's, kept when it is saved
+    Scene m_exerciseScene;
 };
 
 } // namespace lb

@@ -7,6 +7,7 @@
 #include <QLabel>
 #include <QSignalBlocker>
 #include <QSlider>
+#include <QToolButton>
 
 #include <array>
 #include <cmath>
@@ -102,10 +103,28 @@ ShadingPanel::ShadingPanel(SceneDocument *document, QWidget *parent)
         &ShadingSettings::normalsByModelView);
     feeds(m_normalsByModelView, {Semantic::Normals});
 
-    auto *compareTitle = new QLabel(tr("<b>Compare</b> with a built-in program"), this);
+    auto *compareTitle = new QLabel(tr("<b>Compare</b> side A with side B"), this);
     compareTitle->setToolTip(tr("Side A is the program on screen (the editor's); side B is the "
-                                "built-in program with the choices below; one camera"));
+                                "built-in program with the choices below, a shader pair from "
+                                "files, or an open exercise's reference; one camera"));
     form->addRow(compareTitle);
+    m_sideB = new QLabel(this);
+    m_sideB->setWordWrap(true);
+    m_sideB->setTextFormat(Qt::PlainText);
+    m_sideBFiles = new QToolButton(this);
+    m_sideBFiles->setText(tr("Files..."));
+    m_sideBFiles->setToolTip(tr("Side B draws a shader pair from files (NAME.vert and "
+                                "NAME.frag), e.g. last week's solution"));
+    connect(m_sideBFiles, &QToolButton::clicked, this, &ShadingPanel::sideBFilesRequested);
+    m_sideBClear = new QToolButton(this);
+    m_sideBClear->setText(QString::fromUtf8("\u00d7"));
+    m_sideBClear->setToolTip(tr("Side B draws what it drew before the files"));
+    connect(m_sideBClear, &QToolButton::clicked, this, &ShadingPanel::sideBClearRequested);
+    auto *sideBRow = new QHBoxLayout;
+    sideBRow->addWidget(m_sideB, 1);
+    sideBRow->addWidget(m_sideBFiles);
+    sideBRow->addWidget(m_sideBClear);
+    form->addRow(tr("B program"), sideBRow);
     m_compareMode = makeCombo({tr("Off"), tr("Side by side"), tr("Wipe"), tr("Difference |A - B|")},
                               tr("Side by side: A left, B right; wipe: drag the line in the view; "
                                  "difference: |A - B| as a heat map (key C cycles)"));
@@ -122,6 +141,8 @@ ShadingPanel::ShadingPanel(SceneDocument *document, QWidget *parent)
     connect(m_compareSpecular, &QComboBox::currentIndexChanged, this,
             [this](int i) { edit([&](Scene &s) { s.compare.specular = SpecularModel(i); }); });
     form->addRow(tr("B specular"), m_compareSpecular);
+    for (QComboBox *combo : {m_compareShading, m_compareSpecular})
+        combo->setProperty("ownTip", combo->toolTip());
     m_wipe = new QSlider(Qt::Horizontal, this);
     m_wipe->setRange(0, 1000);
     m_wipe->setToolTip(tr("Where the wipe divides A (left) from B (right)"));
@@ -135,13 +156,24 @@ ShadingPanel::ShadingPanel(SceneDocument *document, QWidget *parent)
                        s.shading = ShadingSettings{};
                        s.compare = CompareSettings{};
                    });
-    refreshNow();
+    setSideB(tr("the built-in program"), {}, false); // shows the scene too
 }
 
 void ShadingPanel::setShadingFixed(bool fixed, const QString &reason)
 {
     m_shading->setEnabled(!fixed);
     m_shading->setToolTip(fixed ? reason : m_shadingTip);
+}
+
+void ShadingPanel::setSideB(const QString &description, const QString &fixed, bool clearable)
+{
+    m_sideB->setText(description);
+    m_sideB->setToolTip(description);
+    m_sideBClear->setVisible(clearable);
+    m_sideBFixed = fixed;
+    for (QComboBox *combo : {m_compareShading, m_compareSpecular})
+        combo->setToolTip(fixed.isEmpty() ? combo->property("ownTip").toString() : fixed);
+    refreshNow();
 }
 
 void ShadingPanel::refresh(const Scene &scene)
@@ -167,8 +199,8 @@ void ShadingPanel::refresh(const Scene &scene)
     m_compareSpecular->setCurrentIndex(int(scene.compare.specular));
     m_wipe->setValue(int(std::lround(scene.compare.wipe * 1000.0f)));
     const bool comparing = scene.compare.mode != CompareMode::Off;
-    m_compareShading->setEnabled(comparing);
-    m_compareSpecular->setEnabled(comparing);
+    m_compareShading->setEnabled(comparing && m_sideBFixed.isEmpty());
+    m_compareSpecular->setEnabled(comparing && m_sideBFixed.isEmpty());
     m_wipe->setEnabled(scene.compare.mode == CompareMode::Wipe);
 }
 

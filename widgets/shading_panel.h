@@ -1,6 +1,8 @@
 #pragma once
 // Shading: Gouraud or Phong, the specular term, the projection, the terms and switches, and
-// the comparison with a built-in program (side by side, wipe, difference; compare.h).
+// the comparison of the program on screen (side A) with side B (side by side, wipe,
+// difference; compare.h): the built-in program with its own choices, a shader pair from files,
+// or an open exercise's reference.
 
 #include "scene_panel.h"
 
@@ -8,7 +10,9 @@
 
 class QCheckBox;
 class QComboBox;
+class QLabel;
 class QSlider;
+class QToolButton;
 
 namespace lb {
 
@@ -31,10 +35,23 @@ public:
     QComboBox *compareShadingCombo() const { return m_compareShading; }
     QComboBox *compareSpecularCombo() const { return m_compareSpecular; }
     QSlider *wipeSlider() const { return m_wipe; }
+    QLabel *sideBLabel() const { return m_sideB; }
+    QToolButton *sideBFilesButton() const { return m_sideBFiles; }
+    QToolButton *sideBClearButton() const { return m_sideBClear; }
+
+    // What side B draws, in words ("the built-in program", "toon.vert + toon.frag"); `fixed`:
+    // why its shading and specular choices do nothing (its program shades as it is written,
+    // or an exercise fixes them), empty when they apply; `clearable`: the x button brings
+    // back the side B before the files.
+    void setSideB(const QString &description, const QString &fixed, bool clearable);
 
     // When the program on screen does its own shading (an edited built-in Gouraud program
     // stays Gouraud), the choice is greyed with `reason` as its tooltip; none: it is free.
     void setShadingFixed(bool fixed, const QString &reason);
+
+signals:
+    void sideBFilesRequested(); // "Files...": a shader pair for side B
+    void sideBClearRequested(); // x: side B as it was before the files
 
 protected:
     void refresh(const Scene &scene) override;
@@ -52,7 +69,10 @@ private:
     QComboBox *m_compareShading;
     QComboBox *m_compareSpecular;
     QSlider *m_wipe;
+    QLabel *m_sideB;
+    QToolButton *m_sideBFiles, *m_sideBClear;
     QString m_shadingTip;
+    QString m_sideBFixed; // why side B's choices do nothing; empty: they apply
 };
 
 } // namespace lb

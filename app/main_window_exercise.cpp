@@ -1,0 +1,214 @@
+// MainWindow and exercises: the Exercise panel, Check my work (the cases in a grading child,
+// a click showing one in the difference view) and what side B of the compare views draws.
+#include "main_window.h"
+
+#include "exercise_panel.h"
+#include "scene_actions.h"
+#include "shading_panel.h"
+#include "status_line.h"
+#include "submission.h"
+#include "viewport.h"
+#include "work_check.h"
+
+#include <QDockWidget>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QMessageBox>
+#include <QTimer>
+
+namespace lb {
+
+namespace {
+
+// Not modal: the window (and a test driving it) goes on; the box stays until closed.
+void warnAboutSideB(QWidget *window, const QString &message)
+{
+    auto *box = new QMessageBox(QMessageBox::Warning, QObject::tr("Side B"), message,
+                                QMessageBox::Ok, window);
+    box->setObjectName("sideBMessage");
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    box->open();
+}
+
+} // namespace
+
+void MainWindow::setUpExercise()
+{
+    m_workCheck = new WorkCheck(this);
+    connect(m_sceneActions, &SceneActions::exerciseChanged, this, &MainWindow::exerciseChanged);
+    connect(m_exercisePanel, &ExercisePanel::checkRequested, this, &MainWindow::checkWork);
+    connect(m_exercisePanel, &ExercisePanel::cancelRequested, this, [this] {
+        m_workCheck->cancel();
+        m_exercisePanel->setChecking(false);
+        m_exercisePanel->showProblem(tr("Check cancelled."));
+    });
+    connect(m_exercisePanel, &ExercisePanel::caseChosen, this, &MainWindow::showCase);
+    connect(m_exercisePanel, &ExercisePanel::backRequested, this, &MainWindow::showOwnScene);
+    connect(m_workCheck, &WorkCheck::finished, this, [this](const GradingReport &report) {
+        m_exercisePanel->setChecking(false);
+        m_exercisePanel->showReport(report);
+        m_status->showMessage(report.graded() ? tr("Checked: %1 of %2 cases pass")
+                                                    .arg(report.passedCount())
+                                                    .arg(report.cases.size())
+                                              : tr("Not checked: %1").arg(report.status),
+                              10000);
+    });
+    connect(m_shading, &ShadingPanel::sideBFilesRequested, this, &MainWindow::chooseSideBFiles);
+    connect(m_shading, &ShadingPanel::sideBClearRequested, this, [this] { setSideBFiles({}); });
+    // The session's scene file may be an exercise.
+    m_exercisePanel->setExercise(m_sceneActions->exercise());
+    applySideB();
+}
+
+void MainWindow::exerciseChanged()
+{
+    m_workCheck->cancel();
+    m_ownScene.reset();
+    const std::optional<Exercise> &exercise = m_sceneActions->exercise();
+    m_exercisePanel->setExercise(exercise);
+    m_exercisePanel->setChecking(false);
+    if (m_checkAction)
+        m_checkAction->setEnabled(exercise.has_value());
+    m_exerciseDock->setVisible(exercise.has_value());
+    if (exercise) // the task is the first thing to read (once its tab exists again)
+        QTimer::singleShot(0, m_exerciseDock, [dock = m_exerciseDock] { dock->raise(); });
+    applySideB();
+}
+
+void MainWindow::applySideB()
+{
+    // Files the user chose come first; then an exercise's reference; then the built-in
+    // program with the Shading panel's side-B choices.
+    const std::optional<Exercise> &e = m_sceneActions->exercise();
+    const bool exerciseProgram = e && e->unread.isUndefined() && !e->reference.builtIn();
+    const bool exerciseBuiltIn = e && e->unread.isUndefined() && e->reference.builtIn();
+    const QString afterFiles = exerciseProgram   ? tr("the exercise's reference")
+                               : exerciseBuiltIn ? tr("the exercise's reference (built-in)")
+                                                 : tr("the built-in program");
+    if (!m_sideBPath.isEmpty()) {
+        const Submission pair = readSubmission(m_sideBPath);
+        const QString name = pair.vertexPath == pair.fragmentPath
+                                 ? QFileInfo(pair.vertexPath).fileName()
+                                 : QString("%1 + %2").arg(QFileInfo(pair.vertexPath).fileName(),
+                                                          QFileInfo(pair.fragmentPath).fileName());
+        m_viewport->setSideBProgram(pair.vertex, pair.fragment, name);
+        m_shading->setSideB(name,
+                            tr("Side B draws %1: it shades as it is written, so these choices do "
+                               "nothing. The x button brings back %2.")
+                                .arg(name, afterFiles),
+                            true);
+        return;
+    }
+    if (exerciseProgram) {
+        m_viewport->setSideBProgram(e->reference.vertex, e->reference.fragment,
+                                    tr("the exercise's reference"));
+        m_shading->setSideB(tr("the exercise's reference"),
+                            tr("Side B draws the exercise's reference program: it shades as it "
+                               "is written, so these choices do nothing."),
+                            false);
+        return;
+    }
+    m_viewport->setSideBProgram({}, {});
+    if (exerciseBuiltIn) {
+        // The reference is the built-in program with the exercise's choices: side B is that.
+        m_document.edit([&](Scene &s) {
+            s.compare.shading = e->reference.shading;
+            s.compare.specular = e->reference.specular;
+        });
+        m_shading->setSideB(tr("the built-in program, %1 shading and %2 specular (the "
+                               "exercise's reference)")
+                                .arg(toName(e->reference.shading), toName(e->reference.specular)),
+                            tr("The exercise's reference fixes side B's choices."), false);
+        return;
+    }
+    m_shading->setSideB(tr("the built-in program"), {}, false);
+}
+
+QString MainWindow::setSideBFiles(const QString &path)
+{
+    if (!path.isEmpty()) {
+        const Submission pair = readSubmission(path);
+        if (!pair.error.isEmpty()) {
+            const QString message = tr("Side B is unchanged: %1").arg(pair.error);
+            warnAboutSideB(this, message);
+            return message;
+        }
+        // A pair that does not build is said now; side B keeps what it drew.
+        const ProgramBuild build = m_viewport->setSideBProgram(pair.vertex, pair.fragment);
+        if (!build.ok()) {
+            applySideB(); // what side B drew before
+            const QString message =
+                tr("Side B is unchanged: %1 does not build:\n%2").arg(path, build.log());
+            warnAboutSideB(this, message);
+            return message;
+        }
+    }
+    m_sideBPath = path;
+    applySideB();
+    if (!path.isEmpty() && m_document.scene().compare.mode == CompareMode::Off)
+        m_document.edit([](Scene &s) { s.compare.mode = CompareMode::SideBySide; });
+    return {};
+}
+
+void MainWindow::chooseSideBFiles()
+{
+    const QString path = QFileDialog::getOpenFileName(
+        this, tr("Side B: a shader pair (NAME.vert or NAME.frag) or a scene file's program"), {},
+        tr("Shader pairs and scene files (*.vert *.frag *.json);;All files (*)"));
+    if (!path.isEmpty())
+        setSideBFiles(path);
+}
+
+void MainWindow::checkWork()
+{
+    const std::optional<Exercise> &e = m_sceneActions->exercise();
+    if (!e || !e->unread.isUndefined())
+        return;
+    if (m_workCheck->isRunning()) {
+        m_workCheck->cancel();
+        m_exercisePanel->setChecking(false);
+    }
+    m_exerciseDock->show();
+    m_exerciseDock->raise();
+    // What the editor holds, as it would be handed in (not the last program that drew).
+    const QString error = m_workCheck->start(m_sceneActions->exerciseScene(), *e,
+                                             m_shaders.source(ShaderStage::Vertex),
+                                             m_shaders.source(ShaderStage::Fragment));
+    if (!error.isEmpty()) {
+        m_exercisePanel->showProblem(tr("The check could not start: %1").arg(error));
+        return;
+    }
+    m_exercisePanel->setChecking(true);
+}
+
+void MainWindow::showCase(int index)
+{
+    const std::vector<Scene> &cases = m_workCheck->cases();
+    const std::optional<Exercise> &e = m_sceneActions->exercise();
+    if (index < 0 || index >= int(cases.size()) || !e)
+        return;
+    if (!m_ownScene)
+        m_ownScene = m_document.scene();
+    Scene shown = cases[std::size_t(index)];
+    shown.compare.mode = CompareMode::Difference;
+    if (e->reference.builtIn()) {
+        shown.compare.shading = e->reference.shading;
+        shown.compare.specular = e->reference.specular;
+    }
+    m_document.set(shown);
+    m_exercisePanel->markShownCase(index);
+    m_status->showMessage(tr("Case %1 in the difference view (key C: the other compare views; "
+                             "\"Back to my scene\" in the Exercise panel)")
+                              .arg(index),
+                          10000);
+}
+
+void MainWindow::showOwnScene()
+{
+    if (m_ownScene)
+        m_document.set(*m_ownScene);
+    m_ownScene.reset();
+    m_exercisePanel->markShownCase(-1);
+}
+
+} // namespace lb

@@ -1,0 +1,134 @@
+#include "work_check.h"
+
+#include "scene_file.h"
+
+#include <QCoreApplication>
+#include <QDir>
+#include <QProcess>
+#include <QSaveFile>
+#include <QTemporaryDir>
+#include <QTimer>
+
+#include <cstring>
+
+namespace lb {
+
+QString gradingChildProgram()
+{
+    const QString program = qEnvironmentVariable("LIGHTBENCH_GRADE_PROGRAM");
+    return program.isEmpty() ? QCoreApplication::applicationFilePath() : program;
+}
+
+int gradingTimeLimitMs(int cases)
+{
+    const int asked = qEnvironmentVariableIntValue("LIGHTBENCH_GRADE_TIME_LIMIT_MS");
+    return asked > 0 ? asked : 30000 + 4000 * cases; // a 2 s trial budget a frame, two frames
+}
+
+namespace {
+
+QString writeText(const QString &path, const QString &text)
+{
+    QSaveFile file(path);
+    const QByteArray bytes = text.toUtf8();
+    if (!file.open(QIODevice::WriteOnly) || file.write(bytes) != bytes.size() || !file.commit())
+        return QObject::tr("%1: cannot write (%2)").arg(path, file.errorString());
+    return {};
+}
+
+} // namespace
+
+WorkCheck::WorkCheck(QObject *parent) : QObject(parent), m_timer(new QTimer(this))
+{
+    m_timer->setSingleShot(true);
+    connect(m_timer, &QTimer::timeout, this, [this] {
+        m_timedOut = true;
+        if (m_process)
+            m_process->kill(); // finished() follows
+    });
+}
+
+WorkCheck::~WorkCheck()
+{
+    cancel();
+}
+
+void WorkCheck::cancel()
+{
+    m_timer->stop();
+    if (!m_process)
+        return;
+    QProcess *p = m_process;
+    m_process = nullptr; // its finished() is no longer ours
+    p->disconnect(this);
+    p->kill();
+    p->waitForFinished(2000);
+    delete p;
+}
+
+QString WorkCheck::start(const Scene &base, const Exercise &exercise, const QString &vertex,
+                         const QString &fragment)
+{
+    cancel();
+    // The exercise's scene and the program as files, as a teacher's batch has them.
+    m_dir = std::make_unique<QTemporaryDir>(QDir::temp().filePath("lightbench-check-XXXXXX"));
+    if (!m_dir->isValid())
+        return tr("no temporary folder for the check: %1").arg(m_dir->errorString());
+    const QDir dir(m_dir->path());
+    const QString exercisePath = dir.filePath("exercise.json");
+    Exercise graded = exercise;
+    graded.unread = QJsonValue::Undefined;
+    if (QString error = writeSceneFile(exercisePath, SceneFile{base, std::nullopt, graded});
+        !error.isEmpty())
+        return error;
+    const QString submission = dir.filePath("shader");
+    for (const auto &[suffix, text] : {std::pair{".vert", vertex}, std::pair{".frag", fragment}})
+        if (QString error = writeText(submission + suffix, text); !error.isEmpty())
+            return error;
+
+    m_cases = gradingCases(base, exercise.grading, kSeed);
+    m_timedOut = false;
+    m_limitMs = gradingTimeLimitMs(exercise.grading.cases);
+    m_process = new QProcess(this);
+    connect(m_process, &QProcess::finished, this, &WorkCheck::ended, Qt::QueuedConnection);
+    connect(m_process, &QProcess::errorOccurred, this, [this](QProcess::ProcessError error) {
+        if (error == QProcess::FailedToStart) // no finished() follows: say it ended
+            QMetaObject::invokeMethod(this, &WorkCheck::ended, Qt::QueuedConnection);
+    });
+    m_process->start(gradingChildProgram(),
+                     {"--grade-one", submission, "--grade-name", tr("your program"), "--exercise",
+                      exercisePath, "--seed", QString::number(kSeed)});
+    m_timer->start(m_limitMs);
+    return {};
+}
+
+void WorkCheck::ended()
+{
+    QProcess *p = m_process;
+    if (!p)
+        return; // cancelled meanwhile
+    m_process = nullptr;
+    m_timer->stop();
+    GradingReport report;
+    if (m_timedOut) {
+        report.status = "timed out";
+        report.diagnostic = tr("more than %1 s").arg(m_limitMs / 1000.0, 0, 'f', 1);
+    } else if (const std::optional<GradingReport> r =
+                   readGradingReport(p->readAllStandardOutput())) {
+        report = *r;
+    } else {
+        report.status = "crashed";
+        report.diagnostic = p->error() == QProcess::FailedToStart
+                                ? tr("could not start %1: %2").arg(p->program(), p->errorString())
+                            : p->exitStatus() == QProcess::CrashExit
+                                ? tr("the checking process ended by signal %1 (%2)")
+                                      .arg(p->exitCode())
+                                      .arg(QString::fromLatin1(strsignal(p->exitCode())))
+                                : tr("the checking process ended with code %1").arg(p->exitCode());
+    }
+    p->deleteLater();
+    m_dir.reset();
+    emit finished(report);
+}
+
+} // namespace lb

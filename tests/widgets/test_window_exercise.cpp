@@ -1,0 +1,246 @@
+// Exercises in the window: the Exercise panel, Check my work (the cases listed, a click showing
+// one in the difference view) and what side B of the compare views draws.
+#include "exercise_panel.h"
+#include "window_fixture.h"
+#include "work_check.h"
+
+#include <QDockWidget>
+#include <QRegularExpression>
+#include <QToolButton>
+#include <QTreeWidget>
+
+using namespace lb;
+using namespace lb::test;
+
+namespace {
+
+const QString kExercise =
+    QStringLiteral(LB_TEST_DATA "/../../resources/examples/exercise_lighting.json");
+
+QString readText(const QString &path)
+{
+    QFile f(path);
+    return f.open(QIODevice::ReadOnly) ? QString::fromUtf8(f.readAll()) : QString();
+}
+
+} // namespace
+
+class TestWindowExercise : public WindowTest
+{
+    Q_OBJECT
+
+    // The example exercise with fewer cases (a check takes a child process and 2 x N frames)
+    // and `change` applied to its JSON; written to the test's folder.
+    QString exerciseFile(int cases, const std::function<void(QJsonObject &)> &change = {})
+    {
+        QJsonObject o = QJsonDocument::fromJson(readText(kExercise).toUtf8()).object();
+        QJsonObject exercise = o["exercise"].toObject();
+        QJsonObject grading = exercise["grading"].toObject();
+        grading["cases"] = cases;
+        exercise["grading"] = grading;
+        o["exercise"] = exercise;
+        if (change)
+            change(o);
+        const QString path = m_dir.filePath(QString("exercise-%1.json").arg(cases));
+        QFile f(path);
+        if (!f.open(QIODevice::WriteOnly))
+            return {};
+        f.write(QJsonDocument(o).toJson());
+        return path;
+    }
+    // Check my work clicked; the report once the grading child has said it.
+    std::optional<GradingReport> check()
+    {
+        QSignalSpy done(m_window->workCheck(), &WorkCheck::finished);
+        QTest::mouseClick(m_window->exercisePanel()->checkButton(), Qt::LeftButton);
+        if (!m_window->workCheck()->isRunning() || !done.wait(120000))
+            return std::nullopt;
+        return done.first().first().value<GradingReport>();
+    }
+    QTreeWidget *cases() const { return m_window->exercisePanel()->caseList(); }
+    void setFragment(const QString &text)
+    {
+        const std::optional<ProgramBuild> built = buildAfter(
+            [&] { m_window->editorPanel()->editor(ShaderStage::Fragment)->setText(text); });
+        QVERIFY(built);
+    }
+
+private slots:
+    void thePanelComesWithAnExercise()
+    {
+        QVERIFY(m_window->exerciseDock()->isHidden()); // no exercise: no panel
+        QVERIFY(m_window->sceneActions()->open(exerciseFile(4)));
+        QTRY_VERIFY(m_window->exerciseDock()->isVisible());
+        ExercisePanel *panel = m_window->exercisePanel();
+        QCOMPARE(panel->titleLabel()->text(),
+                 QString("Per-fragment lighting (Teil 6, Aufgaben 2 and 3)"));
+        QVERIFY(panel->checkButton()->isEnabled());
+        QVERIFY(!panel->findChild<QLabel *>()->text().contains("specularFactor")); // no source
+        QVERIFY(m_window->sceneActions()->open(":/examples/toon.json"));
+        QVERIFY(m_window->exerciseDock()->isHidden());
+        // The example in the menu is the exercise.
+        QVERIFY(m_window->sceneActions()->open(":/examples/exercise_lighting.json"));
+        QVERIFY(m_window->exerciseDock()->isVisible());
+    }
+
+    void checkMyWorkListsTheCasesAndAClickShowsOne()
+    {
+        QVERIFY(m_window->sceneActions()->open(exerciseFile(5)));
+        const Scene own = scene();
+        // The starting point (the ambient term alone) fails.
+        std::optional<GradingReport> report = check();
+        QVERIFY(report);
+        QCOMPARE(report->status, QString("graded"));
+        QCOMPARE(cases()->topLevelItemCount(), 5);
+        QVERIFY(report->passedCount() < 5);
+        QVERIFY2(m_window->exercisePanel()->summaryLabel()->text().startsWith("Not yet"),
+                 qPrintable(m_window->exercisePanel()->summaryLabel()->text()));
+        int failed = -1;
+        for (int k = 0; k < 5 && failed < 0; ++k)
+            if (!report->cases[std::size_t(k)].passed)
+                failed = k;
+        QCOMPARE(cases()->topLevelItem(failed)->text(1), QString("failed"));
+
+        // A click on a failed case: that case's scene in the difference view, the difference
+        // there as the check found it.
+        QTreeWidgetItem *item = cases()->topLevelItem(failed);
+        cases()->scrollToItem(item);
+        QTest::mouseClick(cases()->viewport(), Qt::LeftButton, {},
+                          cases()->visualItemRect(item).center());
+        const std::vector<Scene> graded =
+            gradingCases(m_window->sceneActions()->exerciseScene(),
+                         m_window->sceneActions()->exercise()->grading, WorkCheck::kSeed);
+        Scene expected = graded[std::size_t(failed)];
+        expected.compare.mode = CompareMode::Difference;
+        QVERIFY(scene() == expected);
+        frame();
+        QVERIFY2(m_window->viewport()->renderer().difference().largest > 2,
+                 qPrintable(m_window->viewport()->compareText()));
+        QVERIFY(m_window->viewport()->compareText().contains("the exercise's reference"));
+        QVERIFY(m_window->exercisePanel()->backButton()->isEnabled());
+
+        // The correct answer passes every case; a case shown differs by the tolerance at most.
+        setFragment(readText(LB_TEST_DATA "/grading/correct/lighting.frag"));
+        report = check();
+        QVERIFY(report);
+        QCOMPARE(report->passedCount(), 5);
+        QVERIFY(m_window->exercisePanel()->summaryLabel()->text().startsWith("Passed"));
+        item = cases()->topLevelItem(3);
+        QTest::mouseClick(cases()->viewport(), Qt::LeftButton, {},
+                          cases()->visualItemRect(item).center());
+        QCOMPARE(scene().lights[0].position, graded[3].lights[0].position);
+        frame();
+        QVERIFY2(m_window->viewport()->renderer().difference().largest <= 2,
+                 qPrintable(m_window->viewport()->compareText()));
+        // Back to the student's own scene.
+        QTest::mouseClick(m_window->exercisePanel()->backButton(), Qt::LeftButton);
+        QVERIFY(scene() == own);
+        QVERIFY(!m_window->exercisePanel()->backButton()->isEnabled());
+    }
+
+    void brokenProgramsAreSaidNotShown()
+    {
+        QVERIFY(m_window->sceneActions()->open(exerciseFile(3)));
+        // A typo: the check says so, with the line; the window's program keeps drawing.
+        setFragment(readText(LB_TEST_DATA "/grading/syntax.frag"));
+        std::optional<GradingReport> report = check();
+        QVERIFY(report);
+        QCOMPARE(report->status, QString("does not compile"));
+        const QString said = m_window->exercisePanel()->summaryLabel()->text();
+        QVERIFY2(said.contains("does not compile") &&
+                     said.contains(QRegularExpression("shader\\.frag:\\d+:")),
+                 qPrintable(said));
+        QVERIFY(cases()->isHidden());
+        // An endless loop is refused by the child's trial; the window never waits for it.
+        setFragment(readText(LB_TEST_DATA "/grading/loop.frag"));
+        QSignalSpy done(m_window->workCheck(), &WorkCheck::finished);
+        QTest::mouseClick(m_window->exercisePanel()->checkButton(), Qt::LeftButton);
+        QVERIFY(m_window->workCheck()->isRunning());
+        QCOMPARE(m_window->exercisePanel()->checkButton()->text(), QString("Cancel the check"));
+        QVERIFY(done.wait(120000));
+        report = done.first().first().value<GradingReport>();
+        QCOMPARE(report->status, QString("refused"));
+        QVERIFY2(m_window->exercisePanel()->summaryLabel()->text().contains("refused"),
+                 qPrintable(m_window->exercisePanel()->summaryLabel()->text()));
+        // A child that cannot start is said too.
+        qputenv("LIGHTBENCH_GRADE_PROGRAM", "/nonexistent/lightbench");
+        report = check();
+        qputenv("LIGHTBENCH_GRADE_PROGRAM", LIGHTBENCH_EXE);
+        QVERIFY(report);
+        QCOMPARE(report->status, QString("crashed"));
+        QVERIFY2(m_window->exercisePanel()->summaryLabel()->text().contains("could not start"),
+                 qPrintable(m_window->exercisePanel()->summaryLabel()->text()));
+    }
+
+    void aBuiltInReferenceSetsSideB()
+    {
+        const QString path = exerciseFile(3, [](QJsonObject &o) {
+            QJsonObject e = o["exercise"].toObject();
+            e["reference"] = QJsonObject{
+                {"builtIn", QJsonObject{{"shading", "gouraud"}, {"specular", "blinn"}}}};
+            o["exercise"] = e;
+        });
+        QVERIFY(m_window->sceneActions()->open(path));
+        QVERIFY(!m_window->viewport()->hasSideBProgram());
+        QCOMPARE(scene().compare.shading, Shading::Gouraud);
+        QCOMPARE(scene().compare.specular, SpecularModel::Blinn);
+        m_window->document().edit([](Scene &s) { s.compare.mode = CompareMode::SideBySide; });
+        ShadingPanel *p = m_window->shadingPanel();
+        QVERIFY(!p->compareShadingCombo()->isEnabled()); // fixed by the exercise
+        QVERIFY(p->sideBLabel()->text().contains("exercise's reference"));
+    }
+
+    void sideBFromShaderFiles()
+    {
+        // Toon's pair as files: side B draws it; the same program as side A: no difference.
+        const Preset toon = presets().back();
+        const QString stem = m_dir.filePath("toon");
+        for (const auto &[suffix, text] :
+             {std::pair{".vert", toon.vertexSource()}, std::pair{".frag", toon.fragmentSource()}}) {
+            QFile f(stem + suffix);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write(text.toUtf8());
+        }
+        QCOMPARE(m_window->setSideBFiles(stem + ".frag"), QString());
+        QVERIFY(m_window->viewport()->hasSideBProgram());
+        QCOMPARE(scene().compare.mode, CompareMode::SideBySide); // comparing at once
+        ShadingPanel *p = m_window->shadingPanel();
+        QCOMPARE(p->sideBLabel()->text(), QString("toon.vert + toon.frag"));
+        QVERIFY(!p->compareShadingCombo()->isEnabled()); // side B shades as written
+        QVERIFY(m_window->viewport()->compareText().contains("toon.vert + toon.frag"));
+        m_window->editorPanel()->loadPreset(toon);
+        m_window->document().edit([](Scene &s) { s.compare.mode = CompareMode::Difference; });
+        frame();
+        QCOMPARE(m_window->viewport()->renderer().difference().largest, 0);
+
+        // Bad files leave side B as it was, with a message naming them.
+        const QString broken = m_dir.filePath("broken");
+        for (const auto &[suffix, text] : {std::pair{".vert", toon.vertexSource()},
+                                           std::pair{".frag", QString("void main() { oops }")}}) {
+            QFile f(broken + suffix);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write(text.toUtf8());
+        }
+        for (const QString &bad :
+             {broken + ".vert", m_dir.filePath("missing.frag"), m_dir.filePath("alone.vert")}) {
+            const QString message = m_window->setSideBFiles(bad);
+            QVERIFY2(message.startsWith("Side B is unchanged") &&
+                         message.contains(QFileInfo(bad).fileName()),
+                     qPrintable(message));
+            QCOMPARE(p->sideBLabel()->text(), QString("toon.vert + toon.frag"));
+            frame();
+            QCOMPARE(m_window->viewport()->renderer().difference().largest, 0);
+            for (QMessageBox *box : m_window->findChildren<QMessageBox *>("sideBMessage"))
+                box->close();
+        }
+        // x: the built-in program again.
+        QVERIFY(p->sideBClearButton()->isVisible());
+        QTest::mouseClick(p->sideBClearButton(), Qt::LeftButton);
+        QVERIFY(!m_window->viewport()->hasSideBProgram());
+        QCOMPARE(p->sideBLabel()->text(), QString("the built-in program"));
+        QVERIFY(p->compareShadingCombo()->isEnabled());
+    }
+};
+
+LB_WINDOW_TEST_MAIN(TestWindowExercise)
+#include "test_window_exercise.moc"

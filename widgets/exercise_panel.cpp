@@ -1,0 +1,220 @@
+#include "exercise_panel.h"
+
+#include <QHeaderView>
+#include <QLabel>
+#include <QPushButton>
+#include <QTreeWidget>
+#include <QVBoxLayout>
+
+#include <algorithm>
+
+namespace lb {
+
+namespace {
+
+// What a case may vary, in the panel's words (exercise.h's Vary, in its order).
+QString variedText(unsigned vary)
+{
+    const QStringList words{QObject::tr("light position"), QObject::tr("point or directional"),
+                            QObject::tr("light frame"),    QObject::tr("light colours"),
+                            QObject::tr("material"),       QObject::tr("camera"),
+                            QObject::tr("projection"),     QObject::tr("non-uniform scale")};
+    QStringList varied;
+    for (int i = 0; i < words.size(); ++i)
+        if (vary & (1u << i))
+            varied << words[i];
+    return varied.isEmpty() ? QObject::tr("nothing (every case is the scene as it is)")
+                            : varied.join(", ");
+}
+
+QString percent(double share)
+{
+    // 99.96% is not 100%: a case just under its pass share must not read as a full one.
+    return QString("%1%").arg(share >= 1.0 ? 100.0 : std::min(100.0 * share, 99.9), 0, 'f', 1);
+}
+
+} // namespace
+
+ExercisePanel::ExercisePanel(QWidget *parent) : QWidget(parent)
+{
+    auto *layout = new QVBoxLayout(this);
+    m_title = new QLabel(this);
+    m_title->setWordWrap(true);
+    m_title->setTextFormat(Qt::PlainText);
+    QFont bold = m_title->font();
+    bold.setBold(true);
+    m_title->setFont(bold);
+    m_task = new QLabel(this);
+    m_task->setWordWrap(true);
+    m_task->setTextFormat(Qt::PlainText);
+    m_task->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_about = new QLabel(this);
+    m_about->setWordWrap(true);
+    m_about->setTextFormat(Qt::PlainText);
+    m_about->setForegroundRole(QPalette::PlaceholderText);
+    m_check = new QPushButton(tr("Check my work"), this);
+    m_check->setToolTip(tr("Draws the exercise's cases with the program in the editor and with "
+                           "the reference, as the teacher's grading does, and lists each case "
+                           "(F5)"));
+    connect(m_check, &QPushButton::clicked, this,
+            [this] { emit(m_checking ? cancelRequested() : checkRequested()); });
+    m_summary = new QLabel(this);
+    m_summary->setWordWrap(true);
+    m_summary->setTextFormat(Qt::PlainText);
+    m_summary->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_cases = new QTreeWidget(this);
+    m_cases->setColumnCount(4);
+    m_cases->setHeaderLabels({tr("Case"), tr("Result"), tr("Largest"), tr("Within")});
+    m_cases->headerItem()->setToolTip(2, tr("The largest difference of a channel, out of 255"));
+    m_cases->headerItem()->setToolTip(3, tr("The share of the drawn pixels within the tolerance"));
+    m_cases->setRootIsDecorated(false);
+    m_cases->setUniformRowHeights(true);
+    m_cases->setMinimumWidth(10); // the dock's width decides; the columns scroll
+    // Eight cases in view at least: in a short dock the panel scrolls, not the list alone.
+    m_cases->setMinimumHeight(m_cases->fontMetrics().height() * 11);
+    m_cases->header()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    m_cases->setToolTip(tr("Click a case to see it in the difference view"));
+    connect(m_cases, &QTreeWidget::itemClicked, this, [this](QTreeWidgetItem *item) {
+        emit caseChosen(item->data(0, Qt::UserRole).toInt());
+    });
+    connect(m_cases, &QTreeWidget::itemActivated, this, [this](QTreeWidgetItem *item) {
+        emit caseChosen(item->data(0, Qt::UserRole).toInt());
+    });
+    m_back = new QPushButton(tr("Back to my scene"), this);
+    m_back->setToolTip(tr("The scene as it was before a case was shown"));
+    m_back->setEnabled(false);
+    connect(m_back, &QPushButton::clicked, this, &ExercisePanel::backRequested);
+
+    layout->addWidget(m_title);
+    layout->addWidget(m_task);
+    layout->addWidget(m_about);
+    layout->addWidget(m_check);
+    layout->addWidget(m_summary);
+    layout->addWidget(m_cases, 1);
+    layout->addWidget(m_back);
+    setExercise(std::nullopt);
+}
+
+void ExercisePanel::setExercise(const std::optional<Exercise> &exercise)
+{
+    m_cases->clear();
+    m_summary->clear();
+    m_cases->hide();
+    markShownCase(-1);
+    if (!exercise) {
+        m_title->setText(tr("No exercise is open"));
+        m_task->setText(tr("An exercise is a scene file with a task, the teacher's reference "
+                           "program and how it is graded. File > Examples > \"Exercise: "
+                           "per-fragment lighting\" is one; File > Open Scene opens others."));
+        m_about->clear();
+        m_check->setEnabled(false);
+        return;
+    }
+    m_passShare = exercise->grading.passShare;
+    m_tolerance = exercise->grading.tolerance;
+    m_size = exercise->grading.size;
+    m_title->setText(exercise->title.isEmpty() ? tr("Exercise") : exercise->title);
+    m_task->setText(exercise->task);
+    const ExerciseReference &ref = exercise->reference;
+    const QString reference =
+        !exercise->unread.isUndefined()
+            ? tr("This exercise cannot be checked: its reference is missing or unusable.")
+        : ref.builtIn()
+            ? tr("Reference: the built-in program, %1 shading, %2 specular.")
+                  .arg(toName(ref.shading), toName(ref.specular))
+            : tr("Reference: the teacher's program (not shown; it is side B of the compare "
+                 "views, key C).");
+    const GradingSpec &g = exercise->grading;
+    m_about->setText(reference + "\n" +
+                     tr("%1 cases at %2 x %3 pixels; a case passes when %4 of its pixels are "
+                        "within %5/255. The cases vary: %6.")
+                         .arg(g.cases)
+                         .arg(g.size.width())
+                         .arg(g.size.height())
+                         .arg(percent(g.passShare))
+                         .arg(g.tolerance)
+                         .arg(variedText(g.vary)));
+    m_check->setEnabled(exercise->unread.isUndefined());
+}
+
+void ExercisePanel::setChecking(bool checking)
+{
+    m_checking = checking;
+    m_check->setText(checking ? tr("Cancel the check") : tr("Check my work"));
+    if (checking) {
+        m_summary->setText(tr("Checking: the cases are drawn with your program and the "
+                              "reference..."));
+        m_cases->clear();
+        m_cases->hide();
+    }
+}
+
+void ExercisePanel::showProblem(const QString &text)
+{
+    m_summary->setText(text);
+    m_cases->clear();
+    m_cases->hide();
+}
+
+void ExercisePanel::showReport(const GradingReport &report)
+{
+    m_cases->clear();
+    if (!report.graded()) {
+        const QString why = report.diagnostic.isEmpty() ? QString() : ":\n" + report.diagnostic;
+        const QString text =
+            report.status == "does not compile" ? tr("Your program does not compile%1").arg(why)
+            : report.status == "does not link"  ? tr("Your program does not link%1").arg(why)
+            : report.status == "refused"        ? tr("Your program was refused%1").arg(why)
+            : report.status == "timed out"
+                ? tr("The check took too long (%1) and was stopped").arg(report.diagnostic)
+                : tr("Not checked: %1%2").arg(report.status, why);
+        showProblem(text);
+        return;
+    }
+    const int passed = report.passedCount();
+    const int cases = int(report.cases.size());
+    m_summary->setText((passed == cases
+                            ? tr("Passed: all %1 cases within %2/255 (largest difference %3/255)")
+                                  .arg(cases)
+                                  .arg(m_tolerance)
+                                  .arg(report.largest())
+                            : tr("Not yet: %1 of %2 cases pass; largest difference %3/255")
+                                  .arg(passed)
+                                  .arg(cases)
+                                  .arg(report.largest())) +
+                       "\n" + tr("Click a case to see it in the difference view."));
+    for (int k = 0; k < cases; ++k) {
+        const CaseResult &r = report.cases[std::size_t(k)];
+        auto *item = new QTreeWidgetItem(m_cases);
+        item->setText(0, k == 0 ? tr("%1 (as given)").arg(k) : QString::number(k));
+        item->setText(1, r.passed ? tr("passed") : tr("failed"));
+        item->setText(2, QString("%1/255").arg(r.largest));
+        item->setText(3, r.compared > 0 ? percent(r.shareWithin) : tr("nothing drawn"));
+        item->setData(0, Qt::UserRole, k);
+        item->setForeground(1, r.passed ? QColor(0, 128, 0) : QColor(192, 0, 0));
+        item->setToolTip(
+            0, r.at.x() >= 0
+                   ? tr("Largest difference at (%1, %2) of the %3 x %4 frame; %5 pixels drawn")
+                         .arg(r.at.x())
+                         .arg(r.at.y())
+                         .arg(m_size.width())
+                         .arg(m_size.height())
+                         .arg(r.compared)
+                   : tr("%1 pixels drawn").arg(r.compared));
+    }
+    m_cases->show();
+}
+
+void ExercisePanel::markShownCase(int index)
+{
+    m_back->setEnabled(index >= 0);
+    for (int i = 0; i < m_cases->topLevelItemCount(); ++i) {
+        QTreeWidgetItem *item = m_cases->topLevelItem(i);
+        QFont f = item->font(0);
+        f.setBold(item->data(0, Qt::UserRole).toInt() == index);
+        for (int c = 0; c < 4; ++c)
+            item->setFont(c, f);
+    }
+}
+
+} // namespace lb

@@ -1,0 +1,62 @@
+#pragma once
+// The Exercise panel: the open exercise's title and task, what its reference is and how it
+// grades, and Check my work: the cases the student's program was checked on, each passed or
+// not with its largest difference and its share of pixels within tolerance. A click on a case
+// asks for it in the difference view. The checking itself is the window's (it runs in a
+// grading child); this panel shows and asks.
+
+#include "exercise.h"
+#include "grading_report.h"
+
+#include <QWidget>
+
+class QLabel;
+class QPushButton;
+class QTreeWidget;
+
+namespace lb {
+
+class ExercisePanel : public QWidget
+{
+    Q_OBJECT
+public:
+    explicit ExercisePanel(QWidget *parent = nullptr);
+
+    // The exercise to show; none: a word on what an exercise is. The cases listed go.
+    void setExercise(const std::optional<Exercise> &exercise);
+    // A check is running (the button becomes Cancel) or not.
+    void setChecking(bool checking);
+    // The outcome of a check: its cases listed, or why there are none.
+    void showReport(const GradingReport &report);
+    // A message in place of the outcome ("could not start the check: ...").
+    void showProblem(const QString &text);
+    // The case shown in the view is marked in the list; -1: none (the student's own scene).
+    void markShownCase(int index);
+
+    QPushButton *checkButton() const { return m_check; }
+    QPushButton *backButton() const { return m_back; }
+    QTreeWidget *caseList() const { return m_cases; }
+    QLabel *summaryLabel() const { return m_summary; }
+    QLabel *titleLabel() const { return m_title; }
+
+signals:
+    void checkRequested();
+    void cancelRequested();
+    void caseChosen(int index); // a case of the last report, to show in the difference view
+    void backRequested();       // the scene as it was before the first case was shown
+
+private:
+    QLabel *m_title;
+    QLabel *m_task;
+    QLabel *m_about;
+    QPushButton *m_check;
+    QLabel *m_summary;
+    QTreeWidget *m_cases;
+    QPushButton *m_back;
+    bool m_checking = false;
+    double m_passShare = 0.99;
+    int m_tolerance = 2;
+    QSize m_size;
+};
+
+} // namespace lb
