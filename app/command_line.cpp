@@ -298,6 +298,14 @@ void parseInto(const QCommandLineParser &parser, CommandLine &cl)
         if (given(option) && !cl.grade && cl.gradeOne.isEmpty())
             fail(option, "goes with --grade");
     if (cl.grade || !cl.gradeOne.isEmpty()) {
+        // The exercise's scene and each submission's program are what is graded: any other
+        // option would be ignored without a word.
+        const QStringList allowed{"grade",  "grade-one", "grade-name", "exercise",
+                                  "report", "sheets",    "seed"};
+        for (const QString &name : parser.optionNames())
+            if (!allowed.contains(name))
+                fail(name, "does nothing with --grade (the exercise's scene and each submission's "
+                           "program are graded)");
         cl.submissions = parser.positionalArguments();
         if (!given("exercise") || value("exercise").isEmpty())
             fail("grade", "needs --exercise FILE.json");

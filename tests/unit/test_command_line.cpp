@@ -161,6 +161,10 @@ private slots:
                                                    << "--grade";
         QTest::newRow("negative seed") << "--grade a --exercise e.json --seed -3"
                                        << "--seed";
+        QTest::newRow("scene beside grade") << "--grade a --exercise e.json --scene s.json"
+                                            << "--scene";
+        QTest::newRow("size beside grade") << "--grade a --exercise e.json --size 64x64"
+                                           << "--size";
         QTest::newRow("missing number") << "--light 1,2,3"
                                         << "--light";
         QTest::newRow("empty number") << "--ka 1,,0"
