@@ -118,6 +118,7 @@ private:
     void setUpExercise();
     void exerciseChanged();
     void applySideB();
+    void holdSideBToReference(); // a built-in reference's choices stay side B's
     void checkWork();
     void showCase(int index);
     void showOwnScene();
@@ -160,7 +161,8 @@ private:
     WorkCheck *m_workCheck;
     QAction *m_checkAction = nullptr;
     std::optional<Scene> m_ownScene; // the student's scene before the first case was shown
-    QString m_sideBPath;             // side B's shader files; empty: none chosen
+    // Side B's shader files as read when chosen (path empty: none chosen).
+    QString m_sideBPath, m_sideBVertex, m_sideBFragment, m_sideBName;
 };
 
 } // namespace lb

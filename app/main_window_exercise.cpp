@@ -55,6 +55,10 @@ void MainWindow::setUpExercise()
     });
     connect(m_shading, &ShadingPanel::sideBFilesRequested, this, &MainWindow::chooseSideBFiles);
     connect(m_shading, &ShadingPanel::sideBClearRequested, this, [this] { setSideBFiles({}); });
+    connect(&m_document, &SceneDocument::changed, this, [this](SceneParts parts) {
+        if (parts & ScenePart::Compare)
+            holdSideBToReference(); // a reset of the Shading panel included
+    });
     // The session's scene file may be an exercise.
     m_exercisePanel->setExercise(m_sceneActions->exercise());
     applySideB();
@@ -65,10 +69,12 @@ void MainWindow::exerciseChanged()
     m_workCheck->cancel();
     m_ownScene.reset();
     const std::optional<Exercise> &exercise = m_sceneActions->exercise();
+    if (exercise) // its reference is side B now, not files chosen before
+        m_sideBPath.clear();
     m_exercisePanel->setExercise(exercise);
     m_exercisePanel->setChecking(false);
     if (m_checkAction)
-        m_checkAction->setEnabled(exercise.has_value());
+        m_checkAction->setEnabled(exercise && exercise->unread.isUndefined());
     m_exerciseDock->setVisible(exercise.has_value());
     if (exercise) // the task is the first thing to read (once its tab exists again)
         QTimer::singleShot(0, m_exerciseDock, [dock = m_exerciseDock] { dock->raise(); });
@@ -85,13 +91,9 @@ void MainWindow::applySideB()
     const QString afterFiles = exerciseProgram   ? tr("the exercise's reference")
                                : exerciseBuiltIn ? tr("the exercise's reference (built-in)")
                                                  : tr("the built-in program");
-    if (!m_sideBPath.isEmpty()) {
-        const Submission pair = readSubmission(m_sideBPath);
-        const QString name = pair.vertexPath == pair.fragmentPath
-                                 ? QFileInfo(pair.vertexPath).fileName()
-                                 : QString("%1 + %2").arg(QFileInfo(pair.vertexPath).fileName(),
-                                                          QFileInfo(pair.fragmentPath).fileName());
-        m_viewport->setSideBProgram(pair.vertex, pair.fragment, name);
+    if (!m_sideBPath.isEmpty()) { // the text as read when chosen (it built then)
+        const QString &name = m_sideBName;
+        m_viewport->setSideBProgram(m_sideBVertex, m_sideBFragment, name);
         m_shading->setSideB(name,
                             tr("Side B draws %1: it shades as it is written, so these choices do "
                                "nothing. The x button brings back %2.")
@@ -110,11 +112,7 @@ void MainWindow::applySideB()
     }
     m_viewport->setSideBProgram({}, {});
     if (exerciseBuiltIn) {
-        // The reference is the built-in program with the exercise's choices: side B is that.
-        m_document.edit([&](Scene &s) {
-            s.compare.shading = e->reference.shading;
-            s.compare.specular = e->reference.specular;
-        });
+        holdSideBToReference();
         m_shading->setSideB(tr("the built-in program, %1 shading and %2 specular (the "
                                "exercise's reference)")
                                 .arg(toName(e->reference.shading), toName(e->reference.specular)),
@@ -124,28 +122,54 @@ void MainWindow::applySideB()
     m_shading->setSideB(tr("the built-in program"), {}, false);
 }
 
+void MainWindow::holdSideBToReference()
+{
+    // The reference is the built-in program with the exercise's choices: side B is that,
+    // whatever a reset or an old scene says.
+    const std::optional<Exercise> &e = m_sceneActions->exercise();
+    if (!m_sideBPath.isEmpty() || !e || !e->unread.isUndefined() || !e->reference.builtIn())
+        return;
+    const CompareSettings &c = m_document.scene().compare;
+    if (c.shading != e->reference.shading || c.specular != e->reference.specular)
+        m_document.edit([&](Scene &s) {
+            s.compare.shading = e->reference.shading;
+            s.compare.specular = e->reference.specular;
+        });
+}
+
 QString MainWindow::setSideBFiles(const QString &path)
 {
-    if (!path.isEmpty()) {
-        const Submission pair = readSubmission(path);
-        if (!pair.error.isEmpty()) {
-            const QString message = tr("Side B is unchanged: %1").arg(pair.error);
-            warnAboutSideB(this, message);
-            return message;
-        }
-        // A pair that does not build is said now; side B keeps what it drew.
-        const ProgramBuild build = m_viewport->setSideBProgram(pair.vertex, pair.fragment);
-        if (!build.ok()) {
-            applySideB(); // what side B drew before
-            const QString message =
-                tr("Side B is unchanged: %1 does not build:\n%2").arg(path, build.log());
-            warnAboutSideB(this, message);
-            return message;
-        }
+    if (path.isEmpty()) {
+        m_sideBPath.clear();
+        applySideB();
+        return {};
     }
+    const Submission pair = readSubmission(path);
+    if (!pair.error.isEmpty()) {
+        const QString message = tr("Side B is unchanged: %1").arg(pair.error);
+        warnAboutSideB(this, message);
+        return message;
+    }
+    // A pair that does not build is said now; side B keeps what it drew.
+    const ProgramBuild build = m_viewport->setSideBProgram(pair.vertex, pair.fragment);
+    if (!build.ok()) {
+        applySideB(); // what side B drew before
+        const QString message =
+            tr("Side B is unchanged: %1 does not build:\n%2").arg(path, build.log());
+        warnAboutSideB(this, message);
+        return message;
+    }
+    // Kept as read: side B draws this text until other files are chosen (an edit of the
+    // files afterwards is not followed; choosing them again reads them again).
     m_sideBPath = path;
+    m_sideBVertex = pair.vertex;
+    m_sideBFragment = pair.fragment;
+    m_sideBName = pair.vertexPath == pair.fragmentPath
+                      ? QFileInfo(pair.vertexPath).fileName()
+                      : QString("%1 + %2").arg(QFileInfo(pair.vertexPath).fileName(),
+                                               QFileInfo(pair.fragmentPath).fileName());
     applySideB();
-    if (!path.isEmpty() && m_document.scene().compare.mode == CompareMode::Off)
+    if (m_document.scene().compare.mode == CompareMode::Off)
         m_document.edit([](Scene &s) { s.compare.mode = CompareMode::SideBySide; });
     return {};
 }

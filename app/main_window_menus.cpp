@@ -37,9 +37,10 @@ void MainWindow::buildMenus()
     QMenu *file = menuBar()->addMenu(tr("&File"));
     m_sceneActions->addToMenu(file);
     file->addSeparator();
-    m_checkAction = addItem(file, tr("Chec&k My Work (the Exercise)"), QKeySequence(tr("F5")),
-                            [this] { checkWork(); });
-    m_checkAction->setEnabled(m_sceneActions->exercise().has_value());
+    m_checkAction =
+        addItem(file, tr("Chec&k My Work"), QKeySequence(tr("F5")), [this] { checkWork(); });
+    m_checkAction->setEnabled(m_sceneActions->exercise() &&
+                              m_sceneActions->exercise()->unread.isUndefined());
     addItem(file, tr("Side B: Shader Files..."), QKeySequence(), [this] { chooseSideBFiles(); });
     file->addSeparator();
     const QString filter = tr("Shader pairs (*.vert *.frag);;All files (*)");

@@ -61,9 +61,15 @@ void WorkCheck::cancel()
     QProcess *p = m_process;
     m_process = nullptr; // its finished() is no longer ours
     p->disconnect(this);
-    p->kill();
-    p->waitForFinished(2000);
-    delete p;
+    // Killed and let go without waiting (a child stuck in the driver must not stall the
+    // window); its folder goes with it.
+    QTemporaryDir *dir = m_dir.release();
+    connect(p, &QObject::destroyed, [dir] { delete dir; });
+    connect(p, &QProcess::finished, p, &QObject::deleteLater);
+    if (p->state() == QProcess::NotRunning)
+        p->deleteLater();
+    else
+        p->kill();
 }
 
 QString WorkCheck::start(const Scene &base, const Exercise &exercise, const QString &vertex,
@@ -89,11 +95,18 @@ QString WorkCheck::start(const Scene &base, const Exercise &exercise, const QStr
     m_cases = gradingCases(base, exercise.grading, kSeed);
     m_timedOut = false;
     m_limitMs = gradingTimeLimitMs(exercise.grading.cases);
-    m_process = new QProcess(this);
-    connect(m_process, &QProcess::finished, this, &WorkCheck::ended, Qt::QueuedConnection);
-    connect(m_process, &QProcess::errorOccurred, this, [this](QProcess::ProcessError error) {
+    auto *p = new QProcess(this);
+    m_process = p;
+    // Queued, and only for this process: an end posted by a check cancelled since must not
+    // end the one started after it.
+    const auto ended = [this, p] {
+        if (p == m_process)
+            this->ended();
+    };
+    connect(p, &QProcess::finished, this, ended, Qt::QueuedConnection);
+    connect(p, &QProcess::errorOccurred, this, [ended, this](QProcess::ProcessError error) {
         if (error == QProcess::FailedToStart) // no finished() follows: say it ended
-            QMetaObject::invokeMethod(this, &WorkCheck::ended, Qt::QueuedConnection);
+            QTimer::singleShot(0, this, ended);
     });
     m_process->start(gradingChildProgram(),
                      {"--grade-one", submission, "--grade-name", tr("your program"), "--exercise",
@@ -117,9 +130,9 @@ void WorkCheck::ended()
                    readGradingReport(p->readAllStandardOutput())) {
         report = *r;
     } else {
-        report.status = "crashed";
-        report.diagnostic = p->error() == QProcess::FailedToStart
-                                ? tr("could not start %1: %2").arg(p->program(), p->errorString())
+        const bool started = p->error() != QProcess::FailedToStart;
+        report.status = started ? "crashed" : "could not start";
+        report.diagnostic = !started ? tr("%1: %2").arg(p->program(), p->errorString())
                             : p->exitStatus() == QProcess::CrashExit
                                 ? tr("the checking process ended by signal %1 (%2)")
                                       .arg(p->exitCode())

@@ -7,6 +7,7 @@
 #include <QVBoxLayout>
 
 #include <algorithm>
+#include <cmath>
 
 namespace lb {
 
@@ -29,8 +30,9 @@ QString variedText(unsigned vary)
 
 QString percent(double share)
 {
-    // 99.96% is not 100%: a case just under its pass share must not read as a full one.
-    return QString("%1%").arg(share >= 1.0 ? 100.0 : std::min(100.0 * share, 99.9), 0, 'f', 1);
+    // Rounded down: 98.96% is not 99.0%, nor 99.96% 100% (a failed case must not read as
+    // reaching its pass share).
+    return QString("%1%").arg(std::floor(1000.0 * std::clamp(share, 0.0, 1.0)) / 10.0, 0, 'f', 1);
 }
 
 } // namespace
@@ -167,15 +169,18 @@ void ExercisePanel::showReport(const GradingReport &report)
             : report.status == "refused"        ? tr("Your program was refused%1").arg(why)
             : report.status == "timed out"
                 ? tr("The check took too long (%1) and was stopped").arg(report.diagnostic)
-                : tr("Not checked: %1%2").arg(report.status, why);
+            : report.status == "could not start" ? tr("The check could not start%1").arg(why)
+                                                 : tr("Not checked: %1%2").arg(report.status, why);
         showProblem(text);
         return;
     }
     const int passed = report.passedCount();
     const int cases = int(report.cases.size());
     m_summary->setText((passed == cases
-                            ? tr("Passed: all %1 cases within %2/255 (largest difference %3/255)")
+                            ? tr("Passed: all %1 cases (in each, at least %2 of the pixels within "
+                                 "%3/255); largest difference %4/255")
                                   .arg(cases)
+                                  .arg(percent(m_passShare))
                                   .arg(m_tolerance)
                                   .arg(report.largest())
                             : tr("Not yet: %1 of %2 cases pass; largest difference %3/255")

@@ -118,7 +118,7 @@ ShadingPanel::ShadingPanel(SceneDocument *document, QWidget *parent)
     connect(m_sideBFiles, &QToolButton::clicked, this, &ShadingPanel::sideBFilesRequested);
     m_sideBClear = new QToolButton(this);
     m_sideBClear->setText(QString::fromUtf8("\u00d7"));
-    m_sideBClear->setToolTip(tr("Side B draws what it drew before the files"));
+    m_sideBClear->setToolTip(tr("Stop using these files: side B draws what it drew before them"));
     connect(m_sideBClear, &QToolButton::clicked, this, &ShadingPanel::sideBClearRequested);
     auto *sideBRow = new QHBoxLayout;
     sideBRow->addWidget(m_sideB, 1);

@@ -5,6 +5,7 @@
 #include "work_check.h"
 
 #include <QDockWidget>
+#include <QElapsedTimer>
 #include <QRegularExpression>
 #include <QToolButton>
 #include <QTreeWidget>
@@ -75,7 +76,8 @@ private slots:
         QCOMPARE(panel->titleLabel()->text(),
                  QString("Per-fragment lighting (Teil 6, Aufgaben 2 and 3)"));
         QVERIFY(panel->checkButton()->isEnabled());
-        QVERIFY(!panel->findChild<QLabel *>()->text().contains("specularFactor")); // no source
+        for (const QLabel *label : panel->findChildren<QLabel *>()) // the teacher's source
+            QVERIFY(!label->text().contains("specularFactor"));     // is not shown
         QVERIFY(m_window->sceneActions()->open(":/examples/toon.json"));
         QVERIFY(m_window->exerciseDock()->isHidden());
         // The example in the menu is the exercise.
@@ -167,7 +169,7 @@ private slots:
         report = check();
         qputenv("LIGHTBENCH_GRADE_PROGRAM", LIGHTBENCH_EXE);
         QVERIFY(report);
-        QCOMPARE(report->status, QString("crashed"));
+        QCOMPARE(report->status, QString("could not start"));
         QVERIFY2(m_window->exercisePanel()->summaryLabel()->text().contains("could not start"),
                  qPrintable(m_window->exercisePanel()->summaryLabel()->text()));
     }
@@ -188,6 +190,12 @@ private slots:
         ShadingPanel *p = m_window->shadingPanel();
         QVERIFY(!p->compareShadingCombo()->isEnabled()); // fixed by the exercise
         QVERIFY(p->sideBLabel()->text().contains("exercise's reference"));
+        // Reset shading does not take side B away from the reference.
+        QPushButton *reset = p->findChild<QPushButton *>();
+        QVERIFY(reset->text().startsWith("Reset"));
+        reset->click();
+        QCOMPARE(scene().compare.shading, Shading::Gouraud);
+        QCOMPARE(scene().compare.specular, SpecularModel::Blinn);
     }
 
     void sideBFromShaderFiles()
@@ -221,6 +229,10 @@ private slots:
             QVERIFY(f.open(QIODevice::WriteOnly));
             f.write(text.toUtf8());
         }
+        QFile alone(m_dir.filePath("alone.vert")); // no alone.frag beside it
+        QVERIFY(alone.open(QIODevice::WriteOnly));
+        alone.write(toon.vertexSource().toUtf8());
+        alone.close();
         for (const QString &bad :
              {broken + ".vert", m_dir.filePath("missing.frag"), m_dir.filePath("alone.vert")}) {
             const QString message = m_window->setSideBFiles(bad);
@@ -239,6 +251,37 @@ private slots:
         QVERIFY(!m_window->viewport()->hasSideBProgram());
         QCOMPARE(p->sideBLabel()->text(), QString("the built-in program"));
         QVERIFY(p->compareShadingCombo()->isEnabled());
+
+        // Files chosen, then an exercise opened: its reference is side B, not the files.
+        QCOMPARE(m_window->setSideBFiles(stem + ".vert"), QString());
+        QVERIFY(m_window->sceneActions()->open(exerciseFile(3)));
+        QVERIFY(p->sideBLabel()->text().startsWith("the exercise's reference"));
+        m_window->document().edit([](Scene &s) { s.compare.mode = CompareMode::Difference; });
+        frame();
+        QVERIFY(m_window->viewport()->compareText().contains("the exercise's reference"));
+    }
+
+    void aCheckRunningGoesWithItsExercise()
+    {
+        QVERIFY(m_window->sceneActions()->open(exerciseFile(3)));
+        QSignalSpy done(m_window->workCheck(), &WorkCheck::finished);
+        QTest::mouseClick(m_window->exercisePanel()->checkButton(), Qt::LeftButton);
+        QVERIFY(m_window->workCheck()->isRunning());
+        // Another scene: the check is cancelled at once, without waiting, and says nothing.
+        QElapsedTimer t;
+        t.start();
+        QVERIFY(m_window->sceneActions()->open(":/examples/toon.json"));
+        QVERIFY(t.elapsed() < 1000);
+        QVERIFY(!m_window->workCheck()->isRunning());
+        QVERIFY(!done.wait(3000));
+        // Cancel with the button: the panel says so.
+        QVERIFY(m_window->sceneActions()->open(exerciseFile(3)));
+        QTest::mouseClick(m_window->exercisePanel()->checkButton(), Qt::LeftButton);
+        QCOMPARE(m_window->exercisePanel()->checkButton()->text(), QString("Cancel the check"));
+        QTest::mouseClick(m_window->exercisePanel()->checkButton(), Qt::LeftButton);
+        QVERIFY(!m_window->workCheck()->isRunning());
+        QCOMPARE(m_window->exercisePanel()->summaryLabel()->text(), QString("Check cancelled."));
+        QVERIFY(!done.wait(3000));
     }
 };
 
