@@ -29,7 +29,6 @@ namespace lb {
 
 namespace {
 
-constexpr double kTrialBudgetMs = 2000.0; // one frame at the grading size, at most
 // What a child says when the exercise, not the submission, is at fault: the batch stops.
 const QStringList kBatchFailures{"no exercise", "no OpenGL", "exercise files",
                                  "reference does not build"};
@@ -253,7 +252,7 @@ int runGradeOne(const CommandLine &cl)
     // An endless loop or a program far too slow is refused before its frames are drawn
     // (the batch's time limit ends one that hangs anyway).
     const TrialResult trial = offscreen.tryUserProgram(
-        cases.front(), s.vertex, s.fragment, spec.size, kTrialBudgetMs, kCommandLineTrial);
+        cases.front(), s.vertex, s.fragment, spec.size, kGradingTrialBudgetMs, kCommandLineTrial);
     if (trial.refusal)
         return finish("refused", diagnosticText(*trial.refusal, s));
 

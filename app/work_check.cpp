@@ -22,7 +22,8 @@ QString gradingChildProgram()
 int gradingTimeLimitMs(int cases)
 {
     const int asked = qEnvironmentVariableIntValue("LIGHTBENCH_GRADE_TIME_LIMIT_MS");
-    return asked > 0 ? asked : 30000 + 4000 * cases; // a 2 s trial budget a frame, two frames
+    // Two frames a case (reference and student), each within the trial's budget.
+    return asked > 0 ? asked : int(30000 + 2 * kGradingTrialBudgetMs * cases);
 }
 
 namespace {
