@@ -24,6 +24,10 @@
 #ifdef LIGHTBENCH_SANITIZE
 #include <sanitizer/asan_interface.h>
 #endif
+#ifdef LIGHTBENCH_MIMALLOC
+#include <mimalloc.h>
+#include <new>
+#endif
 
 namespace {
 
@@ -108,10 +112,44 @@ void limitMemory(long long megabytes)
 
 } // namespace
 
+#ifdef LIGHTBENCH_MIMALLOC
+// mimalloc (app/CMakeLists.txt) serves malloc and delete. Its own `new` aborts the process when
+// an allocation fails: the library finds the new-handler through a weak symbol that its own
+// definition shadows, so no handler ever reaches it. These replacements, found before the
+// library's because the executable comes first, throw std::bad_alloc instead, which the
+// helper turns into its "out of memory" message.
+void *operator new(std::size_t size)
+{
+    if (void *p = mi_malloc(size))
+        return p;
+    throw std::bad_alloc();
+}
+
+void *operator new[](std::size_t size)
+{
+    return operator new(size);
+}
+
+void *operator new(std::size_t size, std::align_val_t alignment)
+{
+    if (void *p = mi_malloc_aligned(size, std::size_t(alignment)))
+        return p;
+    throw std::bad_alloc();
+}
+
+void *operator new[](std::size_t size, std::align_val_t alignment)
+{
+    return operator new(size, alignment);
+}
+#endif
+
 int main(int argc, char **argv)
 {
     // Die with the workbench: a helper must never outlive the window that asked for it.
     prctl(PR_SET_PDEATHSIG, SIGKILL);
+#ifdef LIGHTBENCH_MIMALLOC
+    mi_option_disable(mi_option_show_errors); // failures are the helper's message to give
+#endif
 
     long long memoryMB = 0, seconds = 0;
     const char *path = nullptr;

@@ -7,7 +7,7 @@ XVFB_SCREEN="-screen 0 1920x1080x24"
 
 # qt6-qpa-plugins holds the xcb platform; xvfb + xauth + Mesa give OpenGL without a display.
 PACKAGES=(cmake g++ make qt6-base-dev libqt6opengl6-dev qt6-qpa-plugins libglm-dev
-          libqscintilla2-qt6-dev libassimp-dev
+          libqscintilla2-qt6-dev libassimp-dev libmimalloc-dev libpng-dev
           xvfb xauth libgl1-mesa-dri fonts-dejavu-core)
 # Only the tests need these: Debian's corpus of ~600 model files, valid and broken.
 TEST_PACKAGES=(assimp-testmodels)

@@ -1,5 +1,7 @@
 #include "safe_write.h"
 
+#include "png_encoder.h"
+
 #include <QBuffer>
 #include <QFileInfo>
 #include <QImageWriter>
@@ -43,11 +45,18 @@ QString writeFileSafely(const QString &path, const QByteArray &bytes)
 
 QString writeImageSafely(const QString &path, const QImage &image, int quality)
 {
+    const QString suffix = QFileInfo(path).suffix().toLower();
+    if (suffix.isEmpty() || suffix == "png") {
+        const QByteArray bytes = encodePng(image, pngLevelForQuality(quality));
+        if (bytes.isEmpty())
+            return QString("%1: %2").arg(path, image.isNull() ? "no image to write"
+                                                              : "the PNG could not be encoded");
+        return writeFileSafely(path, bytes);
+    }
     QByteArray bytes;
     QBuffer buffer(&bytes);
     buffer.open(QIODevice::WriteOnly);
-    const QString suffix = QFileInfo(path).suffix().toLower();
-    QImageWriter writer(&buffer, suffix.isEmpty() ? QByteArray("png") : suffix.toLatin1());
+    QImageWriter writer(&buffer, suffix.toLatin1());
     writer.setQuality(quality);
     if (!writer.write(image))
         return QString("%1: %2").arg(path, writer.errorString());
