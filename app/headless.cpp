@@ -1,12 +1,14 @@
 #include "headless.h"
 
 #include "diagnostics.h"
+#include "heap_warmer.h"
 #include "offscreen.h"
 #include "program_trial.h"
 #include "safe_write.h"
 
 #include <QElapsedTimer>
 #include <QEventLoop>
+#include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
 
@@ -202,6 +204,24 @@ QString formatDiagnostic(const Diagnostic &d, const CommandLine &cl)
         .arg(d.severity == Diagnostic::Severity::Error ? "error" : "warning", prefix, d.message);
 }
 
+namespace {
+
+// How much of the heap to warm for these mesh files (heap_warmer.h): four times their size,
+// about what a binary mesh's arrays take in this process at once (a 19 MB PLY of 1M
+// triangles: the stream's mesh, normal generation's arrays, the driver's copies; measured
+// against two and three times, bench/README.md); never more than an eighth of the machine's
+// memory. A text format's file is bigger than its mesh: more is warmed than used.
+std::size_t warmingBytes(const QStringList &paths)
+{
+    qint64 bytes = 0;
+    for (const QString &path : paths)
+        bytes += QFileInfo(path).size();
+    const qint64 cap = ImportLimits::machineMemoryMB() << 17; // MB / 8, in bytes
+    return std::size_t(std::clamp<qint64>(4 * bytes, 0, cap));
+}
+
+} // namespace
+
 int runHeadless(const CommandLine &cl, const Scene &requested)
 {
     PhaseLog phases;
@@ -228,6 +248,15 @@ int runHeadless(const CommandLine &cl, const Scene &requested)
         return 1;
     }
     phases.mark("openGl");
+    // The heap the mesh will be put in, touched while the helper reads; handed over when
+    // Assimp is done reading (the stages after "reading": converting, receiving) or the
+    // import ends.
+    HeapWarmer heap(warmingBytes(paths));
+    QObject::connect(&import, &ImportProcess::progress, &waiting,
+                     [&heap](double, const QString &stage) {
+                         if (stage != QLatin1String("reading"))
+                             heap.stop();
+                     });
     double loadSeconds = 0.0;
     qint64 helperPeakKB = 0;
     for (int i = 0; i < int(paths.size()); ++i) {
@@ -235,6 +264,7 @@ int runHeadless(const CommandLine &cl, const Scene &requested)
             import.start(paths[i], cl.importLimits());
         if (import.isRunning())
             waiting.exec();
+        heap.stop();
         if (!imported.ok()) {
             printLine("lightbench: " + imported.error.toUtf8(), stderr);
             return 1;
