@@ -133,6 +133,11 @@ MainWindow::MainWindow(QSettings &settings, QWidget *parent)
             &MeshActions::showImageDialog);
     connect(m_object, &ObjectPanel::adoptFileMaterialRequested, m_loader,
             &ObjectLoader::setAdoptFileMaterial);
+    // Files the scene names that could not be used are still named: the panel says why.
+    m_object->setProblemLookups([this] { return m_loader->meshProblem(); },
+                                [this] { return m_loader->textureProblem(); });
+    connect(m_loader, &ObjectLoader::loadFinished, m_object, &ObjectPanel::refreshProblems);
+    connect(m_loader, &ObjectLoader::textureFinished, m_object, &ObjectPanel::refreshProblems);
     buildMenus();
 
     // The screen decides the first size and the layout; a saved window comes back only

@@ -124,6 +124,13 @@ void MeshActions::showSummary()
     if (!mesh)
         return;
     const MeshFile *file = m_loader->file();
+    const ObjectSettings &object = m_document->scene().selectedObject();
+    if (const QString problem = m_loader->meshProblem(); !problem.isEmpty()) {
+        m_summary->setText(tr("%1 not loaded (%2 drawn)")
+                               .arg(QFileInfo(object.meshPath).fileName(), toName(object.shape)));
+        m_summary->setFullText(problem);
+        return;
+    }
     QString shortForm = tr("%1: %2 triangles")
                             .arg(file ? QFileInfo(file->path).fileName()
                                       : displayName(m_document->scene().selectedObject()),
@@ -207,11 +214,20 @@ void MeshActions::finished(bool ok, const QString &message)
         showSummary();
         return;
     }
+    showSummary(); // a file the scene names and could not be read: the status bar says so
     if (message == tr("Loading cancelled")) {
         showStatusMessage(m_window, message, 5000);
         return;
     }
-    showError(tr("Mesh not loaded"), tr("The mesh could not be loaded; the previous one stays."),
+    const std::vector<ObjectSettings> &objects = m_document->scene().objects;
+    const bool named = std::any_of(objects.begin(), objects.end(), [this](const ObjectSettings &o) {
+        return o.meshPath == m_pendingPath;
+    });
+    showError(tr("Mesh not loaded"),
+              named ? tr("A mesh file the scene names could not be loaded. Its objects draw their "
+                         "shapes and keep its name, so saving keeps it; it is read again once "
+                         "the file changes.")
+                    : tr("The mesh could not be loaded; the previous one stays."),
               message);
 }
 

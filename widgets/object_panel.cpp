@@ -245,6 +245,19 @@ void ObjectPanel::refreshList(const Scene &scene)
     m_remove->setEnabled(n > 1);
 }
 
+void ObjectPanel::setProblemLookups(std::function<QString()> mesh, std::function<QString()> texture)
+{
+    m_meshProblem = std::move(mesh);
+    m_texture->setProblemLookup(std::move(texture));
+    refreshProblems();
+}
+
+void ObjectPanel::refreshProblems()
+{
+    refreshNow();
+    m_texture->refreshProblem();
+}
+
 void ObjectPanel::refresh(const Scene &scene)
 {
     refreshList(scene);
@@ -256,8 +269,14 @@ void ObjectPanel::refresh(const Scene &scene)
     if (o.meshPath.isEmpty()) {
         m_shape->setCurrentIndex(int(o.shape));
     } else {
-        m_shape->addItem(tr("File: %1").arg(QFileInfo(o.meshPath).fileName()));
-        m_shape->setItemData(kShapeCount, o.meshPath, Qt::ToolTipRole);
+        // A file the scene names that could not be read: still named (a save keeps it), its
+        // shape drawn meanwhile.
+        const QString problem = m_meshProblem ? m_meshProblem() : QString();
+        const QString name = QFileInfo(o.meshPath).fileName();
+        m_shape->addItem(problem.isEmpty() ? tr("File: %1").arg(name)
+                                           : tr("File: %1 (not loaded)").arg(name));
+        m_shape->setItemData(kShapeCount, problem.isEmpty() ? o.meshPath : problem,
+                             Qt::ToolTipRole);
         m_shape->setCurrentIndex(kShapeCount);
     }
     m_tessellation->setValue(o.tessellation);

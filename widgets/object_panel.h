@@ -6,6 +6,8 @@
 
 #include "scene_panel.h"
 
+#include <functional>
+
 #include <array>
 
 class QCheckBox;
@@ -41,6 +43,11 @@ public:
     QCheckBox *showNormalsCheck() const { return m_showNormals; }
     QCheckBox *cullBackFacesCheck() const { return m_cullBackFaces; }
     QCheckBox *adoptMaterialCheck() const { return m_adoptMaterial; }
+    // Where the panel learns why the selected object's mesh file is not drawn and why its
+    // image is not shown (the object loader's meshProblem() and textureProblem());
+    // refreshProblems() shows them again after a load.
+    void setProblemLookups(std::function<QString()> mesh, std::function<QString()> texture);
+    void refreshProblems();
 
 signals:
     void openMeshRequested();  // the "Open..." button: the window shows its file dialog
@@ -54,6 +61,8 @@ protected:
 
 private:
     void refreshList(const Scene &scene);
+
+    std::function<QString()> m_meshProblem;
 
     QListWidget *m_list;
     QPushButton *m_add, *m_duplicate, *m_remove;

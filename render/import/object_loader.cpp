@@ -1,5 +1,7 @@
 #include "object_loader.h"
 
+#include "file_state.h"
+
 #include <QFileInfo>
 #include <QLocale>
 
@@ -70,6 +72,27 @@ std::shared_ptr<const Mesh> ObjectLoader::mesh(int index) const
 std::shared_ptr<const Texture> ObjectLoader::texture(int index) const
 {
     return drawnTexture(resolve(index));
+}
+
+QString ObjectLoader::meshProblem(int index) const
+{
+    index = resolve(index);
+    const std::vector<ObjectSettings> &objects = m_document->scene().objects;
+    if (index >= int(objects.size()))
+        return {};
+    const auto failed = m_failures.find(objects[std::size_t(index)].meshPath);
+    return failed == m_failures.end() ? QString() : failed->second.error;
+}
+
+bool ObjectLoader::failedBefore(const QString &path)
+{
+    const auto failed = m_failures.find(path);
+    if (failed == m_failures.end())
+        return false;
+    if (failed->second.state == fileState(path))
+        return true;
+    m_failures.erase(failed); // put back or saved again: read it again
+    return false;
 }
 
 QString ObjectLoader::textureProblem(int index) const
@@ -176,6 +199,7 @@ QString ObjectLoader::summary() const
 
 void ObjectLoader::open(const QString &path)
 {
+    m_failures.erase(path); // asked for again: read again, whatever failed before
     if (m_job && m_job->commit) {
         m_job->cancel = true; // a file still being built gives way to the newer one
         m_job.reset();
@@ -265,25 +289,19 @@ void ObjectLoader::imported(const ImportResult &result)
             return;
         m_loading = false;
         const bool removed = std::exchange(m_removedWhileLoading, false);
+        // Objects that name this file (a restart, a scene file) keep naming it and draw their
+        // shapes until it changes or is opened again (a cancelled one too, or sync() would
+        // start it again at once). Known before loadFinished(), whose listeners show it.
+        if (!removed)
+            m_failures[m_loadingPath] = {result.cancelled
+                                             ? tr("%1: not loaded: cancelled").arg(m_loadingPath)
+                                             : result.error,
+                                         fileState(m_loadingPath)};
         emit loadFinished(false, removed ? tr("%1: not loaded: its object was removed")
                                                .arg(QFileInfo(m_loadingPath).fileName())
                                  : result.cancelled ? tr("Loading cancelled")
                                                     : result.error);
-        // Objects that name this file (a restart, a scene file) fall back to their shapes.
-        const QString failed = m_loadingPath;
-        const std::vector<ObjectSettings> &objects = m_document->scene().objects;
-        const bool named = std::any_of(objects.begin(), objects.end(),
-                                       [&](const auto &o) { return o.meshPath == failed; });
-        if (named) {
-            const bool busy = std::exchange(m_busy, true);
-            m_document->edit([&](Scene &s) {
-                for (ObjectSettings &o : s.objects)
-                    if (o.meshPath == failed)
-                        o.meshPath.clear();
-            });
-            m_busy = busy;
-        }
-        sync(); // another file a scene names, maybe
+        sync(); // their shapes, and another file a scene names, maybe
         return;
     }
     m_files[result.file->path] = result.file;
@@ -357,7 +375,7 @@ void ObjectLoader::sync()
         std::shared_ptr<const MeshFile> file;
         if (!object.meshPath.isEmpty()) {
             file = loadedFile(object.meshPath);
-            if (!file) {
+            if (!file && !failedBefore(object.meshPath)) {
                 if (!m_loading) // named by a restored or opened scene
                     startImport(object.meshPath, i);
                 if (m_slots[std::size_t(i)].mesh)
@@ -373,13 +391,15 @@ void ObjectLoader::sync()
         startBuild(i, shape, file, false);
         return; // finishBuild() syncs again for the next one
     }
-    // Files no object names any more are let go.
-    for (auto it = m_files.begin(); it != m_files.end();) {
-        const bool named =
-            std::any_of(scene.objects.begin(), scene.objects.end(),
-                        [&](const ObjectSettings &o) { return o.meshPath == it->first; });
-        it = named ? std::next(it) : m_files.erase(it);
-    }
+    // Files no object names any more are let go, and so are their failures.
+    auto named = [&scene](const QString &path) {
+        return std::any_of(scene.objects.begin(), scene.objects.end(),
+                           [&](const ObjectSettings &o) { return o.meshPath == path; });
+    };
+    for (auto it = m_files.begin(); it != m_files.end();)
+        it = named(it->first) ? std::next(it) : m_files.erase(it);
+    for (auto it = m_failures.begin(); it != m_failures.end();)
+        it = named(it->first) ? std::next(it) : m_failures.erase(it);
 }
 
 void ObjectLoader::startBuild(int index, const ObjectSettings &object,

@@ -4,7 +4,10 @@
 // meshes with many triangles are built (shape, generated normals) on a worker thread while
 // the previous mesh keeps drawing. A file opened becomes the selected object's mesh only once
 // it is loaded and built; a file that fails leaves the scene, and the mesh on screen, as
-// they were. Each loaded file is read once, however many objects draw it.
+// they were. A file the scene names (a restart, a scene file) that cannot be read stays
+// named, so that a save keeps it: its objects draw their shapes, meshProblem() says why, and
+// it is read again once the file changes. Each loaded file is read once, however many objects
+// draw it.
 
 #include "import_process.h"
 #include "object_mesh.h"
@@ -54,6 +57,9 @@ public:
     std::shared_ptr<const Texture> texture(int index = -1) const;
     // Why object `index`'s image file is not shown (missing, not an image, ...), or empty.
     QString textureProblem(int index = -1) const;
+    // Why object `index`'s mesh file is not drawn ("FILE: no such file", ...; its shape is
+    // drawn instead), or empty.
+    QString meshProblem(int index = -1) const;
     int objectCount() const { return int(m_slots.size()); }
     // "teapot.obj: 6,320 vertices, 12,288 triangles, loaded in 0.21 s", or the shape's, for
     // the selected object.
@@ -108,6 +114,8 @@ private:
     void finishBuild(const std::shared_ptr<Job> &job);
     void imported(const ImportResult &result);
     std::shared_ptr<const MeshFile> loadedFile(const QString &path) const;
+    // True while `path` failed before and has not changed since (a changed one is forgotten).
+    bool failedBefore(const QString &path);
     int resolve(int index) const;
 
     SceneDocument *m_document;
@@ -119,7 +127,13 @@ private:
     QString m_loadingPath;
     int m_loadingObject = 0; // the object the file being read is for
     std::map<QString, std::shared_ptr<const MeshFile>> m_files; // loaded, by path
-    std::vector<Slot> m_slots;                                  // by object
+    struct Failure
+    {
+        QString error;
+        QString state; // fileState() when it failed
+    };
+    std::map<QString, Failure> m_failures; // files the scene names that could not be read
+    std::vector<Slot> m_slots;             // by object
     // What meshReady() last said of each object.
     using Drawn = std::pair<std::shared_ptr<const Mesh>, std::shared_ptr<const Texture>>;
     std::vector<std::optional<Drawn>> m_sent;

@@ -1,23 +1,10 @@
 #include "texture_files.h"
 
-#include <QDateTime>
-#include <QFileInfo>
+#include "file_state.h"
 
 #include <algorithm>
 
 namespace lb {
-
-namespace {
-
-QString fileState(const QString &path)
-{
-    const QFileInfo info(path);
-    return info.exists()
-               ? QString("%1 %2").arg(info.size()).arg(info.lastModified().toMSecsSinceEpoch())
-               : QString();
-}
-
-} // namespace
 
 TextureFiles::TextureFiles(QObject *parent) : QObject(parent)
 {

@@ -211,7 +211,7 @@ private slots:
 
     // A scene of several objects: each file read once, each object its own mesh; a removed
     // object's neighbours keep theirs (the slots follow the objects), and a file that cannot
-    // be read leaves only the objects naming it, as their shapes.
+    // be read leaves only the objects naming it drawing their shapes, still naming it.
     void severalObjectsEachGetTheirMesh()
     {
         SceneDocument document;
@@ -229,7 +229,10 @@ private slots:
         QVERIFY(loader.file(0) && loader.file(0) == loader.file(2)); // read once
         QCOMPARE(loader.mesh(0)->triangleCount(), std::size_t(12));
         QCOMPARE(loader.mesh(1)->triangleCount(), shapeTriangleCount(Shape::Torus, 16));
-        QVERIFY(document.scene().objects[3].meshPath.isEmpty()); // a sphere now
+        QCOMPARE(document.scene().objects[3].meshPath, missing.meshPath); // a save keeps it
+        QVERIFY2(loader.meshProblem(3).contains("nowhere.ply: no such file"),
+                 qPrintable(loader.meshProblem(3)));
+        QVERIFY(loader.meshProblem(0).isEmpty());
         QVERIFY(!document.scene().objects[0].meshPath.isEmpty());
         QCOMPARE(loader.mesh(3)->triangleCount(), shapeTriangleCount(Shape::Sphere, 16));
 
@@ -255,6 +258,47 @@ private slots:
         QTRY_VERIFY(!loader.isLoading() && !loader.isBuilding());
         QVERIFY(finished.last().at(1).toString().contains("its object was removed"));
         QCOMPARE(int(document.scene().objects.size()), 1);
+    }
+
+    // A file a scene names that is missing stays named and is not asked for again at every
+    // edit; once it is put back, the next change reads it. Opening it reads it at once.
+    void aMissingFileIsReadOnceItIsBack()
+    {
+        const QString later = m_dir.filePath("later.ply");
+        QFile::remove(later);
+        SceneDocument document;
+        Scene scene;
+        scene.objects[0].meshPath = later;
+        document.set(scene);
+        ObjectLoader loader(&document);
+        QSignalSpy started(&loader, &ObjectLoader::loadStarted);
+        QSignalSpy finished(&loader, &ObjectLoader::loadFinished);
+        QTRY_VERIFY(!finished.isEmpty() && !loader.isLoading() && !loader.isBuilding());
+        QVERIFY(!finished.last().at(0).toBool());
+        QCOMPARE(document.scene().objects[0].meshPath, later);
+        QVERIFY(loader.meshProblem().contains("later.ply: no such file"));
+        QCOMPARE(loader.mesh()->triangleCount(), shapeTriangleCount(Shape::Sphere, 16));
+        QCOMPARE(loader.file(), nullptr);
+        const int reads = int(started.count()); // the first read started in the constructor
+
+        document.edit([](Scene &s) { s.objects[0].rotationDegrees.y = 30.0f; });
+        document.edit([](Scene &s) { s.objects[0].shape = Shape::Torus; }); // its shape, drawn
+        QTRY_VERIFY(!loader.isBuilding());
+        QCOMPARE(loader.mesh()->triangleCount(), shapeTriangleCount(Shape::Torus, 16));
+        QCOMPARE(int(started.count()), reads); // not read again: nothing changed on disk
+
+        QVERIFY(QFile::copy(kCorpus + "/PLY/cube.ply", later));
+        document.edit([](Scene &s) { s.objects[0].rotationDegrees.y = 60.0f; });
+        QTRY_VERIFY(loader.file() != nullptr && !loader.isBuilding());
+        QCOMPARE(int(started.count()), reads + 1);
+        QCOMPARE(loader.mesh()->triangleCount(), std::size_t(12));
+        QVERIFY(loader.meshProblem().isEmpty());
+
+        // Gone again and opened by hand: read at once, and the previous mesh stays.
+        QVERIFY(QFile::remove(later));
+        const Outcome o = load(loader, later);
+        QVERIFY(!o.ok && o.message.contains("no such file"));
+        QCOMPARE(int(started.count()), reads + 2);
     }
 
     void missingFileAndDirectory()

@@ -148,14 +148,27 @@ private slots:
         QCOMPARE(scene().objects[0].meshPath, kCube);
         QTRY_VERIFY(m_window->objectLoader()->file() &&
                     m_window->objectLoader()->file()->path == kCube);
-        // A file gone since then: the shape comes back, with a message.
+        // A file gone since then: the shape is drawn, with a message; the scene still names
+        // the file (a save keeps it), and the Object panel and the status bar say so.
         m_window->close();
         const QByteArray saved = m_settings->value("scene").toByteArray();
         m_settings->setValue("scene", QByteArray(saved).replace(kCube.toUtf8(), "/gone/away.ply"));
         m_window = std::make_unique<MainWindow>(*m_settings);
-        QTRY_VERIFY(scene().objects[0].meshPath.isEmpty());
         QTRY_VERIFY(m_window->meshActions()->errorBox());
         QVERIFY(m_window->meshActions()->errorBox()->informativeText().contains("/gone/away.ply"));
+        QCOMPARE(scene().objects[0].meshPath, QString("/gone/away.ply"));
+        QTRY_VERIFY(!m_window->objectLoader()->isBuilding());
+        QCOMPARE(m_window->objectLoader()->file(), nullptr);
+        QCOMPARE(m_window->objectPanel()->shapeCombo()->currentText(),
+                 QString("File: away.ply (not loaded)"));
+        QVERIFY(
+            m_window->objectPanel()
+                ->shapeCombo()
+                ->itemData(m_window->objectPanel()->shapeCombo()->currentIndex(), Qt::ToolTipRole)
+                .toString()
+                .contains("/gone/away.ply: no such file"));
+        QCOMPARE(m_window->statusLine()->meshLabel()->text(),
+                 QString("away.ply not loaded (sphere drawn)"));
     }
 };
 

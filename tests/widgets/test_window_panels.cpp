@@ -201,6 +201,12 @@ private slots:
         t->clearButton()->click();
         QVERIFY(scene().objects[0].textureFile.isEmpty());
         QCOMPARE(t->imageLabel()->text(), QString("the checker"));
+
+        // An image the scene names that is missing stays named, and the panel says so.
+        const QString gone = m_dir.filePath("gone.png");
+        m_window->document().edit([&](Scene &s) { s.objects[0].textureFile = gone; });
+        QTRY_COMPARE(t->imageLabel()->text(), QString("gone.png (not shown)"));
+        QCOMPARE(scene().objects[0].textureFile, gone);
     }
 
     // An image dropped on an object is that object's texture (it becomes the selected one).
