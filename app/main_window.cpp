@@ -286,7 +286,7 @@ void MainWindow::saveSettings()
 
 void MainWindow::writeSettings()
 {
-    m_settings.setValue(kSceneKey, QJsonDocument(m_document.scene().toJson()).toJson());
+    m_settings.setValue(kSceneKey, QJsonDocument(ownScene().toJson()).toJson());
     // Presentation mode is for the session: the window as it was before it is what is kept.
     m_settings.setValue(kGeometryKey, m_presentation ? m_normalGeometry : saveGeometry());
     m_settings.setValue(kStateKey, m_presentation ? m_normalState : saveState(kStateVersion));
@@ -311,7 +311,7 @@ void MainWindow::keepUnsavedSession()
             .filePath(QString("lightbench-unsaved-%1.json")
                           .arg(QDateTime::currentDateTime().toString("yyyyMMdd-HHmmss")));
     const QString error =
-        writeSceneFile(path, SceneFile{m_document.scene(), m_shaders.program(), std::nullopt});
+        writeSceneFile(path, SceneFile{ownScene(), m_shaders.program(), std::nullopt});
     if (error.isEmpty())
         qWarning("lightbench: the session could not be saved in %s; it is in %s (File > Open)",
                  qPrintable(m_settings.fileName()), qPrintable(path));

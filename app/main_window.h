@@ -122,6 +122,9 @@ private:
     void checkWork();
     void showCase(int index);
     void showOwnScene();
+    // The student's scene: the one before the first case was shown while one is, else the
+    // document's. What saves write.
+    Scene ownScene() const;
     void chooseSideBFiles();
 
     QSettings &m_settings;

@@ -59,6 +59,8 @@ void MainWindow::setUpExercise()
         if (parts & ScenePart::Compare)
             holdSideBToReference(); // a reset of the Shading panel included
     });
+    // While a case is shown, saves (the file, the session) write the student's own scene.
+    m_sceneActions->setSceneToSave([this] { return ownScene(); });
     // The session's scene file may be an exercise.
     m_exercisePanel->setExercise(m_sceneActions->exercise());
     applySideB();
@@ -225,6 +227,11 @@ void MainWindow::showCase(int index)
                              "\"Back to my scene\" in the Exercise panel)")
                               .arg(index),
                           10000);
+}
+
+Scene MainWindow::ownScene() const
+{
+    return m_ownScene ? *m_ownScene : m_document.scene();
 }
 
 void MainWindow::showOwnScene()

@@ -139,7 +139,7 @@ bool SceneActions::open(const QString &path)
 QString SceneActions::save(const QString &path)
 {
     const QString error =
-        writeSceneFile(path, SceneFile{m_document->scene(), m_shaders->program(), m_exercise});
+        writeSceneFile(path, SceneFile{sceneToSave(), m_shaders->program(), m_exercise});
     if (!error.isEmpty()) {
         showMessage(QMessageBox::Warning, tr("The scene was not saved."), error);
         return error;
@@ -259,15 +259,20 @@ void SceneActions::forgetFile()
     emit documentChanged();
 }
 
+Scene SceneActions::sceneToSave() const
+{
+    return m_sceneToSave ? m_sceneToSave() : m_document->scene();
+}
+
 void SceneActions::remember()
 {
-    m_saved = SceneFile{m_document->scene(), m_shaders->program(), m_exercise};
+    m_saved = SceneFile{sceneToSave(), m_shaders->program(), m_exercise};
     emit documentChanged();
 }
 
 bool SceneActions::isModified() const
 {
-    SceneFile now{m_document->scene(), m_shaders->program(), m_exercise};
+    SceneFile now{sceneToSave(), m_shaders->program(), m_exercise};
     const SceneFile saved = m_saved.value_or(SceneFile{Scene{}, std::nullopt, std::nullopt});
     // Auto-rotation turns the object 60 times a second: the turn is not an edit.
     for (std::size_t i = 0; i < now.scene.objects.size(); ++i)

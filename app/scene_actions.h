@@ -10,6 +10,7 @@
 #include <QObject>
 #include <QPointer>
 
+#include <functional>
 #include <optional>
 
 class QMainWindow;
@@ -37,6 +38,9 @@ public:
     bool open(const QString &path);
     // Writes the current scene and program; returns an empty string or the message shown.
     QString save(const QString &path);
+    // The scene a save writes and isModified() compares: the document's, unless the window
+    // shows something that is not the user's own (an exercise's case, main_window_exercise).
+    void setSceneToSave(std::function<Scene()> scene) { m_sceneToSave = std::move(scene); }
     QString currentPath() const { return m_path; }
     // The scene's name for the title: the file's, an example's, or empty (none opened).
     QString documentName() const { return m_name; }
@@ -75,6 +79,7 @@ private:
     void showMessage(QMessageBox::Icon icon, const QString &text, const QString &details);
     void setCurrentPath(const QString &path, const QString &name);
     void remember(); // what isModified() compares with
+    Scene sceneToSave() const;
 
     QMainWindow *m_window;
     SceneDocument *m_document;
@@ -83,6 +88,7 @@ private:
     QSettings &m_settings;
     RecentFiles *m_recent;
     QPointer<QMessageBox> m_messageBox;
+    std::function<Scene()> m_sceneToSave;
     QString m_path; // the scene file last opened or saved; empty for an example or none
     QString m_name;
     std::optional<SceneFile> m_saved;

@@ -6,6 +6,8 @@
 
 #include <QDockWidget>
 #include <QElapsedTimer>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QRegularExpression>
 #include <QToolButton>
 #include <QTreeWidget>
@@ -120,6 +122,19 @@ private slots:
                  qPrintable(m_window->viewport()->compareText()));
         QVERIFY(m_window->viewport()->compareText().contains("the exercise's reference"));
         QVERIFY(m_window->exercisePanel()->backButton()->isEnabled());
+
+        // A case is a view, not an edit: saving now writes the student's own scene, to the
+        // file and to the session, and the scene does not count as changed.
+        QVERIFY(!m_window->sceneActions()->isModified());
+        const QString mine = m_dir.filePath("mine.json");
+        QCOMPARE(m_window->sceneActions()->save(mine), QString());
+        const SceneFileRead read = readSceneFile(mine);
+        QVERIFY(read.file && read.file->scene == own && read.file->exercise);
+        m_window->saveSettings();
+        QVERIFY(Scene::fromJson(
+                    QJsonDocument::fromJson(m_settings->value("scene").toByteArray()).object()) ==
+                own);
+        QVERIFY(scene() == expected); // still shown
 
         // The correct answer passes every case; a case shown differs by the tolerance at most.
         setFragment(readText(LB_TEST_DATA "/grading/correct/lighting.frag"));
