@@ -9,7 +9,6 @@
 #include "submission.h"
 #include "work_check.h"
 
-#include <QCoreApplication>
 #include <QDir>
 #include <QEventLoop>
 #include <QFileInfo>
