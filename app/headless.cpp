@@ -251,7 +251,7 @@ int runHeadless(const CommandLine &cl, const Scene &requested)
     // The heap the mesh will be put in, touched while the helper reads; handed over when
     // Assimp is done reading (the stages after "reading": converting, receiving) or the
     // import ends.
-    HeapWarmer heap(warmingBytes(paths));
+    HeapWarmer heap(cl.check ? 0 : warmingBytes(paths)); // --check draws no frame
     QObject::connect(&import, &ImportProcess::progress, &waiting,
                      [&heap](double, const QString &stage) {
                          if (stage != QLatin1String("reading"))

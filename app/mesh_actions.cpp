@@ -219,14 +219,17 @@ void MeshActions::finished(bool ok, const QString &message)
         showStatusMessage(m_window, message, 5000);
         return;
     }
+    // A file the scene names and that is not loaded (not a loaded one read again).
     const std::vector<ObjectSettings> &objects = m_document->scene().objects;
-    const bool named = std::any_of(objects.begin(), objects.end(), [this](const ObjectSettings &o) {
-        return o.meshPath == m_pendingPath;
-    });
+    bool named = false;
+    for (int i = 0; i < int(objects.size()) && !named; ++i)
+        named = objects[std::size_t(i)].meshPath == m_pendingPath &&
+                !m_loader->meshProblem(i).isEmpty();
     showError(tr("Mesh not loaded"),
               named ? tr("A mesh file the scene names could not be loaded. Its objects draw their "
-                         "shapes and keep its name, so saving keeps it; it is read again once "
-                         "the file changes.")
+                         "shapes and keep its name, so saving keeps it; it is read again after "
+                         "the file changes (at your next change to the scene) or when you open "
+                         "it.")
                     : tr("The mesh could not be loaded; the previous one stays."),
               message);
 }

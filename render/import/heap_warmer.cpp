@@ -12,16 +12,20 @@ namespace {
 
 // One step touches this much (~2 ms) before the event loop reads the helper's stream again.
 constexpr std::size_t kStepBytes = 4u << 20;
+// Allocations up to this size come from the heap; bigger ones are mapped on their own (and
+// unmapped when freed, so a block that big would warm nothing).
+constexpr int kMmapThreshold = 512 << 20;
 
 } // namespace
 
 HeapWarmer::HeapWarmer(std::size_t bytes)
 {
     if (bytes == 0)
-        return;                           // no mesh file: the allocator as it comes
-    mallopt(M_MMAP_THRESHOLD, 512 << 20); // big arrays from the heap, not mapped one by one
-    mallopt(M_TRIM_THRESHOLD, 1 << 30);   // what is freed stays for the next stage
-    mallopt(M_TOP_PAD, 64 << 20);         // the heap grows in few steps
+        return;                                // no mesh file: the allocator as it comes
+    mallopt(M_MMAP_THRESHOLD, kMmapThreshold); // big arrays from the heap, not mapped alone
+    mallopt(M_TRIM_THRESHOLD, 1 << 30);        // what is freed stays for the next stage
+    mallopt(M_TOP_PAD, 64 << 20);              // the heap grows in few steps
+    bytes = std::min(bytes, std::size_t(kMmapThreshold) - kStepBytes);
     // Taken whole at once (no page is touched yet), so that allocations made between the
     // steps (the stream's buffers, Qt's events) land beside it, not inside it.
     m_block = static_cast<char *>(std::malloc(bytes));

@@ -3,9 +3,10 @@
 // main thread has nothing to do until the mesh arrives; after that, every first touch of a
 // page (zeroed by the kernel, 4 KB at a time) of the mesh's arrays, normal generation's and
 // the driver's copies lies on the path from the file to the PNG: ~26 k page faults for a
-// 1M-triangle mesh (40.5 k in all against 14.7 k for the default sphere). This spends the idle time
-// touching the heap those arrays will be put in, in steps between the helper's messages, and hands
-// it back to the allocator (not to the system) when the helper starts sending the mesh.
+// 1M-triangle mesh (40.5 k in all against 14.7 k for the default sphere). This spends the
+// idle time touching the heap those arrays will be put in, in steps between the helper's
+// messages, and hands it back to the allocator (not to the system) when Assimp is done reading
+// (the helper's "converting" stage) or the import ends.
 
 #include <QTimer>
 
@@ -16,9 +17,9 @@ namespace lb {
 class HeapWarmer
 {
 public:
-    // Up to `bytes`; nothing at all for 0. Also keeps big allocations in the heap and what is
-    // freed there, for the rest of the process: glibc otherwise maps each array over 128 KB
-    // on its own and unmaps it when freed, so the next stage faults in new pages. Fit for a
+    // Up to `bytes` (at most 508 MB); nothing at all for 0. Also keeps big allocations in the heap
+    // and what is freed there, for the rest of the process: glibc otherwise maps each array over
+    // 128 KB on its own and unmaps it when freed, so the next stage faults in new pages. Fit for a
     // short run, not for the window.
     explicit HeapWarmer(std::size_t bytes);
     ~HeapWarmer();

@@ -84,6 +84,16 @@ QString ObjectLoader::meshProblem(int index) const
     return failed == m_failures.end() ? QString() : failed->second.error;
 }
 
+void ObjectLoader::setLimits(const ImportLimits &limits)
+{
+    m_limits = limits;
+    // A file that failed may fit the new limits: its objects ask for it again.
+    if (!m_failures.empty()) {
+        m_failures.clear();
+        sync();
+    }
+}
+
 bool ObjectLoader::failedBefore(const QString &path)
 {
     const auto failed = m_failures.find(path);
@@ -292,7 +302,7 @@ void ObjectLoader::imported(const ImportResult &result)
         // Objects that name this file (a restart, a scene file) keep naming it and draw their
         // shapes until it changes or is opened again (a cancelled one too, or sync() would
         // start it again at once). Known before loadFinished(), whose listeners show it.
-        if (!removed)
+        if (!removed && !loadedFile(m_loadingPath)) // a loaded one stays as it is
             m_failures[m_loadingPath] = {result.cancelled
                                              ? tr("%1: not loaded: cancelled").arg(m_loadingPath)
                                              : result.error,

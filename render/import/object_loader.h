@@ -6,8 +6,9 @@
 // it is loaded and built; a file that fails leaves the scene, and the mesh on screen, as
 // they were. A file the scene names (a restart, a scene file) that cannot be read stays
 // named, so that a save keeps it: its objects draw their shapes, meshProblem() says why, and
-// it is read again once the file changes. Each loaded file is read once, however many objects
-// draw it.
+// it is read again at the next change to the scene once the file has changed (nothing watches
+// it), when it is opened again, or under new limits. Each loaded file is read once, however
+// many objects draw it.
 
 #include "import_process.h"
 #include "object_mesh.h"
@@ -46,7 +47,8 @@ public:
     void cancel();
     bool isLoading() const { return m_loading; }
     qint64 helperPid() const { return m_import.helperPid(); } // 0 when no helper runs
-    void setLimits(const ImportLimits &limits) { m_limits = limits; }
+    // New limits; files the scene names that failed are read again under them.
+    void setLimits(const ImportLimits &limits);
     const ImportLimits &limits() const { return m_limits; }
 
     // Object `index`'s loaded file (nullptr while it is a shape) and the mesh and texture

@@ -3,6 +3,8 @@
 // faulting them in; a block taken beside it faults every page, so the count can tell.
 #include "heap_warmer.h"
 
+#include <QCoreApplication>
+#include <QFile>
 #include <QTest>
 
 #include <cstdlib>
@@ -50,6 +52,11 @@ private slots:
 #ifdef LIGHTBENCH_SANITIZE
         QSKIP("AddressSanitizer's allocator ignores glibc's settings");
 #endif
+        // With transparent huge pages always on, a fresh block faults 2 MB at a time: too few
+        // faults for the count to tell warmed pages from new ones.
+        QFile thp("/sys/kernel/mm/transparent_hugepage/enabled");
+        if (thp.open(QIODevice::ReadOnly) && thp.readAll().contains("[always]"))
+            QSKIP("transparent huge pages are always on: page faults cannot tell");
         constexpr std::size_t kBytes = 48u << 20;
         const long pages = long(kBytes / std::size_t(sysconf(_SC_PAGESIZE)));
         HeapWarmer warmer(kBytes);
@@ -70,7 +77,8 @@ private slots:
         QCOMPARE(none.warmedBytes(), std::size_t(0));
         none.stop();
         HeapWarmer partly(256u << 20);
-        QTRY_VERIFY(partly.warmedBytes() > 0);
+        while (partly.warmedBytes() == 0) // one step for each pass of the event loop
+            QCoreApplication::processEvents();
         partly.stop(); // mid-way: what was taken is freed, the steps end
         const std::size_t at = partly.warmedBytes();
         QTest::qWait(20);

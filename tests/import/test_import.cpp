@@ -294,11 +294,24 @@ private slots:
         QCOMPARE(loader.mesh()->triangleCount(), std::size_t(12));
         QVERIFY(loader.meshProblem().isEmpty());
 
-        // Gone again and opened by hand: read at once, and the previous mesh stays.
+        // Gone again and opened by hand: read at once; what is loaded stays, with no problem
+        // to show (it is drawn).
         QVERIFY(QFile::remove(later));
         const Outcome o = load(loader, later);
         QVERIFY(!o.ok && o.message.contains("no such file"));
         QCOMPARE(int(started.count()), reads + 2);
+        QVERIFY(loader.file() != nullptr);
+        QVERIFY(loader.meshProblem().isEmpty());
+
+        // Another object naming a missing file, then the file written: new limits (the
+        // Preferences) read it again at once, without waiting for an edit.
+        const QString other = m_dir.filePath("other.ply");
+        document.edit([&](Scene &s) { s.objects[0].meshPath = other; });
+        QTRY_VERIFY(!loader.meshProblem().isEmpty() && !loader.isLoading());
+        QVERIFY(QFile::copy(kCorpus + "/PLY/cube.ply", other));
+        loader.setLimits(loader.limits());
+        QTRY_VERIFY(loader.file() && loader.file()->path == other);
+        QVERIFY(loader.meshProblem().isEmpty());
     }
 
     void missingFileAndDirectory()
