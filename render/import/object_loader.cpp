@@ -1,7 +1,5 @@
 #include "object_loader.h"
 
-#include "file_state.h"
-
 #include <QFileInfo>
 #include <QLocale>
 
@@ -80,29 +78,17 @@ QString ObjectLoader::meshProblem(int index) const
     const std::vector<ObjectSettings> &objects = m_document->scene().objects;
     if (index >= int(objects.size()))
         return {};
-    const auto failed = m_failures.find(objects[std::size_t(index)].meshPath);
-    return failed == m_failures.end() ? QString() : failed->second.error;
+    return m_failures.error(objects[std::size_t(index)].meshPath);
 }
 
 void ObjectLoader::setLimits(const ImportLimits &limits)
 {
     m_limits = limits;
     // A file that failed may fit the new limits: its objects ask for it again.
-    if (!m_failures.empty()) {
+    if (!m_failures.isEmpty()) {
         m_failures.clear();
         sync();
     }
-}
-
-bool ObjectLoader::failedBefore(const QString &path)
-{
-    const auto failed = m_failures.find(path);
-    if (failed == m_failures.end())
-        return false;
-    if (failed->second.state == fileState(path))
-        return true;
-    m_failures.erase(failed); // put back or saved again: read it again
-    return false;
 }
 
 QString ObjectLoader::textureProblem(int index) const
@@ -209,7 +195,7 @@ QString ObjectLoader::summary() const
 
 void ObjectLoader::open(const QString &path)
 {
-    m_failures.erase(path); // asked for again: read again, whatever failed before
+    m_failures.forget(path); // asked for again: read again, whatever failed before
     if (m_job && m_job->commit) {
         m_job->cancel = true; // a file still being built gives way to the newer one
         m_job.reset();
@@ -303,10 +289,9 @@ void ObjectLoader::imported(const ImportResult &result)
         // shapes until it changes or is opened again (a cancelled one too, or sync() would
         // start it again at once). Known before loadFinished(), whose listeners show it.
         if (!removed && !loadedFile(m_loadingPath)) // a loaded one stays as it is
-            m_failures[m_loadingPath] = {result.cancelled
-                                             ? tr("%1: not loaded: cancelled").arg(m_loadingPath)
-                                             : result.error,
-                                         fileState(m_loadingPath)};
+            m_failures.add(m_loadingPath, result.cancelled
+                                              ? tr("%1: not loaded: cancelled").arg(m_loadingPath)
+                                              : result.error);
         emit loadFinished(false, removed ? tr("%1: not loaded: its object was removed")
                                                .arg(QFileInfo(m_loadingPath).fileName())
                                  : result.cancelled ? tr("Loading cancelled")
@@ -385,7 +370,7 @@ void ObjectLoader::sync()
         std::shared_ptr<const MeshFile> file;
         if (!object.meshPath.isEmpty()) {
             file = loadedFile(object.meshPath);
-            if (!file && !failedBefore(object.meshPath)) {
+            if (!file && !m_failures.stillFailing(object.meshPath)) {
                 if (!m_loading) // named by a restored or opened scene
                     startImport(object.meshPath, i);
                 if (m_slots[std::size_t(i)].mesh)
@@ -408,8 +393,7 @@ void ObjectLoader::sync()
     };
     for (auto it = m_files.begin(); it != m_files.end();)
         it = named(it->first) ? std::next(it) : m_files.erase(it);
-    for (auto it = m_failures.begin(); it != m_failures.end();)
-        it = named(it->first) ? std::next(it) : m_failures.erase(it);
+    m_failures.keepOnly(named);
 }
 
 void ObjectLoader::startBuild(int index, const ObjectSettings &object,

@@ -10,6 +10,7 @@
 // it), when it is opened again, or under new limits. Each loaded file is read once, however
 // many objects draw it.
 
+#include "file_failures.h"
 #include "import_process.h"
 #include "object_mesh.h"
 #include "scene_document.h"
@@ -116,8 +117,6 @@ private:
     void finishBuild(const std::shared_ptr<Job> &job);
     void imported(const ImportResult &result);
     std::shared_ptr<const MeshFile> loadedFile(const QString &path) const;
-    // True while `path` failed before and has not changed since (a changed one is forgotten).
-    bool failedBefore(const QString &path);
     int resolve(int index) const;
 
     SceneDocument *m_document;
@@ -129,13 +128,8 @@ private:
     QString m_loadingPath;
     int m_loadingObject = 0; // the object the file being read is for
     std::map<QString, std::shared_ptr<const MeshFile>> m_files; // loaded, by path
-    struct Failure
-    {
-        QString error;
-        QString state; // fileState() when it failed
-    };
-    std::map<QString, Failure> m_failures; // files the scene names that could not be read
-    std::vector<Slot> m_slots;             // by object
+    FileFailures m_failures;   // files the scene names that could not be read
+    std::vector<Slot> m_slots; // by object
     // What meshReady() last said of each object.
     using Drawn = std::pair<std::shared_ptr<const Mesh>, std::shared_ptr<const Texture>>;
     std::vector<std::optional<Drawn>> m_sent;

@@ -1,6 +1,6 @@
 #include "texture_files.h"
 
-#include "file_state.h"
+#include "file_failures.h"
 
 #include <algorithm>
 
@@ -24,10 +24,7 @@ std::shared_ptr<const Texture> TextureFiles::find(const QString &path) const
 
 void TextureFiles::request(const QString &path)
 {
-    if (const auto failed = m_failed.find(path);
-        failed != m_failed.end() && failed->second.state != fileState(path))
-        m_failed.erase(failed);
-    if (m_images.count(path) || m_failed.count(path) || path == m_decoding ||
+    if (m_images.count(path) || m_failed.stillFailing(path) || path == m_decoding ||
         m_queue.contains(path))
         return;
     m_queue << path;
@@ -36,13 +33,12 @@ void TextureFiles::request(const QString &path)
 
 QString TextureFiles::failure(const QString &path) const
 {
-    const auto found = m_failed.find(path);
-    return found == m_failed.end() ? QString() : found->second.error;
+    return m_failed.error(path);
 }
 
 void TextureFiles::reread(const QString &path)
 {
-    m_failed.erase(path);
+    m_failed.forget(path);
     if (m_queue.contains(path))
         return;
     m_queue << path;
@@ -53,8 +49,7 @@ void TextureFiles::keepOnly(const QStringList &keep)
 {
     for (auto it = m_images.begin(); it != m_images.end();)
         it = keep.contains(it->first) ? std::next(it) : m_images.erase(it);
-    for (auto it = m_failed.begin(); it != m_failed.end();)
-        it = keep.contains(it->first) ? std::next(it) : m_failed.erase(it);
+    m_failed.keepOnly([&keep](const QString &path) { return keep.contains(path); });
     m_queue.erase(std::remove_if(m_queue.begin(), m_queue.end(),
                                  [&](const QString &p) { return !keep.contains(p); }),
                   m_queue.end());
@@ -76,7 +71,7 @@ void TextureFiles::startNext()
                 if (read->texture)
                     m_images[path] = *read;
                 else if (!m_images.count(path)) // a reread that fails keeps the image in
-                    m_failed[path] = {read->error, fileState(path)};
+                    m_failed.add(path, read->error);
                 emit decoded(path, *read);
                 startNext();
             },

@@ -2,6 +2,7 @@
 // Image files decoded for textures, off the GUI thread, one at a time, and kept by path while
 // an object names them (each file decoded once, however many objects show it).
 
+#include "file_failures.h"
 #include "texture_file.h"
 
 #include <QObject>
@@ -44,12 +45,7 @@ private:
     QString m_decoding; // the path on the worker; empty when idle
     QStringList m_queue;
     std::map<QString, TextureFileRead> m_images; // decoded ones only
-    struct Failure
-    {
-        QString error;
-        QString state; // the file's existence, size and time when it failed
-    };
-    std::map<QString, Failure> m_failed; // until read again
+    FileFailures m_failed;                       // until read again
 };
 
 } // namespace lb
