@@ -21,7 +21,6 @@
 
 #include <csignal>
 #include <cstdio>
-#include <cstring>
 #include <functional>
 
 namespace lb {
@@ -347,7 +346,7 @@ int runGrade(const CommandLine &cl)
     int running = 0;
     QString batchFailure; // the exercise's fault, said by a child: no more are started
     std::function<void()> startMore;
-    const auto ended = [&](int i, QProcess *p, int code, QProcess::ExitStatus status) {
+    const auto ended = [&](int i, QProcess *p) {
         Graded &row = rows[std::size_t(i)];
         const std::optional<GradingReport> report = readGradingReport(p->readAllStandardOutput());
         if (row.status == "timed out") {
@@ -365,13 +364,8 @@ int runGrade(const CommandLine &cl)
                                      .filter("lightbench")
                                      .value(0)
                                      .trimmed();
-            row.diagnostic = status == QProcess::CrashExit && p->error() == QProcess::Crashed
-                                 ? QString("killed by signal %1 (%2)")
-                                       .arg(code)
-                                       .arg(QString::fromLatin1(strsignal(code)))
-                             : p->error() == QProcess::FailedToStart
-                                 ? QString("could not start: %1").arg(p->errorString())
-                                 : QString("exit code %1").arg(code);
+            row.diagnostic = (p->error() == QProcess::FailedToStart ? "could not start: " : "") +
+                             endedWithoutReport(*p);
             if (!said.isEmpty())
                 row.diagnostic += "; " + said;
         }
@@ -401,9 +395,9 @@ int runGrade(const CommandLine &cl)
             // the loop runs.
             QObject::connect(
                 p, &QProcess::finished, &loop,
-                [&, i, p, timer](int code, QProcess::ExitStatus status) {
+                [&, i, p, timer] {
                     timer->stop();
-                    ended(i, p, code, status);
+                    ended(i, p);
                 },
                 Qt::QueuedConnection);
             QObject::connect(p, &QProcess::errorOccurred, p, [p](QProcess::ProcessError error) {

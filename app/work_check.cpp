@@ -26,6 +26,17 @@ int gradingTimeLimitMs(int cases)
     return asked > 0 ? asked : int(30000 + 2 * kGradingTrialBudgetMs * cases);
 }
 
+QString endedWithoutReport(const QProcess &child)
+{
+    if (child.error() == QProcess::FailedToStart)
+        return QString("%1: %2").arg(child.program(), child.errorString());
+    if (child.exitStatus() == QProcess::CrashExit) // the exit code is the signal then
+        return QString("killed by signal %1 (%2)")
+            .arg(child.exitCode())
+            .arg(QString::fromLatin1(strsignal(child.exitCode())));
+    return QString("exit code %1").arg(child.exitCode());
+}
+
 namespace {
 
 QString writeText(const QString &path, const QString &text)
@@ -131,14 +142,8 @@ void WorkCheck::ended()
                    readGradingReport(p->readAllStandardOutput())) {
         report = *r;
     } else {
-        const bool started = p->error() != QProcess::FailedToStart;
-        report.status = started ? "crashed" : "could not start";
-        report.diagnostic = !started ? tr("%1: %2").arg(p->program(), p->errorString())
-                            : p->exitStatus() == QProcess::CrashExit
-                                ? tr("the checking process ended by signal %1 (%2)")
-                                      .arg(p->exitCode())
-                                      .arg(QString::fromLatin1(strsignal(p->exitCode())))
-                                : tr("the checking process ended with code %1").arg(p->exitCode());
+        report.status = p->error() == QProcess::FailedToStart ? "could not start" : "crashed";
+        report.diagnostic = endedWithoutReport(*p);
     }
     p->deleteLater();
     m_dir.reset();

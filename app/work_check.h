@@ -29,6 +29,10 @@ constexpr double kGradingTrialBudgetMs = 2000.0;
 // How long one submission may take: its process, its trial and its frames.
 // $LIGHTBENCH_GRADE_TIME_LIMIT_MS overrides.
 int gradingTimeLimitMs(int cases);
+// Why a grading child that printed no report ended: "killed by signal 11 (Segmentation
+// fault)", "exit code 3", or "PROGRAM: why" when it could not start. --grade and Check My
+// Work both say it.
+QString endedWithoutReport(const QProcess &child);
 
 class WorkCheck : public QObject
 {
