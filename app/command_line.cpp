@@ -1,6 +1,7 @@
 #include "command_line.h"
 
 #include "message_text.h"
+#include "safe_write.h"
 #include "shader_document.h"
 
 #include <QCommandLineParser>
@@ -236,8 +237,18 @@ void parseInto(const QCommandLineParser &parser, CommandLine &cl)
             fail("size", QString("expected WxH, got '%1'").arg(echoed(value("size"))));
         cl.size = QSize(integer("size", wh[0], 1, 8192), integer("size", wh[1], 1, 8192));
     }
+    // Output files are checked before any work: a device, a FIFO or a folder in their place, a
+    // folder that is not there or cannot be written is said now, not after the frame is drawn.
+    const auto output = [&](const char *option) {
+        const QString path = value(option);
+        if (path.isEmpty())
+            fail(option, "needs a file name");
+        if (const QString why = unwritableTarget(path); !why.isEmpty())
+            fail(option, why);
+        return path;
+    };
     if (given("render"))
-        cl.renderPath = value("render");
+        cl.renderPath = output("render");
     if (given("probe")) {
         const QStringList xy = value("probe").split(',');
         if (xy.size() != 2)
@@ -246,7 +257,7 @@ void parseInto(const QCommandLineParser &parser, CommandLine &cl)
                           integer("probe", xy[1], 0, cl.size.height() - 1));
     }
     if (given("screenshot"))
-        cl.screenshotPath = value("screenshot");
+        cl.screenshotPath = output("screenshot");
     if (given("bench-frames"))
         cl.benchFrames = integer("bench-frames", value("bench-frames"), 1, 100000);
     if (given("bench-edits"))
@@ -274,11 +285,8 @@ void parseInto(const QCommandLineParser &parser, CommandLine &cl)
             cl.fragmentSource = cl.sceneFile->program->fragment;
         }
     }
-    if (given("save-scene")) {
-        cl.saveScenePath = value("save-scene");
-        if (cl.saveScenePath.isEmpty())
-            fail("save-scene", "needs a file name");
-    }
+    if (given("save-scene"))
+        cl.saveScenePath = output("save-scene");
     if (given("frame-budget")) {
         const float v = numbers("frame-budget", value("frame-budget"), 1, "seconds")[0];
         checkRange("frame-budget", v, 0.01f, 60.0f);

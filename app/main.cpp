@@ -43,6 +43,7 @@ QStringList rawArguments(int argc, char **argv)
 
 int main(int argc, char **argv)
 {
+    lb::reportFileSizeLimitAsError(); // `ulimit -f`: a message and an exit code, not a kill
     // The command line is checked before Qt starts, so a bad one answers even with no display.
     const lb::CommandLineResult parsed = lb::parseCommandLine(rawArguments(argc, argv));
     if (!parsed.commandLine) {

@@ -1,11 +1,11 @@
 #include "work_check.h"
 
+#include "safe_write.h"
 #include "scene_file.h"
 
 #include <QCoreApplication>
 #include <QDir>
 #include <QProcess>
-#include <QSaveFile>
 #include <QTemporaryDir>
 #include <QTimer>
 
@@ -36,19 +36,6 @@ QString endedWithoutReport(const QProcess &child)
             .arg(QString::fromLatin1(strsignal(child.exitCode())));
     return QString("exit code %1").arg(child.exitCode());
 }
-
-namespace {
-
-QString writeText(const QString &path, const QString &text)
-{
-    QSaveFile file(path);
-    const QByteArray bytes = text.toUtf8();
-    if (!file.open(QIODevice::WriteOnly) || file.write(bytes) != bytes.size() || !file.commit())
-        return QObject::tr("%1: cannot write (%2)").arg(path, file.errorString());
-    return {};
-}
-
-} // namespace
 
 WorkCheck::WorkCheck(QObject *parent) : QObject(parent), m_timer(new QTimer(this))
 {
@@ -100,9 +87,10 @@ QString WorkCheck::start(const Scene &base, const Exercise &exercise, const QStr
         !error.isEmpty())
         return error;
     const QString submission = dir.filePath("shader");
-    for (const auto &[suffix, text] : {std::pair{".vert", vertex}, std::pair{".frag", fragment}})
-        if (QString error = writeText(submission + suffix, text); !error.isEmpty())
-            return error;
+    if (QString error = writeFilesSafely(
+            {{submission + ".vert", vertex.toUtf8()}, {submission + ".frag", fragment.toUtf8()}});
+        !error.isEmpty())
+        return error;
 
     m_cases = gradingCases(base, exercise.grading, kSeed);
     m_timedOut = false;

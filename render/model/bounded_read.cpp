@@ -5,6 +5,10 @@
 #include <QFile>
 #include <QFileInfo>
 
+#include <cerrno>
+#include <cstring>
+#include <sys/stat.h>
+
 namespace lb {
 
 namespace {
@@ -15,6 +19,19 @@ QString shown(const QString &path)
 }
 
 } // namespace
+
+QString missingFileReason(const QString &path)
+{
+    struct stat st;
+    if (::stat(QFile::encodeName(path).constData(), &st) == 0)
+        return "no such file"; // it came meanwhile; say what was seen
+    if (errno == ELOOP)
+        return "a loop of symbolic links";
+    if (errno == ENOENT && QFileInfo(path).isSymLink())
+        return QString("a symbolic link to %1, which does not exist")
+            .arg(shown(QFileInfo(path).symLinkTarget()));
+    return errno == ENOENT ? QString("no such file") : QString::fromLocal8Bit(std::strerror(errno));
+}
 
 QString sizeForMessage(qint64 bytes)
 {
@@ -34,7 +51,7 @@ QString unreadableFile(const QString &path, const FileLimit &limit)
 {
     const QFileInfo info(path);
     if (!info.exists())
-        return QString("%1: no such file").arg(shown(path));
+        return QString("%1: %2").arg(shown(path), missingFileReason(path));
     if (!info.isFile())
         return QString("%1: not a regular file (a folder, a device or a pipe)").arg(shown(path));
     if (info.size() > limit.bytes)

@@ -28,6 +28,10 @@ struct BoundedRead
 // Checks first, then reads at most limit + 1 bytes (a file that grew meanwhile is refused).
 BoundedRead readBounded(const QString &path, const FileLimit &limit);
 
+// Why `path` is not there: "no such file", "a loop of symbolic links", "a symbolic link to
+// TARGET, which does not exist", or the system's reason ("Permission denied").
+QString missingFileReason(const QString &path);
+
 // "2.5 MB", "640 KiB": a size as a message says it.
 QString sizeForMessage(qint64 bytes);
 
