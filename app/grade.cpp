@@ -6,6 +6,8 @@
 #include "import_process.h"
 #include "message_text.h"
 #include "offscreen.h"
+#include "safe_write.h"
+#include "stop_signals.h"
 #include "submission.h"
 #include "work_check.h"
 
@@ -14,14 +16,18 @@
 #include <QFileInfo>
 #include <QJsonDocument>
 #include <QProcess>
-#include <QSaveFile>
 #include <QSet>
 #include <QThread>
 #include <QTimer>
 
+#include <algorithm>
 #include <csignal>
 #include <cstdio>
 #include <functional>
+
+#ifdef __linux__
+#include <sys/prctl.h>
+#endif
 
 namespace lb {
 
@@ -90,6 +96,7 @@ struct Graded
     QString name;
     QString status; // "graded", "does not compile", "does not link", "refused", "timed out", ...
     QString diagnostic;
+    bool sheetFailed = false; // graded, but its sheet could not be written (the diagnostic)
     int cases = 0, passed = 0, worst = 0;
     double meanShare = 0.0;
 };
@@ -99,6 +106,7 @@ Graded fromReport(const GradingReport &r)
     Graded g;
     g.status = r.status;
     g.diagnostic = r.sheetError.isEmpty() ? r.diagnostic : r.sheetError;
+    g.sheetFailed = !r.sheetError.isEmpty();
     g.cases = int(r.cases.size());
     g.passed = r.passedCount();
     g.worst = r.largest();
@@ -189,10 +197,48 @@ QStringList uniqueNames(const QStringList &names)
     return unique;
 }
 
+QString sheetPath(const QString &folder, const QString &name)
+{
+    return QDir(folder).filePath(name + ".png");
+}
+
+// "--report: PATH: why" when a result of the batch could not be written; empty when all can.
+QString outputsUnwritable(const CommandLine &cl, const QStringList &names)
+{
+    if (!cl.reportPath.isEmpty())
+        if (const QString why = unwritableTarget(cl.reportPath); !why.isEmpty())
+            return "--report: " + why;
+    if (cl.sheetsDir.isEmpty())
+        return {};
+    if (!QDir().mkpath(cl.sheetsDir))
+        return QString("--sheets: %1: cannot make the folder").arg(cl.sheetsDir);
+    for (const QString &name : names)
+        if (const QString why = unwritableTarget(sheetPath(cl.sheetsDir, name)); !why.isEmpty())
+            return "--sheets: " + why;
+    return {};
+}
+
+QString signalName(int signal)
+{
+    switch (signal) {
+    case SIGINT:
+        return "SIGINT";
+    case SIGTERM:
+        return "SIGTERM";
+    case SIGHUP:
+        return "SIGHUP";
+    }
+    return QString("signal %1").arg(signal);
+}
+
 } // namespace
 
 int runGradeOne(const CommandLine &cl)
 {
+#ifdef __linux__
+    // Goes with the batch or the window that started it, even one killed with SIGKILL.
+    prctl(PR_SET_PDEATHSIG, SIGKILL);
+#endif
     GradingReport out;
     const auto finish = [&](const QString &status, const QString &diagnostic = {}) {
         out.status = status;
@@ -279,14 +325,12 @@ int runGradeOne(const CommandLine &cl)
     }
     out.worstCase = worst;
     if (!cl.sheetsDir.isEmpty()) {
-        const QString path = QDir(cl.sheetsDir).filePath(name + ".png");
-        QSaveFile file(path); // a sheet is whole or not there
-        if (!file.open(QIODevice::WriteOnly) ||
-            !gradingSheet(name, worstFrame, reference[std::size_t(worst)], worstResult, worst)
-                 .save(&file, "PNG") ||
-            !file.commit())
-            out.sheetError = QString("%1: cannot write the sheet").arg(path);
-        else
+        const QString path = sheetPath(cl.sheetsDir, name);
+        // A sheet is whole or not there; why not is the submission's diagnostic.
+        out.sheetError =
+            writeImageSafely(path, gradingSheet(name, worstFrame, reference[std::size_t(worst)],
+                                                worstResult, worst));
+        if (out.sheetError.isEmpty())
             out.sheet = path;
     }
     return finish("graded");
@@ -294,6 +338,8 @@ int runGradeOne(const CommandLine &cl)
 
 int runGrade(const CommandLine &cl)
 {
+    reportFileSizeLimitAsError();
+    std::signal(SIGPIPE, SIG_IGN); // stdout piped into a reader that went: the CSV still counts
     const ExerciseFile e = readExerciseFile(cl.exercisePath);
     if (!e.error.isEmpty()) {
         printLine("lightbench: --exercise: " + e.error, stderr);
@@ -303,23 +349,28 @@ int runGrade(const CommandLine &cl)
         printLine(QString("lightbench: --exercise: %1: ignored: %2")
                       .arg(cl.exercisePath, summarisedList(e.ignored, "; ")),
                   stderr);
-    if (!cl.sheetsDir.isEmpty() && !QDir().mkpath(cl.sheetsDir)) {
-        printLine(QString("lightbench: --sheets: %1: cannot make the folder").arg(cl.sheetsDir),
-                  stderr);
-        return 2;
-    }
     const int cases = e.file.exercise->grading.cases;
     // Time for one submission: its process, its trial and its frames; a hang ends here.
     const int limitMs = gradingTimeLimitMs(cases);
 
-    std::vector<Graded> rows(std::size_t(cl.submissions.size()));
+    const QStringList paths = distinctSubmissions(cl.submissions);
+    std::vector<Graded> rows(std::size_t(paths.size()));
+    std::vector<bool> finished(rows.size(), false);
     QStringList names;
     std::vector<Submission> submissions;
-    for (const QString &path : cl.submissions) {
+    for (const QString &path : paths) {
         submissions.push_back(readSubmission(path));
         names << submissions.back().name;
     }
     names = uniqueNames(names);
+
+    // Where the results go is checked before the first submission is graded: a FIFO, a
+    // device or a folder in their place, or a folder that cannot take them, ends the batch.
+    if (const QString error = outputsUnwritable(cl, names); !error.isEmpty()) {
+        printLine("lightbench: " + error, stderr);
+        return 2;
+    }
+
     bool anyUnreadable = false;
     std::vector<int> toRun;
     for (int i = 0; i < int(submissions.size()); ++i) {
@@ -329,11 +380,40 @@ int runGrade(const CommandLine &cl)
             printLine("lightbench: " + submissions[std::size_t(i)].error, stderr);
             row.status = "unreadable";
             row.diagnostic = submissions[std::size_t(i)].error;
+            finished[std::size_t(i)] = true;
             anyUnreadable = true;
         } else {
             toRun.push_back(i);
         }
     }
+
+    // Each line is printed once its submission and all before it are done, and the CSV is
+    // written again after each: what finished is kept whenever the batch ends.
+    std::size_t printed = 0;
+    const auto printFinished = [&](bool all) {
+        for (; printed < rows.size(); ++printed) {
+            if (finished[printed])
+                printLine(summaryLine(rows[printed]), stdout);
+            else if (!all)
+                break;
+        }
+    };
+    QString reportError; // the last write's, said once until it changes
+    const auto writeReport = [&] {
+        if (cl.reportPath.isEmpty())
+            return;
+        std::vector<Graded> done;
+        for (std::size_t i = 0; i < rows.size(); ++i)
+            if (finished[i])
+                done.push_back(rows[i]);
+        const QString error = writeFileSafely(cl.reportPath, csv(done).toUtf8());
+        if (!error.isEmpty() && error != reportError)
+            printLine("lightbench: --report: " + error, stderr);
+        reportError = error;
+    };
+    writeReport();
+    if (!reportError.isEmpty())
+        return 1; // nothing graded yet: no time lost on a batch whose report cannot be kept
 
     // One process per core (two here, at most four): each submission in a process of its
     // own. LIGHTBENCH_GRADE_PROCESSES sets how many (bench/grade.sh compares).
@@ -342,6 +422,8 @@ int runGrade(const CommandLine &cl)
                                        : std::max(1, std::min(QThread::idealThreadCount(), 4));
     QEventLoop loop;
     QObject children; // owns the processes: each goes with it, whatever the loop left undone
+    StopSignals stop;
+    int stoppedBy = 0;
     std::size_t next = 0;
     int running = 0;
     QString batchFailure; // the exercise's fault, said by a child: no more are started
@@ -349,7 +431,13 @@ int runGrade(const CommandLine &cl)
     const auto ended = [&](int i, QProcess *p) {
         Graded &row = rows[std::size_t(i)];
         const std::optional<GradingReport> report = readGradingReport(p->readAllStandardOutput());
-        if (row.status == "timed out") {
+        p->deleteLater();
+        --running;
+        // A child that ended without a report while the batch is being stopped was stopped
+        // with it (Ctrl+C reaches the whole process group): it did not finish.
+        const bool stopped = StopSignals::received() && !report;
+        if (stopped) {
+        } else if (row.status == "timed out") {
             row.diagnostic = QString("more than %1 s").arg(limitMs / 1000.0, 0, 'f', 1);
         } else if (report) { // a result printed counts, whatever came after it
             const QString name = row.name;
@@ -369,20 +457,21 @@ int runGrade(const CommandLine &cl)
             if (!said.isEmpty())
                 row.diagnostic += "; " + said;
         }
-        p->deleteLater();
-        --running;
-        if ((next >= toRun.size() || !batchFailure.isEmpty()) && running == 0)
-            loop.quit();
-        else
-            startMore();
+        if (!stopped && batchFailure.isEmpty()) {
+            finished[std::size_t(i)] = true;
+            printFinished(false);
+            writeReport();
+        }
+        startMore(); // or the end, when nothing is left to start and nothing runs
     };
     startMore = [&] {
-        while (running < parallel && next < toRun.size() && batchFailure.isEmpty()) {
+        while (running < parallel && next < toRun.size() && batchFailure.isEmpty() &&
+               !StopSignals::received()) {
             const int i = toRun[next++];
             auto *p = new QProcess(&children);
             QStringList args{
-                "--grade-one", cl.submissions[i], "--grade-name", names[i],
-                "--exercise",  cl.exercisePath,   "--seed",       QString::number(cl.seed)};
+                "--grade-one", paths[i],        "--grade-name", names[i],
+                "--exercise",  cl.exercisePath, "--seed",       QString::number(cl.seed)};
             if (!cl.sheetsDir.isEmpty())
                 args << "--sheets" << cl.sheetsDir;
             auto *timer = new QTimer(p);
@@ -410,28 +499,47 @@ int runGrade(const CommandLine &cl)
             p->start(gradingChildProgram(), args);
             timer->start(limitMs);
         }
+        if (running == 0) // a batch failure or a stop with nothing left running
+            loop.quit();
     };
+    QObject::connect(&stop, &StopSignals::stopRequested, &loop, [&](int signal) {
+        stoppedBy = signal;
+        loop.quit();
+    });
     if (!toRun.empty()) {
         QTimer::singleShot(0, &loop, startMore); // from inside the loop, so its quit counts
         loop.exec();
+    }
+    stoppedBy = StopSignals::received(); // also one that came while the loop was ending
+    if (stoppedBy) {
+        // No child is left running: each is killed and waited for before the batch ends.
+        for (QProcess *p : children.findChildren<QProcess *>()) {
+            p->disconnect();
+            p->kill();
+            p->waitForFinished(5000);
+        }
+        printFinished(true);
+        const int done = int(std::count(finished.begin(), finished.end(), true));
+        printLine(QString("lightbench: --grade: stopped by %1 with %2 of %3 submissions done%4")
+                      .arg(signalName(stoppedBy))
+                      .arg(done)
+                      .arg(rows.size())
+                      .arg(cl.reportPath.isEmpty()
+                               ? QString()
+                               : QString("; %1 holds their rows").arg(cl.reportPath)),
+                  stderr);
+        return StopSignals::exitCodeFor(stoppedBy);
     }
     if (!batchFailure.isEmpty()) {
         printLine(QString("lightbench: --exercise: %1: %2").arg(cl.exercisePath, batchFailure),
                   stderr);
         return 2;
     }
-
-    for (const Graded &g : rows)
-        printLine(summaryLine(g), stdout);
-    if (!cl.reportPath.isEmpty()) {
-        QSaveFile file(cl.reportPath);
-        const QByteArray bytes = csv(rows).toUtf8();
-        if (!file.open(QIODevice::WriteOnly) || file.write(bytes) != bytes.size() ||
-            !file.commit()) {
-            printLine(QString("lightbench: --report: %1: cannot write").arg(cl.reportPath), stderr);
-            return 1;
-        }
-    }
+    printFinished(true);
+    const bool sheetFailed =
+        std::any_of(rows.begin(), rows.end(), [](const Graded &g) { return g.sheetFailed; });
+    if (!reportError.isEmpty() || sheetFailed)
+        return 1; // each line said which file and why
     return anyUnreadable ? 2 : 0;
 }
 

@@ -2,14 +2,19 @@
 // --grade: a class's submissions against an exercise (exercise.h), each in its own process
 // (--grade-one) with a time limit, two at a time: a submission that does not compile, does
 // not link, loops, hangs or crashes the driver is reported with its status and the batch goes
-// on. Summary lines on standard output, a CSV report and one sheet per submission on request.
+// on. Summary lines on standard output as submissions finish (in the order given), a CSV
+// report written again after each one, and one sheet per submission on request: a batch
+// stopped by SIGINT, SIGTERM or SIGHUP keeps what it finished, stops its children and exits
+// with 130, 143 or 129.
 
 #include "command_line.h"
 
 namespace lb {
 
 // The batch. Exit code 0 when every submission was graded (whatever its grade), 2 when the
-// exercise cannot be used or a submission could not be read (the others are still graded).
+// exercise cannot be used, the report or a sheet has no place that can take it (said before
+// any is graded) or a submission could not be read (the others are still graded), 1 when the
+// report or a sheet could not be written (a full disk: the old report is left as it was).
 int runGrade(const CommandLine &commandLine);
 // One submission, in the process the batch starts: its result as one line of JSON.
 int runGradeOne(const CommandLine &commandLine);

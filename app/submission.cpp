@@ -1,5 +1,6 @@
 #include "submission.h"
 
+#include "bounded_read.h"
 #include "scene_file.h"
 #include "shader_document.h"
 
@@ -28,7 +29,30 @@ Submission pair(const QString &name, const QString &vertexPath, const QString &f
     return s;
 }
 
+bool isShaderSuffix(const QString &suffix)
+{
+    return suffix == "vert" || suffix == "frag";
+}
+
 } // namespace
+
+QStringList distinctSubmissions(const QStringList &paths)
+{
+    QStringList distinct, seen;
+    for (const QString &given : paths) {
+        const QFileInfo info(QDir::cleanPath(given));
+        // A folder alice/ beside alice.vert is another submission.
+        const QString key = info.isDir() ? info.absoluteFilePath() + '/'
+                            : isShaderSuffix(info.suffix().toLower())
+                                ? QDir(info.absolutePath()).filePath(info.completeBaseName())
+                                : info.absoluteFilePath();
+        if (!seen.contains(key)) {
+            seen << key;
+            distinct << given;
+        }
+    }
+    return distinct;
+}
 
 Submission readSubmission(const QString &given)
 {
@@ -66,13 +90,13 @@ Submission readSubmission(const QString &given)
         return s;
     }
     // NAME.vert, NAME.frag or NAME: the pair beside each other.
-    const QString stem =
-        suffix == "vert" || suffix == "frag" ? info.dir().filePath(info.completeBaseName()) : path;
-    if (suffix != "vert" && suffix != "frag")
+    const bool shader = isShaderSuffix(suffix);
+    const QString stem = shader ? info.dir().filePath(info.completeBaseName()) : path;
+    if (!shader)
         s.name = info.fileName();
     const QString vertex = stem + ".vert", fragment = stem + ".frag";
-    if ((suffix == "vert" || suffix == "frag") && !info.exists()) {
-        s.error = QString("%1: no such file").arg(path);
+    if (shader && !info.exists()) {
+        s.error = QString("%1: %2").arg(path, missingFileReason(path));
         return s;
     }
     for (const QString &p : {vertex, fragment})

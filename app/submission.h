@@ -3,6 +3,7 @@
 // alone), a folder holding one such pair, or a scene file with a program.
 
 #include <QString>
+#include <QStringList>
 
 namespace lb {
 
@@ -15,5 +16,10 @@ struct Submission
 };
 
 Submission readSubmission(const QString &path);
+
+// The submissions among `paths`, each once, in the order given: NAME.vert and NAME.frag (and
+// NAME) name one submission, so `--grade submissions/*` over a folder of pairs grades each
+// student once.
+QStringList distinctSubmissions(const QStringList &paths);
 
 } // namespace lb

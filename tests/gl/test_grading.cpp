@@ -16,7 +16,9 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <csignal>
 #include <sys/stat.h>
+#include <unistd.h>
 
 namespace {
 
@@ -84,6 +86,36 @@ bool write(const QString &path, const QByteArray &bytes)
 {
     QFile f(path);
     return f.open(QIODevice::WriteOnly) && f.write(bytes) == bytes.size();
+}
+
+// A stand-in for the batch's child: submissions named slow* never end (the child writes its
+// pid to `pidFile` first), any other prints a passing result at once; each start leaves a
+// line in `starts`.
+QString writeStandIn(const QString &path, const QString &pidFile, const QString &starts)
+{
+    const QByteArray script = QString("#!/bin/sh\n"
+                                      "echo \"$4\" >> '%2'\n"
+                                      "case \"$4\" in slow*) echo $$ > '%1'; exec sleep 60;; esac\n"
+                                      "echo '{\"status\":\"graded\",\"submission\":\"x\",\"cases\":"
+                                      "[{\"passed\":true,\"largest\":1,\"shareWithin\":1}]}'\n")
+                                  .arg(pidFile, starts)
+                                  .toUtf8();
+    if (!write(path, script) ||
+        !QFile::setPermissions(path, QFile::ReadOwner | QFile::WriteOwner | QFile::ExeOwner))
+        return {};
+    return path;
+}
+
+// A submission folder NAME holding the correct pair.
+QString correctCopy(const QDir &dir, const QString &name)
+{
+    if (!dir.mkpath(name))
+        return {};
+    for (const char *suffix : {".vert", ".frag"})
+        if (!QFile::copy(kData + "/correct/lighting" + suffix,
+                         dir.filePath(name + "/lighting" + suffix)))
+            return {};
+    return dir.filePath(name);
 }
 
 } // namespace
@@ -361,6 +393,151 @@ private slots:
         QCOMPARE(rows[1][1], QString("timed out"));
         QCOMPARE(rows[2][1], QString("timed out"));
         QVERIFY(r.out.contains("correct: timed out: more than 0.1 s"));
+    }
+
+    // A batch stopped after some submissions finished (Ctrl+C reaches the terminal's whole
+    // process group, `kill` the batch alone, a closed terminal sends SIGHUP) printed their
+    // lines, its CSV holds exactly their rows, no child is left running, and it exits as a
+    // shell expects: 128 + the signal.
+    void aStoppedBatchKeepsWhatItFinished_data()
+    {
+        QTest::addColumn<int>("signal");
+        QTest::addColumn<bool>("wholeGroup");
+        QTest::newRow("Ctrl+C (SIGINT to the group)") << SIGINT << true;
+        QTest::newRow("kill (SIGTERM to the batch)") << int(SIGTERM) << false;
+        QTest::newRow("closed terminal (SIGHUP)") << int(SIGHUP) << false;
+    }
+
+    void aStoppedBatchKeepsWhatItFinished()
+    {
+        QFETCH(int, signal);
+        QFETCH(bool, wholeGroup);
+        QTemporaryDir tmp;
+        const QDir dir(tmp.path());
+        const QString pidFile = dir.filePath("slow.pid"), starts = dir.filePath("starts");
+        const QString child = writeStandIn(dir.filePath("child.sh"), pidFile, starts);
+        QVERIFY(!child.isEmpty());
+        QStringList args{"--grade"};
+        for (const char *name : {"amy", "ben", "slow_cat", "dan", "eve"})
+            args << correctCopy(dir, name);
+        const QString report = dir.filePath("grades.csv");
+        args << "--exercise" << kExercise << "--report" << report;
+
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.insert("LIGHTBENCH_GRADE_PROGRAM", child);
+        env.insert("LIGHTBENCH_GRADE_PROCESSES", "1");
+        QProcess p;
+        p.setProcessEnvironment(env);
+        p.setChildProcessModifier([] { ::setpgid(0, 0); }); // a group of its own, as a shell's job
+        p.start(LIGHTBENCH_EXE, args);
+        QVERIFY(p.waitForStarted());
+        // amy and ben finish, slow_cat hangs: the batch is stopped while it waits on that one.
+        QTRY_VERIFY_WITH_TIMEOUT(QFileInfo(pidFile).size() > 0, 60000);
+        QFile pidText(pidFile);
+        QVERIFY(pidText.open(QIODevice::ReadOnly));
+        const pid_t slowChild = pid_t(pidText.readAll().trimmed().toInt());
+        QVERIFY(slowChild > 0);
+        QVERIFY(::kill(wholeGroup ? -pid_t(p.processId()) : pid_t(p.processId()), signal) == 0);
+        QVERIFY(p.waitForFinished(30000));
+        QCOMPARE(p.exitStatus(), QProcess::NormalExit);
+        QCOMPARE(p.exitCode(), 128 + signal);
+
+        const QList<QByteArray> lines = p.readAllStandardOutput().trimmed().split('\n');
+        QCOMPARE(lines.size(), 2);
+        QVERIFY2(lines[0].startsWith("amy: passed") && lines[1].startsWith("ben: passed"),
+                 lines.join('\n').constData());
+        const QList<QStringList> rows = csvRows(report);
+        QCOMPARE(rows.size(), 3); // the header, amy, ben
+        QCOMPARE(rows[1][0], QString("amy"));
+        QCOMPARE(rows[2][0], QString("ben"));
+        QVERIFY2(p.readAllStandardError().contains("2 of 5 submissions done"), "the message");
+        // The hanging child went with the batch, and no submission after it was started.
+        QVERIFY(::kill(slowChild, 0) != 0 && errno == ESRCH);
+        QFile started(starts);
+        QVERIFY(started.open(QIODevice::ReadOnly));
+        QCOMPARE(started.readAll(), QByteArray("amy\nben\nslow_cat\n"));
+    }
+
+    // `--grade submissions/*` over a folder of NAME.vert + NAME.frag pairs grades each student
+    // once (it gave rows NAME and NAME-2).
+    void aPairGivenAsTwoArgumentsIsOneSubmission()
+    {
+        QTemporaryDir tmp;
+        const QDir dir(tmp.path());
+        for (const char *student : {"alice", "bob"})
+            for (const char *suffix : {".vert", ".frag"})
+                QVERIFY(QFile::copy(kData + "/correct/lighting" + suffix,
+                                    dir.filePath(QString(student) + suffix)));
+        const QString child =
+            writeStandIn(dir.filePath("child.sh"), dir.filePath("pid"), dir.filePath("starts"));
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.insert("LIGHTBENCH_GRADE_PROGRAM", child);
+        const Run r = run({"--grade", dir.filePath("alice.frag"), dir.filePath("alice.vert"),
+                           dir.filePath("bob.frag"), dir.filePath("bob.vert"), dir.filePath("bob"),
+                           "--exercise", kExercise},
+                          env);
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        QCOMPARE(r.out, QByteArray("alice: passed, 1/1 cases passed, largest difference 1/255, "
+                                   "100.0% of pixels within tolerance\n"
+                                   "bob: passed, 1/1 cases passed, largest difference 1/255, "
+                                   "100.0% of pixels within tolerance\n"));
+    }
+
+    // The report and the sheets never replace what is not a regular file, and say so before
+    // the first submission is graded (the stand-in child would leave a line in `starts`).
+    void outputsThatAreNoFilesAreRefusedBeforeGrading_data()
+    {
+        QTest::addColumn<QString>("option");
+        QTest::addColumn<QString>("kind");
+        QTest::newRow("--report at a FIFO") << "--report"
+                                            << "fifo";
+        QTest::newRow("--report at /dev/null") << "--report"
+                                               << "device";
+        QTest::newRow("--report at a folder") << "--report"
+                                              << "folder";
+        QTest::newRow("--report in a missing folder") << "--report"
+                                                      << "missing folder";
+        QTest::newRow("a sheet at a FIFO") << "--sheets"
+                                           << "fifo";
+    }
+
+    void outputsThatAreNoFilesAreRefusedBeforeGrading()
+    {
+        QFETCH(QString, option);
+        QFETCH(QString, kind);
+        QTemporaryDir tmp;
+        const QDir dir(tmp.path());
+        const QString starts = dir.filePath("starts");
+        const QString child = writeStandIn(dir.filePath("child.sh"), dir.filePath("pid"), starts);
+        const QString submission = correctCopy(dir, "amy");
+        QString target = dir.filePath("grades.csv"), value = target, named = "not a regular file";
+        if (option == "--sheets") {
+            QVERIFY(dir.mkpath("sheets"));
+            value = dir.filePath("sheets");
+            target = dir.filePath("sheets/amy.png");
+        }
+        if (kind == "fifo") {
+            QCOMPARE(::mkfifo(QFile::encodeName(target).constData(), 0600), 0);
+        } else if (kind == "device") {
+            value = target = "/dev/null";
+        } else if (kind == "folder") {
+            QVERIFY(dir.mkpath("grades.csv"));
+        } else {
+            value = dir.filePath("nowhere/grades.csv");
+            named = "the folder " + dir.filePath("nowhere") + " does not exist";
+        }
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.insert("LIGHTBENCH_GRADE_PROGRAM", child);
+        const Run r = run({"--grade", submission, "--exercise", kExercise, option, value}, env);
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains(option.toUtf8() + ": ") && r.err.contains(named.toUtf8()),
+                 r.err.constData());
+        QVERIFY2(!QFileInfo::exists(starts), "a submission was graded first");
+        if (kind == "fifo" || kind == "device") {
+            struct stat st;
+            QCOMPARE(::stat(QFile::encodeName(target).constData(), &st), 0);
+            QVERIFY(kind == "fifo" ? S_ISFIFO(st.st_mode) : S_ISCHR(st.st_mode));
+        }
     }
 };
 
