@@ -1,8 +1,10 @@
 #include "texture_file.h"
 
 #include "bounded_read.h"
+#include "image_truncation.h"
 #include "message_text.h"
 
+#include <QFile>
 #include <QFileInfo>
 #include <QImageIOHandler>
 #include <QImageReader>
@@ -59,6 +61,18 @@ TextureFileRead readTextureFile(const QString &path)
     const QSize shown = reader.transformation() & QImageIOHandler::TransformationRotate90
                             ? size.transposed()
                             : size;
+    // A file cut short is refused before it is decoded (its missing rows would be drawn grey).
+    if (QFile file(path); file.open(QIODevice::ReadOnly)) {
+        const uchar *mapped = file.map(0, file.size());
+        const QByteArray bytes =
+            mapped ? QByteArray::fromRawData(reinterpret_cast<const char *>(mapped),
+                                             qsizetype(file.size()))
+                   : QByteArray();
+        if (const QString why = truncatedImage(bytes, reader.format()); mapped && !why.isEmpty()) {
+            read.error = QObject::tr("%1: could not be read as an image: %2").arg(name, why);
+            return read;
+        }
+    }
     const QImage image = reader.read();
     if (image.isNull()) {
         read.error =

@@ -82,6 +82,22 @@ private slots:
         }
         QTest::newRow("truncated PNG")
             << "cut.png" << png.left(png.size() / 2) << "could not be read as an image";
+        // Each format's reader draws what it got and fills the rest grey or black (Qt says
+        // nothing): a file that ends before its image does is refused.
+        QImage photo(64, 48, QImage::Format_RGB32);
+        for (int y = 0; y < photo.height(); ++y)
+            for (int x = 0; x < photo.width(); ++x)
+                photo.setPixel(x, y, qRgb(x * 4, y * 5, (x * y) & 255));
+        for (const char *format : {"JPEG", "BMP", "GIF", "PPM", "TIFF", "WEBP"}) {
+            QByteArray bytes;
+            QBuffer buffer(&bytes);
+            buffer.open(QIODevice::WriteOnly);
+            if (!photo.save(&buffer, format))
+                continue; // no plugin for it here
+            const QString name = QString("cut.%1").arg(QString(format).toLower());
+            QTest::newRow(qPrintable("truncated " + QString(format)))
+                << name << bytes.left(bytes.size() * 2 / 3) << "could not be read as an image";
+        }
     }
 
     void badFilesAreNamed()
@@ -108,6 +124,27 @@ private slots:
         QVERIFY2(o.message.contains(expected), qPrintable(o.message));
         QVERIFY(document.scene() == before);
         QCOMPARE(loader.texture()->image().size(), QSize(64, 32)); // still the red one
+    }
+
+    // The checks for a file cut short pass whole files: JPEG (with bytes after its end, as
+    // some cameras write) and BMP, bottom-up and top-down.
+    void wholeJpegsAndBitmapsAreRead()
+    {
+        QImage photo(40, 30, QImage::Format_RGB32);
+        photo.fill(qRgb(200, 40, 10));
+        for (const char *format : {"JPEG", "BMP"}) {
+            QByteArray bytes;
+            QBuffer buffer(&bytes);
+            buffer.open(QIODevice::WriteOnly);
+            QVERIFY(photo.save(&buffer, format));
+            if (QByteArray(format) == "JPEG")
+                bytes += QByteArray(100, 'x');
+            const QString path = m_dir.filePath(QString("whole.%1").arg(format).toLower());
+            write(path, bytes);
+            const TextureFileRead read = readTextureFile(path);
+            QVERIFY2(read.texture, qPrintable(read.error));
+            QCOMPARE(read.texture->image().size(), QSize(40, 30));
+        }
     }
 
     void aFolderAndAPipeAreNoImages()
