@@ -199,6 +199,11 @@ constexpr float kMaxAttenuation = 1000.0f;   // each of kc, kl, kq, at least 0; 
 constexpr float kMaxSpotCutoff = 180.0f;     // degrees; 180: no spot
 constexpr float kMaxSpotExponent = 128.0f;   // as OpenGL 2.1 allows
 constexpr float kMinDirectionLength = 1e-6f; // shorter spot axes are refused (normalize fails)
+// The program's own uniform values a scene keeps (Scene::shaderValues): far more than a program
+// has, few enough that a scene at every limit is smaller than a scene file may be
+// (kMaxSceneFileBytes), so what is saved can be opened again.
+constexpr int kMaxShaderValues = 16384;
+constexpr int kMaxShaderValueName = 1024; // GLSL ES's longest identifier
 } // namespace limits
 
 // Names used on the command line, in JSON and in the panels' combo boxes.

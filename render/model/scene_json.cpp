@@ -441,7 +441,19 @@ Scene Scene::fromJson(const QJsonObject &json, QStringList *ignored)
 
     r.boolean(json, "showLight", {}, sc.showLight);
     const QJsonObject values = r.object(json, "shaderValues", "shaderValues");
+    int kept = 0;
     for (auto it = values.begin(); it != values.end(); ++it) {
+        if (kept == limits::kMaxShaderValues) {
+            r.ignore(QString("shaderValues (%1 more than the %2 kept)")
+                         .arg(values.size() - kept)
+                         .arg(limits::kMaxShaderValues),
+                     "too many");
+            break;
+        }
+        if (it.key().isEmpty() || it.key().size() > limits::kMaxShaderValueName) {
+            r.ignore("shaderValues." + it.key().left(40), "not a uniform's name");
+            continue;
+        }
         const QJsonArray a = it.value().toArray();
         const int n = int(a.size());
         std::vector<float> v(std::size_t(std::clamp(n, 1, 4)), 0.0f);
@@ -449,9 +461,10 @@ Scene Scene::fromJson(const QJsonObject &json, QStringList *ignored)
         Reader one(&bad);
         if (n >= 1 && n <= 4)
             one.numbers(values, it.key(), {}, v.data(), n, -3.4e38f, 3.4e38f);
-        if (n >= 1 && n <= 4 && bad.isEmpty())
+        if (n >= 1 && n <= 4 && bad.isEmpty()) {
             sc.shaderValues[it.key()] = v;
-        else
+            ++kept;
+        } else
             r.ignore("shaderValues." + it.key(), "not 1 to 4 numbers");
     }
     return sc;

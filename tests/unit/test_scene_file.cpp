@@ -1,5 +1,6 @@
 // Scene files: what is saved opens as the same scene; mangled files never crash and never
 // give values outside the model's limits.
+#include "dialect.h"
 #include "safe_write.h"
 #include "scene_file.h"
 
@@ -255,6 +256,53 @@ private slots:
         QVERIFY(f.open(QIODevice::ReadOnly));
         QCOMPARE(f.readAll(), QByteArray("old")); // the pair's other half was not replaced
         QCOMPARE(QDir(tmp.path()).entryList(QDir::Files), QStringList{"pair.vert"}); // no leftovers
+    }
+
+    // What is saved opens again: one limit for both. A scene at every limit of what the reader
+    // keeps (the most uniform values with the longest names, both sources at the longest,
+    // written as \u0001 escapes: six bytes a character) fits in a scene file and comes back
+    // whole; one beyond (a window can hold more values than a file keeps) is refused by the
+    // writer with its size, and the old file stays. A scene of 1.5 million values read from
+    // a compact file used to be saved indented, larger than the reader takes.
+    void whatIsSavedOpensAgain()
+    {
+        QTemporaryDir tmp;
+        SceneFile f;
+        const QString longest(limits::kMaxShaderValueName - 8, QChar('u'));
+        for (int i = 0; i < limits::kMaxShaderValues; ++i)
+            f.scene.shaderValues[longest + QString::asprintf("%08d", i)] = {-3.4e38f, 1.0f / 3.0f,
+                                                                            1e-30f, 7.0f};
+        const QString source(kMaxSourceCharacters, QChar(1));
+        f.program = ProgramText{"at the limits", source, source, true};
+        const QString path = tmp.filePath("limits.json");
+        QCOMPARE(writeSceneFile(path, f), QString());
+        QVERIFY2(QFileInfo(path).size() <= kMaxSceneFileBytes,
+                 qPrintable(QString::number(QFileInfo(path).size())));
+        const SceneFileRead read = readSceneFile(path);
+        QVERIFY2(read.file, qPrintable(read.error));
+        QVERIFY2(read.ignored.isEmpty(), qPrintable(read.ignored.join("; ")));
+        QVERIFY(read.file->scene.shaderValues == f.scene.shaderValues);
+        QVERIFY(read.file->program == f.program);
+
+        // Beyond: the reader keeps the first kMaxShaderValues and says so; the writer
+        // refuses what the reader could not open.
+        SceneFile more = f;
+        for (int i = 0; i < 50000; ++i)
+            more.scene.shaderValues[QString("extra%1").arg(i) + longest] = {0, 0, 0, 0};
+        const QString error = writeSceneFile(path, more);
+        QVERIFY2(error.startsWith(path + ": not saved: the scene would take ") &&
+                     error.contains("more than a scene file may be (64 MB)"),
+                 qPrintable(error));
+        QCOMPARE(readSceneFile(path).file->program, f.program); // the old file
+        QJsonObject json = QJsonDocument::fromJson(sceneFileBytes(SceneFile{}, QDir())).object();
+        QJsonObject values;
+        for (int i = 0; i < limits::kMaxShaderValues + 5; ++i)
+            values[QString::asprintf("u%06d", i)] = QJsonArray{1.0};
+        json["shaderValues"] = values;
+        const SceneFileRead capped = parseSceneFile(QJsonDocument(json).toJson(), QDir(), "x");
+        QCOMPARE(int(capped.file->scene.shaderValues.size()), limits::kMaxShaderValues);
+        QVERIFY2(capped.ignored.join("; ").contains("5 more than the 16384 kept"),
+                 qPrintable(capped.ignored.join("; ")));
     }
 
     void missingFilesAndFoldersAreNamed()
