@@ -129,14 +129,13 @@ private:
 
 } // namespace
 
-QJsonObject probeJson(const ProbeResult &probe, const QImage &frame, QPoint pixel,
+QJsonObject probeJson(const ProbeResult &probe, const glm::ivec3 &gpu, QPoint pixel,
                       const Scene &scene)
 {
-    const QRgb gpu = frame.pixel(pixel);
     QJsonObject o;
     o["pixel"] = QJsonArray{pixel.x(), pixel.y()};
     o["hit"] = probe.hit;
-    o["gpu"] = QJsonArray{qRed(gpu), qGreen(gpu), qBlue(gpu)};
+    o["gpu"] = QJsonArray{gpu.r, gpu.g, gpu.b};
     o["shading"] = toName(scene.shading.shading);
     o["specularModel"] = toName(scene.shading.specular);
     const TermSwitches &on = scene.shading.terms;
@@ -332,6 +331,8 @@ int runHeadless(const CommandLine &cl, const Scene &requested)
         printLine(QJsonDocument(o).toJson(QJsonDocument::Compact), stdout);
     }
 
+    if (cl.probe) // its pixel is read as the frame is drawn, before the light's marker
+        offscreen.renderer().setProbe({}, *cl.probe);
     const QImage frame = offscreen.render(scene);
     phases.mark("frame");
     if (offscreen.wasReset()) { // a GPU's recovery: the frame is no picture
@@ -366,7 +367,11 @@ int runHeadless(const CommandLine &cl, const Scene &requested)
         PixelView view;
         const ProbeResult probe =
             probeFramePixel(scene, offscreen.probedObjects(scene), cl.size, *cl.probe, &view);
-        QJsonObject o = probeJson(probe, frame, *cl.probe, sceneOfSide(scene, view.sideB));
+        const QRgb drawn = frame.pixel(*cl.probe); // the difference view's: no surface read
+        QJsonObject o = probeJson(probe,
+                                  offscreen.renderer().probedColour().value_or(
+                                      glm::ivec3(qRed(drawn), qGreen(drawn), qBlue(drawn))),
+                                  *cl.probe, sceneOfSide(scene, view.sideB));
         if (scene.compare.mode != CompareMode::Off)
             o["side"] = view.sideB ? "B" : "A";
         printLine(QJsonDocument(o).toJson(QJsonDocument::Compact), stdout);

@@ -14,11 +14,12 @@ namespace lb {
 // --fragment) or writing the file failed, and for --check when the program does not link.
 int runHeadless(const CommandLine &commandLine, const Scene &scene);
 
-// The probe's JSON for one pixel: what the GPU drew beside what the reference says.
 // FILE:LINE:COLUMN: error|warning: message (column 0 when the driver gives none).
 QString formatDiagnostic(const Diagnostic &diagnostic, const CommandLine &commandLine);
 
-QJsonObject probeJson(const ProbeResult &probe, const QImage &frame, QPoint pixel,
+// The probe's JSON for one pixel: what the GPU drew there (the surface, read before any
+// overlay) beside what the reference says.
+QJsonObject probeJson(const ProbeResult &probe, const glm::ivec3 &gpu, QPoint pixel,
                       const Scene &scene);
 
 } // namespace lb

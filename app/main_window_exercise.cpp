@@ -3,6 +3,7 @@
 #include "main_window.h"
 
 #include "exercise_panel.h"
+#include "probe_panel.h"
 #include "scene_actions.h"
 #include "shading_panel.h"
 #include "status_line.h"
@@ -96,6 +97,7 @@ void MainWindow::applySideB()
     if (!m_sideBPath.isEmpty()) { // the text as read when chosen (it built then)
         const QString &name = m_sideBName;
         m_viewport->setSideBProgram(m_sideBVertex, m_sideBFragment, name);
+        m_probe->setSideBReference(tr("side B (%1)").arg(name));
         m_shading->setSideB(name,
                             tr("Side B draws %1: it shades as it is written, so these choices do "
                                "nothing. The x button brings back %2.")
@@ -106,6 +108,7 @@ void MainWindow::applySideB()
     if (exerciseProgram) {
         m_viewport->setSideBProgram(e->reference.vertex, e->reference.fragment,
                                     tr("the exercise's reference"));
+        m_probe->setSideBReference(tr("the exercise's reference"));
         m_shading->setSideB(tr("the exercise's reference"),
                             tr("Side B draws the exercise's reference program: it shades as it "
                                "is written, so these choices do nothing."),
@@ -113,6 +116,11 @@ void MainWindow::applySideB()
         return;
     }
     m_viewport->setSideBProgram({}, {});
+    m_probe->setSideBReference(
+        exerciseBuiltIn ? tr("the exercise's reference (built-in, %1 "
+                             "shading, %2 specular)")
+                              .arg(toName(e->reference.shading), toName(e->reference.specular))
+                        : QString());
     if (exerciseBuiltIn) {
         holdSideBToReference();
         m_shading->setSideB(tr("the built-in program, %1 shading and %2 specular (the "

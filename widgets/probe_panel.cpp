@@ -28,12 +28,15 @@ QString vec(const glm::vec3 &v)
         .arg(double(v.z), 0, 'f', 3);
 }
 
-QString rgb255(const glm::vec3 &v)
+glm::ivec3 bytes255(const glm::vec3 &v)
 {
-    return QString("(%1, %2, %3)")
-        .arg(std::lround(v.x * 255.0f))
-        .arg(std::lround(v.y * 255.0f))
-        .arg(std::lround(v.z * 255.0f));
+    return glm::ivec3(std::lround(v.x * 255.0f), std::lround(v.y * 255.0f),
+                      std::lround(v.z * 255.0f));
+}
+
+QString rgb(const glm::ivec3 &c)
+{
+    return QString("(%1, %2, %3)").arg(c.r).arg(c.g).arg(c.b);
 }
 
 QString row(const QString &name, const QString &value)
@@ -73,12 +76,22 @@ void ProbePanel::clear()
     m_point.reset();
     m_result = ProbeResult{};
     m_gpu.reset();
+    m_reference.reset();
+    m_referenceName.clear();
     m_equation.clear();
     m_copyEquation->setEnabled(false);
     m_viewport->setProbe({}, QPoint(-1, -1), {});
     m_text->setText(tr("Ctrl+click (or Shift+click) the surface to probe a point: the "
                        "vectors, N\u00b7L, the specular angle and the three terms, beside the "
                        "pixel the GPU drew. Esc clears it."));
+}
+
+void ProbePanel::setSideBReference(const QString &name)
+{
+    if (name == m_sideBReference)
+        return;
+    m_sideBReference = name;
+    update();
 }
 
 void ProbePanel::setReferenceNote(const QString &note)
@@ -146,7 +159,9 @@ void ProbePanel::update()
     }
     const QPoint pixel = view.topLeft() + QPoint(int(std::floor(m_result.pixel.x())),
                                                  int(std::floor(m_result.pixel.y())));
-    m_viewport->setProbe(std::move(arrows), pixel, std::move(labels));
+    const bool againstProgram =
+        !m_point->sideB && !m_sideBReference.isEmpty() && m_viewport->hasSideBProgram();
+    m_viewport->setProbe(std::move(arrows), pixel, std::move(labels), againstProgram);
 }
 
 void ProbePanel::showText()
@@ -231,16 +246,45 @@ void ProbePanel::showText()
     html += row(tr("ambient"), vec(r.total.ambient));
     html += row(tr("diffuse"), vec(r.total.diffuse));
     html += row(tr("specular"), vec(r.total.specular));
-    html += row(tr("reference"),
-                rgb255(r.reference) + tr(" of 255 (%1 shading)").arg(toName(side.shading.shading)));
-    if (m_gpu && scene.compare.mode != CompareMode::Difference) {
-        const glm::ivec3 ref(std::lround(r.reference.r * 255.0f),
-                             std::lround(r.reference.g * 255.0f),
-                             std::lround(r.reference.b * 255.0f));
-        const glm::ivec3 d = glm::abs(*m_gpu - ref);
+    // What the pixel is compared with: the model with the probed side's choices, or where
+    // side B is side A's reference, what side B draws at this point (its program's pixel, or
+    // the model with its choices); a point drawn by side B's program is the reference itself.
+    const bool sideBProgram = m_viewport->hasSideBProgram();
+    const bool againstSideB = !m_point->sideB && !m_sideBReference.isEmpty();
+    m_reference.reset();
+    m_referenceName.clear();
+    if (againstSideB) {
+        m_referenceName = m_sideBReference;
+        if (sideBProgram) {
+            m_reference = m_viewport->renderer().probedSideBColour();
+        } else if (const Mesh *mesh = m_viewport->renderer().objectMesh(r.object)) {
+            const ProbeResult b = probeSurface(
+                sceneOfSide(scene, true), r.object, *mesh, m_viewport->renderer().texture(r.object),
+                view.size(), m_point->triangle, m_point->barycentric);
+            m_reference = bytes255(b.reference);
+        }
+    } else if (!(m_point->sideB && sideBProgram)) {
+        m_referenceName = tr("the model (%1 shading)").arg(toName(side.shading.shading));
+        m_reference = bytes255(r.reference);
+    }
+    html += row(againstSideB || (m_point->sideB && sideBProgram) ? tr("model") : tr("reference"),
+                rgb(bytes255(r.reference)) +
+                    tr(" of 255 (%1 shading)").arg(toName(side.shading.shading)));
+    if (againstSideB)
         html +=
-            row(tr("GPU drew"), QString("(%1, %2, %3)").arg(m_gpu->r).arg(m_gpu->g).arg(m_gpu->b));
-        html += row(tr("difference"), tr("%1 of 255").arg(std::max({d.r, d.g, d.b})));
+            row(tr("reference"), tr("%1 draws %2")
+                                     .arg(m_referenceName.toHtmlEscaped(),
+                                          m_reference ? rgb(*m_reference) : tr("nothing here")));
+    if (m_gpu && scene.compare.mode != CompareMode::Difference) {
+        html += row(tr("GPU drew"), rgb(*m_gpu));
+        if (m_reference) {
+            const glm::ivec3 d = glm::abs(*m_gpu - *m_reference);
+            html += row(tr("difference"), againstSideB
+                                              ? tr("%1 of 255 from %2")
+                                                    .arg(std::max({d.r, d.g, d.b}))
+                                                    .arg(m_referenceName.toHtmlEscaped())
+                                              : tr("%1 of 255").arg(std::max({d.r, d.g, d.b})));
+        }
     }
     html += "</table>";
     // The equation with the numbers, as the course writes it (also copied by the button).
@@ -250,10 +294,17 @@ void ProbePanel::showText()
                 .arg(tr("The equation at this point"), m_equation.toHtmlEscaped());
     if (!m_referenceNote.isEmpty())
         html += QString("<p><i>%1</i></p>").arg(m_referenceNote.toHtmlEscaped());
-    if (m_point->sideB && m_viewport->hasSideBProgram())
+    if (m_point->sideB && sideBProgram)
         html += QString("<p><i>%1</i></p>")
-                    .arg(tr("Side B draws the exercise's reference program: these numbers are "
-                            "the built-in model's, which that program need not follow."));
+                    .arg(tr("Side B draws %1, the reference: it is compared with nothing here, "
+                            "and these numbers are the built-in model's, which that program "
+                            "need not follow.")
+                             .arg(m_viewport->sideBName().toHtmlEscaped()));
+    else if (againstSideB)
+        html += QString("<p><i>%1</i></p>")
+                    .arg(tr("The pixel is compared with what %1 draws at this point; the numbers "
+                            "above are the built-in model's.")
+                             .arg(m_referenceName.toHtmlEscaped()));
     m_text->setText(html);
 }
 

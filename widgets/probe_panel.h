@@ -37,8 +37,18 @@ public:
     // What the reference does not know about the program on screen ("it computes V =
     // (0,0,1)..."), shown under the numbers; empty for none.
     void setReferenceNote(const QString &note);
-    // The GPU's pixel at the point, once the viewport has drawn it.
+    // The GPU's pixel at the point, once the viewport has drawn it: the surface's, never a
+    // marker's, a normal line's or an arrow's.
     std::optional<glm::ivec3> gpuColour() const { return m_gpu; }
+    // Where side B is side A's reference (an exercise's reference, or a program from files),
+    // its name; empty: the built-in model with the probed side's choices is. A point on side A
+    // is then compared with what that reference draws there (side B's program's pixel, or the
+    // model with side B's choices); a point drawn by side B's program is compared with nothing
+    // (it is the reference).
+    void setSideBReference(const QString &name);
+    // What the GPU's pixel was compared with (0-255) and its name; none when nothing was.
+    std::optional<glm::ivec3> referenceColour() const { return m_reference; }
+    const QString &referenceName() const { return m_referenceName; }
 
 private:
     struct Point
@@ -58,8 +68,8 @@ private:
     QString m_equation;
     std::optional<Point> m_point;
     ProbeResult m_result;
-    std::optional<glm::ivec3> m_gpu;
-    QString m_referenceNote;
+    std::optional<glm::ivec3> m_gpu, m_reference;
+    QString m_referenceNote, m_sideBReference, m_referenceName;
 };
 
 } // namespace lb

@@ -193,9 +193,10 @@ void Viewport::paintGL()
 }
 
 void Viewport::setProbe(std::vector<Renderer::Arrow> arrows, QPoint pixel,
-                        std::vector<ProbeLabel> labels)
+                        std::vector<ProbeLabel> labels, bool againstSideB)
 {
     m_renderer.setProbe(std::move(arrows), pixel);
+    m_renderer.setProbeAgainstSideB(againstSideB);
     m_labels->setLabels(std::move(labels));
     update();
 }

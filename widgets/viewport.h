@@ -30,9 +30,10 @@ public:
 
     void resetCamera();
     // The probe's arrows and their names (probe_labels.h), and the pixel whose colour the
-    // next frame reads back (renderer().probedColour()).
-    void setProbe(std::vector<Renderer::Arrow> arrows, QPoint pixel,
-                  std::vector<ProbeLabel> labels);
+    // next frame reads back (renderer().probedColour()); `againstSideB`: also the colour side
+    // B's program draws there (renderer().probedSideBColour()).
+    void setProbe(std::vector<Renderer::Arrow> arrows, QPoint pixel, std::vector<ProbeLabel> labels,
+                  bool againstSideB = false);
     ProbeLabels *probeLabels() const { return m_labels; }
     // The scene as the viewport draws it, rendered offscreen at any size (Export Image), the
     // probe's names included; a null image when there is no OpenGL.
@@ -62,6 +63,7 @@ public:
     ProgramBuild setSideBProgram(const QString &vertexSource, const QString &fragmentSource,
                                  const QString &name = {});
     bool hasSideBProgram() const { return !m_sideBVertex.isEmpty(); }
+    const QString &sideBName() const { return m_sideBName; }
 
     // Builds the user's program (now, or once the context exists) and reports it through
     // programBuilt(). When it fails, the last good program keeps drawing under a banner.

@@ -274,12 +274,21 @@ void Renderer::render(const Scene &scene, QSize pixels)
     uploadObjects();
     const QRect whole(QPoint(0, 0), pixels);
     glEnable(GL_SCISSOR_TEST);
+    m_probedColour.reset();
+    m_probedSideB.reset();
+    // The probe's pixel is read in the view that holds it, once its surfaces are drawn and
+    // before any overlay: a marker, a normal line or an arrow over the point is not the
+    // surface. (The difference view's sides are no picture of a surface at that pixel.)
+    m_readingProbe = scene.compare.mode != CompareMode::Difference;
     if (scene.compare.mode == CompareMode::Off)
         drawView(scene, objectProgram(scene), whole, whole, pixels.height());
     else if (scene.compare.mode == CompareMode::Difference)
         drawDifference(scene, pixels);
     else
         drawSides(scene, pixels);
+    m_readingProbe = false;
+    if (m_probeAgainstSideB && scene.compare.mode != CompareMode::Difference)
+        readSideBAtProbe(scene, pixels);
     glDisable(GL_SCISSOR_TEST);
     drawProbe(scene, pixels);
     glUseProgram(0);
@@ -320,6 +329,9 @@ void Renderer::drawView(const Scene &scene, const BuiltProgram &program, QRect v
 
     const float aspect = float(view.width()) / float(view.height());
     drawObjects(scene, program, aspect);
+    if (m_readingProbe && clip.contains(m_probePixel))
+        m_probedColour = readPixel(m_probePixel, frameHeight);
+    drawNormalLines(scene, aspect);
 
     // A program that hard-codes its light (the slides' constants) gets no marker at the
     // panel's position, where its light is not.
@@ -355,9 +367,56 @@ void Renderer::drawObjects(const Scene &scene, const BuiltProgram &program, floa
         glDisable(GL_CULL_FACE);
         glFrontFace(GL_CCW);
         glBindTexture(GL_TEXTURE_2D, 0);
-        if (object.showNormals)
-            m_overlays.drawNormals(*this, o.gpu, scene, frames);
     }
+}
+
+void Renderer::drawNormalLines(const Scene &scene, float aspect)
+{
+    const int count = std::min(int(scene.objects.size()), int(m_objects.size()));
+    for (int i = 0; i < count; ++i) {
+        const ObjectSettings &object = scene.objects[std::size_t(i)];
+        const GpuObject &o = *m_objects[std::size_t(i)];
+        if (object.visible && object.showNormals && o.gpu.hasTriangles())
+            m_overlays.drawNormals(*this, o.gpu, scene, computeFrames(scene, aspect, i));
+    }
+}
+
+glm::ivec3 Renderer::readPixel(QPoint framePixel, int frameHeight)
+{
+    std::uint8_t rgba[4] = {0, 0, 0, 0};
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(framePixel.x(), frameHeight - 1 - framePixel.y(), 1, 1, GL_RGBA, GL_UNSIGNED_BYTE,
+                 rgba);
+    return glm::ivec3(rgba[0], rgba[1], rgba[2]);
+}
+
+void Renderer::readSideBAtProbe(const Scene &scene, QSize pixels)
+{
+    const QRect view = viewRect(scene, pixels, false);
+    if (!m_sideB.program || !view.contains(m_probePixel))
+        return;
+    // Side B's program over side A's view, in a framebuffer of the frame's size (gl_FragCoord
+    // as on screen), drawn only at the probe's pixel: the pixel the reference draws there.
+    GLint target = 0;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
+    if (!m_probeFbo || m_probeFbo->size() != pixels) {
+        QOpenGLFramebufferObjectFormat format;
+        format.setAttachment(QOpenGLFramebufferObject::Depth);
+        m_probeFbo = std::make_unique<QOpenGLFramebufferObject>(pixels, format);
+    }
+    m_probeFbo->bind();
+    const int height = pixels.height();
+    setViewport(*this, view, height);
+    glScissor(m_probePixel.x(), height - 1 - m_probePixel.y(), 1, 1);
+    glClearColor(kBackgroundRgb[0], kBackgroundRgb[1], kBackgroundRgb[2], 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    drawObjects(sceneOfSide(scene, true), m_sideB, float(view.width()) / float(view.height()));
+    glDisable(GL_DEPTH_TEST);
+    m_probedSideB = readPixel(m_probePixel, height);
+    glBindFramebuffer(GL_FRAMEBUFFER, GLuint(target));
+    setViewport(*this, QRect(QPoint(0, 0), pixels), pixels.height());
 }
 
 void Renderer::setProbe(std::vector<Arrow> arrows, QPoint framePixel)
@@ -368,14 +427,6 @@ void Renderer::setProbe(std::vector<Arrow> arrows, QPoint framePixel)
 
 void Renderer::drawProbe(const Scene &scene, QSize pixels)
 {
-    m_probedColour.reset();
-    const QPoint p = m_probePixel;
-    if (p.x() >= 0 && p.y() >= 0 && p.x() < pixels.width() && p.y() < pixels.height()) {
-        std::uint8_t rgba[4] = {0, 0, 0, 0};
-        glPixelStorei(GL_PACK_ALIGNMENT, 1);
-        glReadPixels(p.x(), pixels.height() - 1 - p.y(), 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
-        m_probedColour = glm::ivec3(rgba[0], rgba[1], rgba[2]);
-    }
     if (m_probeArrows.empty())
         return;
     const bool split = scene.compare.mode == CompareMode::SideBySide;

@@ -45,11 +45,17 @@ public:
     // a comparison (compare.h) side by side, across a wipe, or as their difference.
     void render(const Scene &scene, QSize pixels);
     // The probe's arrows, drawn over every view (no depth test: they stay visible), and the
-    // frame pixel whose colour render() reads back before drawing them (none: x < 0).
+    // frame pixel whose colour render() reads back (none: x < 0): the surface's, read before
+    // the light markers, normal lines and arrows are drawn over it.
     using Arrow = ProbeArrow;
     void setProbe(std::vector<Arrow> arrows, QPoint framePixel);
     // The colour render() read at the probe's pixel (0-255), if it read one.
     std::optional<glm::ivec3> probedColour() const { return m_probedColour; }
+    // Where side B is a program (an exercise's reference, files), render() also draws it over
+    // side A's view at the probe's pixel: what the reference draws at the point probed on
+    // side A, to compare like with like.
+    void setProbeAgainstSideB(bool on) { m_probeAgainstSideB = on; }
+    std::optional<glm::ivec3> probedSideBColour() const { return m_probedSideB; }
 
     // What the last difference view measured (valid only after one was drawn).
     const DifferenceStats &difference() const { return m_difference; }
@@ -125,6 +131,9 @@ private:
     void uploadObjects();
     // The objects of `scene`, each with its own matrices, material and texture.
     void drawObjects(const Scene &scene, const BuiltProgram &program, float aspect);
+    void drawNormalLines(const Scene &scene, float aspect); // the objects' that show them
+    glm::ivec3 readPixel(QPoint framePixel, int frameHeight);
+    void readSideBAtProbe(const Scene &scene, QSize pixels);
     // One side: cleared and drawn in `view` (top-left origin in a frame `frameHeight` high),
     // only inside `clip`.
     void drawView(const Scene &scene, const BuiltProgram &program, QRect view, QRect clip,
@@ -161,7 +170,10 @@ private:
     DifferenceStats m_difference;
     std::vector<Arrow> m_probeArrows;
     QPoint m_probePixel{-1, -1};
-    std::optional<glm::ivec3> m_probedColour;
+    bool m_readingProbe = false; // while render() draws the views the user sees
+    bool m_probeAgainstSideB = false;
+    std::optional<glm::ivec3> m_probedColour, m_probedSideB;
+    std::unique_ptr<QOpenGLFramebufferObject> m_probeFbo; // side B at the probe's pixel
 };
 
 } // namespace lb

@@ -82,6 +82,23 @@ private slots:
         QCOMPARE(QJsonDocument::fromJson(miss.out).object()["hit"].toBool(true), false);
     }
 
+    // The probe reads the surface, not the light's marker drawn over it: a point light in the
+    // camera frame between the eye and the sphere sits on the middle pixel (the frame shows
+    // the marker there), and the probe still agrees with the reference.
+    void probeReadsTheSurfaceUnderTheMarker()
+    {
+        const QString png = m_dir.filePath("marker.png");
+        const Run r = run({"--probe", "100,75", "--size", "200x150", "--frame", "camera", "--light",
+                           "0,0,-2.5,1", "--kd", "0,0.4,0", "--ks", "0,0,0", "--render",
+                           png}); // a dark green surface under a white marker
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        const QJsonObject o = QJsonDocument::fromJson(r.out).object();
+        QVERIFY(o["hit"].toBool());
+        QVERIFY2(o["maxDifference"].toInt() <= 2, r.out.constData());
+        const QRgb shown = QImage(png).pixel(100, 75);
+        QVERIFY2(std::abs(qBlue(shown) - o["gpu"][2].toInt()) > 100, "no marker over the pixel");
+    }
+
     // --object twice: the probe names the object it hits, 0 for the first.
     void probeNamesTheObjectHit()
     {

@@ -1,6 +1,7 @@
 // Exercises in the window: the Exercise panel, Check my work (the cases listed, a click showing
 // one in the difference view) and what side B of the compare views draws.
 #include "exercise_panel.h"
+#include "probe_panel.h"
 #include "window_fixture.h"
 #include "work_check.h"
 
@@ -297,6 +298,62 @@ private slots:
         QVERIFY(!m_window->workCheck()->isRunning());
         QCOMPARE(m_window->exercisePanel()->summaryLabel()->text(), QString("Check cancelled."));
         QVERIFY(!done.wait(3000));
+    }
+
+    // The probe in an exercise compares like with like: with the correct answer in the editor
+    // (Check My Work: every case passed) it said "difference 104 of 255", measured against
+    // the built-in model with the panels' values, which the exercise's reference does not
+    // draw. Now a point on the student's program is compared with the pixel the reference
+    // draws there; a point on side B (the reference itself) with nothing.
+    void theProbeComparesWithTheExercisesReference()
+    {
+        QVERIFY(m_window->sceneActions()->open(exerciseFile(4)));
+        setFragment(readText(LB_TEST_DATA "/grading/correct/lighting.frag"));
+        frame();
+        Viewport *v = m_window->viewport();
+        ProbePanel *probe = m_window->probePanel();
+        // The first probe brings its panel forward, which resizes the view.
+        QTest::mouseClick(v, Qt::LeftButton, Qt::ControlModifier, v->rect().center());
+        frame();
+        // Where the exercise's sphere (left, its highlight) and cube (right) are.
+        const auto at = [v](double x, double y) {
+            return QPoint(int(v->width() * x), int(v->height() * y));
+        };
+        for (const QPoint point : {at(0.35, 0.47), at(0.3, 0.55), at(0.7, 0.55)}) {
+            QTest::mouseClick(v, Qt::LeftButton, Qt::ControlModifier, point);
+            frame();
+            frame();
+            QTRY_VERIFY2(probe->gpuColour() && probe->referenceColour(),
+                         qPrintable(probe->textLabel()->text()));
+            const QString text = probe->textLabel()->text();
+            QVERIFY2(probe->referenceName() == "the exercise's reference", qPrintable(text));
+            const glm::ivec3 d = glm::abs(*probe->gpuColour() - *probe->referenceColour());
+            QVERIFY2(std::max({d.r, d.g, d.b}) <= 2, qPrintable(text));
+            QVERIFY2(text.contains("from the exercise's reference"), qPrintable(text));
+        }
+        // A wrong answer differs from the reference there, and the probe says so.
+        setFragment(readText(LB_TEST_DATA "/grading/reflect_sign.frag"));
+        int largest = 0;
+        for (const QPoint point : {at(0.35, 0.47), at(0.3, 0.42), at(0.4, 0.52)}) {
+            QTest::mouseClick(v, Qt::LeftButton, Qt::ControlModifier, point);
+            frame();
+            frame();
+            QTRY_VERIFY(probe->gpuColour() && probe->referenceColour());
+            const glm::ivec3 d = glm::abs(*probe->gpuColour() - *probe->referenceColour());
+            largest = std::max({largest, d.r, d.g, d.b});
+        }
+        QVERIFY2(largest > 10, qPrintable(probe->textLabel()->text()));
+
+        // Side by side: a point on side B is the reference itself, compared with nothing.
+        m_window->document().edit([](Scene &s) { s.compare.mode = CompareMode::SideBySide; });
+        frame();
+        QTest::mouseClick(v, Qt::LeftButton, Qt::ControlModifier, at(0.67, 0.49)); // B's sphere
+        frame();
+        frame();
+        QTRY_VERIFY(probe->gpuColour());
+        QVERIFY(!probe->referenceColour());
+        QVERIFY2(!probe->textLabel()->text().contains("difference"),
+                 qPrintable(probe->textLabel()->text()));
     }
 };
 

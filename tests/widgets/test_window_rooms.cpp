@@ -532,6 +532,44 @@ private slots:
         m_window->document().edit([](Scene &s) { s.showLight = true; });
         QVERIFY(imageDifference(frame(), without) > 50);
     }
+
+    // The probe reads the surface, never an overlay drawn over it: a point light's marker
+    // between the eye and the sphere (a random sweep hit a spotlight's cone rays: "GPU 255,185,
+    // 175 vs reference 4,3,7"), its normal lines, the probe's own arrows.
+    void theProbeReadsTheSurfaceUnderTheOverlays()
+    {
+        m_window->document().edit([](Scene &s) {
+            Light &light = s.lights[0];
+            light.frame = LightFrame::Camera;
+            light.position = glm::vec4(0.0f, 0.0f, -2.5f, 1.0f); // in front of the sphere
+            light.spot.cutoffDegrees = 40.0f;                    // the marker's rays too
+            s.showLight = true;
+            s.objects[0].showNormals = true;
+        });
+        Viewport *v = m_window->viewport();
+        ProbePanel *probe = m_window->probePanel();
+        // The first probe brings its panel forward, which resizes the view: probe again then.
+        QTest::mouseClick(v, Qt::LeftButton, Qt::ControlModifier, v->rect().center());
+        frame();
+        QTest::mouseClick(v, Qt::LeftButton, Qt::ControlModifier, v->rect().center());
+        frame();
+        const QImage shown = frame();
+        QTRY_VERIFY(probe->gpuColour() && probe->referenceColour());
+        const QString text = probe->textLabel()->text();
+        const glm::ivec3 gpu = *probe->gpuColour();
+        const glm::ivec3 d = glm::abs(gpu - *probe->referenceColour());
+        QVERIFY2(std::max({d.r, d.g, d.b}) <= 2, qPrintable(text));
+        // The marker does cover that pixel on screen.
+        const QPoint pixel(int(std::floor(probe->result().pixel.x())),
+                           int(std::floor(probe->result().pixel.y())));
+        const QRgb over = shown.pixel(pixel);
+        const int covered = std::max({std::abs(qRed(over) - gpu.r), std::abs(qGreen(over) - gpu.g),
+                                      std::abs(qBlue(over) - gpu.b)});
+        QVERIFY2(covered > 20, qPrintable(QString("the marker is not over the probed pixel"
+                                                  " (%1 there, the surface %2)")
+                                              .arg(covered)
+                                              .arg(qRed(over))));
+    }
 };
 
 LB_WINDOW_TEST_MAIN(TestWindowRooms)
