@@ -17,6 +17,7 @@
 
 #include <QApplication>
 #include <QGuiApplication>
+#include <QLocale>
 #include <QSettings>
 #include <QTimer>
 
@@ -95,6 +96,12 @@ int main(int argc, char **argv)
         return lb::runHeadless(cl, scene);
     }
 
+    // The window's language is English (its strings are), so its numbers are written the
+    // English way, 1.80 as the probe, the equation and the shaders write them, whatever LANG
+    // says; the number boxes read a point and a comma alike (number_box.h). Issue 31's
+    // language setting replaces this line. Machine output never depends on it: the headless
+    // runs above keep the system's locale, and write numbers with QString::number and JSON.
+    QLocale::setDefault(QLocale(QLocale::English, QLocale::UnitedStates));
     QApplication app(argc, argv);
     QSettings settings;
     lb::MainWindow window(settings);

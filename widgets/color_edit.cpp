@@ -1,7 +1,8 @@
 #include "color_edit.h"
 
+#include "number_box.h"
+
 #include <QColorDialog>
-#include <QDoubleSpinBox>
 #include <QHBoxLayout>
 #include <QSignalBlocker>
 #include <QToolButton>
@@ -21,13 +22,12 @@ ColorEdit::ColorEdit(const QString &symbol, QWidget *parent) : QWidget(parent), 
     layout->addWidget(m_swatch);
     const char *names[3] = {"R", "G", "B"};
     for (int i = 0; i < 3; ++i) {
-        auto *spin = new QDoubleSpinBox(this);
+        auto *spin = new NumberBox(this);
         spin->setRange(0.0, 1.0);
         spin->setDecimals(2);
         spin->setSingleStep(0.05);
         spin->setToolTip(tr("%1, %2 channel (0 to 1)").arg(symbol, names[i]));
         spin->setAccessibleName(QString("%1.%2").arg(symbol, names[i]));
-        spin->setKeyboardTracking(false);
         connect(spin, &QDoubleSpinBox::valueChanged, this, [this] {
             updateSwatch();
             emit colorChanged(color());

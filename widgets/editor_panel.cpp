@@ -1,5 +1,6 @@
 #include "editor_panel.h"
 
+#include "number_box.h"
 #include "presets.h"
 #include "shader_editor.h"
 
@@ -66,7 +67,7 @@ EditorPanel::EditorPanel(ShaderDocument *document, QWidget *parent)
     m_live->setChecked(true);
     m_live->setToolTip(tr("Recompile after a pause in typing; off: only on Ctrl+Enter"));
     bar->addWidget(m_live);
-    m_delay = new QSpinBox(this);
+    m_delay = new IntegerBox(this);
     m_delay->setRange(0, 5000);
     m_delay->setSingleStep(50);
     m_delay->setSuffix(tr(" ms"));

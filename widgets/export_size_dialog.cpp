@@ -4,7 +4,6 @@
 #include <QFormLayout>
 #include <QLabel>
 #include <QPushButton>
-#include <QSpinBox>
 
 namespace lb {
 
@@ -13,7 +12,7 @@ ExportSizeDialog::ExportSizeDialog(QSize initial, QWidget *parent) : QDialog(par
     setWindowTitle(tr("Export Image"));
     auto *form = new QFormLayout(this);
     auto spin = [this](int value) {
-        auto *box = new QSpinBox(this);
+        auto *box = new IntegerBox(this);
         box->setRange(1, kMaxSide);
         box->setSuffix(tr(" px"));
         box->setValue(value);
@@ -29,6 +28,12 @@ ExportSizeDialog::ExportSizeDialog(QSize initial, QWidget *parent) : QDialog(par
     connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
     form->addRow(buttons);
+}
+
+void ExportSizeDialog::accept()
+{
+    if (m_width->takeTyped() && m_height->takeTyped())
+        QDialog::accept();
 }
 
 QSize ExportSizeDialog::size() const

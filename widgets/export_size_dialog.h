@@ -1,10 +1,10 @@
 #pragma once
 // Export Image's question: how many pixels wide and high (the viewport's size to start with).
 
+#include "number_box.h"
+
 #include <QDialog>
 #include <QSize>
-
-class QSpinBox;
 
 namespace lb {
 
@@ -17,10 +17,11 @@ public:
     QSize size() const;
     QSpinBox *widthBox() const { return m_width; }
     QSpinBox *heightBox() const { return m_height; }
+    void accept() override; // not while a box holds a number it would not take
 
 private:
-    QSpinBox *m_width;
-    QSpinBox *m_height;
+    IntegerBox *m_width;
+    IntegerBox *m_height;
 };
 
 } // namespace lb

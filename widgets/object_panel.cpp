@@ -1,5 +1,6 @@
 #include "object_panel.h"
 
+#include "number_box.h"
 #include "texture_controls.h"
 
 #include <QCheckBox>
@@ -112,9 +113,8 @@ ObjectPanel::ObjectPanel(SceneDocument *document, QWidget *parent)
     shapeRow->addWidget(open);
     form->addRow(tr("Shape"), shapeRow);
 
-    m_tessellation = new QSpinBox(this);
+    m_tessellation = new IntegerBox(this);
     m_tessellation->setRange(limits::kMinTessellation, limits::kMaxTessellation);
-    m_tessellation->setKeyboardTracking(false);
     m_tessellation->setToolTip(tr("Subdivisions of the sphere, torus and plane. Few vertices "
                                   "show Gouraud's weakness: its highlight follows the vertices"));
     connect(m_tessellation, &QSpinBox::valueChanged, this,

@@ -1,11 +1,9 @@
 #include "preferences_dialog.h"
 
 #include <QDialogButtonBox>
-#include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QLabel>
 #include <QPushButton>
-#include <QSpinBox>
 
 namespace lb {
 
@@ -22,7 +20,7 @@ PreferencesDialog::PreferencesDialog(const ImportLimits &limits, double frameBud
     intro->setWordWrap(true);
     form->addRow(intro);
 
-    m_memory = new QSpinBox(this);
+    m_memory = new IntegerBox(this);
     m_memory->setRange(64, int(std::min<qint64>(ImportLimits::defaultMemoryMB() * 2, 1 << 30)));
     m_memory->setSingleStep(256);
     m_memory->setSuffix(tr(" MB"));
@@ -31,14 +29,14 @@ PreferencesDialog::PreferencesDialog(const ImportLimits &limits, double frameBud
                              .arg(ImportLimits::defaultMemoryMB()));
     form->addRow(tr("Import memory limit"), m_memory);
 
-    m_time = new QSpinBox(this);
+    m_time = new IntegerBox(this);
     m_time->setRange(1, 3600);
     m_time->setSuffix(tr(" s"));
     m_time->setToolTip(
         tr("A load that takes longer is stopped. Default: %1 s").arg(ImportLimits{}.seconds));
     form->addRow(tr("Import time limit"), m_time);
 
-    m_budget = new QDoubleSpinBox(this);
+    m_budget = new NumberBox(this);
     m_budget->setRange(0.05, 60.0);
     m_budget->setDecimals(2);
     m_budget->setSingleStep(0.25);
@@ -62,6 +60,12 @@ PreferencesDialog::PreferencesDialog(const ImportLimits &limits, double frameBud
             });
     form->addRow(buttons);
     showLimits(limits);
+}
+
+void PreferencesDialog::accept()
+{
+    if (m_memory->takeTyped() && m_time->takeTyped() && m_budget->takeTyped())
+        QDialog::accept();
 }
 
 void PreferencesDialog::showLimits(const ImportLimits &limits)

@@ -3,11 +3,9 @@
 // user's program must keep (program_trial.h).
 
 #include "import_process.h"
+#include "number_box.h"
 
 #include <QDialog>
-
-class QDoubleSpinBox;
-class QSpinBox;
 
 namespace lb {
 
@@ -23,12 +21,14 @@ public:
     QSpinBox *memoryBox() const { return m_memory; }
     QSpinBox *timeBox() const { return m_time; }
 
+    void accept() override; // not while a box holds a number it would not take
+
 private:
     void showLimits(const ImportLimits &limits);
 
-    QSpinBox *m_memory;
-    QSpinBox *m_time;
-    QDoubleSpinBox *m_budget;
+    IntegerBox *m_memory;
+    IntegerBox *m_time;
+    NumberBox *m_budget;
 };
 
 } // namespace lb

@@ -3,7 +3,6 @@
 #include <QAbstractScrollArea>
 #include <QComboBox>
 #include <QCoreApplication>
-#include <QDoubleSpinBox>
 #include <QEvent>
 #include <QFormLayout>
 #include <QPushButton>
@@ -19,16 +18,15 @@ ScenePanel::ScenePanel(SceneDocument *document, SceneParts shown, QWidget *paren
     });
 }
 
-QDoubleSpinBox *ScenePanel::makeSpin(double lo, double hi, int decimals, double step,
-                                     const QString &toolTip)
+NumberBox *ScenePanel::makeSpin(double lo, double hi, int decimals, double step,
+                                const QString &toolTip)
 {
-    auto *spin = new QDoubleSpinBox(this);
+    auto *spin = new NumberBox(this); // 2.5 and 2,5 alike; edits once, not per key typed
     spin->setRange(lo, hi);
     spin->setDecimals(decimals);
     spin->setSingleStep(step);
     spin->setToolTip(toolTip);
     spin->setAccessibleName(toolTip.section(':', 0, 0));
-    spin->setKeyboardTracking(false); // typing "1.25" edits once, not four times
     // The wheel scrolls the panel over a spin box it passes; it edits one clicked first.
     spin->setFocusPolicy(Qt::StrongFocus);
     spin->installEventFilter(this);

@@ -2,6 +2,7 @@
 // Base of the dock panels: each edits the SceneDocument and shows its values again whenever
 // the document changes (from the panel itself, another panel, the camera or a reset).
 
+#include "number_box.h"
 #include "scene_document.h"
 #include "semantics.h"
 
@@ -11,7 +12,6 @@
 #include <set>
 #include <vector>
 
-class QDoubleSpinBox;
 class QComboBox;
 class QFormLayout;
 
@@ -43,8 +43,7 @@ protected:
     void refreshNow() { refresh(m_document->scene()); }
     template <typename F> void edit(F &&change) { m_document->edit(std::forward<F>(change)); }
 
-    QDoubleSpinBox *makeSpin(double lo, double hi, int decimals, double step,
-                             const QString &toolTip);
+    NumberBox *makeSpin(double lo, double hi, int decimals, double step, const QString &toolTip);
     QComboBox *makeCombo(const QStringList &labels, const QString &toolTip);
     // A "Reset ..." button at the bottom of the panel that applies `reset` to the scene.
     void addResetButton(QFormLayout *form, const QString &text, const QString &toolTip,

@@ -1,6 +1,7 @@
 #include "uniform_panel.h"
 
 #include "color_edit.h"
+#include "number_box.h"
 
 #include <QCheckBox>
 #include <QDoubleSpinBox>
@@ -99,7 +100,7 @@ void UniformPanel::addControl(const ActiveUniform &u)
         row->addWidget(colour);
         QDoubleSpinBox *alpha = nullptr;
         if (n == 4) {
-            alpha = new QDoubleSpinBox(field);
+            alpha = new NumberBox(field);
             alpha->setRange(0, 1);
             alpha->setSingleStep(0.05);
             alpha->setToolTip(tr("%1.a").arg(name));
@@ -137,17 +138,16 @@ void UniformPanel::addControl(const ActiveUniform &u)
         for (int i = 0; i < n; ++i) {
             QAbstractSpinBox *box;
             if (u.isInteger()) {
-                auto *spin = new QSpinBox(field);
+                auto *spin = new IntegerBox(field);
                 spin->setRange(-1000000, 1000000);
                 box = spin;
             } else {
-                auto *spin = new QDoubleSpinBox(field);
+                auto *spin = new NumberBox(field);
                 spin->setRange(-1e6, 1e6);
                 spin->setDecimals(3);
                 spin->setSingleStep(0.1);
                 box = spin;
             }
-            box->setKeyboardTracking(false);
             row->addWidget(box);
             boxes.push_back(box);
         }

@@ -10,6 +10,7 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
+#include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -120,6 +121,47 @@ private slots:
             QCOMPARE(o["object"].toInt(-1), i);
             QVERIFY(o["maxDifference"].toInt(99) <= 2);
         }
+    }
+
+    // Issue 28: what lightbench writes for machines uses a point whatever the locale: the
+    // probe's JSON and a saved scene are the same bytes under German or Portuguese as under
+    // C (Qt reads LANG itself, though only C and POSIX are installed here).
+    void machineOutputIsTheSameInEveryLocale_data()
+    {
+        QTest::addColumn<QString>("locale");
+        QTest::newRow("de_DE") << "de_DE.UTF-8";
+        QTest::newRow("pt_PT") << "pt_PT.UTF-8";
+    }
+    void machineOutputIsTheSameInEveryLocale()
+    {
+        QFETCH(QString, locale);
+        const auto in = [](const QString &name) {
+            QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+            env.remove("LC_NUMERIC");
+            env.insert("LC_ALL", name);
+            env.insert("LANG", name);
+            return env;
+        };
+        const QStringList probe{"--probe",      "400,300", "--light", "0.5,1.8,1.3,1",
+                                "--shininess",  "12.5",    "--kd",    "0.25,0.5,0.75",
+                                "--show-light", "off"};
+        const Run c = run(probe, in("C")), local = run(probe, in(locale));
+        QVERIFY2(c.exitCode == 0 && local.exitCode == 0, local.err.constData());
+        QCOMPARE(local.out, c.out);
+        QVERIFY(QJsonDocument::fromJson(local.out).object()["hit"].toBool());
+        QVERIFY2(QRegularExpression("\\d\\.\\d").match(QString(local.out)).hasMatch(),
+                 local.out.constData());
+
+        const QString cScene = m_dir.filePath("c.json"), localScene = m_dir.filePath("local.json");
+        const QStringList options{"--light", "0.5,1.8,1.3,1", "--shininess",
+                                  "12.5",    "--kd",          "0.25,0.5,0.75"};
+        QCOMPARE(run(QStringList{"--save-scene", cScene} + options, in("C")).exitCode, 0);
+        QCOMPARE(run(QStringList{"--save-scene", localScene} + options, in(locale)).exitCode, 0);
+        QFile a(cScene), b(localScene);
+        QVERIFY(a.open(QIODevice::ReadOnly) && b.open(QIODevice::ReadOnly));
+        const QByteArray saved = b.readAll();
+        QCOMPARE(saved, a.readAll());
+        QVERIFY2(saved.contains("12.5"), saved.constData());
     }
 
     void savedSceneRendersTheSameFrame()

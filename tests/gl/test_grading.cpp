@@ -13,6 +13,7 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
+#include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -212,6 +213,38 @@ private slots:
         }
         QCOMPARE(reports[0], reports[1]);
         QVERIFY(reports[0] != reports[2]); // other cases, other numbers
+    }
+
+    // Issue 28: the CSV report and the summary lines are the same bytes under German or
+    // Portuguese as under C: a point in every number (Qt reads LANG itself).
+    void theReportIsTheSameInEveryLocale()
+    {
+        QList<QByteArray> reports, outs;
+        for (const char *locale : {"C", "de_DE.UTF-8", "pt_PT.UTF-8"}) {
+            QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+            env.remove("LC_NUMERIC");
+            env.insert("LC_ALL", locale);
+            env.insert("LANG", locale);
+            const QString report = m_dir.filePath(QString("locale%1.csv").arg(reports.size()));
+            const Run r = run({"--grade", kData + "/reflect_sign.vert", "--exercise", kExercise,
+                               "--seed", "7", "--report", report},
+                              env);
+            QVERIFY2(r.exitCode == 0, r.err.constData());
+            QFile f(report);
+            QVERIFY(f.open(QIODevice::ReadOnly));
+            reports << f.readAll();
+            outs << r.out;
+        }
+        QCOMPARE(reports[1], reports[0]);
+        QCOMPARE(reports[2], reports[0]);
+        QCOMPARE(outs[1], outs[0]);
+        QCOMPARE(outs[2], outs[0]);
+        const QList<QStringList> rows = csvRows(m_dir.filePath("locale1.csv"));
+        QCOMPARE(rows.size(), 2);
+        QVERIFY2(QRegularExpression("^\\d+\\.\\d{4}$").match(rows[1][5]).hasMatch(),
+                 qPrintable(rows[1][5])); // mean_share_within
+        QVERIFY2(QRegularExpression("\\d\\.\\d%").match(QString(outs[1])).hasMatch(),
+                 outs[1].constData()); // "... 41.2% of pixels ..."
     }
 
     // A submission given as a scene file with a program is graded like a pair.

@@ -6,6 +6,7 @@
 #include "probe.h"
 #include "probe_equation.h"
 
+#include <QRegularExpression>
 #include <QTest>
 
 #include <cmath>
@@ -117,6 +118,24 @@ private slots:
         QCOMPARE(outside.lights[0].terms.spot, 0.0f);
         QCOMPARE(outside.total.ambient + outside.total.diffuse + outside.total.specular,
                  glm::vec3(0.0f));
+    }
+
+    // Issue 28: Copy the Equation gives the same text under a German default locale: its
+    // numbers keep their points, as the probe, the JSON and the shaders write them.
+    void numbersKeepTheirPointsInEveryLocale()
+    {
+        Scene s;
+        s.objects[0].material.shininess = 12.5f;
+        const QString c = lightingEquation(s, probe(s));
+        const QLocale old;
+        QLocale::setDefault(QLocale("de_DE"));
+        const QString german = lightingEquation(s, probe(s));
+        QLocale::setDefault(QLocale("pt_PT"));
+        const QString portuguese = lightingEquation(s, probe(s));
+        QLocale::setDefault(old);
+        QCOMPARE(german, c);
+        QCOMPARE(portuguese, c);
+        QVERIFY(c.contains("^12.5") && c.contains(QRegularExpression("\\d\\.\\d{4}")));
     }
 
     void saysWhatThePixelIsNot()

@@ -10,6 +10,7 @@
 #include <QComboBox>
 #include <QDropEvent>
 #include <QLabel>
+#include <QLineEdit>
 #include <QListWidget>
 #include <QMimeData>
 #include <QPushButton>
@@ -129,6 +130,59 @@ private slots:
                             Qt::NoModifier, Qt::NoScrollPhase, false);
         QCoreApplication::sendEvent(kc, &focused);
         QVERIFY(kc->value() != before); // clicked first: the wheel edits it
+    }
+
+    // Issue 28: under a German or Portuguese default locale, 2.5 typed into the light's x is
+    // two and a half (German read the point as a thousands separator: 25), and so is 2,5;
+    // the boxes show the locale's comma; text with both separators moves nothing.
+    void typedNumbersAreReadAsMeant_data()
+    {
+        QTest::addColumn<QString>("locale");
+        QTest::addColumn<QString>("typed");
+        for (const char *locale : {"de_DE", "pt_PT"})
+            for (const char *typed : {"2.5", "2,5"})
+                QTest::addRow("%s %s", locale, typed) << locale << typed;
+    }
+    void typedNumbersAreReadAsMeant()
+    {
+        QFETCH(QString, locale);
+        QFETCH(QString, typed);
+        struct Restore
+        {
+            QLocale old;
+            ~Restore() { QLocale::setDefault(old); }
+        } restore;
+        QLocale::setDefault(QLocale(locale));
+        cleanup();
+        init(); // a window made under that default, as a German desktop makes it
+        const auto type = [](QAbstractSpinBox *box, const QString &text) {
+            box->setFocus();
+            box->selectAll();
+            QTest::keyClicks(box, text);
+            QTest::keyClick(box, Qt::Key_Return);
+        };
+        const auto shown = [](QAbstractSpinBox *box) {
+            return box->findChild<QLineEdit *>()->text();
+        };
+
+        QDoubleSpinBox *x = m_window->lightPanel()->coordinate(0);
+        type(x, typed);
+        QCOMPARE(scene().lights[0].position.x, 2.5f);
+        QCOMPARE(shown(x), QString("2,50"));
+        type(x, "1.000,5"); // neither 1000.5 nor 10005 nor 1
+        QCOMPARE(scene().lights[0].position.x, 2.5f);
+        QCOMPARE(shown(x), QString("1.000,5")); // kept as typed, in red with the reason
+
+        QDoubleSpinBox *green = m_window->materialPanel()->colorEdit(1)->channel(1);
+        type(green, QString(typed).replace('2', '0')); // 0.5 or 0,5
+        QCOMPARE(scene().objects[0].material.kd.g, 0.5f);
+        QCOMPARE(shown(green), QString("0,50"));
+
+        QSpinBox *tessellation = m_window->objectPanel()->tessellationBox();
+        const int subdivisions = scene().objects[0].tessellation;
+        type(tessellation, "2.5"); // a whole number: neither 25 nor 2
+        QCOMPARE(scene().objects[0].tessellation, subdivisions);
+        QCOMPARE(shown(tessellation), QString("2.5"));
     }
 
     void objectControlsChangeSceneAndPixels()
