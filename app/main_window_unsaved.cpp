@@ -1,0 +1,89 @@
+// MainWindow and work not yet in its files: what the title's * stands for, the question
+// before quit, close, another scene or Reset Everything set it aside, and its Save.
+#include "main_window.h"
+
+#include "scene_actions.h"
+
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QMessageBox>
+
+namespace lb {
+
+bool MainWindow::untitledProgramInFiles() const
+{
+    return m_sceneActions->documentName().isEmpty() &&
+           !m_shaders.filePath(ShaderStage::Vertex).isEmpty() &&
+           !m_shaders.filePath(ShaderStage::Fragment).isEmpty();
+}
+
+UnsavedWork MainWindow::unsavedWork() const
+{
+    UnsavedWork work;
+    work.sceneName = m_sceneActions->documentName();
+    // A scene file holds its program inline: an edit of it is the scene's. An untitled
+    // scene's program from a shader pair is the pair's to save; the scene then counts alone.
+    work.scene =
+        untitledProgramInFiles() ? m_sceneActions->isSceneModified() : m_sceneActions->isModified();
+    for (ShaderStage stage : {ShaderStage::Vertex, ShaderStage::Fragment})
+        if (const QString path = m_shaders.filePath(stage);
+            !path.isEmpty() && m_shaders.isModified(stage))
+            work.shaderFiles << QFileInfo(path).fileName();
+    return work;
+}
+
+bool MainWindow::maySetAside(SetAsideFor occasion, const QString &target)
+{
+    return askToSetAside(occasion, target) != SetAside::Cancelled;
+}
+
+MainWindow::SetAside MainWindow::askToSetAside(SetAsideFor occasion, const QString &target)
+{
+    const UnsavedWork work = unsavedWork();
+    if (!work.any())
+        return SetAside::NothingUnsaved;
+    if (!m_asker)
+        return SetAside::NotAsked;
+    switch (m_asker(this, unsavedWorkQuestion(work, occasion, target), unsavedWorkDetails(work))) {
+    case QMessageBox::Save:
+        return saveUnsavedWork(work) ? SetAside::Saved : SetAside::Cancelled;
+    case QMessageBox::Discard:
+        return SetAside::Discarded;
+    default:
+        return SetAside::Cancelled;
+    }
+}
+
+bool MainWindow::saveUnsavedWork(const UnsavedWork &work)
+{
+    // The scene first: it is what a student hands in. A failed save has said why.
+    if (work.scene && !m_sceneActions->saveScene())
+        return false;
+    return work.shaderFiles.isEmpty() || saveShaders();
+}
+
+bool MainWindow::saveShaders()
+{
+    if (m_shaders.filePath(ShaderStage::Vertex).isEmpty() ||
+        m_shaders.filePath(ShaderStage::Fragment).isEmpty())
+        return saveShadersAs(); // ShaderDocument::save() writes only a pair
+    const QString error = m_shaders.save();
+    if (!error.isEmpty())
+        QMessageBox::warning(this, tr("Shader files"), error);
+    return error.isEmpty();
+}
+
+bool MainWindow::saveShadersAs()
+{
+    const QString path =
+        QFileDialog::getSaveFileName(this, tr("Save the shader pair as NAME.vert and NAME.frag"),
+                                     {}, tr("Shader pairs (*.vert *.frag);;All files (*)"));
+    if (path.isEmpty())
+        return false;
+    const QString error = m_shaders.saveAs(path);
+    if (!error.isEmpty())
+        QMessageBox::warning(this, tr("Shader files"), error);
+    return error.isEmpty();
+}
+
+} // namespace lb
