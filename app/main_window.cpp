@@ -298,6 +298,8 @@ void MainWindow::writeSettings()
     m_settings.setValue(kScreenKey, m_available.size());
     m_settings.setValue(kLayoutKey, int(m_presentation ? m_normalLayout : m_layout));
     m_editor->saveState(m_settings);
+    if (m_sessionKeepsOnlySaved)
+        writeSavedWork();
 }
 
 void MainWindow::closeEvent(QCloseEvent *event)
@@ -307,7 +309,13 @@ void MainWindow::closeEvent(QCloseEvent *event)
         event->ignore(); // the window, and the edit, stay
         return;
     }
+    m_sessionKeepsOnlySaved = setAside == SetAside::Discarded;
     saveSettings();
+    m_sessionKeepsOnlySaved = false;
+    if (setAside == SetAside::Discarded) {
+        event->accept(); // nothing is kept that the user threw away
+        return;
+    }
     if (m_autosave->isFailing())
         keepUnsavedSession();
     else if (setAside == SetAside::NotAsked) // a run without a user: no question, no loss

@@ -118,6 +118,8 @@ private:
     enum class SetAside { NothingUnsaved, NotAsked, Saved, Discarded, Cancelled };
     SetAside askToSetAside(SetAsideFor occasion, const QString &target = {});
     bool saveUnsavedWork(const UnsavedWork &work);
+    // Discard at close: the session's scene and program become what the files hold.
+    void writeSavedWork();
     bool untitledProgramInFiles() const; // an untitled scene's program is a shader pair's
     // Closing while the autosave fails: the scene and program go to a scene file in the
     // temporary folder, named on stderr, instead of being lost.
@@ -187,7 +189,8 @@ private:
     std::optional<Scene> m_ownScene; // the student's scene before the first case was shown
     // Side B's shader files as read when chosen (path empty: none chosen).
     QString m_sideBPath, m_sideBVertex, m_sideBFragment, m_sideBName;
-    UnsavedWorkAsker m_asker; // none: nobody to ask
+    UnsavedWorkAsker m_asker;             // none: nobody to ask
+    bool m_sessionKeepsOnlySaved = false; // closing after Discard
 };
 
 } // namespace lb

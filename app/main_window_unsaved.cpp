@@ -2,13 +2,19 @@
 // before quit, close, another scene or Reset Everything set it aside, and its Save.
 #include "main_window.h"
 
+#include "main_window_settings.h"
+#include "presets.h"
 #include "scene_actions.h"
 
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QJsonDocument>
 #include <QMessageBox>
+#include <QSettings>
 
 namespace lb {
+
+using namespace window_settings;
 
 bool MainWindow::untitledProgramInFiles() const
 {
@@ -84,6 +90,24 @@ bool MainWindow::saveShadersAs()
     if (!error.isEmpty())
         QMessageBox::warning(this, tr("Shader files"), error);
     return error.isEmpty();
+}
+
+void MainWindow::writeSavedWork()
+{
+    // Discard means discard: the next start shows the files as saved, not the edit the user
+    // threw away (a crash or a kill still brings unsaved work back: no question was answered).
+    // The scene file stays the document; an untitled scene goes back to the defaults.
+    const SceneFile saved = m_sceneActions->savedFile();
+    m_settings.setValue(kSceneKey, QJsonDocument(saved.scene.toJson()).toJson());
+    // The editor's part of the session, as a document of what the files hold would write it.
+    ShaderDocument program;
+    const QStringList pair = {m_shaders.filePath(ShaderStage::Vertex),
+                              m_shaders.filePath(ShaderStage::Fragment)};
+    // A pair gone from the disk meanwhile: the built-in program, as for any untitled scene.
+    const bool fromFiles = untitledProgramInFiles() && program.openFiles(pair).isEmpty();
+    if (!fromFiles)
+        program.setProgram(saved.program, perVertex(saved.scene.shading.shading));
+    program.saveState(m_settings);
 }
 
 } // namespace lb
