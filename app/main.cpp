@@ -12,6 +12,7 @@
 #include "safe_write.h"
 #include "scene_actions.h"
 #include "shader_document.h"
+#include "unsaved_work.h"
 #include "viewport.h"
 #include "webgl1_translation.h"
 
@@ -128,6 +129,11 @@ int main(int argc, char **argv)
     }
     if (cl.hasUserProgram() && !cl.programFromScene) // opened as File > Open Shaders would
         window.shaderDocument().openFiles({cl.vertexPath, cl.fragmentPath});
+    // Someone is there to answer: quit, close, another scene and Reset Everything ask Save /
+    // Discard / Cancel before unsaved work is set aside. A scripted run (--screenshot,
+    // --bench-edits above) has no one to answer and must never wait: it closes without asking.
+    if (cl.screenshotPath.isEmpty())
+        window.setUnsavedWorkAsker(lb::askAboutUnsavedWork);
     window.show();
     if (cl.presentation)
         window.setPresentation(true);

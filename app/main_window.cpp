@@ -125,7 +125,13 @@ MainWindow::MainWindow(QSettings &settings, QWidget *parent)
             [this](double seconds) { m_viewport->setFrameBudget(seconds * 1000.0); });
     m_sceneActions = new SceneActions(this, &m_document, &m_shaders, m_viewport, m_settings);
     setUpExercise(); // the Exercise panel, Check my work and side B
-    connect(m_meshActions, &MeshActions::sceneFileDropped, m_sceneActions, &SceneActions::open);
+    // Opening a scene asks first when work would be set aside. A dropped one is opened once
+    // the drop is over: the drag's source is not kept waiting on the question.
+    m_sceneActions->setMaySetAside(
+        [this](const QString &target) { return maySetAside(SetAsideFor::OpeningScene, target); });
+    connect(
+        m_meshActions, &MeshActions::sceneFileDropped, m_sceneActions,
+        [this](const QString &path) { m_sceneActions->openAsking(path); }, Qt::QueuedConnection);
     connect(m_sceneActions, &SceneActions::documentChanged, this, &MainWindow::updateTitle);
     connect(m_sceneActions, &SceneActions::sceneOpened, m_probe, &ProbePanel::clear);
     connect(m_object, &ObjectPanel::openMeshRequested, m_meshActions, &MeshActions::showOpenDialog);
@@ -174,6 +180,8 @@ MainWindow::MainWindow(QSettings &settings, QWidget *parent)
 
 void MainWindow::resetEverything()
 {
+    if (!maySetAside(SetAsideFor::ResettingEverything))
+        return;
     m_sceneActions->forgetFile(); // Ctrl+S must not write the defaults over the file
     // The editor first (undoable there): while an edited program still drew, the scene's
     // shading would be held to that program's.
@@ -268,15 +276,12 @@ void MainWindow::updateStatus()
 void MainWindow::updateTitle()
 {
     QString name = m_sceneActions->documentName();
-    bool modified = m_sceneActions->isModified();
-    if (name.isEmpty() && !m_shaders.filePath(ShaderStage::Vertex).isEmpty()) {
+    if (name.isEmpty() && !m_shaders.filePath(ShaderStage::Vertex).isEmpty())
         name = QFileInfo(m_shaders.filePath(ShaderStage::Vertex)).completeBaseName();
-        modified = m_shaders.isModified();
-    }
     if (name.isEmpty())
         name = tr("untitled");
     setWindowTitle(tr("%1[*] - lightbench").arg(name));
-    setWindowModified(modified);
+    setWindowModified(unsavedWork().any()); // the * is what quit and close ask about
 }
 
 void MainWindow::saveSettings()
@@ -293,13 +298,30 @@ void MainWindow::writeSettings()
     m_settings.setValue(kScreenKey, m_available.size());
     m_settings.setValue(kLayoutKey, int(m_presentation ? m_normalLayout : m_layout));
     m_editor->saveState(m_settings);
+    if (m_sessionKeepsOnlySaved)
+        writeSavedWork();
 }
 
 void MainWindow::closeEvent(QCloseEvent *event)
 {
+    const SetAside setAside = askToSetAside(SetAsideFor::Closing);
+    if (setAside == SetAside::Cancelled) {
+        event->ignore(); // the window, and the edit, stay
+        return;
+    }
+    m_sessionKeepsOnlySaved = setAside == SetAside::Discarded;
     saveSettings();
+    m_sessionKeepsOnlySaved = false;
+    if (setAside == SetAside::Discarded) {
+        event->accept(); // nothing is kept that the user threw away
+        return;
+    }
     if (m_autosave->isFailing())
         keepUnsavedSession();
+    else if (setAside == SetAside::NotAsked) // a run without a user: no question, no loss
+        qInfo("lightbench: closed without asking; the unsaved changes are kept in the session "
+              "(%s) and come back at the next start, not in their files",
+              qPrintable(m_settings.fileName()));
     event->accept();
 }
 

@@ -8,6 +8,7 @@
 #include "program_build.h"
 #include "scene_document.h"
 #include "shader_document.h"
+#include "unsaved_work.h"
 #include "window_layout.h"
 
 #include <QMainWindow>
@@ -88,6 +89,21 @@ public:
     // Saves the session (scene, layout, editor) now; a change saves it shortly after anyway.
     void saveSettings();
 
+    // Work not in its files (the title's *): the scene, and the shader files with edits.
+    UnsavedWork unsavedWork() const;
+    // Who is asked before quit, close, another scene or Reset Everything set that work aside.
+    // None, as constructed: nothing is asked and nothing waits (a run without a user: tests,
+    // --screenshot, --bench-edits); main() gives a user's window askAboutUnsavedWork.
+    void setUnsavedWorkAsker(UnsavedWorkAsker asker) { m_asker = std::move(asker); }
+    // The one place that decides whether the unsaved work may be set aside for `occasion`
+    // (`target`: the scene about to be opened): true when nothing is unsaved, when there is
+    // no one to ask, after Discard, or after Save wrote everything; false after Cancel, or a
+    // save that failed (its message is shown) or whose Save As dialog was cancelled.
+    bool maySetAside(SetAsideFor occasion, const QString &target = {});
+    // File > Save Shaders (As): true once written; false when cancelled or refused (said).
+    bool saveShaders();
+    bool saveShadersAs();
+
 protected:
     void closeEvent(QCloseEvent *event) override;
     void showEvent(QShowEvent *event) override;
@@ -98,6 +114,13 @@ private:
     void selectObjectAt(QPoint framePixel);
     QDockWidget *addPanelDock(const QString &title, const QString &objectName, QWidget *panel);
     void writeSettings(); // puts the session's values into the settings, for the autosave
+    // What maySetAside() came to (main_window_unsaved.cpp).
+    enum class SetAside { NothingUnsaved, NotAsked, Saved, Discarded, Cancelled };
+    SetAside askToSetAside(SetAsideFor occasion, const QString &target = {});
+    bool saveUnsavedWork(const UnsavedWork &work);
+    // Discard at close: the session's scene and program become what the files hold.
+    void writeSavedWork();
+    bool untitledProgramInFiles() const; // an untitled scene's program is a shader pair's
     // Closing while the autosave fails: the scene and program go to a scene file in the
     // temporary folder, named on stderr, instead of being lost.
     void keepUnsavedSession();
@@ -166,6 +189,8 @@ private:
     std::optional<Scene> m_ownScene; // the student's scene before the first case was shown
     // Side B's shader files as read when chosen (path empty: none chosen).
     QString m_sideBPath, m_sideBVertex, m_sideBFragment, m_sideBName;
+    UnsavedWorkAsker m_asker;             // none: nobody to ask
+    bool m_sessionKeepsOnlySaved = false; // closing after Discard
 };
 
 } // namespace lb

@@ -55,19 +55,8 @@ void MainWindow::buildMenus()
         if (!paths.isEmpty())
             report(m_shaders.openFiles(paths));
     });
-    auto saveAs = [this, filter, report] {
-        const QString path = QFileDialog::getSaveFileName(
-            this, tr("Save the shader pair as NAME.vert and NAME.frag"), {}, filter);
-        if (!path.isEmpty())
-            report(m_shaders.saveAs(path));
-    };
-    addItem(file, tr("Save Shaders"), QKeySequence(tr("Ctrl+Alt+S")), [this, saveAs, report] {
-        if (m_shaders.filePath(ShaderStage::Vertex).isEmpty())
-            saveAs();
-        else
-            report(m_shaders.save());
-    });
-    addItem(file, tr("Save Shaders As..."), QKeySequence(), saveAs);
+    addItem(file, tr("Save Shaders"), QKeySequence(tr("Ctrl+Alt+S")), [this] { saveShaders(); });
+    addItem(file, tr("Save Shaders As..."), QKeySequence(), [this] { saveShadersAs(); });
     file->addSeparator();
     QMenu *edit = new QMenu(tr("&Edit"), this); // filled below, shown after File
     QMenu *view = new QMenu(tr("&View"), this);

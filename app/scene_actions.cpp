@@ -35,7 +35,8 @@ SceneActions::SceneActions(QMainWindow *window, SceneDocument *document, ShaderD
       m_viewport(viewport), m_settings(settings)
 {
     m_recent = new RecentFiles(tr("Open Recent S&cene"), settings, kRecentKey, window);
-    connect(m_recent, &RecentFiles::fileChosen, this, &SceneActions::open);
+    connect(m_recent, &RecentFiles::fileChosen, this,
+            [this](const QString &path) { openAsking(path); });
     // The session's scene came from this file: it is still the document (with the session's
     // changes unsaved, as the title's * says), as long as the file can be read.
     const QString current = m_settings.value(kCurrentKey).toString();
@@ -79,13 +80,9 @@ void SceneActions::addToMenu(QMenu *file)
     file->addMenu(m_recent);
     QMenu *examples = file->addMenu(tr("E&xamples"));
     for (const auto &[text, resource] : SceneActions::examples())
-        examples->addAction(text, this, [this, resource = resource] { this->open(resource); });
-    QAction *save = file->addAction(tr("&Save Scene"), this, [this] {
-        if (m_path.isEmpty())
-            showSaveDialog();
-        else
-            this->save(m_path);
-    });
+        examples->addAction(
+            text, this, [this, text = text, resource = resource] { openAsking(resource, text); });
+    QAction *save = file->addAction(tr("&Save Scene"), this, &SceneActions::saveScene);
     save->setShortcut(QKeySequence::Save);
     QAction *saveAs = file->addAction(tr("Save Scene &As..."), this, &SceneActions::showSaveDialog);
     saveAs->setShortcut(QKeySequence(tr("Ctrl+Shift+S")));
@@ -134,6 +131,21 @@ bool SceneActions::open(const QString &path)
     showStatusMessage(m_window, tr("Opened the scene %1").arg(name), 5000);
     emit sceneOpened(path);
     return true;
+}
+
+bool SceneActions::openAsking(const QString &path, const QString &shownName)
+{
+    // A file that is gone (a recent one) opens nothing: no need to ask, open() says why.
+    const bool openable = path.startsWith(":/") || QFileInfo(path).isFile();
+    if (openable && m_maySetAside &&
+        !m_maySetAside(shownName.isEmpty() ? QFileInfo(path).fileName() : shownName))
+        return false;
+    return open(path);
+}
+
+bool SceneActions::saveScene()
+{
+    return m_path.isEmpty() ? showSaveDialog() : save(m_path).isEmpty();
 }
 
 QString SceneActions::save(const QString &path)
@@ -196,20 +208,20 @@ void SceneActions::showOpenDialog()
     if (path.isEmpty())
         return;
     m_settings.setValue(kDirKey, QFileInfo(path).absolutePath());
-    open(path);
+    openAsking(path);
 }
 
-void SceneActions::showSaveDialog()
+bool SceneActions::showSaveDialog()
 {
     QString path = QFileDialog::getSaveFileName(
         m_window, tr("Save the scene"),
         m_path.isEmpty() ? m_settings.value(kDirKey).toString() : m_path, kFilter);
     if (path.isEmpty())
-        return;
+        return false;
     if (QFileInfo(path).suffix().isEmpty())
         path += ".json";
     m_settings.setValue(kDirKey, QFileInfo(path).absolutePath());
-    save(path);
+    return save(path).isEmpty();
 }
 
 void SceneActions::showExportDialog()
@@ -270,10 +282,25 @@ void SceneActions::remember()
     emit documentChanged();
 }
 
+SceneFile SceneActions::savedFile() const
+{
+    return m_saved.value_or(SceneFile{Scene{}, std::nullopt, std::nullopt});
+}
+
 bool SceneActions::isModified() const
 {
+    return differsFromSaved(true);
+}
+
+bool SceneActions::isSceneModified() const
+{
+    return differsFromSaved(false);
+}
+
+bool SceneActions::differsFromSaved(bool withProgram) const
+{
     SceneFile now{sceneToSave(), m_shaders->program(), m_exercise};
-    const SceneFile saved = m_saved.value_or(SceneFile{Scene{}, std::nullopt, std::nullopt});
+    const SceneFile saved = savedFile();
     // Auto-rotation turns the object 60 times a second: the turn is not an edit.
     for (std::size_t i = 0; i < now.scene.objects.size(); ++i)
         if (now.scene.objects[i].autoRotate && i < saved.scene.objects.size())
@@ -283,7 +310,7 @@ bool SceneActions::isModified() const
     auto text = [](const std::optional<ProgramText> &p) {
         return p ? std::make_pair(p->vertex, p->fragment) : std::make_pair(QString(), QString());
     };
-    return !(now.scene == saved.scene) || text(now.program) != text(saved.program);
+    return !(now.scene == saved.scene) || (withProgram && text(now.program) != text(saved.program));
 }
 
 } // namespace lb

@@ -36,8 +36,21 @@ public:
     // Opens a scene file: the scene, its program and its mesh replace the current ones; a
     // file that cannot be used changes nothing. Returns false then (the message is shown).
     bool open(const QString &path);
+    // The user's open (File > Open Scene, Open Recent Scene, Examples, a dropped file): asks
+    // setMaySetAside()'s question first (`shownName` names the scene in it, the file's name
+    // if empty); false when the answer is Cancel or the file did not open.
+    bool openAsking(const QString &path, const QString &shownName = {});
+    // Whether the work not yet saved may be set aside for the scene named `target`
+    // (MainWindow::maySetAside). None: it may.
+    void setMaySetAside(std::function<bool(const QString &target)> ask)
+    {
+        m_maySetAside = std::move(ask);
+    }
     // Writes the current scene and program; returns an empty string or the message shown.
     QString save(const QString &path);
+    // File > Save Scene: to the scene's file, or Save As for a scene without one. True once
+    // written; false when the dialog was cancelled or the save failed (the message is shown).
+    bool saveScene();
     // The scene a save writes and isModified() compares: the document's, unless the window
     // shows something that is not the user's own (an exercise's case, main_window_exercise).
     void setSceneToSave(std::function<Scene()> scene) { m_sceneToSave = std::move(scene); }
@@ -47,6 +60,11 @@ public:
     // Whether the scene or its program changed since it was opened or saved; with none
     // opened, whether anything differs from the defaults.
     bool isModified() const;
+    // The same for the scene alone, its program aside (a shader pair's files hold it).
+    bool isSceneModified() const;
+    // What isModified() compares with: the file as last opened or saved; the defaults (and
+    // the built-in program) when none was.
+    SceneFile savedFile() const;
     // No file from now on (Reset Everything): the title says untitled, Save asks for a name.
     void forgetFile();
     // Renders the view at `pixels` and writes it (PNG unless the name says otherwise).
@@ -59,7 +77,7 @@ public:
     // The example scenes: (menu text, resource path).
     static QList<QPair<QString, QString>> examples();
 
-    void showSaveDialog();
+    bool showSaveDialog(); // false: cancelled, or the save failed
 
     // The open scene file's exercise (exercise.h), if it has one.
     const std::optional<Exercise> &exercise() const { return m_exercise; }
@@ -80,6 +98,7 @@ private:
     void setCurrentPath(const QString &path, const QString &name);
     void remember(); // what isModified() compares with
     Scene sceneToSave() const;
+    bool differsFromSaved(bool withProgram) const;
 
     QMainWindow *m_window;
     SceneDocument *m_document;
@@ -89,6 +108,7 @@ private:
     RecentFiles *m_recent;
     QPointer<QMessageBox> m_messageBox;
     std::function<Scene()> m_sceneToSave;
+    std::function<bool(const QString &)> m_maySetAside;
     QString m_path; // the scene file last opened or saved; empty for an example or none
     QString m_name;
     std::optional<SceneFile> m_saved;

@@ -1,0 +1,43 @@
+#pragma once
+// Work not yet in its files, and the question asked before something sets it aside: quit or
+// close, another scene opened over it, Reset Everything. Save / Discard / Cancel, the desktop
+// convention. The window decides when to ask (MainWindow::maySetAside); this names what is
+// unsaved and asks.
+
+#include <QMessageBox>
+#include <QString>
+#include <QStringList>
+
+#include <functional>
+
+namespace lb {
+
+// What the title's * stands for, named for the question.
+struct UnsavedWork
+{
+    bool scene = false;      // the scene (settings and program) has unsaved changes
+    QString sceneName;       // its file's (or example's) name; empty: untitled
+    QStringList shaderFiles; // the shader files (NAME.vert, NAME.frag) with unsaved edits
+    bool any() const { return scene || !shaderFiles.isEmpty(); }
+};
+
+// What would set the work aside.
+enum class SetAsideFor { Closing, OpeningScene, ResettingEverything };
+
+// Who answers the question: the user in askAboutUnsavedWork()'s message box, or a test.
+// Returns Save, Discard or Cancel (anything else reads as Cancel).
+using UnsavedWorkAsker = std::function<QMessageBox::StandardButton(
+    QWidget *parent, const QString &question, const QString &details)>;
+
+// The question's text, one whole sentence per occasion (for translators): "Save the changes
+// to the scene “lesson.json” before closing?". `target` is the scene about to be opened.
+QString unsavedWorkQuestion(const UnsavedWork &work, SetAsideFor occasion,
+                            const QString &target = {});
+QString unsavedWorkDetails(const UnsavedWork &work);
+
+// A modal message box (object name "unsavedWorkQuestion"): Save (the default: Return never
+// throws work away), Discard, Cancel (Esc and the title bar's close).
+QMessageBox::StandardButton askAboutUnsavedWork(QWidget *parent, const QString &question,
+                                                const QString &details);
+
+} // namespace lb
