@@ -361,6 +361,8 @@ int runHeadless(const CommandLine &cl, const Scene &requested)
         o["largestDifference"] = d.largest;
         o["at"] = QJsonArray{d.at.x(), d.at.y()};
         o["differing"] = std::round(d.differing * 1e6) / 1e6;
+        o["shareWithin"] = std::round(d.shareWithin * 1e6) / 1e6; // of the pixels drawn
+        o["tolerance"] = d.tolerance;
         printLine(QJsonDocument(o).toJson(QJsonDocument::Compact), stdout);
     }
     if (cl.probe) {

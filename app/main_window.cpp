@@ -217,7 +217,14 @@ void MainWindow::syncShadingWithProgram()
                 s.shading.specular = *fixed.blinn ? SpecularModel::Blinn : SpecularModel::Phong;
         });
     if (!fixed.gouraud) {
-        m_shading->setShadingFixed(false, {});
+        // Only the built-in program follows the choice (it is two programs, switched); any
+        // other shades as it is written, and the choice would change nothing on screen.
+        m_shading->setShadingFixed(
+            !m_shaders.showsBuiltIn(),
+            tr("The program in the editor (%1) shades as it is written: this choice does not "
+               "change it (it stays the probe's model). Load a preset or Reset Everything to "
+               "switch shading.")
+                .arg(m_editor->programName()));
         return;
     }
     const Shading drawn = *fixed.gouraud ? Shading::Gouraud : Shading::Phong;

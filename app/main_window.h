@@ -145,6 +145,7 @@ private:
     void checkWork();
     void showCase(int index);
     void showOwnScene();
+    void markCheckOutOfDate(); // the Exercise panel's outcome, when the program has changed
     // The student's scene: the one before the first case was shown while one is, else the
     // document's. What saves write.
     Scene ownScene() const;
@@ -187,6 +188,8 @@ private:
     WorkCheck *m_workCheck;
     QAction *m_checkAction = nullptr;
     std::optional<Scene> m_ownScene; // the student's scene before the first case was shown
+    // The program the listed outcome of Check my work was checked with (vertex, fragment).
+    std::optional<std::pair<QString, QString>> m_checkedProgram;
     // Side B's shader files as read when chosen (path empty: none chosen).
     QString m_sideBPath, m_sideBVertex, m_sideBFragment, m_sideBName;
     UnsavedWorkAsker m_asker;             // none: nobody to ask

@@ -48,6 +48,7 @@ void MainWindow::setUpExercise()
     connect(m_workCheck, &WorkCheck::finished, this, [this](const GradingReport &report) {
         m_exercisePanel->setChecking(false);
         m_exercisePanel->showReport(report);
+        markCheckOutOfDate(); // edited while the check ran
         m_status->showMessage(report.graded() ? tr("Checked: %1 of %2 cases pass")
                                                     .arg(report.passedCount())
                                                     .arg(report.cases.size())
@@ -60,6 +61,9 @@ void MainWindow::setUpExercise()
         if (parts & ScenePart::Compare)
             holdSideBToReference(); // a reset of the Shading panel included
     });
+    // An outcome of Check my work says when the program in the editor is no longer the one
+    // it was checked with.
+    connect(&m_shaders, &ShaderDocument::changed, this, &MainWindow::markCheckOutOfDate);
     // While a case is shown, saves (the file, the session) write the student's own scene.
     m_sceneActions->setSceneToSave([this] { return ownScene(); });
     // The session's scene file may be an exercise.
@@ -76,6 +80,9 @@ void MainWindow::exerciseChanged()
         m_sideBPath.clear();
     m_exercisePanel->setExercise(exercise);
     m_exercisePanel->setChecking(false);
+    m_checkedProgram.reset();
+    // The difference view counts the share within the exercise's tolerance, as a case does.
+    m_viewport->setDifferenceTolerance(exercise ? exercise->grading.tolerance : 2);
     if (m_checkAction)
         m_checkAction->setEnabled(exercise && exercise->unread.isUndefined());
     m_exerciseDock->setVisible(exercise.has_value());
@@ -205,14 +212,23 @@ void MainWindow::checkWork()
     m_exerciseDock->show();
     m_exerciseDock->raise();
     // What the editor holds, as it would be handed in (not the last program that drew).
+    m_checkedProgram.emplace(m_shaders.source(ShaderStage::Vertex),
+                             m_shaders.source(ShaderStage::Fragment));
     const QString error = m_workCheck->start(m_sceneActions->exerciseScene(), *e,
-                                             m_shaders.source(ShaderStage::Vertex),
-                                             m_shaders.source(ShaderStage::Fragment));
+                                             m_checkedProgram->first, m_checkedProgram->second);
     if (!error.isEmpty()) {
         m_exercisePanel->showProblem(tr("The check could not start: %1").arg(error));
         return;
     }
     m_exercisePanel->setChecking(true);
+}
+
+void MainWindow::markCheckOutOfDate()
+{
+    m_exercisePanel->setOutOfDate(
+        m_checkedProgram &&
+        std::pair(m_shaders.source(ShaderStage::Vertex), m_shaders.source(ShaderStage::Fragment)) !=
+            *m_checkedProgram);
 }
 
 void MainWindow::showCase(int index)

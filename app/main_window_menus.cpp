@@ -76,8 +76,10 @@ void MainWindow::buildMenus()
     addItem(edit, tr("&Find in the Shader"), QKeySequence::Find, [this] { m_editor->startFind(); });
 
     QMenu *shading = menuBar()->addMenu(tr("&Shading"));
+    // A choice the program on screen does not follow is greyed in the panel with why; its
+    // key then says why instead of changing what does not draw.
     addItem(shading, tr("Toggle &Gouraud / Phong"), QKeySequence(tr("G")), [this] {
-        if (m_shaders.fixedModel().gouraud) { // the program's text fixes its shading
+        if (!m_shading->shadingCombo()->isEnabled()) {
             m_status->showMessage(m_shading->shadingCombo()->toolTip());
             return;
         }
@@ -91,6 +93,10 @@ void MainWindow::buildMenus()
             m_status->showMessage(tr("The program in the editor (%1) computes its own specular "
                                      "term: load a preset or Reset Everything to switch it.")
                                       .arg(m_editor->programName()));
+            return;
+        }
+        if (!m_shading->specularCombo()->isEnabled()) { // the program reads no uSpecularModel
+            m_status->showMessage(m_shading->specularCombo()->toolTip());
             return;
         }
         m_document.edit([](Scene &s) {

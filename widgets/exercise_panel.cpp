@@ -64,11 +64,17 @@ ExercisePanel::ExercisePanel(QWidget *parent) : QWidget(parent)
     m_summary->setWordWrap(true);
     m_summary->setTextFormat(Qt::PlainText);
     m_summary->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_stale = new QLabel(tr("Out of date: the program in the editor has changed since this "
+                            "check. Check my work (F5) checks it as it is now."),
+                         this);
+    m_stale->setWordWrap(true);
+    m_stale->setStyleSheet("color: #b35900; font-weight: bold;");
+    m_stale->hide();
     m_cases = new QTreeWidget(this);
     m_cases->setColumnCount(4);
     m_cases->setHeaderLabels({tr("Case"), tr("Result"), tr("Largest"), tr("Within")});
     m_cases->headerItem()->setToolTip(2, tr("The largest difference of a channel, out of 255"));
-    m_cases->headerItem()->setToolTip(3, tr("The share of the drawn pixels within the tolerance"));
+
     m_cases->setRootIsDecorated(false);
     m_cases->setUniformRowHeights(true);
     m_cases->setMinimumWidth(10); // the dock's width decides; the columns scroll
@@ -92,13 +98,30 @@ ExercisePanel::ExercisePanel(QWidget *parent) : QWidget(parent)
     layout->addWidget(m_about);
     layout->addWidget(m_check);
     layout->addWidget(m_summary);
+    layout->addWidget(m_stale);
     layout->addWidget(m_cases, 1);
     layout->addWidget(m_back);
     setExercise(std::nullopt);
 }
 
+void ExercisePanel::setOutOfDate(bool outOfDate)
+{
+    m_outOfDate = outOfDate && m_cases->topLevelItemCount() > 0;
+    m_stale->setVisible(m_outOfDate);
+    const QColor text =
+        palette().color(m_outOfDate ? QPalette::Disabled : QPalette::Active, QPalette::Text);
+    for (int i = 0; i < m_cases->topLevelItemCount(); ++i) {
+        QTreeWidgetItem *item = m_cases->topLevelItem(i);
+        for (int c : {0, 2, 3})
+            item->setForeground(c, text);
+        const bool passed = item->data(1, Qt::UserRole).toBool();
+        item->setForeground(1, m_outOfDate ? text : passed ? QColor(0, 128, 0) : QColor(192, 0, 0));
+    }
+}
+
 void ExercisePanel::setExercise(const std::optional<Exercise> &exercise)
 {
+    setOutOfDate(false);
     m_cases->clear();
     m_summary->clear();
     m_cases->hide();
@@ -115,6 +138,12 @@ void ExercisePanel::setExercise(const std::optional<Exercise> &exercise)
     m_passShare = exercise->grading.passShare;
     m_tolerance = exercise->grading.tolerance;
     m_size = exercise->grading.size;
+    m_cases->headerItem()->setToolTip(
+        3, tr("The share of the pixels either program draws that are within %1/255 of the "
+              "reference, at %2 x %3: the difference view counts a case alike (at its own size)")
+               .arg(m_tolerance)
+               .arg(m_size.width())
+               .arg(m_size.height()));
     m_title->setText(exercise->title.isEmpty() ? tr("Exercise") : exercise->title);
     m_task->setText(exercise->task);
     const ExerciseReference &ref = exercise->reference;
@@ -153,6 +182,7 @@ void ExercisePanel::setChecking(bool checking)
 
 void ExercisePanel::showProblem(const QString &text)
 {
+    setOutOfDate(false);
     m_summary->setText(text);
     m_cases->clear();
     m_cases->hide();
@@ -160,6 +190,7 @@ void ExercisePanel::showProblem(const QString &text)
 
 void ExercisePanel::showReport(const GradingReport &report)
 {
+    setOutOfDate(false);
     m_cases->clear();
     if (!report.graded()) {
         const QString why = report.diagnostic.isEmpty() ? QString() : ":\n" + report.diagnostic;
@@ -196,6 +227,7 @@ void ExercisePanel::showReport(const GradingReport &report)
         item->setText(2, QString("%1/255").arg(r.largest));
         item->setText(3, r.compared > 0 ? percent(r.shareWithin) : tr("nothing drawn"));
         item->setData(0, Qt::UserRole, k);
+        item->setData(1, Qt::UserRole, r.passed);
         item->setForeground(1, r.passed ? QColor(0, 128, 0) : QColor(192, 0, 0));
         item->setToolTip(
             0, r.at.x() >= 0

@@ -32,6 +32,11 @@ public:
     void showProblem(const QString &text);
     // The case shown in the view is marked in the list; -1: none (the student's own scene).
     void markShownCase(int index);
+    // The program in the editor is no longer the one the listed outcome was checked with
+    // (false again when the edit is undone): the outcome says so.
+    void setOutOfDate(bool outOfDate);
+    bool isOutOfDate() const { return m_outOfDate; }
+    QLabel *outOfDateLabel() const { return m_stale; }
 
     QPushButton *checkButton() const { return m_check; }
     QPushButton *backButton() const { return m_back; }
@@ -51,9 +56,11 @@ private:
     QLabel *m_about;
     QPushButton *m_check;
     QLabel *m_summary;
+    QLabel *m_stale;
     QTreeWidget *m_cases;
     QPushButton *m_back;
     bool m_checking = false;
+    bool m_outOfDate = false;
     double m_passShare = 0.99;
     int m_tolerance = 2;
     QSize m_size;

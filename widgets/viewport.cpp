@@ -224,15 +224,17 @@ QString Viewport::compareText() const
         const DifferenceStats &d = m_renderer.difference();
         if (!d.valid)
             return tr("|A - B|: not drawn yet");
-        return tr("|A - B|, A: %7, %1: largest %2/255 at (%3, %4), %5% of pixels differ; "
-                  "scale 0 (black) to %6/255 (white)")
+        // The share within the tolerance of the pixels drawn, as Check My Work counts a case.
+        return tr("|A - B|, A: %7, %1: largest %2/255 at (%3, %4); %5% of the drawn pixels "
+                  "within %8/255; scale 0 (black) to %6/255 (white)")
             .arg(b)
             .arg(d.largest)
             .arg(d.at.x())
             .arg(d.at.y())
-            .arg(d.differing * 100.0, 0, 'f', 1)
+            .arg(std::floor(d.shareWithin * 1000.0) / 10.0, 0, 'f', 1)
             .arg(int(std::lround(kDifferenceScale * 255.0f)))
-            .arg(m_programName.isEmpty() ? tr("the program on screen") : m_programName);
+            .arg(m_programName.isEmpty() ? tr("the program on screen") : m_programName)
+            .arg(d.tolerance);
     }
     }
     return {};

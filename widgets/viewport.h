@@ -64,6 +64,12 @@ public:
                                  const QString &name = {});
     bool hasSideBProgram() const { return !m_sideBVertex.isEmpty(); }
     const QString &sideBName() const { return m_sideBName; }
+    // The tolerance the difference view's share within is counted with (compare.h).
+    void setDifferenceTolerance(int tolerance)
+    {
+        m_renderer.setDifferenceTolerance(tolerance);
+        update();
+    }
 
     // Builds the user's program (now, or once the context exists) and reports it through
     // programBuilt(). When it fails, the last good program keeps drawing under a banner.

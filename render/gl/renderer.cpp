@@ -499,7 +499,8 @@ void Renderer::measureDifference(QSize pixels)
         glReadPixels(0, 0, pixels.width(), pixels.height(), GL_RGBA, GL_UNSIGNED_BYTE,
                      side[s].data());
     }
-    m_difference = lb::measureDifference(side[0].data(), side[1].data(), pixels);
+    m_difference =
+        lb::measureDifference(side[0].data(), side[1].data(), pixels, m_differenceTolerance);
 }
 
 } // namespace lb

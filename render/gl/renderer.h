@@ -57,8 +57,10 @@ public:
     void setProbeAgainstSideB(bool on) { m_probeAgainstSideB = on; }
     std::optional<glm::ivec3> probedSideBColour() const { return m_probedSideB; }
 
-    // What the last difference view measured (valid only after one was drawn).
+    // What the last difference view measured (valid only after one was drawn), with this
+    // tolerance for its share within (an open exercise's, as Check My Work counts).
     const DifferenceStats &difference() const { return m_difference; }
+    void setDifferenceTolerance(int tolerance) { m_differenceTolerance = tolerance; }
 
     // Builds a program from the user's sources. When it links it replaces the user program
     // (the object is drawn with it instead of the built-in pair); when it does not, whatever
@@ -168,6 +170,7 @@ private:
     std::unique_ptr<QOpenGLFramebufferObject> m_sideFbo[2];
     GpuMesh m_screenTriangle; // covers the viewport: the difference pass draws it
     DifferenceStats m_difference;
+    int m_differenceTolerance = 2;
     std::vector<Arrow> m_probeArrows;
     QPoint m_probePixel{-1, -1};
     bool m_readingProbe = false; // while render() draws the views the user sees

@@ -48,20 +48,34 @@ PixelView viewOfPixel(const Scene &scene, QSize frame, QPoint pixel)
     return v;
 }
 
-DifferenceStats measureDifference(const std::uint8_t *a, const std::uint8_t *b, QSize size)
+DifferenceStats measureDifference(const std::uint8_t *a, const std::uint8_t *b, QSize size,
+                                  int tolerance)
 {
     const std::size_t n =
         std::size_t(std::max(size.width(), 0)) * std::size_t(std::max(size.height(), 0)) * 4;
     DifferenceStats stats;
     stats.valid = true;
+    stats.tolerance = tolerance;
     if (n == 0)
         return stats;
-    std::size_t differing = 0;
+    const int background[3] = {qRed(kBackgroundPixel), qGreen(kBackgroundPixel),
+                               qBlue(kBackgroundPixel)};
+    const auto isBackground = [&](const std::uint8_t *p) {
+        for (int c = 0; c < 3; ++c)
+            if (std::abs(int(p[c]) - background[c]) > 1)
+                return false;
+        return true;
+    };
+    std::size_t differing = 0, within = 0;
     for (std::size_t i = 0; i < n; i += 4) {
         int d = 0;
         for (std::size_t c = 0; c < 3; ++c)
             d = std::max(d, std::abs(int(a[i + c]) - int(b[i + c])));
         differing += d > 0 ? 1 : 0;
+        if (!isBackground(a + i) || !isBackground(b + i)) {
+            ++stats.drawn;
+            within += d <= tolerance ? 1 : 0;
+        }
         if (d > stats.largest) {
             stats.largest = d;
             const int p = int(i / 4);
@@ -69,6 +83,7 @@ DifferenceStats measureDifference(const std::uint8_t *a, const std::uint8_t *b, 
         }
     }
     stats.differing = double(differing) / double(n / 4);
+    stats.shareWithin = stats.drawn ? double(within) / double(stats.drawn) : 1.0;
     return stats;
 }
 

@@ -40,17 +40,25 @@ struct PixelView
 };
 PixelView viewOfPixel(const Scene &scene, QSize frame, QPoint pixel);
 
-// The largest channel difference between the sides, as the difference view measures it.
+// The largest channel difference between the sides, as the difference view measures it, and
+// the share of the pixels drawn (by either side: not the background on both) within a
+// tolerance: the measure Check My Work and --grade give for a case (grading.h), so the view of
+// a case and its line in the list count alike.
 struct DifferenceStats
 {
     bool valid = false;
-    int largest = 0;        // out of 255
-    QPoint at;              // where (top-left origin), the first such pixel
-    double differing = 0.0; // the fraction of pixels that differ at all
+    int largest = 0;          // out of 255
+    QPoint at;                // where (top-left origin), the first such pixel
+    double differing = 0.0;   // the fraction of all pixels that differ at all
+    int tolerance = 2;        // per channel, out of 255
+    qint64 drawn = 0;         // pixels either side drew
+    double shareWithin = 1.0; // of those, within the tolerance (1 when none was drawn)
 };
 
 // Measures two frames of RGBA bytes, `size` large, rows bottom-up as glReadPixels gives them
-// (`at` comes out top-left); alpha is not compared.
-DifferenceStats measureDifference(const std::uint8_t *a, const std::uint8_t *b, QSize size);
+// (`at` comes out top-left); alpha is not compared. A pixel within 1 of the background colour
+// on both sides is not drawn (as grading counts it).
+DifferenceStats measureDifference(const std::uint8_t *a, const std::uint8_t *b, QSize size,
+                                  int tolerance = 2);
 
 } // namespace lb

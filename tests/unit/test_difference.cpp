@@ -1,7 +1,10 @@
 // The difference view's numbers, measured on frames made here: the largest channel
 // difference, where it is (GL's bottom-up rows turned top-left) and the share that differs.
 #include "compare.h"
+#include "grading.h"
 
+#include <QImage>
+#include <QRandomGenerator>
 #include <QTest>
 
 #include <vector>
@@ -36,6 +39,49 @@ private slots:
         QCOMPARE(d.largest, 40);
         QCOMPARE(d.at, QPoint(3, 0)); // top-left origin: the top row is y = 0
         QCOMPARE(d.differing, 3.0 / 15.0);
+    }
+
+    // The view's share within the tolerance is Check My Work's for a case (grading.h): the
+    // same pixels (drawn by either side: the background on both is not counted), the same
+    // tolerance, the same share, on random frames with background between the surfaces.
+    void theViewCountsAsGradingDoes()
+    {
+        const QSize size(37, 23);
+        QRandomGenerator random(11);
+        QImage a(size, QImage::Format_RGB32), b(size, QImage::Format_RGB32);
+        for (int y = 0; y < size.height(); ++y)
+            for (int x = 0; x < size.width(); ++x) {
+                const bool background = random.bounded(3) == 0;
+                const QRgb p = background ? kBackgroundPixel
+                                          : qRgb(random.bounded(256), random.bounded(256), 90);
+                const int shift = random.bounded(5); // 0..4: some within 2, some not
+                a.setPixel(x, y, p);
+                b.setPixel(x, y,
+                           random.bounded(4) == 0
+                               ? kBackgroundPixel
+                               : qRgb(std::min(255, qRed(p) + shift), qGreen(p), qBlue(p)));
+            }
+        // As glReadPixels gives them: RGBA bytes, rows bottom-up.
+        const auto bytes = [&](const QImage &image) {
+            std::vector<std::uint8_t> out;
+            for (int y = size.height() - 1; y >= 0; --y)
+                for (int x = 0; x < size.width(); ++x) {
+                    const QRgb p = image.pixel(x, y);
+                    out.insert(out.end(), {std::uint8_t(qRed(p)), std::uint8_t(qGreen(p)),
+                                           std::uint8_t(qBlue(p)), 255});
+                }
+            return out;
+        };
+        const std::vector<std::uint8_t> ba = bytes(a), bb = bytes(b);
+        for (int tolerance : {0, 2, 3}) {
+            const DifferenceStats view = measureDifference(ba.data(), bb.data(), size, tolerance);
+            const CaseResult graded = measureCase(a, b, kBackgroundPixel, tolerance, 0.99);
+            QCOMPARE(view.drawn, qint64(graded.compared));
+            QCOMPARE(view.shareWithin, graded.shareWithin);
+            QCOMPARE(view.largest, graded.largest);
+            QVERIFY2(view.shareWithin > 0.05 && view.shareWithin < 0.95,
+                     qPrintable(QString::number(view.shareWithin)));
+        }
     }
 
     void emptyFrame()

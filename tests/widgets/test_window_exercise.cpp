@@ -150,6 +150,22 @@ private slots:
         frame();
         QVERIFY2(m_window->viewport()->renderer().difference().largest <= 2,
                  qPrintable(m_window->viewport()->compareText()));
+        // The view states the list's measure: the share of the drawn pixels within the
+        // exercise's tolerance (it said "6.3% of pixels differ" beside "84.6% within").
+        const QString caption = m_window->viewport()->compareText();
+        QVERIFY2(caption.contains("% of the drawn pixels within 2/255"), qPrintable(caption));
+        QVERIFY(cases()->headerItem()->toolTip(3).contains("within 2/255"));
+        QVERIFY(m_window->viewport()->renderer().difference().shareWithin >= 0.99);
+
+        // An edit after the check: the outcome says it is out of date; undone, it is not.
+        QVERIFY(!m_window->exercisePanel()->isOutOfDate());
+        const QString checked = readText(LB_TEST_DATA "/grading/correct/lighting.frag");
+        setFragment(checked + "\n// changed after the check\n");
+        QVERIFY(m_window->exercisePanel()->isOutOfDate());
+        QVERIFY(m_window->exercisePanel()->outOfDateLabel()->isVisible());
+        setFragment(checked);
+        QVERIFY(!m_window->exercisePanel()->isOutOfDate());
+        QVERIFY(!m_window->exercisePanel()->outOfDateLabel()->isVisible());
         // Back to the student's own scene.
         QTest::mouseClick(m_window->exercisePanel()->backButton(), Qt::LeftButton);
         QVERIFY(scene() == own);

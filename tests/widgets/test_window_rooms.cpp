@@ -391,8 +391,24 @@ private slots:
         for (int c = 0; c < 3; ++c)
             QVERIFY2(std::abs((*probe->gpuColour())[c] - int(std::lround(ref[c]))) <= 2,
                      qPrintable(probe->textLabel()->text()));
-        // The toon shader is a model of its own: the choice is free again.
+        // The toon shader is a model of its own: the Gouraud/Phong choice does not change it,
+        // so the choice is greyed with why, and G says why instead of switching a choice the
+        // picture does not follow (it used to switch, with nothing on screen changing).
         QVERIFY(buildAfter([&] { m_window->editorPanel()->loadPreset(presets()[4]); }));
+        QVERIFY(!shading->shadingCombo()->isEnabled());
+        QVERIFY2(shading->shadingCombo()->toolTip().contains("shades as it is written"),
+                 qPrintable(shading->shadingCombo()->toolTip()));
+        const Shading before = scene().shading.shading;
+        QTest::keyClick(m_window.get(), Qt::Key_G);
+        QCOMPARE(scene().shading.shading, before);
+        QVERIFY2(m_window->statusLine()->message().contains("shades as it is written"),
+                 qPrintable(m_window->statusLine()->message()));
+        // Reset Everything brings the built-in program, which follows the choice again.
+        QVERIFY(buildAfter([&] {
+            for (QAction *a : m_window->menuBar()->actions().first()->menu()->actions())
+                if (a->text().contains("Reset"))
+                    a->trigger();
+        }));
         QVERIFY(shading->shadingCombo()->isEnabled());
     }
 
