@@ -11,6 +11,8 @@
 #include "offscreen.h"
 #include "safe_write.h"
 #include "scene_actions.h"
+#include "settings_autosave.h"
+#include "settings_store.h"
 #include "shader_document.h"
 #include "unsaved_work.h"
 #include "viewport.h"
@@ -104,8 +106,19 @@ int main(int argc, char **argv)
     // runs above keep the system's locale, and write numbers with QString::number and JSON.
     QLocale::setDefault(QLocale(QLocale::English, QLocale::UnitedStates));
     QApplication app(argc, argv);
-    QSettings settings;
+    // The settings file is written whole or not at all (settings_store.h).
+    lb::SettingsStore store(QSettings().fileName());
+    if (!store.error().isEmpty())
+        std::fprintf(stderr, "lightbench: settings: %s\n", qPrintable(store.error()));
+    QSettings &settings = store.settings();
     lb::MainWindow window(settings);
+    window.autosave()->setWriteThrough(store.fileName(), [&store] { return store.save(); });
+    // What is set after the window's last save (QSettings used to write it as it went).
+    const auto exitSaved = [&store](int status) {
+        if (const QString error = store.save(); !error.isEmpty())
+            std::fprintf(stderr, "lightbench: settings not saved: %s\n", qPrintable(error));
+        return status;
+    };
     if (cl.importMemoryMB || cl.importSeconds) {
         lb::ImportLimits limits = window.objectLoader()->limits();
         limits.memoryMB = cl.importMemoryMB.value_or(limits.memoryMB);
@@ -125,7 +138,7 @@ int main(int argc, char **argv)
             QCoreApplication::exit(
                 lb::runEditBench(window, cl.benchEdits, cl.vertexSource, cl.fragmentSource));
         });
-        return app.exec();
+        return exitSaved(app.exec());
     }
     if (cl.hasUserProgram() && !cl.programFromScene) // opened as File > Open Shaders would
         window.shaderDocument().openFiles({cl.vertexPath, cl.fragmentPath});
@@ -167,5 +180,5 @@ int main(int argc, char **argv)
             window.close();
         });
     }
-    return app.exec();
+    return exitSaved(app.exec());
 }

@@ -328,7 +328,7 @@ void MainWindow::closeEvent(QCloseEvent *event)
     else if (setAside == SetAside::NotAsked) // a run without a user: no question, no loss
         qInfo("lightbench: closed without asking; the unsaved changes are kept in the session "
               "(%s) and come back at the next start, not in their files",
-              qPrintable(m_settings.fileName()));
+              qPrintable(m_autosave->fileName()));
     event->accept();
 }
 
@@ -343,10 +343,10 @@ void MainWindow::keepUnsavedSession()
         writeSceneFile(path, SceneFile{ownScene(), m_shaders.program(), std::nullopt});
     if (error.isEmpty())
         qWarning("lightbench: the session could not be saved in %s; it is in %s (File > Open)",
-                 qPrintable(m_settings.fileName()), qPrintable(path));
+                 qPrintable(m_autosave->fileName()), qPrintable(path));
     else
         qWarning("lightbench: the session could not be saved in %s, nor in %s",
-                 qPrintable(m_settings.fileName()), qPrintable(error));
+                 qPrintable(m_autosave->fileName()), qPrintable(error));
 }
 
 void MainWindow::selectObjectAt(QPoint framePixel)

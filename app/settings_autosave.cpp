@@ -48,23 +48,41 @@ void SettingsAutosave::saveNow()
     sync();
 }
 
+void SettingsAutosave::setWriteThrough(const QString &path, std::function<QString()> writeThrough)
+{
+    m_path = path;
+    m_writeThrough = std::move(writeThrough);
+}
+
+QString SettingsAutosave::fileName() const
+{
+    return m_writeThrough ? m_path : m_settings.fileName();
+}
+
 void SettingsAutosave::sync()
 {
     m_settings.setValue(kSerialKey, ++m_serial);
-    m_settings.sync();
-    const QString file = elidedForMessage(m_settings.fileName(), 120);
-    if (reachedTheDisk()) {
+    QString error;
+    if (m_writeThrough) {
+        error = m_writeThrough();
+    } else {
+        m_settings.sync();
+        if (!reachedTheDisk())
+            error = QString("%1 %2").arg(m_settings.fileName(), why(m_settings.status()));
+    }
+    if (error.isEmpty()) {
         if (m_failing)
-            m_status->showMessage(tr("Your work is saved again in %1").arg(file));
+            m_status->showMessage(
+                tr("Your work is saved again in %1").arg(elidedForMessage(fileName(), 120)));
         m_failing = false;
         m_retry.stop();
         return;
     }
     if (!m_failing)
         // What matters first: a narrow status line shows the start (the rest is its tooltip).
-        m_status->showMessage(tr("Your work is not saved, trying again every %1 s: %2 %3")
+        m_status->showMessage(tr("Your work is not saved, trying again every %1 s: %2")
                                   .arg(kRetryMs / 1000)
-                                  .arg(file, why(m_settings.status())),
+                                  .arg(elidedForMessage(error, 240)),
                               0);
     m_failing = true;
     m_retry.start();

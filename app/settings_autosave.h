@@ -34,6 +34,11 @@ public:
     // Writes the values and takes them to the disk now, checking that they got there.
     void saveNow();
     bool isFailing() const { return m_failing; }
+    // Where the settings reach the disk through `writeThrough` (settings_store.h: QSettings
+    // works on a scratch copy, and this writes the settings file `path` from it, returning
+    // empty or "PATH: why"); without, QSettings' own file, checked by reading it back.
+    void setWriteThrough(const QString &path, std::function<QString()> writeThrough);
+    QString fileName() const; // the settings file, for messages
 
 private:
     void sync(); // takes what the settings hold to the disk, and checks
@@ -42,6 +47,8 @@ private:
     QSettings &m_settings;
     StatusLine *m_status;
     std::function<void()> m_write;
+    std::function<QString()> m_writeThrough;
+    QString m_path;
     QTimer m_delay, m_retry;
     qint64 m_serial = 0;
     bool m_failing = false;

@@ -2,8 +2,9 @@
 // only; skipped otherwise, tests/unit/test_safe_write.cpp plays it with the file size limit).
 // Saving a scene, a shader pair, a PNG, the CSV report and a grading sheet onto it each fail
 // with the system's reason and a non-zero exit, and the old file's bytes are unchanged. (A
-// scene saved like this used to become a 0-byte file with exit 0.)
+// scene used to become a 0-byte file with exit 0.) The window's settings file stays whole too.
 #include "safe_write.h"
+#include "settings_store.h"
 
 #include <QCoreApplication>
 #include <QDir>
@@ -174,6 +175,33 @@ private slots:
                      QSet<QString>(expected.begin(), expected.end()));
         else
             QCOMPARE(left, QStringList{"correct.png"});
+    }
+
+    // The window's settings (its session: scene, layout, editor text) are written whole or
+    // not at all: QSettings' own writer left an empty file on a full disk.
+    void theSettingsFileStaysWhole()
+    {
+        const QString path = QDir(g_disk).filePath("lightbench.conf");
+        {
+            lb::SettingsStore store(path);
+            QCOMPARE(store.error(), QString());
+            store.settings().setValue("scene", QByteArray(3000, 's'));
+            QCOMPARE(store.save(), QString());
+        }
+        const QByteArray old = contents(path);
+        QVERIFY(old.contains("scene="));
+        lb::SettingsStore store(path);
+        QCOMPARE(store.settings().value("scene").toByteArray(), QByteArray(3000, 's'));
+        QVERIFY(fill());
+        store.settings().setValue("editor", QByteArray(5000, 'e'));
+        const QString error = store.save();
+        QVERIFY2(error == path + ": No space left on device", qPrintable(error));
+        QCOMPARE(contents(path), old);
+        QVERIFY(QFile::remove(QDir(g_disk).filePath("fill")));
+        QCOMPARE(store.save(), QString()); // room again: all of it, the earlier value too
+        lb::SettingsStore again(path);
+        QCOMPARE(again.settings().value("editor").toByteArray(), QByteArray(5000, 'e'));
+        QCOMPARE(again.settings().value("scene").toByteArray(), QByteArray(3000, 's'));
     }
 };
 
