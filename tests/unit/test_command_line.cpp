@@ -275,6 +275,54 @@ private slots:
                                  << "no such file";
     }
 
+    // What the command line writes is checked with it, before any frame is drawn: a device,
+    // a FIFO, a folder, a loop of links or a missing folder at the path is refused, exit 2,
+    // and nothing there is replaced.
+    void outputsThatCannotBeFilesAreRefusedFirst_data()
+    {
+        QTest::addColumn<QString>("option");
+        QTest::addColumn<QString>("kind");
+        QTest::addColumn<QString>("named");
+        for (const char *option : {"render", "save-scene", "screenshot"}) {
+            QTest::addRow("--%s /dev/null", option) << option << "device"
+                                                    << "/dev/null: not a regular file";
+            QTest::addRow("--%s FIFO", option) << option << "fifo"
+                                               << "out: not a regular file";
+            QTest::addRow("--%s folder", option) << option << "folder"
+                                                 << "out: not a regular file";
+            QTest::addRow("--%s link loop", option) << option << "loop"
+                                                    << "out: a loop of symbolic links";
+            QTest::addRow("--%s missing folder", option) << option << "missing"
+                                                         << "does not exist";
+        }
+    }
+
+    void outputsThatCannotBeFilesAreRefusedFirst()
+    {
+        QFETCH(QString, option);
+        QFETCH(QString, kind);
+        QFETCH(QString, named);
+        QTemporaryDir dir;
+        QString path = dir.filePath("out");
+        if (kind == "device")
+            path = "/dev/null";
+        else if (kind == "fifo")
+            QCOMPARE(::mkfifo(QFile::encodeName(path).constData(), 0600), 0);
+        else if (kind == "folder")
+            QVERIFY(QDir(dir.path()).mkdir("out"));
+        else if (kind == "loop")
+            QVERIFY(QFile::link(path, path));
+        else
+            path = dir.filePath("nowhere/out.png");
+        const CommandLineResult r = parse("--" + option + " " + path);
+        QVERIFY(!r.commandLine);
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.message.contains("--" + option) && r.message.contains(named),
+                 qPrintable(r.message));
+        if (kind == "fifo")
+            QVERIFY(QFileInfo(path).exists() && !QFileInfo(path).isFile());
+    }
+
     void shaderFilesAreBoundedBeforeReading()
     {
         QFETCH(QString, kind);
