@@ -221,9 +221,8 @@ void MainWindow::syncShadingWithProgram()
         // other shades as it is written, and the choice would change nothing on screen.
         m_shading->setShadingFixed(
             !m_shaders.showsBuiltIn(),
-            tr("The program in the editor (%1) shades as it is written: this choice does not "
-               "change it (it stays the probe's model). Load a preset or Reset Everything to "
-               "switch shading.")
+            tr("%1 shades as it is written: Gouraud/Phong does not change it. A preset or "
+               "Reset Everything brings the built-in program, which follows this choice.")
                 .arg(m_editor->programName()));
         return;
     }

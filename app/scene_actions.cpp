@@ -27,6 +27,16 @@ const char *kDirKey = "scenes/lastDirectory";
 const char *kExportSizeKey = "export/size";
 const char *kCurrentKey = "scenes/current"; // the file the session's scene came from
 const QString kFilter = QObject::tr("Scenes (*.json);;All files (*)");
+// A scene file as the window opens it: an example's mesh (none today) would name a file beside
+// the resource, so its objects keep their shapes.
+SceneFile asOpened(SceneFile file, bool example)
+{
+    if (example)
+        for (ObjectSettings &o : file.scene.objects)
+            o.meshPath.clear();
+    return file;
+}
+
 } // namespace
 
 SceneActions::SceneActions(QMainWindow *window, SceneDocument *document, ShaderDocument *shaders,
@@ -39,13 +49,15 @@ SceneActions::SceneActions(QMainWindow *window, SceneDocument *document, ShaderD
             [this](const QString &path) { openAsking(path); });
     // The session's scene came from this file: it is still the document (with the session's
     // changes unsaved, as the title's * says), as long as the file can be read.
+    // An example (":/examples/NAME.json") is the document too, with no file to save to.
     const QString current = m_settings.value(kCurrentKey).toString();
     if (!current.isEmpty()) {
         const SceneFileRead read = readSceneFile(current);
         if (read.file) {
-            m_path = current;
-            m_name = QFileInfo(current).fileName();
-            m_saved = *read.file;
+            const bool example = current.startsWith(":/");
+            m_path = example ? QString() : current;
+            m_name = example ? current.section('/', -1) : QFileInfo(current).fileName();
+            m_saved = asOpened(*read.file, example);
             m_exercise = read.file->exercise; // saving the session's scene keeps it
             m_exerciseScene = read.file->scene;
         }
@@ -105,11 +117,7 @@ bool SceneActions::open(const QString &path)
             m_recent->remove(path);
         return false;
     }
-    SceneFile file = *read.file;
-    // An example's mesh (none today) would name a file beside the resource: keep shapes.
-    if (example)
-        for (ObjectSettings &o : file.scene.objects)
-            o.meshPath.clear();
+    const SceneFile file = asOpened(*read.file, example);
     // An exercise's reference and grading ride along, so that saving it keeps them.
     m_exercise = file.exercise;
     m_exerciseScene = file.scene;
@@ -119,6 +127,8 @@ bool SceneActions::open(const QString &path)
     emit exerciseChanged(); // after the scene: side B's choices may follow the exercise
     const QString name = example ? path.section('/', -1) : QFileInfo(path).fileName();
     setCurrentPath(example ? QString() : QFileInfo(path).absoluteFilePath(), name);
+    if (example) // after a restart the example is still the document, unchanged
+        m_settings.setValue(kCurrentKey, path);
     remember();
     if (!example)
         m_recent->add(QFileInfo(path).absoluteFilePath());

@@ -108,6 +108,7 @@ void ExercisePanel::setOutOfDate(bool outOfDate)
 {
     m_outOfDate = outOfDate && m_cases->topLevelItemCount() > 0;
     m_stale->setVisible(m_outOfDate);
+    m_summary->setForegroundRole(m_outOfDate ? QPalette::PlaceholderText : QPalette::WindowText);
     const QColor text =
         palette().color(m_outOfDate ? QPalette::Disabled : QPalette::Active, QPalette::Text);
     for (int i = 0; i < m_cases->topLevelItemCount(); ++i) {

@@ -246,6 +246,12 @@ void NumberBox::keyPressEvent(QKeyEvent *event)
         QDoubleSpinBox::keyPressEvent(event);
 }
 
+void NumberBox::focusOutEvent(QFocusEvent *event)
+{
+    QDoubleSpinBox::focusOutEvent(event);
+    showProblem();
+}
+
 void NumberBox::showProblem()
 {
     const Reading r = readText(lineEdit()->text());
@@ -307,6 +313,12 @@ void IntegerBox::keyPressEvent(QKeyEvent *event)
         event->accept();
     else
         QSpinBox::keyPressEvent(event);
+}
+
+void IntegerBox::focusOutEvent(QFocusEvent *event)
+{
+    QSpinBox::focusOutEvent(event);
+    showProblem();
 }
 
 void IntegerBox::showProblem()

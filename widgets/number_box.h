@@ -59,6 +59,9 @@ public:
 
 protected:
     void keyPressEvent(QKeyEvent *event) override;
+    // Leaving the box puts the last value back (QAbstractSpinBox, without a textChanged): the
+    // mark goes with the refused text.
+    void focusOutEvent(QFocusEvent *event) override;
 
 private:
     Reading readText(const QString &text) const;
@@ -87,6 +90,7 @@ public:
 
 protected:
     void keyPressEvent(QKeyEvent *event) override;
+    void focusOutEvent(QFocusEvent *event) override; // as NumberBox's
 
 private:
     NumberBox::Reading readText(const QString &text) const;

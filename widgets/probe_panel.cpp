@@ -267,9 +267,12 @@ void ProbePanel::showText()
         m_referenceName = tr("the model (%1 shading)").arg(toName(side.shading.shading));
         m_reference = bytes255(r.reference);
     }
+    // On side B's program the side's shading choice is greyed: it is not the program's.
     html += row(againstSideB || (m_point->sideB && sideBProgram) ? tr("model") : tr("reference"),
-                rgb(bytes255(r.reference)) +
-                    tr(" of 255 (%1 shading)").arg(toName(side.shading.shading)));
+                rgb(bytes255(r.reference)) + (m_point->sideB && sideBProgram
+                                                  ? tr(" of 255 (the built-in model, %1 shading)")
+                                                  : tr(" of 255 (%1 shading)"))
+                                                 .arg(toName(side.shading.shading)));
     if (againstSideB)
         html +=
             row(tr("reference"), tr("%1 draws %2")
@@ -296,9 +299,9 @@ void ProbePanel::showText()
         html += QString("<p><i>%1</i></p>").arg(m_referenceNote.toHtmlEscaped());
     if (m_point->sideB && sideBProgram)
         html += QString("<p><i>%1</i></p>")
-                    .arg(tr("Side B draws %1, the reference: it is compared with nothing here, "
-                            "and these numbers are the built-in model's, which that program "
-                            "need not follow.")
+                    .arg(tr("This point is drawn by %1 (side B), which is itself the "
+                            "reference: it is compared with nothing. The numbers above are the "
+                            "built-in model's, which that program need not follow.")
                              .arg(m_viewport->sideBName().toHtmlEscaped()));
     else if (againstSideB)
         html += QString("<p><i>%1</i></p>")

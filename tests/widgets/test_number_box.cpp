@@ -129,6 +129,24 @@ private slots:
         QCOMPARE(box->value(), 2.5);
     }
 
+    // Leaving a box that holds refused text puts the last value back, and its red mark and
+    // reason go with the text (they stayed, beside a value that was fine).
+    void leavingPutsTheValueBackUnmarked()
+    {
+        const DefaultLocale scope("de_DE");
+        const auto box = makeBox(-1000, 1000, 2, 2.5);
+        QLineEdit *edit = box->findChild<QLineEdit *>();
+        type(box.get(), "1.000,5");
+        QVERIFY(!edit->toolTip().isEmpty());
+        QCOMPARE(edit->palette().color(QPalette::Text), QColor(200, 0, 0));
+        QFocusEvent out(QEvent::FocusOut, Qt::TabFocusReason);
+        QApplication::sendEvent(box.get(), &out);
+        QCOMPARE(shown(box.get()), QString("2,50"));
+        QCOMPARE(box->value(), 2.5);
+        QCOMPARE(edit->toolTip(), QString());
+        QVERIFY(edit->palette().color(QPalette::Text) != QColor(200, 0, 0));
+    }
+
     // A suffix, a range from 0, one decimal: the light's spot cutoff.
     void suffixAndOneDecimal_data()
     {

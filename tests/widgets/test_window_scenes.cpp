@@ -10,6 +10,26 @@ class TestWindowScenes : public WindowTest
 {
     Q_OBJECT
 private slots:
+    // An example opened from File > Examples is still the document after a restart, unchanged
+    // (it came back as "untitled*", and quitting then asked about changes no one made); its
+    // edits are still changes, and Save still asks for a file.
+    void anExampleStaysTheDocumentAcrossARestart()
+    {
+        QVERIFY(m_window->sceneActions()->open(":/examples/toon.json"));
+        QVERIFY(!m_window->sceneActions()->isModified());
+        const Scene opened = scene();
+        m_window->close(); // saves the session
+        m_window = std::make_unique<MainWindow>(*m_settings);
+        QVERIFY(scene() == opened);
+        QCOMPARE(m_window->sceneActions()->documentName(), QString("toon.json"));
+        QVERIFY(!m_window->sceneActions()->isModified());
+        QVERIFY2(!m_window->windowTitle().contains('*') || !m_window->isWindowModified(),
+                 qPrintable(m_window->windowTitle()));
+        m_window->document().edit([](Scene &s) { s.objects[0].material.shininess = 3.0f; });
+        QVERIFY(m_window->sceneActions()->isModified());
+        QVERIFY(m_window->isWindowModified());
+    }
+
     void savedSceneOpensAsTheSameImage()
     {
         // A scene with a program of the student's own, two lights and a changed camera.
