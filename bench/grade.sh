@@ -3,8 +3,9 @@
 # resources/examples/exercise_lighting.json), made of the five sample submissions in
 # tests/data/grading 20 times each (correct, reflection sign wrong, normal matrix wrong, not
 # compiling, endless loop), graded by one `lightbench --grade` run inside Xvfb, each
-# submission in its own process, two at a time (and, alternating, one at a time). Prints the
-# wall time per run and the medians.
+# submission in its own process, two at a time (and, alternating, one at a time, and two at a
+# time without --report: the CSV is written again, whole, after each submission, and this
+# says what that costs). Prints the wall time per run and the medians.
 # Usage: bench/grade.sh [RUNS]   (default 3; builds first, like scripts/run)
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/../scripts/setup.sh"
@@ -26,22 +27,25 @@ for i in $(seq -w 1 20); do
     cp "$samples/correct/lighting.vert" "$class/correct-$i.vert"
     cp "$samples/correct/lighting.frag" "$class/correct-$i.frag"
 done
-# Alternating: the default (a process per core, two here) and one process at a time.
+# Alternating: the default (a process per core, two here), one process at a time, and the
+# default with no report.
+variants=(default 1 no-report)
 declare -A times
 for ((r = 0; r < RUNS; r++)); do
-    for processes in default 1; do
+    for processes in "${variants[@]}"; do
+        report=(--report "$class/grades.csv")
+        [[ $processes == no-report ]] && report=()
         start=$(date +%s.%N)
-        LIGHTBENCH_GRADE_PROCESSES=$([[ $processes == default ]] && echo 0 || echo "$processes") \
+        LIGHTBENCH_GRADE_PROCESSES=$([[ $processes == 1 ]] && echo 1 || echo 0) \
             "$exe" --grade "$class"/*.vert \
-            --exercise "$ROOT/resources/examples/exercise_lighting.json" \
-            --report "$class/grades.csv" >/dev/null
+            --exercise "$ROOT/resources/examples/exercise_lighting.json" "${report[@]}" >/dev/null
         end=$(date +%s.%N)
         t=$(awk "BEGIN {printf \"%.1f\", $end - $start}")
         times[$processes]+="$t "
         echo "run $((r + 1)), processes $processes: $t s, load $(cut -d' ' -f1-3 /proc/loadavg)"
     done
 done
-for processes in default 1; do
+for processes in "${variants[@]}"; do
     median=$(printf '%s\n' ${times[$processes]} | sort -g |
              awk '{a[NR]=$1} END {print a[int((NR+1)/2)]}')
     echo "100 submissions x 20 cases at 320x240, processes $processes: median $median s" \
