@@ -49,15 +49,12 @@ SceneActions::SceneActions(QMainWindow *window, SceneDocument *document, ShaderD
             [this](const QString &path) { openAsking(path); });
     // The session's scene came from this file: it is still the document (with the session's
     // changes unsaved, as the title's * says), as long as the file can be read.
-    // An example (":/examples/NAME.json") is the document too, with no file to save to.
     const QString current = m_settings.value(kCurrentKey).toString();
     if (!current.isEmpty()) {
         const SceneFileRead read = readSceneFile(current);
         if (read.file) {
-            const bool example = current.startsWith(":/");
-            m_path = example ? QString() : current;
-            m_name = example ? current.section('/', -1) : QFileInfo(current).fileName();
-            m_saved = asOpened(*read.file, example);
+            setDocument(current);
+            m_saved = asOpened(*read.file, current.startsWith(":/"));
             m_exercise = read.file->exercise; // saving the session's scene keeps it
             m_exerciseScene = read.file->scene;
         }
@@ -125,10 +122,7 @@ bool SceneActions::open(const QString &path)
     m_shaders->setProgram(file.program, perVertex(file.scene.shading.shading));
     m_document->set(file.scene);
     emit exerciseChanged(); // after the scene: side B's choices may follow the exercise
-    const QString name = example ? path.section('/', -1) : QFileInfo(path).fileName();
-    setCurrentPath(example ? QString() : QFileInfo(path).absoluteFilePath(), name);
-    if (example) // after a restart the example is still the document, unchanged
-        m_settings.setValue(kCurrentKey, path);
+    setDocument(example ? path : QFileInfo(path).absoluteFilePath());
     remember();
     if (!example)
         m_recent->add(QFileInfo(path).absoluteFilePath());
@@ -136,9 +130,9 @@ bool SceneActions::open(const QString &path)
         showMessage(QMessageBox::Information,
                     tr("%1 opened; %n field(s) could not be used and kept their defaults.", "",
                        int(read.ignored.size()))
-                        .arg(name),
+                        .arg(m_name),
                     summarisedList(read.ignored, "\n", 20));
-    showStatusMessage(m_window, tr("Opened the scene %1").arg(name), 5000);
+    showStatusMessage(m_window, tr("Opened the scene %1").arg(m_name), 5000);
     emit sceneOpened(path);
     return true;
 }
@@ -166,7 +160,7 @@ QString SceneActions::save(const QString &path)
         showMessage(QMessageBox::Warning, tr("The scene was not saved."), error);
         return error;
     }
-    setCurrentPath(QFileInfo(path).absoluteFilePath(), QFileInfo(path).fileName());
+    setDocument(QFileInfo(path).absoluteFilePath());
     remember();
     m_recent->add(m_path);
     showStatusMessage(m_window, tr("Saved the scene to %1").arg(path), 5000);
@@ -263,16 +257,19 @@ void SceneActions::showMessage(QMessageBox::Icon icon, const QString &text, cons
     m_messageBox->show();
 }
 
-void SceneActions::setCurrentPath(const QString &path, const QString &name)
+void SceneActions::setDocument(const QString &origin)
 {
-    m_path = path;
-    m_name = name;
-    m_settings.setValue(kCurrentKey, path);
+    // An example (":/examples/NAME.json") is the document too, also after a restart, with no
+    // file to save to.
+    const bool example = origin.startsWith(":/");
+    m_path = example ? QString() : origin;
+    m_name = example ? origin.section('/', -1) : QFileInfo(origin).fileName();
+    m_settings.setValue(kCurrentKey, origin);
 }
 
 void SceneActions::forgetFile()
 {
-    setCurrentPath({}, {});
+    setDocument({});
     m_saved.reset();
     if (m_exercise) {
         m_exercise.reset();

@@ -95,7 +95,8 @@ private:
     void showOpenDialog();
     void showExportDialog();
     void showMessage(QMessageBox::Icon icon, const QString &text, const QString &details);
-    void setCurrentPath(const QString &path, const QString &name);
+    // The scene's file (absolute), an example's resource, or none; kept for the next start.
+    void setDocument(const QString &origin);
     void remember(); // what isModified() compares with
     Scene sceneToSave() const;
     bool differsFromSaved(bool withProgram) const;
