@@ -6,6 +6,7 @@
 #include "import_process.h"
 #include "message_text.h"
 #include "offscreen.h"
+#include "program_guard.h"
 #include "safe_write.h"
 #include "stop_signals.h"
 #include "submission.h"
@@ -35,7 +36,7 @@ namespace {
 
 // What a child says when the exercise, not the submission, is at fault: the batch stops.
 const QStringList kBatchFailures{"no exercise", "no OpenGL", "exercise files",
-                                 "reference does not build"};
+                                 "reference does not build", "reference refused"};
 
 void printLine(const QString &line, FILE *stream)
 {
@@ -86,6 +87,16 @@ QString diagnosticText(const Diagnostic &d, const Submission &s)
         where =
             QFileInfo(d.stage == ShaderStage::Fragment ? s.fragmentPath : s.vertexPath).fileName() +
             (scene ? QString(" (%1)").arg(stageName(d.stage)) : QString());
+    return d.line > 0 ? QString("%1:%2: %3").arg(where).arg(d.line).arg(d.message)
+                      : QString("%1: %2").arg(where, d.message);
+}
+
+// "reference fragment:12: message": the exercise's own program, inline in its file.
+QString referenceText(const Diagnostic &d)
+{
+    const QString where = d.stage == ShaderStage::Link
+                              ? QString("reference (link)")
+                              : QString("reference %1").arg(stageName(d.stage));
     return d.line > 0 ? QString("%1:%2: %3").arg(where).arg(d.line).arg(d.message)
                       : QString("%1: %2").arg(where, d.message);
 }
@@ -276,14 +287,39 @@ int runGradeOne(const CommandLine &cl)
             reference.push_back(offscreen.render(c));
         }
     } else {
-        const ProgramBuild build =
-            offscreen.useProgram(exercise.reference.vertex, exercise.reference.fragment);
+        // The teacher's program is a stranger's too (an exercise handed on): tried as every
+        // submission is. One that loops or is over the budget stops the batch, on its line.
+        const QString &vertex = exercise.reference.vertex, &fragment = exercise.reference.fragment;
+        const auto refused = [&](const Diagnostic &d) {
+            return finish("reference refused", referenceText(d));
+        };
+        std::optional<WorkGuard> guard;
+        guard.emplace(programMemoryKB(), kProgramLimitMs,
+                      [&](WorkGuard::Limit limit, long limitKB) {
+                          refused(guardRefusal(limit, limitKB, vertex, fragment));
+                          std::fflush(nullptr);
+                          std::_Exit(0);
+                      });
+        const ProgramBuild build = offscreen.useProgram(vertex, fragment);
         if (!build.ok())
             return finish("reference does not build", build.log());
+        const TrialResult trial = offscreen.tryUserProgram(
+            cases.front(), vertex, fragment, spec.size, kGradingTrialBudgetMs, kCommandLineTrial);
+        if (trial.refusal)
+            return refused(*trial.refusal);
+        guard.reset();
         for (const Scene &c : cases)
             reference.push_back(offscreen.render(c));
     }
 
+    // The driver compiles and tries the student's program within bounds: past one, the
+    // report says so and this process ends (the driver never returns to this thread).
+    std::optional<WorkGuard> guard;
+    guard.emplace(programMemoryKB(), kProgramLimitMs, [&](WorkGuard::Limit limit, long limitKB) {
+        finish("refused", diagnosticText(guardRefusal(limit, limitKB, s.vertex, s.fragment), s));
+        std::fflush(nullptr);
+        std::_Exit(0);
+    });
     const ProgramBuild build = offscreen.useProgram(s.vertex, s.fragment);
     if (!build.ok()) {
         const auto first = std::find_if(
@@ -299,6 +335,7 @@ int runGradeOne(const CommandLine &cl)
         cases.front(), s.vertex, s.fragment, spec.size, kGradingTrialBudgetMs, kCommandLineTrial);
     if (trial.refusal)
         return finish("refused", diagnosticText(*trial.refusal, s));
+    guard.reset(); // the frames below are the batch's time limit's
 
     int worst = -1;
     CaseResult worstResult;

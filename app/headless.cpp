@@ -3,6 +3,7 @@
 #include "diagnostics.h"
 #include "heap_warmer.h"
 #include "offscreen.h"
+#include "program_guard.h"
 #include "program_trial.h"
 #include "safe_write.h"
 
@@ -12,14 +13,10 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 
-#include <chrono>
 #include <cmath>
-#include <condition_variable>
 #include <cstdio>
 #include <cstdlib>
 #include <functional>
-#include <mutex>
-#include <thread>
 
 #include <sys/resource.h>
 
@@ -30,41 +27,6 @@ namespace {
 // Qt maps PNG quality 80 to zlib level 1: about three times faster than the default level
 // on a 1920x1080 frame, for a file a few percent larger (mostly flat background).
 constexpr int kPngQuality = 80;
-
-// How long the trial's small frames may take before the process gives up on the driver: the
-// command line answers within 10 s whatever the program.
-constexpr int kTrialLimitMs = 8000;
-
-// The program's trial (program_trial.h) with a watchdog: a driver stuck in a draw never
-// returns to this thread, so another one reports and ends the process.
-TrialResult tryWithin(OffscreenRenderer &offscreen, const Scene &scene, const CommandLine &cl,
-                      const std::function<void(const Diagnostic &)> &report)
-{
-    std::mutex mutex;
-    std::condition_variable done;
-    bool finished = false;
-    std::thread watchdog([&] {
-        std::unique_lock<std::mutex> lock(mutex);
-        if (done.wait_for(lock, std::chrono::milliseconds(kTrialLimitMs), [&] { return finished; }))
-            return;
-        report(refusalAt(cl.vertexSource, cl.fragmentSource,
-                         QString("drawing a small frame with this program took more than %1: "
-                                 "an endless or very long loop?")
-                             .arg(durationText(kTrialLimitMs))));
-        std::fflush(nullptr);
-        std::_Exit(1);
-    });
-    const TrialResult r =
-        offscreen.tryUserProgram(scene, cl.vertexSource, cl.fragmentSource, cl.size,
-                                 cl.frameBudgetSeconds * 1000.0, kCommandLineTrial);
-    {
-        std::lock_guard<std::mutex> lock(mutex);
-        finished = true;
-    }
-    done.notify_all();
-    watchdog.join();
-    return r;
-}
 
 double rounded(float v)
 {
@@ -283,6 +245,18 @@ int runHeadless(const CommandLine &cl, const Scene &requested)
     }
     if (cl.hasUserProgram()) {
         FILE *out = cl.check ? stdout : stderr;
+        // The driver compiles, links and draws a stranger's program within bounds: one that
+        // makes it take too much memory or time ends the process with a message on its line
+        // (a driver stuck in a draw or a compile never returns to this thread).
+        const WorkGuard guard(
+            programMemoryKB(), kProgramLimitMs, [&](WorkGuard::Limit limit, long limitKB) {
+                printLine(formatDiagnostic(
+                              guardRefusal(limit, limitKB, cl.vertexSource, cl.fragmentSource), cl)
+                              .toUtf8(),
+                          out);
+                std::fflush(nullptr);
+                std::_Exit(1);
+            });
         const ProgramBuild build = offscreen.useProgram(cl.vertexSource, cl.fragmentSource);
         for (const Diagnostic &d : build.diagnostics)
             printLine(formatDiagnostic(d, cl).toUtf8(), out);
@@ -290,9 +264,9 @@ int runHeadless(const CommandLine &cl, const Scene &requested)
             return 1;
         // Tried at a small size before a frame at --size: a program that would take longer
         // than the budget, or hangs, exits 1 with a message on its loop's line.
-        const TrialResult trial = tryWithin(offscreen, scene, cl, [&](const Diagnostic &d) {
-            printLine(formatDiagnostic(d, cl).toUtf8(), out);
-        });
+        const TrialResult trial =
+            offscreen.tryUserProgram(scene, cl.vertexSource, cl.fragmentSource, cl.size,
+                                     cl.frameBudgetSeconds * 1000.0, kCommandLineTrial);
         if (trial.refusal) {
             printLine(formatDiagnostic(*trial.refusal, cl).toUtf8(), out);
             return 1;

@@ -23,9 +23,6 @@ namespace lb {
 namespace {
 constexpr float kDegreesPerPixel = 0.4f;
 constexpr float kAutoRotateDegreesPerSecond = 30.0f;
-// A vertex stage whose loops are all counted and this short (the built-in Gouraud's four
-// lights) may run before its trial answers: a million vertices would take well under a second.
-constexpr int kShortLoopSteps = 64;
 } // namespace
 
 Viewport::Viewport(SceneDocument *document, QWidget *parent)
@@ -300,21 +297,16 @@ void Viewport::buildNow(const QString &vertexSource, const QString &fragmentSour
     // it runs again once the object is there (setObject).
     m_trialWithoutObject = !m_renderer.objectMesh();
     m_candidate.reset(); // a trial still running answers for a program no longer wanted
-    m_renderer.dropCandidate();
     // The presets as shipped are ours and draw in good time: drawn at once, untried (the
     // built-in program follows the shading switch without a trial's delay).
     const bool ours = isPresetProgram(vertexSource, fragmentSource);
-    if (!ours && !tryHere && m_trialMode == TrialMode::Helper && m_trialProcess->isAvailable() &&
-        !refusalWithoutFrames(vertexSource, fragmentSource) &&
-        needsFrames(vertexSource, fragmentSource)) {
-        // In the helper: built here (the editor gets its diagnostics now) but drawn only
-        // once the helper's answer comes (trialFinished); the window goes on meanwhile.
-        const ProgramBuild build = m_renderer.buildCandidate(vertexSource, fragmentSource);
-        if (!build.ok()) {
-            finishBuild(build, {}, vertexSource, fragmentSource, std::nullopt);
-            return;
-        }
-        m_candidate = Candidate{++m_lastTrialId, build, vertexSource, fragmentSource};
+    if (!ours && !tryHere && m_trialMode == TrialMode::Helper && m_trialProcess->isAvailable()) {
+        // Every other program is compiled, linked and drawn in the helper first, under its
+        // memory bound and the trial's time limit: the driver's compiler is never given a
+        // stranger's program in the window's process (a macro bomb took one to 24 GB). The
+        // helper's answer (trialFinished) brings the diagnostics; only an accepted program
+        // is built here. Meanwhile the last good program keeps drawing.
+        m_candidate = Candidate{++m_lastTrialId, vertexSource, fragmentSource};
         trialwire::TryRequest request;
         request.id = m_candidate->id;
         request.scene = m_document->scene().toJson();
@@ -323,11 +315,6 @@ void Viewport::buildNow(const QString &vertexSource, const QString &fragmentSour
         request.target = target;
         request.budgetMs = m_frameBudgetMs;
         m_trialProcess->tryProgram(request, m_renderer.sharedObjectMesh());
-        // Meanwhile the driver may generate its code here (a frame with nothing rasterized),
-        // so the first frame after the answer does not: only when the vertex stage, which
-        // does run, has no loop to be slow in (or only short counted ones).
-        if (onlyShortLoops(vertexSource, kShortLoopSteps))
-            prepareCandidate();
         return;
     }
     QString refused;
@@ -341,7 +328,7 @@ void Viewport::buildNow(const QString &vertexSource, const QString &fragmentSour
             });
         if (result.refusal)
             refused = result.refusal->message;
-        if (needsFrames(vertexSource, fragmentSource))
+        else
             measured = result;
         return result.refusal;
     };
@@ -351,34 +338,36 @@ void Viewport::buildNow(const QString &vertexSource, const QString &fragmentSour
     finishBuild(build, refused, vertexSource, fragmentSource, measured);
 }
 
-void Viewport::trialFinished(quint64 id, TrialProcess::Outcome outcome, const TrialResult &result)
+void Viewport::trialFinished(quint64 id, TrialProcess::Outcome outcome, const TrialResult &result,
+                             const std::vector<Diagnostic> &diagnostics)
 {
     if (!m_candidate || m_candidate->id != id || !m_renderer.isInitialized())
         return; // a newer program is being tried, or there is no context to draw it in
     const Candidate tried = std::move(*m_candidate);
     m_candidate.reset();
     makeCurrent();
-    if (outcome != TrialProcess::Outcome::Tried) {
+    if (outcome == TrialProcess::Outcome::Unavailable) {
         // No helper to try it: tried here, as before there was one.
-        m_renderer.dropCandidate();
         buildNow(tried.vertex, tried.fragment, true);
         doneCurrent();
         return;
     }
-    ProgramBuild build = tried.build;
+    ProgramBuild build;
+    build.diagnostics = diagnostics;
     QString refused;
-    if (result.refusal) {
-        m_renderer.dropCandidate();
-        build.linked = false;
+    if (outcome == TrialProcess::Outcome::NotBuilt) {
+    } else if (result.refusal) {
         build.diagnostics.push_back(*result.refusal);
         refused = result.refusal->message;
-    } else if (m_renderer.hasCandidate()) {
-        m_renderer.adoptCandidate();
     } else {
-        build = m_renderer.setUserProgram(tried.vertex, tried.fragment); // a new context since
+        // Accepted: the helper's driver built and drew it within its bounds.
+        build = m_renderer.setUserProgram(tried.vertex, tried.fragment);
     }
     doneCurrent();
-    finishBuild(build, refused, tried.vertex, tried.fragment, result);
+    finishBuild(build, refused, tried.vertex, tried.fragment,
+                outcome == TrialProcess::Outcome::Tried && !result.refusal
+                    ? std::optional<TrialResult>(result)
+                    : std::nullopt);
 }
 
 void Viewport::finishBuild(const ProgramBuild &build, const QString &refused,
@@ -417,16 +406,6 @@ QOpenGLFramebufferObjectFormat widgetFormat()
     return format;
 }
 } // namespace
-
-void Viewport::prepareCandidate()
-{
-    QOpenGLFramebufferObject fbo(QSize(4, 4), widgetFormat());
-    if (!fbo.isValid())
-        return;
-    fbo.bind();
-    m_renderer.prepareCandidate(m_document->scene(), fbo.size());
-    fbo.release();
-}
 
 double Viewport::timeFrame(QSize pixels)
 {
@@ -516,7 +495,10 @@ ProgramBuild Viewport::setSideBProgram(const QString &vertexSource, const QStrin
     m_sideBName = name;
     ProgramBuild build;
     build.linked = true;
-    if (m_renderer.isInitialized()) {
+    if (!vertexSource.isEmpty() && !isPresetProgram(vertexSource, fragmentSource))
+        if (std::optional<ProgramBuild> refused = refusedInHelper(vertexSource, fragmentSource))
+            build = *refused;
+    if (build.ok() && m_renderer.isInitialized()) {
         makeCurrent();
         if (vertexSource.isEmpty())
             m_renderer.clearSideBProgram();
@@ -528,6 +510,37 @@ ProgramBuild Viewport::setSideBProgram(const QString &vertexSource, const QStrin
         m_sideBVertex.clear(), m_sideBFragment.clear(), m_sideBName.clear();
     update();
     return build;
+}
+
+std::optional<ProgramBuild> Viewport::refusedInHelper(const QString &vertexSource,
+                                                      const QString &fragmentSource)
+{
+    // Side B's program comes from files or an exercise someone handed out: compiled and
+    // drawn in a helper of its own first, as the editor's is (buildNow), and waited for (the
+    // caller says at once whether it builds). Its own helper: side A's trial goes on.
+    if (m_trialMode != TrialMode::Helper)
+        return std::nullopt;
+    if (!m_sideBTrial)
+        m_sideBTrial = new TrialProcess(this);
+    if (!m_sideBTrial->isAvailable())
+        return std::nullopt;
+    trialwire::TryRequest request;
+    request.id = ++m_lastTrialId;
+    request.scene = m_document->scene().toJson();
+    request.vertex = vertexSource;
+    request.fragment = fragmentSource;
+    request.target = size() * devicePixelRatio();
+    request.budgetMs = m_frameBudgetMs;
+    const TrialProcess::Answer answer =
+        m_sideBTrial->tryAndWait(request, m_renderer.sharedObjectMesh());
+    if (answer.outcome == TrialProcess::Outcome::Unavailable ||
+        (answer.outcome == TrialProcess::Outcome::Tried && !answer.result.refusal))
+        return std::nullopt;
+    ProgramBuild refused;
+    refused.diagnostics = answer.diagnostics;
+    if (answer.result.refusal)
+        refused.diagnostics.push_back(*answer.result.refusal);
+    return refused;
 }
 
 QImage Viewport::renderImage(QSize pixels)

@@ -78,9 +78,10 @@ public:
     // (tried on tiny frames first); Edit > Preferences sets it.
     void setFrameBudget(double milliseconds) { m_frameBudgetMs = milliseconds; }
     double frameBudget() const { return m_frameBudgetMs; }
-    // Where a program with loops is tried: in the trial helper (the window never waits; the
-    // default), in this widget's own context (when there is no helper), or not at all (for
-    // the benchmark's comparison only). $LIGHTBENCH_PROGRAM_TRIAL=helper|window|off.
+    // Where a program that is not ours is tried: in the trial helper (compiled and drawn
+    // there first; the window never waits; the default), in this widget's own context (when
+    // there is no helper), or not at all (for the benchmark's comparison only).
+    // $LIGHTBENCH_PROGRAM_TRIAL=helper|window|off.
     enum class TrialMode { Helper, Window, Off };
     void setTrialMode(TrialMode mode) { m_trialMode = mode; }
     TrialProcess *trialProcess() const { return m_trialProcess; }
@@ -119,12 +120,16 @@ private:
     // context, or in a new one when `newContext`), with a banner and programBuilt().
     void refuseDrawingProgram(const QString &why, bool newContext);
     double timeFrame(QSize pixels); // one frame in a framebuffer of its own, waited for (ms)
-    void prepareCandidate();        // Renderer::prepareCandidate in such a framebuffer
     void buildNow(const QString &vertexSource, const QString &fragmentSource, bool tryHere = false);
-    void trialFinished(quint64 id, TrialProcess::Outcome outcome, const TrialResult &result);
+    void trialFinished(quint64 id, TrialProcess::Outcome outcome, const TrialResult &result,
+                       const std::vector<Diagnostic> &diagnostics);
     // `trial`: what the program's trial measured, kept for bigger frames (tooSlowAt).
     void finishBuild(const ProgramBuild &build, const QString &refused, const QString &vertexSource,
                      const QString &fragmentSource, const std::optional<TrialResult> &trial);
+    // Side B's program tried in its helper: the failed build when it does not build or is
+    // refused there; nothing when it may be built here.
+    std::optional<ProgramBuild> refusedInHelper(const QString &vertexSource,
+                                                const QString &fragmentSource);
     void setBanner(const QString &text);
     void updateCompareLabel();
     bool nearWipe(QPoint position) const;
@@ -139,11 +144,11 @@ private:
     bool m_trialWithoutObject = false; // the user program was tried before there was an object
     TrialMode m_trialMode = TrialMode::Helper;
     TrialProcess *m_trialProcess;
-    // The program built aside while the helper tries it (Renderer::buildCandidate).
+    TrialProcess *m_sideBTrial = nullptr; // side B's, started when side B first needs it
+    // The program the helper is trying: built here once it is accepted.
     struct Candidate
     {
         quint64 id;
-        ProgramBuild build;
         QString vertex, fragment;
     };
     std::optional<Candidate> m_candidate;

@@ -57,13 +57,6 @@ std::optional<Diagnostic> refusalWithoutFrames(const QString &vertex, const QStr
     return std::nullopt;
 }
 
-bool needsFrames(const QString &vertex, const QString &fragment)
-{
-    // (A big mesh's frames are not drawn three more times per edit for a program that
-    // cannot be slow.)
-    return !loopPlaces(vertex).empty() || !loopPlaces(fragment).empty();
-}
-
 TrialResult tryProgram(const QString &vertex, const QString &fragment, QSize target,
                        double budgetMs, const TrialSizes &sizes,
                        const std::function<double(QSize)> &timeFrame,
@@ -71,7 +64,7 @@ TrialResult tryProgram(const QString &vertex, const QString &fragment, QSize tar
 {
     TrialResult r;
     r.refusal = refusalWithoutFrames(vertex, fragment);
-    if (r.refusal || !needsFrames(vertex, fragment))
+    if (r.refusal)
         return r;
 
     // A tiny frame first: the driver generates the program's code at its first draw
@@ -144,17 +137,20 @@ TrialResult tryProgram(const QString &vertex, const QString &fragment, QSize tar
         }
     }
     if (r.estimatedMs > budgetMs)
-        r.refusal = refusalAt(
-            vertex, fragment,
-            QString("drawing one frame with this program would take about %1 at %2x%3 "
-                    "(measured %4 at %5x%6; the budget is %7): an endless or very long loop?")
-                .arg(durationText(r.estimatedMs))
-                .arg(target.width())
-                .arg(target.height())
-                .arg(durationText(confirmed))
-                .arg(confirm.width())
-                .arg(confirm.height())
-                .arg(durationText(budgetMs)));
+        r.refusal =
+            refusalAt(vertex, fragment,
+                      QString("drawing one frame with this program would take about %1 at %2x%3 "
+                              "(measured %4 at %5x%6; the budget is %7): %8")
+                          .arg(durationText(r.estimatedMs))
+                          .arg(target.width())
+                          .arg(target.height())
+                          .arg(durationText(confirmed))
+                          .arg(confirm.width())
+                          .arg(confirm.height())
+                          .arg(durationText(budgetMs))
+                          .arg(loopPlaces(vertex).empty() && loopPlaces(fragment).empty()
+                                   ? "too much work for every pixel?"
+                                   : "an endless or very long loop?"));
     return r;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
-// A user's program tried before it is used: a loop with no way out refuses it at once; a
-// program with loops is timed: two small frames separate what a frame costs anyway from what
+// A user's program tried before it is used: a loop with no way out refuses it at once; every
+// other program is timed, loops or not (25,000 lines of sin() without one took 4 minutes a
+// frame): two small frames separate what a frame costs anyway from what
 // each pixel costs, and the frame at the size it will be drawn is estimated; over the budget,
 // a bigger frame confirms it (a stall in a tiny frame would be multiplied by thousands) and
 // it is refused with a diagnostic on its first loop's line. The frames are drawn by the
@@ -47,11 +48,8 @@ struct TrialResult
     }
 };
 
-// What trying these sources takes before any frame: a refusal when a loop has no way out (no
-// frame needs drawing to know), and whether they need frames at all (only a loop can make a
-// frame take seconds).
+// A refusal before any frame when a loop has no way out (no frame needs drawing to know).
 std::optional<Diagnostic> refusalWithoutFrames(const QString &vertex, const QString &fragment);
-bool needsFrames(const QString &vertex, const QString &fragment);
 
 // `timeFrame(size)`: the milliseconds one frame with the program takes at `size`, waited for.
 // `timeReference(size)`, when given, the same with the built-in program: what the scene costs

@@ -1,6 +1,9 @@
 #include "trial_process.h"
 
+#include "work_guard.h"
+
 #include <QCoreApplication>
+#include <QEventLoop>
 #include <QFileInfo>
 #include <QStandardPaths>
 
@@ -87,6 +90,26 @@ void TrialProcess::tryProgram(const trialwire::TryRequest &request,
     send(pending);
 }
 
+TrialProcess::Answer TrialProcess::tryAndWait(const trialwire::TryRequest &request,
+                                              std::shared_ptr<const Mesh> mesh)
+{
+    Answer answer;
+    QEventLoop loop;
+    const QMetaObject::Connection connection =
+        connect(this, &TrialProcess::finished, &loop,
+                [&](quint64 id, Outcome outcome, const TrialResult &result,
+                    const std::vector<Diagnostic> &diagnostics) {
+                    if (id != request.id)
+                        return;
+                    answer = Answer{outcome, result, diagnostics};
+                    loop.quit();
+                });
+    tryProgram(request, std::move(mesh));
+    loop.exec(QEventLoop::ExcludeUserInputEvents);
+    disconnect(connection);
+    return answer;
+}
+
 void TrialProcess::send(const Pending &pending)
 {
     // In flight before anything is written: a helper that fails to start may say so while
@@ -133,7 +156,7 @@ void TrialProcess::readOutput()
         m_silentDeaths = 0;
         m_inFlight.reset();
         answer(message->reply.id, message->reply.built ? Outcome::Tried : Outcome::NotBuilt,
-               message->reply.result);
+               message->reply.result, message->reply.diagnostics);
     }
     sendNext();
 }
@@ -144,8 +167,9 @@ void TrialProcess::timedOut()
     m_process = nullptr; // its end (helperEnded) only deletes it now
     if (stuck)
         stuck->kill();
-    refuseInFlight(tr("trying this program on small frames did not finish within %1 (the "
-                      "trial's helper was replaced): an endless or very long loop?")
+    refuseInFlight(tr("compiling this program and drawing it on small frames did not finish "
+                      "within %1 (the trial's helper was replaced): an endless or very long "
+                      "loop, or a program too big for the driver?")
                        .arg(durationText(m_limitMs)));
     startHelper(); // warm for the next edit
     sendNext();
@@ -163,8 +187,8 @@ void TrialProcess::helperEnded(QProcess *process)
     m_stderr.clear();
     // Ended with no trial running: it could not start. Ended during one: the program did it.
     const bool silent = !m_inFlight && ++m_silentDeaths >= kMaxSilentDeaths;
-    if (process->error() == QProcess::FailedToStart || (!crashed && process->exitCode() == 3) ||
-        silent) {
+    if (process->error() == QProcess::FailedToStart ||
+        (!crashed && process->exitCode() == trialwire::kExitCannotDraw) || silent) {
         // No helper, or one that cannot draw: the window tries programs itself from now on.
         qWarning("lightbench: the trial helper %s cannot try programs (%s); the window tries "
                  "them itself",
@@ -181,6 +205,14 @@ void TrialProcess::helperEnded(QProcess *process)
         return;
     }
     m_deadline.stop();
+    if (!crashed && process->exitCode() == trialwire::kExitOutOfMemory) {
+        char limit[32];
+        refuseInFlight(tr("the driver ran out of memory compiling or drawing this program "
+                          "(limit %1; the trial's helper was replaced)")
+                           .arg(memoryText(programMemoryKB(), limit)));
+        sendNext();
+        return;
+    }
     refuseInFlight(crashed ? tr("the driver crashed the trial's helper while it drew this "
                                 "program (it was replaced)")
                            : tr("the trial's helper ended while it drew this program (exit code "
@@ -200,12 +232,16 @@ void TrialProcess::refuseInFlight(const QString &why)
     answer(tried.request.id, Outcome::Tried, result);
 }
 
-void TrialProcess::answer(quint64 id, Outcome outcome, const TrialResult &result)
+void TrialProcess::answer(quint64 id, Outcome outcome, const TrialResult &result,
+                          const std::vector<Diagnostic> &diagnostics)
 {
     // From the event loop, never from inside tryProgram(): the caller may be half-way
     // through its own state (the window builds its candidate around the call).
     QMetaObject::invokeMethod(
-        this, [this, id, outcome, result] { emit finished(id, outcome, result); },
+        this,
+        [this, id, outcome, result, diagnostics] {
+            emit finished(id, outcome, result, diagnostics);
+        },
         Qt::QueuedConnection);
 }
 

@@ -14,6 +14,7 @@
 #include <QTimer>
 
 #include <memory>
+#include <vector>
 
 namespace lb {
 
@@ -23,7 +24,7 @@ class TrialProcess : public QObject
 public:
     enum class Outcome {
         Tried,      // `result` says whether the program is refused
-        NotBuilt,   // the helper could not build it: the window's own build says why
+        NotBuilt,   // it did not compile or link: the diagnostics say why
         Unavailable // there is no helper, or it cannot draw: the caller tries it itself
     };
 
@@ -34,6 +35,16 @@ public:
     // finished() follows with the request's id, unless a newer request replaces this one
     // before the helper takes it (only the newest waiting request is kept).
     void tryProgram(const trialwire::TryRequest &request, std::shared_ptr<const Mesh> mesh);
+    // The same, waited for: for what must answer at once (side B's program, chosen in a
+    // dialog). The window keeps repainting meanwhile and holds the user's input back; the
+    // limit bounds the wait.
+    struct Answer
+    {
+        Outcome outcome = Outcome::Unavailable;
+        TrialResult result;
+        std::vector<Diagnostic> diagnostics;
+    };
+    Answer tryAndWait(const trialwire::TryRequest &request, std::shared_ptr<const Mesh> mesh);
     // How long one trial may take, the helper's start included.
     void setLimit(int milliseconds) { m_limitMs = milliseconds; }
     qint64 helperPid() const;
@@ -45,7 +56,9 @@ public:
     static QString helperPath();
 
 signals:
-    void finished(quint64 id, lb::TrialProcess::Outcome outcome, const lb::TrialResult &result);
+    // `diagnostics`: the helper's build's (Tried, NotBuilt), errors and warnings alike.
+    void finished(quint64 id, lb::TrialProcess::Outcome outcome, const lb::TrialResult &result,
+                  const std::vector<lb::Diagnostic> &diagnostics);
 
 private:
     struct Pending
@@ -59,7 +72,8 @@ private:
     void readOutput();
     void helperEnded(QProcess *process);
     void timedOut();
-    void answer(quint64 id, Outcome outcome, const TrialResult &result = {});
+    void answer(quint64 id, Outcome outcome, const TrialResult &result = {},
+                const std::vector<Diagnostic> &diagnostics = {});
     void refuseInFlight(const QString &why);
 
     QPointer<QProcess> m_process;

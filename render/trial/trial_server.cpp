@@ -3,7 +3,9 @@
 #include "offscreen.h"
 #include "program_trial.h"
 #include "trial_wire.h"
+#include "work_guard.h"
 
+#include <cstdlib>
 #include <memory>
 
 namespace lb {
@@ -37,7 +39,19 @@ trialwire::TryReply tryRequest(OffscreenRenderer &offscreen, const trialwire::Tr
 {
     trialwire::TryReply reply;
     reply.id = r.id;
-    if (!offscreen.useProgram(r.vertex, r.fragment).ok()) {
+    // Compiled, linked and drawn under a memory bound: a program that makes the driver take
+    // more ends this helper with kExitOutOfMemory, which the window turns into the refusal's
+    // message (its time is the window's to bound: it kills a helper that does not answer).
+    const WorkGuard guard(programMemoryKB(), 0, [](WorkGuard::Limit, long limitKB) {
+        char limit[32];
+        std::fprintf(stderr, "lightbench-trial: the driver took more than %s for this program\n",
+                     memoryText(limitKB, limit));
+        std::fflush(stderr);
+        std::_Exit(trialwire::kExitOutOfMemory);
+    });
+    const ProgramBuild build = offscreen.useProgram(r.vertex, r.fragment);
+    reply.diagnostics = build.diagnostics;
+    if (!build.ok()) {
         reply.built = false;
         return reply;
     }
@@ -55,7 +69,7 @@ int runTrialServer(std::FILE *in, std::FILE *out)
     OffscreenRenderer offscreen;
     if (const QString error = offscreen.initialize(QSize(64, 64)); !error.isEmpty()) {
         std::fprintf(stderr, "lightbench-trial: %s\n", qPrintable(error));
-        return 3;
+        return trialwire::kExitCannotDraw;
     }
     // Until the window sends its object: nothing but the background.
     offscreen.setObjectMesh(std::make_shared<Mesh>());
@@ -63,7 +77,7 @@ int runTrialServer(std::FILE *in, std::FILE *out)
         const std::optional<trialwire::Decoded> message = trialwire::decode(*frame);
         if (!message) {
             std::fputs("lightbench-trial: a message this build does not know\n", stderr);
-            return 3;
+            return trialwire::kExitCannotDraw;
         }
         if (message->type == trialwire::Message::Mesh)
             offscreen.setObjectMesh(std::make_shared<Mesh>(message->mesh));
@@ -77,7 +91,7 @@ int runTrialServer(std::FILE *in, std::FILE *out)
                               "the driver reset the OpenGL context while it tried this program: an "
                               "endless or very long loop?");
                 send(out, trialwire::encodeReply(reply));
-                return 4;
+                return trialwire::kExitContextReset;
             }
             send(out, trialwire::encodeReply(reply));
         }

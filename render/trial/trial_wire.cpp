@@ -81,6 +81,9 @@ QByteArray encodeReply(const TryReply &r)
             << r.result.nearReference << bool(r.result.refusal);
         if (r.result.refusal)
             out << *r.result.refusal;
+        out << quint32(r.diagnostics.size());
+        for (const Diagnostic &d : r.diagnostics)
+            out << d;
     });
 }
 
@@ -120,6 +123,14 @@ std::optional<Decoded> decode(const QByteArray &frame)
             in >> diagnostic;
             r.result.refusal = diagnostic;
         }
+        quint32 count = 0;
+        in >> count;
+        // (Each diagnostic takes at least 20 bytes: a count past the frame is a broken one.)
+        if (qint64(count) * 20 > frame.size())
+            return std::nullopt;
+        r.diagnostics.resize(count);
+        for (Diagnostic &diagnostic : r.diagnostics)
+            in >> diagnostic;
         break;
     }
     default:

@@ -14,6 +14,7 @@
 #include <QString>
 
 #include <optional>
+#include <vector>
 
 namespace lb::trialwire {
 
@@ -35,9 +36,16 @@ struct TryRequest
 struct TryReply
 {
     quint64 id = 0;
-    bool built = true; // false: it did not build in the helper (the window reports its own build)
+    bool built = true; // false: it did not compile or link in the helper
+    // The build's diagnostics (errors and warnings, on the user's lines): the window shows
+    // these, as it builds a program itself only once the helper accepted it.
+    std::vector<Diagnostic> diagnostics;
     TrialResult result;
 };
+
+// The helper's exit codes besides 0: it cannot draw at all (3), the driver reset its context
+// (4), the program made the driver take more memory than programMemoryKB() (5).
+constexpr int kExitCannotDraw = 3, kExitContextReset = 4, kExitOutOfMemory = 5;
 
 QByteArray encodeMesh(const Mesh &mesh);
 QByteArray encodeTry(const TryRequest &request);

@@ -30,6 +30,18 @@ bool writeFile(const QString &path, const QByteArray &bytes)
     return f.open(QIODevice::WriteOnly | QIODevice::Truncate) && f.write(bytes) == bytes.size();
 }
 
+// A fragment shader with no loop whose `lines` lines of sin() all run in every pixel (they
+// read a varying: nothing folds them away).
+QByteArray heavyFragment(int lines)
+{
+    QByteArray text =
+        "precision mediump float;\nvarying vec3 v;\nvoid main() {\n  vec3 c = v * 0.1;\n";
+    for (int i = 0; i < lines; ++i)
+        text +=
+            QString("  c += sin(c * %1.01 + vec3(%2.0));\n").arg(i % 7 + 1).arg(i % 13).toUtf8();
+    return text + "  gl_FragColor = vec4(c, 1.0);\n}\n";
+}
+
 Run run(const QStringList &args,
         const QProcessEnvironment &env = QProcessEnvironment::systemEnvironment())
 {
@@ -265,6 +277,51 @@ private slots:
             << QStringList{"--mesh", "a.obj", "--shape", "cube"} << "--shape";
         QTest::newRow("memory 0") << QStringList{"--import-memory-limit", "0"}
                                   << "--import-memory-limit";
+    }
+
+    // Every program is timed before its frame, loops or not: 25,000 lines of sin() without a
+    // loop passed --check and then took 4 minutes to render.
+    void aProgramWithoutLoopsIsTimedToo()
+    {
+        const QString vertex = m_dir.filePath("heavy.vert"),
+                      fragment = m_dir.filePath("heavy.frag");
+        QVERIFY(writeFile(vertex, "attribute vec4 vPosition;\nvarying vec3 v;\n"
+                                  "void main() { v = vPosition.xyz; gl_Position = vPosition; }\n"));
+        QVERIFY(writeFile(fragment, heavyFragment(60)));
+        const Run r = run({"--check", "--size", "1920x1080", "--frame-budget", "0.01", "--vertex",
+                           vertex, "--fragment", fragment});
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.out.contains("heavy.frag:0:0: error: drawing one frame with this program "
+                                "would take about") &&
+                     r.out.contains("too much work for every pixel?"),
+                 r.out.constData());
+        // The same program within its budget at a small size passes.
+        QCOMPARE(run({"--check", "--size", "64x64", "--vertex", vertex, "--fragment", fragment})
+                     .exitCode,
+                 0);
+    }
+
+    // The driver compiles a stranger's program under a memory bound (a 946-byte shader of
+    // doubling macros once took its preprocessor to 24 GB): past it, the process ends with a
+    // message on the program, not with the machine's memory. The bound is lowered here so
+    // that an ordinary compile passes it.
+    void aProgramThatTakesTheDriverTooMuchMemoryIsRefused()
+    {
+        const QString vertex = m_dir.filePath("big.vert"), fragment = m_dir.filePath("big.frag");
+        QVERIFY(writeFile(vertex, "attribute vec4 vPosition;\nvarying vec3 v;\n"
+                                  "void main() { v = vPosition.xyz; gl_Position = vPosition; }\n"));
+        QVERIFY(writeFile(fragment, heavyFragment(300)));
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.insert("LIGHTBENCH_PROGRAM_MEMORY_MB", "1");
+        env.insert("MESA_SHADER_CACHE_DISABLE", "true"); // a cached program takes nothing
+        QElapsedTimer clock;
+        clock.start();
+        const Run r = run({"--check", "--vertex", vertex, "--fragment", fragment}, env);
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.out.contains("big.frag:0:0: error: the driver ran out of memory compiling or "
+                                "drawing this program (limit "),
+                 r.out.constData());
+        QVERIFY(clock.elapsed() < 20000);
     }
 
     void meshFileRendersAndProbes()

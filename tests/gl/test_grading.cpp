@@ -325,6 +325,29 @@ private slots:
             << QJsonValue(QJsonObject{{"vertex", "void main() { gl_Position = vec4(0.0) }"},
                                       {"fragment", "void main() {}"}})
             << "reference does not build";
+        // The teacher's program is tried as a student's is: one that never finishes a frame
+        // (or is over the budget) is named on its line, instead of every submission taking
+        // the time limit and being compared with the driver's cut-short frames.
+        const QString vertex =
+            "attribute vec4 vPosition;\nvoid main() { gl_Position = vPosition; }";
+        QTest::newRow("reference that never finishes a frame")
+            << "reference"
+            << QJsonValue(QJsonObject{{"vertex", vertex},
+                                      {"fragment",
+                                       "precision mediump float;\nvoid main() {\n  float x = 0.0;\n"
+                                       "  for (;;) { x += 1.0; }\n  gl_FragColor = vec4(x);\n}"}})
+            << "reference refused: reference fragment:4: this program never finishes a frame";
+        // A loop that ends, but 200,000 steps in every pixel: minutes a frame.
+        QTest::newRow("reference over the budget")
+            << "reference"
+            << QJsonValue(QJsonObject{
+                   {"vertex", "attribute vec4 vPosition;\nvarying vec3 v;\nvoid main() { v = "
+                              "vPosition.xyz; gl_Position = vPosition; }"},
+                   {"fragment", "precision mediump float;\nvarying vec3 v;\nvoid main() {\n"
+                                "  vec3 c = v;\n  for (int i = 0; i < 200000; i++)\n"
+                                "    c = sin(c + v);\n  gl_FragColor = vec4(c, 1.0);\n}"}})
+            << "reference refused: reference fragment:5: drawing one frame with this program would "
+               "take about";
     }
 
     void aFaultyExerciseStopsTheBatch()

@@ -103,16 +103,27 @@ private slots:
         QVERIFY(!r.overBudgetAt(pixelsOf(QSize(4000, 3000)), 100.0));
     }
 
-    void programsWithoutLoopsAreNotTimed()
+    void programsWithoutLoopsAreTimedToo()
     {
+        // 25,000 lines of sin() and no loop took 4 minutes a frame: a program needs no loop
+        // to be slow. Scripted: 2 ms per 1000 pixels, over the 100 ms budget at 640x480.
         int calls = 0;
-        const TrialResult r = tryProgram(kVertex, "void main() { gl_FragColor = vec4(1.0); }\n",
-                                         kTarget, 1000.0, kWindowTrial, [&](QSize) {
-                                             ++calls;
-                                             return 1e6;
-                                         });
+        const auto slow = [&](QSize s) {
+            ++calls;
+            return 2e-3 * pixelsOf(s);
+        };
+        const QString fragment = "void main() {\n  gl_FragColor = vec4(sin(sin(1.0)));\n}\n";
+        TrialResult r = tryProgram(kVertex, fragment, kTarget, 100.0, kWindowTrial, slow);
+        QVERIFY(calls > 0);
+        QVERIFY(r.refusal);
+        QVERIFY2(r.refusal->message.startsWith("drawing one frame with this program would take"),
+                 qPrintable(r.refusal->message));
+        QCOMPARE(r.refusal->line, 0); // no loop to point at: the fragment shader as a whole
+        QCOMPARE(r.refusal->stage, ShaderStage::Fragment);
+        // A light one is drawn.
+        r = tryProgram(kVertex, fragment, kTarget, 100.0, kWindowTrial,
+                       [](QSize s) { return 1e-6 * pixelsOf(s); });
         QVERIFY(!r.refusal);
-        QCOMPARE(calls, 0);
     }
 
     void aLoopWithNoWayOutIsRefusedWithoutDrawing()

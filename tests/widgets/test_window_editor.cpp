@@ -219,8 +219,8 @@ private slots:
         QVERIFY(b && !b->ok());
         const QString expected =
             crash ? "the driver crashed the trial's helper while it drew this program"
-                  : "trying this program on small frames did not finish within 30 ms (the "
-                    "trial's helper was replaced)";
+                  : "compiling this program and drawing it on small frames did not finish "
+                    "within 30 ms (the trial's helper was replaced)";
         QVERIFY2(b->diagnostics.back().message.startsWith(expected),
                  qPrintable(b->diagnostics.back().message));
         QCOMPARE(b->diagnostics.back().line, int(fragment.left(at).count('\n')) + 2);
@@ -329,6 +329,55 @@ private slots:
                  qPrintable(b->diagnostics.back().message));
         QVERIFY2(v->banner().startsWith("Refused: drawing one frame"), qPrintable(v->banner()));
         QVERIFY(!v->drawingTrial().has_value()); // the slides' program: no loop, not tried
+    }
+
+    // Every program the window did not ship is compiled in the helper first, under a memory
+    // bound (a macro bomb once took a driver to 24 GB in the window's own process): past it,
+    // the helper ends, the program is refused with the bound, the last good program draws,
+    // and the next program gets a new helper. The bound is lowered here (the environment the
+    // next helper starts with) so that an ordinary compile passes it.
+    void aProgramThatTakesTheDriverTooMuchMemoryIsRefused()
+    {
+        EditorPanel *e = m_window->editorPanel();
+        Viewport *v = m_window->viewport();
+        TrialProcess *helper = v->trialProcess();
+        QVERIFY(buildAfter([&] { e->loadPreset(presets()[3]); }));
+        QString fragment = e->source(ShaderStage::Fragment);
+        const int at = int(fragment.indexOf("    gl_FragColor"));
+        QString light = fragment;
+        light.insert(at, "    diffuse *= 0.9;\n");
+        std::optional<ProgramBuild> b =
+            buildAfter([&] { e->editor(ShaderStage::Fragment)->setText(light); });
+        QVERIFY(b && b->ok());
+        const QImage good = frame();
+        const qint64 first = helper->helperPid();
+        QVERIFY(first > 0);
+        qputenv("LIGHTBENCH_PROGRAM_MEMORY_MB", "1");
+        qputenv("MESA_SHADER_CACHE_DISABLE", "true"); // a cached program takes nothing
+        ::kill(pid_t(first), SIGKILL); // the next helper starts with the lowered bound
+        QTRY_VERIFY(helper->helperPid() != first);
+        QString heavy = fragment;
+        for (int i = 0; i < 100; ++i)
+            heavy.insert(at, QString("    diffuse *= 0.5 + 0.5 * sin(diffuse * %1.0);\n").arg(i));
+        b = buildAfter([&] { e->editor(ShaderStage::Fragment)->setText(heavy); });
+        qunsetenv("LIGHTBENCH_PROGRAM_MEMORY_MB");
+        qunsetenv("MESA_SHADER_CACHE_DISABLE");
+        QVERIFY(b && !b->ok());
+        const QString expected = "the driver ran out of memory compiling or drawing this program "
+                                 "(limit 1 MB; the trial's helper was replaced)";
+        QVERIFY2(b->diagnostics.back().message == expected,
+                 qPrintable(b->diagnostics.back().message));
+        QVERIFY2(v->banner().startsWith("Refused: " + expected), qPrintable(v->banner()));
+        const QRect belowBanner(0, 80, good.width(), good.height() - 80);
+        QVERIFY2(imageDifference(frame().copy(belowBanner), good.copy(belowBanner)) == 0,
+                 "the last good program must keep drawing");
+        // The next program: a new helper, the usual bound, drawn.
+        QString lighter = fragment;
+        lighter.insert(at, "    diffuse *= 0.5;\n");
+        b = buildAfter([&] { e->editor(ShaderStage::Fragment)->setText(lighter); });
+        QVERIFY(b && b->ok());
+        QVERIFY(v->banner().isEmpty());
+        QVERIFY(imageDifference(frame(), good) > 10);
     }
 
     // Without the helper (not installed, or no OpenGL there) the window tries programs in
