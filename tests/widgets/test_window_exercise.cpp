@@ -265,12 +265,29 @@ private slots:
         QVERIFY(alone.open(QIODevice::WriteOnly));
         alone.write(toon.vertexSource().toUtf8());
         alone.close();
-        for (const QString &bad :
-             {broken + ".vert", m_dir.filePath("missing.frag"), m_dir.filePath("alone.vert")}) {
+        // A pair that never finishes a frame: refused by side B's trial helper (which
+        // compiles and draws it first, as the editor's program is), on its loop's line.
+        const QString loops = m_dir.filePath("loops");
+        for (const auto &[suffix, text] :
+             {std::pair{
+                  ".vert",
+                  QString("attribute vec4 vPosition;\nvoid main() { gl_Position = vPosition; }\n")},
+              std::pair{".frag", QString("precision mediump float;\nvoid main() {\n"
+                                         "  float x = 0.0;\n  for (;;) { x += 1.0; }\n"
+                                         "  gl_FragColor = vec4(x);\n}\n")}}) {
+            QFile f(loops + suffix);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write(text.toUtf8());
+        }
+        for (const QString &bad : {broken + ".vert", m_dir.filePath("missing.frag"),
+                                   m_dir.filePath("alone.vert"), loops + ".frag"}) {
             const QString message = m_window->setSideBFiles(bad);
             QVERIFY2(message.startsWith("Side B is unchanged") &&
                          message.contains(QFileInfo(bad).fileName()),
                      qPrintable(message));
+            if (bad.startsWith(loops))
+                QVERIFY2(message.contains("this program never finishes a frame"),
+                         qPrintable(message));
             QCOMPARE(p->sideBLabel()->text(), QString("toon.vert + toon.frag"));
             frame();
             QCOMPARE(m_window->viewport()->renderer().difference().largest, 0);
