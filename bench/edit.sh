@@ -7,8 +7,11 @@
 # Each shader pair is measured with every program trial (LIGHTBENCH_PROGRAM_TRIAL): "helper"
 # (the default: a program with loops is tried in lightbench-trial before it draws), "window"
 # (tried in the window's own context) and "off" (drawn untried), one process each, in turn.
-# Usage: bench/edit.sh [EDITS] [ROUNDS]   (default 50 edits, 1 round; builds first, like
-# scripts/run)
+# With SHADER_CACHE=on, Mesa's shader cache is on instead (in a fresh folder of its own), as
+# users have it: each edit is new text to the helper's compile, and the window's compile of the
+# same text after it may find the helper's work there.
+# Usage: [SHADER_CACHE=on] bench/edit.sh [EDITS] [ROUNDS]   (default 50 edits, 1 round; builds
+# first, like scripts/run)
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/../scripts/setup.sh"
 EDITS=${1:-50}
@@ -16,10 +19,13 @@ ROUNDS=${2:-1}
 ensure_packages
 build lightbench >/dev/null
 config=$(mktemp -d) # a fresh session: no saved layout or shaders
-trap 'rm -rf "$config"' EXIT
+cache=$(mktemp -d)
+trap 'rm -rf "$config" "$cache"' EXIT
+cache_env=(MESA_SHADER_CACHE_DISABLE=true)
+[[ ${SHADER_CACHE:-off} == on ]] && cache_env=(MESA_SHADER_CACHE_DISABLE=false MESA_SHADER_CACHE_DIR=$cache)
 for ((round = 0; round < ROUNDS; round++)); do
     for trial in helper window off; do
-        XDG_CONFIG_HOME=$config MESA_SHADER_CACHE_DISABLE=true LIGHTBENCH_PROGRAM_TRIAL=$trial \
+        env XDG_CONFIG_HOME="$config" "${cache_env[@]}" LIGHTBENCH_PROGRAM_TRIAL=$trial \
             xvfb-run -a -s "$XVFB_SCREEN" "$BUILD_DIR/app/lightbench" --bench-edits "$EDITS" \
             --vertex "$ROOT/bench/shaders/long.vert" --fragment "$ROOT/bench/shaders/long.frag"
     done

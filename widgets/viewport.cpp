@@ -23,6 +23,9 @@ namespace lb {
 namespace {
 constexpr float kDegreesPerPixel = 0.4f;
 constexpr float kAutoRotateDegreesPerSecond = 30.0f;
+// A vertex stage whose loops are all counted and this short (the built-in Gouraud's four
+// lights) may run before its trial answers: a million vertices would take well under a second.
+constexpr int kShortLoopSteps = 64;
 } // namespace
 
 Viewport::Viewport(SceneDocument *document, QWidget *parent)
@@ -49,6 +52,7 @@ Viewport::Viewport(SceneDocument *document, QWidget *parent)
     m_compareLabel->hide();
     m_labels = new ProbeLabels(document, this);
     m_trialProcess = new TrialProcess(this);
+    connect(m_trialProcess, &TrialProcess::built, this, &Viewport::candidateBuilt);
     connect(m_trialProcess, &TrialProcess::finished, this, &Viewport::trialFinished);
     const QString mode = qEnvironmentVariable("LIGHTBENCH_PROGRAM_TRIAL");
     m_trialMode = mode == "off"      ? TrialMode::Off
@@ -297,6 +301,7 @@ void Viewport::buildNow(const QString &vertexSource, const QString &fragmentSour
     // it runs again once the object is there (setObject).
     m_trialWithoutObject = !m_renderer.objectMesh();
     m_candidate.reset(); // a trial still running answers for a program no longer wanted
+    m_renderer.dropCandidate();
     // The presets as shipped are ours and draw in good time: drawn at once, untried (the
     // built-in program follows the shading switch without a trial's delay).
     const bool ours = isPresetProgram(vertexSource, fragmentSource);
@@ -305,8 +310,9 @@ void Viewport::buildNow(const QString &vertexSource, const QString &fragmentSour
         // memory bound and the trial's time limit: the driver's compiler is never given a
         // stranger's program in the window's process (a macro bomb took one to 24 GB). The
         // helper's answer (trialFinished) brings the diagnostics; only an accepted program
-        // is built here. Meanwhile the last good program keeps drawing.
-        m_candidate = Candidate{++m_lastTrialId, vertexSource, fragmentSource};
+        // is built here (from the moment the helper built it: candidateBuilt). Meanwhile the
+        // last good program keeps drawing.
+        m_candidate = Candidate{++m_lastTrialId, vertexSource, fragmentSource, std::nullopt};
         trialwire::TryRequest request;
         request.id = m_candidate->id;
         request.scene = m_document->scene().toJson();
@@ -338,6 +344,21 @@ void Viewport::buildNow(const QString &vertexSource, const QString &fragmentSour
     finishBuild(build, refused, vertexSource, fragmentSource, measured);
 }
 
+void Viewport::candidateBuilt(quint64 id)
+{
+    if (!m_candidate || m_candidate->id != id || !m_renderer.isInitialized())
+        return;
+    // The helper's driver compiled and linked it within its bounds: built here too while the
+    // helper draws its trial frames, and the driver may generate its code here meanwhile (a
+    // frame with nothing rasterized), so the first frame after the answer does not; only when
+    // the vertex stage, which does run, has no loop to be slow in (or only short counted ones).
+    makeCurrent();
+    m_candidate->build = m_renderer.buildCandidate(m_candidate->vertex, m_candidate->fragment);
+    if (m_candidate->build->ok() && onlyShortLoops(m_candidate->vertex, kShortLoopSteps))
+        prepareCandidate();
+    doneCurrent();
+}
+
 void Viewport::trialFinished(quint64 id, TrialProcess::Outcome outcome, const TrialResult &result,
                              const std::vector<Diagnostic> &diagnostics)
 {
@@ -356,12 +377,17 @@ void Viewport::trialFinished(quint64 id, TrialProcess::Outcome outcome, const Tr
     build.diagnostics = diagnostics;
     QString refused;
     if (outcome == TrialProcess::Outcome::NotBuilt) {
+        m_renderer.dropCandidate();
     } else if (result.refusal) {
+        m_renderer.dropCandidate();
         build.diagnostics.push_back(*result.refusal);
         refused = result.refusal->message;
-    } else {
+    } else if (m_renderer.hasCandidate()) {
         // Accepted: the helper's driver built and drew it within its bounds.
-        build = m_renderer.setUserProgram(tried.vertex, tried.fragment);
+        m_renderer.adoptCandidate();
+        build = *tried.build;
+    } else {
+        build = m_renderer.setUserProgram(tried.vertex, tried.fragment); // a new context since
     }
     doneCurrent();
     finishBuild(build, refused, tried.vertex, tried.fragment,
@@ -406,6 +432,16 @@ QOpenGLFramebufferObjectFormat widgetFormat()
     return format;
 }
 } // namespace
+
+void Viewport::prepareCandidate()
+{
+    QOpenGLFramebufferObject fbo(QSize(4, 4), widgetFormat());
+    if (!fbo.isValid())
+        return;
+    fbo.bind();
+    m_renderer.prepareCandidate(m_document->scene(), fbo.size());
+    fbo.release();
+}
 
 double Viewport::timeFrame(QSize pixels)
 {

@@ -119,7 +119,9 @@ private:
     // The program on screen is refused for `why`: the good one before it comes back (in this
     // context, or in a new one when `newContext`), with a banner and programBuilt().
     void refuseDrawingProgram(const QString &why, bool newContext);
-    double timeFrame(QSize pixels); // one frame in a framebuffer of its own, waited for (ms)
+    double timeFrame(QSize pixels);  // one frame in a framebuffer of its own, waited for (ms)
+    void prepareCandidate();         // Renderer::prepareCandidate in such a framebuffer
+    void candidateBuilt(quint64 id); // the helper built it: built here while it is tried
     void buildNow(const QString &vertexSource, const QString &fragmentSource, bool tryHere = false);
     void trialFinished(quint64 id, TrialProcess::Outcome outcome, const TrialResult &result,
                        const std::vector<Diagnostic> &diagnostics);
@@ -145,11 +147,13 @@ private:
     TrialMode m_trialMode = TrialMode::Helper;
     TrialProcess *m_trialProcess;
     TrialProcess *m_sideBTrial = nullptr; // side B's, started when side B first needs it
-    // The program the helper is trying: built here once it is accepted.
+    // The program the helper is trying: built here once the helper built it (build), drawn
+    // once the helper accepted it.
     struct Candidate
     {
         quint64 id;
         QString vertex, fragment;
+        std::optional<ProgramBuild> build;
     };
     std::optional<Candidate> m_candidate;
     quint64 m_lastTrialId = 0;

@@ -57,7 +57,7 @@ void Renderer::cleanup()
     m_overlays.release();
     m_sideFbo[0].reset();
     m_sideFbo[1].reset();
-    for (BuiltProgram *p : {&m_differenceProgram, &m_user, &m_sideB})
+    for (BuiltProgram *p : {&m_differenceProgram, &m_user, &m_candidate, &m_sideB})
         *p = {};
     m_builtIns.clear();
     m_checkerTexture.reset();
@@ -80,6 +80,35 @@ ProgramBuild Renderer::setUserProgram(const QString &vertexSource, const QString
             report.diagnostics.push_back(*refusal);
         }
     return report;
+}
+
+ProgramBuild Renderer::buildCandidate(const QString &vertexSource, const QString &fragmentSource)
+{
+    m_candidate = buildProgram(*this, vertexSource, fragmentSource);
+    m_candidate.shippedBuiltIn = shippedBuiltIn(vertexSource, fragmentSource);
+    if (!m_candidate.build.ok()) {
+        const ProgramBuild report = m_candidate.build;
+        m_candidate = {};
+        return report;
+    }
+    return m_candidate.build;
+}
+
+void Renderer::adoptCandidate()
+{
+    m_user = std::move(m_candidate);
+    m_candidate = {};
+}
+
+void Renderer::prepareCandidate(const Scene &scene, QSize pixels)
+{
+    if (!m_initialized || !m_candidate.program || pixels.isEmpty())
+        return;
+    uploadObjects();
+    const QRect whole(QPoint(0, 0), pixels);
+    glEnable(GL_RASTERIZER_DISCARD);
+    drawView(scene, m_candidate, whole, whole, pixels.height());
+    glDisable(GL_RASTERIZER_DISCARD);
 }
 
 ProgramBuild Renderer::setSideBProgram(const QString &vertexSource, const QString &fragmentSource)

@@ -72,6 +72,17 @@ public:
     ProgramBuild setUserProgram(const QString &vertexSource, const QString &fragmentSource,
                                 const std::function<std::optional<Diagnostic>()> &trial = {});
     bool hasUserProgram() const { return bool(m_user.program); }
+    // A program built aside, not drawn until it is adopted (while it is tried elsewhere); a
+    // new candidate replaces the one before.
+    ProgramBuild buildCandidate(const QString &vertexSource, const QString &fragmentSource);
+    bool hasCandidate() const { return bool(m_candidate.program); }
+    void adoptCandidate();
+    void dropCandidate() { m_candidate = {}; }
+    // Draws the candidate into the bound framebuffer with the rasterizer discarding every
+    // primitive: its vertex stage runs, its fragment stage never does, and a driver that
+    // generates code at the first draw (llvmpipe) does so now, while the candidate is tried
+    // elsewhere, instead of in the first frame after it.
+    void prepareCandidate(const Scene &scene, QSize pixels);
     void clearUserProgram() { m_user = {}; } // the built-in programs draw again
     // Side B of the compare views draws this program instead of the built-in one (an
     // exercise's reference) when it links; what the build said either way.
@@ -138,7 +149,7 @@ private:
     bool m_initialized = false;
     // The built-in programs, by variant (builtInProgram), built when first needed.
     std::map<BuiltInVariant, BuiltProgram> m_builtIns;
-    BuiltProgram m_differenceProgram, m_user, m_sideB;
+    BuiltProgram m_differenceProgram, m_user, m_candidate, m_sideB;
     Overlays m_overlays;
     Texture m_checker;
     GlTexture m_checkerTexture;

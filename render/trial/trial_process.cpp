@@ -149,8 +149,14 @@ void TrialProcess::readOutput()
     m_output += m_process->readAllStandardOutput();
     while (const std::optional<QByteArray> frame = trialwire::takeFrame(m_output)) {
         const std::optional<trialwire::Decoded> message = trialwire::decode(*frame);
-        if (!message || message->type != trialwire::Message::Result || !m_inFlight ||
-            message->reply.id != m_inFlight->request.id)
+        if (!message || !m_inFlight || message->reply.id != m_inFlight->request.id)
+            continue;
+        if (message->type == trialwire::Message::Built) {
+            if (message->reply.built)
+                emit built(message->reply.id);
+            continue;
+        }
+        if (message->type != trialwire::Message::Result)
             continue;
         m_deadline.stop();
         m_silentDeaths = 0;

@@ -56,6 +56,9 @@ public:
     static QString helperPath();
 
 signals:
+    // The program of request `id` compiled and linked in the helper (within its bounds); its
+    // trial's frames follow, then finished().
+    void built(quint64 id);
     // `diagnostics`: the helper's build's (Tried, NotBuilt), errors and warnings alike.
     void finished(quint64 id, lb::TrialProcess::Outcome outcome, const lb::TrialResult &result,
                   const std::vector<lb::Diagnostic> &diagnostics);

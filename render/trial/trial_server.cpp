@@ -35,7 +35,8 @@ void send(std::FILE *out, const QByteArray &message)
     std::fflush(out);
 }
 
-trialwire::TryReply tryRequest(OffscreenRenderer &offscreen, const trialwire::TryRequest &r)
+trialwire::TryReply tryRequest(OffscreenRenderer &offscreen, const trialwire::TryRequest &r,
+                               std::FILE *out)
 {
     trialwire::TryReply reply;
     reply.id = r.id;
@@ -55,6 +56,8 @@ trialwire::TryReply tryRequest(OffscreenRenderer &offscreen, const trialwire::Tr
         reply.built = false;
         return reply;
     }
+    // Built within bounds: the window may build it too while the frames are drawn here.
+    send(out, trialwire::encodeBuilt(reply));
     // The command line's sizes: this process may take its time, the window does not wait.
     reply.result = offscreen.tryUserProgram(Scene::fromJson(r.scene), r.vertex, r.fragment,
                                             r.target, r.budgetMs, kCommandLineTrial);
@@ -82,7 +85,7 @@ int runTrialServer(std::FILE *in, std::FILE *out)
         if (message->type == trialwire::Message::Mesh)
             offscreen.setObjectMesh(std::make_shared<Mesh>(message->mesh));
         else if (message->type == trialwire::Message::Try) {
-            trialwire::TryReply reply = tryRequest(offscreen, message->request);
+            trialwire::TryReply reply = tryRequest(offscreen, message->request, out);
             if (offscreen.wasReset()) {
                 // The driver reset the context while the program drew (a GPU's recovery):
                 // refused, and this helper, whose context is gone, ends; another replaces it.

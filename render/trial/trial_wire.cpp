@@ -87,6 +87,30 @@ QByteArray encodeReply(const TryReply &r)
     });
 }
 
+QByteArray encodeBuilt(const TryReply &r)
+{
+    return message(Message::Built, [&](QDataStream &out) {
+        out << r.id << r.built << quint32(r.diagnostics.size());
+        for (const Diagnostic &d : r.diagnostics)
+            out << d;
+    });
+}
+
+namespace {
+// (Each diagnostic takes at least 20 bytes: a count past the frame is a broken one.)
+bool readDiagnostics(QDataStream &in, qsizetype frameSize, std::vector<Diagnostic> &diagnostics)
+{
+    quint32 count = 0;
+    in >> count;
+    if (qint64(count) * 20 > frameSize)
+        return false;
+    diagnostics.resize(count);
+    for (Diagnostic &diagnostic : diagnostics)
+        in >> diagnostic;
+    return true;
+}
+} // namespace
+
 std::optional<Decoded> decode(const QByteArray &frame)
 {
     QDataStream in(frame);
@@ -123,14 +147,15 @@ std::optional<Decoded> decode(const QByteArray &frame)
             in >> diagnostic;
             r.result.refusal = diagnostic;
         }
-        quint32 count = 0;
-        in >> count;
-        // (Each diagnostic takes at least 20 bytes: a count past the frame is a broken one.)
-        if (qint64(count) * 20 > frame.size())
+        if (!readDiagnostics(in, frame.size(), r.diagnostics))
             return std::nullopt;
-        r.diagnostics.resize(count);
-        for (Diagnostic &diagnostic : r.diagnostics)
-            in >> diagnostic;
+        break;
+    }
+    case Message::Built: {
+        TryReply &r = d.reply;
+        in >> r.id >> r.built;
+        if (!readDiagnostics(in, frame.size(), r.diagnostics))
+            return std::nullopt;
         break;
     }
     default:

@@ -22,6 +22,9 @@ enum class Message : quint32 {
     Mesh = 1,   // the mesh every later trial draws (the window's object)
     Try = 2,    // TryRequest
     Result = 3, // TryReply
+    Built = 4,  // TryReply with only id, built and diagnostics: compiled and linked, the
+                // frames follow (the window may build it too meanwhile: the driver's
+                // compiler took it within bounds here)
 };
 
 struct TryRequest
@@ -50,6 +53,7 @@ constexpr int kExitCannotDraw = 3, kExitContextReset = 4, kExitOutOfMemory = 5;
 QByteArray encodeMesh(const Mesh &mesh);
 QByteArray encodeTry(const TryRequest &request);
 QByteArray encodeReply(const TryReply &reply);
+QByteArray encodeBuilt(const TryReply &reply);
 
 struct Decoded
 {
