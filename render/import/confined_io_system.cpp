@@ -227,7 +227,13 @@ Assimp::IOStream *ConfinedIOSystem::Open(const char *path, const char *mode)
     }
     Check c = check(path);
     if (!c.problem.empty()) {
-        note(c.problem);
+        // After a material library it could not open, Assimp's OBJ reader looks for
+        // MESH.mtl beside the mesh: that this one is missing too says nothing new.
+        const bool fallback =
+            c.missing && !m_problems.empty() && m_meshPath.size() > 3 &&
+            shown(path) == shown(m_meshPath.substr(0, m_meshPath.size() - 3) + "mtl");
+        if (!fallback)
+            note(c.problem);
         return nullptr;
     }
     // Checked again on what was opened (the name may point elsewhere by now); O_NONBLOCK so
