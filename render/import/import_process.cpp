@@ -45,16 +45,30 @@ QString signalName(int signal)
 // image, 256 MB by default, catches the rest).
 const FileLimit kTextureFileLimit{"a texture file", 256ll << 20};
 
-// The diffuse texture a file names: as written, beside the model, or by its name alone
-// beside the model (files made on Windows carry their author's absolute paths).
-QString findTexture(const QString &modelPath, QString name)
+// The diffuse texture a file names, beside the model as written or by its name alone (files
+// made on Windows carry their author's absolute paths). Like every file a mesh names, it must
+// be inside the model's folder tree, links resolved: a mesh from a stranger must not show
+// the user's own pictures from elsewhere (the helper does the same for the files Assimp
+// reads). Returns the path, or empty with `problem` set.
+QString findTexture(const QString &modelPath, QString name, QString &problem)
 {
     name.replace('\\', '/');
     const QDir dir = QFileInfo(modelPath).absoluteDir();
+    const QString root = dir.canonicalPath() + '/';
+    bool outside = false;
     for (const QString &candidate :
-         {name, dir.filePath(name), dir.filePath(QFileInfo(name).fileName())})
-        if (!candidate.isEmpty() && QFileInfo::exists(candidate)) // a folder: a message
-            return candidate;
+         {dir.filePath(name), dir.filePath(QFileInfo(name).fileName())}) {
+        if (name.isEmpty() || !QFileInfo::exists(candidate)) // a folder: a message later
+            continue;
+        const QString real = QFileInfo(candidate).canonicalFilePath();
+        if (root != "/" && !real.startsWith(root)) {
+            outside = true;
+            continue;
+        }
+        return candidate;
+    }
+    problem = "texture '" + echoedValue(name) +
+              (outside ? "': outside the mesh's folder" : "' not found");
     return {};
 }
 
@@ -279,7 +293,11 @@ std::shared_ptr<MeshFile> ImportProcess::meshFile()
     const QMap<QString, QString> &info = m_reader->info();
     file->meshes = info.value("meshes").toInt();
     file->skippedFaces = info.value("skippedFaces").toLongLong();
-    file->nonFinitePositions = info.value("nonFinite").toLongLong();
+    file->nonFiniteVertices = info.value("nonFinite").toLongLong();
+    file->droppedTriangles = info.value("droppedTriangles").toLongLong();
+    file->nonFiniteNormals = info.value("nonFiniteNormals").toLongLong();
+    for (const QString &warning : m_reader->warnings()) // names from a stranger's file
+        file->sideFileProblems << echoedValue(warning, 400);
     file->readSeconds = info.value("seconds").toDouble();
     file->helperPeakKB = info.value("peakKB").toLongLong();
 
@@ -310,10 +328,10 @@ std::shared_ptr<MeshFile> ImportProcess::meshFile()
                         .copy();
         }
     } else if (!m_reader->texturePath().isEmpty()) {
-        const QString found = findTexture(m_path, m_reader->texturePath());
+        QString problem;
+        const QString found = findTexture(m_path, m_reader->texturePath(), problem);
         if (found.isEmpty()) {
-            file->textureProblem =
-                "texture '" + echoedValue(m_reader->texturePath()) + "' not found";
+            file->textureProblem = problem;
         } else if (const QString why = unreadableFile(found, kTextureFileLimit); !why.isEmpty()) {
             file->textureProblem = "texture " + why;
         } else {

@@ -185,9 +185,9 @@ QString ObjectLoader::summary() const
     if (loaded) {
         s += tr(", loaded in %1 s").arg(loaded->seconds, 0, 'f', 2);
         if (!loaded->hasNormals())
-            s += tr(", normals generated (the file has none)");
-        const QStringList remarks = loaded->remarks();
-        if (!remarks.isEmpty())
+            s += loaded->nonFiniteNormals > 0 ? tr(", normals generated") // a remark says why
+                                              : tr(", normals generated (the file has none)");
+        if (const QStringList remarks = loaded->remarks(); !remarks.isEmpty())
             s += " (" + remarks.join("; ") + ")";
     }
     return s;

@@ -19,6 +19,7 @@ enum class Record : std::uint32_t {
     TexturePath = 6, // UTF-8 path of the diffuse texture, as the file names it
     TextureData = 7, // TextureHeader, then the texture's bytes (embedded in the model file)
     End = 8,         // empty; the stream is complete
+    Warning = 9,     // UTF-8 line: something the mesh names was not used, and why
 };
 
 struct RecordHeader

@@ -1,6 +1,7 @@
 #include "wire_reader.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <new>
 #include <type_traits>
@@ -11,6 +12,12 @@ namespace {
 
 constexpr std::uint64_t kMaxSmallRecord = 1 << 20;     // progress, error, info, paths
 constexpr std::uint64_t kMaxTextureRecord = 512 << 20; // an embedded texture
+constexpr qsizetype kMaxWarnings = 20;                 // the helper sends no more either
+
+bool finite(const glm::vec3 &v)
+{
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
 
 template <typename T> T read(const QByteArray &bytes)
 {
@@ -119,6 +126,11 @@ bool WireReader::feed(const char *data, qint64 size)
                 for (const std::uint32_t i : m_mesh.indices)
                     if (i >= m_mesh.positions.size())
                         return fail("the import stream holds an index past the last vertex");
+                // The helper drops what is not finite; NaN here would reach the bounds, the
+                // probe and the driver.
+                for (const auto *array : {&m_mesh.positions, &m_mesh.normals})
+                    if (!std::all_of(array->begin(), array->end(), finite))
+                        return fail("the import stream holds coordinates that are not finite");
                 m_targets.clear();
                 m_haveMesh = true;
                 m_state = State::Header;
@@ -207,6 +219,10 @@ bool WireReader::finishRecord()
         return true;
     case wire::Record::TexturePath:
         m_texturePath = QString::fromUtf8(payload);
+        return true;
+    case wire::Record::Warning:
+        if (m_warnings.size() < kMaxWarnings)
+            m_warnings << QString::fromUtf8(payload).trimmed();
         return true;
     case wire::Record::TextureData: {
         if (payload.size() < qsizetype(sizeof(wire::TextureHeader)))

@@ -9,6 +9,7 @@
 #include <QByteArray>
 #include <QMap>
 #include <QString>
+#include <QStringList>
 
 #include <functional>
 #include <optional>
@@ -44,6 +45,8 @@ public:
     const QString &texturePath() const { return m_texturePath; }
     const std::optional<wire::TextureHeader> &textureHeader() const { return m_textureHeader; }
     const QByteArray &textureBytes() const { return m_textureBytes; }
+    // The helper's Warning records: files the mesh names that were not used, and why.
+    const QStringList &warnings() const { return m_warnings; }
 
 private:
     enum class State { Magic, Header, Payload, MeshHeader, MeshArrays, Done, Failed };
@@ -78,6 +81,7 @@ private:
     QString m_texturePath;
     std::optional<wire::TextureHeader> m_textureHeader;
     QByteArray m_textureBytes;
+    QStringList m_warnings;
 };
 
 } // namespace lb

@@ -28,8 +28,15 @@ QStringList MeshFile::remarks() const
     QStringList r;
     if (skippedFaces > 0)
         r << QString("%1 points, lines or broken faces skipped").arg(skippedFaces);
-    if (nonFinitePositions > 0)
-        r << QString("%1 positions were not numbers").arg(nonFinitePositions);
+    if (nonFiniteVertices > 0)
+        r << QString("%1 vertices with non-finite coordinates dropped, with the %2 triangles "
+                     "using them")
+                 .arg(nonFiniteVertices)
+                 .arg(droppedTriangles);
+    if (nonFiniteNormals > 0)
+        r << QString("%1 normals with non-finite coordinates: the file's normals not used")
+                 .arg(nonFiniteNormals);
+    r << sideFileProblems;
     if (!textureProblem.isEmpty())
         r << textureProblem;
     return r;

@@ -37,7 +37,10 @@ struct MeshFile
     QString textureProblem;                 // why a texture the file names is not used
     int meshes = 0;                         // mesh instances merged into `mesh`
     qint64 skippedFaces = 0;                // points, lines and faces with bad indices
-    qint64 nonFinitePositions = 0;          // NaN or infinite positions, put at the centre
+    qint64 nonFiniteVertices = 0;           // NaN or infinite positions: dropped, with...
+    qint64 droppedTriangles = 0;            // ...the triangles using them
+    qint64 nonFiniteNormals = 0;            // NaN or infinite normals: the file's normals not used
+    QStringList sideFileProblems;           // files the mesh names that were not used, and why
     double readSeconds = 0;                 // Assimp's reading, inside the helper
     double seconds = 0;                     // the whole load as the workbench saw it
     qint64 helperPeakKB = 0;                // the helper's peak resident memory

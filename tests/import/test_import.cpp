@@ -330,7 +330,7 @@ private slots:
         QVERIFY2(r.ok(), qPrintable(r.error));
         for (const glm::vec3 &p : r.file->mesh->positions)
             QVERIFY(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z));
-        QVERIFY(r.file->remarks().join(' ').contains("not numbers"));
+        QVERIFY(r.file->remarks().join(' ').contains("1 vertices with non-finite coordinates"));
     }
 
     void materialAndTextureComeAlong()

@@ -1,0 +1,405 @@
+#include "scene_stream.h"
+
+#include <assimp/material.h>
+#include <assimp/scene.h>
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_inverse.hpp>
+#include <glm/mat3x3.hpp>
+#include <glm/mat4x4.hpp>
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <sstream>
+#include <vector>
+
+#include <sys/resource.h>
+
+namespace lb {
+
+namespace {
+
+using wire::Record;
+
+constexpr std::uint32_t kDropped = std::numeric_limits<std::uint32_t>::max();
+
+glm::mat4 toGlm(const aiMatrix4x4 &m)
+{
+    // Assimp stores rows; GLM takes columns.
+    return glm::mat4(m.a1, m.b1, m.c1, m.d1, m.a2, m.b2, m.c2, m.d2, m.a3, m.b3, m.c3, m.d3, m.a4,
+                     m.b4, m.c4, m.d4);
+}
+
+// One mesh as a node draws it, and what of it is drawn.
+struct Instance
+{
+    const aiMesh *mesh;
+    glm::mat4 transform;
+    glm::mat3 normalTransform;
+    // Empty: every vertex is kept. Else each vertex's index among the kept ones, or kDropped
+    // (its transformed position is not finite); only made for meshes that drop some.
+    std::vector<std::uint32_t> remap;
+    std::uint32_t keptVertices = 0;
+    std::uint64_t triangles = 0; // kept: triangles whose corners are all kept
+
+    bool used() const { return triangles > 0; }
+    bool kept(unsigned v) const { return remap.empty() || remap[v] != kDropped; }
+};
+
+bool finite(const glm::vec3 &v)
+{
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+std::vector<Instance> instances(const aiScene &scene, std::size_t &skippedMeshRefs)
+{
+    std::vector<Instance> result;
+    std::vector<std::pair<const aiNode *, glm::mat4>> stack;
+    if (scene.mRootNode)
+        stack.emplace_back(scene.mRootNode, glm::mat4(1.0f));
+    constexpr std::size_t kMaxNodes = 10'000'000; // a broken file's node graph may loop
+    std::size_t visited = 0;
+    while (!stack.empty() && ++visited < kMaxNodes) {
+        const auto [node, parent] = stack.back();
+        stack.pop_back();
+        const glm::mat4 global = parent * toGlm(node->mTransformation);
+        for (unsigned i = 0; i < node->mNumMeshes; ++i) {
+            const unsigned index = node->mMeshes[i];
+            if (index >= scene.mNumMeshes || !scene.mMeshes[index]) {
+                ++skippedMeshRefs;
+                continue;
+            }
+            result.push_back(
+                {scene.mMeshes[index], global, glm::inverseTranspose(glm::mat3(global)), {}, 0, 0});
+        }
+        for (unsigned i = 0; i < node->mNumChildren; ++i)
+            if (node->mChildren[i])
+                stack.emplace_back(node->mChildren[i], global);
+    }
+    return result;
+}
+
+bool isTriangle(const aiFace &face, unsigned vertexCount)
+{
+    return face.mNumIndices == 3 && face.mIndices[0] < vertexCount &&
+           face.mIndices[1] < vertexCount && face.mIndices[2] < vertexCount;
+}
+
+glm::vec3 position(const Instance &in, unsigned v)
+{
+    const aiVector3D &p = in.mesh->mVertices[v];
+    return glm::vec3(in.transform * glm::vec4(p.x, p.y, p.z, 1.0f));
+}
+
+// What is kept of one instance, and its kept vertices' bounds (in double: finite floats near
+// the ends of their range would make an infinite extent in float).
+struct Counts
+{
+    std::uint64_t droppedVertices = 0, droppedTriangles = 0, skippedFaces = 0;
+    glm::dvec3 lo{std::numeric_limits<double>::max()}, hi{-std::numeric_limits<double>::max()};
+};
+
+void plan(Instance &in, Counts &counts)
+{
+    const aiMesh &m = *in.mesh;
+    if (!m.mVertices) {
+        counts.skippedFaces += m.mNumFaces;
+        return;
+    }
+    // The corners that are not finite: most meshes have none, and then this pass is all
+    // there is (the bounds come with it).
+    glm::dvec3 lo = counts.lo, hi = counts.hi;
+    for (unsigned v = 0; v < m.mNumVertices; ++v) {
+        const glm::vec3 t = position(in, v);
+        if (finite(t)) {
+            lo = glm::min(lo, glm::dvec3(t));
+            hi = glm::max(hi, glm::dvec3(t));
+            continue;
+        }
+        if (in.remap.empty())
+            in.remap.assign(m.mNumVertices, 0); // 0: finite, not yet used
+        in.remap[v] = kDropped;
+        ++counts.droppedVertices;
+    }
+    constexpr std::uint32_t kUsed = 1;
+    std::uint64_t dropped = 0;
+    for (unsigned f = 0; f < m.mNumFaces; ++f) {
+        const aiFace &face = m.mFaces[f];
+        if (!isTriangle(face, m.mNumVertices)) {
+            ++counts.skippedFaces;
+        } else if (in.kept(face.mIndices[0]) && in.kept(face.mIndices[1]) &&
+                   in.kept(face.mIndices[2])) {
+            ++in.triangles;
+            if (!in.remap.empty())
+                for (unsigned c = 0; c < 3; ++c)
+                    in.remap[face.mIndices[c]] = kUsed;
+        } else {
+            ++dropped;
+        }
+    }
+    counts.droppedTriangles += dropped;
+    in.keptVertices = m.mNumVertices;
+    if (!in.remap.empty()) {
+        // Only the corners of the triangles kept stay, so that the frame is what is drawn:
+        // a file read without joining vertices has a copy of each corner per face.
+        lo = counts.lo;
+        hi = counts.hi;
+        std::uint32_t next = 0;
+        for (unsigned v = 0; v < m.mNumVertices; ++v) {
+            if (in.remap[v] != kUsed) {
+                in.remap[v] = kDropped;
+                continue;
+            }
+            in.remap[v] = next++;
+            const glm::dvec3 t(position(in, v));
+            lo = glm::min(lo, t);
+            hi = glm::max(hi, t);
+        }
+        in.keptVertices = next;
+    }
+    if (in.used()) { // an instance with nothing to draw does not move the frame
+        counts.lo = lo;
+        counts.hi = hi;
+    }
+}
+
+// The file's normals are used only when every drawn mesh has them and they are all usable;
+// `nonFinite` counts those that are NaN or infinite.
+bool usableNormals(const std::vector<Instance> &list, std::uint64_t &nonFinite)
+{
+    bool usable = true;
+    for (const Instance &in : list) {
+        if (!in.used())
+            continue;
+        if (!in.mesh->mNormals) {
+            usable = false;
+            continue;
+        }
+        for (unsigned v = 0; v < in.mesh->mNumVertices; ++v) {
+            const aiVector3D &n = in.mesh->mNormals[v];
+            const glm::vec3 g(n.x, n.y, n.z);
+            if (!in.kept(v))
+                continue;
+            if (!finite(g))
+                ++nonFinite;
+            if (!finite(g) || glm::dot(g, g) < 1e-12f)
+                usable = false;
+        }
+    }
+    return usable;
+}
+
+void sendMaterial(const aiScene &scene, const aiMesh &mesh, wire::Writer &out)
+{
+    if (mesh.mMaterialIndex >= scene.mNumMaterials || !scene.mMaterials[mesh.mMaterialIndex])
+        return;
+    const aiMaterial &m = *scene.mMaterials[mesh.mMaterialIndex];
+    wire::MaterialRecord r;
+    aiColor3D c;
+    auto colour = [&](const char *key, unsigned type, unsigned index, float *to,
+                      std::uint32_t flag) {
+        if (m.Get(key, type, index, c) == AI_SUCCESS && std::isfinite(c.r) && std::isfinite(c.g) &&
+            std::isfinite(c.b)) {
+            to[0] = c.r;
+            to[1] = c.g;
+            to[2] = c.b;
+            r.present |= flag;
+        }
+    };
+    colour(AI_MATKEY_COLOR_AMBIENT, r.ka, wire::kHasAmbient);
+    colour(AI_MATKEY_COLOR_DIFFUSE, r.kd, wire::kHasDiffuse);
+    colour(AI_MATKEY_COLOR_SPECULAR, r.ks, wire::kHasSpecular);
+    float shininess = 0.0f;
+    if (m.Get(AI_MATKEY_SHININESS, shininess) == AI_SUCCESS && std::isfinite(shininess)) {
+        r.shininess = shininess;
+        r.present |= wire::kHasShininess;
+    }
+    if (r.present)
+        out.record(Record::Material, &r, sizeof r);
+
+    aiString path;
+    if (m.GetTexture(aiTextureType_DIFFUSE, 0, &path) != AI_SUCCESS &&
+        m.GetTexture(aiTextureType_BASE_COLOR, 0, &path) != AI_SUCCESS)
+        return;
+    if (const aiTexture *t = scene.GetEmbeddedTexture(path.C_Str())) {
+        wire::TextureHeader h;
+        std::uint64_t bytes = 0;
+        if (t->mHeight == 0) { // compressed: mWidth is the byte count
+            bytes = t->mWidth;
+        } else {
+            h.width = t->mWidth;
+            h.height = t->mHeight;
+            bytes = std::uint64_t(t->mWidth) * t->mHeight * 4;
+        }
+        std::memcpy(h.format, t->achFormatHint, std::min(sizeof h.format, sizeof t->achFormatHint));
+        if (!t->pcData || bytes == 0)
+            return;
+        out.begin(Record::TextureData, sizeof h + bytes);
+        out.write(&h, sizeof h);
+        out.write(t->pcData, bytes);
+    } else if (path.length > 0) {
+        out.text(Record::TexturePath, path.C_Str());
+    }
+}
+
+long peakKilobytes()
+{
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    return usage.ru_maxrss;
+}
+
+int fail(wire::Writer &out, const std::string &message)
+{
+    out.text(Record::Error, message);
+    out.flush();
+    return wire::kExitFailed;
+}
+
+} // namespace
+
+int writeScene(const aiScene &scene, wire::Writer &out, const ImportProgress &progress,
+               double readSeconds)
+{
+    std::size_t skippedMeshRefs = 0;
+    std::vector<Instance> list = instances(scene, skippedMeshRefs);
+
+    // Pass 1: what is kept, the counts and the bounding box of the kept positions.
+    Counts counts;
+    std::uint64_t vertexCount = 0, triangleCount = 0;
+    bool colors = false, uvs = false;
+    const Instance *largest = nullptr;
+    for (Instance &in : list) {
+        plan(in, counts);
+        if (!in.used())
+            continue;
+        if (!largest || in.triangles > largest->triangles)
+            largest = &in;
+        vertexCount += in.keptVertices;
+        triangleCount += in.triangles;
+        colors = colors || in.mesh->mColors[0];
+        uvs = uvs || in.mesh->mTextureCoords[0];
+    }
+    if (triangleCount == 0) {
+        std::ostringstream s;
+        s << "the file holds no triangles";
+        if (counts.droppedTriangles)
+            s << " with finite coordinates (" << counts.droppedVertices
+              << " vertices with non-finite coordinates)";
+        else if (counts.skippedFaces)
+            s << " (" << counts.skippedFaces << " points, lines or broken faces)";
+        return fail(out, s.str());
+    }
+    if (vertexCount > wire::kMaxVertices)
+        return fail(out, "too many vertices for 32-bit indices");
+    progress(0.85f, "converting");
+
+    std::uint64_t nonFiniteNormals = 0;
+    const bool normals = usableNormals(list, nonFiniteNormals);
+    const glm::dvec3 centre = 0.5 * (counts.lo + counts.hi);
+    const glm::dvec3 extent = counts.hi - counts.lo;
+    const double largestExtent = std::max(extent.x, std::max(extent.y, extent.z));
+    const double scale = largestExtent > 0.0
+                             ? 2.0 / largestExtent
+                             : 1.0; // fit in the cube [-1, 1], as the built-in shapes do
+
+    wire::MeshHeader header;
+    header.vertexCount = vertexCount;
+    header.indexCount = triangleCount * 3;
+    header.flags = (normals ? std::uint32_t(wire::kHasNormals) : 0u) |
+                   (colors ? std::uint32_t(wire::kHasColors) : 0u) |
+                   (uvs ? std::uint32_t(wire::kHasUvs) : 0u);
+    const std::uint64_t perVertex = 12 + (normals ? 12 : 0) + (colors ? 12 : 0) + (uvs ? 8 : 0);
+    out.begin(Record::Mesh, sizeof header + vertexCount * perVertex + header.indexCount * 4);
+    out.write(&header, sizeof header);
+
+    // One pass per array, so nothing is gathered in memory before it goes out.
+    std::vector<float> chunk;
+    auto emit = [&](auto &&perVertexValue, int components) {
+        for (const Instance &in : list) {
+            if (!in.used())
+                continue;
+            chunk.clear();
+            chunk.reserve(std::size_t(in.keptVertices) * std::size_t(components));
+            for (unsigned v = 0; v < in.mesh->mNumVertices; ++v)
+                if (in.kept(v))
+                    perVertexValue(in, v, chunk);
+            out.write(chunk.data(), chunk.size() * sizeof(float));
+        }
+    };
+    emit(
+        [&](const Instance &in, unsigned v, std::vector<float> &c) {
+            const glm::vec3 t((glm::dvec3(position(in, v)) - centre) * scale);
+            c.insert(c.end(), {t.x, t.y, t.z});
+        },
+        3);
+    if (normals)
+        emit(
+            [&](const Instance &in, unsigned v, std::vector<float> &c) {
+                const aiVector3D &n = in.mesh->mNormals[v];
+                glm::vec3 t = in.normalTransform * glm::vec3(n.x, n.y, n.z);
+                const float length = glm::length(t);
+                t = length > 0.0f && std::isfinite(length) ? t / length : glm::vec3(0, 0, 1);
+                c.insert(c.end(), {t.x, t.y, t.z});
+            },
+            3);
+    if (colors)
+        emit(
+            [&](const Instance &in, unsigned v, std::vector<float> &c) {
+                glm::vec3 t(1.0f);
+                if (const aiColor4D *col = in.mesh->mColors[0])
+                    t = glm::clamp(glm::vec3(col[v].r, col[v].g, col[v].b), 0.0f, 1.0f);
+                if (!finite(t))
+                    t = glm::vec3(1.0f);
+                c.insert(c.end(), {t.x, t.y, t.z});
+            },
+            3);
+    if (uvs)
+        emit(
+            [&](const Instance &in, unsigned v, std::vector<float> &c) {
+                float s = 0.0f, t = 0.0f;
+                if (const aiVector3D *uv = in.mesh->mTextureCoords[0]) {
+                    s = std::isfinite(uv[v].x) ? uv[v].x : 0.0f;
+                    t = std::isfinite(uv[v].y) ? uv[v].y : 0.0f;
+                }
+                c.insert(c.end(), {s, t});
+            },
+            2);
+    std::vector<std::uint32_t> indices;
+    std::uint32_t base = 0;
+    for (const Instance &in : list) {
+        if (!in.used())
+            continue;
+        const aiMesh &m = *in.mesh;
+        auto index = [&](unsigned i) { return base + (in.remap.empty() ? i : in.remap[i]); };
+        indices.clear();
+        for (unsigned f = 0; f < m.mNumFaces; ++f) {
+            const aiFace &face = m.mFaces[f];
+            if (isTriangle(face, m.mNumVertices) && in.kept(face.mIndices[0]) &&
+                in.kept(face.mIndices[1]) && in.kept(face.mIndices[2]))
+                indices.insert(indices.end(), {index(face.mIndices[0]), index(face.mIndices[1]),
+                                               index(face.mIndices[2])});
+        }
+        out.write(indices.data(), indices.size() * sizeof(std::uint32_t));
+        base += in.keptVertices;
+    }
+
+    if (largest)
+        sendMaterial(scene, *largest->mesh, out);
+    std::ostringstream info;
+    info << "meshes=" << list.size() << "\nskippedFaces=" << counts.skippedFaces
+         << "\nnonFinite=" << counts.droppedVertices
+         << "\ndroppedTriangles=" << counts.droppedTriangles
+         << "\nnonFiniteNormals=" << nonFiniteNormals << "\nskippedMeshRefs=" << skippedMeshRefs
+         << "\nfileNormals=" << (normals ? 1 : 0) << "\nseconds=" << readSeconds
+         << "\npeakKB=" << peakKilobytes() << "\n";
+    out.text(Record::Info, info.str());
+    progress(1.0f, "done");
+    out.record(Record::End, nullptr, 0);
+    out.flush();
+    return out.ok() ? 0 : wire::kExitFailed;
+}
+
+} // namespace lb
