@@ -106,10 +106,14 @@ private:
     void refuse(const QString &what);
 
     ShaderStage m_stage;
-    std::vector<Macro> m_macros;               // every definition, in order
-    QHash<QString, int> m_defined;             // name -> its definition now
-    std::vector<std::pair<int, int>> m_hidden; // a node: (macro, the node it adds to)
-    QHash<quint64, int> m_hiddenNodes;         // (node, macro) -> the node made of both
+    std::vector<Macro> m_macros;   // every definition, in order
+    QHash<QString, int> m_defined; // name -> its definition now
+    struct HiddenNode
+    {
+        int macro, parent, length; // the macro, the node it adds to, how many in all
+    };
+    std::vector<HiddenNode> m_hidden;
+    QHash<quint64, int> m_hiddenNodes; // (node, macro) -> the node made of both
     long long m_made = 0, m_characters = 0;
     int m_conditionalDepth = 0;
     std::vector<Use> m_uses;
@@ -119,8 +123,8 @@ private:
 
 bool Expander::hides(int node, int macro) const
 {
-    for (; node >= 0; node = m_hidden[std::size_t(node)].second)
-        if (m_hidden[std::size_t(node)].first == macro)
+    for (; node >= 0; node = m_hidden[std::size_t(node)].parent)
+        if (m_hidden[std::size_t(node)].macro == macro)
             return true;
     return false;
 }
@@ -132,7 +136,15 @@ int Expander::hideAlso(int node, int macro)
     const quint64 key = (quint64(quint32(node + 1)) << 32) | quint32(macro);
     if (const auto it = m_hiddenNodes.constFind(key); it != m_hiddenNodes.constEnd())
         return *it;
-    m_hidden.push_back({macro, node});
+    // A chain of macros each expanding to the next (`#define A1 A0`, `#define A2 A1`...)
+    // makes these sets as long as it: bounded, so that each look-up is.
+    const int length = node < 0 ? 1 : m_hidden[std::size_t(node)].length + 1;
+    if (length > kMaxMacroNesting) {
+        refuse(QString("expands through more than %1 macros, one inside another")
+                   .arg(kMaxMacroNesting));
+        return node;
+    }
+    m_hidden.push_back({macro, node, length});
     const int made = int(m_hidden.size()) - 1;
     m_hiddenNodes.insert(key, made);
     return made;

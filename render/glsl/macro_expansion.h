@@ -26,7 +26,8 @@ namespace lb {
 
 constexpr long long kMaxMacroTokens = 1000000;         // tokens made by expansions, whole file
 constexpr long long kMaxMacroCharacters = 1024 * 1024; // text out of macros, whole file
-constexpr int kMaxMacroNesting = 200; // a macro's call inside another's arguments, so deep
+// Macro calls inside macro arguments, or macros expanding one into the next, so deep.
+constexpr int kMaxMacroNesting = 200;
 
 struct MacroExpansion
 {

@@ -2,7 +2,8 @@
 // whose macros double 40 times is refused quickly, in bounded memory, on the line of the use;
 // a loop behind a macro is named on the line where the macro is used, with its name.
 // Bad inputs tried here: the 40-doubling bomb (object-like, through ##, through arguments,
-// inside #if), macro calls nested 300 deep in arguments, a macro that names itself
+// inside #if), macro calls nested 300 deep in arguments, a chain of 50,000 macros each
+// expanding to the next (a megabyte), a macro that names itself
 // (`#define x x+1`, `#define f(a) f(a+1)`), an argument list that never ends, too many or
 // too few arguments, a #define without its ")", #undef, and a vertex loop that only wrapping
 // around ends.
@@ -11,7 +12,12 @@
 #include "presets.h"
 #include "program_trial.h"
 
+#include <QDir>
 #include <QElapsedTimer>
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QTest>
 
 #include <sys/resource.h>
@@ -38,6 +44,19 @@ double threadCpuMs()
     timespec t{};
     clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
     return double(t.tv_sec) * 1e3 + double(t.tv_nsec) * 1e-6;
+}
+
+// The programs a JSON value holds (strings with a main function), anywhere in it.
+void collectPrograms(const QJsonValue &v, QStringList &programs)
+{
+    if (v.isString() && v.toString().contains("void main"))
+        programs << v.toString();
+    else if (v.isObject())
+        for (const QJsonValue &x : v.toObject())
+            collectPrograms(x, programs);
+    else if (v.isArray())
+        for (const QJsonValue &x : v.toArray())
+            collectPrograms(x, programs);
 }
 
 long peakKilobytes()
@@ -82,6 +101,11 @@ private slots:
             deep += "F(";
         deep += "1.0" + QString(300, ')') + "; }\n";
         QTest::newRow("calls nested 300 deep") << deep << 2 << "F";
+        QString chain = "#define A0 x\n";
+        for (int i = 1; i < 50000; ++i) // a megabyte of source, the most a shader may have
+            chain += QString("#define A%1 A%2\n").arg(i).arg(i - 1);
+        QTest::newRow("50,000 macros, each the next") << chain + "int y = A49999;\n"
+                                                      << 50001 << "A49999";
     }
 
     void bombsAreRefused()
@@ -126,6 +150,10 @@ private slots:
         const MacroExpansion e = expandMacros(doublingMacros(12) + "float a = M11;\n");
         QVERIFY(!e.refusal);
         QCOMPARE(e.text().count("1.0"), 2048);
+        QString chain = "#define A0 x\n";
+        for (int i = 1; i < 150; ++i)
+            chain += QString("#define A%1 A%2\n").arg(i).arg(i - 1);
+        QCOMPARE(expandMacros(chain + "int y = A149;").text().trimmed(), QString("int y = x ;"));
     }
 
     // What the expansion makes, as text on the user's lines.
@@ -331,6 +359,22 @@ private slots:
               "average)",
               perSource, sources.size(), characters / int(sources.size()));
         QVERIFY2(perSource < 20.0, qPrintable(QString::number(perSource)));
+    }
+
+    // The examples' programs (scene files) are read as before: nothing refused, no loop named.
+    void examplesAreUntouched()
+    {
+        QStringList programs;
+        for (const QString &name : QDir(LB_EXAMPLES_DIR).entryList({"*.json"})) {
+            QFile f(QString(LB_EXAMPLES_DIR) + "/" + name);
+            QVERIFY(f.open(QIODevice::ReadOnly));
+            collectPrograms(QJsonDocument::fromJson(f.readAll()).object(), programs);
+        }
+        QVERIFY(programs.size() >= 4);
+        for (const QString &program : programs) {
+            QVERIFY(!macroExpansionRefusal(program, ShaderStage::Fragment));
+            QVERIFY(endlessLoopWarnings(program, ShaderStage::Fragment).empty());
+        }
     }
 };
 
