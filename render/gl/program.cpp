@@ -2,6 +2,7 @@
 
 #include "dialect.h"
 #include "loops.h"
+#include "macro_expansion.h"
 #include "presets.h"
 #include "webgl1_translation.h"
 
@@ -65,6 +66,12 @@ GlShader compile(QOpenGLExtraFunctions &gl, ShaderStage stage, const QString &so
                        .arg(stageName(stage))
                        .arg(source.size() / 1024)
                        .arg(kMaxSourceCharacters / 1024));
+        return {};
+    }
+    if (std::optional<Diagnostic> refusal = macroExpansionRefusal(source, stage)) {
+        // Mesa's preprocessor expands macros without a bound (issue 29: 946 bytes, 24 GB):
+        // every route to the driver (the window, --check, --render, --grade) comes here.
+        build.diagnostics.push_back(*refusal);
         return {};
     }
     const PreparedSource prepared = prepareSource(source, stage, translatesWebGl1());

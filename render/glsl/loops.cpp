@@ -1,6 +1,7 @@
 #include "loops.h"
 
-#include <QHash>
+#include "macro_expansion.h"
+
 #include <QLocale>
 #include <QSet>
 #include <QStringList>
@@ -13,124 +14,10 @@ namespace lb {
 
 namespace {
 
-struct Token
-{
-    QString text;
-    int line = 1;   // 1-based
-    int column = 1; // 1-based
-    bool identifier = false;
-    bool conditional = false; // inside #if/#ifdef/#ifndef: maybe not compiled at all
-};
-
-struct Tokens
-{
-    std::vector<Token> list;
-    QSet<QString> macros;           // names given by #define: what they hide is not read here
-    QHash<QString, QString> values; // #define NAME VALUE with one word of value (MAX_LIGHTS 4)
-};
-
-bool startsIdentifier(QChar c)
-{
-    return c.isLetter() || c == '_';
-}
-
-// The tokens of GLSL source, without comments and preprocessor lines.
-Tokens tokenize(const QString &s)
-{
-    static const QStringList operators{
-        "<<=", ">>=", "++", "--", "+=", "-=", "*=", "/=", "%=", "&=", "|=",
-        "^=",  "==",  "!=", "<=", ">=", "&&", "||", "^^", "<<", ">>"};
-    Tokens result;
-    std::vector<Token> &tokens = result.list;
-    int conditionalDepth = 0;
-    int line = 1, lineStart = 0;
-    bool lineHasCode = false;
-    const int n = int(s.size());
-    for (int i = 0; i < n;) {
-        const QChar c = s[i];
-        if (c == '\n') {
-            ++line;
-            lineStart = ++i;
-            lineHasCode = false;
-            continue;
-        }
-        if (c.isSpace()) {
-            ++i;
-            continue;
-        }
-        if (c == '/' && i + 1 < n && s[i + 1] == '/') { // to the end of the line
-            while (i < n && s[i] != '\n')
-                ++i;
-            continue;
-        }
-        if (c == '/' && i + 1 < n && s[i + 1] == '*') {
-            i += 2;
-            while (i < n && !(s[i] == '*' && i + 1 < n && s[i + 1] == '/')) {
-                if (s[i] == '\n') {
-                    ++line;
-                    lineStart = i + 1;
-                }
-                ++i;
-            }
-            i += 2;
-            continue;
-        }
-        if (c == '#' && !lineHasCode) { // a preprocessor line, with its continuations
-            const int start = i;
-            while (i < n && s[i] != '\n') {
-                if (s[i] == '\\' && i + 1 < n && (s[i + 1] == '\n' || s[i + 1] == '\r')) {
-                    i += s[i + 1] == '\r' && i + 2 < n && s[i + 2] == '\n' ? 3 : 2;
-                    ++line;
-                    lineStart = i;
-                    continue;
-                }
-                ++i;
-            }
-            const QStringList words =
-                s.mid(start + 1, i - start - 1).simplified().split(' ', Qt::SkipEmptyParts);
-            const QString directive = words.value(0);
-            if (directive.startsWith("if"))
-                ++conditionalDepth;
-            else if (directive == "endif")
-                conditionalDepth = std::max(0, conditionalDepth - 1);
-            else if (directive == "define" && words.size() > 1) {
-                result.macros.insert(words[1].section('(', 0, 0));
-                if (words.size() == 3 && !words[1].contains('('))
-                    result.values.insert(words[1], words[2]);
-            }
-            continue;
-        }
-        lineHasCode = true;
-        Token t;
-        t.conditional = conditionalDepth > 0;
-        t.line = line;
-        t.column = i - lineStart + 1;
-        if (startsIdentifier(c)) {
-            const int start = i;
-            while (i < n && (s[i].isLetterOrNumber() || s[i] == '_'))
-                ++i;
-            t.text = s.mid(start, i - start);
-            t.identifier = true;
-        } else if (c.isDigit() || (c == '.' && i + 1 < n && s[i + 1].isDigit())) {
-            const int start = i;
-            while (i < n &&
-                   (s[i].isLetterOrNumber() || s[i] == '.' ||
-                    ((s[i] == '+' || s[i] == '-') && (s[i - 1] == 'e' || s[i - 1] == 'E'))))
-                ++i;
-            t.text = s.mid(start, i - start);
-        } else {
-            t.text = c;
-            for (const QString &op : operators)
-                if (s.mid(i, op.size()) == op) {
-                    t.text = op;
-                    break;
-                }
-            i += int(t.text.size());
-        }
-        tokens.push_back(t);
-    }
-    return result;
-}
+// What the loop reader reads: the code after the source's macros are expanded (a loop
+// behind `#define FOREVER for (;;)` is read like one written out), each token on the line
+// where the user wrote it or used the macro that made it.
+using Token = GlslToken;
 
 // The index of the bracket closing the one at `open`, or the end.
 std::size_t closing(const std::vector<Token> &t, std::size_t open)
@@ -309,12 +196,11 @@ std::vector<std::size_t> forSemicolons(const std::vector<Token> &t, std::size_t 
     return semis;
 }
 
-// An integer literal's value ("1000000000", "0x10", "5u"), or a #define's that is one
-// (`values`); nullopt for anything else.
-std::optional<double> integerLiteral(const Token &t,
-                                     const QHash<QString, QString> *values = nullptr)
+// An integer literal's value ("1000000000", "0x10", "5u"); nullopt for anything else. (A
+// #define'd bound is read too: the loop reader reads the expanded code.)
+std::optional<double> integerLiteral(const Token &t)
 {
-    QString digits = values ? values->value(t.text, t.text) : t.text;
+    QString digits = t.text;
     if (digits.endsWith('u') || digits.endsWith('U'))
         digits.chop(1);
     bool ok = false;
@@ -322,39 +208,62 @@ std::optional<double> integerLiteral(const Token &t,
     return ok ? std::optional<double>(double(v)) : std::nullopt;
 }
 
+bool isUnsignedLiteral(const Token &t)
+{
+    return t.text.endsWith('u') || t.text.endsWith('U');
+}
+
 // How many times `for (int i = A; i < B; i++)` runs, read from its three parts when they are
-// that simple: a literal start and bound (or #defines of literals, given `values`), a comparison of
-// the counter with the bound (<, <=,
-// !=, >, >=), and a literal step (++, --, += C, -= C). nullopt for anything else.
+// that simple: a literal start and bound, a comparison of the counter with the bound (<, <=,
+// !=, >, >=), and a literal step (++, --, += C, -= C). nullopt for anything else. A counter
+// that moves away from its bound (`i >= 0; i++`) runs until it wraps around (GLSL's integers
+// do: 2^31 steps for an int), and `wraps` says so.
 std::optional<double> countedSteps(const std::vector<Token> &t, std::size_t ib, std::size_t ie,
                                    std::size_t cb, std::size_t ce, std::size_t sb, std::size_t se,
-                                   const QHash<QString, QString> *values = nullptr)
+                                   bool *wraps = nullptr)
 {
     // init: [int|uint] i = A
+    bool isUnsigned = false;
     if (ie > ib && (t[ib].text == "int" || t[ib].text == "uint"))
-        ++ib;
+        isUnsigned = t[ib++].text == "uint";
     if (ie - ib != 3 || !t[ib].identifier || t[ib + 1].text != "=")
         return std::nullopt;
     const QString counter = t[ib].text;
-    const std::optional<double> start = integerLiteral(t[ib + 2], values);
+    const std::optional<double> start = integerLiteral(t[ib + 2]);
     // condition: i < B
     if (ce - cb != 3 || t[cb].text != counter)
         return std::nullopt;
     const QString comparison = t[cb + 1].text;
-    const std::optional<double> bound = integerLiteral(t[cb + 2], values);
+    const std::optional<double> bound = integerLiteral(t[cb + 2]);
+    isUnsigned = isUnsigned || isUnsignedLiteral(t[ib + 2]) || isUnsignedLiteral(t[cb + 2]);
     // step: i++, ++i, i--, --i, i += C, i -= C
     double step = 0.0;
     if (se - sb == 2 && (t[sb].text == counter || t[sb + 1].text == counter)) {
         const QString op = t[sb].text == counter ? t[sb + 1].text : t[sb].text;
         step = op == "++" ? 1.0 : op == "--" ? -1.0 : 0.0;
     } else if (se - sb == 3 && t[sb].text == counter) {
-        const std::optional<double> c = integerLiteral(t[sb + 2], values);
+        const std::optional<double> c = integerLiteral(t[sb + 2]);
         if (c)
             step = t[sb + 1].text == "+=" ? *c : t[sb + 1].text == "-=" ? -*c : 0.0;
     }
     if (!start || !bound || step == 0.0)
         return std::nullopt;
     const double span = *bound - *start;
+    const bool upwards = comparison == "<" || comparison == "<=";
+    const bool holds = comparison == "<"    ? span > 0
+                       : comparison == "<=" ? span >= 0
+                       : comparison == ">"  ? span < 0
+                       : comparison == ">=" ? span <= 0
+                                            : false;
+    if (holds && (upwards ? step < 0 : (comparison == ">" || comparison == ">=") && step > 0)) {
+        if (isUnsigned && comparison == ">=" && *bound == 0)
+            return std::nullopt; // never false; not counted
+        if (wraps)
+            *wraps = true;
+        const double wrap = isUnsigned ? 4294967296.0 : 2147483648.0;
+        return step > 0 ? std::floor((wrap - 1 - *start) / step) + 1
+                        : std::floor((isUnsigned ? *start : *start + 2147483648.0) / -step) + 1;
+    }
     if (comparison == "<" || comparison == "!=")
         return step > 0 && span > 0 ? std::ceil(span / step) : std::optional<double>();
     if (comparison == "<=")
@@ -382,8 +291,8 @@ struct EndlessLoop
 
 std::vector<EndlessLoop> endlessLoops(const QString &source, ShaderStage stage)
 {
-    const Tokens tokens = tokenize(source);
-    const std::vector<Token> &t = tokens.list;
+    const MacroExpansion tokens = expandMacros(source, stage);
+    const std::vector<Token> &t = tokens.tokens;
     const QSet<QString> functions = definedFunctions(t);
     std::vector<EndlessLoop> out;
     QSet<std::size_t> doWhiles; // the `while` of a do-loop, read with its `do`
@@ -394,6 +303,9 @@ std::vector<EndlessLoop> endlessLoops(const QString &source, ShaderStage stage)
         d.line = at.line;
         d.column = at.column;
         d.message = message;
+        if (!at.macro.isEmpty()) // the user sees the use, not the macro's text
+            d.message +=
+                QString(" (the loop comes from macro %1, used on this line)").arg(at.macro);
         out.push_back({d, certain});
     };
     // One loop: its condition [cb, ce) (empty: none), what runs each time [bb, be) and the
@@ -403,8 +315,8 @@ std::vector<EndlessLoop> endlessLoops(const QString &source, ShaderStage stage)
                      std::size_t ie = 0) {
         if (exits(t, bb, be))
             return;
-        // A loop the preprocessor may leave out, or one a macro takes part in (it may hide a
-        // break or a step), is not read.
+        // A loop the preprocessor may leave out, or one with a macro's name left unexpanded
+        // in it (it may hide a break or a step), is not read.
         auto unsure = [&](std::size_t b, std::size_t e) {
             for (std::size_t j = b; j < std::min(e, t.size()); ++j)
                 if (t[j].conditional || tokens.macros.contains(t[j].text))
@@ -413,14 +325,18 @@ std::vector<EndlessLoop> endlessLoops(const QString &source, ShaderStage stage)
         };
         if (at.conditional || unsure(cb, ce) || unsure(bb, be) || unsure(sb, se))
             return;
-        if (const std::optional<double> steps = countedSteps(t, ib, ie, cb, ce, sb, se);
+        bool wraps = false;
+        if (const std::optional<double> steps = countedSteps(t, ib, ie, cb, ce, sb, se, &wraps);
             steps && *steps >= kEndlessSteps) {
             warn(at,
-                 QString("this loop runs %1 times for every %2: a frame would take seconds "
+                 QString("this loop runs %1 times for every %2%3: a frame would take seconds "
                          "or more on any GPU (llvmpipe stops it after 65,535 steps and draws a "
                          "wrong picture)")
                      .arg(QLocale(QLocale::English).toString(qlonglong(*steps)))
-                     .arg(stage == ShaderStage::Vertex ? "vertex" : "fragment"),
+                     .arg(stage == ShaderStage::Vertex ? "vertex" : "fragment")
+                     .arg(wraps ? " (its counter moves away from its bound: only wrapping "
+                                  "around ends it)"
+                                : ""),
                  true);
             return;
         }
@@ -501,8 +417,8 @@ std::vector<Diagnostic> certainEndlessLoops(const QString &source, ShaderStage s
 
 bool onlyShortLoops(const QString &source, int maxSteps)
 {
-    const Tokens tokens = tokenize(source);
-    const std::vector<Token> &t = tokens.list;
+    const MacroExpansion tokens = expandMacros(source);
+    const std::vector<Token> &t = tokens.tokens;
     for (std::size_t i = 0; i < t.size(); ++i) {
         const QString &k = t[i].text;
         const bool opens = i + 1 < t.size() && t[i + 1].text == "(";
@@ -514,8 +430,8 @@ bool onlyShortLoops(const QString &source, int maxSteps)
         const std::vector<std::size_t> semis = forSemicolons(t, i + 1, close);
         if (semis.size() != 2)
             return false;
-        const std::optional<double> steps = countedSteps(t, i + 2, semis[0], semis[0] + 1, semis[1],
-                                                         semis[1] + 1, close, &tokens.values);
+        const std::optional<double> steps =
+            countedSteps(t, i + 2, semis[0], semis[0] + 1, semis[1], semis[1] + 1, close);
         if (!steps || *steps > maxSteps)
             return false;
     }
@@ -524,7 +440,7 @@ bool onlyShortLoops(const QString &source, int maxSteps)
 
 std::vector<SourcePlace> loopPlaces(const QString &source)
 {
-    const std::vector<Token> t = tokenize(source).list;
+    const std::vector<Token> t = expandMacros(source).tokens;
     std::vector<SourcePlace> places;
     for (std::size_t i = 0; i < t.size(); ++i) {
         const QString &k = t[i].text;

@@ -8,8 +8,12 @@
 //   loops whose condition reads only names that nothing in the loop changes (no assignment,
 //   ++ or -- in the body or the for's step) while the body calls no function of the file
 //   (which could change a global or an out parameter).
-// It reads conservatively: a loop it cannot be sure of is not named. Long loops that do end
-// are the trial's business, not this.
+//   for (int i = 0; i >= 0; i++): a counter moving away from its bound, which only wrapping
+//   around ends (2^31 steps), in the vertex stage as in the fragment stage.
+// It reads the code after the source's macros are expanded (macro_expansion.h): a loop a macro
+// writes is named on the line where the macro is used, with the macro's name. It reads
+// conservatively: a loop it cannot be sure of is not named. Long loops that do end are the
+// trial's business, not this.
 
 #include "diagnostics.h"
 
@@ -33,6 +37,7 @@ std::vector<SourcePlace> loopPlaces(const QString &source);
 
 // Whether every loop of the source is a counted one of at most `maxSteps` steps (a literal or
 // a #define'd bound: `for (int i = 0; i < MAX_LIGHTS; ++i)`); true without loops.
+// (A source whose macros pass the expansion's bound is read as far as the bound.)
 bool onlyShortLoops(const QString &source, int maxSteps);
 
 } // namespace lb

@@ -1,6 +1,7 @@
 #include "program_trial.h"
 
 #include "loops.h"
+#include "macro_expansion.h"
 
 #include <algorithm>
 #include <cmath>
@@ -40,18 +41,26 @@ double TrialResult::estimateAt(double pixels) const
 
 std::optional<Diagnostic> refusalWithoutFrames(const QString &vertex, const QString &fragment)
 {
+    // Macros that grow past the expansion's bound would grow the driver's preprocessor
+    // without one (issue 29): refused before anything else reads them.
+    for (const auto &[stage, text] :
+         {std::pair{ShaderStage::Vertex, vertex}, std::pair{ShaderStage::Fragment, fragment}})
+        if (std::optional<Diagnostic> refusal = macroExpansionRefusal(text, stage))
+            return refusal;
     // A loop with no way out never finishes a frame: a GPU driver hangs on it, Mesa drops it
     // and draws garbage. No need to draw to know.
     for (const auto &[stage, text] :
          {std::pair{ShaderStage::Fragment, fragment}, std::pair{ShaderStage::Vertex, vertex}})
         for (Diagnostic d : certainEndlessLoops(text, stage)) {
             d.severity = Diagnostic::Severity::Error;
+            const qsizetype macroNote = d.message.indexOf(" (the loop comes from macro ");
             d.message = d.message.startsWith("this loop runs ")
                             ? "this program never finishes a frame: the loop here r" +
                                   d.message.mid(QString("this loop r").size())
                             : "this program never finishes a frame: the loop here has no "
                               "condition (or an always-true one) and no break, return or "
-                              "discard";
+                              "discard" +
+                                  (macroNote < 0 ? QString() : d.message.mid(macroNote));
             return d;
         }
     return std::nullopt;

@@ -50,14 +50,15 @@ private slots:
         QTest::newRow("a hex bound, <=")
             << head + "  for (uint i = 0u; i <= 0xffffffu; ++i) {}\n}\n"
             << 4 << 3 << "runs 16,777,216 times";
+        // (GLSL's int wraps around: 0, -1, ... -2^31, then 2^31 - 1 ends it.)
+        QTest::newRow("counted the wrong way")
+            << head + "  for (int i = 0; i < 1000000000; i--) {}\n}\n"
+            << 4 << 3 << "runs 2,147,483,649 times for every fragment (its counter moves away";
         // Not named:
         QTest::newRow("a million steps") << head + "  for (int i = 0; i < 1000000; i++) {}\n}\n"
                                          << 0 << 0 << "";
         QTest::newRow("long, with a break")
             << head + "  for (int i = 0; i < 1000000000; i++) { if (n > 0.5) break; }\n}\n"
-            << 0 << 0 << "";
-        QTest::newRow("counted the wrong way")
-            << head + "  for (int i = 0; i < 1000000000; i--) {}\n}\n"
             << 0 << 0 << "";
         QTest::newRow("counted") << head + "  for (int i = 0; i < 4; ++i) {}\n}\n" << 0 << 0 << "";
         QTest::newRow("break") << head + "  for (;;) { if (n > 1.0) break; }\n}\n" << 0 << 0 << "";
