@@ -7,6 +7,7 @@
 //   lightbench-import --formats        Assimp's extensions, "*.obj;*.ply;..."
 
 #include "assimp_import.h"
+#include "resident_memory.h"
 
 #include <chrono>
 #include <cstdio>
@@ -64,17 +65,6 @@ void limit(int resource, rlim_t value)
 // memory here, with ASan's shadow and quarantine; reserved address space in the normal
 // build), and this one is checked, not enforced: it can be passed by what is allocated
 // between two looks.
-long residentKB()
-{
-    long pages = 0, resident = 0;
-    if (FILE *f = std::fopen("/proc/self/statm", "r")) {
-        if (std::fscanf(f, "%ld %ld", &pages, &resident) != 2)
-            resident = 0;
-        std::fclose(f);
-    }
-    return resident * (sysconf(_SC_PAGESIZE) / 1024);
-}
-
 void onSanitizerReport(const char *report)
 {
     for (const char *kind : {"allocation-size-too-big", "out-of-memory", "rss-limit-exceeded"})
@@ -98,7 +88,7 @@ void limitMemory(long long megabytes)
 {
     __asan_set_error_report_callback(onSanitizerReport);
     std::thread([kilobytes = long(megabytes) * 1024] {
-        while (residentKB() <= kilobytes)
+        while (lb::residentKB() <= kilobytes)
             std::this_thread::sleep_for(std::chrono::milliseconds(2));
         _exit(lb::wire::kExitOutOfMemory);
     }).detach();
