@@ -132,7 +132,7 @@ QString summaryLine(const Graded &g)
 {
     // Names and diagnostics (which name the student's files) with their controls shown as
     // escapes: a name cannot make a line of its own or recolour the terminal.
-    const QString diagnostic = escapedName(g.diagnostic.section('\n', 0, 0));
+    const QString diagnostic = escapedControls(g.diagnostic.section('\n', 0, 0));
     if (g.status != "graded")
         return QString("%1: %2%3")
             .arg(escapedName(g.name), g.status,
@@ -159,7 +159,7 @@ QString csv(const std::vector<Graded> &rows)
                            graded ? QString::number(g.cases) : QString(),
                            graded ? QString::number(g.worst) : QString(),
                            graded ? QString::number(g.meanShare, 'f', 4) : QString(),
-                           csvCell(escapedName(g.diagnostic.section('\n', 0, 0)))}
+                           csvCell(escapedControls(g.diagnostic.section('\n', 0, 0)))}
                    .join(',') +
                "\n";
     }
@@ -405,7 +405,7 @@ int runGrade(const CommandLine &cl)
         Graded &row = rows[std::size_t(i)];
         row.name = names[i];
         if (!submissions[std::size_t(i)].error.isEmpty()) {
-            printLine("lightbench: " + escapedName(submissions[std::size_t(i)].error), stderr);
+            printLine("lightbench: " + escapedControls(submissions[std::size_t(i)].error), stderr);
             row.status = "unreadable";
             row.diagnostic = submissions[std::size_t(i)].error;
             finished[std::size_t(i)] = true;

@@ -34,15 +34,13 @@ bool isLayoutControl(char16_t c)
            (c >= 0x202a && c <= 0x202e) || (c >= 0x2066 && c <= 0x2069) || c == 0x061c;
 }
 
-} // namespace
-
-QString escapedName(const QString &name)
+QString escaped(const QString &text, bool backslashes)
 {
     QString out;
-    out.reserve(name.size());
-    for (const QChar qc : name) {
+    out.reserve(text.size());
+    for (const QChar qc : text) {
         const char16_t c = qc.unicode();
-        if (c == '\\')
+        if (c == '\\' && backslashes)
             out += QLatin1String("\\\\");
         else if (c == '\n')
             out += QLatin1String("\\n");
@@ -58,6 +56,18 @@ QString escapedName(const QString &name)
             out += qc;
     }
     return out;
+}
+
+} // namespace
+
+QString escapedName(const QString &name)
+{
+    return escaped(name, true);
+}
+
+QString escapedControls(const QString &text)
+{
+    return escaped(text, false);
 }
 
 QString summarisedList(const QStringList &items, const QString &separator, int shown)

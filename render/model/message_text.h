@@ -20,6 +20,10 @@ QString echoedValue(const QString &text, int max = 200);
 // `\u202e`, and a backslash as `\\`, so that an escape shown cannot be typed into a name. For
 // submission names, scene, file and exercise titles: wherever a name goes, not the text around.
 QString escapedName(const QString &name);
+// The same for the text around names (a diagnostic that names a file whose name was escaped
+// where it was written, a driver's message): controls escaped, backslashes left as they are,
+// so that an escaped name is not escaped twice.
+QString escapedControls(const QString &text);
 // The first `shown` items (each elided), joined by `separator`, then "... and N more".
 QString summarisedList(const QStringList &items, const QString &separator, int shown = 8);
 

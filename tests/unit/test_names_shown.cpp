@@ -81,6 +81,14 @@ private slots:
                      qPrintable(QString::number(c.unicode(), 16)));
     }
 
+    // The text around a name escaped where it was written: controls escaped, the name's
+    // escapes not escaped again.
+    void textAroundNamesKeepsItsBackslashes()
+    {
+        const QString diagnostic = escapedName("x\ny") + ".frag:26: error\tthere\x1b[2J";
+        QCOMPARE(escapedControls(diagnostic), QString("x\\ny.frag:26: error\\tthere\\x1b[2J"));
+    }
+
     void csvCellsStayData_data()
     {
         QTest::addColumn<QString>("text");
