@@ -45,10 +45,12 @@ class TestSceneBudget : public QObject
 {
     Q_OBJECT
 private slots:
-    void budgetIsAQuarterOfMemoryAndAtMostOneGigabyte()
+    void budgetIsAQuarterOfMemoryAndAtMost768MB()
     {
         QCOMPARE(meshBudget(2 * kGB).bytes, kGB / 2);
-        QCOMPARE(meshBudget(4 * kGB).bytes, kGB);
+        QCOMPARE(meshBudget(3 * kGB).bytes, 3 * kGB / 4);
+        QCOMPARE(meshBudget(4 * kGB).bytes, kMeshBudgetCap);
+        QCOMPARE(kMeshBudgetCap, 768ull << 20);
         QCOMPARE(meshBudget(64 * kGB).bytes, kMeshBudgetCap);
         QCOMPARE(meshBudget(64 * kGB).machineBytes, 64 * kGB);
         // This machine's memory is read (sysconf or /proc/meminfo), not the fallback's guess.
@@ -137,7 +139,8 @@ private slots:
                                           .arg(fit.tessellation)
                                           .arg(toName(Shape(shape)))),
                  qPrintable(fit.message));
-        QVERIFY2(fit.message.contains("to fit 1.0 GB"), qPrintable(fit.message));
+        QVERIFY2(fit.message.contains("to fit " + byteSizeText(budget.bytes)),
+                 qPrintable(fit.message));
         // Fitted once, it fits: nothing more is lowered or said.
         const Scene fitted = scene;
         QVERIFY(fitToBudget(scene, {}, budget).message.isEmpty());
@@ -170,8 +173,8 @@ private slots:
 
     void theBoxStopsWhereTheBudgetDoes()
     {
-        // 31 objects at 680 and a 32nd the user types 2000 into.
-        Scene scene = objects(32, Shape::Sphere, 680);
+        // 31 objects at 560 and a 32nd the user types 2000 into.
+        Scene scene = objects(32, Shape::Sphere, 560);
         scene.objects[31].tessellation = 16;
         const MeshBudget budget = meshBudget(64 * kGB);
         const int most = highestTessellation(scene, 31, {}, budget);
