@@ -1,13 +1,17 @@
 // The scene budget in the window (issue 29): the 32-spheres-at-2000 scene opens lowered,
 // says so, stays up and draws; the file is not overwritten and the document is marked
 // modified; the tessellation box stops at the budget and says why; a shape change that would
-// go over is lowered too. Bad inputs tried: the 17 KB scene of 32 spheres at 2000, 2000
-// typed into the 32nd object's box, a sphere turned into a torus (4 times the triangles).
+// go over is lowered too; a build that runs out of memory anyway is a message, and the
+// object keeps what it drew. Bad inputs tried: the 17 KB scene of 32 spheres at 2000, 2000
+// typed into the 32nd object's box, a sphere turned into a torus (4 times the triangles), a
+// torus at 2000 built with the budget off under an address-space limit.
 
 #include "number_box.h"
 #include "window_fixture.h"
 
 #include <QLineEdit>
+
+#include <sys/resource.h>
 
 using namespace lb;
 using namespace lb::test;
@@ -124,6 +128,49 @@ private slots:
                  qPrintable(m_window->statusLine()->message()));
         QVERIFY(m_window->isVisible()); // its meshes are built meanwhile (the first test waits)
     }
+
+#if !defined(__SANITIZE_ADDRESS__) // ASan cannot run under an address-space limit
+    void outOfMemoryInTheWorkerIsAMessage()
+    {
+        QTRY_VERIFY(!m_window->objectLoader()->isBuilding());
+        const std::shared_ptr<const Mesh> before = m_window->objectLoader()->mesh(0);
+        QVERIFY(before);
+        // The budget off, and 128 MB more address space than the process has: the torus's
+        // second array (8 M vertices) cannot be had.
+        m_window->document().setLimit({});
+        rlimit old{};
+        QVERIFY(getrlimit(RLIMIT_AS, &old) == 0);
+        QFile status("/proc/self/status");
+        QVERIFY(status.open(QIODevice::ReadOnly));
+        const QByteArray text = status.readAll();
+        const qsizetype at = text.indexOf("VmSize:");
+        QVERIFY(at >= 0);
+        rlimit tight = old;
+        tight.rlim_cur =
+            text.mid(at + 7).trimmed().split(' ').first().toULongLong() * 1024 + (128u << 20);
+        QSignalSpy failed(m_window->objectLoader(), &ObjectLoader::buildFailed);
+        QVERIFY(setrlimit(RLIMIT_AS, &tight) == 0);
+        m_window->document().edit([](Scene &s) {
+            s.objects[0].shape = Shape::Torus;
+            s.objects[0].tessellation = 2000;
+        });
+        const bool said = failed.wait(30000) || !failed.isEmpty();
+        setrlimit(RLIMIT_AS, &old);
+        QVERIFY(said);
+        QCOMPARE(failed.first().at(1).toString(),
+                 QString("out of memory building the torus at tessellation 2000"));
+        QMessageBox *box = m_window->meshActions()->errorBox();
+        QVERIFY(box && box->isVisible());
+        QVERIFY(box->informativeText().contains("out of memory building the torus"));
+        box->close();
+        // Up, drawing what it had, and not building it again.
+        QVERIFY(m_window->isVisible());
+        QCOMPARE(m_window->objectLoader()->mesh(0), before);
+        QVERIFY(!m_window->objectLoader()->isBuilding());
+        QVERIFY(!frame().isNull());
+        QCOMPARE(failed.size(), 1);
+    }
+#endif
 };
 
 LB_WINDOW_TEST_MAIN(TestWindowBudget)
