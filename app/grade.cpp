@@ -1,6 +1,7 @@
 #include "grade.h"
 
 #include "compare.h"
+#include "csv_cell.h"
 #include "grading.h"
 #include "grading_report.h"
 #include "import_process.h"
@@ -82,10 +83,12 @@ QString diagnosticText(const Diagnostic &d, const Submission &s)
     const bool scene = s.vertexPath == s.fragmentPath;
     QString where;
     if (d.stage == ShaderStage::Link)
-        where = scene ? QFileInfo(s.vertexPath).fileName() + " (link)" : QString("link");
+        where =
+            scene ? escapedName(QFileInfo(s.vertexPath).fileName()) + " (link)" : QString("link");
     else
         where =
-            QFileInfo(d.stage == ShaderStage::Fragment ? s.fragmentPath : s.vertexPath).fileName() +
+            escapedName(QFileInfo(d.stage == ShaderStage::Fragment ? s.fragmentPath : s.vertexPath)
+                            .fileName()) +
             (scene ? QString(" (%1)").arg(stageName(d.stage)) : QString());
     return d.line > 0 ? QString("%1:%2: %3").arg(where).arg(d.line).arg(d.message)
                       : QString("%1: %2").arg(where, d.message);
@@ -127,32 +130,21 @@ Graded fromReport(const GradingReport &r)
 
 QString summaryLine(const Graded &g)
 {
-    const QString diagnostic = g.diagnostic.section('\n', 0, 0);
+    // Names and diagnostics (which name the student's files) with their controls shown as
+    // escapes: a name cannot make a line of its own or recolour the terminal.
+    const QString diagnostic = escapedControls(g.diagnostic.section('\n', 0, 0));
     if (g.status != "graded")
         return QString("%1: %2%3")
-            .arg(g.name, g.status, diagnostic.isEmpty() ? QString() : ": " + diagnostic);
+            .arg(escapedName(g.name), g.status,
+                 diagnostic.isEmpty() ? QString() : ": " + diagnostic);
     return QString("%1: %2, %3/%4 cases passed, largest difference %5/255, %6% of pixels within "
                    "tolerance%7")
-        .arg(g.name, g.passed == g.cases ? "passed" : "failed")
+        .arg(escapedName(g.name), g.passed == g.cases ? "passed" : "failed")
         .arg(g.passed)
         .arg(g.cases)
         .arg(g.worst)
         .arg(100.0 * g.meanShare, 0, 'f', 1)
         .arg(diagnostic.isEmpty() ? QString() : " (" + diagnostic + ")");
-}
-
-QString csvField(QString s)
-{
-    s.replace('\r', ' ');
-    // A leading = + - @ is a formula to a spreadsheet: quoted and led by a quote mark.
-    const bool formula = !s.isEmpty() && QString("=+-@").contains(s[0]);
-    if (formula)
-        s.prepend('\'');
-    if (formula || s.contains(',') || s.contains('"') || s.contains('\n')) {
-        s.replace('"', "\"\"");
-        s = '"' + s + '"';
-    }
-    return s;
 }
 
 QString csv(const std::vector<Graded> &rows)
@@ -161,13 +153,13 @@ QString csv(const std::vector<Graded> &rows)
                   "first_diagnostic\n";
     for (const Graded &g : rows) {
         const bool graded = g.status == "graded";
-        out += QStringList{csvField(g.name),
-                           csvField(g.status),
+        out += QStringList{csvCell(escapedName(g.name)),
+                           csvCell(g.status),
                            graded ? QString::number(g.passed) : QString(),
                            graded ? QString::number(g.cases) : QString(),
                            graded ? QString::number(g.worst) : QString(),
                            graded ? QString::number(g.meanShare, 'f', 4) : QString(),
-                           csvField(g.diagnostic.section('\n', 0, 0))}
+                           csvCell(escapedControls(g.diagnostic.section('\n', 0, 0)))}
                    .join(',') +
                "\n";
     }
@@ -413,7 +405,7 @@ int runGrade(const CommandLine &cl)
         Graded &row = rows[std::size_t(i)];
         row.name = names[i];
         if (!submissions[std::size_t(i)].error.isEmpty()) {
-            printLine("lightbench: " + submissions[std::size_t(i)].error, stderr);
+            printLine("lightbench: " + escapedControls(submissions[std::size_t(i)].error), stderr);
             row.status = "unreadable";
             row.diagnostic = submissions[std::size_t(i)].error;
             finished[std::size_t(i)] = true;

@@ -2,10 +2,12 @@
 
 #include "diagnostics.h"
 #include "heap_warmer.h"
+#include "message_text.h"
 #include "offscreen.h"
 #include "program_guard.h"
 #include "program_trial.h"
 #include "safe_write.h"
+#include "scene_budget.h"
 
 #include <QElapsedTimer>
 #include <QEventLoop>
@@ -220,6 +222,7 @@ int runHeadless(const CommandLine &cl, const Scene &requested)
                      });
     double loadSeconds = 0.0;
     qint64 helperPeakKB = 0;
+    MeshFileSizes fileSizes; // for the scene budget
     for (int i = 0; i < int(paths.size()); ++i) {
         if (i > 0)
             import.start(paths[i], cl.importLimits());
@@ -235,10 +238,21 @@ int runHeadless(const CommandLine &cl, const Scene &requested)
             if (o.meshPath == imported.file->path && o.adoptFileMaterial)
                 o.material = adoptMaterial(o.material, imported.file->material);
         loadSeconds += imported.file->seconds;
+        const Mesh &m = *imported.file->mesh;
+        fileSizes[imported.file->path] = {m.vertexCount(), m.triangleCount(), !m.normals.empty()};
         helperPeakKB = std::max(helperPeakKB, imported.file->helperPeakKB);
     }
     if (!paths.isEmpty())
         phases.mark("import");
+    // What the scene asks of this machine's memory, before any mesh is built (issue 29): a
+    // scene over the budget is drawn with its tessellation lowered, and says so.
+    if (const QString lowered = fitToBudget(scene, fileSizes, meshBudget()).message;
+        !lowered.isEmpty())
+        printLine(("lightbench: " +
+                   (cl.scenePath.isEmpty() ? QString() : escapedName(cl.scenePath) + ": ") +
+                   lowered)
+                      .toUtf8(),
+                  stderr);
     if (const QString error = offscreen.readTextureFiles(scene); !error.isEmpty()) {
         printLine("lightbench: " + error.toUtf8(), stderr);
         return 1;

@@ -25,6 +25,7 @@
 #include <QTimer>
 
 #include <cstdio>
+#include <new>
 
 namespace {
 
@@ -96,7 +97,14 @@ int main(int argc, char **argv)
             if (cl.renderPath.isEmpty() && !cl.probe && cl.benchFrames == 0 && !cl.check)
                 return 0;
         }
-        return lb::runHeadless(cl, scene);
+        try {
+            return lb::runHeadless(cl, scene);
+        } catch (const std::bad_alloc &e) { // within the scene budget, this is rare
+            const bool mesh = dynamic_cast<const lb::ObjectMeshOutOfMemory *>(&e);
+            std::fprintf(stderr, "lightbench: %s\n",
+                         mesh ? e.what() : "out of memory"); // "... building the torus at ..."
+            return 1;
+        }
     }
 
     // The window's language is English (its strings are), so its numbers are written the

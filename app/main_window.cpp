@@ -6,6 +6,7 @@
 #include "main_window_settings.h"
 #include "material_panel.h"
 #include "mesh_actions.h"
+#include "message_text.h"
 #include "object_loader.h"
 #include "object_panel.h"
 #include "presets.h"
@@ -41,9 +42,11 @@ using namespace window_settings;
 MainWindow::MainWindow(QSettings &settings, QWidget *parent)
     : QMainWindow(parent), m_settings(settings)
 {
+    limitScenes(); // before the first scene
     const QByteArray savedScene = m_settings.value(kSceneKey).toByteArray();
     if (!savedScene.isEmpty())
-        m_document.set(Scene::fromJson(QJsonDocument::fromJson(savedScene).object()));
+        m_restoreLimited =
+            m_document.set(Scene::fromJson(QJsonDocument::fromJson(savedScene).object()));
     m_scale = clampUiScale(m_settings.value(kScaleKey, 1.0).toDouble());
     m_presentationScale = clampUiScale(m_settings.value(kPresentationScaleKey, 1.75).toDouble());
     applyUiScale(m_scale); // before the widgets, which size themselves by the font
@@ -144,6 +147,7 @@ MainWindow::MainWindow(QSettings &settings, QWidget *parent)
                                 [this] { return m_loader->textureProblem(); });
     connect(m_loader, &ObjectLoader::loadFinished, m_object, &ObjectPanel::refreshProblems);
     connect(m_loader, &ObjectLoader::textureFinished, m_object, &ObjectPanel::refreshProblems);
+    setUpSceneBudget(); // the Object panel's bound and the status line's messages
     buildMenus();
 
     // The screen decides the first size and the layout; a saved window comes back only
@@ -286,7 +290,7 @@ void MainWindow::updateTitle()
         name = QFileInfo(m_shaders.filePath(ShaderStage::Vertex)).completeBaseName();
     if (name.isEmpty())
         name = tr("untitled");
-    setWindowTitle(tr("%1[*] - lightbench").arg(name));
+    setWindowTitle(tr("%1[*] - lightbench").arg(escapedName(name))); // a file name's controls
     setWindowModified(unsavedWork().any()); // the * is what quit and close ask about
 }
 

@@ -6,6 +6,7 @@
 // at the next start.
 
 #include "program_build.h"
+#include "scene_budget.h"
 #include "scene_document.h"
 #include "shader_document.h"
 #include "unsaved_work.h"
@@ -150,6 +151,13 @@ private:
     // document's. What saves write.
     Scene ownScene() const;
     void chooseSideBFiles();
+    // The scene budget (main_window_budget.cpp): every scene the document takes is held to
+    // it (limitScenes(), first), the Object panel's tessellation box too, and what was
+    // lowered is said on the status line.
+    void limitScenes();
+    void setUpSceneBudget();
+    MeshFileSizes loadedFileSizes() const;
+    QString m_restoreLimited; // what the budget lowered in the restored session's scene
 
     QSettings &m_settings;
     SceneDocument m_document;
@@ -161,7 +169,7 @@ private:
     ObjectPanel *m_object;
     EditorPanel *m_editor;
     UniformPanel *m_uniforms;
-    ObjectLoader *m_loader;
+    ObjectLoader *m_loader = nullptr; // the scene budget asks it for files before it exists
     MeshActions *m_meshActions;
     SceneActions *m_sceneActions;
     ProbePanel *m_probe;

@@ -78,6 +78,11 @@ MeshActions::MeshActions(QMainWindow *window, SceneDocument *document, ObjectLoa
             showError(tr("Texture not used"), tr("An image could not be used as a texture."),
                       message);
     });
+    connect(loader, &ObjectLoader::buildFailed, this, [this](int, const QString &message) {
+        showError(tr("Mesh not built"),
+                  tr("An object's mesh could not be built; it keeps what it drew before."),
+                  message);
+    });
     // Another object selected: the status bar describes that one.
     connect(m_document, &SceneDocument::changed, this, [this](SceneParts parts) {
         const int selected = m_document->scene().selected;

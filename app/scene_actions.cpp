@@ -120,19 +120,39 @@ bool SceneActions::open(const QString &path)
     m_exerciseScene = file.scene;
     // The program first: the scene's shading is held to a program that fixes its own.
     m_shaders->setProgram(file.program, perVertex(file.scene.shading.shading));
-    m_document->set(file.scene);
+    // Held to the scene budget on its way in (MainWindow::limitScenes): what was lowered.
+    const QString lowered = m_document->set(file.scene);
     emit exerciseChanged(); // after the scene: side B's choices may follow the exercise
     setDocument(example ? path : QFileInfo(path).absoluteFilePath());
     remember();
+    if (!lowered.isEmpty()) {
+        // The file's own values are what it holds: the lowered scene is a change the user has
+        // not saved (the title's * and quitting ask), not one the file had. Saving writes
+        // what is drawn, as after any edit; nothing is written without being asked.
+        m_saved->scene = file.scene;
+        emit documentChanged();
+    }
     if (!example)
         m_recent->add(QFileInfo(path).absoluteFilePath());
-    if (!read.ignored.isEmpty())
+    const QString ignored = read.ignored.isEmpty()
+                                ? QString()
+                                : tr("%n field(s) could not be used and kept their defaults:", "",
+                                     int(read.ignored.size())) +
+                                      "\n" + summarisedList(read.ignored, "\n", 20);
+    if (!lowered.isEmpty())
+        showMessage(QMessageBox::Information,
+                    tr("%1 opened with less tessellation than it asks for, to fit this "
+                       "machine's memory; the file is unchanged unless you save the scene.")
+                        .arg(escapedName(m_name)),
+                    lowered + (ignored.isEmpty() ? QString() : "\n\n" + ignored));
+    else if (!read.ignored.isEmpty())
         showMessage(QMessageBox::Information,
                     tr("%1 opened; %n field(s) could not be used and kept their defaults.", "",
                        int(read.ignored.size()))
-                        .arg(m_name),
+                        .arg(escapedName(m_name)),
                     summarisedList(read.ignored, "\n", 20));
-    showStatusMessage(m_window, tr("Opened the scene %1").arg(m_name), 5000);
+    if (lowered.isEmpty()) // else the status line says what was lowered
+        showStatusMessage(m_window, tr("Opened the scene %1").arg(escapedName(m_name)), 5000);
     emit sceneOpened(path);
     return true;
 }

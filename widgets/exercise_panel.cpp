@@ -1,5 +1,7 @@
 #include "exercise_panel.h"
 
+#include "message_text.h"
+
 #include <QHeaderView>
 #include <QLabel>
 #include <QPushButton>
@@ -145,7 +147,8 @@ void ExercisePanel::setExercise(const std::optional<Exercise> &exercise)
                .arg(m_tolerance)
                .arg(m_size.width())
                .arg(m_size.height()));
-    m_title->setText(exercise->title.isEmpty() ? tr("Exercise") : exercise->title);
+    // A title is one line: a line break or a control in it is shown, not obeyed.
+    m_title->setText(exercise->title.isEmpty() ? tr("Exercise") : escapedName(exercise->title));
     m_task->setText(exercise->task);
     const ExerciseReference &ref = exercise->reference;
     const QString reference =

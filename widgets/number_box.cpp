@@ -276,9 +276,12 @@ NumberBox::Reading IntegerBox::readText(const QString &text) const
 
 QString IntegerBox::problem() const
 {
-    return describe(readText(lineEdit()->text()), 0, true,
-                    prefix() + textFromValue(minimum()) + suffix(),
-                    prefix() + textFromValue(maximum()) + suffix());
+    const NumberBox::Reading r = readText(lineEdit()->text());
+    const QString problem = describe(r, 0, true, prefix() + textFromValue(minimum()) + suffix(),
+                                     prefix() + textFromValue(maximum()) + suffix());
+    if (r.problem == NumberBox::Problem::Range && r.value > maximum() && !m_maximumReason.isEmpty())
+        return problem + " " + m_maximumReason;
+    return problem;
 }
 
 QValidator::State IntegerBox::validate(QString &text, int &) const

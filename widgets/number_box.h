@@ -78,6 +78,9 @@ public:
     explicit IntegerBox(QWidget *parent = nullptr);
 
     QString problem() const;
+    // Why the maximum is what it is, added to the problem of a number above it ("This box
+    // takes 3 to 690. More would take ..."); empty: nothing added.
+    void setMaximumReason(const QString &reason) { m_maximumReason = reason; }
     // Takes the text typed as the value, as Enter does; false, with the box focused and the
     // reason shown, when it would not be taken. For a dialog's OK, which a shortcut may press
     // while the text is still unread (keyboard tracking is off).
@@ -96,6 +99,7 @@ private:
     NumberBox::Reading readText(const QString &text) const;
     void showProblem();
     bool m_marked = false;
+    QString m_maximumReason;
 };
 
 } // namespace lb

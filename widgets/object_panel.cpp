@@ -279,6 +279,12 @@ void ObjectPanel::refresh(const Scene &scene)
                              Qt::ToolTipRole);
         m_shape->setCurrentIndex(kShapeCount);
     }
+    // Set before the value: a lower maximum would clamp it. The box goes no higher than the
+    // budget allows (the scene's own value stays shown if it is higher).
+    const auto [most, why] = m_tessellationLimit ? m_tessellationLimit(scene, scene.selected)
+                                                 : std::pair(limits::kMaxTessellation, QString());
+    m_tessellation->setMaximum(std::max(most, o.tessellation));
+    m_tessellation->setMaximumReason(most < limits::kMaxTessellation ? why : QString());
     m_tessellation->setValue(o.tessellation);
     m_tessellation->setEnabled(o.meshPath.isEmpty() && o.shape != Shape::Cube);
     m_autoRotate->setChecked(o.autoRotate);

@@ -9,6 +9,7 @@
 #include <functional>
 
 #include <array>
+#include <utility>
 
 class QCheckBox;
 class QComboBox;
@@ -19,6 +20,7 @@ class QSpinBox;
 
 namespace lb {
 
+class IntegerBox;
 class TextureControls;
 
 class ObjectPanel : public ScenePanel
@@ -47,6 +49,10 @@ public:
     // image is not shown (the object loader's meshProblem() and textureProblem());
     // refreshProblems() shows them again after a load.
     void setProblemLookups(std::function<QString()> mesh, std::function<QString()> texture);
+    // The most the tessellation box takes for object `index` of `scene`, and why no more
+    // (the scene budget: the memory all objects' meshes may take); none: kMaxTessellation.
+    using TessellationLimit = std::function<std::pair<int, QString>(const Scene &, int index)>;
+    void setTessellationLimit(TessellationLimit limit) { m_tessellationLimit = std::move(limit); }
     void refreshProblems();
 
 signals:
@@ -63,11 +69,12 @@ private:
     void refreshList(const Scene &scene);
 
     std::function<QString()> m_meshProblem;
+    TessellationLimit m_tessellationLimit;
 
     QListWidget *m_list;
     QPushButton *m_add, *m_duplicate, *m_remove;
     QComboBox *m_shape;
-    QSpinBox *m_tessellation;
+    IntegerBox *m_tessellation;
     std::array<QDoubleSpinBox *, 3> m_rotation{};
     std::array<QDoubleSpinBox *, 3> m_scale{};
     std::array<QDoubleSpinBox *, 3> m_translation{};

@@ -4,6 +4,7 @@
 #include <QLocale>
 
 #include <algorithm>
+#include <tuple>
 #include <utility>
 
 namespace lb {
@@ -406,15 +407,19 @@ void ObjectLoader::startBuild(int index, const ObjectSettings &object,
     job->key = objectMeshKey(object, job->file.get());
     job->commit = commit;
     m_job = job;
+    const auto build = [job] { // nothing escapes: an exception would end the process
+        ObjectMeshBuild b = tryBuildObjectMesh(job->object, job->file.get(), &job->cancel);
+        std::tie(job->mesh, job->error) = std::pair(std::move(b.mesh), std::move(b.error));
+    };
     if (objectMeshWork(job->object, job->file.get()) <= kBuildInlineWork) {
-        job->mesh = buildObjectMesh(job->object, job->file.get());
+        build();
         finishBuild(job);
         return;
     }
     if (commit)
         emit loadProgress(0.9, tr("building"));
-    m_pool.start([this, job] {
-        job->mesh = buildObjectMesh(job->object, job->file.get(), &job->cancel);
+    m_pool.start([this, job, build] {
+        build();
         // The destructor waits for this task, so `this` is alive when the call is queued;
         // Qt drops it if the loader is gone before it is delivered.
         QMetaObject::invokeMethod(
@@ -439,6 +444,15 @@ void ObjectLoader::finishBuild(const std::shared_ptr<Job> &job)
                                                    ? nullptr
                                                    : job->file.get()) == job->key);
     const bool built = job->mesh && !job->cancel && wanted;
+    if (!job->error.isEmpty() && !job->commit && wanted) { // what it drew stays, not rebuilt
+        m_slots.resize(std::max(m_slots.size(), std::size_t(index) + 1));
+        Slot &slot = m_slots[std::size_t(index)];
+        slot.mesh = slot.mesh ? slot.mesh : std::make_shared<const Mesh>();
+        slot.key = job->key;
+        emitChanged();
+    }
+    if (!job->error.isEmpty() && !job->commit) // an open says it in loadFinished()
+        emit buildFailed(index, job->error);
     if (built) {
         if (int(m_slots.size()) <= index)
             m_slots.resize(std::size_t(index) + 1);
@@ -464,7 +478,9 @@ void ObjectLoader::finishBuild(const std::shared_ptr<Job> &job)
     if (built)
         emitChanged();
     if (job->commit)
-        emit loadFinished(built, built ? summary() : tr("Loading cancelled"));
+        emit loadFinished(built, built                  ? summary()
+                                 : job->error.isEmpty() ? tr("Loading cancelled")
+                                                        : job->error);
     sync(); // whatever the scene asked for meanwhile
 }
 

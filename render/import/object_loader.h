@@ -83,6 +83,10 @@ signals:
     // 512 texels", or "FILE: what went wrong" (the scene's objects keep naming it and show
     // what they would without it; textureProblem() says why).
     void textureFinished(bool ok, const QString &message);
+    // Object `index`'s mesh could not be built ("out of memory building the torus at
+    // tessellation 2000"): it keeps drawing what it drew (nothing, if it had nothing) and is
+    // not built again until it asks for another mesh.
+    void buildFailed(int index, const QString &message);
 
 private:
     struct Job
@@ -94,6 +98,7 @@ private:
         bool commit = false; // the last step of open(): the file becomes the object's mesh
         std::atomic_bool cancel{false};
         std::shared_ptr<const Mesh> mesh;
+        QString error; // why there is no mesh: tryBuildObjectMesh's
     };
     // What one object draws, and what it was built from.
     struct Slot

@@ -1,6 +1,7 @@
 #include "grading.h"
 
 #include "compare.h"
+#include "message_text.h"
 
 #include <QPainter>
 
@@ -82,7 +83,7 @@ QImage gradingSheet(const QString &title, const QImage &student, const QImage &r
                Qt::AlignLeft | Qt::AlignVCenter,
                QString("%1 - case %2: largest difference %3/255%4, %5% of %6 pixels within "
                        "tolerance, %7")
-                   .arg(title)
+                   .arg(escapedName(title)) // a submission's name: one line, controls shown
                    .arg(caseIndex)
                    .arg(result.largest)
                    .arg(result.at.x() >= 0

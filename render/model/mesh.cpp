@@ -31,6 +31,7 @@ void colourByPosition(Mesh &mesh)
 void addGridIndices(Mesh &mesh, std::uint32_t first, int rows, int cols)
 {
     const std::uint32_t stride = std::uint32_t(cols) + 1;
+    mesh.indices.reserve(mesh.indices.size() + 6 * std::size_t(rows) * std::size_t(cols));
     for (int r = 0; r < rows; ++r) {
         for (int c = 0; c < cols; ++c) {
             const std::uint32_t a = first + std::uint32_t(r) * stride + std::uint32_t(c);
@@ -74,6 +75,12 @@ Mesh makeSphere(int slices, int stacks)
     slices = std::max(slices, 3);
     stacks = std::max(stacks, 2);
     Mesh mesh;
+    // Reserved: grown by doubling, a big sphere's arrays held up to twice their size for as
+    // long as it is drawn (the scene budget counts them at their size).
+    const std::size_t n = std::size_t(slices + 1) * std::size_t(stacks + 1);
+    mesh.positions.reserve(n);
+    mesh.normals.reserve(n);
+    mesh.uvs.reserve(n);
     // Rows run from the north pole down; the seam and the poles repeat vertices so that each
     // has its own texture coordinate. The repeats sit at exactly the same position (sin(pi)
     // is not 0 in floats), so normal generation sees one surface there.
@@ -123,6 +130,10 @@ Mesh makePlane(int divisions)
 {
     divisions = std::max(divisions, 1);
     Mesh mesh;
+    const std::size_t n = std::size_t(divisions + 1) * std::size_t(divisions + 1);
+    mesh.positions.reserve(n);
+    mesh.normals.reserve(n);
+    mesh.uvs.reserve(n);
     for (int r = 0; r <= divisions; ++r) {
         const float y = 1.0f - 2.0f * float(r) / float(divisions);
         for (int c = 0; c <= divisions; ++c) {
@@ -164,6 +175,23 @@ std::size_t shapeTriangleCount(Shape shape, int tessellation)
         return 2 * (2 * t) * t;
     case Shape::Plane:
         return 2 * t * t;
+    }
+    return 0;
+}
+
+std::size_t shapeVertexCount(Shape shape, int tessellation)
+{
+    // As makeShape() and the make functions clamp their arguments.
+    const std::size_t t = std::size_t(std::max(tessellation, 3));
+    switch (shape) {
+    case Shape::Cube:
+        return 24;
+    case Shape::Sphere:
+        return (t + 1) * (std::max<std::size_t>(2, t / 2) + 1);
+    case Shape::Torus:
+        return (2 * t + 1) * (t + 1);
+    case Shape::Plane:
+        return (t + 1) * (t + 1);
     }
     return 0;
 }

@@ -36,6 +36,8 @@ Mesh makePlane(int divisions);
 Mesh makeShape(Shape shape, int tessellation);
 // How many triangles makeShape() makes, without making them.
 std::size_t shapeTriangleCount(Shape shape, int tessellation);
+// How many vertices makeShape() makes, without making them (the seams and poles repeat theirs).
+std::size_t shapeVertexCount(Shape shape, int tessellation);
 // Arrow of length 1 from the origin along +Z (shaft and cone), for a directional light.
 Mesh makeArrow(int segments);
 

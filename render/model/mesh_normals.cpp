@@ -1,5 +1,7 @@
 #include "mesh_normals.h"
 
+#include "parallel_for.h"
+
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
@@ -192,21 +194,6 @@ struct VertexKeyHash
         return std::size_t(h ^ (h >> 29));
     }
 };
-
-// Runs work(begin, end, part) over `parts` slices of [0, n) on as many threads.
-template <typename F> void parallelFor(std::size_t n, std::size_t parts, F &&work)
-{
-    if (parts <= 1) {
-        work(std::size_t(0), n, std::size_t(0));
-        return;
-    }
-    std::vector<std::thread> threads;
-    for (std::size_t p = 1; p < parts; ++p)
-        threads.emplace_back([&, p] { work(n * p / parts, n * (p + 1) / parts, p); });
-    work(std::size_t(0), n / parts, std::size_t(0));
-    for (std::thread &t : threads)
-        t.join();
-}
 
 // The common smooth mesh, quickly and with a third of the memory: every position has one
 // vertex, used by some triangle, and every position takes the fast path of the general loop

@@ -1,6 +1,11 @@
 #include "object_mesh.h"
 
 #include "mesh_normals.h"
+#include "message_text.h"
+
+#include <QFileInfo>
+
+#include <exception>
 
 namespace lb {
 
@@ -9,6 +14,18 @@ namespace {
 float creaseOf(const ObjectSettings &object)
 {
     return object.normals == NormalMode::Flat ? 0.0f : object.creaseDegrees;
+}
+
+// "the torus at tessellation 2000", "teapot.obj's normals (12,288 triangles)".
+QString meshName(const ObjectSettings &object, const MeshFile *file)
+{
+    if (file)
+        return QString("%1's normals (%2 triangles)")
+            .arg(escapedName(QFileInfo(file->path).fileName()))
+            .arg(file->mesh ? qulonglong(file->mesh->triangleCount()) : 0);
+    if (object.shape == Shape::Cube)
+        return "the cube";
+    return QString("the %1 at tessellation %2").arg(toName(object.shape)).arg(object.tessellation);
 }
 } // namespace
 
@@ -44,15 +61,39 @@ std::size_t objectMeshWork(const ObjectSettings &object, const MeshFile *file)
 std::shared_ptr<const Mesh> buildObjectMesh(const ObjectSettings &object, const MeshFile *file,
                                             const std::atomic_bool *cancel)
 {
-    std::shared_ptr<const Mesh> base =
-        file ? file->mesh
-             : std::make_shared<const Mesh>(makeShape(object.shape, object.tessellation));
-    if (object.normals == NormalMode::File && !base->normals.empty())
-        return base;
-    std::optional<Mesh> generated = withGeneratedNormals(*base, creaseOf(object), cancel);
-    if (!generated)
-        return nullptr;
-    return std::make_shared<const Mesh>(std::move(*generated));
+    try {
+        std::shared_ptr<const Mesh> base =
+            file ? file->mesh
+                 : std::make_shared<const Mesh>(makeShape(object.shape, object.tessellation));
+        if (object.normals == NormalMode::File && !base->normals.empty())
+            return base;
+        std::optional<Mesh> generated = withGeneratedNormals(*base, creaseOf(object), cancel);
+        if (!generated)
+            return nullptr;
+        return std::make_shared<const Mesh>(std::move(*generated));
+    } catch (const ObjectMeshOutOfMemory &) {
+        throw;
+    } catch (const std::bad_alloc &) {
+        // What was made is freed by now: there is room for the message.
+        throw ObjectMeshOutOfMemory(("out of memory building " + meshName(object, file)).toUtf8());
+    } catch (const std::length_error &) { // a vector longer than it may be: the same to the user
+        throw ObjectMeshOutOfMemory(("out of memory building " + meshName(object, file)).toUtf8());
+    }
+}
+
+ObjectMeshBuild tryBuildObjectMesh(const ObjectSettings &object, const MeshFile *file,
+                                   const std::atomic_bool *cancel) noexcept
+{
+    try {
+        return {buildObjectMesh(object, file, cancel), {}};
+    } catch (const std::exception &e) {
+        try {
+            return {nullptr, QString::fromUtf8(e.what())};
+        } catch (...) { // not even the message fits: the QString is made of a literal
+        }
+    } catch (...) {
+    }
+    return {nullptr, QStringLiteral("out of memory building a mesh")};
 }
 
 } // namespace lb

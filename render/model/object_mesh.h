@@ -7,8 +7,11 @@
 #include "mesh_file.h"
 #include "scene.h"
 
+#include <QByteArray>
+
 #include <atomic>
 #include <memory>
+#include <new>
 
 namespace lb {
 
@@ -33,8 +36,31 @@ ObjectMeshKey objectMeshKey(const ObjectSettings &object, const MeshFile *file);
 // triangles around one position in 10-50 ms), so this is what decides where a mesh is built.
 std::size_t objectMeshWork(const ObjectSettings &object, const MeshFile *file);
 
-// Returns nullptr only when `cancel` was set.
+// What buildObjectMesh throws when an allocation fails: a std::bad_alloc (whoever catches
+// those catches it) that names the mesh: "out of memory building the torus at tessellation
+// 2000". What it made so far is freed as it unwinds.
+class ObjectMeshOutOfMemory : public std::bad_alloc
+{
+public:
+    explicit ObjectMeshOutOfMemory(QByteArray what) : m_what(std::move(what)) {}
+    const char *what() const noexcept override { return m_what.constData(); }
+
+private:
+    QByteArray m_what;
+};
+
+// Returns nullptr only when `cancel` was set; throws ObjectMeshOutOfMemory when memory runs out.
 std::shared_ptr<const Mesh> buildObjectMesh(const ObjectSettings &object, const MeshFile *file,
                                             const std::atomic_bool *cancel = nullptr);
+
+// The same for worker threads, where nothing may escape (Qt's thread pool aborts the process
+// on an exception): `error` says why there is no mesh ("out of memory building ...").
+struct ObjectMeshBuild
+{
+    std::shared_ptr<const Mesh> mesh; // nullptr: cancelled, or `error`
+    QString error;
+};
+ObjectMeshBuild tryBuildObjectMesh(const ObjectSettings &object, const MeshFile *file,
+                                   const std::atomic_bool *cancel = nullptr) noexcept;
 
 } // namespace lb

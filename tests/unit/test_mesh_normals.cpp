@@ -206,8 +206,17 @@ private slots:
     void shapeTriangleCountsAreExact()
     {
         for (Shape shape : {Shape::Cube, Shape::Sphere, Shape::Torus, Shape::Plane})
-            for (int t : {3, 4, 7, 16, 101})
-                QCOMPARE(shapeTriangleCount(shape, t), makeShape(shape, t).triangleCount());
+            for (int t : {3, 4, 7, 16, 101}) {
+                const Mesh made = makeShape(shape, t);
+                QCOMPARE(shapeTriangleCount(shape, t), made.triangleCount());
+                QCOMPARE(shapeVertexCount(shape, t), made.vertexCount()); // the scene budget's
+                // Reserved to size: a grown array would hold up to twice what the budget counts
+                // (the cube's 24 vertices do not matter).
+                if (shape != Shape::Cube) {
+                    QCOMPARE(made.positions.capacity(), made.positions.size());
+                    QCOMPARE(made.indices.capacity(), made.indices.size());
+                }
+            }
     }
 
     // Hundreds of thousands of triangles around one position (a fan, a cone's apex, bad data

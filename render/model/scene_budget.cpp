@@ -1,0 +1,212 @@
+#include "scene_budget.h"
+
+#include "mesh.h"
+#include "message_text.h"
+
+#include <QFile>
+#include <QLocale>
+#include <QRegularExpression>
+
+#include <algorithm>
+
+#include <unistd.h>
+
+namespace lb {
+
+namespace {
+
+// Whose tessellation counts: the shapes that have one, unless a loaded file is drawn instead.
+bool hasTessellation(const ObjectSettings &object, const MeshFileSizes &files)
+{
+    if (!object.meshPath.isEmpty() && files.count(object.meshPath))
+        return false;
+    return object.shape != Shape::Cube;
+}
+
+MeshCost costOf(std::uint64_t vertices, std::uint64_t triangles, bool flatNormalsGenerated)
+{
+    // Flat normals split every corner that does not share its face's normal: on a curved
+    // surface, all of them.
+    if (flatNormalsGenerated)
+        vertices = std::max(vertices, 3 * triangles);
+    return {triangles, vertices * kBytesPerVertex + triangles * kBytesPerTriangle};
+}
+
+MeshCost operator+(MeshCost a, MeshCost b)
+{
+    return {a.triangles + b.triangles, a.bytes + b.bytes};
+}
+
+// The scene's cost with every object's tessellation held to at most `cap`.
+MeshCost costCapped(const Scene &scene, const MeshFileSizes &files, int cap)
+{
+    MeshCost total;
+    for (ObjectSettings object : scene.objects) {
+        if (hasTessellation(object, files))
+            object.tessellation = std::min(object.tessellation, cap);
+        total = total + objectCost(object, files);
+    }
+    return total;
+}
+
+QString countText(std::uint64_t n)
+{
+    const QLocale english(QLocale::English);
+    if (n >= 10'000'000)
+        return QString("%1 million").arg(english.toString(double(n) / 1e6, 'f', 0));
+    if (n >= 1'000'000)
+        return QString("%1 million").arg(english.toString(double(n) / 1e6, 'f', 1));
+    return english.toString(qulonglong(n));
+}
+
+std::uint64_t memTotalFromProc()
+{
+    QFile meminfo("/proc/meminfo");
+    if (!meminfo.open(QIODevice::ReadOnly))
+        return 0;
+    static const QRegularExpression line(R"(^MemTotal:\s+(\d+)\s+kB)",
+                                         QRegularExpression::MultilineOption);
+    const QRegularExpressionMatch m = line.match(QString::fromLatin1(meminfo.read(4096)));
+    return m.hasMatch() ? m.captured(1).toULongLong() * 1024 : 0;
+}
+
+QString fitMessage(const Scene &scene, const BudgetFit &fit, const MeshBudget &budget, int askedMax,
+                   bool askedSame)
+{
+    QStringList names;
+    for (const int i : fit.lowered)
+        names << QString("%1 #%2")
+                     .arg(echoedValue(displayName(scene.objects[std::size_t(i)]), 60))
+                     .arg(i + 1);
+    const int n = int(scene.objects.size());
+    QString text = QString("%1 %2 at tessellation %3%4 would make %5 triangles (~%6); ")
+                       .arg(n)
+                       .arg(n == 1 ? "object" : "objects")
+                       .arg(askedSame ? "" : "up to ")
+                       .arg(askedMax)
+                       .arg(countText(fit.asked.triangles), byteSizeText(fit.asked.bytes));
+    text += QString("tessellation lowered to %1 on %2 %3 (%4) ")
+                .arg(fit.tessellation)
+                .arg(fit.lowered.size())
+                .arg(fit.lowered.size() == 1 ? "object" : "objects")
+                .arg(summarisedList(names, ", ", 4));
+    const QString limit = QString("%1, the most a scene may take on this machine (%2 of memory)")
+                              .arg(byteSizeText(budget.bytes), byteSizeText(budget.machineBytes));
+    if (fit.fits)
+        return text +
+               QString("to fit %1: %2 triangles now").arg(limit, countText(fit.fitted.triangles));
+    return text + QString("and still over %1: ~%2 (its mesh files count in full)")
+                      .arg(limit, byteSizeText(fit.fitted.bytes));
+}
+
+} // namespace
+
+std::uint64_t machineMemoryBytes()
+{
+    const long pages = sysconf(_SC_PHYS_PAGES);
+    const long pageSize = sysconf(_SC_PAGE_SIZE);
+    if (pages > 0 && pageSize > 0)
+        return std::uint64_t(pages) * std::uint64_t(pageSize);
+    if (const std::uint64_t proc = memTotalFromProc())
+        return proc;
+    return 8ull << 30;
+}
+
+MeshBudget meshBudget(std::uint64_t machineBytes)
+{
+    return {std::min(machineBytes / 4, kMeshBudgetCap), machineBytes};
+}
+
+MeshCost objectCost(const ObjectSettings &object, const MeshFileSizes &files)
+{
+    const bool flat = object.normals == NormalMode::Flat;
+    if (!object.meshPath.isEmpty())
+        if (const auto file = files.find(object.meshPath); file != files.end()) {
+            const MeshFileSize &f = file->second;
+            // The file's own normals drawn: the mesh is used as it is.
+            const bool generated = object.normals != NormalMode::File || !f.hasNormals;
+            return costOf(f.vertices, f.triangles, generated && flat);
+        }
+    return costOf(shapeVertexCount(object.shape, object.tessellation),
+                  shapeTriangleCount(object.shape, object.tessellation), flat);
+}
+
+MeshCost sceneCost(const Scene &scene, const MeshFileSizes &files)
+{
+    return costCapped(scene, files, limits::kMaxTessellation);
+}
+
+BudgetFit fitToBudget(Scene &scene, const MeshFileSizes &files, const MeshBudget &budget)
+{
+    BudgetFit fit;
+    fit.asked = fit.fitted = sceneCost(scene, files);
+    int askedMax = 0, askedMin = limits::kMaxTessellation;
+    for (const ObjectSettings &o : scene.objects)
+        if (hasTessellation(o, files)) {
+            askedMax = std::max(askedMax, o.tessellation);
+            askedMin = std::min(askedMin, o.tessellation);
+        }
+    if (fit.asked.bytes <= budget.bytes)
+        return fit;
+    fit.fits = false; // until lowered
+    // The highest cap that fits (the cost only grows with the cap): binary search.
+    int lo = limits::kMinTessellation, hi = std::max(lo, askedMax - 1);
+    if (costCapped(scene, files, lo).bytes > budget.bytes)
+        hi = lo; // over even at the least: the files or the object count alone
+    while (lo < hi) {
+        const int mid = lo + (hi - lo + 1) / 2;
+        if (costCapped(scene, files, mid).bytes <= budget.bytes)
+            lo = mid;
+        else
+            hi = mid - 1;
+    }
+    fit.tessellation = lo;
+    for (int i = 0; i < int(scene.objects.size()); ++i) {
+        ObjectSettings &o = scene.objects[std::size_t(i)];
+        if (hasTessellation(o, files) && o.tessellation > lo) {
+            o.tessellation = lo;
+            fit.lowered.push_back(i);
+        }
+    }
+    fit.fitted = sceneCost(scene, files);
+    fit.fits = fit.fitted.bytes <= budget.bytes;
+    if (fit.lowered.empty()) // nothing left to lower: said when it was lowered, not again
+        return fit;
+    fit.message = fitMessage(scene, fit, budget, askedMax, askedMin == askedMax);
+    return fit;
+}
+
+int highestTessellation(const Scene &scene, int index, const MeshFileSizes &files,
+                        const MeshBudget &budget)
+{
+    if (index < 0 || index >= int(scene.objects.size()) ||
+        !hasTessellation(scene.objects[std::size_t(index)], files))
+        return limits::kMaxTessellation;
+    Scene trial = scene;
+    const auto fitsAt = [&](int t) {
+        trial.objects[std::size_t(index)].tessellation = t;
+        return sceneCost(trial, files).bytes <= budget.bytes;
+    };
+    int lo = limits::kMinTessellation, hi = limits::kMaxTessellation;
+    if (fitsAt(hi))
+        return hi;
+    while (lo < hi) {
+        const int mid = lo + (hi - lo + 1) / 2;
+        if (fitsAt(mid))
+            lo = mid;
+        else
+            hi = mid - 1;
+    }
+    return lo;
+}
+
+QString byteSizeText(std::uint64_t bytes)
+{
+    const QLocale english(QLocale::English);
+    const double mb = double(bytes) / double(1 << 20);
+    if (mb >= 1024.0)
+        return QString("%1 GB").arg(english.toString(mb / 1024.0, 'f', 1));
+    return QString("%1 MB").arg(english.toString(mb, 'f', 0));
+}
+
+} // namespace lb
