@@ -9,6 +9,7 @@
 #include "offscreen.h"
 #include "program_guard.h"
 #include "safe_write.h"
+#include "scene_budget.h"
 #include "stop_signals.h"
 #include "submission.h"
 #include "work_check.h"
@@ -267,7 +268,11 @@ int runGradeOne(const CommandLine &cl)
         return finish("no OpenGL", error);
     if (const QString error = loadSceneFiles(offscreen, e.file.scene); !error.isEmpty())
         return finish("exercise files", error);
-    const std::vector<Scene> cases = gradingCases(e.file.scene, spec, cl.seed);
+    // An exercise is a scene someone handed out: held to the scene budget as the window and
+    // --render hold it (the same lowered scene for the reference and the student's program).
+    Scene base = e.file.scene;
+    fitToBudget(base, {}, meshBudget());
+    const std::vector<Scene> cases = gradingCases(base, spec, cl.seed);
 
     // The reference's frames first, then the student's: one program build each.
     std::vector<QImage> reference;
