@@ -2,6 +2,7 @@
 
 #include "bounded_read.h"
 #include "message_text.h"
+#include "scene_budget.h"
 
 #include <QBuffer>
 #include <QCoreApplication>
@@ -76,11 +77,7 @@ QString findTexture(const QString &modelPath, QString name, QString &problem)
 
 qint64 ImportLimits::machineMemoryMB()
 {
-    const long pages = sysconf(_SC_PHYS_PAGES);
-    const long pageSize = sysconf(_SC_PAGE_SIZE);
-    if (pages <= 0 || pageSize <= 0)
-        return 8192;
-    return qint64(pages) * qint64(pageSize) / (1 << 20);
+    return qint64(machineMemoryBytes() >> 20); // one reading of it, the scene budget's
 }
 
 qint64 ImportLimits::defaultMemoryMB()

@@ -31,8 +31,6 @@ public:
     WorkGuard(const WorkGuard &) = delete;
     WorkGuard &operator=(const WorkGuard &) = delete;
 
-    long limitKB() const { return m_limitKB; }
-
 private:
     long m_limitKB;
     std::mutex m_mutex;
