@@ -39,6 +39,11 @@ ProgramText programText(const QJsonObject &p, QStringList &ignored)
 
 QByteArray sceneFileBytes(const SceneFile &file, const QDir &dir)
 {
+    return QJsonDocument(sceneFileJson(file, dir)).toJson(QJsonDocument::Indented);
+}
+
+QJsonObject sceneFileJson(const SceneFile &file, const QDir &dir)
+{
     QJsonObject root = file.scene.toJson();
     // Mesh and image files are stored relative to the scene file, so that a folder moves as a
     // whole.
@@ -68,7 +73,7 @@ QByteArray sceneFileBytes(const SceneFile &file, const QDir &dir)
                                       {"edited", file.program->edited},
                                       {"vertex", file.program->vertex},
                                       {"fragment", file.program->fragment}};
-    return QJsonDocument(root).toJson(QJsonDocument::Indented);
+    return root;
 }
 
 SceneFileRead parseSceneFile(const QByteArray &bytes, const QDir &dir, const QString &name)
@@ -86,7 +91,12 @@ SceneFileRead parseSceneFile(const QByteArray &bytes, const QDir &dir, const QSt
         read.error = QString("%1: not a scene file: the JSON is not an object").arg(name);
         return read;
     }
-    QJsonObject root = document.object();
+    return parseSceneObject(document.object(), dir);
+}
+
+SceneFileRead parseSceneObject(QJsonObject root, const QDir &dir)
+{
+    SceneFileRead read; // an object has no error of its own, only what is ignored
 
     // A file from a newer lightbench is read for what this one knows.
     const QJsonValue format = root.take("format");

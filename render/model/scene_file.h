@@ -10,6 +10,7 @@
 
 #include <QByteArray>
 #include <QDir>
+#include <QJsonObject>
 #include <QString>
 #include <QStringList>
 
@@ -58,6 +59,9 @@ QByteArray sceneFileBytes(const SceneFile &file, const QDir &dir);
 // Parses a document; relative mesh paths are taken relative to `dir`. `name` prefixes errors.
 SceneFileRead parseSceneFile(const QByteArray &bytes, const QDir &dir, const QString &name);
 SceneFileRead readSceneFile(const QString &path);
+// The same as a JSON object (a lesson holds scenes inline: lesson.h).
+QJsonObject sceneFileJson(const SceneFile &file, const QDir &dir);
+SceneFileRead parseSceneObject(QJsonObject root, const QDir &dir);
 // Writes atomically (QSaveFile); returns an empty string or "PATH: message".
 QString writeSceneFile(const QString &path, const SceneFile &file);
 

@@ -1,0 +1,279 @@
+#include "lesson.h"
+
+#include "bounded_read.h"
+#include "message_text.h"
+#include "safe_write.h"
+
+#include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QLocale>
+
+namespace lb {
+
+namespace {
+
+const char *kFormat = "lightbench-lesson";
+
+// "a title", "a caption": a string (English) or {"en": ..., "pt": ...}. What is not text, or
+// too long to be a caption, is named in `ignored` and left out.
+LocalizedText readText(const QJsonValue &value, const QString &where, QStringList &ignored)
+{
+    LocalizedText text;
+    const auto take = [&](const QString &language, const QJsonValue &v) {
+        const QString at = language.isEmpty() ? where : QString("%1.%2").arg(where, language);
+        if (!v.isString())
+            ignored << QString("%1 (not text)").arg(at);
+        else if (v.toString().size() > kMaxLessonTextCharacters)
+            ignored << QString("%1 (%2 characters; at most %3)")
+                           .arg(at)
+                           .arg(v.toString().size())
+                           .arg(kMaxLessonTextCharacters);
+        else
+            text[language.isEmpty() ? QString("en") : language] = v.toString();
+    };
+    if (value.isUndefined() || value.isNull())
+        return text;
+    if (!value.isObject()) {
+        take({}, value);
+        return text;
+    }
+    const QJsonObject o = value.toObject();
+    for (auto it = o.begin(); it != o.end(); ++it) {
+        // A language code, as QLocale names it: "pt", "de", "pt_BR".
+        if (it.key().size() < 2 || it.key().size() > 8)
+            ignored << QString("%1.%2 (not a language code)").arg(where, echoedValue(it.key(), 40));
+        else
+            take(it.key(), it.value());
+    }
+    return text;
+}
+
+QJsonValue textJson(const LocalizedText &text)
+{
+    if (text.isEmpty())
+        return QJsonValue();
+    if (text.size() == 1 && text.contains("en"))
+        return text["en"];
+    QJsonObject o;
+    for (auto it = text.begin(); it != text.end(); ++it)
+        o[it.key()] = it.value();
+    return o;
+}
+
+// One of `allowed`, or empty with a word in `ignored`.
+QString readChoice(const QJsonValue &value, const QStringList &allowed, const QString &where,
+                   QStringList &ignored)
+{
+    if (value.isUndefined() || value.isNull())
+        return {};
+    if (value.isString() && allowed.contains(value.toString()))
+        return value.toString();
+    ignored << QString("%1 (%2 is not one of %3)")
+                   .arg(where,
+                        value.isString() ? "\"" + echoedValue(value.toString(), 60) + "\""
+                                         : QString("a value that is not text"),
+                        allowed.join(", "));
+    return {};
+}
+
+struct StepContext
+{
+    const QDir &dir;
+    qint64 &budget;
+    LessonRead &read;
+};
+
+void readStepScene(const QJsonValue &scene, LessonStep &step, const QString &where,
+                   StepContext &context)
+{
+    SceneFileRead sceneRead;
+    if (scene.isObject()) {
+        sceneRead = parseSceneObject(scene.toObject(), context.dir);
+    } else if (scene.isString() && !scene.toString().isEmpty()) {
+        const QString path = QDir::cleanPath(context.dir.absoluteFilePath(scene.toString()));
+        step.scenePath = path;
+        // Within what is left of the lesson's limit: the same file named 500 times does not
+        // take 500 times the memory a lesson may.
+        const qint64 size = QFileInfo(path).size();
+        if (size > context.budget) {
+            step.error = QString("%1: the scene file %2 (%3) is past what is left of the "
+                                 "lesson's limit (%4 for the lesson and its scene files)")
+                             .arg(where, echoedValue(scene.toString(), 200), sizeForMessage(size),
+                                  sizeForMessage(kMaxLessonBytes));
+            return;
+        }
+        sceneRead = readSceneFile(path);
+        context.budget -= std::max<qint64>(size, 0);
+    } else {
+        step.error = QString("%1: no scene (\"scene\" must be a scene object or the name of a "
+                             "scene file)")
+                         .arg(where);
+        return;
+    }
+    if (!sceneRead.file) {
+        step.error = QString("%1: %2").arg(where, sceneRead.error);
+        return;
+    }
+    step.scene = *sceneRead.file;
+    for (const QString &i : std::as_const(sceneRead.ignored))
+        context.read.ignored << QString("%1: scene: %2").arg(where, i);
+}
+
+} // namespace
+
+QString localized(const LocalizedText &text, const QString &language)
+{
+    if (text.isEmpty())
+        return {};
+    const QString code = language.section('.', 0, 0); // "de_DE.UTF-8" -> "de_DE"
+    for (const QString &key : {code, code.section('_', 0, 0), QString("en")})
+        if (!key.isEmpty() && text.contains(key))
+            return text[key];
+    return text.first();
+}
+
+QString lessonLanguage()
+{
+    return QLocale().name().section('_', 0, 0);
+}
+
+const QStringList &lessonPanels()
+{
+    static const QStringList panels{"light", "material", "shading", "object",
+                                    "scene", "editor",   "probe",   "exercise"};
+    return panels;
+}
+
+const QStringList &lessonHighlights()
+{
+    static const QStringList controls{"light.position",  "light.w",          "light.frame",
+                                      "light.colours",   "material",         "material.shininess",
+                                      "shading.shading", "shading.specular", "shading.projection",
+                                      "shading.terms",   "compare",          "object.transform",
+                                      "editor"};
+    return controls;
+}
+
+LessonRead parseLesson(const QByteArray &bytes, const QDir &dir, const QString &name, qint64 budget)
+{
+    LessonRead read;
+    QJsonParseError parseError;
+    const QJsonDocument document = QJsonDocument::fromJson(bytes, &parseError);
+    if (parseError.error != QJsonParseError::NoError) {
+        read.error = QString("%1: not a lesson file: %2 at byte %3")
+                         .arg(name, parseError.errorString())
+                         .arg(parseError.offset);
+        return read;
+    }
+    const QJsonObject root = document.object();
+    if (!document.isObject() || root["format"] != QJsonValue(kFormat)) {
+        // A scene file is the likeliest mistake: say so rather than "no steps".
+        read.error =
+            root["format"] == QJsonValue("lightbench-scene")
+                ? QString("%1: a scene file, not a lesson (open it with File > Open Scene)")
+                      .arg(name)
+                : QString("%1: not a lesson file (\"format\" is not \"%2\")").arg(name, kFormat);
+        return read;
+    }
+    const QJsonValue version = root["version"];
+    if (!version.isDouble() || version.toDouble() < 1)
+        read.ignored
+            << QString("version (missing or not a number; read as %1)").arg(kLessonFileVersion);
+    else if (version.toDouble() > kLessonFileVersion)
+        read.ignored << QString("version %1 (newer than this lightbench's %2: what it does not "
+                                "know is left out)")
+                            .arg(version.toDouble())
+                            .arg(kLessonFileVersion);
+    const QJsonValue steps = root["steps"];
+    if (!steps.isArray() || steps.toArray().isEmpty()) {
+        read.error =
+            QString("%1: the lesson has no steps (\"steps\" must be a list of steps)").arg(name);
+        return read;
+    }
+    if (steps.toArray().size() > kMaxLessonSteps) {
+        read.error = QString("%1: %2 steps; a lesson may have at most %3")
+                         .arg(name)
+                         .arg(steps.toArray().size())
+                         .arg(kMaxLessonSteps);
+        return read;
+    }
+    Lesson lesson;
+    lesson.title = readText(root["title"], "title", read.ignored);
+    StepContext context{dir, budget, read};
+    const QJsonArray list = steps.toArray();
+    for (int i = 0; i < int(list.size()); ++i) {
+        const QString where = QString("step %1").arg(i + 1);
+        LessonStep step;
+        if (!list[i].isObject()) {
+            step.error = QString("%1: not an object").arg(where);
+        } else {
+            const QJsonObject s = list[i].toObject();
+            step.title = readText(s["title"], where + ": title", read.ignored);
+            step.caption = readText(s["caption"], where + ": caption", read.ignored);
+            step.panel = readChoice(s["panel"], lessonPanels(), where + ": panel", read.ignored);
+            step.highlight =
+                readChoice(s["highlight"], lessonHighlights(), where + ": highlight", read.ignored);
+            readStepScene(s["scene"], step, where, context);
+        }
+        if (!step.error.isEmpty())
+            read.stepErrors << step.error;
+        lesson.steps.push_back(std::move(step));
+    }
+    read.lesson = std::move(lesson);
+    return read;
+}
+
+LessonRead readLessonFile(const QString &path)
+{
+    const BoundedRead bytes = readBounded(path, {"a lesson file", kMaxLessonBytes});
+    if (!bytes.error.isEmpty()) {
+        LessonRead read;
+        read.error = bytes.error;
+        return read;
+    }
+    return parseLesson(bytes.bytes, QFileInfo(path).absoluteDir(), echoedValue(path, 300),
+                       kMaxLessonBytes - bytes.bytes.size());
+}
+
+QByteArray lessonFileBytes(const Lesson &lesson, const QDir &dir)
+{
+    QJsonObject root{{"format", kFormat}, {"version", kLessonFileVersion}};
+    if (!lesson.title.isEmpty())
+        root["title"] = textJson(lesson.title);
+    QJsonArray steps;
+    for (const LessonStep &step : lesson.steps) {
+        QJsonObject s;
+        if (!step.title.isEmpty())
+            s["title"] = textJson(step.title);
+        if (!step.caption.isEmpty())
+            s["caption"] = textJson(step.caption);
+        if (!step.panel.isEmpty())
+            s["panel"] = step.panel;
+        if (!step.highlight.isEmpty())
+            s["highlight"] = step.highlight;
+        if (step.scenePath.isEmpty())
+            s["scene"] = sceneFileJson(step.scene, dir);
+        else // a built-in example (":/examples/...") stays as it is
+            s["scene"] = step.scenePath.startsWith(":/") ? step.scenePath
+                                                         : dir.relativeFilePath(step.scenePath);
+        steps.append(s);
+    }
+    root["steps"] = steps;
+    return QJsonDocument(root).toJson(QJsonDocument::Indented);
+}
+
+QString writeLessonFile(const QString &path, const Lesson &lesson)
+{
+    const QByteArray bytes = lessonFileBytes(lesson, QFileInfo(path).absoluteDir());
+    // Never a file that readLessonFile() would refuse: one limit for both.
+    if (bytes.size() > kMaxLessonBytes)
+        return QString("%1: not saved: the lesson would take %2, more than a lesson file may be "
+                       "(%3), so it could not be opened again")
+            .arg(echoedValue(path, 300), sizeForMessage(bytes.size()),
+                 sizeForMessage(kMaxLessonBytes));
+    return writeFileSafely(path, bytes);
+}
+
+} // namespace lb
