@@ -1,5 +1,7 @@
 #include "command_line.h"
 
+#include "lesson.h"
+
 #include "message_text.h"
 #include "safe_write.h"
 #include "shader_document.h"
@@ -116,6 +118,10 @@ const OptionSpec kOptions[] = {
     {"save-scene", "FILE.json",
      "Write the scene (with --scene and every option applied) to FILE.json; exit unless "
      "--render, --probe or --bench-frames is given too."},
+    {"lesson", "FILE.json",
+     "Open a lesson (steps of scenes with captions) at --step, in the window; with --render, "
+     "--screenshot or --probe, that step's scene. Not with --scene."},
+    {"step", "N", "With --lesson: the step, from 1 (default 1)."},
     {"render", "FILE.png", "Draw one frame offscreen into FILE.png and exit."},
     {"probe", "X,Y", "Print the probe's JSON for pixel X,Y (origin top-left) and exit."},
     {"size", "WxH", "Frame size for --render and --probe (default 800x600)."},
@@ -270,6 +276,10 @@ void parseInto(const QCommandLineParser &parser, CommandLine &cl)
         cl.vertexSource = readShader("vertex", cl.vertexPath);
         cl.fragmentSource = readShader("fragment", cl.fragmentPath);
     }
+    if (given("scene") && given("lesson"))
+        fail("lesson", "--lesson and --scene do not go together: the lesson's step is the scene");
+    if (given("step") && !given("lesson"))
+        fail("step", "--step goes with --lesson");
     if (given("scene")) {
         cl.scenePath = value("scene");
         SceneFileRead read = readSceneFile(cl.scenePath);
@@ -277,6 +287,25 @@ void parseInto(const QCommandLineParser &parser, CommandLine &cl)
             fail("scene", read.error);
         cl.sceneFile = std::move(read.file);
         cl.sceneIgnored = read.ignored;
+    } else if (given("lesson")) {
+        cl.lessonPath = value("lesson");
+        const LessonRead read = readLessonFile(cl.lessonPath);
+        if (!read.lesson)
+            fail("lesson", read.error);
+        const int steps = int(read.lesson->steps.size());
+        cl.lessonStep = given("step") ? integer("step", value("step"), 1, steps) : 1;
+        const LessonStep &step = read.lesson->steps[std::size_t(cl.lessonStep - 1)];
+        if (!step.error.isEmpty())
+            fail("step", QString("%1: %2").arg(echoed(cl.lessonPath), step.error));
+        cl.scenePath = QString("%1 (step %2)").arg(cl.lessonPath).arg(cl.lessonStep);
+        cl.sceneFile = step.scene;
+        // What the lesson and this step ignored; the other steps' notes are theirs.
+        const QString here = QString("step %1: ").arg(cl.lessonStep);
+        for (const QString &note : read.ignored)
+            if (note.startsWith(here) || !note.startsWith("step "))
+                cl.sceneIgnored << note;
+    }
+    if (cl.sceneFile) {
         if (!given("vertex") && cl.sceneFile->program) {
             cl.programFromScene = true;
             cl.vertexPath = cl.scenePath + " (vertex)";

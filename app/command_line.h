@@ -27,6 +27,10 @@ struct CommandLine
     QString scenePath;
     std::optional<SceneFile> sceneFile;
     QStringList sceneIgnored;
+    // --lesson FILE --step N: the step's scene is the scene file's above (scenePath names the
+    // lesson and the step); the window opens the lesson there.
+    QString lessonPath;
+    int lessonStep = 1;
     QString saveScenePath; // --save-scene FILE: write the resulting scene, then go on or exit
     bool programFromScene = false;
     // Each scene option given, in order; applied on top of the default or the saved scene.

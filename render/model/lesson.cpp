@@ -90,7 +90,12 @@ void readStepScene(const QJsonValue &scene, LessonStep &step, const QString &whe
 {
     SceneFileRead sceneRead;
     if (scene.isObject()) {
-        sceneRead = parseSceneObject(scene.toObject(), context.dir);
+        // Held by a lesson of a known version: a scene written by hand inline need not say
+        // its own format and version.
+        QJsonObject object = scene.toObject();
+        if (!object.contains("version"))
+            object["version"] = kSceneFileVersion;
+        sceneRead = parseSceneObject(object, context.dir);
     } else if (scene.isString() && !scene.toString().isEmpty()) {
         const QString path = QDir::cleanPath(context.dir.absoluteFilePath(scene.toString()));
         step.scenePath = path;
