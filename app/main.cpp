@@ -170,9 +170,7 @@ int main(int argc, char **argv)
             window.viewport(), &QOpenGLWidget::frameSwapped, settle, [settle] { settle->start(); },
             Qt::SingleShotConnection);
         QObject::connect(settle, &QTimer::timeout, &window, [&, settle] {
-            const lb::ObjectLoader *loader = window.objectLoader();
-            if (loader->isLoading() || loader->isBuilding() || loader->isDecodingTexture() ||
-                window.viewport()->isTrying())
+            if (!window.isSettled())
                 return; // the timer fires again (a program being tried draws once accepted)
             settle->stop();
             const QString path = cl.screenshotPath;

@@ -361,4 +361,10 @@ void MainWindow::selectObjectAt(QPoint framePixel)
         m_document.edit([&](Scene &s) { s.selected = hit.object; });
 }
 
+bool MainWindow::isSettled() const
+{
+    return !m_loader->isLoading() && !m_loader->isBuilding() && !m_loader->isDecodingTexture() &&
+           !m_viewport->isTrying();
+}
+
 } // namespace lb

@@ -69,6 +69,10 @@ public:
     QString summary() const;
     // True while a build runs on the worker thread (tests wait for it).
     bool isBuilding() const { return m_job != nullptr; }
+    // Blocks until the build thread is idle, processing no events (its answer is delivered
+    // by the event loop afterwards): for a test that tightens the whole process's memory
+    // limit while a build runs, and must not paint meanwhile.
+    void waitForBuildThread() { m_pool.waitForDone(); }
 
 signals:
     // Object `index` draws this now (and the list may have grown or shrunk: objectCount()).

@@ -67,6 +67,7 @@ class TestWindowExercise : public WindowTest
         const std::optional<ProgramBuild> built = buildAfter(
             [&] { m_window->editorPanel()->editor(ShaderStage::Fragment)->setText(text); });
         QVERIFY(built);
+        QVERIFY(m_window->isSettled());
     }
 
 private slots:
@@ -361,7 +362,20 @@ private slots:
             const QString text = probe->textLabel()->text();
             QVERIFY2(probe->referenceName() == "the exercise's reference", qPrintable(text));
             const glm::ivec3 d = glm::abs(*probe->gpuColour() - *probe->referenceColour());
-            QVERIFY2(std::max({d.r, d.g, d.b}) <= 2, qPrintable(text));
+            // What failed first, then the panel: its text is long.
+            QVERIFY2(std::max({d.r, d.g, d.b}) <= 2,
+                     qPrintable(QString("GPU %1 %2 %3, reference %4 %5 %6, settled %7, side B "
+                                        "program %8, banner '%9'; ")
+                                    .arg(probe->gpuColour()->r)
+                                    .arg(probe->gpuColour()->g)
+                                    .arg(probe->gpuColour()->b)
+                                    .arg(probe->referenceColour()->r)
+                                    .arg(probe->referenceColour()->g)
+                                    .arg(probe->referenceColour()->b)
+                                    .arg(m_window->isSettled())
+                                    .arg(v->hasSideBProgram())
+                                    .arg(v->banner()) +
+                                text));
             QVERIFY2(text.contains("from the exercise's reference"), qPrintable(text));
         }
         // A wrong answer differs from the reference there, and the probe says so.
