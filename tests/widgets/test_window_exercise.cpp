@@ -342,13 +342,17 @@ private slots:
     void theProbeComparesWithTheExercisesReference()
     {
         QVERIFY(m_window->sceneActions()->open(exerciseFile(4)));
-        setFragment(readText(LB_TEST_DATA "/grading/correct/lighting.frag"));
-        frame();
         Viewport *v = m_window->viewport();
         ProbePanel *probe = m_window->probePanel();
-        // The first probe brings its panel forward, which resizes the view.
+        // The first probe brings its panel forward, which resizes the view: before the
+        // program, so that it is tried at the size it is probed at (a program tried on a
+        // smaller view is refused when the estimate from its trial is over the budget at the
+        // new size, and the program before it draws).
         QTest::mouseClick(v, Qt::LeftButton, Qt::ControlModifier, v->rect().center());
         frame();
+        setFragment(readText(LB_TEST_DATA "/grading/correct/lighting.frag"));
+        frame();
+        QVERIFY2(v->banner().isEmpty(), qPrintable(v->banner()));
         // Where the exercise's sphere (left, its highlight) and cube (right) are.
         const auto at = [v](double x, double y) {
             return QPoint(int(v->width() * x), int(v->height() * y));
