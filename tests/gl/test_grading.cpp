@@ -17,6 +17,8 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <algorithm>
+
 #include <csignal>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -304,7 +306,10 @@ private slots:
         const Run r =
             run(QStringList{"--grade"} + submissions + QStringList{"--exercise", exercise});
         QCOMPARE(r.exitCode, 2);
-        QVERIFY2(r.err.contains(named.toUtf8()), r.err.constData());
+        const QStringList alternatives = named.split(" || "); // any one of them
+        QVERIFY2(std::any_of(alternatives.begin(), alternatives.end(),
+                             [&](const QString &a) { return r.err.contains(a.toUtf8()); }),
+                 r.err.constData());
         QCOMPARE(r.err.count("lightbench: "), 1);
         // Where only a submission is bad, the others are still graded.
         if (submissions.size() > 1)
@@ -346,8 +351,10 @@ private slots:
                    {"fragment", "precision mediump float;\nvarying vec3 v;\nvoid main() {\n"
                                 "  vec3 c = v;\n  for (int i = 0; i < 200000; i++)\n"
                                 "    c = sin(c + v);\n  gl_FragColor = vec4(c, 1.0);\n}"}})
+            // On a loaded machine the trial's wall-clock bound can come first: refused too.
             << "reference refused: reference fragment:5: drawing one frame with this program would "
-               "take about";
+               "take about || reference refused: reference fragment:5: compiling this program "
+               "and drawing it on small frames took more than";
     }
 
     void aFaultyExerciseStopsTheBatch()
@@ -372,7 +379,10 @@ private slots:
         const Run r =
             run({"--grade", kData + "/correct", kData + "/reflect_sign", "--exercise", path});
         QCOMPARE(r.exitCode, 2);
-        QVERIFY2(r.err.contains(named.toUtf8()), r.err.constData());
+        const QStringList alternatives = named.split(" || "); // any one of them
+        QVERIFY2(std::any_of(alternatives.begin(), alternatives.end(),
+                             [&](const QString &a) { return r.err.contains(a.toUtf8()); }),
+                 r.err.constData());
         QCOMPARE(r.err.count("lightbench: "), 1);
         QVERIFY(r.out.isEmpty());
     }
