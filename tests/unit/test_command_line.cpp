@@ -1,6 +1,7 @@
 // Command line: every option reaches the scene; every bad value is refused with exit code 2
 // and a message that names the option.
 #include "command_line.h"
+#include "lesson.h"
 
 #include <QDir>
 #include <QFile>
@@ -10,6 +11,10 @@
 #include <sys/stat.h>
 
 using namespace lb;
+
+namespace {
+const QString kSlides = QStringLiteral(LB_TEST_DATA "/../../resources/lessons/slides.json");
+}
 
 namespace {
 CommandLineResult parse(const QString &args)
@@ -193,6 +198,16 @@ private slots:
                                      << "--size";
         QTest::newRow("size words") << "--size big"
                                     << "--size";
+        QTest::newRow("step without lesson") << "--step 2"
+                                             << "--step";
+        QTest::newRow("lesson beside scene") << "--lesson l.json --scene s.json"
+                                             << "--lesson";
+        QTest::newRow("lesson missing") << "--lesson /nonexistent/lesson.json"
+                                        << "--lesson";
+        QTest::newRow("lesson step past the end") << "--lesson " + kSlides + " --step 99"
+                                                  << "--step";
+        QTest::newRow("lesson step 0") << "--lesson " + kSlides + " --step 0"
+                                       << "--step";
         QTest::newRow("colour above 1") << "--id 2,0,0"
                                         << "--id";
         QTest::newRow("negative colour") << "--is -1,0,0"
@@ -243,6 +258,25 @@ private slots:
                                        << "shape";
         QTest::newRow("stray argument") << "sphere"
                                         << "sphere";
+    }
+
+    // A lesson's step is the scene, as --scene's file would be; its program comes along.
+    void aLessonStepIsTheScene()
+    {
+        const LessonRead lesson = readLessonFile(kSlides);
+        QVERIFY2(lesson.lesson, qPrintable(lesson.error));
+        for (int step : {1, 8, 14}) {
+            const CommandLineResult r =
+                parse(QString("--lesson %1 --step %2 --render x.png").arg(kSlides).arg(step));
+            QVERIFY2(r.commandLine, qPrintable(r.message));
+            const LessonStep &expected = lesson.lesson->steps[std::size_t(step - 1)];
+            QVERIFY(r.commandLine->sceneFile);
+            QVERIFY(r.commandLine->sceneFile->scene == expected.scene.scene);
+            QCOMPARE(r.commandLine->programFromScene, expected.scene.program.has_value());
+            QCOMPARE(r.commandLine->lessonStep, step);
+        }
+        const CommandLineResult first = parse("--lesson " + kSlides + " --render x.png");
+        QVERIFY(first.commandLine && first.commandLine->lessonStep == 1);
     }
 
     void badValues()
