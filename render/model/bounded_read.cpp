@@ -1,6 +1,7 @@
 #include "bounded_read.h"
 
 #include "message_text.h"
+#include "safe_write.h"
 
 #include <QFile>
 #include <QFileInfo>
@@ -79,6 +80,17 @@ BoundedRead readBounded(const QString &path, const FileLimit &limit)
                       .arg(shown(path), QString::fromLatin1(limit.kind), limitText(limit));
     }
     return r;
+}
+
+QString writeWithinLimit(const QString &path, const QByteArray &bytes, const char *what,
+                         const FileLimit &limit)
+{
+    if (bytes.size() > limit.bytes)
+        return QString("%1: not saved: %2 would take %3, more than %4 may be (%5), so it could "
+                       "not be opened again")
+            .arg(echoedValue(path, 300), what, sizeForMessage(bytes.size()), limit.kind,
+                 sizeForMessage(limit.bytes));
+    return writeFileSafely(path, bytes);
 }
 
 } // namespace lb

@@ -28,6 +28,11 @@ struct BoundedRead
 // Checks first, then reads at most limit + 1 bytes (a file that grew meanwhile is refused).
 BoundedRead readBounded(const QString &path, const FileLimit &limit);
 
+// Writes `bytes` safely (safe_write.h), unless they are more than `limit` allows, which
+// readBounded() would refuse: "PATH: not saved: the scene would take 70 MB, more than a scene
+// file may be (64 MB), so it could not be opened again". `what`: "the scene", "the lesson".
+QString writeWithinLimit(const QString &path, const QByteArray &bytes, const char *what,
+                         const FileLimit &limit);
 // Why `path` is not there: "no such file", "a loop of symbolic links", "a symbolic link to
 // TARGET, which does not exist", or the system's reason ("Permission denied").
 QString missingFileReason(const QString &path);

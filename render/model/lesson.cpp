@@ -2,7 +2,6 @@
 
 #include "bounded_read.h"
 #include "message_text.h"
-#include "safe_write.h"
 
 #include <QFileInfo>
 #include <QJsonArray>
@@ -271,14 +270,9 @@ QByteArray lessonFileBytes(const Lesson &lesson, const QDir &dir)
 
 QString writeLessonFile(const QString &path, const Lesson &lesson)
 {
-    const QByteArray bytes = lessonFileBytes(lesson, QFileInfo(path).absoluteDir());
     // Never a file that readLessonFile() would refuse: one limit for both.
-    if (bytes.size() > kMaxLessonBytes)
-        return QString("%1: not saved: the lesson would take %2, more than a lesson file may be "
-                       "(%3), so it could not be opened again")
-            .arg(echoedValue(path, 300), sizeForMessage(bytes.size()),
-                 sizeForMessage(kMaxLessonBytes));
-    return writeFileSafely(path, bytes);
+    return writeWithinLimit(path, lessonFileBytes(lesson, QFileInfo(path).absoluteDir()),
+                            "the lesson", {"a lesson file", kMaxLessonBytes});
 }
 
 } // namespace lb

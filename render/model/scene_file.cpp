@@ -3,7 +3,6 @@
 #include "bounded_read.h"
 #include "dialect.h"
 #include "message_text.h"
-#include "safe_write.h"
 
 #include <QFileInfo>
 #include <QJsonArray>
@@ -157,14 +156,9 @@ SceneFileRead readSceneFile(const QString &path)
 
 QString writeSceneFile(const QString &path, const SceneFile &file)
 {
-    const QByteArray bytes = sceneFileBytes(file, QFileInfo(path).absoluteDir());
     // Never a file that readSceneFile() would refuse: one limit for both.
-    if (bytes.size() > kMaxSceneFileBytes)
-        return QString("%1: not saved: the scene would take %2, more than a scene file may be "
-                       "(%3), so it could not be opened again")
-            .arg(echoedValue(path, 300), sizeForMessage(bytes.size()),
-                 sizeForMessage(kMaxSceneFileBytes));
-    return writeFileSafely(path, bytes);
+    return writeWithinLimit(path, sceneFileBytes(file, QFileInfo(path).absoluteDir()), "the scene",
+                            {"a scene file", kMaxSceneFileBytes});
 }
 
 } // namespace lb
