@@ -280,17 +280,19 @@ void LessonActions::applyStep(const Scene &before)
 
 void LessonActions::pointAtStep()
 {
+    // Once the window has arranged its docks (a lesson opened before the window shows, from
+    // the command line, would have its dock put back behind another) and laid them out.
     const LessonStep &step = m_lesson.steps[std::size_t(m_current)];
-    for (const QString &panel : {step.panel, lessonHighlightPanel(step.highlight)})
-        if (QDockWidget *dock = lessonPanelDock(*m_window, panel)) {
-            dock->show();
-            dock->raise();
-        }
-    if (step.highlight.isEmpty())
-        return;
-    // Once the raised dock has been laid out: its controls have their places then.
-    QTimer::singleShot(0, this, [this, highlight = step.highlight] {
-        ControlHighlight::frame(lessonHighlightControls(*m_window, highlight));
+    QTimer::singleShot(0, this, [this, panel = step.panel, highlight = step.highlight] {
+        for (const QString &name : {panel, lessonHighlightPanel(highlight)})
+            if (QDockWidget *dock = lessonPanelDock(*m_window, name)) {
+                dock->show();
+                dock->raise();
+            }
+        if (!highlight.isEmpty()) // its controls have their places once the dock is up
+            QTimer::singleShot(0, this, [this, highlight] {
+                ControlHighlight::frame(lessonHighlightControls(*m_window, highlight));
+            });
     });
 }
 

@@ -3,6 +3,7 @@
 #include <QEvent>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QScrollArea>
 #include <QStyle>
 #include <QTextBlock>
 #include <QTextCursor>
@@ -11,6 +12,7 @@
 #include <QToolButton>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <utility>
 #include <vector>
 
@@ -36,8 +38,10 @@ LessonBar::LessonBar(QWidget *parent) : QFrame(parent)
     setObjectName("lessonBar");
     setFrameShape(QFrame::StyledPanel);
     setAutoFillBackground(true);
-    m_previous = barButton(tr("\u25c0 Previous"), tr("The previous step (PageUp, Left)"), this);
-    m_next = barButton(tr("Next \u25b6"), tr("The next step (PageDown, Right, Space)"), this);
+    m_previous =
+        barButton(QString::fromUtf8("\u25c0"), tr("The previous step (PageUp, Left)"), this);
+    m_next =
+        barButton(QString::fromUtf8("\u25b6"), tr("The next step (PageDown, Right, Space)"), this);
     m_position = new QLabel(this);
     m_position->setObjectName("lessonPosition");
     m_title = new QLabel(this);
@@ -51,26 +55,35 @@ LessonBar::LessonBar(QWidget *parent) : QFrame(parent)
                         tr("This step as the lesson has it: your changes to it "
                            "are set aside"),
                         this);
-    m_menu = barButton(tr("Lesson \u2630"), tr("Add, rename, caption, move and save steps"), this);
+    m_menu = barButton(QString::fromUtf8("\u2630"),
+                       tr("The Lesson menu: add, rename, caption, move and save steps"), this);
     m_menu->setPopupMode(QToolButton::InstantPopup);
     m_close = barButton(tr("\u2715"), tr("Close the lesson (the scene stays)"), this);
     m_close->setObjectName("lessonClose");
 
-    auto *text = new QVBoxLayout;
-    text->setContentsMargins(0, 0, 0, 0);
-    text->setSpacing(2);
-    text->addWidget(m_title);
-    text->addWidget(m_caption);
-    auto *row = new QHBoxLayout(this);
-    row->setContentsMargins(6, 4, 6, 4);
-    row->addWidget(m_previous, 0, Qt::AlignTop);
-    row->addWidget(m_position, 0, Qt::AlignTop);
-    row->addWidget(m_next, 0, Qt::AlignTop);
-    row->addSpacing(8);
-    row->addLayout(text, 1);
-    row->addWidget(m_reset, 0, Qt::AlignTop);
-    row->addWidget(m_menu, 0, Qt::AlignTop);
-    row->addWidget(m_close, 0, Qt::AlignTop);
+    // Three rows: where the class is and the buttons, the title, then the caption across the
+    // whole width (beside the buttons both wrapped to a word a line). A long caption scrolls
+    // in at most a few lines, so the view keeps its height.
+    m_captionArea = new QScrollArea(this);
+    m_captionArea->setWidget(m_caption);
+    m_captionArea->setWidgetResizable(true);
+    m_captionArea->setFrameShape(QFrame::NoFrame);
+    m_captionArea->setFocusPolicy(Qt::NoFocus);
+    m_captionArea->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    auto *top = new QHBoxLayout;
+    top->addWidget(m_previous);
+    top->addWidget(m_position);
+    top->addWidget(m_next);
+    top->addStretch(1);
+    top->addWidget(m_reset);
+    top->addWidget(m_menu);
+    top->addWidget(m_close);
+    auto *rows = new QVBoxLayout(this);
+    rows->setContentsMargins(6, 4, 6, 4);
+    rows->setSpacing(2);
+    rows->addLayout(top);
+    rows->addWidget(m_title);
+    rows->addWidget(m_captionArea);
 
     connect(m_previous, &QToolButton::clicked, this, &LessonBar::previousRequested);
     connect(m_next, &QToolButton::clicked, this, &LessonBar::nextRequested);
@@ -93,6 +106,7 @@ void LessonBar::showStep(int index, int count, const QString &title, const QStri
     m_reset->setEnabled(error.isEmpty());
     m_captionText = caption;
     m_error = error;
+    m_captionArea->setVisible(!caption.trimmed().isEmpty() || !error.isEmpty());
     showCaption();
 }
 
@@ -104,9 +118,25 @@ void LessonBar::showCaption()
                                .arg(tr("This step cannot be shown; the scene is as it was. %1")
                                         .arg(m_error)
                                         .toHtmlEscaped()));
+        fitCaption();
         return;
     }
     m_caption->setText(captionHtml(m_captionText, font()));
+    fitCaption();
+}
+
+void LessonBar::fitCaption()
+{
+    const int width = m_captionArea->viewport()->width();
+    const int needed = m_caption->heightForWidth(width > 0 ? width : this->width());
+    const int most = fontMetrics().lineSpacing() * kCaptionLines;
+    m_captionArea->setFixedHeight(std::max(0, std::min(needed, most)));
+}
+
+void LessonBar::resizeEvent(QResizeEvent *event)
+{
+    QFrame::resizeEvent(event);
+    fitCaption();
 }
 
 QString LessonBar::captionHtml(const QString &markdown, const QFont &font)

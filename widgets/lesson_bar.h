@@ -7,6 +7,7 @@
 
 class QLabel;
 class QMenu;
+class QScrollArea;
 class QToolButton;
 
 namespace lb {
@@ -42,11 +43,15 @@ signals:
 
 protected:
     void changeEvent(QEvent *event) override; // the UI scale: the caption follows the font
+    void resizeEvent(QResizeEvent *event) override;
 
 private:
+    static constexpr int kCaptionLines = 3; // the most the caption takes; more scrolls
     void showCaption();
+    void fitCaption(); // the caption's height for its text at the bar's width
 
     QLabel *m_position, *m_title, *m_caption;
+    QScrollArea *m_captionArea;
     QToolButton *m_previous, *m_next, *m_reset, *m_menu, *m_close;
     QString m_captionText, m_error;
 };

@@ -254,7 +254,7 @@ private slots:
         materialDock->hide();
         QVERIFY(!ControlHighlight::current());
         press(Qt::Key_PageDown);
-        QVERIFY(materialDock->isVisible());
+        QVERIFY(QTest::qWaitFor([&] { return materialDock->isVisible(); }, 2000));
         QVERIFY(QTest::qWaitFor([] { return ControlHighlight::current() != nullptr; }, 2000));
         QWidget *box = m_window->materialPanel()->shininessBox();
         const QRect boxArea(box->mapTo(m_window.get(), QPoint(0, 0)), box->size());
