@@ -148,7 +148,7 @@ bool LessonActions::openAsking(const QString &path, int step)
 {
     const bool openable = path.startsWith(":/") || QFileInfo(path).isFile();
     if (openable && m_maySetAside &&
-        !m_maySetAside(SetAsideFor::OpeningScene, QFileInfo(path).fileName()))
+        !m_maySetAside(SetAsideFor::OpeningLesson, QFileInfo(path).fileName()))
         return false;
     return open(path, step);
 }

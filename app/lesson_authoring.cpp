@@ -27,7 +27,7 @@ const char *kDirKey = "lessons/lastDirectory";
 void LessonActions::newLesson()
 {
     if (m_open && m_modified && m_maySetAside &&
-        !m_maySetAside(SetAsideFor::OpeningScene, tr("a new lesson")))
+        !m_maySetAside(SetAsideFor::OpeningLesson, tr("a new lesson")))
         return;
     m_motion->stop(true);
     Lesson lesson;

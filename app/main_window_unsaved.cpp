@@ -53,7 +53,11 @@ bool MainWindow::maySetAside(SetAsideFor occasion, const QString &target)
 
 MainWindow::SetAside MainWindow::askToSetAside(SetAsideFor occasion, const QString &target)
 {
-    const UnsavedWork work = unsavedWork();
+    UnsavedWork work = unsavedWork();
+    // A scene opened or everything reset while a lesson is open sets none of the lesson
+    // aside: it stays open with its changes (only opening another one, or closing, does).
+    if (occasion == SetAsideFor::OpeningScene || occasion == SetAsideFor::ResettingEverything)
+        work.lesson = false;
     if (!work.any())
         return SetAside::NothingUnsaved;
     if (!m_asker)

@@ -37,6 +37,7 @@ QString unsavedWorkQuestion(const UnsavedWork &work, SetAsideFor occasion, const
     case SetAsideFor::Closing:
         return QObject::tr("Save the changes to %1 before closing?").arg(names(work));
     case SetAsideFor::OpeningScene:
+    case SetAsideFor::OpeningLesson:
         return QObject::tr("Save the changes to %1 before opening \u201c%2\u201d?")
             .arg(names(work), target);
     case SetAsideFor::ResettingEverything:

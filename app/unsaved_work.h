@@ -25,7 +25,7 @@ struct UnsavedWork
 };
 
 // What would set the work aside.
-enum class SetAsideFor { Closing, OpeningScene, ResettingEverything, ClosingLesson };
+enum class SetAsideFor { Closing, OpeningScene, ResettingEverything, OpeningLesson, ClosingLesson };
 
 // Who answers the question: the user in askAboutUnsavedWork()'s message box, or a test.
 // Returns Save, Discard or Cancel (anything else reads as Cancel).

@@ -159,9 +159,21 @@ private slots:
         });
         QVERIFY(!lessons()->closeLesson());
         QVERIFY(lessons()->isOpen());
+        // An example opened over the step, or Reset Everything, sets none of it aside.
+        QVERIFY(m_window->sceneActions()->openAsking(":/examples/toon.json"));
+        for (QAction *a : m_window->findChildren<QAction *>())
+            if (a->text() == tr("Reset &Everything"))
+                a->trigger();
+        QVERIFY(lessons()->isOpen() && lessons()->isModified());
+        QCOMPARE(asked.size(), 1);
+        // Another lesson would set it aside: asked, and Cancel keeps this one.
+        QVERIFY(!lessons()->openAsking(writeLesson(fourSteps(), "other.json")));
+        QCOMPARE(asked.size(), 2);
+        QVERIFY2(asked[1].contains("before opening \u201cother.json\u201d"), qPrintable(asked[1]));
+        QCOMPARE(lessons()->name(), QString("lesson.json"));
         m_window->close();
         QVERIFY(m_window->isVisible());
-        QCOMPARE(asked.size(), 2);
+        QCOMPARE(asked.size(), 3);
         QVERIFY2(asked[0].contains("the lesson \u201clesson.json\u201d"), qPrintable(asked[0]));
         QVERIFY(m_window->isWindowModified());
         m_window->setUnsavedWorkAsker(
