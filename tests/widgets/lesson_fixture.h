@@ -5,6 +5,7 @@
 
 #include "caption_dialog.h"
 #include "control_highlight.h"
+#include "help.h"
 #include "lesson.h"
 #include "lesson_actions.h"
 #include "lesson_bar.h"
