@@ -30,6 +30,8 @@ namespace lb {
 namespace {
 const char *kRecentKey = "recentLessons";
 const char *kDirKey = "lessons/lastDirectory";
+const char *kCurrentKey = "lessons/current"; // the lesson open at the end of the session
+const char *kStepKey = "lessons/step";       // its step, from 1
 } // namespace
 
 LessonActions::LessonActions(MainWindow *window, LessonBar *bar, QSettings &settings)
@@ -54,6 +56,41 @@ LessonActions::LessonActions(MainWindow *window, LessonBar *bar, QSettings &sett
                     m_motion->stop(false);
             });
     updateActions();
+    connect(this, &LessonActions::changed, this, &LessonActions::remember);
+}
+
+void LessonActions::remember()
+{
+    // A new lesson not yet saved has no file to come back from.
+    m_settings.setValue(kCurrentKey, m_open ? m_path : QString());
+    m_settings.setValue(kStepKey, m_current + 1);
+}
+
+void LessonActions::restoreSession()
+{
+    const QString path = m_settings.value(kCurrentKey).toString();
+    if (path.isEmpty())
+        return;
+    const LessonRead read = readLessonFile(path);
+    if (!read.lesson) {
+        m_settings.remove(kCurrentKey);
+        showStatusMessage(m_window,
+                          tr("The last lesson could not be opened again: %1").arg(read.error));
+        return;
+    }
+    m_lesson = *read.lesson;
+    m_path = path;
+    m_working.assign(m_lesson.steps.size(), std::nullopt);
+    m_current =
+        std::clamp(m_settings.value(kStepKey, 1).toInt() - 1, 0, int(m_lesson.steps.size()) - 1);
+    m_modified = false;
+    // The scene the session kept is this step as the class left it (Reset Step: as authored).
+    m_shown = m_lesson.steps[std::size_t(m_current)].error.isEmpty();
+    if (m_shown)
+        m_working[std::size_t(m_current)] = currentView();
+    setOpen(true);
+    showStep();
+    emit changed();
 }
 
 void LessonActions::addToMenu(QMenu *file)

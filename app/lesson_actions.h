@@ -86,6 +86,10 @@ public:
     bool saveAs(const QString &path);
     bool isModified() const { return m_open && m_modified; }
 
+    // The lesson and step of the last session, opened again at the start with the session's
+    // scene as that step's (the class's) working copy; a lesson gone since is forgotten.
+    void restoreSession();
+
     // Whether `path` is a lesson file rather than a scene file (a dropped ".json"): a
     // regular file whose beginning names the lesson format.
     static bool isLessonFile(const QString &path);
@@ -117,6 +121,7 @@ private:
     void markModified();
     void updateActions();
     SceneFile currentView();
+    void remember(); // the lesson file and step, for the next start
 
     MainWindow *m_window;
     LessonBar *m_bar;

@@ -138,8 +138,10 @@ int main(int argc, char **argv)
     // > Open Lesson would, at its step; the options given beside them apply on top.
     if (!cl.lessonPath.isEmpty())
         window.lessonActions()->open(cl.lessonPath, cl.lessonStep - 1);
-    else if (!cl.scenePath.isEmpty())
+    else if (!cl.scenePath.isEmpty()) {
+        window.lessonActions()->closeLesson(); // the last session's: a scene was asked for
         window.sceneActions()->open(cl.scenePath);
+    }
     lb::Scene scene = window.document().scene();
     cl.applyTo(scene);
     window.document().set(scene);

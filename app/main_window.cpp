@@ -201,6 +201,7 @@ MainWindow::MainWindow(QSettings &settings, QWidget *parent)
     updateStatus();
     updateTitle();
     m_exerciseDock->setVisible(m_sceneActions->exercise().has_value()); // a saved state's aside
+    m_lessons->restoreSession(); // after the session's scene and program: they are its step's
     if (m_editor->restoredUnsavedEdits())
         m_status->showMessage(tr("Unsaved shader edits from the last session are back"), 20000);
 }

@@ -204,6 +204,31 @@ private slots:
         QCOMPARE(lessons()->recent()->files().first(), QFileInfo(path).absoluteFilePath());
     }
 
+    // The lesson and step of the last session come back, with the session's scene as that
+    // step's working copy; Reset Step brings the step as authored. A lesson gone since is not.
+    void theLessonComesBackAtTheNextStart()
+    {
+        openFourSteps();
+        QVERIFY(lessons()->goTo(2));
+        m_window->document().edit([](Scene &s) { s.objects[0].material.shininess = 99; });
+        const Scene edited = scene();
+        m_window->close(); // saves the session
+        m_window = std::make_unique<MainWindow>(*m_settings);
+        m_window->show();
+        QVERIFY(lessons()->isOpen());
+        QCOMPARE(lessons()->currentStep(), 2);
+        QVERIFY(lessons()->bar()->isVisible());
+        QVERIFY(scene() == edited);
+        lessons()->resetStep();
+        QVERIFY(scene() == stepScene(2));
+
+        QVERIFY(QFile::remove(m_dir.filePath("lesson.json")));
+        m_window->close();
+        m_window = std::make_unique<MainWindow>(*m_settings);
+        QVERIFY(!lessons()->isOpen());
+        QVERIFY(!lessons()->bar()->isVisibleTo(m_window.get()));
+    }
+
     // lightbench --lesson F --step 2 opens the window at step 2 (main's path): the session
     // it leaves behind holds step 2's scene.
     void theCommandLineOpensTheLessonAtItsStep()
