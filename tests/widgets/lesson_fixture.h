@@ -13,7 +13,9 @@
 #include "lesson_motion.h"
 #include "lesson_pointer.h"
 #include "main_window_settings.h"
+#include "preferences_dialog.h"
 
+#include <QCheckBox>
 #include <QDockWidget>
 #include <QDropEvent>
 #include <QInputDialog>

@@ -159,8 +159,17 @@ private slots:
         QVERIFY(QTest::qWaitFor([&] { return scene().camera.yawDegrees != startYaw; }, 2000));
         QVERIFY(QTest::qWaitFor([&] { return !lessons()->motion()->isRunning(); }, 3000));
         QVERIFY(scene() == stepScene(1));
-        // Off in the preferences: the step is there at once.
-        m_settings->setValue(window_settings::kAnimateLessonsKey, false);
+        // Off in Edit > Preferences: the step is there at once.
+        QTimer::singleShot(0, this, [] {
+            auto *dialog = qobject_cast<PreferencesDialog *>(QApplication::activeModalWidget());
+            if (!dialog)
+                return;
+            QVERIFY(dialog->animateLessonsCheck()->isChecked());
+            dialog->animateLessonsCheck()->setChecked(false);
+            dialog->accept();
+        });
+        m_window->meshActions()->showPreferences();
+        QCOMPARE(m_settings->value(window_settings::kAnimateLessonsKey).toBool(), false);
         press(Qt::Key_PageDown);
         QVERIFY(!lessons()->motion()->isRunning());
         QVERIFY(scene() == stepScene(2));
