@@ -88,7 +88,7 @@ QString shortcutsHtml(const QMenuBar *menus)
     html += row(QObject::tr("Ctrl+click, Shift+click"),
                 QObject::tr("probe the surface point (drag to move it)"));
     html += row(QObject::tr("drag the wipe's line"), QObject::tr("move the wipe (compare)"));
-    html += row(QObject::tr("drop a file"), QObject::tr("open a mesh, a scene or a shader pair"));
+    html += row(QObject::tr("drop a file"), QObject::tr("open a mesh, a scene, a lesson or a shader pair"));
     html += "</table>";
     return html;
 }

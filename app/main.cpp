@@ -4,6 +4,7 @@
 #include "edit_bench.h"
 #include "grade.h"
 #include "headless.h"
+#include "lesson_actions.h"
 #include "main_window.h"
 #include "mesh_actions.h"
 #include "message_text.h"
@@ -133,10 +134,14 @@ int main(int argc, char **argv)
         limits.seconds = cl.importSeconds.value_or(limits.seconds);
         window.meshActions()->setSessionLimits(limits);
     }
-    // A scene file opens as File > Open Scene would (its message included); the options
-    // given beside it apply on top.
-    if (!cl.scenePath.isEmpty())
+    // A scene file opens as File > Open Scene would (its message included), a lesson as File
+    // > Open Lesson would, at its step; the options given beside them apply on top.
+    if (!cl.lessonPath.isEmpty())
+        window.lessonActions()->open(cl.lessonPath, cl.lessonStep - 1);
+    else if (!cl.scenePath.isEmpty()) {
+        window.lessonActions()->closeLesson(); // the last session's: a scene was asked for
         window.sceneActions()->open(cl.scenePath);
+    }
     lb::Scene scene = window.document().scene();
     cl.applyTo(scene);
     window.document().set(scene);

@@ -2,6 +2,8 @@
 
 #include "editor_panel.h"
 #include "exercise_panel.h"
+#include "lesson_actions.h"
+#include "lesson_bar.h"
 #include "light_panel.h"
 #include "main_window_settings.h"
 #include "material_panel.h"
@@ -32,6 +34,7 @@
 #include <QSettings>
 #include <QStandardPaths>
 #include <QStatusBar>
+#include <QVBoxLayout>
 
 #include <algorithm>
 
@@ -52,7 +55,16 @@ MainWindow::MainWindow(QSettings &settings, QWidget *parent)
     applyUiScale(m_scale); // before the widgets, which size themselves by the font
 
     m_viewport = new Viewport(&m_document, this);
-    setCentralWidget(m_viewport);
+    // The lesson bar sits under the view, in the central area: presentation mode keeps it.
+    auto *central = new QWidget(this);
+    central->setObjectName("viewArea");
+    auto *centralLayout = new QVBoxLayout(central);
+    centralLayout->setContentsMargins(0, 0, 0, 0);
+    centralLayout->setSpacing(0);
+    centralLayout->addWidget(m_viewport, 1);
+    auto *lessonBar = new LessonBar(central);
+    centralLayout->addWidget(lessonBar);
+    setCentralWidget(central);
     m_loader = new ObjectLoader(&m_document, this);
     connect(m_loader, &ObjectLoader::meshReady, m_viewport, &Viewport::setObject);
     connect(m_loader, &ObjectLoader::objectCountChanged, m_viewport, &Viewport::setObjectCount);
@@ -132,9 +144,20 @@ MainWindow::MainWindow(QSettings &settings, QWidget *parent)
     // the drop is over: the drag's source is not kept waiting on the question.
     m_sceneActions->setMaySetAside(
         [this](const QString &target) { return maySetAside(SetAsideFor::OpeningScene, target); });
+    m_lessons = new LessonActions(this, lessonBar, m_settings);
+    m_lessons->setMaySetAside([this](SetAsideFor occasion, const QString &target) {
+        return maySetAside(occasion, target);
+    });
+    connect(m_lessons, &LessonActions::changed, this, &MainWindow::updateTitle);
     connect(
         m_meshActions, &MeshActions::sceneFileDropped, m_sceneActions,
-        [this](const QString &path) { m_sceneActions->openAsking(path); }, Qt::QueuedConnection);
+        [this](const QString &path) {
+            if (LessonActions::isLessonFile(path))
+                m_lessons->openAsking(path);
+            else
+                m_sceneActions->openAsking(path);
+        },
+        Qt::QueuedConnection);
     connect(m_sceneActions, &SceneActions::documentChanged, this, &MainWindow::updateTitle);
     connect(m_sceneActions, &SceneActions::sceneOpened, m_probe, &ProbePanel::clear);
     connect(m_object, &ObjectPanel::openMeshRequested, m_meshActions, &MeshActions::showOpenDialog);
@@ -178,6 +201,7 @@ MainWindow::MainWindow(QSettings &settings, QWidget *parent)
     updateStatus();
     updateTitle();
     m_exerciseDock->setVisible(m_sceneActions->exercise().has_value()); // a saved state's aside
+    m_lessons->restoreSession(); // after the session's scene and program: they are its step's
     if (m_editor->restoredUnsavedEdits())
         m_status->showMessage(tr("Unsaved shader edits from the last session are back"), 20000);
 }
@@ -286,6 +310,8 @@ void MainWindow::updateStatus()
 void MainWindow::updateTitle()
 {
     QString name = m_sceneActions->documentName();
+    if (m_lessons && m_lessons->isOpen()) // the lesson is the document
+        name = tr("%1, step %2").arg(m_lessons->name()).arg(m_lessons->currentStep() + 1);
     if (name.isEmpty() && !m_shaders.filePath(ShaderStage::Vertex).isEmpty())
         name = QFileInfo(m_shaders.filePath(ShaderStage::Vertex)).completeBaseName();
     if (name.isEmpty())

@@ -3,7 +3,7 @@
 // editor on the right. It takes the screen's available area (never more) and arranges the
 // docks for that width (window_layout.h); presentation mode (F11) is full screen with its own
 // UI scale. Scene, window layout, docks, scales and zoom are kept in QSettings and come back
-// at the next start.
+// at the next start. A lesson's bar sits under the viewport (lesson_actions.h).
 
 #include "program_build.h"
 #include "scene_budget.h"
@@ -25,6 +25,7 @@ namespace lb {
 
 class EditorPanel;
 class ExercisePanel;
+class LessonActions;
 class LightPanel;
 class MaterialPanel;
 class MeshActions;
@@ -61,6 +62,7 @@ public:
     bool isSettled() const;
     MeshActions *meshActions() const { return m_meshActions; }
     SceneActions *sceneActions() const { return m_sceneActions; }
+    LessonActions *lessonActions() const { return m_lessons; } // the lesson bar's too
     ProbePanel *probePanel() const { return m_probe; }
     StatusLine *statusLine() const { return m_status; }
     ExercisePanel *exercisePanel() const { return m_exercisePanel; }
@@ -175,6 +177,7 @@ private:
     ObjectLoader *m_loader = nullptr; // the scene budget asks it for files before it exists
     MeshActions *m_meshActions;
     SceneActions *m_sceneActions;
+    LessonActions *m_lessons = nullptr;
     ProbePanel *m_probe;
     StatusLine *m_status;
     std::vector<QDockWidget *> m_panelDocks;

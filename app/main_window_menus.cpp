@@ -4,6 +4,7 @@
 
 #include "editor_panel.h"
 #include "help.h"
+#include "lesson_actions.h"
 #include "main_window_settings.h"
 #include "mesh_actions.h"
 #include "probe_panel.h"
@@ -36,6 +37,7 @@ void MainWindow::buildMenus()
 
     QMenu *file = menuBar()->addMenu(tr("&File"));
     m_sceneActions->addToMenu(file);
+    m_lessons->addToMenu(file);
     file->addSeparator();
     m_checkAction =
         addItem(file, tr("Chec&k My Work"), QKeySequence(tr("F5")), [this] { checkWork(); });
@@ -145,6 +147,7 @@ void MainWindow::buildMenus()
     });
     addViewMenu(view);
 
+    menuBar()->addMenu(m_lessons->lessonMenu());
     QMenu *help = menuBar()->addMenu(tr("&Help"));
     addItem(help, tr("&Keyboard Shortcuts"), QKeySequence::HelpContents,
             [this] { showShortcuts(this, menuBar()); });

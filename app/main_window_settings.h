@@ -13,6 +13,8 @@ inline constexpr const char *kScreenKey = "window/screen"; // the available size
 inline constexpr const char *kLayoutKey = "window/layout";
 inline constexpr const char *kScaleKey = "ui/scale";
 inline constexpr const char *kPresentationScaleKey = "ui/presentationScale";
+// Edit > Preferences: a lesson's steps glide (true) or jump.
+inline constexpr const char *kAnimateLessonsKey = "lessons/animateSteps";
 inline constexpr int kScalePercents[] = {100, 125, 150, 175, 200, 250};
 
 } // namespace lb::window_settings

@@ -2,6 +2,7 @@
 // before quit, close, another scene or Reset Everything set it aside, and its Save.
 #include "main_window.h"
 
+#include "lesson_actions.h"
 #include "main_window_settings.h"
 #include "presets.h"
 #include "scene_actions.h"
@@ -31,6 +32,13 @@ UnsavedWork MainWindow::unsavedWork() const
     // scene's program from a shader pair is the pair's to save; the scene then counts alone.
     work.scene =
         untitledProgramInFiles() ? m_sceneActions->isSceneModified() : m_sceneActions->isModified();
+    if (m_lessons && m_lessons->isOpen()) {
+        // The lesson is the document: the class's edits to its steps are a demonstration
+        // (Reset Step); what a save would lose is the lesson's own changes.
+        work.scene = false;
+        work.lesson = m_lessons->isModified();
+        work.lessonName = m_lessons->name();
+    }
     for (ShaderStage stage : {ShaderStage::Vertex, ShaderStage::Fragment})
         if (const QString path = m_shaders.filePath(stage);
             !path.isEmpty() && m_shaders.isModified(stage))
@@ -45,7 +53,11 @@ bool MainWindow::maySetAside(SetAsideFor occasion, const QString &target)
 
 MainWindow::SetAside MainWindow::askToSetAside(SetAsideFor occasion, const QString &target)
 {
-    const UnsavedWork work = unsavedWork();
+    UnsavedWork work = unsavedWork();
+    // A scene opened or everything reset while a lesson is open sets none of the lesson
+    // aside: it stays open with its changes (only opening another one, or closing, does).
+    if (occasion == SetAsideFor::OpeningScene || occasion == SetAsideFor::ResettingEverything)
+        work.lesson = false;
     if (!work.any())
         return SetAside::NothingUnsaved;
     if (!m_asker)
@@ -64,6 +76,8 @@ bool MainWindow::saveUnsavedWork(const UnsavedWork &work)
 {
     // The scene first: it is what a student hands in. A failed save has said why.
     if (work.scene && !m_sceneActions->saveScene())
+        return false;
+    if (work.lesson && !m_lessons->save())
         return false;
     return work.shaderFiles.isEmpty() || saveShaders();
 }

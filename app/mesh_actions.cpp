@@ -1,6 +1,7 @@
 #include "mesh_actions.h"
 
 #include "load_progress.h"
+#include "main_window_settings.h"
 #include "preferences_dialog.h"
 #include "recent_files.h"
 #include "status_line.h"
@@ -201,8 +202,10 @@ double MeshActions::frameBudgetSeconds() const
 void MeshActions::showPreferences()
 {
     PreferencesDialog dialog(m_loader->limits(), frameBudgetSeconds(), m_window);
+    dialog.setAnimateLessons(m_settings.value(window_settings::kAnimateLessonsKey, true).toBool());
     if (dialog.exec() != QDialog::Accepted)
         return;
+    m_settings.setValue(window_settings::kAnimateLessonsKey, dialog.animateLessons());
     const ImportLimits limits = dialog.limits();
     m_settings.setValue(kMemoryKey, limits.memoryMB);
     m_settings.setValue(kTimeKey, limits.seconds);

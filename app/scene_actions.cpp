@@ -114,7 +114,16 @@ bool SceneActions::open(const QString &path)
             m_recent->remove(path);
         return false;
     }
-    const SceneFile file = asOpened(*read.file, example);
+    if (!example)
+        m_recent->add(QFileInfo(path).absoluteFilePath());
+    apply(asOpened(*read.file, example), read.ignored,
+          example ? path : QFileInfo(path).absoluteFilePath());
+    return true;
+}
+
+void SceneActions::apply(const SceneFile &file, const QStringList &ignoredFields,
+                         const QString &origin)
+{
     // An exercise's reference and grading ride along, so that saving it keeps them.
     m_exercise = file.exercise;
     m_exerciseScene = file.scene;
@@ -123,7 +132,7 @@ bool SceneActions::open(const QString &path)
     // Held to the scene budget on its way in (MainWindow::limitScenes): what was lowered.
     const QString lowered = m_document->set(file.scene);
     emit exerciseChanged(); // after the scene: side B's choices may follow the exercise
-    setDocument(example ? path : QFileInfo(path).absoluteFilePath());
+    setDocument(origin);
     remember();
     if (!lowered.isEmpty()) {
         // The file's own values are what it holds: the lowered scene is a change the user has
@@ -132,29 +141,29 @@ bool SceneActions::open(const QString &path)
         m_saved->scene = file.scene;
         emit documentChanged();
     }
-    if (!example)
-        m_recent->add(QFileInfo(path).absoluteFilePath());
-    const QString ignored = read.ignored.isEmpty()
+    // A lesson's step (no origin) names itself in the lesson bar, and says what it ignored
+    // once for the whole lesson.
+    const QString name = origin.isEmpty() ? tr("This step") : escapedName(m_name);
+    const QString ignored = ignoredFields.isEmpty()
                                 ? QString()
                                 : tr("%n field(s) could not be used and kept their defaults:", "",
-                                     int(read.ignored.size())) +
-                                      "\n" + summarisedList(read.ignored, "\n", 20);
+                                     int(ignoredFields.size())) +
+                                      "\n" + summarisedList(ignoredFields, "\n", 20);
     if (!lowered.isEmpty())
         showMessage(QMessageBox::Information,
                     tr("%1 opened with less tessellation than it asks for, to fit this "
                        "machine's memory; the file is unchanged unless you save the scene.")
-                        .arg(escapedName(m_name)),
+                        .arg(name),
                     lowered + (ignored.isEmpty() ? QString() : "\n\n" + ignored));
-    else if (!read.ignored.isEmpty())
+    else if (!ignoredFields.isEmpty())
         showMessage(QMessageBox::Information,
                     tr("%1 opened; %n field(s) could not be used and kept their defaults.", "",
-                       int(read.ignored.size()))
-                        .arg(escapedName(m_name)),
-                    summarisedList(read.ignored, "\n", 20));
-    if (lowered.isEmpty()) // else the status line says what was lowered
-        showStatusMessage(m_window, tr("Opened the scene %1").arg(escapedName(m_name)), 5000);
-    emit sceneOpened(path);
-    return true;
+                       int(ignoredFields.size()))
+                        .arg(name),
+                    summarisedList(ignoredFields, "\n", 20));
+    if (lowered.isEmpty() && !origin.isEmpty()) // else the status line says what was lowered
+        showStatusMessage(m_window, tr("Opened the scene %1").arg(name), 5000);
+    emit sceneOpened(origin);
 }
 
 bool SceneActions::openAsking(const QString &path, const QString &shownName)

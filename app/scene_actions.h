@@ -36,6 +36,11 @@ public:
     // Opens a scene file: the scene, its program and its mesh replace the current ones; a
     // file that cannot be used changes nothing. Returns false then (the message is shown).
     bool open(const QString &path);
+    // What open() does once the file is read, for a scene that is not a file of its own (a
+    // lesson's step): `file` replaces the scene, its program and its exercise; `ignored`
+    // (what its reading could not use) is shown once. `origin`: the file (absolute) or
+    // ":/..." resource it came from, kept for Save and the next start; empty for none.
+    void apply(const SceneFile &file, const QStringList &ignored, const QString &origin);
     // The user's open (File > Open Scene, Open Recent Scene, Examples, a dropped file): asks
     // setMaySetAside()'s question first (`shownName` names the scene in it, the file's name
     // if empty); false when the answer is Cancel or the file did not open.
@@ -86,7 +91,7 @@ public:
     const Scene &exerciseScene() const { return m_exerciseScene; }
 
 signals:
-    void sceneOpened(const QString &path);
+    void sceneOpened(const QString &origin); // apply()'s origin: empty for a lesson's step
     // The open scene's exercise came or went (exercise()): side B shows its reference.
     void exerciseChanged();
     void documentChanged(); // opened, saved, or another name

@@ -17,6 +17,10 @@ QString names(const UnsavedWork &work)
             QObject::tr("the shader files %1 and %2")
                 .arg(QStringList(work.shaderFiles.mid(0, work.shaderFiles.size() - 1)).join(", "),
                      work.shaderFiles.last());
+    if (work.lesson) {
+        const QString lesson = QObject::tr("the lesson \u201c%1\u201d").arg(work.lessonName);
+        return shaders.isEmpty() ? lesson : QObject::tr("%1 and %2").arg(lesson, shaders);
+    }
     if (!work.scene)
         return shaders;
     const QString scene = work.sceneName.isEmpty()
@@ -33,17 +37,20 @@ QString unsavedWorkQuestion(const UnsavedWork &work, SetAsideFor occasion, const
     case SetAsideFor::Closing:
         return QObject::tr("Save the changes to %1 before closing?").arg(names(work));
     case SetAsideFor::OpeningScene:
+    case SetAsideFor::OpeningLesson:
         return QObject::tr("Save the changes to %1 before opening \u201c%2\u201d?")
             .arg(names(work), target);
     case SetAsideFor::ResettingEverything:
         return QObject::tr("Save the changes to %1 before resetting everything?").arg(names(work));
+    case SetAsideFor::ClosingLesson:
+        return QObject::tr("Save the changes to %1 before closing it?").arg(names(work));
     }
     return {};
 }
 
 QString unsavedWorkDetails(const UnsavedWork &work)
 {
-    return work.shaderFiles.size() + (work.scene ? 1 : 0) > 1
+    return work.shaderFiles.size() + (work.scene || work.lesson ? 1 : 0) > 1
                ? QObject::tr("Your changes will be lost if you don't save them. Save saves them "
                              "all.")
                : QObject::tr("Your changes will be lost if you don't save them.");

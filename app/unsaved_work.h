@@ -18,11 +18,14 @@ struct UnsavedWork
     bool scene = false;      // the scene (settings and program) has unsaved changes
     QString sceneName;       // its file's (or example's) name; empty: untitled
     QStringList shaderFiles; // the shader files (NAME.vert, NAME.frag) with unsaved edits
-    bool any() const { return scene || !shaderFiles.isEmpty(); }
+    // While a lesson is open it is the document (lesson_actions.h): its authoring changes.
+    bool lesson = false;
+    QString lessonName{};
+    bool any() const { return scene || !shaderFiles.isEmpty() || lesson; }
 };
 
 // What would set the work aside.
-enum class SetAsideFor { Closing, OpeningScene, ResettingEverything };
+enum class SetAsideFor { Closing, OpeningScene, ResettingEverything, OpeningLesson, ClosingLesson };
 
 // Who answers the question: the user in askAboutUnsavedWork()'s message box, or a test.
 // Returns Save, Discard or Cancel (anything else reads as Cancel).

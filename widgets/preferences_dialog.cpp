@@ -1,5 +1,6 @@
 #include "preferences_dialog.h"
 
+#include <QCheckBox>
 #include <QDialogButtonBox>
 #include <QFormLayout>
 #include <QLabel>
@@ -49,6 +50,13 @@ PreferencesDialog::PreferencesDialog(const ImportLimits &limits, double frameBud
     m_budget->setValue(frameBudgetSeconds);
     form->addRow(tr("Frame budget"), m_budget);
 
+    m_animateLessons = new QCheckBox(tr("Move the camera and the lights smoothly between a "
+                                        "lesson's steps"),
+                                     this);
+    m_animateLessons->setChecked(true);
+    m_animateLessons->setToolTip(tr("So the class sees where they go; off: each step jumps"));
+    form->addRow(m_animateLessons);
+
     auto *buttons = new QDialogButtonBox(
         QDialogButtonBox::Ok | QDialogButtonBox::Cancel | QDialogButtonBox::RestoreDefaults, this);
     connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
@@ -57,6 +65,7 @@ PreferencesDialog::PreferencesDialog(const ImportLimits &limits, double frameBud
             [this] {
                 showLimits(ImportLimits{});
                 m_budget->setValue(kDefaultFrameBudgetSeconds);
+                m_animateLessons->setChecked(true);
             });
     form->addRow(buttons);
     showLimits(limits);
@@ -72,6 +81,16 @@ void PreferencesDialog::showLimits(const ImportLimits &limits)
 {
     m_memory->setValue(int(limits.memoryMB));
     m_time->setValue(limits.seconds);
+}
+
+void PreferencesDialog::setAnimateLessons(bool on)
+{
+    m_animateLessons->setChecked(on);
+}
+
+bool PreferencesDialog::animateLessons() const
+{
+    return m_animateLessons->isChecked();
 }
 
 double PreferencesDialog::frameBudgetSeconds() const

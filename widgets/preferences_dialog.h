@@ -1,11 +1,14 @@
 #pragma once
-// Edit > Preferences: the import helper's memory and time limits, and the frame budget a
-// user's program must keep (program_trial.h).
+// Edit > Preferences: the import helper's memory and time limits, the frame budget a user's
+// program must keep (program_trial.h), and whether a lesson's steps move the camera and the
+// lights smoothly.
 
 #include "import_process.h"
 #include "number_box.h"
 
 #include <QDialog>
+
+class QCheckBox;
 
 namespace lb {
 
@@ -20,6 +23,10 @@ public:
     double frameBudgetSeconds() const;
     QSpinBox *memoryBox() const { return m_memory; }
     QSpinBox *timeBox() const { return m_time; }
+    // A lesson's step glides the camera and the lights to their places (~400 ms) or jumps.
+    void setAnimateLessons(bool on);
+    bool animateLessons() const;
+    QCheckBox *animateLessonsCheck() const { return m_animateLessons; }
 
     void accept() override; // not while a box holds a number it would not take
 
@@ -29,6 +36,7 @@ private:
     IntegerBox *m_memory;
     IntegerBox *m_time;
     NumberBox *m_budget;
+    QCheckBox *m_animateLessons;
 };
 
 } // namespace lb

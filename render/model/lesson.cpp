@@ -8,6 +8,7 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QLocale>
+#include <QRegularExpression>
 
 namespace lb {
 
@@ -140,7 +141,11 @@ QString localized(const LocalizedText &text, const QString &language)
 
 QString lessonLanguage()
 {
-    return QLocale().name().section('_', 0, 0);
+    // The C and POSIX locales (LANG=C, a bare container) name no language: English then,
+    // so that what the window writes is under a language code a lesson file takes.
+    const QString language = QLocale().name().section('_', 0, 0);
+    static const QRegularExpression code("^[a-z]{2,3}$");
+    return code.match(language).hasMatch() ? language : QString("en");
 }
 
 const QStringList &lessonPanels()

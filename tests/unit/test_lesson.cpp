@@ -54,6 +54,18 @@ private slots:
         QCOMPARE(localized({}, "de"), QString());
     }
 
+    // The UI's language as a lesson names it; the C and POSIX locales (LANG=C) name none,
+    // and the window would write captions under "C", which no lesson file takes: English.
+    void lessonLanguageIsALanguageCode()
+    {
+        const QLocale before;
+        QLocale::setDefault(QLocale(QLocale::Portuguese, QLocale::Brazil));
+        QCOMPARE(lessonLanguage(), QString("pt"));
+        QLocale::setDefault(QLocale::c());
+        QCOMPARE(lessonLanguage(), QString("en"));
+        QLocale::setDefault(before);
+    }
+
     void savedLessonOpensTheSame()
     {
         QDir dir(m_dir.path());
