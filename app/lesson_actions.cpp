@@ -13,6 +13,7 @@
 #include "status_line.h"
 
 #include <QAction>
+#include <QActionGroup>
 #include <QDir>
 #include <QDockWidget>
 #include <QFile>
@@ -30,8 +31,9 @@ namespace lb {
 namespace {
 const char *kRecentKey = "recentLessons";
 const char *kDirKey = "lessons/lastDirectory";
-const char *kCurrentKey = "lessons/current"; // the lesson open at the end of the session
-const char *kStepKey = "lessons/step";       // its step, from 1
+const char *kCurrentKey = "lessons/current";   // the lesson open at the end of the session
+const char *kStepKey = "lessons/step";         // its step, from 1
+const char *kLanguageKey = "lessons/language"; // captions' language; empty: the system's
 } // namespace
 
 LessonActions::LessonActions(MainWindow *window, LessonBar *bar, QSettings &settings)
@@ -140,7 +142,33 @@ void LessonActions::buildLessonMenu()
     add(tr("&Save Lesson"), [this] { save(); });
     add(tr("Save Lesson &As..."), [this] { showSaveAsDialog(); });
     m_menu->addSeparator();
+    addLanguageMenu();
+    m_menu->addSeparator();
     add(tr("&Close Lesson"), [this] { closeLesson(); });
+}
+
+void LessonActions::addLanguageMenu()
+{
+    // Until the window itself speaks them (issue 31), the captions follow the system's
+    // language (LANG) or the one chosen here: a teacher shows the German sheet in English.
+    QMenu *menu = m_menu->addMenu(tr("Caption &Language"));
+    auto *group = new QActionGroup(menu);
+    const QString chosen = m_settings.value(kLanguageKey).toString();
+    const std::pair<QString, QString> languages[] = {
+        {QString(), tr("The System's")}, {"en", "English"}, {"pt", "Português"}, {"de", "Deutsch"}};
+    for (const auto &[code, name] : languages) {
+        QAction *action = menu->addAction(name, this, [this, code = code] {
+            m_settings.setValue(kLanguageKey, code);
+            setLessonLanguage(code);
+            if (m_open)
+                showStep();
+        });
+        action->setCheckable(true);
+        action->setChecked(code == chosen);
+        action->setData(code);
+        group->addAction(action);
+    }
+    setLessonLanguage(chosen);
 }
 
 void LessonActions::updateActions()

@@ -108,6 +108,7 @@ signals:
 
 private:
     void buildLessonMenu();
+    void addLanguageMenu(); // Lesson > Caption Language, kept in the settings
     void showOpenDialog();
     void showSaveAsDialog();
     void showRenameDialog();

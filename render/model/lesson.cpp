@@ -139,13 +139,29 @@ QString localized(const LocalizedText &text, const QString &language)
     return text.first();
 }
 
+namespace {
+QString &chosenLanguage()
+{
+    static QString language;
+    return language;
+}
+} // namespace
+
 QString lessonLanguage()
 {
-    // The C and POSIX locales (LANG=C, a bare container) name no language: English then,
-    // so that what the window writes is under a language code a lesson file takes.
-    const QString language = QLocale().name().section('_', 0, 0);
+    if (!chosenLanguage().isEmpty())
+        return chosenLanguage();
+    // The system's (LANG): the window's own QLocale is English, for its numbers, until it is
+    // translated. The C and POSIX locales (LANG=C, a bare container) name no language:
+    // English then, so that what the window writes is under a code a lesson file takes.
+    const QString language = QLocale::system().name().section('_', 0, 0);
     static const QRegularExpression code("^[a-z]{2,3}$");
     return code.match(language).hasMatch() ? language : QString("en");
+}
+
+void setLessonLanguage(const QString &language)
+{
+    chosenLanguage() = language;
 }
 
 const QStringList &lessonPanels()

@@ -36,8 +36,10 @@ using LocalizedText = QMap<QString, QString>;
 // The text for `language` ("pt", "pt_PT", "de_DE.UTF-8"): that language, else English, else
 // the first there is; empty when there is none.
 QString localized(const LocalizedText &text, const QString &language);
-// The language the lessons are shown in: the UI's (QLocale's, from LANG), as "en", "pt", "de".
+// The language lessons are shown and written in, as "en", "pt", "de": the one chosen
+// (Lesson > Caption Language), else the system's (LANG), else English.
 QString lessonLanguage();
+void setLessonLanguage(const QString &language); // empty: the system's again
 
 // The panels a step may bring forward, and the controls it may point at (as written in files).
 const QStringList &lessonPanels();

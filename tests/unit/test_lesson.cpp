@@ -54,15 +54,19 @@ private slots:
         QCOMPARE(localized({}, "de"), QString());
     }
 
-    // The UI's language as a lesson names it; the C and POSIX locales (LANG=C) name none,
-    // and the window would write captions under "C", which no lesson file takes: English.
+    // The language as a lesson names it: the one chosen, else the system's (LANG; the C and
+    // POSIX locales name none, and the window would write captions under "C", which no lesson
+    // file takes: English), whatever the application's default QLocale is.
     void lessonLanguageIsALanguageCode()
     {
         const QLocale before;
-        QLocale::setDefault(QLocale(QLocale::Portuguese, QLocale::Brazil));
+        QLocale::setDefault(QLocale(QLocale::German, QLocale::Germany));
+        const QString system = QLocale::system().name().section('_', 0, 0);
+        QCOMPARE(lessonLanguage(), system.size() == 2 ? system : QString("en"));
+        setLessonLanguage("pt");
         QCOMPARE(lessonLanguage(), QString("pt"));
-        QLocale::setDefault(QLocale::c());
-        QCOMPARE(lessonLanguage(), QString("en"));
+        setLessonLanguage({});
+        QCOMPARE(lessonLanguage(), system.size() == 2 ? system : QString("en"));
         QLocale::setDefault(before);
     }
 

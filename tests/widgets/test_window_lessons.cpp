@@ -201,6 +201,37 @@ private slots:
 
     // A caption is markdown; its pictures and HTML are left out: a caption naming a FIFO or
     // /dev/zero as a picture must not make the window read it.
+    // The captions' language is chosen in the Lesson menu and kept; a step without that
+    // language shows English.
+    void theCaptionLanguageIsChosenAndKept()
+    {
+        openFourSteps();
+        // The menu of the window there is now (a new one below).
+        const auto choose = [&](const QString &name) {
+            int chosen = 0;
+            for (QAction *a : lessons()->lessonMenu()->actions())
+                if (a->menu() && a->text().contains("Language"))
+                    for (QAction *l : a->menu()->actions())
+                        if (l->text() == name)
+                            l->trigger(), ++chosen;
+            QCOMPARE(chosen, 1);
+        };
+        choose("Português");
+        QVERIFY(lessons()->bar()->captionLabel()->text().contains("Legenda 1"));
+        choose("Deutsch"); // the lesson has none: English
+        QVERIFY2(lessons()->bar()->captionLabel()->text().contains("Caption"),
+                 qPrintable(lessons()->bar()->captionLabel()->text()));
+        choose("Português");
+        // A new window on the same settings shows Portuguese again.
+        m_window->close(); // saves the session
+        setLessonLanguage({});
+        m_window = std::make_unique<MainWindow>(*m_settings);
+        m_window->show();
+        QVERIFY(lessons()->isOpen()); // the lesson of the last session came back
+        QVERIFY(lessons()->bar()->captionLabel()->text().contains("Legenda 1"));
+        choose("The System's");
+    }
+
     void captionsShowMarkdownButReadNoFiles()
     {
         const QString fifo = m_dir.filePath("picture.fifo");
