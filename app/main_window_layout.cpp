@@ -4,7 +4,9 @@
 
 #include "editor_panel.h"
 #include "main_window_settings.h"
+#include "probe_panel.h"
 #include "scene_actions.h"
+#include "viewport.h"
 
 #include <QAction>
 #include <QActionGroup>
@@ -16,6 +18,7 @@
 #include <QScrollBar>
 #include <QSettings>
 #include <QStatusBar>
+#include <QStyle>
 #include <QTabBar>
 #include <QTimer>
 
@@ -109,9 +112,13 @@ void MainWindow::arrangeDocks(DockLayout layout)
             tabifyDockWidget(light, m_panelDocks[i]);
     }
     applyTabPositions();
+    // In presentation mode the docks wait behind F6 unless it showed them.
+    const bool shown = layout != DockLayout::Presentation || presentationPanelsShown();
     for (QDockWidget *dock : m_panelDocks) // the Exercise panel only with an exercise open
-        dock->setVisible(dock != m_exerciseDock || m_sceneActions->exercise().has_value());
-    m_editorDock->show();
+        dock->setVisible(shown &&
+                         (dock != m_exerciseDock || m_sceneActions->exercise().has_value()));
+    m_editorDock->setVisible(shown &&
+                             (layout != DockLayout::Presentation || presentationEditorFits()));
     (layout == DockLayout::Wide                                    ? shading
      : layout == DockLayout::Presentation && presentationIsShort() ? m_editorDock
                                                                    : light)
@@ -151,8 +158,15 @@ void MainWindow::applyDockWidths()
     if (m_layout == DockLayout::Presentation) {
         // The editor over the panels on the right; the view has the rest of the width.
         const int h = std::max(height() - menuBar()->height() - statusBar()->height(), 100);
-        resizeDocks({m_editorDock}, {shares.editor}, Qt::Horizontal);
-        if (!presentationIsShort())
+        // Without the editor (it did not fit), the panels have the column.
+        QDockWidget *column = m_editorDock->isVisible() ? m_editorDock : m_panelDocks[0];
+        // The widest panel's form where that is up to 39% (a projector of 1280 at 200%), so
+        // it does not scroll sideways by a pixel; never more: the view keeps 60%.
+        const int need =
+            panelsNeed() + 2 * column->style()->pixelMetric(QStyle::PM_DockWidgetFrameWidth);
+        resizeDocks({column}, {std::min(std::max(shares.editor, need), int(w * 0.39))},
+                    Qt::Horizontal);
+        if (!presentationIsShort() && m_editorDock->isVisible())
             resizeDocks({m_editorDock, m_panelDocks[0]}, {h * 7 / 10, h * 3 / 10}, Qt::Vertical);
         return;
     }
@@ -237,6 +251,7 @@ void MainWindow::setPresentation(bool on)
     }
     if (m_presentationAction)
         m_presentationAction->setChecked(on);
+    presentationChanged(); // the panels behind F6, the status line, the blank screen
 }
 
 void MainWindow::setUiScale(double scale)
@@ -259,6 +274,10 @@ void MainWindow::applyScale()
     const double scale = uiScale();
     applyUiScale(scale);
     m_editor->setUiScale(scale);
+    m_viewport->setUiScale(scale); // the texts over the view
+    // The probe's equation (lines of 70 characters) in a smaller monospace in presentation
+    // mode, where the panels share 38% of the width: wrapped twice, not every 30 characters.
+    m_probe->setEquationShare(m_presentation ? std::min(scale, 1.1) / scale : 1.0);
     if (m_scaleGroup)
         for (QAction *a : m_scaleGroup->actions())
             a->setChecked(a->data().toInt() == int(std::lround(scale * 100.0)));
