@@ -145,6 +145,9 @@ private:
     void escapePressed();                // Esc: out of presentation mode, else the probe cleared
     void presentationChanged();          // after setPresentation(): panels, status line, blank
     bool presentationEditorFits() const; // the editor fits beside a view of 60% of the width
+    void styleDockTabs(); // the docks' tab bars: names whole, their font in presentation mode
+    QFont presentationTabFont() const; // 140% where the UI is larger: the names fit 720 lines
+    int presentationTabsWidth() const; // the column of tabs down the edge in presentation mode
     void updateStatus();
     void updateTitle();
     void showProgramUsage(const ProgramBuild &build);

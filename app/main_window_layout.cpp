@@ -124,13 +124,8 @@ void MainWindow::arrangeDocks(DockLayout layout)
                                                                    : light)
         ->raise();
     applyDockWidths();
-    // The docks' tab bars exist once the layout has run: names whole, scrolled when short.
-    QTimer::singleShot(0, this, [this] {
-        for (QTabBar *bar : findChildren<QTabBar *>(Qt::FindDirectChildrenOnly)) {
-            bar->setElideMode(Qt::ElideNone);
-            bar->setUsesScrollButtons(true);
-        }
-    });
+    // The docks' tab bars exist once the layout has run.
+    QTimer::singleShot(0, this, &MainWindow::styleDockTabs);
 }
 
 bool MainWindow::presentationIsShort() const
@@ -142,7 +137,10 @@ void MainWindow::applyTabPositions()
 {
     setTabPosition(Qt::LeftDockWidgetArea,
                    m_layout == DockLayout::Compact ? QTabWidget::West : QTabWidget::North);
-    setTabPosition(Qt::RightDockWidgetArea, QTabWidget::North);
+    // Presentation: the tabs down the right edge, one narrow column whose names stay whole at
+    // 200%; a row above a column of 38% would scroll them out of sight.
+    setTabPosition(Qt::RightDockWidgetArea,
+                   m_layout == DockLayout::Presentation ? QTabWidget::East : QTabWidget::North);
 }
 
 void MainWindow::applyDockWidths()
@@ -160,11 +158,14 @@ void MainWindow::applyDockWidths()
         const int h = std::max(height() - menuBar()->height() - statusBar()->height(), 100);
         // Without the editor (it did not fit), the panels have the column.
         QDockWidget *column = m_editorDock->isVisible() ? m_editorDock : m_panelDocks[0];
-        // The widest panel's form where that is up to 39% (a projector of 1280 at 200%), so
-        // it does not scroll sideways by a pixel; never more: the view keeps 60%.
+        // The column of tabs down the edge is outside the dock's width.
+        const int tabs = presentationTabsWidth();
+        // The widest panel's form where that fits in 39.5% (with the tabs), so it does not
+        // scroll sideways; never more: the view keeps 60%.
         const int need =
             panelsNeed() + 2 * column->style()->pixelMetric(QStyle::PM_DockWidgetFrameWidth);
-        resizeDocks({column}, {std::min(std::max(shares.editor, need), int(w * 0.39))},
+        resizeDocks({column},
+                    {std::min(std::max(shares.editor - tabs, need), int(w * 0.395) - tabs)},
                     Qt::Horizontal);
         if (!presentationIsShort() && m_editorDock->isVisible())
             resizeDocks({m_editorDock, m_panelDocks[0]}, {h * 7 / 10, h * 3 / 10}, Qt::Vertical);
@@ -275,9 +276,11 @@ void MainWindow::applyScale()
     applyUiScale(scale);
     m_editor->setUiScale(scale);
     m_viewport->setUiScale(scale); // the texts over the view
-    // The probe's equation (lines of 70 characters) in a smaller monospace in presentation
-    // mode, where the panels share 38% of the width: wrapped twice, not every 30 characters.
-    m_probe->setEquationShare(m_presentation ? std::min(scale, 1.1) / scale : 1.0);
+    QTimer::singleShot(0, this, &MainWindow::styleDockTabs);
+    // The probe's equation (lines of 70 characters) in presentation mode at the 100% size,
+    // where the panels share 38% of the width: wrapped twice, not every 30 characters (it is
+    // the teacher's to read; the class reads the view).
+    m_probe->setEquationShare(m_presentation ? 1.0 / scale : 1.0);
     if (m_scaleGroup)
         for (QAction *a : m_scaleGroup->actions())
             a->setChecked(a->data().toInt() == int(std::lround(scale * 100.0)));

@@ -14,13 +14,17 @@
 #include "viewport.h"
 
 #include <QAction>
+#include <QApplication>
 #include <QDockWidget>
+#include <QLayout>
 #include <QMenu>
 #include <QSettings>
 #include <QStatusBar>
 #include <QStyle>
 #include <QTabBar>
 #include <QTimer>
+
+#include <cmath>
 
 namespace lb {
 
@@ -115,13 +119,40 @@ void MainWindow::setPresentationPanels(bool shown)
                "of the screen: View > Shader editor shows it, or a smaller UI scale")
                 .arg(m_editor->minimumSizeHint().width()));
     applyDockWidths();
-    // Tab bars made for the docks now: names whole, scrolled when short.
-    QTimer::singleShot(0, this, [this] {
-        for (QTabBar *bar : findChildren<QTabBar *>(Qt::FindDirectChildrenOnly)) {
-            bar->setElideMode(Qt::ElideNone);
-            bar->setUsesScrollButtons(true);
-        }
-    });
+    QTimer::singleShot(0, this, &MainWindow::styleDockTabs); // the tab bars made for them now
+}
+
+QFont MainWindow::presentationTabFont() const
+{
+    QFont font = QApplication::font();
+    const double scale = uiScale();
+    if (scale > 1.4) {
+        if (font.pointSizeF() > 0)
+            font.setPointSizeF(font.pointSizeF() * 1.4 / scale);
+        else
+            font.setPixelSize(int(std::lround(font.pixelSize() * 1.4 / scale)));
+    }
+    return font;
+}
+
+int MainWindow::presentationTabsWidth() const
+{
+    return QFontMetrics(presentationTabFont()).height() + 14; // a tab's padding and frame
+}
+
+void MainWindow::styleDockTabs()
+{
+    // Names whole, scrolled when short. In presentation mode the column of tabs down the edge
+    // is written at 140% of the 100% font (not 200%): the eight names then fit 720 lines; they
+    // are the teacher's to click, the view is the class's to read.
+    const QFont font = m_presentation ? presentationTabFont() : QApplication::font();
+    for (QTabBar *bar : findChildren<QTabBar *>(Qt::FindDirectChildrenOnly)) {
+        bar->setElideMode(Qt::ElideNone);
+        bar->setUsesScrollButtons(true);
+        bar->setFont(font);
+    }
+    if (m_presentation) // the tabs' column is now as wide as it will be
+        applyDockWidths();
 }
 
 bool MainWindow::presentationEditorFits() const
@@ -129,8 +160,13 @@ bool MainWindow::presentationEditorFits() const
     // The editor's bar of buttons grows with the font: at 200% it needs about 600 pixels, more
     // than 40% of a 1280-wide projector. The view's 60% comes first.
     const int dockFrame = 2 * m_editorDock->style()->pixelMetric(QStyle::PM_DockWidgetFrameWidth);
-    return m_editor->minimumSizeHint().width() + dockFrame <=
-           dockWidths(DockLayout::Presentation, width()).editor;
+    // A hidden editor's layouts keep the sizes of the font they were last shown with.
+    for (QWidget *w : m_editor->findChildren<QWidget *>())
+        w->ensurePolished();
+    for (QLayout *l : m_editor->findChildren<QLayout *>())
+        l->invalidate();
+    return m_editor->minimumSizeHint().width() + dockFrame + presentationTabsWidth() <=
+           int(width() * 0.395);
 }
 
 void MainWindow::presentationChanged()

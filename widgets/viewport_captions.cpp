@@ -7,6 +7,7 @@
 #include <QApplication>
 #include <QLabel>
 
+#include <algorithm>
 #include <cmath>
 
 namespace lb {
@@ -66,9 +67,16 @@ void Viewport::updateCompareLabel()
     if (text.isEmpty())
         return;
     // In the difference view the caption leaves the colour scale's column free.
-    m_compareLabel->setMaximumWidth(difference ? m_differenceLabels->leftOfTicks() : width());
+    const int widest = difference ? m_differenceLabels->leftOfTicks() : width();
+    m_compareLabel->setMaximumWidth(widest);
     m_compareLabel->setWordWrap(true);
-    m_compareLabel->adjustSize();
+    // As wide as its one line, up to the room there is: adjustSize() would wrap it at about
+    // 400 pixels, seven lines at 200%.
+    const QMargins margins = m_compareLabel->contentsMargins();
+    const int line = m_compareLabel->fontMetrics().horizontalAdvance(text) + margins.left() +
+                     margins.right() + 2 * m_compareLabel->margin() + 16;
+    const int w = std::min(widest, line);
+    m_compareLabel->resize(w, m_compareLabel->heightForWidth(w));
     m_compareLabel->move(0, height() - m_compareLabel->height());
 }
 
