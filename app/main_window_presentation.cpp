@@ -115,8 +115,7 @@ void MainWindow::setPresentationPanels(bool shown)
         return;
     if (!editor) // said, not silently left out
         m_status->showMessage(
-            tr("The shader editor needs %1 pixels at this UI scale, more than the panels' 38% "
-               "of the screen: View > Shader editor shows it, or a smaller UI scale")
+            tr("The editor needs %1 px at this scale: View > Shader editor shows it")
                 .arg(m_editor->minimumSizeHint().width()));
     applyDockWidths();
     QTimer::singleShot(0, this, &MainWindow::styleDockTabs); // the tab bars made for them now
