@@ -480,10 +480,8 @@ void Renderer::drawDifference(const Scene &scene, QSize pixels)
     uploadNamed(*this, uniforms, "uScale", UniformValue::ofNumber(kDifferenceScale));
     uploadNamed(*this, uniforms, "uPixels",
                 UniformValue::ofVector(glm::vec4(pixels.width(), pixels.height(), 0, 0)));
-    const QRect bar = differenceScaleBar(pixels, m_uiScale); // top-left origin; GL's is bottom-left
     uploadNamed(*this, uniforms, "uBar",
-                UniformValue::ofVector(glm::vec4(bar.left(), pixels.height() - bar.bottom() - 1,
-                                                 bar.right() + 1, pixels.height() - bar.top())));
+                UniformValue::ofVector(differenceScaleBarEdges(pixels, m_uiScale)));
     m_screenTriangle.draw(*this);
     glBindTexture(GL_TEXTURE_2D, 0);
     glActiveTexture(GL_TEXTURE0);

@@ -24,6 +24,13 @@ QRect differenceScaleBar(QSize frame, double uiScale)
     return QRect(frame.width() - margin - width, top, width, std::max(bottom - top, 1));
 }
 
+glm::vec4 differenceScaleBarEdges(QSize frame, double uiScale)
+{
+    const QRect bar = differenceScaleBar(frame, uiScale);
+    return glm::vec4(bar.left(), frame.height() - bar.bottom() - 1, bar.right() + 1,
+                     frame.height() - bar.top());
+}
+
 QRect viewRect(const Scene &scene, QSize frame, bool sideB)
 {
     if (scene.compare.mode != CompareMode::SideBySide)

@@ -12,6 +12,8 @@
 
 #include <cstdint>
 
+#include <glm/vec4.hpp>
+
 namespace lb {
 
 // |A - B| at or above this (out of 1) is white in the difference view's heat map.
@@ -22,6 +24,8 @@ constexpr float kDifferenceScale = 64.0f / 255.0f;
 // scale 1, wider with `uiScale` so it is seen, and named, from the back row. The renderer draws
 // it; the viewport writes its numbers beside it.
 QRect differenceScaleBar(QSize frame, double uiScale);
+// The same bar as GL's window coordinates (bottom-left origin): left, bottom, right, top.
+glm::vec4 differenceScaleBarEdges(QSize frame, double uiScale);
 // The differences (out of 255) the scale's ticks name, from 0 to the top (kDifferenceScale).
 constexpr int kDifferenceTickStep = 16;
 
