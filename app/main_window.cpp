@@ -89,6 +89,8 @@ MainWindow::MainWindow(QSettings &settings, QWidget *parent)
     connect(m_viewport, &Viewport::clicked, this, &MainWindow::selectObjectAt);
     connect(m_viewport, &Viewport::probeRequested, this, [this, probeDock](QPoint pixel) {
         m_probe->probeAt(pixel);
+        if (m_presentation && !presentationPanelsShown())
+            return; // the view keeps the screen: the numbers wait behind F6
         probeDock->show();
         probeDock->raise();
     });
@@ -215,6 +217,7 @@ void MainWindow::resetEverything()
     // shading would be held to that program's.
     const bool hadEdits = !m_shaders.showsBuiltIn();
     m_shaders.loadPreset(builtInPreset(perVertex(Scene{}.shading.shading)));
+    m_probe->clear(); // the camera and the object are new: the arrows' view is gone
     m_document.set(Scene{});
     m_status->showMessage(hadEdits ? tr("Everything reset; Ctrl+Z in the editor brings your "
                                         "shader text back")

@@ -33,6 +33,7 @@ class ObjectLoader;
 class ObjectPanel;
 class ProbePanel;
 class SceneActions;
+class ScreenBlank;
 class SettingsAutosave;
 class ShadingPanel;
 class StatusLine;
@@ -88,6 +89,12 @@ public:
     // large; off brings back the window as it was.
     void setPresentation(bool on);
     bool isPresentation() const { return m_presentation; }
+    // In presentation mode the panels and the editor are hidden behind F6 (View > Show Panels
+    // in Presentation Mode), so the view keeps the screen; B or . blanks it (the clicker's
+    // keys, main_window_presentation.cpp).
+    void setPresentationPanels(bool shown);
+    bool presentationPanelsShown() const;
+    ScreenBlank *screenBlank() const { return m_blank; }
     // The UI scale of the current mode (1.0 to 2.5), kept per mode in the settings.
     void setUiScale(double scale);
     double uiScale() const;
@@ -132,6 +139,15 @@ private:
     void keepUnsavedSession();
     void buildMenus();
     void addViewMenu(QMenu *view);
+    // The clicker's keys and presentation mode's own actions (main_window_presentation.cpp).
+    void addPresentationActions(QMenu *view);
+    void blankPressed();                 // B or .: the screen black in presentation mode
+    void escapePressed();                // Esc: out of presentation mode, else the probe cleared
+    void presentationChanged();          // after setPresentation(): panels, status line, blank
+    bool presentationEditorFits() const; // the editor fits beside a view of 60% of the width
+    void styleDockTabs(); // the docks' tab bars: names whole, their font in presentation mode
+    QFont presentationTabFont() const; // 140% where the UI is larger: the names fit 720 lines
+    int presentationTabsWidth() const; // the column of tabs down the edge in presentation mode
     void updateStatus();
     void updateTitle();
     void showProgramUsage(const ProgramBuild &build);
@@ -196,6 +212,9 @@ private:
     QRect m_available; // the screen area the window was fitted to
     QAction *m_presentationAction = nullptr;
     QActionGroup *m_scaleGroup = nullptr;
+    QAction *m_panelsAction = nullptr;      // F6: the panels shown in presentation mode
+    QAction *m_fadedArrowsAction = nullptr; // the probe's arrows faded over the surface
+    ScreenBlank *m_blank = nullptr;
     SettingsAutosave *m_autosave; // saves shortly after each change, so a kill loses little
     ExercisePanel *m_exercisePanel;
     QDockWidget *m_exerciseDock;

@@ -245,6 +245,7 @@ void MainWindow::showCase(int index)
         shown.compare.shading = e->reference.shading;
         shown.compare.specular = e->reference.specular;
     }
+    m_probe->clear(); // its arrows and names belonged to the view left behind
     m_document.set(shown);
     m_exercisePanel->markShownCase(index);
     m_status->showMessage(tr("Case %1 in the difference view (key C: the other compare views; "
@@ -260,8 +261,10 @@ Scene MainWindow::ownScene() const
 
 void MainWindow::showOwnScene()
 {
-    if (m_ownScene)
+    if (m_ownScene) {
+        m_probe->clear(); // a point probed on the case is no point of this view
         m_document.set(*m_ownScene);
+    }
     m_ownScene.reset();
     m_exercisePanel->markShownCase(-1);
 }

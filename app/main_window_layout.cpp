@@ -4,7 +4,9 @@
 
 #include "editor_panel.h"
 #include "main_window_settings.h"
+#include "probe_panel.h"
 #include "scene_actions.h"
+#include "viewport.h"
 
 #include <QAction>
 #include <QActionGroup>
@@ -16,6 +18,7 @@
 #include <QScrollBar>
 #include <QSettings>
 #include <QStatusBar>
+#include <QStyle>
 #include <QTabBar>
 #include <QTimer>
 
@@ -109,21 +112,20 @@ void MainWindow::arrangeDocks(DockLayout layout)
             tabifyDockWidget(light, m_panelDocks[i]);
     }
     applyTabPositions();
+    // In presentation mode the docks wait behind F6 unless it showed them.
+    const bool shown = layout != DockLayout::Presentation || presentationPanelsShown();
     for (QDockWidget *dock : m_panelDocks) // the Exercise panel only with an exercise open
-        dock->setVisible(dock != m_exerciseDock || m_sceneActions->exercise().has_value());
-    m_editorDock->show();
+        dock->setVisible(shown &&
+                         (dock != m_exerciseDock || m_sceneActions->exercise().has_value()));
+    m_editorDock->setVisible(shown &&
+                             (layout != DockLayout::Presentation || presentationEditorFits()));
     (layout == DockLayout::Wide                                    ? shading
      : layout == DockLayout::Presentation && presentationIsShort() ? m_editorDock
                                                                    : light)
         ->raise();
     applyDockWidths();
-    // The docks' tab bars exist once the layout has run: names whole, scrolled when short.
-    QTimer::singleShot(0, this, [this] {
-        for (QTabBar *bar : findChildren<QTabBar *>(Qt::FindDirectChildrenOnly)) {
-            bar->setElideMode(Qt::ElideNone);
-            bar->setUsesScrollButtons(true);
-        }
-    });
+    // The docks' tab bars exist once the layout has run.
+    QTimer::singleShot(0, this, &MainWindow::styleDockTabs);
 }
 
 bool MainWindow::presentationIsShort() const
@@ -135,7 +137,10 @@ void MainWindow::applyTabPositions()
 {
     setTabPosition(Qt::LeftDockWidgetArea,
                    m_layout == DockLayout::Compact ? QTabWidget::West : QTabWidget::North);
-    setTabPosition(Qt::RightDockWidgetArea, QTabWidget::North);
+    // Presentation: the tabs down the right edge, one narrow column whose names stay whole at
+    // 200%; a row above a column of 38% would scroll them out of sight.
+    setTabPosition(Qt::RightDockWidgetArea,
+                   m_layout == DockLayout::Presentation ? QTabWidget::East : QTabWidget::North);
 }
 
 void MainWindow::applyDockWidths()
@@ -151,8 +156,18 @@ void MainWindow::applyDockWidths()
     if (m_layout == DockLayout::Presentation) {
         // The editor over the panels on the right; the view has the rest of the width.
         const int h = std::max(height() - menuBar()->height() - statusBar()->height(), 100);
-        resizeDocks({m_editorDock}, {shares.editor}, Qt::Horizontal);
-        if (!presentationIsShort())
+        // Without the editor (it did not fit), the panels have the column.
+        QDockWidget *column = m_editorDock->isVisible() ? m_editorDock : m_panelDocks[0];
+        // The column of tabs down the edge is outside the dock's width.
+        const int tabs = presentationTabsWidth();
+        // The widest panel's form where that fits in 39.5% (with the tabs), so it does not
+        // scroll sideways; never more: the view keeps 60%.
+        const int need =
+            panelsNeed() + 2 * column->style()->pixelMetric(QStyle::PM_DockWidgetFrameWidth);
+        resizeDocks({column},
+                    {std::min(std::max(shares.editor - tabs, need), int(w * 0.395) - tabs)},
+                    Qt::Horizontal);
+        if (!presentationIsShort() && m_editorDock->isVisible())
             resizeDocks({m_editorDock, m_panelDocks[0]}, {h * 7 / 10, h * 3 / 10}, Qt::Vertical);
         return;
     }
@@ -237,6 +252,7 @@ void MainWindow::setPresentation(bool on)
     }
     if (m_presentationAction)
         m_presentationAction->setChecked(on);
+    presentationChanged(); // the panels behind F6, the status line, the blank screen
 }
 
 void MainWindow::setUiScale(double scale)
@@ -259,6 +275,12 @@ void MainWindow::applyScale()
     const double scale = uiScale();
     applyUiScale(scale);
     m_editor->setUiScale(scale);
+    m_viewport->setUiScale(scale); // the texts over the view
+    QTimer::singleShot(0, this, &MainWindow::styleDockTabs);
+    // The probe's equation (lines of 70 characters) in presentation mode at the 100% size,
+    // where the panels share 38% of the width: wrapped twice, not every 30 characters (it is
+    // the teacher's to read; the class reads the view).
+    m_probe->setEquationShare(m_presentation ? 1.0 / scale : 1.0);
     if (m_scaleGroup)
         for (QAction *a : m_scaleGroup->actions())
             a->setChecked(a->data().toInt() == int(std::lround(scale * 100.0)));

@@ -40,7 +40,7 @@ void MainWindow::buildMenus()
     m_lessons->addToMenu(file);
     file->addSeparator();
     m_checkAction =
-        addItem(file, tr("Chec&k My Work"), QKeySequence(tr("F5")), [this] { checkWork(); });
+        addItem(file, tr("Chec&k My Work"), QKeySequence(tr("F9")), [this] { checkWork(); });
     m_checkAction->setEnabled(m_sceneActions->exercise() &&
                               m_sceneActions->exercise()->unread.isUndefined());
     addItem(file, tr("Side B: Shader Files..."), QKeySequence(), [this] { chooseSideBFiles(); });
@@ -90,22 +90,25 @@ void MainWindow::buildMenus()
                 s.shading.shading == Shading::Phong ? Shading::Gouraud : Shading::Phong;
         });
     });
-    addItem(shading, tr("Toggle Phong / &Blinn-Phong specular"), QKeySequence(tr("B")), [this] {
-        if (m_shaders.fixedModel().blinn) {
-            m_status->showMessage(tr("The program in the editor (%1) computes its own specular "
-                                     "term: load a preset or Reset Everything to switch it.")
-                                      .arg(m_editor->programName()));
-            return;
-        }
-        if (!m_shading->specularCombo()->isEnabled()) { // the program reads no uSpecularModel
-            m_status->showMessage(m_shading->specularCombo()->toolTip());
-            return;
-        }
-        m_document.edit([](Scene &s) {
-            s.shading.specular = s.shading.specular == SpecularModel::Blinn ? SpecularModel::Phong
-                                                                            : SpecularModel::Blinn;
+    // Ctrl+B, not B: a clicker's "blank screen" key is B (blankPressed()).
+    addItem(
+        shading, tr("Toggle Phong / &Blinn-Phong specular"), QKeySequence(tr("Ctrl+B")), [this] {
+            if (m_shaders.fixedModel().blinn) {
+                m_status->showMessage(tr("The program in the editor (%1) computes its own specular "
+                                         "term: load a preset or Reset Everything to switch it.")
+                                          .arg(m_editor->programName()));
+                return;
+            }
+            if (!m_shading->specularCombo()->isEnabled()) { // the program reads no uSpecularModel
+                m_status->showMessage(m_shading->specularCombo()->toolTip());
+                return;
+            }
+            m_document.edit([](Scene &s) {
+                s.shading.specular = s.shading.specular == SpecularModel::Blinn
+                                         ? SpecularModel::Phong
+                                         : SpecularModel::Blinn;
+            });
         });
-    });
     addItem(shading, tr("Toggle &Perspective / Orthographic"), QKeySequence(tr("P")), [this] {
         m_document.edit([](Scene &s) {
             s.shading.projection = s.shading.projection == Projection::Perspective
@@ -138,7 +141,8 @@ void MainWindow::buildMenus()
     menuBar()->addMenu(view);
     addItem(view, tr("&Reset Camera"), QKeySequence(tr("R")),
             [this] { m_viewport->resetCamera(); });
-    addItem(view, tr("Clear the &Probe"), QKeySequence(tr("Esc")), [this] { m_probe->clear(); });
+    addItem(view, tr("Clear the &Probe (in Presentation Mode: Leave It)"), QKeySequence(tr("Esc")),
+            [this] { escapePressed(); });
     addItem(view, tr("&Auto-rotate"), QKeySequence(tr("Space")), [this] {
         m_document.edit([](Scene &s) {
             bool &turning = s.selectedObject().autoRotate;
@@ -170,12 +174,7 @@ void MainWindow::addViewMenu(QMenu *view)
     zoomReset->setShortcut(QKeySequence(tr("Ctrl+0")));
 
     view->addSeparator();
-    m_presentationAction =
-        view->addAction(tr("&Presentation Mode"), this, [this](bool on) { setPresentation(on); });
-    m_presentationAction->setCheckable(true);
-    m_presentationAction->setShortcut(QKeySequence(tr("F11")));
-    m_presentationAction->setToolTip(
-        tr("Full screen, the presentation UI scale, the view and the editor large"));
+    addPresentationActions(view);
     QMenu *scale = view->addMenu(tr("UI &Scale"));
     m_scaleGroup = new QActionGroup(this);
     for (int percent : kScalePercents) {

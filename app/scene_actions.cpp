@@ -77,7 +77,7 @@ QList<QPair<QString, QString>> SceneActions::examples()
         {tr("A light in one object's frame (it turns with the torus)"),
          ":/examples/attached_light.json"},
         {tr("Texture filtering: nearest, linear and mipmaps"), ":/examples/texture_filtering.json"},
-        {tr("Exercise: per-fragment lighting (Check My Work, F5)"),
+        {tr("Exercise: per-fragment lighting (Check My Work, F9)"),
          ":/examples/exercise_lighting.json"}};
 }
 

@@ -43,8 +43,8 @@ DockWidths dockWidths(DockLayout layout, int windowWidth)
         return {int(std::lround(std::clamp(w * 0.22, 300.0, 420.0))), int(std::lround(w * 0.32))};
     case DockLayout::Compact:
         return {int(std::lround(std::clamp(w * 0.25, 240.0, 360.0))), int(std::lround(w * 0.29))};
-    case DockLayout::Presentation: // the panels share the editor's column
-        return {int(std::lround(w * 0.45)), int(std::lround(w * 0.45))};
+    case DockLayout::Presentation: // the panels share the editor's column; the view keeps 60%
+        return {int(std::lround(w * 0.38)), int(std::lround(w * 0.38))}; // 2% for the handle
     }
     return {300, 400};
 }

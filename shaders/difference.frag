@@ -7,6 +7,7 @@ uniform sampler2D uA;
 uniform sampler2D uB;
 uniform float uScale;   // the difference, 0 to 1, shown as the top of the scale
 uniform vec2 uPixels;   // the viewport's size in pixels
+uniform vec4 uBar;      // the colour scale: left, bottom, right, top in pixels (differenceScaleBar)
 
 out vec4 fragColor;
 
@@ -22,9 +23,8 @@ vec3 heat(float t)
 void main()
 {
     vec2 px = fUV * uPixels;
-    // The colour scale: 16 px wide, 12 px from the right edge, from 10% to 90% of the height.
-    float barLeft = uPixels.x - 28.0, barRight = uPixels.x - 12.0;
-    float barBottom = 0.1 * uPixels.y, barTop = 0.9 * uPixels.y;
+    // The colour scale, where the viewport writes its numbers (its width follows the UI scale).
+    float barLeft = uBar.x, barBottom = uBar.y, barRight = uBar.z, barTop = uBar.w;
     if (px.x >= barLeft - 1.0 && px.x <= barRight + 1.0 && px.y >= barBottom - 1.0 &&
         px.y <= barTop + 1.0) {
         bool frame = px.x < barLeft || px.x > barRight || px.y < barBottom || px.y > barTop;

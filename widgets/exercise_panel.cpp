@@ -59,7 +59,7 @@ ExercisePanel::ExercisePanel(QWidget *parent) : QWidget(parent)
     m_check = new QPushButton(tr("Check my work"), this);
     m_check->setToolTip(tr("Draws the exercise's cases with the program in the editor and with "
                            "the reference, as the teacher's grading does, and lists each case "
-                           "(F5)"));
+                           "(F9)"));
     connect(m_check, &QPushButton::clicked, this,
             [this] { emit(m_checking ? cancelRequested() : checkRequested()); });
     m_summary = new QLabel(this);
@@ -67,7 +67,7 @@ ExercisePanel::ExercisePanel(QWidget *parent) : QWidget(parent)
     m_summary->setTextFormat(Qt::PlainText);
     m_summary->setTextInteractionFlags(Qt::TextSelectableByMouse);
     m_stale = new QLabel(tr("Out of date: the program in the editor has changed since this "
-                            "check. Check my work (F5) checks it as it is now."),
+                            "check. Check my work (F9) checks it as it is now."),
                          this);
     m_stale->setWordWrap(true);
     m_stale->setStyleSheet("color: #b35900; font-weight: bold;");

@@ -4,17 +4,71 @@
 #include "frames.h"
 
 #include <QEvent>
+#include <QFontMetricsF>
 #include <QPainter>
 #include <QPainterPath>
 
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <cmath>
 
 namespace lb {
 
+namespace {
+// The names' font: the application's, bold, `pixelSize` high (paint and rectangles agree).
+QFont labelFont(int pixelSize)
+{
+    QFont font;
+    font.setBold(true);
+    font.setPixelSize(std::max(pixelSize, 6));
+    return font;
+}
+} // namespace
+
+QRectF probeLabelRect(const PlacedLabel &label, int pixelSize)
+{
+    const QFontMetricsF metrics(labelFont(pixelSize));
+    const double outline = std::max(2.0, pixelSize / 6.0); // the stroke paintProbeLabels draws
+    const double w = metrics.horizontalAdvance(label.text) + 2.0 * outline;
+    const double h = metrics.capHeight() + 2.0 * outline;
+    return QRectF(label.position.x() - w / 2.0, label.position.y() - h / 2.0, w, h);
+}
+
+void separateLabels(std::vector<PlacedLabel> &labels, int pixelSize)
+{
+    constexpr int kRings = 6, kSpots = 12;
+    const auto freeAt = [&](std::size_t i, QPointF at) {
+        PlacedLabel moved = labels[i];
+        moved.position = at;
+        const QRectF r = probeLabelRect(moved, pixelSize);
+        for (std::size_t j = 0; j < i; ++j)
+            if (r.intersects(probeLabelRect(labels[j], pixelSize)))
+                return false;
+        return true;
+    };
+    for (std::size_t i = 1; i < labels.size(); ++i) {
+        const QPointF home = labels[i].position;
+        if (freeAt(i, home))
+            continue;
+        // Rings half a name apart, starting to the right and turning clockwise on screen.
+        bool placed = false;
+        for (int ring = 1; ring <= kRings && !placed; ++ring)
+            for (int spot = 0; spot < kSpots && !placed; ++spot) {
+                const double angle = 2.0 * M_PI * spot / kSpots;
+                const double radius = 0.6 * pixelSize * ring;
+                const QPointF at = home + radius * QPointF(std::cos(angle), std::sin(angle));
+                if (freeAt(i, at)) {
+                    labels[i].position = at;
+                    placed = true;
+                }
+            }
+    }
+}
+
 std::vector<PlacedLabel> placeLabels(const Scene &scene, QSize frame,
-                                     const std::vector<ProbeLabel> &labels, int pixelSize)
+                                     const std::vector<ProbeLabel> &labels, int pixelSize,
+                                     bool separate)
 {
     std::vector<PlacedLabel> placed;
     for (const ProbeLabel &l : labels) {
@@ -32,6 +86,8 @@ std::vector<PlacedLabel> placeLabels(const Scene &scene, QSize frame,
         const glm::vec2 p = tip + away * 0.75f * size;
         placed.push_back({QPointF(p.x, p.y) + QPointF(view.topLeft()), l.text, l.colour});
     }
+    if (separate)
+        separateLabels(placed, pixelSize);
     return placed;
 }
 
@@ -41,9 +97,7 @@ void paintProbeLabels(QPainter &painter, const std::vector<PlacedLabel> &labels,
         return;
     painter.save();
     painter.setRenderHint(QPainter::Antialiasing);
-    QFont font = painter.font();
-    font.setBold(true);
-    font.setPixelSize(std::max(pixelSize, 6));
+    const QFont font = labelFont(pixelSize);
     const QFontMetricsF metrics(font);
     for (const PlacedLabel &l : labels) {
         // The outline is a stroked path of the glyphs: crisp at any size, unlike text drawn

@@ -8,6 +8,7 @@
 
 #include <QColor>
 #include <QPointF>
+#include <QRectF>
 #include <QWidget>
 
 #include <glm/vec3.hpp>
@@ -40,8 +41,17 @@ struct PlacedLabel
 // Where the labels land in a frame of `frame` pixels showing `scene`: past the arrow's tip on
 // screen, by about half the names' height `pixelSize`, so a name never hides its arrow or the
 // point (V, pointing at the eye, is a dot: its name goes up and right of it).
+// `separate`: a name that would overlap one placed before it moves to the nearest free spot
+// around its place (separateLabels); false only to see where they would overlap.
 std::vector<PlacedLabel> placeLabels(const Scene &scene, QSize frame,
-                                     const std::vector<ProbeLabel> &labels, int pixelSize);
+                                     const std::vector<ProbeLabel> &labels, int pixelSize,
+                                     bool separate = true);
+// The rectangle a name covers when painted `pixelSize` high at its position, outline included.
+QRectF probeLabelRect(const PlacedLabel &label, int pixelSize);
+// Moves names off each other's rectangles (L under H, V under H when the light is near the
+// eye): each in turn, if it overlaps one before it, goes to the first free spot on rings
+// around its place. Bounded: a few rings of twelve spots each, whatever the input.
+void separateLabels(std::vector<PlacedLabel> &labels, int pixelSize);
 // Paints the names centred on their positions (the painter's coordinates), bold, `pixelSize`
 // pixels high, in their colour with a dark outline that keeps them readable on any surface.
 void paintProbeLabels(QPainter &painter, const std::vector<PlacedLabel> &labels, int pixelSize);

@@ -4,6 +4,7 @@
 #include "viewport.h"
 
 #include <QClipboard>
+#include <QFontInfo>
 #include <QGuiApplication>
 #include <QLabel>
 #include <QPushButton>
@@ -99,6 +100,14 @@ void ProbePanel::setReferenceNote(const QString &note)
     if (note == m_referenceNote)
         return;
     m_referenceNote = note;
+    showText();
+}
+
+void ProbePanel::setEquationShare(double share)
+{
+    if (share == m_equationShare)
+        return;
+    m_equationShare = share;
     showText();
 }
 
@@ -293,8 +302,11 @@ void ProbePanel::showText()
     // The equation with the numbers, as the course writes it (also copied by the button).
     m_equation = lightingEquation(side, r);
     m_copyEquation->setEnabled(!m_equation.isEmpty());
-    html += QString("<hr><b>%1</b><pre style='white-space: pre-wrap'>%2</pre>")
-                .arg(tr("The equation at this point"), m_equation.toHtmlEscaped());
+    const int equationPixels =
+        std::max(8, int(std::lround(QFontInfo(font()).pixelSize() * m_equationShare)));
+    html += QString("<hr><b>%1</b><pre style='white-space: pre-wrap; font-size: %3px'>%2</pre>")
+                .arg(tr("The equation at this point"), m_equation.toHtmlEscaped())
+                .arg(equationPixels);
     if (!m_referenceNote.isEmpty())
         html += QString("<p><i>%1</i></p>").arg(m_referenceNote.toHtmlEscaped());
     if (m_point->sideB && sideBProgram)

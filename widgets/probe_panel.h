@@ -37,6 +37,8 @@ public:
     // What the reference does not know about the program on screen ("it computes V =
     // (0,0,1)..."), shown under the numbers; empty for none.
     void setReferenceNote(const QString &note);
+    // The equation's monospace as a share of the panel's font (1: the same size).
+    void setEquationShare(double share);
     // The GPU's pixel at the point, once the viewport has drawn it: the surface's, never a
     // marker's, a normal line's or an arrow's.
     std::optional<glm::ivec3> gpuColour() const { return m_gpu; }
@@ -70,6 +72,7 @@ private:
     ProbeResult m_result;
     std::optional<glm::ivec3> m_gpu, m_reference;
     QString m_referenceNote, m_sideBReference, m_referenceName;
+    double m_equationShare = 1.0;
 };
 
 } // namespace lb

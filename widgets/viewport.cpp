@@ -1,5 +1,7 @@
 #include "viewport.h"
 
+#include "difference_scale_labels.h"
+
 #include "loops.h"
 #include "presets.h"
 #include "program_trial.h"
@@ -51,6 +53,7 @@ Viewport::Viewport(SceneDocument *document, QWidget *parent)
                                   "padding: 3px 6px; }");
     m_compareLabel->hide();
     m_labels = new ProbeLabels(document, this);
+    m_differenceLabels = new DifferenceScaleLabels(this);
     m_trialProcess = new TrialProcess(this);
     connect(m_trialProcess, &TrialProcess::built, this, &Viewport::candidateBuilt);
     connect(m_trialProcess, &TrialProcess::finished, this, &Viewport::trialFinished);
@@ -200,64 +203,6 @@ void Viewport::setProbe(std::vector<Renderer::Arrow> arrows, QPoint pixel,
     m_renderer.setProbeAgainstSideB(againstSideB);
     m_labels->setLabels(std::move(labels));
     update();
-}
-
-QString Viewport::compareText() const
-{
-    const Scene &s = m_document->scene();
-    const QString b =
-        !m_sideBVertex.isEmpty()
-            ? tr("B: %1").arg(m_sideBName.isEmpty() ? tr("the reference program") : m_sideBName)
-            : tr("B: built-in %1, %2")
-                  .arg(s.compare.shading == Shading::Gouraud ? tr("Gouraud")
-                       : s.compare.shading == Shading::Flat  ? tr("flat")
-                                                             : tr("Phong"),
-                       s.compare.specular == SpecularModel::Blinn ? tr("Blinn-Phong (N\u00b7H)")
-                                                                  : tr("Phong (R\u00b7V)"));
-    switch (s.compare.mode) {
-    case CompareMode::Off:
-        return {};
-    case CompareMode::SideBySide:
-    case CompareMode::Wipe:
-        return tr("A (left): %1  |  %2 (right)")
-            .arg(m_programName.isEmpty() ? tr("the program on screen") : m_programName, b);
-    case CompareMode::Difference: {
-        const DifferenceStats &d = m_renderer.difference();
-        if (!d.valid)
-            return tr("|A - B|: not drawn yet");
-        // The share within the tolerance of the pixels drawn, as Check My Work counts a case.
-        return tr("|A - B|, A: %7, %1: largest %2/255 at (%3, %4); %5% of the drawn pixels "
-                  "within %8/255; scale 0 (black) to %6/255 (white)")
-            .arg(b)
-            .arg(d.largest)
-            .arg(d.at.x())
-            .arg(d.at.y())
-            .arg(std::floor(d.shareWithin * 1000.0) / 10.0, 0, 'f', 1)
-            .arg(int(std::lround(kDifferenceScale * 255.0f)))
-            .arg(m_programName.isEmpty() ? tr("the program on screen") : m_programName)
-            .arg(d.tolerance);
-    }
-    }
-    return {};
-}
-
-void Viewport::setProgramName(const QString &name)
-{
-    m_programName = name;
-    updateCompareLabel();
-}
-
-void Viewport::updateCompareLabel()
-{
-    const QString text = compareText();
-    m_compareLabel->setText(text);
-    m_compareLabel->setVisible(!text.isEmpty());
-    if (text.isEmpty())
-        return;
-    m_compareLabel->setMaximumWidth(width());
-    m_compareLabel->setWordWrap(true);
-    m_compareLabel->adjustSize();
-    m_compareLabel->move(0, height() - m_compareLabel->height());
 }
 
 bool Viewport::nearWipe(QPoint position) const

@@ -21,6 +21,8 @@ class QLabel;
 
 namespace lb {
 
+class DifferenceScaleLabels;
+
 class Viewport : public QOpenGLWidget
 {
     Q_OBJECT
@@ -55,6 +57,14 @@ public:
     // What the compare view shows, in words (sides, or the largest difference); empty when
     // compare is off.
     QString compareText() const;
+    // The texts over the picture at this UI scale (1 to 2.5; the application's font is
+    // already scaled): banner, compare caption, the colour scale (its bar too) and its
+    // numbers, the probe's names (viewport_captions.cpp).
+    void setUiScale(double scale);
+    QLabel *compareLabel() const { return m_compareLabel; }
+    DifferenceScaleLabels *differenceLabels() const { return m_differenceLabels; }
+    // The probe's arrows thin and see-through (View > Faded Probe Arrows).
+    void setProbeArrowsFaded(bool faded);
     // The name of the program on screen, for side A's words ("Toon (edited)").
     void setProgramName(const QString &name);
     // Side B of the compare views draws this program (an exercise's reference; `name` for
@@ -162,6 +172,7 @@ private:
     bool m_draggingWipe = false;
     bool m_probing = false; // a probe click held down: the probe follows the mouse
     ProbeLabels *m_labels;
+    DifferenceScaleLabels *m_differenceLabels;
     // The last sources that linked, built again when the widget gets a new context, and the
     // ones asked for before there was a context.
     QString m_goodVertex, m_goodFragment;

@@ -119,15 +119,25 @@ void Overlays::drawNormals(QOpenGLExtraFunctions &gl, const GpuMesh &mesh, const
 }
 
 void Overlays::drawArrows(QOpenGLExtraFunctions &gl, const std::vector<ProbeArrow> &arrows,
-                          const Frames &frames)
+                          const Frames &frames, bool faded)
 {
+    if (faded) { // a constant alpha: the unlit program needs no change
+        gl.glEnable(GL_BLEND);
+        gl.glBlendColor(0.0f, 0.0f, 0.0f, 0.4f);
+        gl.glBlendFunc(GL_CONSTANT_ALPHA, GL_ONE_MINUS_CONSTANT_ALPHA);
+    }
     for (const ProbeArrow &a : arrows) {
         const float length = glm::length(a.direction);
         if (length <= 0.0f)
             continue;
-        useUnlit(gl, orientAlong(a.origin, a.direction, length), frames.projection, a.colour);
+        glm::mat4 modelView = orientAlong(a.origin, a.direction, length);
+        if (faded) // thinner across, as long
+            modelView = glm::scale(modelView, glm::vec3(0.5f, 0.5f, 1.0f));
+        useUnlit(gl, modelView, frames.projection, a.colour);
         m_arrow.draw(gl);
     }
+    if (faded)
+        gl.glDisable(GL_BLEND);
 }
 
 } // namespace lb

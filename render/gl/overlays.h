@@ -38,9 +38,10 @@ public:
     // The mesh's normals as lines, transformed by mNormals as the shaders do.
     void drawNormals(QOpenGLExtraFunctions &gl, const GpuMesh &mesh, const Scene &scene,
                      const Frames &frames);
-    // Arrows drawn with the bound viewport's projection; the caller turns depth off.
+    // Arrows drawn with the bound viewport's projection; the caller turns depth off. `faded`:
+    // half as thick and blended 40% over the picture, so a highlight under them stays seen.
     void drawArrows(QOpenGLExtraFunctions &gl, const std::vector<ProbeArrow> &arrows,
-                    const Frames &frames);
+                    const Frames &frames, bool faded = false);
 
 private:
     void useUnlit(QOpenGLExtraFunctions &gl, const glm::mat4 &modelView,

@@ -436,7 +436,7 @@ void Renderer::drawProbe(const Scene &scene, QSize pixels)
         const QRect view = viewRect(scene, pixels, sideB);
         setViewport(*this, view, pixels.height());
         const Frames frames = computeFrames(scene, float(view.width()) / float(view.height()));
-        m_overlays.drawArrows(*this, m_probeArrows, frames);
+        m_overlays.drawArrows(*this, m_probeArrows, frames, m_probeArrowsFaded);
     }
 }
 
@@ -480,6 +480,8 @@ void Renderer::drawDifference(const Scene &scene, QSize pixels)
     uploadNamed(*this, uniforms, "uScale", UniformValue::ofNumber(kDifferenceScale));
     uploadNamed(*this, uniforms, "uPixels",
                 UniformValue::ofVector(glm::vec4(pixels.width(), pixels.height(), 0, 0)));
+    uploadNamed(*this, uniforms, "uBar",
+                UniformValue::ofVector(differenceScaleBarEdges(pixels, m_uiScale)));
     m_screenTriangle.draw(*this);
     glBindTexture(GL_TEXTURE_2D, 0);
     glActiveTexture(GL_TEXTURE0);

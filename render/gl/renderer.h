@@ -61,6 +61,11 @@ public:
     // tolerance for its share within (an open exercise's, as Check My Work counts).
     const DifferenceStats &difference() const { return m_difference; }
     void setDifferenceTolerance(int tolerance) { m_differenceTolerance = tolerance; }
+    // The UI scale the difference view's colour scale is drawn for (differenceScaleBar).
+    void setUiScale(double scale) { m_uiScale = scale; }
+    // The probe's arrows thin and see-through, so the surface under them stays visible.
+    void setProbeArrowsFaded(bool faded) { m_probeArrowsFaded = faded; }
+    bool probeArrowsFaded() const { return m_probeArrowsFaded; }
 
     // Builds a program from the user's sources. When it links it replaces the user program
     // (the object is drawn with it instead of the built-in pair); when it does not, whatever
@@ -171,6 +176,8 @@ private:
     GpuMesh m_screenTriangle; // covers the viewport: the difference pass draws it
     DifferenceStats m_difference;
     int m_differenceTolerance = 2;
+    double m_uiScale = 1.0;
+    bool m_probeArrowsFaded = false;
     std::vector<Arrow> m_probeArrows;
     QPoint m_probePixel{-1, -1};
     bool m_readingProbe = false; // while render() draws the views the user sees

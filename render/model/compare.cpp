@@ -16,6 +16,21 @@ Scene sceneOfSide(const Scene &scene, bool sideB)
     return s;
 }
 
+QRect differenceScaleBar(QSize frame, double uiScale)
+{
+    const int width = int(std::lround(16.0 * uiScale)), margin = int(std::lround(12.0 * uiScale));
+    const int top = int(std::lround(0.1 * frame.height()));
+    const int bottom = int(std::lround(0.9 * frame.height()));
+    return QRect(frame.width() - margin - width, top, width, std::max(bottom - top, 1));
+}
+
+glm::vec4 differenceScaleBarEdges(QSize frame, double uiScale)
+{
+    const QRect bar = differenceScaleBar(frame, uiScale);
+    return glm::vec4(bar.left(), frame.height() - bar.bottom() - 1, bar.right() + 1,
+                     frame.height() - bar.top());
+}
+
 QRect viewRect(const Scene &scene, QSize frame, bool sideB)
 {
     if (scene.compare.mode != CompareMode::SideBySide)

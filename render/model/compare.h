@@ -12,10 +12,22 @@
 
 #include <cstdint>
 
+#include <glm/vec4.hpp>
+
 namespace lb {
 
 // |A - B| at or above this (out of 1) is white in the difference view's heat map.
 constexpr float kDifferenceScale = 64.0f / 255.0f;
+
+// The difference view's colour scale: a bar up the right edge of a frame of `frame` pixels
+// (top-left origin), from 10% to 90% of its height, 16 pixels wide and 12 from the edge at UI
+// scale 1, wider with `uiScale` so it is seen, and named, from the back row. The renderer draws
+// it; the viewport writes its numbers beside it.
+QRect differenceScaleBar(QSize frame, double uiScale);
+// The same bar as GL's window coordinates (bottom-left origin): left, bottom, right, top.
+glm::vec4 differenceScaleBarEdges(QSize frame, double uiScale);
+// The differences (out of 255) the scale's ticks name, from 0 to the top (kDifferenceScale).
+constexpr int kDifferenceTickStep = 16;
 
 // The colour a view is cleared to where nothing is drawn (the renderer's), and as it reads
 // back in 8 bits: grading and the tests tell drawn pixels from it.

@@ -355,7 +355,7 @@ private slots:
         QTest::keyClick(m_window.get(), Qt::Key_G);
         QCOMPARE(scene().shading.shading, Shading::Gouraud);
         QCOMPARE(m_window->shadingPanel()->shadingCombo()->currentIndex(), 0);
-        QTest::keyClick(m_window.get(), Qt::Key_B);
+        QTest::keyClick(m_window.get(), Qt::Key_B, Qt::ControlModifier); // B blanks the screen
         QCOMPARE(scene().shading.specular, SpecularModel::Phong);
         QTest::keyClick(m_window.get(), Qt::Key_P);
         QCOMPARE(scene().shading.projection, Projection::Orthographic);

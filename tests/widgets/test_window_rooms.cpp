@@ -120,7 +120,9 @@ private slots:
         settle();
         QCOMPARE(QApplication::font().pointSizeF(), 2.0 * basePoints);
         QVERIFY(m_window->editorPanel()->fontPointSize() > before * 1.8);
-        // A 1280x720 projector: the presentation layout at 200% fits it.
+        // A 1280x720 projector: the presentation layout at 200% fits it, with the panels shown
+        // (F6; hidden, the view has the screen: test_window_present).
+        m_window->setPresentationPanels(true);
         m_window->showNormal();
         m_window->setGeometry(0, 0, 1280, 720);
         m_window->arrangeDocks(DockLayout::Presentation);
@@ -133,11 +135,23 @@ private slots:
         QCOMPARE(m_window->size(), QSize(1280, 720));
         qInfo("presentation at 200%% on 1280x720: view %.2f, editor %d px, panels %d px",
               viewShare(), m_window->editorDock()->width(), m_window->panelDocks()[0]->width());
-        QVERIFY(viewShare() >= 0.5);
-        QVERIFY(m_window->editorDock()->width() >= 0.4 * 1280);
-        QVERIFY(m_window->editorDock()->height() >= 0.5 * 720);
-        const QString sideways = docksNeedingSideways();
-        QVERIFY2(sideways.isEmpty(), qPrintable("horizontal scrollbar in " + sideways));
+        QVERIFY(viewShare() >= 0.6);
+        // The editor over the panels (or, where it needs more than the column, the panels
+        // alone), a third of the width, beside the tabs down its edge.
+        QVERIFY(m_window->panelDocks()[0]->width() >= 0.33 * 1280);
+        if (m_window->editorDock()->isVisible())
+            QVERIFY(m_window->editorDock()->width() >= 0.33 * 1280);
+        // At 200% the widest forms (Shading, 473 px) need a little more than the column left
+        // beside the view's 60% and the tabs down its edge: they may scroll sideways, by 60 px
+        // at most.
+        for (QDockWidget *dock : m_window->panelDocks()) {
+            dock->raise();
+            QCoreApplication::processEvents();
+            auto *scroll = qobject_cast<QScrollArea *>(dock->widget());
+            QVERIFY2(scroll->widget()->minimumSizeHint().width() <=
+                         scroll->viewport()->width() + 60,
+                     qPrintable(dock->windowTitle()));
+        }
         // The scale is kept per mode; leaving presentation brings back the window as it was.
         m_window->setPresentation(false);
         settle();
@@ -513,7 +527,10 @@ private slots:
         // Read from the menus: each key beside its action.
         for (const char *row : {"<b>Ctrl+S</b></td><td>File &gt; Save Scene",
                                 "<b>Ctrl+O</b></td><td>File &gt; Open Scene",
-                                "<b>F11</b></td><td>View &gt; Presentation Mode",
+                                "<b>F11 or F5</b></td><td>View &gt; Presentation Mode",
+                                "<b>Ctrl+B</b></td><td>Shading &gt; Toggle Phong / Blinn-Phong",
+                                "<b>F9</b></td><td>File &gt; Check My Work",
+                                "<b>B or .</b></td><td>View &gt; Blank the Screen",
                                 "Ctrl+=</b></td><td>View &gt; Zoom In Editor",
                                 "<b>Ctrl+Shift+R</b></td><td>File &gt; Reset Everything",
                                 "<b>Ctrl+Alt+S</b></td><td>File &gt; Save Shaders"})
