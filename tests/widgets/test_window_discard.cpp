@@ -383,20 +383,11 @@ private slots:
         const QString scene = m_dir.filePath("scripted.json");
         QCOMPARE(m_window->sceneActions()->save(scene), QString());
         QTemporaryDir config;
-        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
-        env.insert("XDG_CONFIG_HOME", config.path());
-        QProcess run;
-        run.setProcessEnvironment(env);
         const QString png = config.filePath("shot.png");
-        run.start(LIGHTBENCH_EXE, {"--scene", scene, "--shininess", "77", "--screenshot", png});
-        const bool finished = run.waitForFinished(60000);
-        if (!finished) {
-            run.kill();
-            run.waitForFinished();
-        }
-        QVERIFY2(finished, "the scripted run waited");
-        const QByteArray err = run.readAllStandardError();
-        QCOMPARE(run.exitCode(), 0);
+        QByteArray err;
+        QCOMPARE(runLightbench({"--scene", scene, "--shininess", "77", "--screenshot", png},
+                               config.path(), &err),
+                 0); // -1: the scripted run waited
         QVERIFY(QFile::exists(png));
         QVERIFY2(err.contains("closed without asking"), err.constData());
         QCOMPARE(shininessIn(scene), Scene{}.objects[0].material.shininess);

@@ -237,19 +237,10 @@ private slots:
         const LessonRead read = readLessonFile(path);
         QVERIFY(read.lesson);
         QTemporaryDir config;
-        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
-        env.insert("XDG_CONFIG_HOME", config.path());
-        QProcess run;
-        run.setProcessEnvironment(env);
         const QString png = config.filePath("shot.png");
-        run.start(LIGHTBENCH_EXE, {"--lesson", path, "--step", "2", "--screenshot", png});
-        const bool finished = run.waitForFinished(60000);
-        if (!finished) {
-            run.kill();
-            run.waitForFinished();
-        }
-        QVERIFY2(finished, "the run waited");
-        QCOMPARE(run.exitCode(), 0);
+        QCOMPARE(
+            runLightbench({"--lesson", path, "--step", "2", "--screenshot", png}, config.path()),
+            0); // -1: it waited
         QVERIFY(!QImage(png).isNull());
         QSettings session(config.filePath("lightbench/lightbench.conf"), QSettings::IniFormat);
         const Scene saved = Scene::fromJson(

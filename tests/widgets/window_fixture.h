@@ -65,6 +65,28 @@ extern const QString kMalformed; // an OBJ that Assimp refuses
 // sizes differ.
 int imageDifference(const QImage &a, const QImage &b);
 
+#ifdef LIGHTBENCH_EXE
+// The real executable with `args`, its settings in `configDir` (as XDG_CONFIG_HOME), waited
+// for up to a minute, then killed. Its exit code, or -1 when it had to be killed.
+inline int runLightbench(const QStringList &args, const QString &configDir,
+                         QByteArray *err = nullptr)
+{
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    env.insert("XDG_CONFIG_HOME", configDir);
+    QProcess run;
+    run.setProcessEnvironment(env);
+    run.start(LIGHTBENCH_EXE, args);
+    if (!run.waitForFinished(60000)) {
+        run.kill();
+        run.waitForFinished();
+        return -1;
+    }
+    if (err)
+        *err = run.readAllStandardError();
+    return run.exitCode();
+}
+#endif
+
 class WindowTest : public QObject
 {
     Q_OBJECT
