@@ -7,6 +7,7 @@
 #include "lesson_pointer.h"
 #include "main_window.h"
 #include "main_window_settings.h"
+#include "message_box.h"
 #include "message_text.h"
 #include "recent_files.h"
 #include "scene_actions.h"
@@ -393,14 +394,7 @@ void LessonActions::showOpenDialog()
 
 void LessonActions::showMessage(QMessageBox::Icon icon, const QString &text, const QString &details)
 {
-    // Not modal, as the scene's messages: the window stays usable behind it.
-    if (m_messageBox)
-        m_messageBox->close();
-    m_messageBox = new QMessageBox(icon, tr("Lesson"), text, QMessageBox::Ok, m_window);
-    m_messageBox->setInformativeText(details);
-    m_messageBox->setAttribute(Qt::WA_DeleteOnClose);
-    m_messageBox->setWindowModality(Qt::NonModal);
-    m_messageBox->show();
+    showFileMessage(m_messageBox, m_window, icon, tr("Lesson"), text, details);
 }
 
 } // namespace lb

@@ -2,6 +2,7 @@
 
 #include "load_progress.h"
 #include "main_window_settings.h"
+#include "message_box.h"
 #include "preferences_dialog.h"
 #include "recent_files.h"
 #include "status_line.h"
@@ -254,14 +255,7 @@ void MeshActions::showError(const QString &title, const QString &text, const QSt
         showStatusMessage(m_window, message, 10000);
         return;
     }
-    // Not modal for the application: the window stays usable behind the message.
-    if (m_errorBox)
-        m_errorBox->close();
-    m_errorBox = new QMessageBox(QMessageBox::Warning, title, text, QMessageBox::Ok, m_window);
-    m_errorBox->setInformativeText(message);
-    m_errorBox->setAttribute(Qt::WA_DeleteOnClose);
-    m_errorBox->setWindowModality(Qt::NonModal);
-    m_errorBox->show();
+    showFileMessage(m_errorBox, m_window, QMessageBox::Warning, title, text, message);
     showStatusMessage(m_window, message, 10000);
 }
 

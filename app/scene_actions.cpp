@@ -1,6 +1,7 @@
 #include "scene_actions.h"
 
 #include "export_size_dialog.h"
+#include "message_box.h"
 #include "message_text.h"
 #include "recent_files.h"
 #include "safe_write.h"
@@ -276,14 +277,7 @@ void SceneActions::showExportDialog()
 
 void SceneActions::showMessage(QMessageBox::Icon icon, const QString &text, const QString &details)
 {
-    // Not modal: the window stays usable behind it, as with mesh errors.
-    if (m_messageBox)
-        m_messageBox->close();
-    m_messageBox = new QMessageBox(icon, tr("Scene"), text, QMessageBox::Ok, m_window);
-    m_messageBox->setInformativeText(details);
-    m_messageBox->setAttribute(Qt::WA_DeleteOnClose);
-    m_messageBox->setWindowModality(Qt::NonModal);
-    m_messageBox->show();
+    showFileMessage(m_messageBox, m_window, icon, tr("Scene"), text, details);
 }
 
 void SceneActions::setDocument(const QString &origin)
