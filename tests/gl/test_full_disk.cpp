@@ -3,6 +3,7 @@
 // Saving a scene, a shader pair, a PNG, the CSV report and a grading sheet onto it each fail
 // with the system's reason and a non-zero exit, and the old file's bytes are unchanged. (A
 // scene used to become a 0-byte file with exit 0.) The window's settings file stays whole too.
+#include "lesson.h"
 #include "safe_write.h"
 #include "settings_store.h"
 
@@ -115,6 +116,7 @@ private slots:
         QTest::newRow("--report (CSV)") << "csv";
         QTest::newRow("--sheets (a grading sheet)") << "sheet";
         QTest::newRow("a shader pair (File > Save Shaders)") << "pair";
+        QTest::newRow("a lesson (Lesson > Save Lesson)") << "lesson";
     }
 
     void eachWriterSaysWhyAndKeepsTheOldFile()
@@ -127,10 +129,11 @@ private slots:
             QVERIFY(disk.mkdir("sheets"));
             target = disk.filePath("sheets/correct.png");
         } else {
-            target = disk.filePath(what == "scene" ? "s.json"
-                                   : what == "png" ? "r.png"
-                                   : what == "csv" ? "r.csv"
-                                                   : "pair.vert");
+            target = disk.filePath(what == "scene"    ? "s.json"
+                                   : what == "png"    ? "r.png"
+                                   : what == "csv"    ? "r.csv"
+                                   : what == "lesson" ? "l.json"
+                                                      : "pair.vert");
         }
         QVERIFY(write(target, old));
         const QString fragment = disk.filePath("pair.frag");
@@ -144,6 +147,10 @@ private slots:
                 {{target, "attribute vec4 vPosition;\nvoid main() { gl_Position = vPosition; }\n"},
                  {fragment, "void main() { gl_FragColor = vec4(1.0); }\n"}});
             QCOMPARE(contents(fragment), QByteArray("void main() {}\n"));
+        } else if (what == "lesson") {
+            lb::Lesson lesson;
+            lesson.steps.resize(3);
+            message = lb::writeLessonFile(target, lesson);
         } else {
             QStringList args;
             if (what == "scene")

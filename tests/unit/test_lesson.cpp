@@ -6,6 +6,7 @@
 
 #include <QDir>
 #include <QFile>
+#include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -228,6 +229,19 @@ private slots:
         QCOMPARE(read.stepErrors.size(), 3);
         QVERIFY2(read.lesson->steps[3].error.contains("past what is left of the lesson's limit"),
                  qPrintable(read.lesson->steps[3].error));
+    }
+
+    // Saving onto a FIFO (or a folder) is refused, and nothing waits for a reader.
+    void savingOntoAFifoIsRefused()
+    {
+        const QString fifo = QDir(m_dir.path()).filePath("save.fifo");
+        QVERIFY(::mkfifo(qPrintable(fifo), 0600) == 0);
+        Lesson lesson;
+        lesson.steps.resize(1);
+        const QString error = writeLessonFile(fifo, lesson);
+        QVERIFY2(error.startsWith(fifo + ": "), qPrintable(error));
+        QVERIFY(QFileInfo(fifo).isSymLink() || !QFileInfo(fifo).isFile()); // still the FIFO
+        QVERIFY(!writeLessonFile(m_dir.path(), lesson).isEmpty());
     }
 
     void theBuiltInExampleStaysBuiltIn()
