@@ -194,6 +194,9 @@ const OptionSpec kOptions[] = {
      "Open the window in presentation mode: full screen, the presentation UI scale (F11)."},
     {"ui-scale", "PERCENT",
      "UI scale of the window (or of presentation mode with --presentation), 100 to 250; kept."},
+    {"language", "system|en|pt|de",
+     "The window's language for this run (View > Language keeps one; the command line's own "
+     "output is English)."},
     {"bench-frames", "N", "Draw N frames offscreen and print the frame rate as JSON."},
     {"bench-edits", "N", "Open the window, time N shader edits to the screen, print JSON, exit."},
     {"vertex", "FILE", "Vertex shader to draw with instead of the built-in one (with --fragment)."},
@@ -325,6 +328,12 @@ void parseInto(const QCommandLineParser &parser, CommandLine &cl)
     cl.translateWebGl1 = given("translate-webgl1");
     if (given("ui-scale"))
         cl.uiScalePercent = integer("ui-scale", value("ui-scale"), 100, 250);
+    if (given("language")) {
+        const QString language = value("language");
+        if (!QStringList{"system", "en", "pt", "de"}.contains(language))
+            fail("language", QString("expected system, en, pt or de, got '%1'").arg(echoed(language)));
+        cl.language = language == "system" ? QString() : language;
+    }
     cl.check = given("check");
     cl.grade = given("grade");
     if (given("grade-one")) {

@@ -47,6 +47,7 @@ struct CommandLine
     bool presentation = false;         // --presentation: the window full screen, presentation scale
     bool translateWebGl1 = false;      // --translate-webgl1: WebGL 1 shaders as GLSL 3.30
     std::optional<int> uiScalePercent; // --ui-scale PERCENT
+    std::optional<QString> language;   // --language: "" (the system's), "en", "pt", "de"
     bool check = false; // --check: compile and link them, print diagnostics, exit 0 or 1
     int benchEdits = 0; // --bench-edits N (window: edit-to-pixels timing; --vertex/--fragment
                         // add a second pair to time)

@@ -4,6 +4,7 @@
 #include "edit_bench.h"
 #include "grade.h"
 #include "headless.h"
+#include "language.h"
 #include "lesson_actions.h"
 #include "main_window.h"
 #include "mesh_actions.h"
@@ -108,11 +109,10 @@ int main(int argc, char **argv)
         }
     }
 
-    // The window's language is English (its strings are), so its numbers are written the
-    // English way, 1.80 as the probe, the equation and the shaders write them, whatever LANG
-    // says; the number boxes read a point and a comma alike (number_box.h). Issue 31's
-    // language setting replaces this line. Machine output never depends on it: the headless
-    // runs above keep the system's locale, and write numbers with QString::number and JSON.
+    // Numbers are written the English way in every language, 1.80 as the probe, the
+    // equation and the shaders write them, whatever LANG says; the number boxes read a point
+    // and a comma alike (number_box.h). Machine output never depends on it: the headless runs
+    // above keep the system's locale, and write numbers with QString::number and JSON.
     QLocale::setDefault(QLocale(QLocale::English, QLocale::UnitedStates));
     QApplication app(argc, argv);
     // The settings file is written whole or not at all (settings_store.h).
@@ -120,6 +120,10 @@ int main(int argc, char **argv)
     if (!store.error().isEmpty())
         std::fprintf(stderr, "lightbench: settings: %s\n", qPrintable(store.error()));
     QSettings &settings = store.settings();
+    // The window's words: View > Language, else LANG (language.h); before the window reads them.
+    lb::installTranslators(
+        app, lb::resolvedLanguage(cl.language.value_or(
+                 settings.value(lb::kInterfaceLanguageKey).toString())));
     lb::MainWindow window(settings);
     window.autosave()->setWriteThrough(store.fileName(), [&store] { return store.save(); });
     // What is set after the window's last save (QSettings used to write it as it went).
@@ -191,5 +195,11 @@ int main(int argc, char **argv)
             window.close();
         });
     }
-    return exitSaved(app.exec());
+    const int status = exitSaved(app.exec());
+    // View > Language's restart: after the settings are saved, so the new one reads them.
+    if (lb::restartRequested() && !lb::restartApplication())
+        std::fputs("lightbench: could not start again; start it yourself to see the new "
+                   "language\n",
+                   stderr);
+    return status;
 }

@@ -2,6 +2,8 @@
 // docks) and help.
 #include "main_window.h"
 
+#include "language.h"
+
 #include "editor_panel.h"
 #include "help.h"
 #include "lesson_actions.h"
@@ -185,6 +187,7 @@ void MainWindow::addViewMenu(QMenu *view)
         m_scaleGroup->addAction(a);
     }
     applyScale(); // checks the current one
+    addLanguageMenu(view, m_settings, this);
     view->addAction(tr("Fit the &Window to the Screen"), this, [this] {
         if (m_presentation)
             setPresentation(false);

@@ -145,15 +145,22 @@ QString &chosenLanguage()
     static QString language;
     return language;
 }
+QString &defaultLanguage() // the window's, once it has chosen one
+{
+    static QString language;
+    return language;
+}
 } // namespace
 
 QString lessonLanguage()
 {
     if (!chosenLanguage().isEmpty())
         return chosenLanguage();
-    // The system's (LANG): the window's own QLocale is English, for its numbers, until it is
-    // translated. The C and POSIX locales (LANG=C, a bare container) name no language:
-    // English then, so that what the window writes is under a code a lesson file takes.
+    if (!defaultLanguage().isEmpty())
+        return defaultLanguage();
+    // The system's (LANG), for a program that chose no language (the command line). The C
+    // and POSIX locales (LANG=C, a bare container) name no language: English then, so that
+    // what is written is under a code a lesson file takes.
     const QString language = QLocale::system().name().section('_', 0, 0);
     static const QRegularExpression code("^[a-z]{2,3}$");
     return code.match(language).hasMatch() ? language : QString("en");
@@ -162,6 +169,11 @@ QString lessonLanguage()
 void setLessonLanguage(const QString &language)
 {
     chosenLanguage() = language;
+}
+
+void setDefaultLessonLanguage(const QString &language)
+{
+    defaultLanguage() = language;
 }
 
 const QStringList &lessonPanels()

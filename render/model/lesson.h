@@ -36,10 +36,12 @@ using LocalizedText = QMap<QString, QString>;
 // The text for `language` ("pt", "pt_PT", "de_DE.UTF-8"): that language, else English, else
 // the first there is; empty when there is none.
 QString localized(const LocalizedText &text, const QString &language);
-// The language lessons are shown and written in, as "en", "pt", "de": the one chosen
-// (Lesson > Caption Language), else the system's (LANG), else English.
+// The language lessons and examples are shown and written in, as "en", "pt", "de": the one
+// chosen (Lesson > Caption Language), else the window's (View > Language), else the system's
+// (LANG), else English.
 QString lessonLanguage();
-void setLessonLanguage(const QString &language); // empty: the system's again
+void setLessonLanguage(const QString &language); // empty: the window's again
+void setDefaultLessonLanguage(const QString &language); // the window's language
 
 // The panels a step may bring forward, and the controls it may point at (as written in files).
 const QStringList &lessonPanels();

@@ -1,0 +1,146 @@
+#include "language.h"
+
+#include "lesson.h"
+
+#include <QActionGroup>
+#include <QCoreApplication>
+#include <QLibraryInfo>
+#include <QLocale>
+#include <QMenu>
+#include <QMessageBox>
+#include <QProcess>
+#include <QPushButton>
+#include <QSettings>
+#include <QTranslator>
+#include <QWidget>
+
+namespace lb {
+
+const char *const kInterfaceLanguageKey = "interface/language";
+
+namespace {
+
+bool g_restartRequested = false;
+
+// The locale a language's catalogues are looked up by: Portuguese as Portugal writes it, the
+// way the course's slides are (Qt's own catalogue has a pt_PT; QScintilla has only pt_BR).
+QLocale catalogueLocale(const QString &language)
+{
+    if (language == "pt")
+        return QLocale(QLocale::Portuguese, QLocale::Portugal);
+    if (language == "de")
+        return QLocale(QLocale::German, QLocale::Germany);
+    return QLocale(QLocale::English, QLocale::UnitedStates);
+}
+
+// One catalogue onto the application; true when it loaded. The translator belongs to the
+// application from then on.
+bool install(QCoreApplication &app, const QLocale &locale, const QString &name,
+             const QString &folder)
+{
+    auto *translator = new QTranslator(&app);
+    if (!translator->load(locale, name, "_", folder) || !app.installTranslator(translator)) {
+        delete translator;
+        return false;
+    }
+    return true;
+}
+
+} // namespace
+
+QList<InterfaceLanguage> interfaceLanguages()
+{
+    //: View > Language: follow the system's language (LANG)
+    return {{QString(), QCoreApplication::translate("lb::Language", "&System")},
+            {"en", "&English"},
+            {"pt", QString::fromUtf8("&Português")},
+            {"de", "&Deutsch"}};
+}
+
+QString resolvedLanguage(const QString &setting)
+{
+    const QStringList known{"en", "pt", "de"};
+    if (known.contains(setting))
+        return setting;
+    // QLocale reads LANG (and LC_ALL, LC_MESSAGES) itself, also without the system locale
+    // installed; C and POSIX name no language and give English.
+    const QString system = QLocale::system().name().section('_', 0, 0);
+    return known.contains(system) ? system : QString("en");
+}
+
+QStringList installTranslators(QCoreApplication &app, const QString &language)
+{
+    QStringList loaded;
+    if (language == "en")
+        return loaded; // the sources' language: nothing to load
+    const QLocale locale = catalogueLocale(language);
+    const QString qtFolder = QLibraryInfo::path(QLibraryInfo::TranslationsPath);
+    // Qt's own (standard buttons, file dialogs): "qt" names the whole set for a language.
+    if (install(app, locale, "qt", qtFolder))
+        loaded << "qt";
+    // The editor's context menu: Debian ships QScintilla's German and Brazilian Portuguese.
+    if (install(app, locale, "qscintilla", qtFolder) ||
+        (language == "pt" &&
+         install(app, QLocale(QLocale::Portuguese, QLocale::Brazil), "qscintilla", qtFolder)))
+        loaded << "qscintilla";
+    // Ours last: the last installed is asked first.
+    if (install(app, locale, "lightbench", ":/i18n"))
+        loaded << "lightbench";
+    // Lessons and examples follow the window's language unless their captions are set apart.
+    setDefaultLessonLanguage(language);
+    return loaded;
+}
+
+void addLanguageMenu(QMenu *view, QSettings &settings, QWidget *window)
+{
+    QMenu *menu = view->addMenu(QCoreApplication::translate("lb::Language", "&Language"));
+    auto *group = new QActionGroup(menu);
+    const QString current = settings.value(kInterfaceLanguageKey).toString();
+    for (const InterfaceLanguage &language : interfaceLanguages()) {
+        QAction *a = menu->addAction(language.name);
+        a->setCheckable(true);
+        a->setChecked(language.code == current);
+        a->setData(language.code);
+        group->addAction(a);
+        QObject::connect(a, &QAction::triggered, window, [&settings, window, code = language.code] {
+            const QString before =
+                resolvedLanguage(settings.value(kInterfaceLanguageKey).toString());
+            settings.setValue(kInterfaceLanguageKey, code);
+            if (resolvedLanguage(code) == before)
+                return; // "System" when the system's is the one shown: nothing changes
+            QMessageBox box(QMessageBox::Question,
+                            QCoreApplication::translate("lb::Language", "Language"),
+                            QCoreApplication::translate(
+                                "lb::Language", "The window changes its language when lightbench "
+                                                "starts again. Restart now?"),
+                            QMessageBox::NoButton, window);
+            box.setInformativeText(QCoreApplication::translate(
+                "lb::Language", "lightbench closes as it does on Quit, asking about unsaved "
+                                "work, and opens again where you were."));
+            QPushButton *now =
+                box.addButton(QCoreApplication::translate("lb::Language", "Restart &Now"),
+                              QMessageBox::AcceptRole);
+            box.addButton(QCoreApplication::translate("lb::Language", "&Later"),
+                          QMessageBox::RejectRole);
+            box.setDefaultButton(now);
+            box.exec();
+            if (box.clickedButton() != now)
+                return;
+            g_restartRequested = true;
+            if (!window->close()) // unsaved work kept, on the user's word
+                g_restartRequested = false;
+        });
+    }
+}
+
+bool restartRequested()
+{
+    return g_restartRequested;
+}
+
+bool restartApplication()
+{
+    return QProcess::startDetached(QCoreApplication::applicationFilePath(), {});
+}
+
+} // namespace lb

@@ -1,0 +1,44 @@
+#pragma once
+// The window's language (issue 31): English, Portuguese (Portugal) or German, from View >
+// Language or, by default, from the system (LANG). lightbench's own catalogue is built into
+// the resources (resources/translations/*.ts -> :/i18n/*.qm); Qt's and QScintilla's come from
+// Debian's qt6-translations-l10n and libqscintilla2-qt6-l10n where installed. The command
+// line loads none of them: what it prints stays English, and its data is never translated.
+
+#include <QList>
+#include <QString>
+
+class QCoreApplication;
+class QMenu;
+class QSettings;
+class QWidget;
+
+namespace lb {
+
+struct InterfaceLanguage
+{
+    QString code; // "" (the system's), "en", "pt", "de": as kept in the settings
+    QString name; // in its own language: "Português", "Deutsch"
+};
+QList<InterfaceLanguage> interfaceLanguages(); // System first
+
+extern const char *const kInterfaceLanguageKey; // "interface/language"
+
+// The language the window speaks for a setting: the chosen one, else the system's when
+// lightbench has it, else English. Always one of "en", "pt", "de".
+QString resolvedLanguage(const QString &setting);
+
+// Installs the translators for `language` on the application (lightbench's, Qt's,
+// QScintilla's) and returns the names of the catalogues that loaded. Call before the
+// window is built: the window reads its strings once (a change asks for a restart).
+QStringList installTranslators(QCoreApplication &app, const QString &language);
+
+// View > Language: the four choices, the current one checked. Choosing another keeps it in
+// the settings and offers to restart; when accepted, `window` is closed (asking about
+// unsaved work as always) and restartRequested() turns true, for main() to start a new one.
+void addLanguageMenu(QMenu *view, QSettings &settings, QWidget *window);
+bool restartRequested();
+// Starts lightbench again, detached, with no arguments: the new one restores the session.
+bool restartApplication();
+
+} // namespace lb

@@ -1,0 +1,3450 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="de_DE">
+<context>
+    <name>QObject</name>
+    <message>
+        <location filename="../../app/help.cpp" line="+37"/>
+        <source> or </source>
+        <translation> oder </translation>
+    </message>
+    <message>
+        <location line="+35"/>
+        <source>Menus</source>
+        <translation>Menüs</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Shader editor</source>
+        <translation>Shader-Editor</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>compile and link now</source>
+        <translation>jetzt kompilieren und linken</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>find in the shader</source>
+        <translation>im Shader suchen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>undo / redo (also what a preset, an example or a reset replaced)</source>
+        <translation>rückgängig / wiederherstellen (auch was eine Vorlage, ein Beispiel oder ein Zurücksetzen ersetzt hat)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>complete the word</source>
+        <translation>Wort vervollständigen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>delete / duplicate the line</source>
+        <translation>Zeile löschen / duplizieren</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>View</source>
+        <translation>Ansicht</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>left drag</source>
+        <translation>mit der linken Maustaste ziehen</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>orbit the camera</source>
+        <translation>Kamera um die Szene kreisen lassen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>click</source>
+        <translation>Klick</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>select the object under the cursor</source>
+        <translation>Objekt unter dem Mauszeiger auswählen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>right or middle drag</source>
+        <translation>mit der rechten oder mittleren Maustaste ziehen</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>pan</source>
+        <translation>verschieben</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>wheel</source>
+        <translation>Mausrad</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>zoom</source>
+        <translation>zoomen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Ctrl+click, Shift+click</source>
+        <translation>Strg+Klick, Umschalt+Klick</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>probe the surface point (drag to move it)</source>
+        <translation>Oberflächenpunkt mit der Sonde messen (ziehen verschiebt ihn)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>drag the wipe&apos;s line</source>
+        <translation>die Linie der Wischblende ziehen</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>move the wipe (compare)</source>
+        <translation>Wischblende verschieben (Vergleich)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>drop a file</source>
+        <translation>Datei ablegen</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>open a mesh, a scene, a lesson or a shader pair</source>
+        <translation>ein Mesh, eine Szene, eine Lektion oder ein Shader-Paar öffnen</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Keyboard shortcuts - lightbench</source>
+        <translation>Tastenkürzel - lightbench</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Features - lightbench</source>
+        <translation>Funktionen - lightbench</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>The README is missing from this build.</source>
+        <translation>Die README fehlt in diesem Build.</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>About lightbench</source>
+        <translation>Über lightbench</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&lt;h3&gt;lightbench %1&lt;/h3&gt;&lt;p&gt;A workbench for the lighting model of computer graphics courses: ambient, diffuse and specular terms, Phong and Blinn-Phong, Gouraud and Phong shading, every pixel checked against a CPU reference.&lt;/p&gt;&lt;p&gt;Qt %2 (built with %3)&lt;br&gt;%4&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;lightbench %1&lt;/h3&gt;&lt;p&gt;Eine Werkbank für das Beleuchtungsmodell aus Vorlesungen zur Computergrafik: ambienter, diffuser und spiegelnder Anteil, Phong und Blinn-Phong, Gouraud- und Phong-Schattierung, jedes Pixel geprüft gegen eine CPU-Referenz.&lt;/p&gt;&lt;p&gt;Qt %2 (erstellt mit %3)&lt;br&gt;%4&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>OpenGL not started yet</source>
+        <translation>OpenGL noch nicht gestartet</translation>
+    </message>
+    <message>
+        <location filename="../../app/main_window_exercise.cpp" line="+27"/>
+        <source>Side B</source>
+        <translation>Seite B</translation>
+    </message>
+    <message>
+        <location filename="../../app/scene_actions.cpp" line="+30"/>
+        <source>Scenes (*.json);;All files (*)</source>
+        <translation>Szenen (*.json);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <location filename="../../app/settings_autosave.cpp" line="+19"/>
+        <source>is no settings file</source>
+        <translation>ist keine Einstellungsdatei</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cannot be written</source>
+        <translation>kann nicht geschrieben werden</translation>
+    </message>
+    <message>
+        <location filename="../../app/unsaved_work.cpp" line="+14"/>
+        <source>the shader file %1</source>
+        <translation>der Shader-Datei %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>the shader files %1 and %2</source>
+        <translation>den Shader-Dateien %1 und %2</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the lesson “%1”</source>
+        <translation>der Lektion „%1“</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+7"/>
+        <source>%1 and %2</source>
+        <translation>%1 und %2</translation>
+    </message>
+    <message>
+        <location line="-2"/>
+        <source>the untitled scene</source>
+        <translation>der unbenannten Szene</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the scene “%1”</source>
+        <translation>der Szene „%1“</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Save the changes to %1 before closing?</source>
+        <translation>Änderungen an %1 vor dem Schließen speichern?</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Save the changes to %1 before opening “%2”?</source>
+        <translation>Änderungen an %1 vor dem Öffnen von „%2“ speichern?</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Save the changes to %1 before resetting everything?</source>
+        <translation>Änderungen an %1 speichern, bevor alles zurückgesetzt wird?</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Save the changes to %1 before closing it?</source>
+        <translation>Änderungen an %1 vor dem Schließen der Lektion speichern?</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Your changes will be lost if you don&apos;t save them. Save saves them all.</source>
+        <translation>Ihre Änderungen gehen verloren, wenn Sie sie nicht speichern. „Speichern“ speichert alle.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Your changes will be lost if you don&apos;t save them.</source>
+        <translation>Ihre Änderungen gehen verloren, wenn Sie sie nicht speichern.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Unsaved changes</source>
+        <translation>Ungespeicherte Änderungen</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Discard</source>
+        <translation>Verwerfen</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/caption_dialog.cpp" line="+17"/>
+        <source>English</source>
+        <translation>Englisch</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Portuguese</source>
+        <translation>Portugiesisch</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>German</source>
+        <translation>Deutsch</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/exercise_panel.cpp" line="+21"/>
+        <source>light position</source>
+        <translation>Lichtposition</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>point or directional</source>
+        <translation>Punktlicht oder gerichtetes Licht</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>light frame</source>
+        <translation>Koordinatensystem des Lichts</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>light colours</source>
+        <translation>Lichtfarben</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>material</source>
+        <translation>Material</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>camera</source>
+        <translation>Kamera</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>projection</source>
+        <translation>Projektion</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>non-uniform scale</source>
+        <translation>ungleichmäßige Skalierung</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>nothing (every case is the scene as it is)</source>
+        <translation>nichts (jeder Fall ist die Szene, wie sie ist)</translation>
+    </message>
+    <message>
+        <location filename="../../render/model/texture_file.cpp" line="+25"/>
+        <source>%1: an empty file, not an image</source>
+        <translation>%1: eine leere Datei, kein Bild</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1: not an image (%2)</source>
+        <translation>%1: kein Bild (%2)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the formats read are %1</source>
+        <translation>lesbare Formate sind %1</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1: %2 x %3 texels is more than a texture may have (%4 x %4)</source>
+        <translation>%1: %2 x %3 Texel sind mehr, als eine Textur haben darf (%4 x %4)</translation>
+    </message>
+    <message>
+        <location line="+31"/>
+        <location line="+7"/>
+        <source>%1: could not be read as an image: %2</source>
+        <translation>%1: konnte nicht als Bild gelesen werden: %2</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1: %2 x %3 texels</source>
+        <translation>%1: %2 x %3 Texel</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source> (scaled from %1 x %2)</source>
+        <translation> (skaliert von %1 x %2)</translation>
+    </message>
+</context>
+<context>
+    <name>lb::CaptionDialog</name>
+    <message>
+        <location filename="../../widgets/caption_dialog.cpp" line="+10"/>
+        <location line="+41"/>
+        <source>Edit Caption</source>
+        <translation>Beschriftung bearbeiten</translation>
+    </message>
+    <message>
+        <location line="-39"/>
+        <source>What the class reads under the view. Markdown: *italic*, **bold**, `code`, lists. An empty language shows English.</source>
+        <translation>Was die Klasse unter der Ansicht liest. Markdown: *kursiv*, **fett**, `Code`, Listen. Eine leere Sprache zeigt Englisch.</translation>
+    </message>
+    <message>
+        <location line="+40"/>
+        <source>The %1 caption has %2 characters; a caption holds at most %3. Nothing was changed yet: shorten it, or Cancel.</source>
+        <translation>Die Beschriftung (%1) hat %2 Zeichen; eine Beschriftung fasst höchstens %3. Noch wurde nichts geändert: Kürzen Sie sie oder brechen Sie ab.</translation>
+    </message>
+</context>
+<context>
+    <name>lb::ColorEdit</name>
+    <message>
+        <location filename="../../widgets/color_edit.cpp" line="+21"/>
+        <source>Pick %1 with the colour dialog</source>
+        <translation>%1 mit dem Farbdialog wählen</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1, %2 channel (0 to 1)</source>
+        <translation>%1, Kanal %2 (0 bis 1)</translation>
+    </message>
+    <message>
+        <location line="+32"/>
+        <source>Choose %1</source>
+        <translation>%1 wählen</translation>
+    </message>
+</context>
+<context>
+    <name>lb::DifferenceScaleLabels</name>
+    <message>
+        <location filename="../../widgets/difference_scale_labels.cpp" line="+54"/>
+        <source>%1+</source>
+        <translation>%1+</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>|A-B| of 255</source>
+        <translation>|A-B| von 255</translation>
+    </message>
+</context>
+<context>
+    <name>lb::EditorPanel</name>
+    <message>
+        <location filename="../../widgets/editor_panel.cpp" line="+39"/>
+        <source>the scene&apos;s shaders</source>
+        <translation>die Shader der Szene</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>your shaders</source>
+        <translation>Ihre Shader</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 (edited)</source>
+        <translation>%1 (bearbeitet)</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Presets</source>
+        <translation>Vorlagen</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>The built-in programs, the slides&apos; shaders as printed, toon</source>
+        <translation>Die eingebauten Programme, die Shader der Folien wie abgedruckt, Toon</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Compile</source>
+        <translation>Kompilieren</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Compile and link now (Ctrl+Enter)</source>
+        <translation>Jetzt kompilieren und linken (Strg+Eingabe)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Live</source>
+        <translation>Live</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Recompile after a pause in typing; off: only on Ctrl+Enter</source>
+        <translation>Nach einer Tipppause neu kompilieren; aus: nur mit Strg+Eingabe</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source> ms</source>
+        <translation> ms</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The pause after the last key before a live recompile (wheel or arrow keys change it)</source>
+        <translation>Die Pause nach der letzten Taste vor einem Live-Neukompilieren (Mausrad oder Pfeiltasten ändern sie)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Find (Ctrl+F)</source>
+        <translation>Suchen (Strg+F)</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <location line="+121"/>
+        <source>Vertex</source>
+        <translation>Vertex</translation>
+    </message>
+    <message>
+        <location line="-120"/>
+        <location line="+120"/>
+        <source>Fragment</source>
+        <translation>Fragment</translation>
+    </message>
+    <message>
+        <location line="-115"/>
+        <source>Click a message to go to its line</source>
+        <translation>Klicken Sie auf eine Meldung, um zu ihrer Zeile zu springen</translation>
+    </message>
+    <message>
+        <location line="+103"/>
+        <source>%1 is gone from the disk; your text is kept</source>
+        <translation>%1 ist nicht mehr auf der Festplatte; Ihr Text bleibt erhalten</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 changed on disk; your unsaved edits are kept (Open it again to take the disk&apos;s version)</source>
+        <translation>%1 wurde auf der Festplatte geändert; Ihre ungespeicherten Änderungen bleiben erhalten (erneut öffnen, um die Version auf der Festplatte zu laden)</translation>
+    </message>
+    <message>
+        <location line="+42"/>
+        <source>Your unsaved shader edits from the last session are back</source>
+        <translation>Ihre ungespeicherten Shader-Änderungen aus der letzten Sitzung sind wieder da</translation>
+    </message>
+    <message>
+        <location line="+85"/>
+        <source>error</source>
+        <translation>Fehler</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>warning</source>
+        <translation>Warnung</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+10"/>
+        <source>&lt;span style=&apos;color:#8a5a00&apos;&gt;linked, %n warning(s)&lt;/span&gt;</source>
+        <translation>
+            <numerusform>&lt;span style=&apos;color:#8a5a00&apos;&gt;gelinkt, %n Warnung&lt;/span&gt;</numerusform>
+            <numerusform>&lt;span style=&apos;color:#8a5a00&apos;&gt;gelinkt, %n Warnungen&lt;/span&gt;</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&lt;span style=&apos;color:#2e7d32&apos;&gt;linked&lt;/span&gt;</source>
+        <translation>&lt;span style=&apos;color:#2e7d32&apos;&gt;gelinkt&lt;/span&gt;</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+3"/>
+        <source>&lt;span style=&apos;color:#c62828&apos;&gt;%n error(s): last good program drawing&lt;/span&gt;</source>
+        <translation>
+            <numerusform>&lt;span style=&apos;color:#c62828&apos;&gt;%n Fehler: das letzte funktionierende Programm zeichnet&lt;/span&gt;</numerusform>
+            <numerusform>&lt;span style=&apos;color:#c62828&apos;&gt;%n Fehler: das letzte funktionierende Programm zeichnet&lt;/span&gt;</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>lb::ExercisePanel</name>
+    <message>
+        <location filename="../../widgets/exercise_panel.cpp" line="+30"/>
+        <location line="+119"/>
+        <source>Check my work</source>
+        <translation>Arbeit prüfen</translation>
+    </message>
+    <message>
+        <location line="-118"/>
+        <source>Draws the exercise&apos;s cases with the program in the editor and with the reference, as the teacher&apos;s grading does, and lists each case (F9)</source>
+        <translation>Zeichnet die Fälle der Übung mit dem Programm im Editor und mit der Referenz, wie es die Bewertung der Lehrkraft tut, und listet jeden Fall auf (F9)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Out of date: the program in the editor has changed since this check. Check my work (F9) checks it as it is now.</source>
+        <translation>Veraltet: Das Programm im Editor wurde seit dieser Prüfung geändert. „Arbeit prüfen“ (F9) prüft es im jetzigen Zustand.</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Case</source>
+        <translation>Fall</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Result</source>
+        <translation>Ergebnis</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Largest</source>
+        <translation>Größte Diff.</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Within</source>
+        <translation>In Toleranz</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The largest difference of a channel, out of 255</source>
+        <translation>Die größte Differenz eines Kanals, von 255</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Click a case to see it in the difference view</source>
+        <translation>Klicken Sie auf einen Fall, um ihn in der Differenzansicht zu sehen</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Back to my scene</source>
+        <translation>Zurück zu meiner Szene</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The scene as it was before a case was shown</source>
+        <translation>Die Szene, wie sie war, bevor ein Fall gezeigt wurde</translation>
+    </message>
+    <message>
+        <location line="+39"/>
+        <source>No exercise is open</source>
+        <translation>Keine Übung geöffnet</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>An exercise is a scene file with a task, the teacher&apos;s reference program and how it is graded. File &gt; Examples &gt; &quot;Exercise: per-fragment lighting&quot; is one; File &gt; Open Scene opens others.</source>
+        <translation>Eine Übung ist eine Szenendatei mit einer Aufgabe, dem Referenzprogramm der Lehrkraft und der Art der Bewertung. Datei &gt; Beispiele &gt; „Übung: Beleuchtung pro Fragment“ ist eine davon; Datei &gt; Szene öffnen öffnet weitere.</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>The share of the pixels either program draws that are within %1/255 of the reference, at %2 x %3: the difference view counts a case alike (at its own size)</source>
+        <translation>Der Anteil der von einem der beiden Programme gezeichneten Pixel, die höchstens %1/255 von der Referenz abweichen, bei %2 x %3: Die Differenzansicht zählt einen Fall genauso (in ihrer eigenen Größe)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Exercise</source>
+        <translation>Übung</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>This exercise cannot be checked: its reference is missing or unusable.</source>
+        <translation>Diese Übung kann nicht geprüft werden: Ihre Referenz fehlt oder ist unbrauchbar.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Reference: the built-in program, %1 shading, %2 specular.</source>
+        <translation>Referenz: das eingebaute Programm, Schattierung %1, spiegelnder Anteil %2.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Reference: the teacher&apos;s program (not shown; it is side B of the compare views, key C).</source>
+        <translation>Referenz: das Programm der Lehrkraft (nicht angezeigt; es ist Seite B der Vergleichsansichten, Taste C).</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 cases at %2 x %3 pixels; a case passes when %4 of its pixels are within %5/255. The cases vary: %6.</source>
+        <translation>%1 Fälle bei %2 x %3 Pixeln; ein Fall ist bestanden, wenn %4 seiner Pixel höchstens %5/255 abweichen. Die Fälle variieren: %6.</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Cancel the check</source>
+        <translation>Prüfung abbrechen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Checking: the cases are drawn with your program and the reference...</source>
+        <translation>Prüfung läuft: Die Fälle werden mit Ihrem Programm und der Referenz gezeichnet...</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>Your program does not compile%1</source>
+        <translation>Ihr Programm lässt sich nicht kompilieren%1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Your program does not link%1</source>
+        <translation>Ihr Programm lässt sich nicht linken%1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Your program was refused%1</source>
+        <translation>Ihr Programm wurde abgelehnt%1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The check took too long (%1) and was stopped</source>
+        <translation>Die Prüfung dauerte zu lange (%1) und wurde abgebrochen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The check could not start%1</source>
+        <translation>Die Prüfung konnte nicht starten%1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Not checked: %1%2</source>
+        <translation>Nicht geprüft: %1%2</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Passed: all %1 cases (in each, at least %2 of the pixels within %3/255); largest difference %4/255</source>
+        <translation>Bestanden: alle %1 Fälle (in jedem mindestens %2 der Pixel innerhalb von %3/255); größte Differenz %4/255</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Not yet: %1 of %2 cases pass; largest difference %3/255</source>
+        <translation>Noch nicht: %1 von %2 Fällen bestanden; größte Differenz %3/255</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Click a case to see it in the difference view.</source>
+        <translation>Klicken Sie auf einen Fall, um ihn in der Differenzansicht zu sehen.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 (as given)</source>
+        <translation>%1 (wie vorgegeben)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>passed</source>
+        <translation>bestanden</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>failed</source>
+        <translation>nicht bestanden</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>nothing drawn</source>
+        <translation>nichts gezeichnet</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Largest difference at (%1, %2) of the %3 x %4 frame; %5 pixels drawn</source>
+        <translation>Größte Differenz bei (%1, %2) im Bild von %3 x %4; %5 Pixel gezeichnet</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1 pixels drawn</source>
+        <translation>%1 Pixel gezeichnet</translation>
+    </message>
+</context>
+<context>
+    <name>lb::ExportSizeDialog</name>
+    <message>
+        <location filename="../../widgets/export_size_dialog.cpp" line="+12"/>
+        <source>Export Image</source>
+        <translation>Bild exportieren</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source> px</source>
+        <translation> px</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Width</source>
+        <translation>Breite</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Height</source>
+        <translation>Höhe</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The view is drawn again at this size, not scaled.</source>
+        <translation>Die Ansicht wird in dieser Größe neu gezeichnet, nicht skaliert.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Choose File...</source>
+        <translation>Datei wählen...</translation>
+    </message>
+</context>
+<context>
+    <name>lb::Language</name>
+    <message>
+        <location filename="../../app/language.cpp" line="+54"/>
+        <source>&amp;System</source>
+        <extracomment>View &gt; Language: follow the system&apos;s language (LANG)</extracomment>
+        <translation>&amp;System</translation>
+    </message>
+    <message>
+        <location line="+42"/>
+        <source>&amp;Language</source>
+        <translation>&amp;Sprache</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>Language</source>
+        <translation>Sprache</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The window changes its language when lightbench starts again. Restart now?</source>
+        <translation>Das Fenster wechselt die Sprache, wenn lightbench neu startet. Jetzt neu starten?</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>lightbench closes as it does on Quit, asking about unsaved work, and opens again where you were.</source>
+        <translation>lightbench wird wie mit Beenden geschlossen (ungesicherte Arbeit wird erfragt) und öffnet sich wieder dort, wo Sie waren.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Restart &amp;Now</source>
+        <translation>&amp;Jetzt neu starten</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Later</source>
+        <translation>&amp;Später</translation>
+    </message>
+</context>
+<context>
+    <name>lb::LessonActions</name>
+    <message>
+        <location filename="../../app/lesson_actions.cpp" line="+44"/>
+        <source>Open Recent &amp;Lesson</source>
+        <translation>Zuletzt geöffnete Lekt&amp;ion</translation>
+    </message>
+    <message>
+        <location line="+37"/>
+        <source>The last lesson could not be opened again: %1</source>
+        <translation>Die letzte Lektion konnte nicht erneut geöffnet werden: %1</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>Open &amp;Lesson...</source>
+        <translation>&amp;Lektion öffnen...</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Lesso&amp;ns</source>
+        <translation>Lektio&amp;nen</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>(none built in)</source>
+        <translation>(keine eingebaut)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Less&amp;on</source>
+        <translation>&amp;Lektion</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>&amp;Next Step</source>
+        <translation>&amp;Nächster Schritt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Previous Step</source>
+        <translation>&amp;Vorheriger Schritt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;First Step</source>
+        <translation>&amp;Erster Schritt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Last Step</source>
+        <translation>&amp;Letzter Schritt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Reset Step</source>
+        <translation>Schritt &amp;zurücksetzen</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>New Lesson from This &amp;View</source>
+        <translation>Neue Lektion aus dieser &amp;Ansicht</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Add This View as a Step</source>
+        <translation>Diese Ansicht als Schritt &amp;hinzufügen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Replace the Step with &amp;This View</source>
+        <translation>Schritt durch diese Ansicht e&amp;rsetzen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Rena&amp;me Step...</source>
+        <translation>Schritt u&amp;mbenennen...</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Edit &amp;Caption...</source>
+        <translation>&amp;Beschriftung bearbeiten...</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Move Step &amp;Up</source>
+        <translation>Schritt nach &amp;oben</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Move Step &amp;Down</source>
+        <translation>Schritt nach un&amp;ten</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Remo&amp;ve Step</source>
+        <translation>Schritt ent&amp;fernen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Save Lesson</source>
+        <translation>Lektion &amp;speichern</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Save Lesson &amp;As...</source>
+        <translation>Lektion speichern &amp;unter...</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>&amp;Close Lesson</source>
+        <translation>Le&amp;ktion schließen</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Caption &amp;Language</source>
+        <translation>S&amp;prache der Beschriftung</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The System&apos;s</source>
+        <translation>Systemsprache</translation>
+    </message>
+    <message>
+        <location line="+51"/>
+        <source>untitled lesson</source>
+        <translation>unbenannte Lektion</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>The lesson could not be opened; nothing changed.</source>
+        <translation>Die Lektion konnte nicht geöffnet werden; nichts wurde geändert.</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+22"/>
+        <source>%1 opened; %n step(s) cannot be shown (the lesson bar says why there).</source>
+        <translation>
+            <numerusform>%1 geöffnet; %n Schritt kann nicht angezeigt werden (die Lektionsleiste nennt dort den Grund).</numerusform>
+            <numerusform>%1 geöffnet; %n Schritte können nicht angezeigt werden (die Lektionsleiste nennt dort den Grund).</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+6"/>
+        <source>%1 opened; %n field(s) could not be used and kept their defaults.</source>
+        <translation>
+            <numerusform>%1 geöffnet; %n Feld konnte nicht verwendet werden und behält seinen Standardwert.</numerusform>
+            <numerusform>%1 geöffnet; %n Felder konnten nicht verwendet werden und behalten ihre Standardwerte.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+116"/>
+        <location filename="../../app/lesson_authoring.cpp" line="+36"/>
+        <location line="+24"/>
+        <source>Step %1</source>
+        <translation>Schritt %1</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>Open a lesson</source>
+        <translation>Lektion öffnen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <location filename="../../app/lesson_authoring.cpp" line="+123"/>
+        <source>Lessons (*.json);;All files (*)</source>
+        <translation>Lektionen (*.json);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <location filename="../../app/lesson_authoring.cpp" line="-149"/>
+        <source>Lesson</source>
+        <translation>Lektion</translation>
+    </message>
+    <message>
+        <location filename="../../app/lesson_authoring.cpp" line="-4"/>
+        <source>a new lesson</source>
+        <translation>neue Lektion</translation>
+    </message>
+    <message>
+        <location line="+59"/>
+        <source>The step keeps its title.</source>
+        <translation>Der Schritt behält seinen Titel.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A step&apos;s title cannot be empty.</source>
+        <translation>Der Titel eines Schritts darf nicht leer sein.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The title has %1 characters; a title holds at most %2.</source>
+        <translation>Der Titel hat %1 Zeichen; ein Titel fasst höchstens %2.</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>The step keeps its caption.</source>
+        <translation>Der Schritt behält seine Beschriftung.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The %1 caption has %2 characters; a caption holds at most %3.</source>
+        <translation>Die Beschriftung (%1) hat %2 Zeichen; eine Beschriftung fasst höchstens %3.</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>The step stays.</source>
+        <translation>Der Schritt bleibt.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A lesson keeps at least one step; Close Lesson puts it away.</source>
+        <translation>Eine Lektion behält mindestens einen Schritt; „Lektion schließen“ legt sie weg.</translation>
+    </message>
+    <message>
+        <location line="+31"/>
+        <source>The lesson was not saved; it stays open with its changes.</source>
+        <translation>Die Lektion wurde nicht gespeichert; sie bleibt mit ihren Änderungen geöffnet.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Saved the lesson to %1</source>
+        <translation>Lektion gespeichert in %1</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Save the lesson</source>
+        <translation>Lektion speichern</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Rename Step</source>
+        <translation>Schritt umbenennen</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>The title of step %1:</source>
+        <translation>Titel von Schritt %1:</translation>
+    </message>
+</context>
+<context>
+    <name>lb::LessonBar</name>
+    <message>
+        <location filename="../../widgets/lesson_bar.cpp" line="+42"/>
+        <source>The previous step (PageUp, Left)</source>
+        <translation>Vorheriger Schritt (Bild auf, Links)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The next step (PageDown, Right, Space)</source>
+        <translation>Nächster Schritt (Bild ab, Rechts, Leertaste)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Reset Step</source>
+        <translation>Schritt zurücksetzen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>This step as the lesson has it: your changes to it are set aside</source>
+        <translation>Dieser Schritt, wie ihn die Lektion enthält: Ihre Änderungen daran werden beiseitegelegt</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The Lesson menu: add, rename, caption, move and save steps</source>
+        <translation>Das Menü „Lektion“: Schritte hinzufügen, umbenennen, beschriften, verschieben und speichern</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>✕</source>
+        <translation>✕</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Close the lesson (the scene stays)</source>
+        <translation>Lektion schließen (die Szene bleibt)</translation>
+    </message>
+    <message>
+        <location line="+41"/>
+        <source>Step %1 of %2</source>
+        <translation>Schritt %1 von %2</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>This step cannot be shown; the scene is as it was. %1</source>
+        <translation>Dieser Schritt kann nicht angezeigt werden; die Szene bleibt, wie sie war. %1</translation>
+    </message>
+    <message>
+        <location line="+42"/>
+        <source>[picture]</source>
+        <translation>[Bild]</translation>
+    </message>
+</context>
+<context>
+    <name>lb::LightPanel</name>
+    <message>
+        <location filename="../../widgets/light_panel.cpp" line="+33"/>
+        <source>Light %1</source>
+        <translation>Licht %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Up to four lights; their terms add up. A shader that declares one light (not an array) reads light 1</source>
+        <translation>Bis zu vier Lichter; ihre Anteile addieren sich. Ein Shader, der nur ein Licht deklariert (kein Array), liest Licht 1</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>On</source>
+        <translation>An</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>uLightEnabled[i]: a light switched off adds nothing (its colours go to shaders as black)</source>
+        <translation>uLightEnabled[i]: Ein ausgeschaltetes Licht trägt nichts bei (seine Farben gehen als Schwarz an die Shader)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Light</source>
+        <translation>Licht</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>lightPosition.%1: the light&apos;s %1 in the chosen frame</source>
+        <translation>lightPosition.%1: die %1-Koordinate des Lichts im gewählten Koordinatensystem</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Position</source>
+        <translation>Position</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>w = 1: point light</source>
+        <translation>w = 1: Punktlicht</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>w = 0: directional</source>
+        <translation>w = 0: gerichtet</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>lightPosition.w: 1 puts the light at (x, y, z); 0 makes (x, y, z) the direction towards a light at infinity</source>
+        <translation>lightPosition.w: 1 setzt das Licht an (x, y, z); 0 macht (x, y, z) zur Richtung zu einem Licht im Unendlichen</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Type</source>
+        <translation>Typ</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Camera: moves with the eye</source>
+        <translation>Kamera: bewegt sich mit dem Auge</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>World: fixed in the scene</source>
+        <translation>Welt: fest in der Szene</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Object: turns with the model</source>
+        <translation>Objekt: dreht sich mit dem Modell</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Frame lightPosition is given in. Camera: used as is (variant I); world: mView / mViewNormals (II); object: mModelView / mNormals (III)</source>
+        <translation>Koordinatensystem, in dem lightPosition angegeben ist. Kamera: unverändert verwendet (Variante I); Welt: mView / mViewNormals (II); Objekt: mModelView / mNormals (III)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>The object whose frame an object-frame light is given in: the light turns and moves with it, and lights every object from there</source>
+        <translation>Das Objekt, in dessen Koordinaten ein Licht in Objektkoordinaten angegeben ist: Das Licht dreht und bewegt sich mit ihm und beleuchtet von dort aus jedes Objekt</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Frame</source>
+        <translation>Koordinaten</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Of object</source>
+        <translation>Bezugsobjekt</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1 (%2): the light&apos;s %3 intensity</source>
+        <translation>%1 (%2): Intensität des Lichts (%3)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>ambient</source>
+        <translation>ambient</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>diffuse</source>
+        <translation>diffus</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>specular</source>
+        <translation>spiegelnd</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>lightAttenuation.%1 (%2): a point light&apos;s terms are divided by kc + kl·d + kq·d², d its distance to the surface (1, 0, 0: none; a directional light is never attenuated)</source>
+        <translation>lightAttenuation.%1 (%2): Die Anteile eines Punktlichts werden durch kc + kl·d + kq·d² geteilt, d ist sein Abstand zur Oberfläche (1, 0, 0: keine; ein gerichtetes Licht wird nie abgeschwächt)</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>Atten. kc kl kq</source>
+        <translation>Abschw. kc kl kq</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>spotDirection.%1: the spotlight&apos;s axis, from the light, in the light&apos;s frame</source>
+        <translation>spotDirection.%1: die Achse des Spotlichts, vom Licht aus, im Koordinatensystem des Lichts</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Spot axis</source>
+        <translation>Spot-Achse</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>spotCutoff: the cone&apos;s half-angle; outside it the light adds nothing, ambient included (180: no spot)</source>
+        <translation>spotCutoff: der halbe Öffnungswinkel des Kegels; außerhalb trägt das Licht nichts bei, auch nicht ambient (180: kein Spot)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>spotExponent: inside the cone the terms are scaled by max(-L·D, 0)^exponent, brighter towards the axis</source>
+        <translation>spotExponent: Innerhalb des Kegels werden die Anteile mit max(-L·D, 0)^exponent skaliert, zur Achse hin heller</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Spot cutoff, exp</source>
+        <translation>Spot-Winkel, Exp.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Reset light</source>
+        <translation>Licht zurücksetzen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>This light&apos;s defaults; light 1&apos;s are the slides&apos; (0, 1.8, 1.3, 1) in world coordinates</source>
+        <translation>Die Standardwerte dieses Lichts; die von Licht 1 sind die der Folien: (0, 1.8, 1.3, 1) in Weltkoordinaten</translation>
+    </message>
+</context>
+<context>
+    <name>lb::LoadProgress</name>
+    <message>
+        <location filename="../../widgets/load_progress.cpp" line="+21"/>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Stop loading: the import helper is stopped, the current mesh stays</source>
+        <translation>Laden abbrechen: Der Import-Helfer wird beendet, das aktuelle Mesh bleibt</translation>
+    </message>
+    <message>
+        <location line="+29"/>
+        <source>Loading %1...</source>
+        <translation>%1 wird geladen...</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Loading %1: %2</source>
+        <translation>%1 wird geladen: %2</translation>
+    </message>
+</context>
+<context>
+    <name>lb::MainWindow</name>
+    <message>
+        <location filename="../../app/main_window.cpp" line="+80"/>
+        <source>Light</source>
+        <translation>Licht</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Material</source>
+        <translation>Material</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Shading</source>
+        <translation>Schattierung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Object</source>
+        <translation>Objekt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Uniforms</source>
+        <translation>Uniforms</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Probe</source>
+        <translation>Sonde</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Exercise</source>
+        <translation>Übung</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Shader editor</source>
+        <translation>Shader-Editor</translation>
+    </message>
+    <message>
+        <location line="+39"/>
+        <location filename="../../app/main_window_menus.cpp" line="+53"/>
+        <location filename="../../app/main_window_unsaved.cpp" line="+92"/>
+        <location line="+13"/>
+        <source>Shader files</source>
+        <translation>Shader-Dateien</translation>
+    </message>
+    <message>
+        <location line="+70"/>
+        <source>Unsaved shader edits from the last session are back</source>
+        <translation>Ungespeicherte Shader-Änderungen aus der letzten Sitzung sind wieder da</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Everything reset; Ctrl+Z in the editor brings your shader text back</source>
+        <translation>Alles zurückgesetzt; Strg+Z im Editor holt Ihren Shader-Text zurück</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Everything reset</source>
+        <translation>Alles zurückgesetzt</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>The program on screen computes V = (0,0,1), the parallel view vector, under the perspective projection; the reference uses V = -P, so the two differ away from the middle of the view. The orthographic projection (key P) makes them agree.</source>
+        <translation>Das Programm auf dem Bildschirm berechnet unter perspektivischer Projektion V = (0,0,1), den Blickvektor der Parallelprojektion; die Referenz verwendet V = -P, daher weichen beide abseits der Bildmitte voneinander ab. Die orthografische Projektion (Taste P) bringt sie in Übereinstimmung.</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>%1 shades as it is written: Gouraud/Phong does not change it. A preset or Reset Everything brings the built-in program, which follows this choice.</source>
+        <translation>%1 schattiert so, wie es geschrieben ist: Gouraud/Phong ändert daran nichts. Eine Vorlage oder „Alles zurücksetzen“ lädt das eingebaute Programm, das dieser Wahl folgt.</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>The program in the editor (%1) shades %2 (%3) whatever this says. Load a preset or Reset Everything to switch shading.</source>
+        <translation>Das Programm im Editor (%1) schattiert nach %2 (%3), egal was hier steht. Laden Sie eine Vorlage oder wählen Sie „Alles zurücksetzen“, um die Schattierung umzuschalten.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>per vertex</source>
+        <translation>pro Vertex</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>per fragment</source>
+        <translation>pro Fragment</translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <source>%1 lights on</source>
+        <translation>%1 Lichter an</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the program&apos;s own light (marker hidden)</source>
+        <translation>das eigene Licht des Programms (Markierung ausgeblendet)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>directional light</source>
+        <translation>gerichtetes Licht</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>point light</source>
+        <translation>Punktlicht</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source> in the %1 frame</source>
+        <translation> (Koordinatensystem: %1)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Program: %1</source>
+        <translation>Programm: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>, drawn flat (per triangle)</source>
+        <translation>, flach gezeichnet (pro Dreieck)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>, showing %1</source>
+        <translation>, zeigt %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>, Blinn-Phong specular (N·H)</source>
+        <translation>, spiegelnder Anteil nach Blinn-Phong (N·H)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>, Phong specular (R·V)</source>
+        <translation>, spiegelnder Anteil nach Phong (R·V)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>%1, step %2</source>
+        <translation>%1, Schritt %2</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>untitled</source>
+        <translation>Unbenannt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1[*] - lightbench</source>
+        <translation>%1[*] - lightbench</translation>
+    </message>
+    <message>
+        <location filename="../../app/main_window_budget.cpp" line="+44"/>
+        <source>More would take more memory than the scene&apos;s meshes may take on this machine: %1 for all objects together.</source>
+        <translation>Mehr bräuchte mehr Speicher, als die Meshes der Szene auf diesem Rechner belegen dürfen: %1 für alle Objekte zusammen.</translation>
+    </message>
+    <message>
+        <location filename="../../app/main_window_exercise.cpp" line="+17"/>
+        <source>Check cancelled.</source>
+        <translation>Prüfung abgebrochen.</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Checked: %1 of %2 cases pass</source>
+        <translation>Geprüft: %1 von %2 Fällen bestanden</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Not checked: %1</source>
+        <translation>Nicht geprüft: %1</translation>
+    </message>
+    <message>
+        <location line="+46"/>
+        <location line="+16"/>
+        <location line="+1"/>
+        <location line="+1"/>
+        <source>the exercise&apos;s reference</source>
+        <translation>die Referenz der Übung</translation>
+    </message>
+    <message>
+        <location line="-17"/>
+        <source>the exercise&apos;s reference (built-in)</source>
+        <translation>die Referenz der Übung (eingebaut)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+36"/>
+        <source>the built-in program</source>
+        <translation>das eingebaute Programm</translation>
+    </message>
+    <message>
+        <location line="-32"/>
+        <source>side B (%1)</source>
+        <translation>Seite B (%1)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Side B draws %1: it shades as it is written, so these choices do nothing. The x button brings back %2.</source>
+        <translation>Seite B zeichnet %1: Dieses Programm schattiert so, wie es geschrieben ist, daher bewirken diese Einstellungen nichts. Die Schaltfläche x holt %2 zurück.</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Side B draws the exercise&apos;s reference program: it shades as it is written, so these choices do nothing.</source>
+        <translation>Seite B zeichnet das Referenzprogramm der Übung: Es schattiert so, wie es geschrieben ist, daher bewirken diese Einstellungen nichts.</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>the exercise&apos;s reference (built-in, %1 shading, %2 specular)</source>
+        <translation>die Referenz der Übung (eingebaut, Schattierung %1, spiegelnder Anteil %2)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>the built-in program, %1 shading and %2 specular (the exercise&apos;s reference)</source>
+        <translation>das eingebaute Programm, Schattierung %1 und spiegelnder Anteil %2 (die Referenz der Übung)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The exercise&apos;s reference fixes side B&apos;s choices.</source>
+        <translation>Die Referenz der Übung legt die Einstellungen von Seite B fest.</translation>
+    </message>
+    <message>
+        <location line="+30"/>
+        <source>Side B is unchanged: %1</source>
+        <translation>Seite B bleibt unverändert: %1</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Side B is unchanged: %1 does not build:
+%2</source>
+        <translation>Seite B bleibt unverändert: %1 lässt sich nicht erstellen:
+%2</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>Side B: a shader pair (NAME.vert or NAME.frag) or a scene file&apos;s program</source>
+        <translation>Seite B: ein Shader-Paar (NAME.vert oder NAME.frag) oder das Programm einer Szenendatei</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Shader pairs and scene files (*.vert *.frag *.json);;All files (*)</source>
+        <translation>Shader-Paare und Szenendateien (*.vert *.frag *.json);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>The check could not start: %1</source>
+        <translation>Die Prüfung konnte nicht starten: %1</translation>
+    </message>
+    <message>
+        <location line="+31"/>
+        <source>Case %1 in the difference view (key C: the other compare views; &quot;Back to my scene&quot; in the Exercise panel)</source>
+        <translation>Fall %1 in der Differenzansicht (Taste C: die anderen Vergleichsansichten; „Zurück zu meiner Szene“ im Bereich „Übung“)</translation>
+    </message>
+    <message>
+        <location filename="../../app/main_window_menus.cpp" line="-13"/>
+        <source>&amp;File</source>
+        <translation>&amp;Datei</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Chec&amp;k My Work</source>
+        <translation>&amp;Arbeit prüfen</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>F9</source>
+        <translation>F9</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Side B: Shader Files...</source>
+        <translation>Seite B: Shader-Dateien...</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <location filename="../../app/main_window_unsaved.cpp" line="-5"/>
+        <source>Shader pairs (*.vert *.frag);;All files (*)</source>
+        <translation>Shader-Paare (*.vert *.frag);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Open S&amp;haders...</source>
+        <translation>S&amp;hader öffnen...</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Ctrl+Shift+O</source>
+        <translation>Ctrl+Shift+O</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Open a shader pair (NAME.vert and NAME.frag)</source>
+        <translation>Shader-Paar öffnen (NAME.vert und NAME.frag)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Save Shaders</source>
+        <translation>Shader speichern</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Ctrl+Alt+S</source>
+        <translation>Ctrl+Alt+S</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Save Shaders As...</source>
+        <translation>Shader speichern unter...</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Edit</source>
+        <translation>&amp;Bearbeiten</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;View</source>
+        <translation>&amp;Ansicht</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Reset &amp;Everything</source>
+        <translation>Alles zu&amp;rücksetzen</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Ctrl+Shift+R</source>
+        <translation>Ctrl+Shift+R</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&amp;Quit</source>
+        <translation>&amp;Beenden</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>&amp;Undo in the Editor</source>
+        <translation>&amp;Rückgängig im Editor</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Redo in the Editor</source>
+        <translation>&amp;Wiederherstellen im Editor</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <location line="+2"/>
+        <source>Ctrl+Y</source>
+        <translation>Ctrl+Y</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Ctrl+Shift+Z</source>
+        <translation>Ctrl+Shift+Z</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Find in the Shader</source>
+        <translation>Im Shader &amp;suchen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Shading</source>
+        <translation>&amp;Schattierung</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Toggle &amp;Gouraud / Phong</source>
+        <translation>&amp;Gouraud / Phong umschalten</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>G</source>
+        <translation>G</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Toggle Phong / &amp;Blinn-Phong specular</source>
+        <translation>Spiegelnden Anteil Phong / &amp;Blinn-Phong umschalten</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Ctrl+B</source>
+        <translation>Ctrl+B</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The program in the editor (%1) computes its own specular term: load a preset or Reset Everything to switch it.</source>
+        <translation>Das Programm im Editor (%1) berechnet seinen eigenen spiegelnden Anteil: Laden Sie eine Vorlage oder wählen Sie „Alles zurücksetzen“, um ihn umzuschalten.</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>Toggle &amp;Perspective / Orthographic</source>
+        <translation>&amp;Perspektivisch / orthografisch umschalten</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>P</source>
+        <translation>P</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Toggle &amp;Lighting</source>
+        <translation>Be&amp;leuchtung ein/aus</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>L</source>
+        <translation>L</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Toggle the &amp;Ambient Term</source>
+        <translation>&amp;Ambienten Anteil ein/aus</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Toggle the &amp;Diffuse Term</source>
+        <translation>&amp;Diffusen Anteil ein/aus</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Toggle the &amp;Specular Term</source>
+        <translation>&amp;Spiegelnden Anteil ein/aus</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>&amp;Compare: Off / Side by Side / Wipe / Difference</source>
+        <translation>&amp;Vergleich: Aus / Nebeneinander / Wischblende / Differenz</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>C</source>
+        <translation>C</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>&amp;Reset Camera</source>
+        <translation>&amp;Kamera zurücksetzen</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>R</source>
+        <translation>R</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Clear the &amp;Probe (in Presentation Mode: Leave It)</source>
+        <translation>&amp;Sonde entfernen (im Präsentationsmodus: diesen verlassen)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Esc</source>
+        <translation>Esc</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Auto-rotate</source>
+        <translation>Automatisch d&amp;rehen</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Space</source>
+        <translation>Space</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>&amp;Help</source>
+        <translation>&amp;Hilfe</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Keyboard Shortcuts</source>
+        <translation>&amp;Tastenkürzel</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Features (README)</source>
+        <translation>&amp;Funktionen (README)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;About lightbench</source>
+        <translation>Ü&amp;ber lightbench</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Zoom &amp;In Editor</source>
+        <translation>Editor &amp;vergrößern</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Ctrl+=</source>
+        <translation>Ctrl+=</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Zoom &amp;Out Editor</source>
+        <translation>Editor verk&amp;leinern</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Reset Editor &amp;Zoom</source>
+        <translation>Editor-&amp;Zoom zurücksetzen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Ctrl+0</source>
+        <translation>Ctrl+0</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>UI &amp;Scale</source>
+        <translation>&amp;Oberflächenskalierung</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1%</source>
+        <translation>%1 %</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Fit the &amp;Window to the Screen</source>
+        <translation>&amp;Fenster an den Bildschirm anpassen</translation>
+    </message>
+    <message>
+        <location filename="../../app/main_window_presentation.cpp" line="+40"/>
+        <source>&amp;Presentation Mode</source>
+        <translation>&amp;Präsentationsmodus</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>F11</source>
+        <translation>F11</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>F5</source>
+        <translation>F5</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Full screen, the presentation UI scale, the view large (F6: the panels)</source>
+        <translation>Vollbild, die Oberflächenskalierung der Präsentation, die Ansicht groß (F6: die Bereiche)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Show the Panels in Presentation &amp;Mode</source>
+        <translation>Bereiche im Präsentations&amp;modus zeigen</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>F6</source>
+        <translation>F6</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&amp;Blank the Screen (Presentation Mode)</source>
+        <translation>Bildschirm sch&amp;warz schalten (Präsentationsmodus)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>B</source>
+        <translation>B</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Faded Probe Arrows</source>
+        <translation>&amp;Blasse Sondenpfeile</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>The probe&apos;s arrows thin and see-through, so the highlight under them stays visible</source>
+        <translation>Die Pfeile der Sonde dünn und durchscheinend, damit das Glanzlicht darunter sichtbar bleibt</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>B or . blanks the screen in presentation mode (F5 or F11); Phong / Blinn-Phong is Ctrl+B</source>
+        <translation>B oder . schaltet den Bildschirm im Präsentationsmodus (F5 oder F11) schwarz; Phong / Blinn-Phong ist Strg+B</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>Presentation mode (F5) will show the panels (F6 hides them)</source>
+        <translation>Der Präsentationsmodus (F5) zeigt die Bereiche an (F6 blendet sie aus)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Presentation mode (F5) will hide the panels (F6 shows them)</source>
+        <translation>Der Präsentationsmodus (F5) blendet die Bereiche aus (F6 zeigt sie an)</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>The editor needs %1 px at this scale: View &gt; Shader editor shows it</source>
+        <translation>Der Editor braucht bei dieser Skalierung %1 px: Ansicht &gt; Shader-Editor zeigt ihn</translation>
+    </message>
+    <message>
+        <location filename="../../app/main_window_unsaved.cpp" line="-1"/>
+        <source>Save the shader pair as NAME.vert and NAME.frag</source>
+        <translation>Shader-Paar als NAME.vert und NAME.frag speichern</translation>
+    </message>
+</context>
+<context>
+    <name>lb::MaterialPanel</name>
+    <message>
+        <location filename="../../widgets/material_panel.cpp" line="+42"/>
+        <source>%1 (%2): the material&apos;s %3 reflection coefficients</source>
+        <translation>%1 (%2): Reflexionskoeffizienten des Materials (%3)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>shininess: the specular exponent n in (R.V)^n or (N.H)^n; higher gives a smaller, sharper highlight</source>
+        <translation>shininess: der Glanzexponent n in (R.V)^n oder (N.H)^n; ein größerer Wert ergibt ein kleineres, schärferes Glanzlicht</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>Shininess</source>
+        <translation>Glanzexponent</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Reset material</source>
+        <translation>Material zurücksetzen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The selected object&apos;s material back to the slides&apos; red plastic: Ka = Kd = (1, 0, 0), Ks = (1, 1, 1), n = 6</source>
+        <translation>Das Material des ausgewählten Objekts zurück auf das rote Plastik der Folien: Ka = Kd = (1, 0, 0), Ks = (1, 1, 1), n = 6</translation>
+    </message>
+</context>
+<context>
+    <name>lb::MeshActions</name>
+    <message>
+        <location filename="../../app/mesh_actions.cpp" line="+65"/>
+        <source>Open &amp;Recent Mesh</source>
+        <translation>Zuletzt geöffnetes M&amp;esh</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>Texture not used</source>
+        <translation>Textur nicht verwendet</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>An image could not be used as a texture.</source>
+        <translation>Ein Bild konnte nicht als Textur verwendet werden.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Mesh not built</source>
+        <translation>Mesh nicht erstellt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>An object&apos;s mesh could not be built; it keeps what it drew before.</source>
+        <translation>Das Mesh eines Objekts konnte nicht erstellt werden; es behält, was es vorher gezeichnet hat.</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>Open &amp;Mesh...</source>
+        <translation>&amp;Mesh öffnen...</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Ctrl+M</source>
+        <translation>Ctrl+M</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Open &amp;Texture Image...</source>
+        <translation>&amp;Texturbild öffnen...</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Ctrl+T</source>
+        <translation>Ctrl+T</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&amp;Preferences...</source>
+        <translation>&amp;Einstellungen...</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Ctrl+,</source>
+        <translation>Ctrl+,</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Show &amp;Normals</source>
+        <translation>&amp;Normalen anzeigen</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>N</source>
+        <translation>N</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>%1 not loaded (%2 drawn)</source>
+        <translation>%1 nicht geladen (%2 gezeichnet)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1: %2 triangles</source>
+        <translation>%1: %2 Dreiecke</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>, %1 s</source>
+        <translation>, %1 s</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Meshes Assimp reads (%1);;</source>
+        <translation>Von Assimp lesbare Meshes (%1);;</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>All files (*)</source>
+        <translation>Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Open a mesh</source>
+        <translation>Mesh öffnen</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>Open an image as the selected object&apos;s texture</source>
+        <translation>Bild als Textur des ausgewählten Objekts öffnen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Images (%1);;All files (*)</source>
+        <translation>Bilder (%1);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <location line="+44"/>
+        <source>Loading cancelled</source>
+        <translation>Laden abgebrochen</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Mesh not loaded</source>
+        <translation>Mesh nicht geladen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A mesh file the scene names could not be loaded. Its objects draw their shapes and keep its name, so saving keeps it; it is read again after the file changes (at your next change to the scene) or when you open it.</source>
+        <translation>Eine Mesh-Datei, die die Szene nennt, konnte nicht geladen werden. Ihre Objekte zeichnen ihre Grundform und behalten den Dateinamen, sodass er beim Speichern erhalten bleibt; die Datei wird erneut gelesen, wenn sie sich ändert (bei Ihrer nächsten Änderung an der Szene) oder wenn Sie sie öffnen.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The mesh could not be loaded; the previous one stays.</source>
+        <translation>Das Mesh konnte nicht geladen werden; das vorherige bleibt.</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Files not used</source>
+        <translation>Dateien nicht verwendet</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Some files could not be used.</source>
+        <translation>Einige Dateien konnten nicht verwendet werden.</translation>
+    </message>
+</context>
+<context>
+    <name>lb::NumberBox</name>
+    <message>
+        <location filename="../../widgets/number_box.cpp" line="+68"/>
+        <source>Not a number: digits, a sign in front and one decimal separator.</source>
+        <translation>Keine Zahl: Ziffern, ein Vorzeichen vorne und ein Dezimaltrennzeichen.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>A whole number, typed without separators.</source>
+        <translation>Eine ganze Zahl, ohne Trennzeichen eingegeben.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>One decimal separator, a point or a comma (2.5 or 2,5), and no thousands separators.</source>
+        <translation>Ein Dezimaltrennzeichen, Punkt oder Komma (2.5 oder 2,5), und keine Tausendertrennzeichen.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>This box takes whole numbers.</source>
+        <translation>Dieses Feld nimmt ganze Zahlen an.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>This box takes one decimal.</source>
+        <translation>Dieses Feld nimmt eine Nachkommastelle an.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>This box takes %1 decimals.</source>
+        <translation>Dieses Feld nimmt %1 Nachkommastellen an.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>This box takes %1 to %2.</source>
+        <translation>Dieses Feld nimmt Werte von %1 bis %2 an.</translation>
+    </message>
+</context>
+<context>
+    <name>lb::ObjectLoader</name>
+    <message>
+        <location filename="../../render/import/object_loader.cpp" line="+161"/>
+        <source>%1 (the objects naming it show the mesh file&apos;s texture or the checker, and keep its name for when the file is back)</source>
+        <translation>%1 (die Objekte, die diese Datei nennen, zeigen die Textur der Mesh-Datei oder das Schachbrettmuster und behalten den Dateinamen für den Fall, dass die Datei wieder da ist)</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>%1: %2 vertices, %3 triangles</source>
+        <translation>%1: %2 Vertices, %3 Dreiecke</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>, loaded in %1 s</source>
+        <translation>, geladen in %1 s</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>, normals generated</source>
+        <translation>, Normalen erzeugt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>, normals generated (the file has none)</source>
+        <translation>, Normalen erzeugt (die Datei hat keine)</translation>
+    </message>
+    <message>
+        <location line="+51"/>
+        <source>%1: not used: its object was removed</source>
+        <translation>%1: nicht verwendet: sein Objekt wurde entfernt</translation>
+    </message>
+    <message>
+        <location line="+53"/>
+        <source>%1: not loaded: cancelled</source>
+        <translation>%1: nicht geladen: abgebrochen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1: not loaded: its object was removed</source>
+        <translation>%1: nicht geladen: sein Objekt wurde entfernt</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <location line="+184"/>
+        <source>Loading cancelled</source>
+        <translation>Laden abgebrochen</translation>
+    </message>
+    <message>
+        <location line="-62"/>
+        <source>building</source>
+        <translation>wird erstellt</translation>
+    </message>
+</context>
+<context>
+    <name>lb::ObjectPanel</name>
+    <message>
+        <location filename="../../widgets/object_panel.cpp" line="+31"/>
+        <source>The scene&apos;s objects, each with its own mesh, transform and material: select one to edit it here and in the Material panel (or click it in the view). Untick to hide; double-click to rename</source>
+        <translation>Die Objekte der Szene, jedes mit eigenem Mesh, eigener Transformation und eigenem Material: Wählen Sie eines aus, um es hier und im Bereich „Material“ zu bearbeiten (oder klicken Sie es in der Ansicht an). Haken entfernen zum Ausblenden; Doppelklick zum Umbenennen</translation>
+    </message>
+    <message>
+        <location line="+30"/>
+        <source>Add</source>
+        <translation>Hinzufügen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A new sphere in the first free place near the centre (at most %1 objects; R frames them all)</source>
+        <translation>Eine neue Kugel am ersten freien Platz nahe der Mitte (höchstens %1 Objekte; R bringt alle ins Bild)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Duplicate</source>
+        <translation>Duplizieren</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A copy of the selected object, material and all, in the first free place near the centre</source>
+        <translation>Eine Kopie des ausgewählten Objekts samt Material am ersten freien Platz nahe der Mitte</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source> copy</source>
+        <translation> Kopie</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Remove</source>
+        <translation>Entfernen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Removes the selected object (the last one stays); lights in its frame go to the object before it</source>
+        <translation>Entfernt das ausgewählte Objekt (das letzte bleibt); Lichter in seinen Objektkoordinaten gehen an das Objekt davor</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Cube (flat faces)</source>
+        <translation>Würfel (flache Seiten)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Sphere (smooth)</source>
+        <translation>Kugel (glatt)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Torus</source>
+        <translation>Torus</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Plane</source>
+        <translation>Ebene</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The object: vPosition and vNormal come from this mesh. A built-in shape replaces a mesh file</source>
+        <translation>Das Objekt: vPosition und vNormal kommen aus diesem Mesh. Eine eingebaute Form ersetzt eine Mesh-Datei</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Open...</source>
+        <translation>Öffnen...</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Open a mesh file: any format Assimp reads (Ctrl+M; or drop a file on the window)</source>
+        <translation>Mesh-Datei öffnen: jedes Format, das Assimp liest (Strg+M; oder eine Datei auf dem Fenster ablegen)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Shape</source>
+        <translation>Form</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Subdivisions of the sphere, torus and plane. Few vertices show Gouraud&apos;s weakness: its highlight follows the vertices</source>
+        <translation>Unterteilungen von Kugel, Torus und Ebene. Wenige Vertices zeigen die Schwäche von Gouraud: Das Glanzlicht folgt den Vertices</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Tessellation</source>
+        <translation>Tessellierung</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>From the mesh</source>
+        <translation>Aus dem Mesh</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Smooth (crease angle)</source>
+        <translation>Glatt (Knickwinkel)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Flat</source>
+        <translation>Flach</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>vNormal: the mesh&apos;s own normals (generated smooth when a file has none), or generated: smooth, averaged over the triangles around a vertex within the crease angle, or flat, one per triangle</source>
+        <translation>vNormal: die eigenen Normalen des Meshes (glatt erzeugt, wenn eine Datei keine hat) oder erzeugt: glatt, gemittelt über die Dreiecke um einen Vertex innerhalb des Knickwinkels, oder flach, eine pro Dreieck</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Normals</source>
+        <translation>Normalen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Generated smooth normals average only triangles that meet at less than this angle: 0 is flat, 180 smooths every edge</source>
+        <translation>Erzeugte glatte Normalen mitteln nur über Dreiecke, die sich unter weniger als diesem Winkel treffen: 0 ist flach, 180 glättet jede Kante</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Crease angle</source>
+        <translation>Knickwinkel</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Show normals as lines</source>
+        <translation>Normalen als Linien zeigen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A short line along each vertex normal, transformed by mNormals as the shaders do (key N)</source>
+        <translation>Eine kurze Linie entlang jeder Vertex-Normale, transformiert mit mNormals wie in den Shadern (Taste N)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Cull back faces (closed meshes)</source>
+        <translation>Rückseiten ausblenden (geschlossene Meshes)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Triangles facing away from the camera are not drawn: the same picture for a closed mesh, about twice as fast; an open mesh shows holes where its inside was</source>
+        <translation>Von der Kamera abgewandte Dreiecke werden nicht gezeichnet: bei einem geschlossenen Mesh dasselbe Bild, etwa doppelt so schnell; ein offenes Mesh zeigt Löcher, wo seine Innenseite war</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Use the mesh file&apos;s material</source>
+        <translation>Material der Mesh-Datei verwenden</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The mesh file&apos;s ambient, diffuse and specular colours and shininess replace Ka, Kd, Ks and shininess: now, and whenever a file is loaded</source>
+        <translation>Die ambiente, diffuse und spiegelnde Farbe und der Glanzexponent der Mesh-Datei ersetzen Ka, Kd, Ks und den Glanzexponenten: jetzt und bei jedem Laden einer Datei</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>Rotation about %1 in degrees (model matrix; applied X, then Y, then Z)</source>
+        <translation>Drehung um %1 in Grad (Modellmatrix; angewendet X, dann Y, dann Z)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Scale along %1. A non-uniform scale is why normals need mNormals, the inverse transpose of mModelView</source>
+        <translation>Skalierung entlang %1. Eine ungleichmäßige Skalierung ist der Grund, warum Normalen mNormals brauchen, die inverse Transponierte von mModelView</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Translation along world %1: where the object&apos;s centre lies (model matrix, applied last)</source>
+        <translation>Verschiebung entlang der Welt-%1-Achse: wo der Mittelpunkt des Objekts liegt (Modellmatrix, zuletzt angewendet)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Rotate</source>
+        <translation>Drehen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Scale</source>
+        <translation>Skalieren</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Move</source>
+        <translation>Verschieben</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Auto-rotate about Y</source>
+        <translation>Automatisch um Y drehen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Turns the model: a light in the object frame turns with it (key Space)</source>
+        <translation>Dreht das Modell: Ein Licht in Objektkoordinaten dreht sich mit (Leertaste)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Reset object</source>
+        <translation>Objekt zurücksetzen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The selected object back to the coarse unit sphere, unrotated, unscaled and not turning; its name, place and material stay</source>
+        <translation>Das ausgewählte Objekt zurück zur groben Einheitskugel, nicht gedreht, nicht skaliert und ohne automatische Drehung; Name, Ort und Material bleiben</translation>
+    </message>
+    <message>
+        <location line="+64"/>
+        <source>File: %1</source>
+        <translation>Datei: %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>File: %1 (not loaded)</source>
+        <translation>Datei: %1 (nicht geladen)</translation>
+    </message>
+</context>
+<context>
+    <name>lb::PreferencesDialog</name>
+    <message>
+        <location filename="../../widgets/preferences_dialog.cpp" line="+15"/>
+        <source>Preferences</source>
+        <translation>Einstellungen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Mesh files are read by a helper process (lightbench-import). When it needs more memory or time than this, it is stopped and the file gets a message; the workbench carries on.</source>
+        <translation>Mesh-Dateien werden von einem Hilfsprozess (lightbench-import) gelesen. Braucht er mehr Speicher oder Zeit als hier angegeben, wird er beendet und die Datei erhält eine Meldung; die Werkbank arbeitet weiter.</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source> MB</source>
+        <translation> MB</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The helper&apos;s address-space limit. Default: half of this machine&apos;s memory (%1 MB). Also --import-memory-limit MB</source>
+        <translation>Die Adressraum-Grenze des Hilfsprozesses. Standard: die Hälfte des Arbeitsspeichers dieses Rechners (%1 MB). Auch --import-memory-limit MB</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Import memory limit</source>
+        <translation>Speichergrenze für den Import</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <location line="+9"/>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <location line="-7"/>
+        <source>A load that takes longer is stopped. Default: %1 s</source>
+        <translation>Ein Ladevorgang, der länger dauert, wird abgebrochen. Standard: %1 s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Import time limit</source>
+        <translation>Zeitgrenze für den Import</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Your shader program is tried on tiny frames before it draws; when one frame at the view&apos;s size would take longer than this, it is refused and the last good program keeps drawing. Default: %1 s. Also --frame-budget SECONDS</source>
+        <translation>Ihr Shader-Programm wird vor dem Zeichnen an winzigen Bildern erprobt; würde ein Bild in der Größe der Ansicht länger dauern als hier angegeben, wird es abgelehnt und das letzte funktionierende Programm zeichnet weiter. Standard: %1 s. Auch --frame-budget SECONDS</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Frame budget</source>
+        <translation>Zeitbudget pro Bild</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Move the camera and the lights smoothly between a lesson&apos;s steps</source>
+        <translation>Kamera und Lichter zwischen den Schritten einer Lektion fließend bewegen</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>So the class sees where they go; off: each step jumps</source>
+        <translation>Damit die Klasse sieht, wohin sie sich bewegen; aus: jeder Schritt springt</translation>
+    </message>
+</context>
+<context>
+    <name>lb::ProbePanel</name>
+    <message>
+        <location filename="../../widgets/probe_panel.cpp" line="+60"/>
+        <source>Copy the Equation</source>
+        <translation>Gleichung kopieren</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The lighting equation with this point&apos;s numbers, as text</source>
+        <translation>Die Beleuchtungsgleichung mit den Zahlen dieses Punkts, als Text</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>Ctrl+click (or Shift+click) the surface to probe a point: the vectors, N·L, the specular angle and the three terms, beside the pixel the GPU drew. Esc clears it.</source>
+        <translation>Strg+Klick (oder Umschalt+Klick) auf die Oberfläche misst einen Punkt mit der Sonde: die Vektoren, N·L, den Winkel des spiegelnden Anteils und die drei Anteile, neben dem Pixel, das die GPU gezeichnet hat. Esc entfernt ihn.</translation>
+    </message>
+    <message>
+        <location line="+37"/>
+        <source>No surface at (%1, %2).</source>
+        <translation>Keine Oberfläche bei (%1, %2).</translation>
+    </message>
+    <message>
+        <location line="+69"/>
+        <source>Point</source>
+        <translation>Punkt</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>pixel (%1, %2), %3, triangle %4%5</source>
+        <translation>Pixel (%1, %2), %3, Dreieck %4%5</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>, side B</source>
+        <translation>, Seite B</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>, side A</source>
+        <translation>, Seite A</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>P (eye)</source>
+        <translation>P (Kamera)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>N</source>
+        <translation>N</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>V</source>
+        <translation>V</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>levels %1 and %2 (%3% of %2)</source>
+        <translation>Stufen %1 und %2 (%3 % von %2)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>level %1</source>
+        <translation>Stufe %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>texture</source>
+        <translation>Textur</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>uv (%1, %2), level of detail %3: %4, %5</source>
+        <translation>uv (%1, %2), Detailstufe %3: %4, %5</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>mipmaps</source>
+        <translation>Mipmaps</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>no mipmaps</source>
+        <translation>keine Mipmaps</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>base colour</source>
+        <translation>Grundfarbe</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Light %1</source>
+        <translation>Licht %1</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>P, L (%1)</source>
+        <translation>P, L (%1)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>distance, attenuation</source>
+        <translation>Abstand, Abschwächung</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>spot</source>
+        <translation>Spot</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>0 (outside the cone)</source>
+        <translation>0 (außerhalb des Kegels)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 (off)</source>
+        <translation>%1 (aus)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <location line="+5"/>
+        <source>ambient</source>
+        <translation>ambient</translation>
+    </message>
+    <message>
+        <location line="-4"/>
+        <location line="+5"/>
+        <source>diffuse</source>
+        <translation>diffus</translation>
+    </message>
+    <message>
+        <location line="-4"/>
+        <location line="+5"/>
+        <source>specular</source>
+        <translation>spiegelnd</translation>
+    </message>
+    <message>
+        <location line="-3"/>
+        <source>Sum</source>
+        <translation>Summe</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>the model (%1 shading)</source>
+        <translation>das Modell (Schattierung %1)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>model</source>
+        <translation>Modell</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <location line="+7"/>
+        <source>reference</source>
+        <translation>Referenz</translation>
+    </message>
+    <message>
+        <location line="-5"/>
+        <source> of 255 (the built-in model, %1 shading)</source>
+        <translation> von 255 (das eingebaute Modell, Schattierung %1)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source> of 255 (%1 shading)</source>
+        <translation> von 255 (Schattierung %1)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 draws %2</source>
+        <translation>%1 zeichnet %2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>nothing here</source>
+        <translation>hier nichts</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>GPU drew</source>
+        <translation>GPU zeichnete</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>difference</source>
+        <translation>Differenz</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 of 255 from %2</source>
+        <translation>%1 von 255 (Vergleich: %2)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 of 255</source>
+        <translation>%1 von 255</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>The equation at this point</source>
+        <translation>Die Gleichung an diesem Punkt</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>This point is drawn by %1 (side B), which is itself the reference: it is compared with nothing. The numbers above are the built-in model&apos;s, which that program need not follow.</source>
+        <translation>Diesen Punkt zeichnet %1 (Seite B), und Seite B ist selbst die Referenz: Er wird mit nichts verglichen. Die Zahlen oben stammen aus dem eingebauten Modell, dem dieses Programm nicht folgen muss.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>The pixel is compared with what %1 draws at this point; the numbers above are the built-in model&apos;s.</source>
+        <translation>Das Pixel wird mit dem verglichen, was %1 an diesem Punkt zeichnet; die Zahlen oben stammen aus dem eingebauten Modell.</translation>
+    </message>
+</context>
+<context>
+    <name>lb::RecentFiles</name>
+    <message>
+        <location filename="../../widgets/recent_files.cpp" line="+55"/>
+        <source>(none yet)</source>
+        <translation>(noch keine)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Clear the list</source>
+        <translation>Liste leeren</translation>
+    </message>
+</context>
+<context>
+    <name>lb::SceneActions</name>
+    <message>
+        <location filename="../../app/scene_actions.cpp" line="+18"/>
+        <source>Open Recent S&amp;cene</source>
+        <translation>&amp;Zuletzt geöffnete Szene</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>Gouraud vs Phong (the slides)</source>
+        <translation>Gouraud vs. Phong (aus den Folien)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Phong vs Blinn-Phong specular</source>
+        <translation>Spiegelnder Anteil: Phong vs. Blinn-Phong</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The three light frames</source>
+        <translation>Die drei Koordinatensysteme des Lichts</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The normal matrix</source>
+        <translation>Die Normalenmatrix</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Toon shading</source>
+        <translation>Toon-Schattierung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The terms one at a time (keys A, D, S)</source>
+        <translation>Die Anteile einzeln (Tasten A, D, S)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Attenuation of a point light</source>
+        <translation>Abschwächung eines Punktlichts</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A spotlight</source>
+        <translation>Ein Spotlicht</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The exercise: a textured cube and a sphere, light in camera coordinates</source>
+        <translation>Die Übung: ein texturierter Würfel und eine Kugel, Licht in Kamerakoordinaten</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>A light in one object&apos;s frame (it turns with the torus)</source>
+        <translation>Ein Licht in den Objektkoordinaten eines Objekts (es dreht sich mit dem Torus)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Texture filtering: nearest, linear and mipmaps</source>
+        <translation>Texturfilterung: nächster Nachbar, linear und Mipmaps</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Exercise: per-fragment lighting (Check My Work, F9)</source>
+        <translation>Übung: Beleuchtung pro Fragment (Arbeit prüfen, F9)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>&amp;Open Scene...</source>
+        <translation>Szene ö&amp;ffnen...</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>E&amp;xamples</source>
+        <translation>Beis&amp;piele</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>&amp;Save Scene</source>
+        <translation>Szene &amp;speichern</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Save Scene &amp;As...</source>
+        <translation>Szene speichern &amp;unter...</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Ctrl+Shift+S</source>
+        <translation>Ctrl+Shift+S</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>E&amp;xport Image...</source>
+        <translation>Bild e&amp;xportieren...</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Ctrl+E</source>
+        <translation>Ctrl+E</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Cop&amp;y Image</source>
+        <translation>Bild &amp;kopieren</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Ctrl+Shift+C</source>
+        <translation>Ctrl+Shift+C</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>The scene could not be opened; nothing changed.</source>
+        <translation>Die Szene konnte nicht geöffnet werden; nichts wurde geändert.</translation>
+    </message>
+    <message>
+        <location line="+35"/>
+        <source>This step</source>
+        <translation>Dieser Schritt</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+3"/>
+        <source>%n field(s) could not be used and kept their defaults:</source>
+        <translation>
+            <numerusform>%n Feld konnte nicht verwendet werden und behält seinen Standardwert:</numerusform>
+            <numerusform>%n Felder konnten nicht verwendet werden und behalten ihre Standardwerte:</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 opened with less tessellation than it asks for, to fit this machine&apos;s memory; the file is unchanged unless you save the scene.</source>
+        <translation>%1 wurde mit geringerer Tessellierung als angefordert geöffnet, passend zum Speicher dieses Rechners; die Datei bleibt unverändert, solange Sie die Szene nicht speichern.</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+6"/>
+        <source>%1 opened; %n field(s) could not be used and kept their defaults.</source>
+        <translation>
+            <numerusform>%1 geöffnet; %n Feld konnte nicht verwendet werden und behält seinen Standardwert.</numerusform>
+            <numerusform>%1 geöffnet; %n Felder konnten nicht verwendet werden und behalten ihre Standardwerte.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Opened the scene %1</source>
+        <translation>Szene %1 geöffnet</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>The scene was not saved.</source>
+        <translation>Die Szene wurde nicht gespeichert.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Saved the scene to %1</source>
+        <translation>Szene gespeichert in %1</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>%1: not drawn: %2</source>
+        <translation>%1: nicht gezeichnet: %2</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1: the view could not be drawn at %2 x %3</source>
+        <translation>%1: Die Ansicht konnte nicht in %2 x %3 gezeichnet werden</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>The image was not exported.</source>
+        <translation>Das Bild wurde nicht exportiert.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Exported %1</source>
+        <translation>%1 exportiert</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Copied the view (%1 x %2) to the clipboard</source>
+        <translation>Ansicht (%1 x %2) in die Zwischenablage kopiert</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Open a scene</source>
+        <translation>Szene öffnen</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Save the scene</source>
+        <translation>Szene speichern</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>Export the view</source>
+        <translation>Ansicht exportieren</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>PNG images (*.png);;All files (*)</source>
+        <translation>PNG-Bilder (*.png);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Scene</source>
+        <translation>Szene</translation>
+    </message>
+</context>
+<context>
+    <name>lb::ScenePanel</name>
+    <message>
+        <location filename="../../widgets/scene_panel.cpp" line="+71"/>
+        <source> or </source>
+        <translation> oder </translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>Unused: the program on screen has no uniform %1 (a constant in the shader, perhaps), so this control changes nothing.
+
+%2</source>
+        <translation>Ungenutzt: Das Programm auf dem Bildschirm hat kein Uniform %1 (vielleicht eine Konstante im Shader), daher ändert dieses Steuerelement nichts.
+
+%2</translation>
+    </message>
+</context>
+<context>
+    <name>lb::SettingsAutosave</name>
+    <message>
+        <location filename="../../app/settings_autosave.cpp" line="+56"/>
+        <source>Your work is saved again in %1</source>
+        <translation>Ihre Arbeit wird wieder in %1 gespeichert</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Your work is not saved, trying again every %1 s: %2</source>
+        <translation>Ihre Arbeit ist nicht gespeichert, neuer Versuch alle %1 s: %2</translation>
+    </message>
+</context>
+<context>
+    <name>lb::ShaderDocument</name>
+    <message>
+        <location filename="../../render/model/shader_document.cpp" line="+219"/>
+        <source>Cannot open %1</source>
+        <translation>%1 kann nicht geöffnet werden</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>Cannot save %1</source>
+        <translation>%1 kann nicht gespeichert werden</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>The shaders have no files yet: use Save As</source>
+        <translation>Die Shader haben noch keine Dateien: Verwenden Sie „Shader speichern unter“</translation>
+    </message>
+</context>
+<context>
+    <name>lb::ShadingPanel</name>
+    <message>
+        <location filename="../../widgets/shading_panel.cpp" line="+25"/>
+        <source>Gouraud (per vertex)</source>
+        <translation>Gouraud (pro Vertex)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Phong (per fragment)</source>
+        <translation>Phong (pro Fragment)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Flat (per triangle)</source>
+        <translation>Flach (pro Dreieck)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Gouraud: the model runs in the vertex shader and colours are interpolated; Phong: N, L, V are interpolated and the model runs for every fragment; flat: each triangle takes the colour of its last (provoking) vertex (key G: Gouraud / Phong)</source>
+        <translation>Gouraud: Das Modell läuft im Vertex-Shader und die Farben werden interpoliert; Phong: N, L, V werden interpoliert und das Modell läuft für jedes Fragment; flach: Jedes Dreieck erhält die Farbe seines letzten (provozierenden) Vertex (Taste G: Gouraud / Phong)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Shading</source>
+        <translation>Schattierung</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Phong: (R·V)^n</source>
+        <translation>Phong: (R·V)^n</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Blinn-Phong: (N·H)^n</source>
+        <translation>Blinn-Phong: (N·H)^n</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>R = reflect(-L, N), the mirrored light direction; H = normalize(L + V), the half vector (key B)</source>
+        <translation>R = reflect(-L, N), die gespiegelte Lichtrichtung; H = normalize(L + V), der Halbvektor (Taste B)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <location line="+41"/>
+        <source>Specular</source>
+        <translation>Spiegelnd</translation>
+    </message>
+    <message>
+        <location line="-39"/>
+        <source>Perspective: V = -posC</source>
+        <translation>Perspektivisch: V = -posC</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Orthographic: V = (0,0,1)</source>
+        <translation>Orthografisch: V = (0,0,1)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>mProjection, and the view vector V that matches it (key P)</source>
+        <translation>mProjection und der dazu passende Blickvektor V (Taste P)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Projection</source>
+        <translation>Projektion</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Colour (lit)</source>
+        <translation>Farbe (beleuchtet)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>N as colour</source>
+        <translation>N als Farbe</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>L as colour</source>
+        <translation>L als Farbe</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>V as colour</source>
+        <translation>V als Farbe</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>H as colour</source>
+        <translation>H als Farbe</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>R as colour</source>
+        <translation>R als Farbe</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>N·L as grey</source>
+        <translation>N·L als Grauwert</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Specular factor as grey</source>
+        <translation>Glanzfaktor als Grauwert</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Attenuation as grey</source>
+        <translation>Abschwächung als Grauwert</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>uShow: the model taken apart. Vectors as 0.5·v + 0.5 (x red, y green, z blue), numbers as grey; L, H, R and the numbers are light 1&apos;s (with several lights on too)</source>
+        <translation>uShow: das Modell zerlegt. Vektoren als 0.5·v + 0.5 (x rot, y grün, z blau), Zahlen als Grauwert; L, H, R und die Zahlen gehören zu Licht 1 (auch wenn mehrere Lichter an sind)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Show</source>
+        <translation>Anzeige</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Lighting</source>
+        <translation>Beleuchtung</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>uEnableLighting: off shows Kd unlit (key L)</source>
+        <translation>uEnableLighting: aus zeigt Kd unbeleuchtet (Taste L)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Vertex colours</source>
+        <translation>Vertexfarben</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Multiply ambient and diffuse by the vertex colour (vColor)</source>
+        <translation>Ambienten und diffusen Anteil mit der Vertexfarbe (vColor) multiplizieren</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Ambient</source>
+        <translation>Ambient</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Ia·Ka: uEnableAmbient (key A)</source>
+        <translation>Ia·Ka: uEnableAmbient (Taste A)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Diffuse</source>
+        <translation>Diffus</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Id·Kd·max(N·L, 0): uEnableDiffuse (key D)</source>
+        <translation>Id·Kd·max(N·L, 0): uEnableDiffuse (Taste D)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Is·Ks·(R·V or N·H)^n: uEnableSpecular (key S)</source>
+        <translation>Is·Ks·(R·V oder N·H)^n: uEnableSpecular (Taste S)</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Terms</source>
+        <translation>Anteile</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Normals by the model-view (wrong)</source>
+        <translation>Normalen mit der Modelview-Matrix (falsch)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Transform normals by mModelView instead of its inverse transpose, to see why the normal matrix exists: under a non-uniform scale the normals tilt</source>
+        <translation>Normalen mit mModelView statt mit ihrer inversen Transponierten transformieren, um zu sehen, wozu es die Normalenmatrix gibt: Bei ungleichmäßiger Skalierung kippen die Normalen</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>&lt;b&gt;Compare&lt;/b&gt; side A with side B</source>
+        <translation>&lt;b&gt;Vergleich&lt;/b&gt; von Seite A mit Seite B</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Side A is the program on screen (the editor&apos;s); side B is the built-in program with the choices below, a shader pair from files, or an open exercise&apos;s reference; one camera</source>
+        <translation>Seite A ist das Programm auf dem Bildschirm (das des Editors); Seite B ist das eingebaute Programm mit den Einstellungen unten, ein Shader-Paar aus Dateien oder die Referenz einer geöffneten Übung; eine gemeinsame Kamera</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Files...</source>
+        <translation>Dateien...</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Side B draws a shader pair from files (NAME.vert and NAME.frag), e.g. last week&apos;s solution</source>
+        <translation>Seite B zeichnet ein Shader-Paar aus Dateien (NAME.vert und NAME.frag), z. B. die Lösung der letzten Woche</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Stop using these files: side B draws what it drew before them</source>
+        <translation>Diese Dateien nicht mehr verwenden: Seite B zeichnet wieder, was sie vorher gezeichnet hat</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>B program</source>
+        <translation>B-Programm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Off</source>
+        <translation>Aus</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Side by side</source>
+        <translation>Nebeneinander</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <location line="+23"/>
+        <source>Wipe</source>
+        <translation>Wischblende</translation>
+    </message>
+    <message>
+        <location line="-23"/>
+        <source>Difference |A - B|</source>
+        <translation>Differenz |A - B|</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Side by side: A left, B right; wipe: drag the line in the view; difference: |A - B| as a heat map (key C cycles)</source>
+        <translation>Nebeneinander: A links, B rechts; Wischblende: die Linie in der Ansicht ziehen; Differenz: |A - B| als Heatmap (Taste C schaltet weiter)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>View</source>
+        <translation>Ansicht</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>B: Gouraud</source>
+        <translation>B: Gouraud</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>B: Phong</source>
+        <translation>B: Phong</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>B: Flat</source>
+        <translation>B: Flach</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Side B&apos;s shading: per vertex or per fragment</source>
+        <translation>Schattierung von Seite B: pro Vertex oder pro Fragment</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>B shading</source>
+        <translation>B-Schattierung</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>B: Phong (R·V)</source>
+        <translation>B: Phong (R·V)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>B: Blinn-Phong (N·H)</source>
+        <translation>B: Blinn-Phong (N·H)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Side B&apos;s specular term</source>
+        <translation>Spiegelnder Anteil von Seite B</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>B specular</source>
+        <translation>B-Spiegelanteil</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Where the wipe divides A (left) from B (right)</source>
+        <translation>Wo die Wischblende A (links) von B (rechts) trennt</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Reset shading</source>
+        <translation>Schattierung zurücksetzen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Phong shading, Blinn-Phong specular, perspective, lighting on</source>
+        <translation>Phong-Schattierung, spiegelnder Anteil nach Blinn-Phong, perspektivisch, Beleuchtung an</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>the built-in program</source>
+        <translation>das eingebaute Programm</translation>
+    </message>
+</context>
+<context>
+    <name>lb::TextureControls</name>
+    <message>
+        <location filename="../../widgets/texture_controls.cpp" line="+27"/>
+        <source>Texture</source>
+        <translation>Textur</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>uEnableTexture: multiply ambient and diffuse by the texture (uSampler): the image file, else the mesh file&apos;s diffuse texture, else the checker</source>
+        <translation>uEnableTexture: ambienten und diffusen Anteil mit der Textur (uSampler) multiplizieren: die Bilddatei, sonst die diffuse Textur der Mesh-Datei, sonst das Schachbrettmuster</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Image...</source>
+        <translation>Bild...</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Open a PNG, JPEG or any image Qt reads as this object&apos;s texture (Ctrl+T, or drop it on the window); at most %1 x %1 texels</source>
+        <translation>Ein PNG, JPEG oder jedes Bild, das Qt liest, als Textur dieses Objekts öffnen (Strg+T, oder auf dem Fenster ablegen); höchstens %1 x %1 Texel</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>No image: back to the mesh file&apos;s texture or the checker</source>
+        <translation>Kein Bild: zurück zur Textur der Mesh-Datei oder zum Schachbrettmuster</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Repeat</source>
+        <translation>Wiederholen</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Clamp</source>
+        <translation>Begrenzen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Texture coordinates outside 0 to 1: the image repeats (GL_REPEAT) or its edge stretches (GL_CLAMP_TO_EDGE)</source>
+        <translation>Texturkoordinaten außerhalb von 0 bis 1: Das Bild wiederholt sich (GL_REPEAT) oder sein Rand wird gestreckt (GL_CLAMP_TO_EDGE)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Nearest</source>
+        <translation>Nächster Nachbar</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Linear</source>
+        <translation>Linear</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The texel nearest the coordinate (GL_NEAREST: blocky when magnified) or the four around it weighted (GL_LINEAR)</source>
+        <translation>Das Texel, das der Koordinate am nächsten liegt (GL_NEAREST: bei Vergrößerung blockig), oder die vier umliegenden, gewichtet (GL_LINEAR)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Mipmaps</source>
+        <translation>Mipmaps</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Where the texture is minified, read a smaller copy of it chosen by the level of detail (GL_NEAREST_MIPMAP_NEAREST, or trilinear GL_LINEAR_MIPMAP_LINEAR with the linear filter): no shimmer far away. The probe shows the level</source>
+        <translation>Wo die Textur verkleinert wird, eine kleinere Kopie lesen, gewählt nach der Detailstufe (GL_NEAREST_MIPMAP_NEAREST, oder trilinear GL_LINEAR_MIPMAP_LINEAR mit dem linearen Filter): kein Flimmern in der Ferne. Die Sonde zeigt die Stufe</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>%1 (not shown)</source>
+        <translation>%1 (nicht angezeigt)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the checker</source>
+        <translation>das Schachbrettmuster</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the mesh file&apos;s texture, or the checker</source>
+        <translation>die Textur der Mesh-Datei oder das Schachbrettmuster</translation>
+    </message>
+</context>
+<context>
+    <name>lb::TrialProcess</name>
+    <message>
+        <location filename="../../render/trial/trial_process.cpp" line="+176"/>
+        <source>compiling this program and drawing it on small frames did not finish within %1 (the trial&apos;s helper was replaced): an endless or very long loop, or a program too big for the driver?</source>
+        <translation>das Kompilieren dieses Programms und das Zeichnen kleiner Testbilder wurde nicht innerhalb von %1 fertig (der Hilfsprozess für die Erprobung wurde ersetzt): eine Endlosschleife oder sehr lange Schleife, oder ein Programm, das zu groß für den Treiber ist?</translation>
+    </message>
+    <message>
+        <location line="+40"/>
+        <source>the driver ran out of memory compiling or drawing this program (limit %1; the trial&apos;s helper was replaced)</source>
+        <translation>dem Treiber ging beim Kompilieren oder Zeichnen dieses Programms der Speicher aus (Grenze %1; der Hilfsprozess für die Erprobung wurde ersetzt)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>the driver crashed the trial&apos;s helper while it drew this program (it was replaced)</source>
+        <translation>der Treiber hat den Hilfsprozess für die Erprobung beim Zeichnen dieses Programms abstürzen lassen (er wurde ersetzt)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the trial&apos;s helper ended while it drew this program (exit code %1; it was replaced)</source>
+        <translation>der Hilfsprozess für die Erprobung wurde beim Zeichnen dieses Programms beendet (Exit-Code %1; er wurde ersetzt)</translation>
+    </message>
+</context>
+<context>
+    <name>lb::UniformPanel</name>
+    <message>
+        <location filename="../../widgets/uniform_panel.cpp" line="+80"/>
+        <source>The program has no uniforms of its own. A uniform that no panel feeds gets a control here.</source>
+        <translation>Das Programm hat keine eigenen Uniforms. Ein Uniform, das kein Bereich versorgt, erhält hier ein Steuerelement.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The program&apos;s own uniforms; values stay when you recompile.</source>
+        <translation>Die eigenen Uniforms des Programms; die Werte bleiben beim Neukompilieren erhalten.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>No control for: %1 (matrices, samplers and arrays).</source>
+        <translation>Kein Steuerelement für: %1 (Matrizen, Sampler und Arrays).</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>uniform %1 %2</source>
+        <translation>uniform %1 %2</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1.a</source>
+        <translation>%1.a</translation>
+    </message>
+</context>
+<context>
+    <name>lb::Viewport</name>
+    <message>
+        <location filename="../../widgets/viewport.cpp" line="+39"/>
+        <source>Left drag: orbit - right or middle drag: pan - wheel: zoom - R: reset view</source>
+        <translation>Linke Maustaste ziehen: kreisen - rechte oder mittlere Maustaste ziehen: verschieben - Mausrad: zoomen - R: Ansicht zurücksetzen</translation>
+    </message>
+    <message>
+        <location line="+69"/>
+        <source>; WebGL 1 shaders run as GLSL 3.30</source>
+        <translation>; WebGL-1-Shader laufen als GLSL 3.30</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>the OpenGL context was lost while this program drew (the driver reset the GPU: an endless or very long loop?)</source>
+        <translation>der OpenGL-Kontext ging verloren, während dieses Programm zeichnete (der Treiber hat die GPU zurückgesetzt: eine Endlosschleife oder sehr lange Schleife?)</translation>
+    </message>
+    <message>
+        <location line="+30"/>
+        <location line="+194"/>
+        <source>the built-in program is drawing</source>
+        <translation>das eingebaute Programm zeichnet</translation>
+    </message>
+    <message>
+        <location line="-193"/>
+        <location line="+192"/>
+        <source>the last good program is drawing</source>
+        <translation>das letzte funktionierende Programm zeichnet</translation>
+    </message>
+    <message>
+        <location line="-191"/>
+        <location line="+204"/>
+        <source>Refused: %1; %2</source>
+        <translation>Abgelehnt: %1; %2</translation>
+    </message>
+    <message>
+        <location line="-190"/>
+        <source>drawing one frame with this program would take about %1 at %2x%3 (the budget is %4): an endless or very long loop?</source>
+        <translation>ein Bild mit diesem Programm zu zeichnen würde bei %2x%3 etwa %1 dauern (das Budget beträgt %4): eine Endlosschleife oder sehr lange Schleife?</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>The renderer could not start:
+%1</source>
+        <translation>Der Renderer konnte nicht starten:
+%1</translation>
+    </message>
+    <message>
+        <location line="+177"/>
+        <source>The shader has errors (see the editor): %1</source>
+        <translation>Der Shader hat Fehler (siehe Editor): %1</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/viewport_captions.cpp" line="+20"/>
+        <source>B: %1</source>
+        <translation>B: %1</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>the reference program</source>
+        <translation>das Referenzprogramm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>B: built-in %1, %2</source>
+        <translation>B: eingebaut, %1, %2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Gouraud</source>
+        <translation>Gouraud</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>flat</source>
+        <translation>flach</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Phong</source>
+        <translation>Phong</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Blinn-Phong (N·H)</source>
+        <translation>Blinn-Phong (N·H)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Phong (R·V)</source>
+        <translation>Phong (R·V)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>A (left): %1  |  %2 (right)</source>
+        <translation>A (links): %1  |  %2 (rechts)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+14"/>
+        <source>the program on screen</source>
+        <translation>das Programm auf dem Bildschirm</translation>
+    </message>
+    <message>
+        <location line="-10"/>
+        <source>|A - B|: not drawn yet</source>
+        <translation>|A - B|: noch nicht gezeichnet</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>|A - B|, A: %7, %1: largest %2/255 at (%3, %4); %5% of the drawn pixels within %8/255; scale 0 (black) to %6/255 (white)</source>
+        <translation>|A - B|, A: %7, %1: größte Differenz %2/255 bei (%3, %4); %5 % der gezeichneten Pixel innerhalb von %8/255; Skala 0 (schwarz) bis %6/255 (weiß)</translation>
+    </message>
+</context>
+<context>
+    <name>lb::WorkCheck</name>
+    <message>
+        <location filename="../../app/work_check.cpp" line="+81"/>
+        <source>no temporary folder for the check: %1</source>
+        <translation>kein temporärer Ordner für die Prüfung: %1</translation>
+    </message>
+    <message>
+        <location line="+31"/>
+        <source>your program</source>
+        <translation>Ihr Programm</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>more than %1 s</source>
+        <translation>mehr als %1 s</translation>
+    </message>
+</context>
+</TS>

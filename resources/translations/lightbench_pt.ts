@@ -1,0 +1,3450 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="pt_PT">
+<context>
+    <name>QObject</name>
+    <message>
+        <location filename="../../app/help.cpp" line="+37"/>
+        <source> or </source>
+        <translation> ou </translation>
+    </message>
+    <message>
+        <location line="+35"/>
+        <source>Menus</source>
+        <translation>Menus</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Shader editor</source>
+        <translation>Editor de shaders</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>compile and link now</source>
+        <translation>compilar e ligar (link) agora</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>find in the shader</source>
+        <translation>procurar no shader</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>undo / redo (also what a preset, an example or a reset replaced)</source>
+        <translation>desfazer / refazer (também o que uma predefinição, um exemplo ou uma reposição substituiu)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>complete the word</source>
+        <translation>completar a palavra</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>delete / duplicate the line</source>
+        <translation>apagar / duplicar a linha</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>View</source>
+        <translation>Vista</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>left drag</source>
+        <translation>arrastar com o botão esquerdo</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>orbit the camera</source>
+        <translation>orbitar a câmara</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>click</source>
+        <translation>clique</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>select the object under the cursor</source>
+        <translation>selecionar o objeto sob o cursor</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>right or middle drag</source>
+        <translation>arrastar com o botão direito ou do meio</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>pan</source>
+        <translation>deslocar a vista</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>wheel</source>
+        <translation>roda do rato</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>zoom</source>
+        <translation>zoom</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Ctrl+click, Shift+click</source>
+        <translation>Ctrl+clique, Shift+clique</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>probe the surface point (drag to move it)</source>
+        <translation>sondar o ponto da superfície (arraste para o mover)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>drag the wipe&apos;s line</source>
+        <translation>arrastar a linha da cortina</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>move the wipe (compare)</source>
+        <translation>mover a cortina (comparação)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>drop a file</source>
+        <translation>largar um ficheiro</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>open a mesh, a scene, a lesson or a shader pair</source>
+        <translation>abrir uma malha, uma cena, uma lição ou um par de shaders</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Keyboard shortcuts - lightbench</source>
+        <translation>Atalhos de teclado - lightbench</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Features - lightbench</source>
+        <translation>Funcionalidades - lightbench</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>The README is missing from this build.</source>
+        <translation>O README não está incluído nesta compilação.</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>About lightbench</source>
+        <translation>Acerca do lightbench</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&lt;h3&gt;lightbench %1&lt;/h3&gt;&lt;p&gt;A workbench for the lighting model of computer graphics courses: ambient, diffuse and specular terms, Phong and Blinn-Phong, Gouraud and Phong shading, every pixel checked against a CPU reference.&lt;/p&gt;&lt;p&gt;Qt %2 (built with %3)&lt;br&gt;%4&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;lightbench %1&lt;/h3&gt;&lt;p&gt;Uma bancada de trabalho para o modelo de iluminação das disciplinas de computação gráfica: termos ambiente, difuso e especular, Phong e Blinn-Phong, sombreamento de Gouraud e de Phong, com cada píxel verificado face a uma referência calculada no CPU.&lt;/p&gt;&lt;p&gt;Qt %2 (compilado com %3)&lt;br&gt;%4&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>OpenGL not started yet</source>
+        <translation>O OpenGL ainda não foi iniciado</translation>
+    </message>
+    <message>
+        <location filename="../../app/main_window_exercise.cpp" line="+27"/>
+        <source>Side B</source>
+        <translation>Lado B</translation>
+    </message>
+    <message>
+        <location filename="../../app/scene_actions.cpp" line="+30"/>
+        <source>Scenes (*.json);;All files (*)</source>
+        <translation>Cenas (*.json);;Todos os ficheiros (*)</translation>
+    </message>
+    <message>
+        <location filename="../../app/settings_autosave.cpp" line="+19"/>
+        <source>is no settings file</source>
+        <translation>não é um ficheiro de definições</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cannot be written</source>
+        <translation>não pode ser escrito</translation>
+    </message>
+    <message>
+        <location filename="../../app/unsaved_work.cpp" line="+14"/>
+        <source>the shader file %1</source>
+        <translation>o ficheiro de shader %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>the shader files %1 and %2</source>
+        <translation>os ficheiros de shader %1 e %2</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the lesson “%1”</source>
+        <translation>a lição “%1”</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+7"/>
+        <source>%1 and %2</source>
+        <translation>%1 e %2</translation>
+    </message>
+    <message>
+        <location line="-2"/>
+        <source>the untitled scene</source>
+        <translation>a cena sem título</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the scene “%1”</source>
+        <translation>a cena “%1”</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Save the changes to %1 before closing?</source>
+        <translation>Guardar as alterações a %1 antes de fechar?</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Save the changes to %1 before opening “%2”?</source>
+        <translation>Guardar as alterações a %1 antes de abrir “%2”?</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Save the changes to %1 before resetting everything?</source>
+        <translation>Guardar as alterações a %1 antes de repor tudo?</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Save the changes to %1 before closing it?</source>
+        <translation>Guardar as alterações a %1 antes de a fechar?</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Your changes will be lost if you don&apos;t save them. Save saves them all.</source>
+        <translation>As suas alterações perdem-se se não as guardar. Guardar guarda-as todas.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Your changes will be lost if you don&apos;t save them.</source>
+        <translation>As suas alterações perdem-se se não as guardar.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Unsaved changes</source>
+        <translation>Alterações por guardar</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Discard</source>
+        <translation>Descartar</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/caption_dialog.cpp" line="+17"/>
+        <source>English</source>
+        <translation>Inglês</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Portuguese</source>
+        <translation>Português</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>German</source>
+        <translation>Alemão</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/exercise_panel.cpp" line="+21"/>
+        <source>light position</source>
+        <translation>posição da luz</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>point or directional</source>
+        <translation>pontual ou direcional</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>light frame</source>
+        <translation>referencial da luz</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>light colours</source>
+        <translation>cores da luz</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>material</source>
+        <translation>material</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>camera</source>
+        <translation>câmara</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>projection</source>
+        <translation>projeção</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>non-uniform scale</source>
+        <translation>escala não uniforme</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>nothing (every case is the scene as it is)</source>
+        <translation>nada (cada caso é a cena tal como está)</translation>
+    </message>
+    <message>
+        <location filename="../../render/model/texture_file.cpp" line="+25"/>
+        <source>%1: an empty file, not an image</source>
+        <translation>%1: um ficheiro vazio, não uma imagem</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1: not an image (%2)</source>
+        <translation>%1: não é uma imagem (%2)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the formats read are %1</source>
+        <translation>os formatos lidos são %1</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1: %2 x %3 texels is more than a texture may have (%4 x %4)</source>
+        <translation>%1: %2 x %3 texels é mais do que uma textura pode ter (%4 x %4)</translation>
+    </message>
+    <message>
+        <location line="+31"/>
+        <location line="+7"/>
+        <source>%1: could not be read as an image: %2</source>
+        <translation>%1: não foi possível ler como imagem: %2</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1: %2 x %3 texels</source>
+        <translation>%1: %2 x %3 texels</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source> (scaled from %1 x %2)</source>
+        <translation> (reduzida de %1 x %2)</translation>
+    </message>
+</context>
+<context>
+    <name>lb::CaptionDialog</name>
+    <message>
+        <location filename="../../widgets/caption_dialog.cpp" line="+10"/>
+        <location line="+41"/>
+        <source>Edit Caption</source>
+        <translation>Editar Legenda</translation>
+    </message>
+    <message>
+        <location line="-39"/>
+        <source>What the class reads under the view. Markdown: *italic*, **bold**, `code`, lists. An empty language shows English.</source>
+        <translation>O que a turma lê por baixo da vista. Markdown: *itálico*, **negrito**, `código`, listas. Um idioma vazio mostra o inglês.</translation>
+    </message>
+    <message>
+        <location line="+40"/>
+        <source>The %1 caption has %2 characters; a caption holds at most %3. Nothing was changed yet: shorten it, or Cancel.</source>
+        <translation>A legenda (%1) tem %2 carateres; uma legenda tem no máximo %3. Ainda nada foi alterado: encurte-a, ou Cancelar.</translation>
+    </message>
+</context>
+<context>
+    <name>lb::ColorEdit</name>
+    <message>
+        <location filename="../../widgets/color_edit.cpp" line="+21"/>
+        <source>Pick %1 with the colour dialog</source>
+        <translation>Escolher %1 com o diálogo de cores</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1, %2 channel (0 to 1)</source>
+        <translation>%1, canal %2 (0 a 1)</translation>
+    </message>
+    <message>
+        <location line="+32"/>
+        <source>Choose %1</source>
+        <translation>Escolher %1</translation>
+    </message>
+</context>
+<context>
+    <name>lb::DifferenceScaleLabels</name>
+    <message>
+        <location filename="../../widgets/difference_scale_labels.cpp" line="+54"/>
+        <source>%1+</source>
+        <translation>%1+</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>|A-B| of 255</source>
+        <translation>|A-B| de 255</translation>
+    </message>
+</context>
+<context>
+    <name>lb::EditorPanel</name>
+    <message>
+        <location filename="../../widgets/editor_panel.cpp" line="+39"/>
+        <source>the scene&apos;s shaders</source>
+        <translation>os shaders da cena</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>your shaders</source>
+        <translation>os seus shaders</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 (edited)</source>
+        <translation>%1 (editado)</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Presets</source>
+        <translation>Predefinições</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>The built-in programs, the slides&apos; shaders as printed, toon</source>
+        <translation>Os programas integrados, os shaders dos diapositivos tal como impressos, toon</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Compile</source>
+        <translation>Compilar</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Compile and link now (Ctrl+Enter)</source>
+        <translation>Compilar e ligar (link) agora (Ctrl+Enter)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Live</source>
+        <translation>Ao vivo</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Recompile after a pause in typing; off: only on Ctrl+Enter</source>
+        <translation>Recompilar após uma pausa na escrita; desligado: só com Ctrl+Enter</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source> ms</source>
+        <translation> ms</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The pause after the last key before a live recompile (wheel or arrow keys change it)</source>
+        <translation>A pausa após a última tecla antes de uma recompilação ao vivo (a roda do rato ou as setas alteram-na)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Find (Ctrl+F)</source>
+        <translation>Procurar (Ctrl+F)</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <location line="+121"/>
+        <source>Vertex</source>
+        <translation>Vertex</translation>
+    </message>
+    <message>
+        <location line="-120"/>
+        <location line="+120"/>
+        <source>Fragment</source>
+        <translation>Fragment</translation>
+    </message>
+    <message>
+        <location line="-115"/>
+        <source>Click a message to go to its line</source>
+        <translation>Clique numa mensagem para ir para a sua linha</translation>
+    </message>
+    <message>
+        <location line="+103"/>
+        <source>%1 is gone from the disk; your text is kept</source>
+        <translation>%1 desapareceu do disco; o seu texto é mantido</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 changed on disk; your unsaved edits are kept (Open it again to take the disk&apos;s version)</source>
+        <translation>%1 mudou no disco; as suas edições por guardar são mantidas (abra-o de novo para usar a versão do disco)</translation>
+    </message>
+    <message>
+        <location line="+42"/>
+        <source>Your unsaved shader edits from the last session are back</source>
+        <translation>As suas edições dos shaders por guardar da última sessão foram recuperadas</translation>
+    </message>
+    <message>
+        <location line="+85"/>
+        <source>error</source>
+        <translation>erro</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>warning</source>
+        <translation>aviso</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+10"/>
+        <source>&lt;span style=&apos;color:#8a5a00&apos;&gt;linked, %n warning(s)&lt;/span&gt;</source>
+        <translation>
+            <numerusform>&lt;span style=&apos;color:#8a5a00&apos;&gt;ligado, %n aviso&lt;/span&gt;</numerusform>
+            <numerusform>&lt;span style=&apos;color:#8a5a00&apos;&gt;ligado, %n avisos&lt;/span&gt;</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&lt;span style=&apos;color:#2e7d32&apos;&gt;linked&lt;/span&gt;</source>
+        <translation>&lt;span style=&apos;color:#2e7d32&apos;&gt;ligado&lt;/span&gt;</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+3"/>
+        <source>&lt;span style=&apos;color:#c62828&apos;&gt;%n error(s): last good program drawing&lt;/span&gt;</source>
+        <translation>
+            <numerusform>&lt;span style=&apos;color:#c62828&apos;&gt;%n erro: o último programa válido continua a desenhar&lt;/span&gt;</numerusform>
+            <numerusform>&lt;span style=&apos;color:#c62828&apos;&gt;%n erros: o último programa válido continua a desenhar&lt;/span&gt;</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>lb::ExercisePanel</name>
+    <message>
+        <location filename="../../widgets/exercise_panel.cpp" line="+30"/>
+        <location line="+119"/>
+        <source>Check my work</source>
+        <translation>Verificar o meu trabalho</translation>
+    </message>
+    <message>
+        <location line="-118"/>
+        <source>Draws the exercise&apos;s cases with the program in the editor and with the reference, as the teacher&apos;s grading does, and lists each case (F9)</source>
+        <translation>Desenha os casos do exercício com o programa do editor e com a referência, como faz a avaliação do professor, e lista cada caso (F9)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Out of date: the program in the editor has changed since this check. Check my work (F9) checks it as it is now.</source>
+        <translation>Desatualizado: o programa no editor mudou desde esta verificação. Verificar o meu trabalho (F9) verifica-o tal como está agora.</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Case</source>
+        <translation>Caso</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Result</source>
+        <translation>Resultado</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Largest</source>
+        <translation>Maior</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Within</source>
+        <translation>Dentro</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The largest difference of a channel, out of 255</source>
+        <translation>A maior diferença num canal, numa escala de 255</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Click a case to see it in the difference view</source>
+        <translation>Clique num caso para o ver na vista de diferença</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Back to my scene</source>
+        <translation>Voltar à minha cena</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The scene as it was before a case was shown</source>
+        <translation>A cena tal como estava antes de se mostrar um caso</translation>
+    </message>
+    <message>
+        <location line="+39"/>
+        <source>No exercise is open</source>
+        <translation>Nenhum exercício aberto</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>An exercise is a scene file with a task, the teacher&apos;s reference program and how it is graded. File &gt; Examples &gt; &quot;Exercise: per-fragment lighting&quot; is one; File &gt; Open Scene opens others.</source>
+        <translation>Um exercício é um ficheiro de cena com um enunciado, o programa de referência do professor e a forma como é avaliado. Ficheiro &gt; Exemplos &gt; &quot;Exercício: iluminação por fragmento&quot; é um deles; Ficheiro &gt; Abrir Cena abre outros.</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>The share of the pixels either program draws that are within %1/255 of the reference, at %2 x %3: the difference view counts a case alike (at its own size)</source>
+        <translation>A percentagem dos píxeis desenhados por qualquer dos programas que diferem no máximo %1/255 da referência, a %2 x %3: a vista de diferença conta um caso da mesma forma (no seu próprio tamanho)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Exercise</source>
+        <translation>Exercício</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>This exercise cannot be checked: its reference is missing or unusable.</source>
+        <translation>Este exercício não pode ser verificado: a sua referência falta ou não pode ser usada.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Reference: the built-in program, %1 shading, %2 specular.</source>
+        <translation>Referência: o programa integrado, sombreamento %1, especular %2.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Reference: the teacher&apos;s program (not shown; it is side B of the compare views, key C).</source>
+        <translation>Referência: o programa do professor (não mostrado; é o lado B das vistas de comparação, tecla C).</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 cases at %2 x %3 pixels; a case passes when %4 of its pixels are within %5/255. The cases vary: %6.</source>
+        <translation>%1 casos a %2 x %3 píxeis; um caso passa quando %4 dos seus píxeis diferem no máximo %5/255. Os casos variam: %6.</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Cancel the check</source>
+        <translation>Cancelar a verificação</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Checking: the cases are drawn with your program and the reference...</source>
+        <translation>A verificar: os casos são desenhados com o seu programa e com a referência...</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>Your program does not compile%1</source>
+        <translation>O seu programa não compila%1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Your program does not link%1</source>
+        <translation>A ligação (link) do seu programa falhou%1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Your program was refused%1</source>
+        <translation>O seu programa foi recusado%1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The check took too long (%1) and was stopped</source>
+        <translation>A verificação demorou demasiado (%1) e foi interrompida</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The check could not start%1</source>
+        <translation>Não foi possível iniciar a verificação%1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Not checked: %1%2</source>
+        <translation>Não verificado: %1%2</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Passed: all %1 cases (in each, at least %2 of the pixels within %3/255); largest difference %4/255</source>
+        <translation>Passou: todos os %1 casos (em cada um, pelo menos %2 dos píxeis com diferença até %3/255); maior diferença %4/255</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Not yet: %1 of %2 cases pass; largest difference %3/255</source>
+        <translation>Ainda não: %1 de %2 casos passam; maior diferença %3/255</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Click a case to see it in the difference view.</source>
+        <translation>Clique num caso para o ver na vista de diferença.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 (as given)</source>
+        <translation>%1 (tal como dado)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>passed</source>
+        <translation>passou</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>failed</source>
+        <translation>falhou</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>nothing drawn</source>
+        <translation>nada desenhado</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Largest difference at (%1, %2) of the %3 x %4 frame; %5 pixels drawn</source>
+        <translation>Maior diferença em (%1, %2) do fotograma de %3 x %4; %5 píxeis desenhados</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1 pixels drawn</source>
+        <translation>%1 píxeis desenhados</translation>
+    </message>
+</context>
+<context>
+    <name>lb::ExportSizeDialog</name>
+    <message>
+        <location filename="../../widgets/export_size_dialog.cpp" line="+12"/>
+        <source>Export Image</source>
+        <translation>Exportar Imagem</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source> px</source>
+        <translation> px</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Width</source>
+        <translation>Largura</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Height</source>
+        <translation>Altura</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The view is drawn again at this size, not scaled.</source>
+        <translation>A vista é desenhada de novo neste tamanho, sem ser escalada.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Choose File...</source>
+        <translation>Escolher Ficheiro...</translation>
+    </message>
+</context>
+<context>
+    <name>lb::Language</name>
+    <message>
+        <location filename="../../app/language.cpp" line="+54"/>
+        <source>&amp;System</source>
+        <extracomment>View &gt; Language: follow the system&apos;s language (LANG)</extracomment>
+        <translation>&amp;Sistema</translation>
+    </message>
+    <message>
+        <location line="+42"/>
+        <source>&amp;Language</source>
+        <translation>&amp;Idioma</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>Language</source>
+        <translation>Idioma</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The window changes its language when lightbench starts again. Restart now?</source>
+        <translation>A janela muda de idioma quando o lightbench voltar a arrancar. Reiniciar agora?</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>lightbench closes as it does on Quit, asking about unsaved work, and opens again where you were.</source>
+        <translation>O lightbench fecha como em Sair, perguntando pelo trabalho não guardado, e volta a abrir onde estava.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Restart &amp;Now</source>
+        <translation>Reiniciar &amp;Agora</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Later</source>
+        <translation>&amp;Mais Tarde</translation>
+    </message>
+</context>
+<context>
+    <name>lb::LessonActions</name>
+    <message>
+        <location filename="../../app/lesson_actions.cpp" line="+44"/>
+        <source>Open Recent &amp;Lesson</source>
+        <translation>Abrir Lição Recen&amp;te</translation>
+    </message>
+    <message>
+        <location line="+37"/>
+        <source>The last lesson could not be opened again: %1</source>
+        <translation>Não foi possível voltar a abrir a última lição: %1</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>Open &amp;Lesson...</source>
+        <translation>Abrir &amp;Lição...</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Lesso&amp;ns</source>
+        <translation>Liçõ&amp;es</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>(none built in)</source>
+        <translation>(nenhuma incluída)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Less&amp;on</source>
+        <translation>&amp;Lição</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>&amp;Next Step</source>
+        <translation>Passo &amp;Seguinte</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Previous Step</source>
+        <translation>Passo &amp;Anterior</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;First Step</source>
+        <translation>&amp;Primeiro Passo</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Last Step</source>
+        <translation>Ú&amp;ltimo Passo</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Reset Step</source>
+        <translation>&amp;Repor Passo</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>New Lesson from This &amp;View</source>
+        <translation>&amp;Nova Lição a Partir Desta Vista</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Add This View as a Step</source>
+        <translation>A&amp;dicionar Esta Vista como Passo</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Replace the Step with &amp;This View</source>
+        <translation>Substituir o Passo por Es&amp;ta Vista</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Rena&amp;me Step...</source>
+        <translation>&amp;Mudar o Nome do Passo...</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Edit &amp;Caption...</source>
+        <translation>&amp;Editar Legenda...</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Move Step &amp;Up</source>
+        <translation>Mover Passo para &amp;Cima</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Move Step &amp;Down</source>
+        <translation>Mover Passo para &amp;Baixo</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Remo&amp;ve Step</source>
+        <translation>Remo&amp;ver Passo</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Save Lesson</source>
+        <translation>&amp;Guardar Lição</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Save Lesson &amp;As...</source>
+        <translation>Guardar Lição C&amp;omo...</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>&amp;Close Lesson</source>
+        <translation>&amp;Fechar Lição</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Caption &amp;Language</source>
+        <translation>&amp;Idioma da Legenda</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The System&apos;s</source>
+        <translation>Idioma do Sistema</translation>
+    </message>
+    <message>
+        <location line="+51"/>
+        <source>untitled lesson</source>
+        <translation>lição sem título</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>The lesson could not be opened; nothing changed.</source>
+        <translation>Não foi possível abrir a lição; nada mudou.</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+22"/>
+        <source>%1 opened; %n step(s) cannot be shown (the lesson bar says why there).</source>
+        <translation>
+            <numerusform>Abriu-se %1; %n passo não pode ser mostrado (a barra da lição diz porquê, nesse passo).</numerusform>
+            <numerusform>Abriu-se %1; %n passos não podem ser mostrados (a barra da lição diz porquê, nesses passos).</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+6"/>
+        <source>%1 opened; %n field(s) could not be used and kept their defaults.</source>
+        <translation>
+            <numerusform>Abriu-se %1; %n campo não pôde ser usado e ficou com o valor predefinido.</numerusform>
+            <numerusform>Abriu-se %1; %n campos não puderam ser usados e ficaram com os valores predefinidos.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+116"/>
+        <location filename="../../app/lesson_authoring.cpp" line="+36"/>
+        <location line="+24"/>
+        <source>Step %1</source>
+        <translation>Passo %1</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>Open a lesson</source>
+        <translation>Abrir uma lição</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <location filename="../../app/lesson_authoring.cpp" line="+123"/>
+        <source>Lessons (*.json);;All files (*)</source>
+        <translation>Lições (*.json);;Todos os ficheiros (*)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <location filename="../../app/lesson_authoring.cpp" line="-149"/>
+        <source>Lesson</source>
+        <translation>Lição</translation>
+    </message>
+    <message>
+        <location filename="../../app/lesson_authoring.cpp" line="-4"/>
+        <source>a new lesson</source>
+        <translation>uma nova lição</translation>
+    </message>
+    <message>
+        <location line="+59"/>
+        <source>The step keeps its title.</source>
+        <translation>O passo mantém o seu título.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A step&apos;s title cannot be empty.</source>
+        <translation>O título de um passo não pode estar vazio.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The title has %1 characters; a title holds at most %2.</source>
+        <translation>O título tem %1 carateres; um título tem no máximo %2.</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>The step keeps its caption.</source>
+        <translation>O passo mantém a sua legenda.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The %1 caption has %2 characters; a caption holds at most %3.</source>
+        <translation>A legenda (%1) tem %2 carateres; uma legenda tem no máximo %3.</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>The step stays.</source>
+        <translation>O passo mantém-se.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A lesson keeps at least one step; Close Lesson puts it away.</source>
+        <translation>Uma lição tem pelo menos um passo; Fechar Lição arruma-a.</translation>
+    </message>
+    <message>
+        <location line="+31"/>
+        <source>The lesson was not saved; it stays open with its changes.</source>
+        <translation>A lição não foi guardada; continua aberta com as suas alterações.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Saved the lesson to %1</source>
+        <translation>Lição guardada em %1</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Save the lesson</source>
+        <translation>Guardar a lição</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Rename Step</source>
+        <translation>Mudar o Nome do Passo</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>The title of step %1:</source>
+        <translation>O título do passo %1:</translation>
+    </message>
+</context>
+<context>
+    <name>lb::LessonBar</name>
+    <message>
+        <location filename="../../widgets/lesson_bar.cpp" line="+42"/>
+        <source>The previous step (PageUp, Left)</source>
+        <translation>O passo anterior (Page Up, Seta Esquerda)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The next step (PageDown, Right, Space)</source>
+        <translation>O passo seguinte (Page Down, Seta Direita, Espaço)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Reset Step</source>
+        <translation>Repor Passo</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>This step as the lesson has it: your changes to it are set aside</source>
+        <translation>Este passo tal como a lição o tem: as suas alterações a ele são postas de lado</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The Lesson menu: add, rename, caption, move and save steps</source>
+        <translation>O menu Lição: adicionar, mudar o nome, legendar, mover e guardar passos</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>✕</source>
+        <translation>✕</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Close the lesson (the scene stays)</source>
+        <translation>Fechar a lição (a cena mantém-se)</translation>
+    </message>
+    <message>
+        <location line="+41"/>
+        <source>Step %1 of %2</source>
+        <translation>Passo %1 de %2</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>This step cannot be shown; the scene is as it was. %1</source>
+        <translation>Este passo não pode ser mostrado; a cena está como estava. %1</translation>
+    </message>
+    <message>
+        <location line="+42"/>
+        <source>[picture]</source>
+        <translation>[imagem]</translation>
+    </message>
+</context>
+<context>
+    <name>lb::LightPanel</name>
+    <message>
+        <location filename="../../widgets/light_panel.cpp" line="+33"/>
+        <source>Light %1</source>
+        <translation>Luz %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Up to four lights; their terms add up. A shader that declares one light (not an array) reads light 1</source>
+        <translation>Até quatro luzes; os seus termos somam-se. Um shader que declara uma só luz (não um array) lê a luz 1</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>On</source>
+        <translation>Ligada</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>uLightEnabled[i]: a light switched off adds nothing (its colours go to shaders as black)</source>
+        <translation>uLightEnabled[i]: uma luz desligada não contribui nada (as suas cores chegam aos shaders como preto)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Light</source>
+        <translation>Luz</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>lightPosition.%1: the light&apos;s %1 in the chosen frame</source>
+        <translation>lightPosition.%1: a coordenada %1 da luz no referencial escolhido</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Position</source>
+        <translation>Posição</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>w = 1: point light</source>
+        <translation>w = 1: luz pontual</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>w = 0: directional</source>
+        <translation>w = 0: direcional</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>lightPosition.w: 1 puts the light at (x, y, z); 0 makes (x, y, z) the direction towards a light at infinity</source>
+        <translation>lightPosition.w: 1 coloca a luz em (x, y, z); 0 faz de (x, y, z) a direção para uma luz no infinito</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Type</source>
+        <translation>Tipo</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Camera: moves with the eye</source>
+        <translation>Câmara: move-se com o olho</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>World: fixed in the scene</source>
+        <translation>Mundo: fixa na cena</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Object: turns with the model</source>
+        <translation>Objeto: roda com o modelo</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Frame lightPosition is given in. Camera: used as is (variant I); world: mView / mViewNormals (II); object: mModelView / mNormals (III)</source>
+        <translation>Referencial em que lightPosition é dada. Câmara: usada tal como está (variante I); mundo: mView / mViewNormals (II); objeto: mModelView / mNormals (III)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>The object whose frame an object-frame light is given in: the light turns and moves with it, and lights every object from there</source>
+        <translation>O objeto em cujo referencial é dada uma luz no referencial do objeto: a luz roda e move-se com ele, e ilumina todos os objetos a partir daí</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Frame</source>
+        <translation>Referencial</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Of object</source>
+        <translation>Do objeto</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1 (%2): the light&apos;s %3 intensity</source>
+        <translation>%1 (%2): a intensidade da luz para o termo %3</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>ambient</source>
+        <translation>ambiente</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>diffuse</source>
+        <translation>difuso</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>specular</source>
+        <translation>especular</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>lightAttenuation.%1 (%2): a point light&apos;s terms are divided by kc + kl·d + kq·d², d its distance to the surface (1, 0, 0: none; a directional light is never attenuated)</source>
+        <translation>lightAttenuation.%1 (%2): os termos de uma luz pontual são divididos por kc + kl·d + kq·d², sendo d a sua distância à superfície (1, 0, 0: nenhuma; uma luz direcional nunca é atenuada)</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>Atten. kc kl kq</source>
+        <translation>Aten. kc kl kq</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>spotDirection.%1: the spotlight&apos;s axis, from the light, in the light&apos;s frame</source>
+        <translation>spotDirection.%1: o eixo do holofote, a partir da luz, no referencial da luz</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Spot axis</source>
+        <translation>Eixo do foco</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>spotCutoff: the cone&apos;s half-angle; outside it the light adds nothing, ambient included (180: no spot)</source>
+        <translation>spotCutoff: o semiângulo do cone; fora dele a luz não contribui nada, incluindo o termo ambiente (180: sem foco)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>spotExponent: inside the cone the terms are scaled by max(-L·D, 0)^exponent, brighter towards the axis</source>
+        <translation>spotExponent: dentro do cone os termos são multiplicados por max(-L·D, 0)^exponent, mais brilhantes perto do eixo</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Spot cutoff, exp</source>
+        <translation>Corte do foco, exp</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Reset light</source>
+        <translation>Repor luz</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>This light&apos;s defaults; light 1&apos;s are the slides&apos; (0, 1.8, 1.3, 1) in world coordinates</source>
+        <translation>Os valores predefinidos desta luz; os da luz 1 são os dos diapositivos, (0, 1.8, 1.3, 1) em coordenadas do mundo</translation>
+    </message>
+</context>
+<context>
+    <name>lb::LoadProgress</name>
+    <message>
+        <location filename="../../widgets/load_progress.cpp" line="+21"/>
+        <source>Cancel</source>
+        <translation>Cancelar</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Stop loading: the import helper is stopped, the current mesh stays</source>
+        <translation>Parar o carregamento: o processo auxiliar de importação é parado e a malha atual mantém-se</translation>
+    </message>
+    <message>
+        <location line="+29"/>
+        <source>Loading %1...</source>
+        <translation>A carregar %1...</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Loading %1: %2</source>
+        <translation>A carregar %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>lb::MainWindow</name>
+    <message>
+        <location filename="../../app/main_window.cpp" line="+80"/>
+        <source>Light</source>
+        <translation>Luz</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Material</source>
+        <translation>Material</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Shading</source>
+        <translation>Sombreamento</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Object</source>
+        <translation>Objeto</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Uniforms</source>
+        <translation>Uniforms</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Probe</source>
+        <translation>Sonda</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Exercise</source>
+        <translation>Exercício</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Shader editor</source>
+        <translation>Editor de shaders</translation>
+    </message>
+    <message>
+        <location line="+39"/>
+        <location filename="../../app/main_window_menus.cpp" line="+53"/>
+        <location filename="../../app/main_window_unsaved.cpp" line="+92"/>
+        <location line="+13"/>
+        <source>Shader files</source>
+        <translation>Ficheiros de shader</translation>
+    </message>
+    <message>
+        <location line="+70"/>
+        <source>Unsaved shader edits from the last session are back</source>
+        <translation>As edições dos shaders por guardar da última sessão foram recuperadas</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Everything reset; Ctrl+Z in the editor brings your shader text back</source>
+        <translation>Tudo reposto; Ctrl+Z no editor recupera o texto do seu shader</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Everything reset</source>
+        <translation>Tudo reposto</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>The program on screen computes V = (0,0,1), the parallel view vector, under the perspective projection; the reference uses V = -P, so the two differ away from the middle of the view. The orthographic projection (key P) makes them agree.</source>
+        <translation>O programa no ecrã calcula V = (0,0,1), o vetor de observação da projeção paralela, sob a projeção perspetiva; a referência usa V = -P, pelo que os dois diferem longe do centro da vista. A projeção ortográfica (tecla P) põe-nos de acordo.</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>%1 shades as it is written: Gouraud/Phong does not change it. A preset or Reset Everything brings the built-in program, which follows this choice.</source>
+        <translation>%1 sombreia tal como está escrito: Gouraud/Phong não o altera. Uma predefinição ou Repor Tudo traz o programa integrado, que segue esta escolha.</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>The program in the editor (%1) shades %2 (%3) whatever this says. Load a preset or Reset Everything to switch shading.</source>
+        <translation>O programa no editor (%1) usa sombreamento %2 (%3), seja qual for a escolha aqui. Carregue uma predefinição ou use Repor Tudo para mudar o sombreamento.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>per vertex</source>
+        <translation>por vértice</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>per fragment</source>
+        <translation>por fragmento</translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <source>%1 lights on</source>
+        <translation>%1 luzes ligadas</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the program&apos;s own light (marker hidden)</source>
+        <translation>a luz própria do programa (marcador oculto)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>directional light</source>
+        <translation>luz direcional</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>point light</source>
+        <translation>luz pontual</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source> in the %1 frame</source>
+        <translation> no referencial %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Program: %1</source>
+        <translation>Programa: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>, drawn flat (per triangle)</source>
+        <translation>, desenhado com sombreamento plano (por triângulo)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>, showing %1</source>
+        <translation>, a mostrar %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>, Blinn-Phong specular (N·H)</source>
+        <translation>, especular Blinn-Phong (N·H)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>, Phong specular (R·V)</source>
+        <translation>, especular Phong (R·V)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>%1, step %2</source>
+        <translation>%1, passo %2</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>untitled</source>
+        <translation>sem título</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1[*] - lightbench</source>
+        <translation>%1[*] - lightbench</translation>
+    </message>
+    <message>
+        <location filename="../../app/main_window_budget.cpp" line="+44"/>
+        <source>More would take more memory than the scene&apos;s meshes may take on this machine: %1 for all objects together.</source>
+        <translation>Mais do que isto exigiria mais memória do que as malhas da cena podem ocupar nesta máquina: %1 para todos os objetos juntos.</translation>
+    </message>
+    <message>
+        <location filename="../../app/main_window_exercise.cpp" line="+17"/>
+        <source>Check cancelled.</source>
+        <translation>Verificação cancelada.</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Checked: %1 of %2 cases pass</source>
+        <translation>Verificado: %1 de %2 casos passam</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Not checked: %1</source>
+        <translation>Não verificado: %1</translation>
+    </message>
+    <message>
+        <location line="+46"/>
+        <location line="+16"/>
+        <location line="+1"/>
+        <location line="+1"/>
+        <source>the exercise&apos;s reference</source>
+        <translation>a referência do exercício</translation>
+    </message>
+    <message>
+        <location line="-17"/>
+        <source>the exercise&apos;s reference (built-in)</source>
+        <translation>a referência do exercício (integrada)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+36"/>
+        <source>the built-in program</source>
+        <translation>o programa integrado</translation>
+    </message>
+    <message>
+        <location line="-32"/>
+        <source>side B (%1)</source>
+        <translation>lado B (%1)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Side B draws %1: it shades as it is written, so these choices do nothing. The x button brings back %2.</source>
+        <translation>O lado B desenha %1: sombreia tal como está escrito, por isso estas escolhas não fazem nada. O botão x traz de volta %2.</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Side B draws the exercise&apos;s reference program: it shades as it is written, so these choices do nothing.</source>
+        <translation>O lado B desenha o programa de referência do exercício: sombreia tal como está escrito, por isso estas escolhas não fazem nada.</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>the exercise&apos;s reference (built-in, %1 shading, %2 specular)</source>
+        <translation>a referência do exercício (integrada, sombreamento %1, especular %2)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>the built-in program, %1 shading and %2 specular (the exercise&apos;s reference)</source>
+        <translation>o programa integrado, sombreamento %1 e especular %2 (a referência do exercício)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The exercise&apos;s reference fixes side B&apos;s choices.</source>
+        <translation>A referência do exercício fixa as escolhas do lado B.</translation>
+    </message>
+    <message>
+        <location line="+30"/>
+        <source>Side B is unchanged: %1</source>
+        <translation>O lado B não mudou: %1</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Side B is unchanged: %1 does not build:
+%2</source>
+        <translation>O lado B não mudou: %1 não pode ser construído:
+%2</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>Side B: a shader pair (NAME.vert or NAME.frag) or a scene file&apos;s program</source>
+        <translation>Lado B: um par de shaders (NAME.vert ou NAME.frag) ou o programa de um ficheiro de cena</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Shader pairs and scene files (*.vert *.frag *.json);;All files (*)</source>
+        <translation>Pares de shaders e ficheiros de cena (*.vert *.frag *.json);;Todos os ficheiros (*)</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>The check could not start: %1</source>
+        <translation>Não foi possível iniciar a verificação: %1</translation>
+    </message>
+    <message>
+        <location line="+31"/>
+        <source>Case %1 in the difference view (key C: the other compare views; &quot;Back to my scene&quot; in the Exercise panel)</source>
+        <translation>Caso %1 na vista de diferença (tecla C: as outras vistas de comparação; &quot;Voltar à minha cena&quot; no painel Exercício)</translation>
+    </message>
+    <message>
+        <location filename="../../app/main_window_menus.cpp" line="-13"/>
+        <source>&amp;File</source>
+        <translation>&amp;Ficheiro</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Chec&amp;k My Work</source>
+        <translation>&amp;Verificar o Meu Trabalho</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>F9</source>
+        <translation>F9</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Side B: Shader Files...</source>
+        <translation>Lado B: Ficheiros de Shader...</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <location filename="../../app/main_window_unsaved.cpp" line="-5"/>
+        <source>Shader pairs (*.vert *.frag);;All files (*)</source>
+        <translation>Pares de shaders (*.vert *.frag);;Todos os ficheiros (*)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Open S&amp;haders...</source>
+        <translation>Abrir S&amp;haders...</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Ctrl+Shift+O</source>
+        <translation>Ctrl+Shift+O</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Open a shader pair (NAME.vert and NAME.frag)</source>
+        <translation>Abrir um par de shaders (NAME.vert e NAME.frag)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Save Shaders</source>
+        <translation>Guardar Shaders</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Ctrl+Alt+S</source>
+        <translation>Ctrl+Alt+S</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Save Shaders As...</source>
+        <translation>Guardar Shaders Como...</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Edit</source>
+        <translation>&amp;Editar</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;View</source>
+        <translation>&amp;Ver</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Reset &amp;Everything</source>
+        <translation>Repor T&amp;udo</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Ctrl+Shift+R</source>
+        <translation>Ctrl+Shift+R</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&amp;Quit</source>
+        <translation>&amp;Sair</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>&amp;Undo in the Editor</source>
+        <translation>&amp;Desfazer no Editor</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Redo in the Editor</source>
+        <translation>&amp;Refazer no Editor</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <location line="+2"/>
+        <source>Ctrl+Y</source>
+        <translation>Ctrl+Y</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Ctrl+Shift+Z</source>
+        <translation>Ctrl+Shift+Z</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Find in the Shader</source>
+        <translation>&amp;Procurar no Shader</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Shading</source>
+        <translation>&amp;Sombreamento</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Toggle &amp;Gouraud / Phong</source>
+        <translation>Alternar &amp;Gouraud / Phong</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>G</source>
+        <translation>G</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Toggle Phong / &amp;Blinn-Phong specular</source>
+        <translation>Alternar Especular Phong / &amp;Blinn-Phong</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Ctrl+B</source>
+        <translation>Ctrl+B</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The program in the editor (%1) computes its own specular term: load a preset or Reset Everything to switch it.</source>
+        <translation>O programa no editor (%1) calcula o seu próprio termo especular: carregue uma predefinição ou use Repor Tudo para o mudar.</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>Toggle &amp;Perspective / Orthographic</source>
+        <translation>Alternar Projeção &amp;Perspetiva / Ortográfica</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>P</source>
+        <translation>P</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Toggle &amp;Lighting</source>
+        <translation>Alternar &amp;Iluminação</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>L</source>
+        <translation>L</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Toggle the &amp;Ambient Term</source>
+        <translation>Alternar o Termo &amp;Ambiente</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Toggle the &amp;Diffuse Term</source>
+        <translation>Alternar o Termo &amp;Difuso</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Toggle the &amp;Specular Term</source>
+        <translation>Alternar o Termo &amp;Especular</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>&amp;Compare: Off / Side by Side / Wipe / Difference</source>
+        <translation>&amp;Comparação: Desligada / Lado a Lado / Cortina / Diferença</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>C</source>
+        <translation>C</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>&amp;Reset Camera</source>
+        <translation>&amp;Repor a Câmara</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>R</source>
+        <translation>R</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Clear the &amp;Probe (in Presentation Mode: Leave It)</source>
+        <translation>Limpar a &amp;Sonda (no Modo de Apresentação: Sair Dele)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Esc</source>
+        <translation>Esc</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Auto-rotate</source>
+        <translation>Rodar &amp;Automaticamente</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Space</source>
+        <translation>Space</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>&amp;Help</source>
+        <translation>A&amp;juda</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Keyboard Shortcuts</source>
+        <translation>&amp;Atalhos de Teclado</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Features (README)</source>
+        <translation>&amp;Funcionalidades (README)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;About lightbench</source>
+        <translation>A&amp;cerca do lightbench</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Zoom &amp;In Editor</source>
+        <translation>Amp&amp;liar o Editor</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Ctrl+=</source>
+        <translation>Ctrl+=</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Zoom &amp;Out Editor</source>
+        <translation>Red&amp;uzir o Editor</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Reset Editor &amp;Zoom</source>
+        <translation>Repor o &amp;Zoom do Editor</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Ctrl+0</source>
+        <translation>Ctrl+0</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>UI &amp;Scale</source>
+        <translation>Escala da &amp;Interface</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1%</source>
+        <translation>%1%</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Fit the &amp;Window to the Screen</source>
+        <translation>Ajustar a &amp;Janela ao Ecrã</translation>
+    </message>
+    <message>
+        <location filename="../../app/main_window_presentation.cpp" line="+40"/>
+        <source>&amp;Presentation Mode</source>
+        <translation>Modo de A&amp;presentação</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>F11</source>
+        <translation>F11</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>F5</source>
+        <translation>F5</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Full screen, the presentation UI scale, the view large (F6: the panels)</source>
+        <translation>Ecrã inteiro, a escala de interface da apresentação, a vista em grande (F6: os painéis)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Show the Panels in Presentation &amp;Mode</source>
+        <translation>Mostrar os Painéis no &amp;Modo de Apresentação</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>F6</source>
+        <translation>F6</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&amp;Blank the Screen (Presentation Mode)</source>
+        <translation>&amp;Escurecer o Ecrã (Modo de Apresentação)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>B</source>
+        <translation>B</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Faded Probe Arrows</source>
+        <translation>Setas da Sonda Esba&amp;tidas</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>The probe&apos;s arrows thin and see-through, so the highlight under them stays visible</source>
+        <translation>As setas da sonda finas e translúcidas, para que o reflexo especular por baixo delas continue visível</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>B or . blanks the screen in presentation mode (F5 or F11); Phong / Blinn-Phong is Ctrl+B</source>
+        <translation>B ou . escurece o ecrã no modo de apresentação (F5 ou F11); Phong / Blinn-Phong é Ctrl+B</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>Presentation mode (F5) will show the panels (F6 hides them)</source>
+        <translation>O modo de apresentação (F5) vai mostrar os painéis (F6 esconde-os)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Presentation mode (F5) will hide the panels (F6 shows them)</source>
+        <translation>O modo de apresentação (F5) vai esconder os painéis (F6 mostra-os)</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>The editor needs %1 px at this scale: View &gt; Shader editor shows it</source>
+        <translation>O editor precisa de %1 px nesta escala: Ver &gt; Editor de shaders mostra-o</translation>
+    </message>
+    <message>
+        <location filename="../../app/main_window_unsaved.cpp" line="-1"/>
+        <source>Save the shader pair as NAME.vert and NAME.frag</source>
+        <translation>Guardar o par de shaders como NAME.vert e NAME.frag</translation>
+    </message>
+</context>
+<context>
+    <name>lb::MaterialPanel</name>
+    <message>
+        <location filename="../../widgets/material_panel.cpp" line="+42"/>
+        <source>%1 (%2): the material&apos;s %3 reflection coefficients</source>
+        <translation>%1 (%2): os coeficientes de reflexão do material (%3)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>shininess: the specular exponent n in (R.V)^n or (N.H)^n; higher gives a smaller, sharper highlight</source>
+        <translation>shininess: o expoente especular n em (R.V)^n ou (N.H)^n; maior dá um reflexo especular menor e mais nítido</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>Shininess</source>
+        <translation>Brilho</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Reset material</source>
+        <translation>Repor material</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The selected object&apos;s material back to the slides&apos; red plastic: Ka = Kd = (1, 0, 0), Ks = (1, 1, 1), n = 6</source>
+        <translation>O material do objeto selecionado de volta ao plástico vermelho dos diapositivos: Ka = Kd = (1, 0, 0), Ks = (1, 1, 1), n = 6</translation>
+    </message>
+</context>
+<context>
+    <name>lb::MeshActions</name>
+    <message>
+        <location filename="../../app/mesh_actions.cpp" line="+65"/>
+        <source>Open &amp;Recent Mesh</source>
+        <translation>Abrir Malha Rece&amp;nte</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>Texture not used</source>
+        <translation>Textura não usada</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>An image could not be used as a texture.</source>
+        <translation>Não foi possível usar uma imagem como textura.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Mesh not built</source>
+        <translation>Malha não construída</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>An object&apos;s mesh could not be built; it keeps what it drew before.</source>
+        <translation>Não foi possível construir a malha de um objeto; ele mantém o que desenhava antes.</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>Open &amp;Mesh...</source>
+        <translation>Abrir &amp;Malha...</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Ctrl+M</source>
+        <translation>Ctrl+M</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Open &amp;Texture Image...</source>
+        <translation>Abrir Imagem de Textu&amp;ra...</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Ctrl+T</source>
+        <translation>Ctrl+T</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&amp;Preferences...</source>
+        <translation>Pre&amp;ferências...</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Ctrl+,</source>
+        <translation>Ctrl+,</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Show &amp;Normals</source>
+        <translation>Mostrar as &amp;Normais</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>N</source>
+        <translation>N</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>%1 not loaded (%2 drawn)</source>
+        <translation>%1 não carregado (desenha-se %2)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1: %2 triangles</source>
+        <translation>%1: %2 triângulos</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>, %1 s</source>
+        <translation>, %1 s</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Meshes Assimp reads (%1);;</source>
+        <translation>Malhas que o Assimp lê (%1);;</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>All files (*)</source>
+        <translation>Todos os ficheiros (*)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Open a mesh</source>
+        <translation>Abrir uma malha</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>Open an image as the selected object&apos;s texture</source>
+        <translation>Abrir uma imagem como textura do objeto selecionado</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Images (%1);;All files (*)</source>
+        <translation>Imagens (%1);;Todos os ficheiros (*)</translation>
+    </message>
+    <message>
+        <location line="+44"/>
+        <source>Loading cancelled</source>
+        <translation>Carregamento cancelado</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Mesh not loaded</source>
+        <translation>Malha não carregada</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A mesh file the scene names could not be loaded. Its objects draw their shapes and keep its name, so saving keeps it; it is read again after the file changes (at your next change to the scene) or when you open it.</source>
+        <translation>Não foi possível carregar um ficheiro de malha referido pela cena. Os seus objetos desenham as suas formas e mantêm o nome dele, pelo que guardar o mantém; é lido de novo depois de o ficheiro mudar (na sua próxima alteração à cena) ou quando o abrir.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The mesh could not be loaded; the previous one stays.</source>
+        <translation>Não foi possível carregar a malha; a anterior mantém-se.</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Files not used</source>
+        <translation>Ficheiros não usados</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Some files could not be used.</source>
+        <translation>Não foi possível usar alguns ficheiros.</translation>
+    </message>
+</context>
+<context>
+    <name>lb::NumberBox</name>
+    <message>
+        <location filename="../../widgets/number_box.cpp" line="+68"/>
+        <source>Not a number: digits, a sign in front and one decimal separator.</source>
+        <translation>Não é um número: algarismos, um sinal à frente e um só separador decimal.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>A whole number, typed without separators.</source>
+        <translation>Um número inteiro, escrito sem separadores.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>One decimal separator, a point or a comma (2.5 or 2,5), and no thousands separators.</source>
+        <translation>Um só separador decimal, um ponto ou uma vírgula (2.5 ou 2,5), e sem separadores de milhares.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>This box takes whole numbers.</source>
+        <translation>Esta caixa aceita números inteiros.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>This box takes one decimal.</source>
+        <translation>Esta caixa aceita uma casa decimal.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>This box takes %1 decimals.</source>
+        <translation>Esta caixa aceita %1 casas decimais.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>This box takes %1 to %2.</source>
+        <translation>Esta caixa aceita de %1 a %2.</translation>
+    </message>
+</context>
+<context>
+    <name>lb::ObjectLoader</name>
+    <message>
+        <location filename="../../render/import/object_loader.cpp" line="+161"/>
+        <source>%1 (the objects naming it show the mesh file&apos;s texture or the checker, and keep its name for when the file is back)</source>
+        <translation>%1 (os objetos que o referem mostram a textura do ficheiro da malha ou o xadrez, e guardam o seu nome para quando o ficheiro voltar)</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>%1: %2 vertices, %3 triangles</source>
+        <translation>%1: %2 vértices, %3 triângulos</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>, loaded in %1 s</source>
+        <translation>, carregado em %1 s</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>, normals generated</source>
+        <translation>, normais geradas</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>, normals generated (the file has none)</source>
+        <translation>, normais geradas (o ficheiro não tem nenhumas)</translation>
+    </message>
+    <message>
+        <location line="+51"/>
+        <source>%1: not used: its object was removed</source>
+        <translation>%1: não usado: o seu objeto foi removido</translation>
+    </message>
+    <message>
+        <location line="+53"/>
+        <source>%1: not loaded: cancelled</source>
+        <translation>%1: não carregado: cancelado</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1: not loaded: its object was removed</source>
+        <translation>%1: não carregado: o seu objeto foi removido</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <location line="+184"/>
+        <source>Loading cancelled</source>
+        <translation>Carregamento cancelado</translation>
+    </message>
+    <message>
+        <location line="-62"/>
+        <source>building</source>
+        <translation>a construir</translation>
+    </message>
+</context>
+<context>
+    <name>lb::ObjectPanel</name>
+    <message>
+        <location filename="../../widgets/object_panel.cpp" line="+31"/>
+        <source>The scene&apos;s objects, each with its own mesh, transform and material: select one to edit it here and in the Material panel (or click it in the view). Untick to hide; double-click to rename</source>
+        <translation>Os objetos da cena, cada um com a sua malha, transformação e material: selecione um para o editar aqui e no painel Material (ou clique nele na vista). Desmarque para esconder; duplo clique para mudar o nome</translation>
+    </message>
+    <message>
+        <location line="+30"/>
+        <source>Add</source>
+        <translation>Adicionar</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A new sphere in the first free place near the centre (at most %1 objects; R frames them all)</source>
+        <translation>Uma nova esfera no primeiro lugar livre perto do centro (no máximo %1 objetos; R enquadra-os todos)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Duplicate</source>
+        <translation>Duplicar</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A copy of the selected object, material and all, in the first free place near the centre</source>
+        <translation>Uma cópia do objeto selecionado, com material e tudo, no primeiro lugar livre perto do centro</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source> copy</source>
+        <translation> (cópia)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Remove</source>
+        <translation>Remover</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Removes the selected object (the last one stays); lights in its frame go to the object before it</source>
+        <translation>Remove o objeto selecionado (o último fica); as luzes no seu referencial passam para o objeto anterior</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Cube (flat faces)</source>
+        <translation>Cubo (faces planas)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Sphere (smooth)</source>
+        <translation>Esfera (suave)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Torus</source>
+        <translation>Toro</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Plane</source>
+        <translation>Plano</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The object: vPosition and vNormal come from this mesh. A built-in shape replaces a mesh file</source>
+        <translation>O objeto: vPosition e vNormal vêm desta malha. Uma forma integrada substitui um ficheiro de malha</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Open...</source>
+        <translation>Abrir...</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Open a mesh file: any format Assimp reads (Ctrl+M; or drop a file on the window)</source>
+        <translation>Abrir um ficheiro de malha: qualquer formato que o Assimp leia (Ctrl+M; ou largue um ficheiro na janela)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Shape</source>
+        <translation>Forma</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Subdivisions of the sphere, torus and plane. Few vertices show Gouraud&apos;s weakness: its highlight follows the vertices</source>
+        <translation>Subdivisões da esfera, do toro e do plano. Poucos vértices mostram a fraqueza de Gouraud: o seu reflexo especular segue os vértices</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Tessellation</source>
+        <translation>Tesselação</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>From the mesh</source>
+        <translation>Da malha</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Smooth (crease angle)</source>
+        <translation>Suaves (ângulo de vinco)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Flat</source>
+        <translation>Planas</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>vNormal: the mesh&apos;s own normals (generated smooth when a file has none), or generated: smooth, averaged over the triangles around a vertex within the crease angle, or flat, one per triangle</source>
+        <translation>vNormal: as normais da própria malha (geradas suaves quando um ficheiro não as tem), ou geradas: suaves, a média dos triângulos em torno de um vértice dentro do ângulo de vinco, ou planas, uma por triângulo</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Normals</source>
+        <translation>Normais</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Generated smooth normals average only triangles that meet at less than this angle: 0 is flat, 180 smooths every edge</source>
+        <translation>As normais suaves geradas só fazem a média de triângulos que se encontram a menos deste ângulo: 0 é plano, 180 suaviza todas as arestas</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Crease angle</source>
+        <translation>Ângulo de vinco</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Show normals as lines</source>
+        <translation>Mostrar as normais como linhas</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A short line along each vertex normal, transformed by mNormals as the shaders do (key N)</source>
+        <translation>Uma linha curta ao longo de cada normal de vértice, transformada por mNormals como os shaders fazem (tecla N)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Cull back faces (closed meshes)</source>
+        <translation>Descartar as faces traseiras (malhas fechadas)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Triangles facing away from the camera are not drawn: the same picture for a closed mesh, about twice as fast; an open mesh shows holes where its inside was</source>
+        <translation>Os triângulos virados para o lado oposto à câmara não são desenhados: a mesma imagem para uma malha fechada, cerca de duas vezes mais rápido; uma malha aberta mostra buracos onde estava o seu interior</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Use the mesh file&apos;s material</source>
+        <translation>Usar o material do ficheiro da malha</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The mesh file&apos;s ambient, diffuse and specular colours and shininess replace Ka, Kd, Ks and shininess: now, and whenever a file is loaded</source>
+        <translation>As cores ambiente, difusa e especular e o brilho do ficheiro da malha substituem Ka, Kd, Ks e o brilho: agora, e sempre que um ficheiro for carregado</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>Rotation about %1 in degrees (model matrix; applied X, then Y, then Z)</source>
+        <translation>Rotação em torno de %1 em graus (matriz de modelo; aplicada em X, depois Y, depois Z)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Scale along %1. A non-uniform scale is why normals need mNormals, the inverse transpose of mModelView</source>
+        <translation>Escala segundo %1. Uma escala não uniforme é a razão pela qual as normais precisam de mNormals, a transposta da inversa de mModelView</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Translation along world %1: where the object&apos;s centre lies (model matrix, applied last)</source>
+        <translation>Translação segundo %1 do mundo: onde fica o centro do objeto (matriz de modelo, aplicada por último)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Rotate</source>
+        <translation>Rodar</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Scale</source>
+        <translation>Escala</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Move</source>
+        <translation>Mover</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Auto-rotate about Y</source>
+        <translation>Rodar automaticamente em torno de Y</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Turns the model: a light in the object frame turns with it (key Space)</source>
+        <translation>Roda o modelo: uma luz no referencial do objeto roda com ele (tecla Espaço)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Reset object</source>
+        <translation>Repor objeto</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The selected object back to the coarse unit sphere, unrotated, unscaled and not turning; its name, place and material stay</source>
+        <translation>O objeto selecionado de volta à esfera unitária grosseira, sem rotação, sem escala e parado; o seu nome, lugar e material mantêm-se</translation>
+    </message>
+    <message>
+        <location line="+64"/>
+        <source>File: %1</source>
+        <translation>Ficheiro: %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>File: %1 (not loaded)</source>
+        <translation>Ficheiro: %1 (não carregado)</translation>
+    </message>
+</context>
+<context>
+    <name>lb::PreferencesDialog</name>
+    <message>
+        <location filename="../../widgets/preferences_dialog.cpp" line="+15"/>
+        <source>Preferences</source>
+        <translation>Preferências</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Mesh files are read by a helper process (lightbench-import). When it needs more memory or time than this, it is stopped and the file gets a message; the workbench carries on.</source>
+        <translation>Os ficheiros de malha são lidos por um processo auxiliar (lightbench-import). Quando precisa de mais memória ou tempo do que isto, é parado e o ficheiro recebe uma mensagem; a bancada de trabalho continua.</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source> MB</source>
+        <translation> MB</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The helper&apos;s address-space limit. Default: half of this machine&apos;s memory (%1 MB). Also --import-memory-limit MB</source>
+        <translation>O limite do espaço de endereçamento do processo auxiliar. Predefinição: metade da memória desta máquina (%1 MB). Também --import-memory-limit MB</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Import memory limit</source>
+        <translation>Limite de memória da importação</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <location line="+9"/>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <location line="-7"/>
+        <source>A load that takes longer is stopped. Default: %1 s</source>
+        <translation>Um carregamento que demore mais é parado. Predefinição: %1 s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Import time limit</source>
+        <translation>Limite de tempo da importação</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Your shader program is tried on tiny frames before it draws; when one frame at the view&apos;s size would take longer than this, it is refused and the last good program keeps drawing. Default: %1 s. Also --frame-budget SECONDS</source>
+        <translation>O seu programa de shaders é testado em fotogramas minúsculos antes de desenhar; quando um fotograma no tamanho da vista demoraria mais do que isto, é recusado e o último programa válido continua a desenhar. Predefinição: %1 s. Também --frame-budget SECONDS</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Frame budget</source>
+        <translation>Orçamento de tempo por fotograma</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Move the camera and the lights smoothly between a lesson&apos;s steps</source>
+        <translation>Mover a câmara e as luzes suavemente entre os passos de uma lição</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>So the class sees where they go; off: each step jumps</source>
+        <translation>Para que a turma veja para onde vão; desligado: cada passo salta</translation>
+    </message>
+</context>
+<context>
+    <name>lb::ProbePanel</name>
+    <message>
+        <location filename="../../widgets/probe_panel.cpp" line="+60"/>
+        <source>Copy the Equation</source>
+        <translation>Copiar a Equação</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The lighting equation with this point&apos;s numbers, as text</source>
+        <translation>A equação de iluminação com os números deste ponto, como texto</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>Ctrl+click (or Shift+click) the surface to probe a point: the vectors, N·L, the specular angle and the three terms, beside the pixel the GPU drew. Esc clears it.</source>
+        <translation>Ctrl+clique (ou Shift+clique) na superfície para sondar um ponto: os vetores, N·L, o ângulo especular e os três termos, ao lado do píxel que a GPU desenhou. Esc limpa-o.</translation>
+    </message>
+    <message>
+        <location line="+37"/>
+        <source>No surface at (%1, %2).</source>
+        <translation>Nenhuma superfície em (%1, %2).</translation>
+    </message>
+    <message>
+        <location line="+69"/>
+        <source>Point</source>
+        <translation>Ponto</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>pixel (%1, %2), %3, triangle %4%5</source>
+        <translation>píxel (%1, %2), %3, triângulo %4%5</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>, side B</source>
+        <translation>, lado B</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>, side A</source>
+        <translation>, lado A</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>P (eye)</source>
+        <translation>P (olho)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>N</source>
+        <translation>N</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>V</source>
+        <translation>V</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>levels %1 and %2 (%3% of %2)</source>
+        <translation>níveis %1 e %2 (%3% do %2)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>level %1</source>
+        <translation>nível %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>texture</source>
+        <translation>textura</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>uv (%1, %2), level of detail %3: %4, %5</source>
+        <translation>uv (%1, %2), nível de detalhe %3: %4, %5</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>mipmaps</source>
+        <translation>mipmaps</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>no mipmaps</source>
+        <translation>sem mipmaps</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>base colour</source>
+        <translation>cor de base</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Light %1</source>
+        <translation>Luz %1</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>P, L (%1)</source>
+        <translation>P, L (%1)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>distance, attenuation</source>
+        <translation>distância, atenuação</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>spot</source>
+        <translation>foco</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>0 (outside the cone)</source>
+        <translation>0 (fora do cone)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 (off)</source>
+        <translation>%1 (desligado)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <location line="+5"/>
+        <source>ambient</source>
+        <translation>ambiente</translation>
+    </message>
+    <message>
+        <location line="-4"/>
+        <location line="+5"/>
+        <source>diffuse</source>
+        <translation>difuso</translation>
+    </message>
+    <message>
+        <location line="-4"/>
+        <location line="+5"/>
+        <source>specular</source>
+        <translation>especular</translation>
+    </message>
+    <message>
+        <location line="-3"/>
+        <source>Sum</source>
+        <translation>Soma</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>the model (%1 shading)</source>
+        <translation>o modelo (sombreamento %1)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>model</source>
+        <translation>modelo</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <location line="+7"/>
+        <source>reference</source>
+        <translation>referência</translation>
+    </message>
+    <message>
+        <location line="-5"/>
+        <source> of 255 (the built-in model, %1 shading)</source>
+        <translation> de 255 (o modelo integrado, sombreamento %1)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source> of 255 (%1 shading)</source>
+        <translation> de 255 (sombreamento %1)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 draws %2</source>
+        <translation>%1 desenha %2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>nothing here</source>
+        <translation>nada aqui</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>GPU drew</source>
+        <translation>a GPU desenhou</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>difference</source>
+        <translation>diferença</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 of 255 from %2</source>
+        <translation>%1 de 255 face a %2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 of 255</source>
+        <translation>%1 de 255</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>The equation at this point</source>
+        <translation>A equação neste ponto</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>This point is drawn by %1 (side B), which is itself the reference: it is compared with nothing. The numbers above are the built-in model&apos;s, which that program need not follow.</source>
+        <translation>Este ponto é desenhado por %1 (lado B), que é ele próprio a referência: não é comparado com nada. Os números acima são os do modelo integrado, que esse programa não tem de seguir.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>The pixel is compared with what %1 draws at this point; the numbers above are the built-in model&apos;s.</source>
+        <translation>O píxel é comparado com o que %1 desenha neste ponto; os números acima são os do modelo integrado.</translation>
+    </message>
+</context>
+<context>
+    <name>lb::RecentFiles</name>
+    <message>
+        <location filename="../../widgets/recent_files.cpp" line="+55"/>
+        <source>(none yet)</source>
+        <translation>(ainda nenhum)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Clear the list</source>
+        <translation>Limpar a lista</translation>
+    </message>
+</context>
+<context>
+    <name>lb::SceneActions</name>
+    <message>
+        <location filename="../../app/scene_actions.cpp" line="+18"/>
+        <source>Open Recent S&amp;cene</source>
+        <translation>Abrir &amp;Cena Recente</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>Gouraud vs Phong (the slides)</source>
+        <translation>Gouraud vs Phong (os diapositivos)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Phong vs Blinn-Phong specular</source>
+        <translation>Especular Phong vs Blinn-Phong</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The three light frames</source>
+        <translation>Os três referenciais da luz</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The normal matrix</source>
+        <translation>A matriz das normais</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Toon shading</source>
+        <translation>Sombreamento toon</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The terms one at a time (keys A, D, S)</source>
+        <translation>Os termos um a um (teclas A, D, S)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Attenuation of a point light</source>
+        <translation>Atenuação de uma luz pontual</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A spotlight</source>
+        <translation>Um holofote</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The exercise: a textured cube and a sphere, light in camera coordinates</source>
+        <translation>O exercício: um cubo com textura e uma esfera, luz em coordenadas da câmara</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>A light in one object&apos;s frame (it turns with the torus)</source>
+        <translation>Uma luz no referencial de um objeto (roda com o toro)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Texture filtering: nearest, linear and mipmaps</source>
+        <translation>Filtragem de texturas: mais próximo, linear e mipmaps</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Exercise: per-fragment lighting (Check My Work, F9)</source>
+        <translation>Exercício: iluminação por fragmento (Verificar o Meu Trabalho, F9)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>&amp;Open Scene...</source>
+        <translation>&amp;Abrir Cena...</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>E&amp;xamples</source>
+        <translation>E&amp;xemplos</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>&amp;Save Scene</source>
+        <translation>&amp;Guardar Cena</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Save Scene &amp;As...</source>
+        <translation>Guardar Cena C&amp;omo...</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Ctrl+Shift+S</source>
+        <translation>Ctrl+Shift+S</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>E&amp;xport Image...</source>
+        <translation>Ex&amp;portar Imagem...</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Ctrl+E</source>
+        <translation>Ctrl+E</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Cop&amp;y Image</source>
+        <translation>Cop&amp;iar Imagem</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Ctrl+Shift+C</source>
+        <translation>Ctrl+Shift+C</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>The scene could not be opened; nothing changed.</source>
+        <translation>Não foi possível abrir a cena; nada mudou.</translation>
+    </message>
+    <message>
+        <location line="+35"/>
+        <source>This step</source>
+        <translation>este passo</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+3"/>
+        <source>%n field(s) could not be used and kept their defaults:</source>
+        <translation>
+            <numerusform>%n campo não pôde ser usado e ficou com o valor predefinido:</numerusform>
+            <numerusform>%n campos não puderam ser usados e ficaram com os valores predefinidos:</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 opened with less tessellation than it asks for, to fit this machine&apos;s memory; the file is unchanged unless you save the scene.</source>
+        <translation>Abriu-se %1 com menos tesselação do que pede, para caber na memória desta máquina; o ficheiro fica inalterado a menos que guarde a cena.</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+6"/>
+        <source>%1 opened; %n field(s) could not be used and kept their defaults.</source>
+        <translation>
+            <numerusform>Abriu-se %1; %n campo não pôde ser usado e ficou com o valor predefinido.</numerusform>
+            <numerusform>Abriu-se %1; %n campos não puderam ser usados e ficaram com os valores predefinidos.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Opened the scene %1</source>
+        <translation>Abriu-se a cena %1</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>The scene was not saved.</source>
+        <translation>A cena não foi guardada.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Saved the scene to %1</source>
+        <translation>Cena guardada em %1</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>%1: not drawn: %2</source>
+        <translation>%1: não desenhado: %2</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1: the view could not be drawn at %2 x %3</source>
+        <translation>%1: não foi possível desenhar a vista a %2 x %3</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>The image was not exported.</source>
+        <translation>A imagem não foi exportada.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Exported %1</source>
+        <translation>Imagem exportada para %1</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Copied the view (%1 x %2) to the clipboard</source>
+        <translation>Vista (%1 x %2) copiada para a área de transferência</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Open a scene</source>
+        <translation>Abrir uma cena</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Save the scene</source>
+        <translation>Guardar a cena</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>Export the view</source>
+        <translation>Exportar a vista</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>PNG images (*.png);;All files (*)</source>
+        <translation>Imagens PNG (*.png);;Todos os ficheiros (*)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Scene</source>
+        <translation>Cena</translation>
+    </message>
+</context>
+<context>
+    <name>lb::ScenePanel</name>
+    <message>
+        <location filename="../../widgets/scene_panel.cpp" line="+71"/>
+        <source> or </source>
+        <translation> ou </translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>Unused: the program on screen has no uniform %1 (a constant in the shader, perhaps), so this control changes nothing.
+
+%2</source>
+        <translation>Sem uso: o programa no ecrã não tem nenhum uniform %1 (uma constante no shader, talvez), por isso este controlo não altera nada.
+
+%2</translation>
+    </message>
+</context>
+<context>
+    <name>lb::SettingsAutosave</name>
+    <message>
+        <location filename="../../app/settings_autosave.cpp" line="+56"/>
+        <source>Your work is saved again in %1</source>
+        <translation>O seu trabalho volta a ser guardado em %1</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Your work is not saved, trying again every %1 s: %2</source>
+        <translation>O seu trabalho não está guardado; nova tentativa a cada %1 s: %2</translation>
+    </message>
+</context>
+<context>
+    <name>lb::ShaderDocument</name>
+    <message>
+        <location filename="../../render/model/shader_document.cpp" line="+219"/>
+        <source>Cannot open %1</source>
+        <translation>Não é possível abrir %1</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>Cannot save %1</source>
+        <translation>Não é possível guardar %1</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>The shaders have no files yet: use Save As</source>
+        <translation>Os shaders ainda não têm ficheiros: use Guardar Como</translation>
+    </message>
+</context>
+<context>
+    <name>lb::ShadingPanel</name>
+    <message>
+        <location filename="../../widgets/shading_panel.cpp" line="+25"/>
+        <source>Gouraud (per vertex)</source>
+        <translation>Gouraud (por vértice)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Phong (per fragment)</source>
+        <translation>Phong (por fragmento)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Flat (per triangle)</source>
+        <translation>Plano (por triângulo)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Gouraud: the model runs in the vertex shader and colours are interpolated; Phong: N, L, V are interpolated and the model runs for every fragment; flat: each triangle takes the colour of its last (provoking) vertex (key G: Gouraud / Phong)</source>
+        <translation>Gouraud: o modelo corre no vertex shader e as cores são interpoladas; Phong: N, L, V são interpolados e o modelo corre para cada fragmento; plano: cada triângulo recebe a cor do seu último vértice (o provoking vertex) (tecla G: Gouraud / Phong)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Shading</source>
+        <translation>Sombreamento</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Phong: (R·V)^n</source>
+        <translation>Phong: (R·V)^n</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Blinn-Phong: (N·H)^n</source>
+        <translation>Blinn-Phong: (N·H)^n</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>R = reflect(-L, N), the mirrored light direction; H = normalize(L + V), the half vector (key B)</source>
+        <translation>R = reflect(-L, N), a direção da luz espelhada; H = normalize(L + V), o vetor médio (tecla B)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <location line="+41"/>
+        <source>Specular</source>
+        <translation>Especular</translation>
+    </message>
+    <message>
+        <location line="-39"/>
+        <source>Perspective: V = -posC</source>
+        <translation>Perspetiva: V = -posC</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Orthographic: V = (0,0,1)</source>
+        <translation>Ortográfica: V = (0,0,1)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>mProjection, and the view vector V that matches it (key P)</source>
+        <translation>mProjection, e o vetor de observação V que lhe corresponde (tecla P)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Projection</source>
+        <translation>Projeção</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Colour (lit)</source>
+        <translation>Cor (iluminada)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>N as colour</source>
+        <translation>N como cor</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>L as colour</source>
+        <translation>L como cor</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>V as colour</source>
+        <translation>V como cor</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>H as colour</source>
+        <translation>H como cor</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>R as colour</source>
+        <translation>R como cor</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>N·L as grey</source>
+        <translation>N·L em cinzento</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Specular factor as grey</source>
+        <translation>Fator especular em cinzento</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Attenuation as grey</source>
+        <translation>Atenuação em cinzento</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>uShow: the model taken apart. Vectors as 0.5·v + 0.5 (x red, y green, z blue), numbers as grey; L, H, R and the numbers are light 1&apos;s (with several lights on too)</source>
+        <translation>uShow: o modelo desmontado. Vetores como 0.5·v + 0.5 (x vermelho, y verde, z azul), números em cinzento; L, H, R e os números são os da luz 1 (também com várias luzes ligadas)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Show</source>
+        <translation>Mostrar</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Lighting</source>
+        <translation>Iluminação</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>uEnableLighting: off shows Kd unlit (key L)</source>
+        <translation>uEnableLighting: desligada mostra Kd sem iluminação (tecla L)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Vertex colours</source>
+        <translation>Cores dos vértices</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Multiply ambient and diffuse by the vertex colour (vColor)</source>
+        <translation>Multiplicar os termos ambiente e difuso pela cor do vértice (vColor)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Ambient</source>
+        <translation>Ambiente</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Ia·Ka: uEnableAmbient (key A)</source>
+        <translation>Ia·Ka: uEnableAmbient (tecla A)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Diffuse</source>
+        <translation>Difuso</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Id·Kd·max(N·L, 0): uEnableDiffuse (key D)</source>
+        <translation>Id·Kd·max(N·L, 0): uEnableDiffuse (tecla D)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Is·Ks·(R·V or N·H)^n: uEnableSpecular (key S)</source>
+        <translation>Is·Ks·(R·V ou N·H)^n: uEnableSpecular (tecla S)</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Terms</source>
+        <translation>Termos</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Normals by the model-view (wrong)</source>
+        <translation>Normais pela matriz model-view (errado)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Transform normals by mModelView instead of its inverse transpose, to see why the normal matrix exists: under a non-uniform scale the normals tilt</source>
+        <translation>Transformar as normais por mModelView em vez da sua transposta da inversa, para ver porque existe a matriz das normais: com uma escala não uniforme as normais inclinam-se</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>&lt;b&gt;Compare&lt;/b&gt; side A with side B</source>
+        <translation>&lt;b&gt;Comparar&lt;/b&gt; o lado A com o lado B</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Side A is the program on screen (the editor&apos;s); side B is the built-in program with the choices below, a shader pair from files, or an open exercise&apos;s reference; one camera</source>
+        <translation>O lado A é o programa no ecrã (o do editor); o lado B é o programa integrado com as escolhas abaixo, um par de shaders de ficheiros ou a referência de um exercício aberto; uma só câmara</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Files...</source>
+        <translation>Ficheiros...</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Side B draws a shader pair from files (NAME.vert and NAME.frag), e.g. last week&apos;s solution</source>
+        <translation>O lado B desenha um par de shaders de ficheiros (NAME.vert e NAME.frag), p. ex. a solução da semana passada</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Stop using these files: side B draws what it drew before them</source>
+        <translation>Deixar de usar estes ficheiros: o lado B desenha o que desenhava antes deles</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>B program</source>
+        <translation>Programa B</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Off</source>
+        <translation>Desligada</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Side by side</source>
+        <translation>Lado a lado</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <location line="+23"/>
+        <source>Wipe</source>
+        <translation>Cortina</translation>
+    </message>
+    <message>
+        <location line="-23"/>
+        <source>Difference |A - B|</source>
+        <translation>Diferença |A - B|</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Side by side: A left, B right; wipe: drag the line in the view; difference: |A - B| as a heat map (key C cycles)</source>
+        <translation>Lado a lado: A à esquerda, B à direita; cortina: arraste a linha na vista; diferença: |A - B| como mapa de calor (a tecla C alterna)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>View</source>
+        <translation>Vista</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>B: Gouraud</source>
+        <translation>B: Gouraud</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>B: Phong</source>
+        <translation>B: Phong</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>B: Flat</source>
+        <translation>B: Plano</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Side B&apos;s shading: per vertex or per fragment</source>
+        <translation>O sombreamento do lado B: por vértice ou por fragmento</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>B shading</source>
+        <translation>Sombreamento B</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>B: Phong (R·V)</source>
+        <translation>B: Phong (R·V)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>B: Blinn-Phong (N·H)</source>
+        <translation>B: Blinn-Phong (N·H)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Side B&apos;s specular term</source>
+        <translation>O termo especular do lado B</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>B specular</source>
+        <translation>Especular B</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Where the wipe divides A (left) from B (right)</source>
+        <translation>Onde a cortina separa A (esquerda) de B (direita)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Reset shading</source>
+        <translation>Repor sombreamento</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Phong shading, Blinn-Phong specular, perspective, lighting on</source>
+        <translation>Sombreamento de Phong, especular Blinn-Phong, perspetiva, iluminação ligada</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>the built-in program</source>
+        <translation>o programa integrado</translation>
+    </message>
+</context>
+<context>
+    <name>lb::TextureControls</name>
+    <message>
+        <location filename="../../widgets/texture_controls.cpp" line="+27"/>
+        <source>Texture</source>
+        <translation>Textura</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>uEnableTexture: multiply ambient and diffuse by the texture (uSampler): the image file, else the mesh file&apos;s diffuse texture, else the checker</source>
+        <translation>uEnableTexture: multiplicar os termos ambiente e difuso pela textura (uSampler): o ficheiro de imagem, senão a textura difusa do ficheiro da malha, senão o xadrez</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Image...</source>
+        <translation>Imagem...</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Open a PNG, JPEG or any image Qt reads as this object&apos;s texture (Ctrl+T, or drop it on the window); at most %1 x %1 texels</source>
+        <translation>Abrir um PNG, JPEG ou qualquer imagem que o Qt leia como textura deste objeto (Ctrl+T, ou largue-a na janela); no máximo %1 x %1 texels</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>No image: back to the mesh file&apos;s texture or the checker</source>
+        <translation>Sem imagem: volta à textura do ficheiro da malha ou ao xadrez</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Repeat</source>
+        <translation>Repetir</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Clamp</source>
+        <translation>Limitar</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Texture coordinates outside 0 to 1: the image repeats (GL_REPEAT) or its edge stretches (GL_CLAMP_TO_EDGE)</source>
+        <translation>Coordenadas de textura fora de 0 a 1: a imagem repete-se (GL_REPEAT) ou a sua orla estende-se (GL_CLAMP_TO_EDGE)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Nearest</source>
+        <translation>Mais próximo</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Linear</source>
+        <translation>Linear</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The texel nearest the coordinate (GL_NEAREST: blocky when magnified) or the four around it weighted (GL_LINEAR)</source>
+        <translation>O texel mais próximo da coordenada (GL_NEAREST: em blocos quando ampliada) ou os quatro à sua volta, ponderados (GL_LINEAR)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Mipmaps</source>
+        <translation>Mipmaps</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Where the texture is minified, read a smaller copy of it chosen by the level of detail (GL_NEAREST_MIPMAP_NEAREST, or trilinear GL_LINEAR_MIPMAP_LINEAR with the linear filter): no shimmer far away. The probe shows the level</source>
+        <translation>Onde a textura é reduzida, ler uma cópia mais pequena dela escolhida pelo nível de detalhe (GL_NEAREST_MIPMAP_NEAREST, ou trilinear GL_LINEAR_MIPMAP_LINEAR com o filtro linear): sem cintilação ao longe. A sonda mostra o nível</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>%1 (not shown)</source>
+        <translation>%1 (não mostrada)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the checker</source>
+        <translation>o xadrez</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the mesh file&apos;s texture, or the checker</source>
+        <translation>a textura do ficheiro da malha, ou o xadrez</translation>
+    </message>
+</context>
+<context>
+    <name>lb::TrialProcess</name>
+    <message>
+        <location filename="../../render/trial/trial_process.cpp" line="+176"/>
+        <source>compiling this program and drawing it on small frames did not finish within %1 (the trial&apos;s helper was replaced): an endless or very long loop, or a program too big for the driver?</source>
+        <translation>compilar este programa e desenhá-lo em fotogramas pequenos não terminou em %1 (o processo auxiliar de teste foi substituído): um ciclo infinito ou muito longo, ou um programa grande demais para o controlador?</translation>
+    </message>
+    <message>
+        <location line="+40"/>
+        <source>the driver ran out of memory compiling or drawing this program (limit %1; the trial&apos;s helper was replaced)</source>
+        <translation>o controlador ficou sem memória ao compilar ou desenhar este programa (limite %1; o processo auxiliar de teste foi substituído)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>the driver crashed the trial&apos;s helper while it drew this program (it was replaced)</source>
+        <translation>o controlador fez falhar o processo auxiliar de teste enquanto desenhava este programa (foi substituído)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the trial&apos;s helper ended while it drew this program (exit code %1; it was replaced)</source>
+        <translation>o processo auxiliar de teste terminou enquanto desenhava este programa (código de saída %1; foi substituído)</translation>
+    </message>
+</context>
+<context>
+    <name>lb::UniformPanel</name>
+    <message>
+        <location filename="../../widgets/uniform_panel.cpp" line="+80"/>
+        <source>The program has no uniforms of its own. A uniform that no panel feeds gets a control here.</source>
+        <translation>O programa não tem uniforms próprios. Um uniform que nenhum painel alimenta recebe aqui um controlo.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The program&apos;s own uniforms; values stay when you recompile.</source>
+        <translation>Os uniforms próprios do programa; os valores mantêm-se quando recompila.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>No control for: %1 (matrices, samplers and arrays).</source>
+        <translation>Sem controlo para: %1 (matrizes, samplers e arrays).</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>uniform %1 %2</source>
+        <translation>uniform %1 %2</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1.a</source>
+        <translation>%1.a</translation>
+    </message>
+</context>
+<context>
+    <name>lb::Viewport</name>
+    <message>
+        <location filename="../../widgets/viewport.cpp" line="+39"/>
+        <source>Left drag: orbit - right or middle drag: pan - wheel: zoom - R: reset view</source>
+        <translation>Arrastar com o botão esquerdo: orbitar - arrastar com o direito ou o do meio: deslocar - roda: zoom - R: repor a vista</translation>
+    </message>
+    <message>
+        <location line="+69"/>
+        <source>; WebGL 1 shaders run as GLSL 3.30</source>
+        <translation>; os shaders WebGL 1 correm como GLSL 3.30</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>the OpenGL context was lost while this program drew (the driver reset the GPU: an endless or very long loop?)</source>
+        <translation>o contexto OpenGL perdeu-se enquanto este programa desenhava (o controlador reiniciou a GPU: um ciclo infinito ou muito longo?)</translation>
+    </message>
+    <message>
+        <location line="+30"/>
+        <location line="+194"/>
+        <source>the built-in program is drawing</source>
+        <translation>o programa integrado está a desenhar</translation>
+    </message>
+    <message>
+        <location line="-193"/>
+        <location line="+192"/>
+        <source>the last good program is drawing</source>
+        <translation>o último programa válido está a desenhar</translation>
+    </message>
+    <message>
+        <location line="-191"/>
+        <location line="+204"/>
+        <source>Refused: %1; %2</source>
+        <translation>Recusado: %1; %2</translation>
+    </message>
+    <message>
+        <location line="-190"/>
+        <source>drawing one frame with this program would take about %1 at %2x%3 (the budget is %4): an endless or very long loop?</source>
+        <translation>desenhar um fotograma com este programa demoraria cerca de %1 a %2x%3 (o orçamento é %4): um ciclo infinito ou muito longo?</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>The renderer could not start:
+%1</source>
+        <translation>Não foi possível iniciar o renderizador:
+%1</translation>
+    </message>
+    <message>
+        <location line="+177"/>
+        <source>The shader has errors (see the editor): %1</source>
+        <translation>O shader tem erros (ver o editor): %1</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/viewport_captions.cpp" line="+20"/>
+        <source>B: %1</source>
+        <translation>B: %1</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>the reference program</source>
+        <translation>o programa de referência</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>B: built-in %1, %2</source>
+        <translation>B: programa integrado %1, %2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Gouraud</source>
+        <translation>Gouraud</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>flat</source>
+        <translation>plano</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Phong</source>
+        <translation>Phong</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Blinn-Phong (N·H)</source>
+        <translation>Blinn-Phong (N·H)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Phong (R·V)</source>
+        <translation>Phong (R·V)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>A (left): %1  |  %2 (right)</source>
+        <translation>A (esquerda): %1  |  %2 (direita)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+14"/>
+        <source>the program on screen</source>
+        <translation>o programa no ecrã</translation>
+    </message>
+    <message>
+        <location line="-10"/>
+        <source>|A - B|: not drawn yet</source>
+        <translation>|A - B|: ainda não desenhado</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>|A - B|, A: %7, %1: largest %2/255 at (%3, %4); %5% of the drawn pixels within %8/255; scale 0 (black) to %6/255 (white)</source>
+        <translation>|A - B|, A: %7, %1: maior %2/255 em (%3, %4); %5% dos píxeis desenhados com diferença até %8/255; escala de 0 (preto) a %6/255 (branco)</translation>
+    </message>
+</context>
+<context>
+    <name>lb::WorkCheck</name>
+    <message>
+        <location filename="../../app/work_check.cpp" line="+81"/>
+        <source>no temporary folder for the check: %1</source>
+        <translation>sem pasta temporária para a verificação: %1</translation>
+    </message>
+    <message>
+        <location line="+31"/>
+        <source>your program</source>
+        <translation>o seu programa</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>more than %1 s</source>
+        <translation>mais de %1 s</translation>
+    </message>
+</context>
+</TS>
