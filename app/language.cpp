@@ -91,6 +91,15 @@ QStringList installTranslators(QCoreApplication &app, const QString &language)
     return loaded;
 }
 
+void removeTranslators(QCoreApplication &app)
+{
+    for (QTranslator *translator : app.findChildren<QTranslator *>(Qt::FindDirectChildrenOnly)) {
+        app.removeTranslator(translator);
+        delete translator;
+    }
+    setDefaultLessonLanguage(QString());
+}
+
 void addLanguageMenu(QMenu *view, QSettings &settings, QWidget *window)
 {
     QMenu *menu = view->addMenu(QCoreApplication::translate("lb::Language", "&Language"));

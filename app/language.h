@@ -32,6 +32,8 @@ QString resolvedLanguage(const QString &setting);
 // QScintilla's) and returns the names of the catalogues that loaded. Call before the
 // window is built: the window reads its strings once (a change asks for a restart).
 QStringList installTranslators(QCoreApplication &app, const QString &language);
+// Takes them off again (English from then on, for what is built after).
+void removeTranslators(QCoreApplication &app);
 
 // View > Language: the four choices, the current one checked. Choosing another keeps it in
 // the settings and offers to restart; when accepted, `window` is closed (asking about

@@ -24,24 +24,6 @@ class TestWindowRooms : public WindowTest
 {
     Q_OBJECT
 
-    // Every panel dock shown in turn: true when none needs a horizontal scrollbar.
-    QString docksNeedingSideways()
-    {
-        QStringList wide;
-        for (QDockWidget *dock : m_window->panelDocks()) {
-            dock->raise();
-            QCoreApplication::processEvents();
-            auto *scroll = qobject_cast<QScrollArea *>(dock->widget());
-            if (scroll &&
-                (scroll->horizontalScrollBar()->isVisible() ||
-                 scroll->widget()->minimumSizeHint().width() > scroll->viewport()->width()))
-                wide << QString("%1 (%2 px for %3)")
-                            .arg(dock->windowTitle())
-                            .arg(scroll->viewport()->width())
-                            .arg(scroll->widget()->minimumSizeHint().width());
-        }
-        return wide.join(", ");
-    }
     double viewShare() const
     {
         return double(m_window->viewport()->width()) / double(m_window->width());
@@ -85,7 +67,7 @@ private slots:
                                 .arg(m_window->frameGeometry().height())
                                 .arg(m_window->x())
                                 .arg(m_window->y())));
-        const QString sideways = docksNeedingSideways();
+        const QString sideways = docksNeedingSideways(*m_window);
         QVERIFY2(sideways.isEmpty(), qPrintable("horizontal scrollbar in " + sideways));
         qInfo("view width share at %dx%d: %.2f (panels %d px, editor %d px)", available.width(),
               available.height(), viewShare(), m_window->panelDocks()[0]->width(),
@@ -183,7 +165,7 @@ private slots:
             QCOMPARE(m_window->tabPosition(Qt::LeftDockWidgetArea), QTabWidget::West);
             QVERIFY2(std::abs(viewShare() - share) < 0.02,
                      qPrintable(QString("view %1 before, %2 after").arg(share).arg(viewShare())));
-            const QString sideways = docksNeedingSideways();
+            const QString sideways = docksNeedingSideways(*m_window);
             QVERIFY2(sideways.isEmpty(), qPrintable("horizontal scrollbar in " + sideways));
         }
     }

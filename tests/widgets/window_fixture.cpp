@@ -1,5 +1,9 @@
 #include "window_fixture.h"
 
+#include <QDockWidget>
+#include <QScrollArea>
+#include <QScrollBar>
+
 namespace lb::test {
 
 const QString kCube = "/usr/share/assimp/models/PLY/cube.ply";
@@ -63,6 +67,23 @@ void WindowTest::init()
     QVERIFY(QTest::qWaitForWindowActive(m_window.get()));
     QVERIFY2(m_window->viewport()->renderError().isEmpty(),
              qPrintable(m_window->viewport()->renderError()));
+}
+
+QString docksNeedingSideways(MainWindow &window)
+{
+    QStringList wide;
+    for (QDockWidget *dock : window.panelDocks()) {
+        dock->raise();
+        QCoreApplication::processEvents();
+        auto *scroll = qobject_cast<QScrollArea *>(dock->widget());
+        if (scroll && (scroll->horizontalScrollBar()->isVisible() ||
+                       scroll->widget()->minimumSizeHint().width() > scroll->viewport()->width()))
+            wide << QString("%1 (%2 px for %3)")
+                        .arg(dock->windowTitle())
+                        .arg(scroll->viewport()->width())
+                        .arg(scroll->widget()->minimumSizeHint().width());
+    }
+    return wide.join(", ");
 }
 
 int runWindowTest(WindowTest &test, int argc, char **argv)

@@ -87,6 +87,10 @@ inline int runLightbench(const QStringList &args, const QString &configDir,
 }
 #endif
 
+// Every panel dock brought forward in turn: the ones whose panel is wider than its dock (a
+// horizontal scrollbar), "Light (230 px for 260)", or empty.
+QString docksNeedingSideways(MainWindow &window);
+
 class WindowTest : public QObject
 {
     Q_OBJECT

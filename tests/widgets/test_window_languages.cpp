@@ -1,0 +1,261 @@
+// The window in the students' languages (issue 31): in German and Portuguese the menus,
+// panels, status line, messages and Qt's own buttons speak the language; every panel still
+// fits 1024x768 and 1280x720 with no sideways scrolling, no label or button cut short and
+// every tab name whole; View > Language keeps the choice and offers the restart it needs.
+#include "window_fixture.h"
+
+#include "language.h"
+#include "lesson.h"
+
+#include <QAbstractButton>
+#include <QDockWidget>
+#include <QMenuBar>
+#include <QScrollArea>
+#include <QTabBar>
+#include <QTimer>
+
+using namespace lb;
+using namespace lb::test;
+
+Q_DECLARE_METATYPE(QRect)
+
+namespace {
+
+QString withoutAccelerator(QString text)
+{
+    return text.replace("&&", "\x01").remove('&').replace("\x01", "&");
+}
+
+// Tabs (the docks' and the editor's) out of sight or too short for their names.
+QStringList tabsCut(const QWidget &window)
+{
+    QStringList cut;
+    for (const QTabBar *bar : window.findChildren<QTabBar *>()) {
+        if (!bar->isVisibleTo(&window))
+            continue;
+        const bool vertical =
+            bar->shape() == QTabBar::RoundedWest || bar->shape() == QTabBar::RoundedEast ||
+            bar->shape() == QTabBar::TriangularWest || bar->shape() == QTabBar::TriangularEast;
+        for (int i = 0; i < bar->count(); ++i) {
+            const QRect r = bar->tabRect(i);
+            const int room = vertical ? r.height() : r.width();
+            const int needed =
+                bar->fontMetrics().horizontalAdvance(withoutAccelerator(bar->tabText(i)));
+            if (!bar->rect().contains(r) || room < needed)
+                cut << QString("tab \"%1\" (%2 px for %3)")
+                           .arg(bar->tabText(i))
+                           .arg(room)
+                           .arg(needed);
+        }
+    }
+    return cut;
+}
+
+// Labels and buttons narrower than their text: cut mid-word. Labels that wrap, and the ones
+// made to elide (the status line's, names of files), are left out.
+QStringList controlsCut(const QWidget &panel, const QWidget &window)
+{
+    QStringList cut;
+    for (const QLabel *label : panel.findChildren<QLabel *>()) {
+        if (!label->isVisibleTo(&window) || label->wordWrap() || label->text().isEmpty() ||
+            label->inherits("lb::ElidedLabel") || label->textFormat() == Qt::RichText)
+            continue;
+        if (label->width() < label->minimumSizeHint().width())
+            cut << QString("label \"%1\" (%2 px for %3)")
+                       .arg(label->text())
+                       .arg(label->width())
+                       .arg(label->minimumSizeHint().width());
+    }
+    for (const QAbstractButton *button : panel.findChildren<QAbstractButton *>()) {
+        if (!button->isVisibleTo(&window) || button->text().isEmpty() ||
+            button->inherits("QToolButton"))
+            continue;
+        if (button->width() < button->minimumSizeHint().width())
+            cut << QString("button \"%1\" (%2 px for %3)")
+                       .arg(button->text())
+                       .arg(button->width())
+                       .arg(button->minimumSizeHint().width());
+    }
+    return cut;
+}
+
+} // namespace
+
+class TestWindowLanguages : public WindowTest
+{
+    Q_OBJECT
+
+    // A window built after the language's translators are installed, as main() builds it.
+    void showIn(const QString &language)
+    {
+        m_window.reset();
+        removeTranslators(*qApp);
+        const QStringList loaded = installTranslators(*qApp, language);
+        if (language != "en")
+            QVERIFY2(loaded.contains("lightbench") && loaded.contains("qt"),
+                     qPrintable(loaded.join(", ")));
+        m_window = std::make_unique<MainWindow>(*m_settings);
+        m_window->show();
+        m_window->activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(m_window.get()));
+    }
+    void settle()
+    {
+        for (int i = 0; i < 5; ++i) {
+            QCoreApplication::processEvents();
+            QTest::qWait(40);
+        }
+    }
+    QDockWidget *dock(const char *name) { return m_window->findChild<QDockWidget *>(name); }
+    // Clicks the button of the modal box that opens next, by its text.
+    void answerNextBox(const QString &button, QString *boxText)
+    {
+        QTimer::singleShot(200, this, [button, boxText] {
+            auto *box = qobject_cast<QMessageBox *>(QApplication::activeModalWidget());
+            if (!box)
+                return;
+            *boxText = box->text();
+            for (QAbstractButton *b : box->buttons())
+                if (b->text() == button)
+                    b->click();
+        });
+    }
+
+private slots:
+    void cleanup()
+    {
+        m_window.reset();
+        removeTranslators(*qApp);
+    }
+
+    void speaksTheLanguage_data()
+    {
+        QTest::addColumn<QString>("language");
+        QTest::addColumn<QStringList>("expected"); // File, its first item, the Light dock,
+        // the light panel's "Type", the status line's "Program:", the scene's message title,
+        // Qt's Cancel button
+        QTest::newRow("de") << "de" << QStringList{"&Datei",   "Szene ö&ffnen...", "Licht",
+                                                   "Typ",      "Programm: ",       "Szene",
+                                                   "Abbrechen"};
+        QTest::newRow("pt") << "pt"
+                            << QStringList{"&Ficheiro",  "&Abrir Cena...", "Luz",     "Tipo",
+                                           "Programa: ", "Cena",           "Cancelar"};
+        QTest::newRow("en") << "en" << QStringList{"&File",     "&Open Scene...", "Light", "Type",
+                                                   "Program: ", "Scene",          "Cancel"};
+    }
+    void speaksTheLanguage()
+    {
+        QFETCH(QString, language);
+        QFETCH(QStringList, expected);
+        showIn(language);
+        QMenu *file = m_window->menuBar()->actions().value(0)->menu();
+        QVERIFY(file);
+        QCOMPARE(file->title(), expected[0]);
+        QCOMPARE(file->actions().value(0)->text(), expected[1]);
+        QCOMPARE(dock("lightDock")->windowTitle(), expected[2]);
+        bool typeLabel = false;
+        for (const QLabel *label : m_window->lightPanel()->findChildren<QLabel *>())
+            typeLabel = typeLabel || label->text() == expected[3];
+        QVERIFY2(typeLabel, qPrintable(expected[3]));
+        QVERIFY2(m_window->statusLine()->programLabel()->text().startsWith(expected[4]),
+                 qPrintable(m_window->statusLine()->programLabel()->text()));
+        // A scene file that is not one: the message says so in the window's language.
+        const QString broken = m_dir.filePath("broken.json");
+        QFile f(broken);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write("{ \"format\": \"lightbench-scene\", ");
+        f.close();
+        m_window->sceneActions()->open(broken);
+        QMessageBox *box = nullptr;
+        QVERIFY(QTest::qWaitFor(
+            [&] {
+                for (QWidget *w : QApplication::topLevelWidgets())
+                    if (auto *b = qobject_cast<QMessageBox *>(w); b && b->isVisible())
+                        box = b;
+                return box != nullptr;
+            },
+            5000));
+        QCOMPARE(box->windowTitle(), expected[5]);
+        box->close();
+        // Qt's own words come from Qt's catalogue (qt6-translations-l10n).
+        QMessageBox standard(QMessageBox::Question, "", "", QMessageBox::Cancel);
+        QCOMPARE(standard.button(QMessageBox::Cancel)->text(), expected[6]);
+        // Lessons and examples follow the window's language.
+        QCOMPARE(lessonLanguage(), language);
+    }
+
+    void fitsTheScreenInEveryLanguage_data()
+    {
+        QTest::addColumn<QString>("language");
+        QTest::addColumn<QRect>("available");
+        for (const char *language : {"en", "de", "pt"}) {
+            // Screens less a 24-pixel panel, as a desktop's available area is.
+            QTest::addRow("%s 1024x768", language) << language << QRect(0, 0, 1024, 744);
+            QTest::addRow("%s 1280x720", language) << language << QRect(0, 0, 1280, 696);
+        }
+    }
+    void fitsTheScreenInEveryLanguage()
+    {
+        QFETCH(QString, language);
+        QFETCH(QRect, available);
+        showIn(language);
+        m_window->fitToScreen(available);
+        settle();
+        QVERIFY(available.contains(m_window->frameGeometry()));
+        const QString sideways = docksNeedingSideways(*m_window);
+        QVERIFY2(sideways.isEmpty(), qPrintable("horizontal scrollbar in " + sideways));
+        // Every menu's title in the menu bar, none folded into its overflow button.
+        const QMenuBar *bar = m_window->menuBar();
+        for (QAction *menu : bar->actions())
+            QVERIFY2(bar->rect().contains(bar->actionGeometry(menu)),
+                     qPrintable(menu->text() + " is folded away"));
+        QStringList cut = tabsCut(*m_window);
+        for (QDockWidget *d : m_window->findChildren<QDockWidget *>()) {
+            d->raise();
+            settle();
+            cut << controlsCut(*d, *m_window);
+        }
+        QVERIFY2(cut.isEmpty(), qPrintable(cut.join("\n")));
+    }
+
+    // View > Language: the choice is kept; "Later" leaves the window as it is, "Restart Now"
+    // closes it (asking about unsaved work as Quit does) for main() to start it again.
+    void choosingALanguageOffersARestart()
+    {
+        QMenu *languages = nullptr;
+        for (QMenu *menu : m_window->findChildren<QMenu *>())
+            if (menu->title() == "&Language")
+                languages = menu;
+        QVERIFY(languages);
+        const auto choice = [&](const QString &code) {
+            for (QAction *a : languages->actions())
+                if (a->data().toString() == code)
+                    return a;
+            return static_cast<QAction *>(nullptr);
+        };
+        QVERIFY(choice("") && choice("en") && choice("pt") && choice("de"));
+        QVERIFY(choice("")->isChecked()); // a fresh settings file follows the system
+
+        QString asked;
+        answerNextBox("&Later", &asked);
+        choice("de")->trigger();
+        QVERIFY2(asked.contains("Restart now?"), qPrintable(asked));
+        QCOMPARE(m_settings->value(kInterfaceLanguageKey).toString(), QString("de"));
+        QVERIFY(!restartRequested());
+        QVERIFY(m_window->isVisible());
+
+        asked.clear();
+        answerNextBox("Restart &Now", &asked);
+        choice("pt")->trigger();
+        QVERIFY(!asked.isEmpty());
+        QCOMPARE(m_settings->value(kInterfaceLanguageKey).toString(), QString("pt"));
+        QVERIFY(restartRequested());
+        QVERIFY(!m_window->isVisible());
+        // What main() installs for the next start.
+        QCOMPARE(resolvedLanguage(m_settings->value(kInterfaceLanguageKey).toString()),
+                 QString("pt"));
+    }
+};
+
+LB_WINDOW_TEST_MAIN(TestWindowLanguages)
+#include "test_window_languages.moc"
