@@ -2,6 +2,7 @@
 
 #include "texture_file.h"
 
+#include <QCoreApplication>
 #include <QElapsedTimer>
 #include <QOpenGLFunctions>
 
@@ -28,6 +29,14 @@ OffscreenRenderer::~OffscreenRenderer()
     }
 }
 
+namespace {
+// The translation context of this file's messages.
+struct Text
+{
+    Q_DECLARE_TR_FUNCTIONS(lb::Offscreen)
+};
+} // namespace
+
 QString OffscreenRenderer::initialize(QSize size)
 {
     m_size = size;
@@ -35,13 +44,13 @@ QString OffscreenRenderer::initialize(QSize size)
     m_surface.create();
     m_context.setFormat(QSurfaceFormat::defaultFormat());
     if (!m_context.create())
-        return "cannot create an OpenGL context (is there an X server with OpenGL?)";
+        return Text::tr("cannot create an OpenGL context (is there an X server with OpenGL?)");
     if (!m_context.makeCurrent(&m_surface))
-        return "cannot make the OpenGL context current";
+        return Text::tr("cannot make the OpenGL context current");
     m_resetStatus.attach(&m_context);
     const QSurfaceFormat f = m_context.format();
     if (f.majorVersion() * 10 + f.minorVersion() < 33)
-        return QString("OpenGL 3.3 is needed, the driver gives %1.%2")
+        return Text::tr("OpenGL 3.3 is needed, the driver gives %1.%2")
             .arg(f.majorVersion())
             .arg(f.minorVersion());
     QOpenGLFramebufferObjectFormat format;
@@ -49,7 +58,7 @@ QString OffscreenRenderer::initialize(QSize size)
     format.setInternalTextureFormat(GL_RGBA8);
     m_fbo = std::make_unique<QOpenGLFramebufferObject>(size, format);
     if (!m_fbo->isValid())
-        return QString("cannot create a %1x%2 framebuffer").arg(size.width()).arg(size.height());
+        return Text::tr("cannot create a %1x%2 framebuffer").arg(size.width()).arg(size.height());
     return m_renderer.initialize();
 }
 

@@ -7,6 +7,7 @@
 #include "webgl1_translation.h"
 
 #include <QByteArray>
+#include <QCoreApplication>
 #include <QElapsedTimer>
 #include <QRegularExpression>
 
@@ -16,6 +17,13 @@
 namespace lb {
 
 namespace {
+
+// The translation context of this file's messages. A sentence naming a stage is written out
+// for each stage: the word's case and gender change the sentence around it.
+struct Text
+{
+    Q_DECLARE_TR_FUNCTIONS(lb::Program)
+};
 
 // Reads an info log of `length` bytes (terminator included) through `read`.
 template <typename Read> QString infoLog(GLint length, Read read)
@@ -55,15 +63,20 @@ void addMessage(ProgramBuild &build, ShaderStage stage, const QString &message,
 GlShader compile(QOpenGLExtraFunctions &gl, ShaderStage stage, const QString &source,
                  ProgramBuild &build)
 {
+    const bool vertex = stage == ShaderStage::Vertex; // compiled: vertex or fragment
     if (source.trimmed().isEmpty()) {
-        addMessage(build, stage, QString("the %1 shader is empty").arg(stageName(stage)));
+        addMessage(build, stage,
+                   vertex ? Text::tr("the vertex shader is empty")
+                          : Text::tr("the fragment shader is empty"));
         return {};
     }
     if (source.size() > kMaxSourceCharacters) {
         // Mesa needs many seconds for megabytes of GLSL; a live editor would freeze.
         addMessage(build, stage,
-                   QString("the %1 shader is %2 KiB; lightbench compiles sources up to %3 KiB")
-                       .arg(stageName(stage))
+                   (vertex ? Text::tr("the vertex shader is %1 KiB; lightbench compiles sources "
+                                      "up to %2 KiB")
+                           : Text::tr("the fragment shader is %1 KiB; lightbench compiles "
+                                      "sources up to %2 KiB"))
                        .arg(source.size() / 1024)
                        .arg(kMaxSourceCharacters / 1024));
         return {};
@@ -91,8 +104,10 @@ GlShader compile(QOpenGLExtraFunctions &gl, ShaderStage stage, const QString &so
         // Some drivers fail without a word; the user still needs one.
         if (!build.hasErrors())
             addMessage(build, stage,
-                       QString("the %1 shader does not compile (the driver gave no reason)")
-                           .arg(stageName(stage)));
+                       vertex ? Text::tr("the vertex shader does not compile (the driver gave no "
+                                         "reason)")
+                              : Text::tr("the fragment shader does not compile (the driver gave "
+                                         "no reason)"));
         return {};
     }
     // Before the driver's silent optimisation draws garbage (or a GPU resets): endless
@@ -257,7 +272,8 @@ BuiltProgram buildProgram(QOpenGLExtraFunctions &gl, const QString &vertexSource
         build.diagnostics.push_back(d);
     if (status != GL_TRUE) {
         if (!build.hasErrors())
-            addMessage(build, ShaderStage::Link, "the program does not link (no reason given)");
+            addMessage(build, ShaderStage::Link,
+                       Text::tr("the program does not link (no reason given)"));
         return result;
     }
     // Two programs link but cannot draw the object; they are refused like a failed link, so
@@ -268,12 +284,13 @@ BuiltProgram buildProgram(QOpenGLExtraFunctions &gl, const QString &vertexSource
                                           gl.glGetAttribLocation(program.id(), b.name) >= 0);
     if (!readsPosition)
         addMessage(build, ShaderStage::Vertex,
-                   "no position input: the mesh reaches the shader through an attribute named "
-                   "vPosition, aVertexPosition, position or aPosition");
+                   Text::tr("no position input: the mesh reaches the shader through an "
+                            "attribute named vPosition, aVertexPosition, position or aPosition"));
     if (!writesFragmentColour(fragmentSource))
         addMessage(build, ShaderStage::Fragment,
-                   "the fragment shader writes no colour: assign gl_FragColor (no #version, "
-                   "#version 100) or declare an out vec4 (#version 300 es, 330 and later)");
+                   Text::tr("the fragment shader writes no colour: assign gl_FragColor (no "
+                            "#version, #version 100) or declare an out vec4 (#version 300 es, "
+                            "330 and later)"));
     if (build.hasErrors())
         return result;
     build.linked = true;
@@ -289,7 +306,8 @@ BuiltProgram buildBuiltIn(QOpenGLExtraFunctions &gl, const QString &name, QStrin
     const Preset fragmentPair{name, ":/shaders/" + (fragment.isEmpty() ? name : fragment)};
     BuiltProgram built = buildProgram(gl, pair.vertexSource(), fragmentPair.fragmentSource());
     if (!built.build.ok())
-        error += "built-in shader '" + name + "' failed:\n" + built.build.log();
+        //: %1 a built-in program's name, %2 its build log
+        error += Text::tr("built-in shader '%1' failed:\n%2").arg(name, built.build.log());
     return built;
 }
 
@@ -369,13 +387,14 @@ BuiltProgram buildSpecialisedBuiltIn(QOpenGLExtraFunctions &gl, const BuiltInVar
     const QString v = specialise(preset.vertexSource(), vertexSet);
     const QString f = specialise(preset.fragmentSource(), fragmentSet);
     if (std::max(vertexSet, fragmentSet) < 3) {
-        error += "built-in shader '" + preset.name +
-                 "' lacks a '#define MAX_LIGHTS', 'LIGHT_FACTORS' or 'SHOW_CHOICES' line\n";
+        error += Text::tr("built-in shader '%1' lacks a '#define MAX_LIGHTS', 'LIGHT_FACTORS' or "
+                          "'SHOW_CHOICES' line\n")
+                     .arg(preset.name);
         return {};
     }
     BuiltProgram built = buildProgram(gl, v, f);
     if (!built.build.ok())
-        error += "built-in shader '" + preset.name + "' failed:\n" + built.build.log();
+        error += Text::tr("built-in shader '%1' failed:\n%2").arg(preset.name, built.build.log());
     return built;
 }
 

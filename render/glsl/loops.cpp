@@ -1,5 +1,6 @@
 #include "loops.h"
 
+#include "loop_messages.h"
 #include "macro_expansion.h"
 
 #include <QLocale>
@@ -286,7 +287,8 @@ constexpr double kEndlessSteps = 1e7;
 struct EndlessLoop
 {
     Diagnostic warning;
-    bool certain = false; // no condition, or always true
+    QString refusal; // the program's, for a loop certain never to end (no condition, always
+                     // true, or as good as endless); empty for the others
 };
 
 std::vector<EndlessLoop> endlessLoops(const QString &source, ShaderStage stage)
@@ -296,17 +298,18 @@ std::vector<EndlessLoop> endlessLoops(const QString &source, ShaderStage stage)
     const QSet<QString> functions = definedFunctions(t);
     std::vector<EndlessLoop> out;
     QSet<std::size_t> doWhiles; // the `while` of a do-loop, read with its `do`
-    auto warn = [&](const Token &at, const QString &message, bool certain) {
+    auto warn = [&](const Token &at, const LoopTexts &texts) {
         Diagnostic d;
         d.severity = Diagnostic::Severity::Warning;
         d.stage = stage;
         d.line = at.line;
         d.column = at.column;
-        d.message = message;
+        LoopTexts said = texts;
         if (!at.macro.isEmpty()) // the user sees the use, not the macro's text
-            d.message +=
-                QString(" (the loop comes from macro %1, used on this line)").arg(at.macro);
-        out.push_back({d, certain});
+            for (QString *text : {&said.warning, &said.refusal})
+                *text = text->isEmpty() ? *text : withMacroNote(*text, at.macro);
+        d.message = said.warning;
+        out.push_back({d, said.refusal});
     };
     // One loop: its condition [cb, ce) (empty: none), what runs each time [bb, be) and the
     // for's step [sb, se).
@@ -328,25 +331,12 @@ std::vector<EndlessLoop> endlessLoops(const QString &source, ShaderStage stage)
         bool wraps = false;
         if (const std::optional<double> steps = countedSteps(t, ib, ie, cb, ce, sb, se, &wraps);
             steps && *steps >= kEndlessSteps) {
-            warn(at,
-                 QString("this loop runs %1 times for every %2%3: a frame would take seconds "
-                         "or more on any GPU (llvmpipe stops it after 65,535 steps and draws a "
-                         "wrong picture)")
-                     .arg(QLocale(QLocale::English).toString(qlonglong(*steps)))
-                     .arg(stage == ShaderStage::Vertex ? "vertex" : "fragment")
-                     .arg(wraps ? " (its counter moves away from its bound: only wrapping "
-                                  "around ends it)"
-                                : ""),
-                 true);
+            const QString count = QLocale(QLocale::English).toString(qlonglong(*steps));
+            warn(at, countedLoopTexts(count, stage, wraps));
             return;
         }
         if (cb == ce || alwaysTrue(t, cb, ce)) {
-            warn(at,
-                 QString("this loop never ends: %1 and nothing in it breaks, returns or "
-                         "discards (the driver may drop it and draw garbage, or hang)")
-                     .arg(cb == ce ? QString("it has no condition")
-                                   : QString("its condition is always true")),
-                 true);
+            warn(at, unconditionalLoopTexts(cb == ce));
             return;
         }
         if (callsAny(t, bb, be, functions) || callsAny(t, sb, se, functions) ||
@@ -362,11 +352,7 @@ std::vector<EndlessLoop> endlessLoops(const QString &source, ShaderStage stage)
         for (const QString &name : read)
             if (changed.contains(name))
                 return;
-        warn(at,
-             QString("this loop never ends once it starts: its condition reads %1, and "
-                     "nothing in the loop changes %2")
-                 .arg(read.join(", "), read.size() == 1 ? "it" : "them"),
-             false);
+        warn(at, {unchangedConditionWarning(read), {}});
     };
 
     for (std::size_t i = 0; i < t.size(); ++i) {
@@ -406,12 +392,18 @@ std::vector<Diagnostic> endlessLoopWarnings(const QString &source, ShaderStage s
     return out;
 }
 
-std::vector<Diagnostic> certainEndlessLoops(const QString &source, ShaderStage stage)
+std::vector<Diagnostic> certainEndlessLoops(const QString &source, ShaderStage stage,
+                                            bool asRefusals)
 {
     std::vector<Diagnostic> out;
     for (const EndlessLoop &l : endlessLoops(source, stage))
-        if (l.certain)
+        if (!l.refusal.isEmpty()) {
             out.push_back(l.warning);
+            if (asRefusals) {
+                out.back().severity = Diagnostic::Severity::Error;
+                out.back().message = l.refusal;
+            }
+        }
     return out;
 }
 

@@ -23,8 +23,11 @@ namespace lb {
 
 std::vector<Diagnostic> endlessLoopWarnings(const QString &source, ShaderStage stage);
 // Only the loops that are certain never to end once reached: no condition or an always-true
-// one, and no way out (not those whose condition might be false the first time).
-std::vector<Diagnostic> certainEndlessLoops(const QString &source, ShaderStage stage);
+// one, and no way out (not those whose condition might be false the first time). As warnings
+// on their lines, or `asRefusals`: as errors that say why the whole program is refused ("this
+// program never finishes a frame: the loop here ...").
+std::vector<Diagnostic> certainEndlessLoops(const QString &source, ShaderStage stage,
+                                            bool asRefusals = false);
 
 // Where the source's loops start (for, while, do), in order: where a program that draws too
 // slowly most likely spends its time.

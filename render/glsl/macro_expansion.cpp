@@ -1,5 +1,8 @@
 #include "macro_expansion.h"
 
+#include "macro_token_reader.h"
+
+#include <QCoreApplication>
 #include <QHash>
 #include <QStringList>
 
@@ -9,6 +12,10 @@ namespace lb {
 
 namespace {
 
+using macro_tokens::Pending;
+using macro_tokens::Reader;
+using macro_tokens::Use;
+
 struct Macro
 {
     QString name;
@@ -16,64 +23,6 @@ struct Macro
     QStringList parameters;
     std::vector<GlslToken> body;
     bool conditional = false; // defined inside #if...: maybe not defined at all
-};
-
-// A token on its way, with the macros that must not expand it again (a node of
-// Expander::m_hidden; -1: none: this is how `#define x x+1` ends after one step), and the use
-// in the source whose expansion made it (an index of Expander::m_uses; -1: written out). Its
-// place and macro name are filled in only when it comes out (copies of a QString cost).
-struct Pending
-{
-    GlslToken token;
-    int hidden = -1;
-    int use = -1;
-};
-
-// Where a macro is used in the source, and its name.
-struct Use
-{
-    int line, column;
-    QString macro;
-};
-
-// Tokens in order: what an expansion put back first (rescanned together with what follows,
-// as C does, so a function-like macro can take its arguments from there), then the list from
-// the position on, up to a directive line.
-class Reader
-{
-public:
-    explicit Reader(const std::vector<Pending> &list, std::size_t position = 0)
-        : m_list(list), m_position(position)
-    {
-    }
-    const Pending *peek() const
-    {
-        if (!m_back.empty())
-            return &m_back.back();
-        if (m_position < m_list.size() && m_list[m_position].token.directive < 0)
-            return &m_list[m_position];
-        return nullptr;
-    }
-    Pending take()
-    {
-        if (m_back.empty())
-            return m_list[m_position++];
-        Pending p = std::move(m_back.back());
-        m_back.pop_back();
-        return p;
-    }
-    void putBack(std::vector<Pending> &&tokens) // read next, in their order
-    {
-        for (auto it = tokens.rbegin(); it != tokens.rend(); ++it)
-            m_back.push_back(std::move(*it));
-    }
-    std::size_t position() const { return m_position; }
-    void setPosition(std::size_t position) { m_position = position; }
-
-private:
-    const std::vector<Pending> &m_list;
-    std::size_t m_position;
-    std::vector<Pending> m_back; // the next token last
 };
 
 bool isIdentifier(const QString &text)
@@ -86,6 +35,7 @@ bool isIdentifier(const QString &text)
 
 class Expander
 {
+    Q_DECLARE_TR_FUNCTIONS(lb::MacroExpansion)
 public:
     explicit Expander(ShaderStage stage) : m_stage(stage) {}
     MacroExpansion run(const QString &source);
@@ -103,7 +53,8 @@ private:
     bool hides(int node, int macro) const;
     int hideAlso(int node, int macro);
     bool spend(long long tokens);
-    void refuse(const QString &what);
+    // `message`: a whole sentence (QT_TR_NOOP) with %1 the macro used, %2 `limit`.
+    void refuse(const char *message, int limit = 0);
 
     ShaderStage m_stage;
     std::vector<Macro> m_macros;   // every definition, in order
@@ -140,8 +91,9 @@ int Expander::hideAlso(int node, int macro)
     // makes these sets as long as it: bounded, so that each look-up is.
     const int length = node < 0 ? 1 : m_hidden[std::size_t(node)].length + 1;
     if (length > kMaxMacroNesting) {
-        refuse(QString("expands through more than %1 macros, one inside another")
-                   .arg(kMaxMacroNesting));
+        refuse(QT_TR_NOOP("macro %1 expands through more than %2 macros, one inside another: "
+                          "refused before the driver sees it"),
+               kMaxMacroNesting);
         return node;
     }
     m_hidden.push_back({macro, node, length});
@@ -150,7 +102,7 @@ int Expander::hideAlso(int node, int macro)
     return made;
 }
 
-void Expander::refuse(const QString &what)
+void Expander::refuse(const char *message, int limit)
 {
     if (m_result.refusal)
         return;
@@ -160,7 +112,7 @@ void Expander::refuse(const QString &what)
     const Use &use = m_uses[std::size_t(m_use)];
     d.line = use.line;
     d.column = use.column;
-    d.message = QString("macro %1 %2: refused before the driver sees it").arg(use.macro, what);
+    d.message = limit ? tr(message).arg(use.macro).arg(limit) : tr(message).arg(use.macro);
     m_result.refusal = d;
 }
 
@@ -168,7 +120,8 @@ bool Expander::spend(long long tokens)
 {
     m_made += tokens;
     if (m_made > kMaxMacroTokens)
-        refuse("expands to more than a million tokens (a macro that doubles itself?)");
+        refuse(QT_TR_NOOP("macro %1 expands to more than a million tokens (a macro that doubles "
+                          "itself?): refused before the driver sees it"));
     return !m_result.refusal;
 }
 
@@ -181,7 +134,8 @@ void Expander::output(std::vector<Pending> &out, Pending &&p, int depth)
         p.token.macro = use.macro;
         m_characters += p.token.text.size() + 1;
         if (m_characters > kMaxMacroCharacters)
-            refuse("expands to more than 1 MB of text (a macro that doubles itself?)");
+            refuse(QT_TR_NOOP("macro %1 expands to more than 1 MB of text (a macro that doubles "
+                              "itself?): refused before the driver sees it"));
     }
     out.push_back(std::move(p));
 }
@@ -291,8 +245,9 @@ std::optional<std::vector<Pending>> Expander::replace(int index, const Pending &
             paste || (k + 1 < macro.body.size() && macro.body[k + 1].text == QLatin1String("##"));
         if (!asWritten && !expanded[a]) {
             if (depth + 1 > kMaxMacroNesting) {
-                refuse(QString("calls macros inside macro arguments more than %1 deep")
-                           .arg(kMaxMacroNesting));
+                refuse(QT_TR_NOOP("macro %1 calls macros inside macro arguments more than %2 "
+                                  "deep: refused before the driver sees it"),
+                       kMaxMacroNesting);
                 return std::vector<Pending>{};
             }
             Reader argument(arguments[a]);

@@ -1,5 +1,6 @@
 #include "presets.h"
 
+#include <QCoreApplication>
 #include <QFile>
 
 #include <utility>
@@ -22,19 +23,27 @@ QString Preset::fragmentSource() const
 {
     return readResource(resource + ".frag");
 }
+QString Preset::title() const
+{
+    return QCoreApplication::translate("lb::Presets", name.toUtf8().constData());
+}
 
 const std::vector<Preset> &presets()
 {
     static const std::vector<Preset> list{
         // The built-in programs read their specular term from uSpecularModel and their V
         // from uProjection; the slides' compute N.H (Blinn-Phong) with V = (0,0,1).
-        {"Built-in: Phong shading (per fragment)", ":/shaders/phong", false},
-        {"Built-in: Gouraud shading (per vertex)", ":/shaders/gouraud", true},
-        {"Slides: Gouraud, WebGL 1 as printed", ":/shaders/presets/slides_gouraud", true, true,
-         true},
-        {"Slides: Phong shading, WebGL 1 as printed", ":/shaders/presets/slides_phong", false, true,
-         true},
-        {"Toon (the exercise's \"like Zelda\"), GLSL 3.30", ":/shaders/presets/toon"},
+        // Marked for lupdate: title() translates them.
+        {QT_TRANSLATE_NOOP("lb::Presets", "Built-in: Phong shading (per fragment)"),
+         ":/shaders/phong", false},
+        {QT_TRANSLATE_NOOP("lb::Presets", "Built-in: Gouraud shading (per vertex)"),
+         ":/shaders/gouraud", true},
+        {QT_TRANSLATE_NOOP("lb::Presets", "Slides: Gouraud, WebGL 1 as printed"),
+         ":/shaders/presets/slides_gouraud", true, true, true},
+        {QT_TRANSLATE_NOOP("lb::Presets", "Slides: Phong shading, WebGL 1 as printed"),
+         ":/shaders/presets/slides_phong", false, true, true},
+        {QT_TRANSLATE_NOOP("lb::Presets", "Toon (the exercise's \"like Zelda\"), GLSL 3.30"),
+         ":/shaders/presets/toon"},
     };
     return list;
 }

@@ -11,7 +11,9 @@ namespace lb {
 
 struct Preset
 {
-    QString name;     // as the menu shows it
+    // The preset's key, in English: scene files and settings name the program by it (data,
+    // never translated). The menu shows title().
+    QString name;
     QString resource; // ":/shaders/NAME" without the .vert/.frag suffix
     // The course model the program computes, where its text fixes it: Gouraud (true) or
     // Phong shading, Blinn-Phong (true) or Phong specular; none where it follows a uniform
@@ -22,6 +24,8 @@ struct Preset
     bool parallelView = false;
     QString vertexSource() const;
     QString fragmentSource() const;
+    // The name as the window shows it, translated in the context lb::Presets.
+    QString title() const;
 };
 
 const std::vector<Preset> &presets();

@@ -24,27 +24,37 @@ namespace {
 
 constexpr qsizetype kStderrKept = 4096;
 
-QString signalName(int signal)
+// What the helper's death by `signal` says: a whole sentence for each signal named.
+QString crashMessage(int signal)
 {
     switch (signal) {
     case SIGSEGV:
-        return "a segmentation fault";
+        return ImportProcess::tr("the importer crashed with a segmentation fault while reading "
+                                 "this file; the workbench is fine");
     case SIGABRT:
-        return "an abort";
+        return ImportProcess::tr("the importer crashed with an abort while reading this file; the "
+                                 "workbench is fine");
     case SIGBUS:
-        return "a bus error";
+        return ImportProcess::tr("the importer crashed with a bus error while reading this file; "
+                                 "the workbench is fine");
     case SIGFPE:
-        return "an arithmetic error";
+        return ImportProcess::tr("the importer crashed with an arithmetic error while reading "
+                                 "this file; the workbench is fine");
     case SIGILL:
-        return "an illegal instruction";
+        return ImportProcess::tr("the importer crashed with an illegal instruction while reading "
+                                 "this file; the workbench is fine");
     default:
-        return QString("signal %1 (%2)").arg(signal).arg(QString::fromLocal8Bit(strsignal(signal)));
+        //: %1 a signal's number, %2 the system's name for it
+        return ImportProcess::tr("the importer crashed with signal %1 (%2) while reading this "
+                                 "file; the workbench is fine")
+            .arg(QString::number(signal), QString::fromLocal8Bit(strsignal(signal)));
     }
 }
 
 // An image file bigger than this is no texture (QImageReader's own limit on the decoded
 // image, 256 MB by default, catches the rest).
-const FileLimit kTextureFileLimit{"a texture file", 256ll << 20};
+const FileLimit kTextureFileLimit{QT_TRANSLATE_NOOP("lb::FileLimit", "a texture file"),
+                                  256ll << 20};
 
 // The diffuse texture a file names, beside the model as written or by its name alone (files
 // made on Windows carry their author's absolute paths). Like every file a mesh names, it must
@@ -68,8 +78,10 @@ QString findTexture(const QString &modelPath, QString name, QString &problem)
         }
         return candidate;
     }
-    problem = "texture '" + echoedValue(name) +
-              (outside ? "': outside the mesh's folder" : "' not found");
+    problem =
+        outside
+            ? ImportProcess::tr("texture '%1': outside the mesh's folder").arg(echoedValue(name))
+            : ImportProcess::tr("texture '%1' not found").arg(echoedValue(name));
     return {};
 }
 
@@ -111,7 +123,7 @@ ImportProcess::ImportProcess(QObject *parent) : QObject(parent)
     connect(&m_process, &QProcess::errorOccurred, this, [this](QProcess::ProcessError error) {
         if (error == QProcess::FailedToStart && m_running)
             finish({nullptr,
-                    QString("%1: cannot start the import helper '%2': %3")
+                    tr("%1: cannot start the import helper '%2': %3")
                         .arg(m_path, m_process.program(), m_process.errorString()),
                     false});
     });
@@ -177,11 +189,12 @@ void ImportProcess::start(const QString &path, const ImportLimits &limits)
     // could only end in "out of memory", after reading gigabytes.
     const QFileInfo info(path);
     QString problem = unreadableFile(
-        path, {"a mesh file", qint64(limits.meshByteCap()), "the import memory limit"});
+        path, {QT_TRANSLATE_NOOP("lb::FileLimit", "a mesh file"), qint64(limits.meshByteCap()),
+               QT_TRANSLATE_NOOP("lb::FileLimit", "the import memory limit")});
     if (problem.isEmpty() && !info.isReadable())
-        problem = m_path + ": not readable (permissions)";
+        problem = tr("%1: not readable (permissions)").arg(m_path);
     else if (problem.isEmpty() && info.size() == 0)
-        problem = m_path + ": the file is empty";
+        problem = tr("%1: the file is empty").arg(m_path);
     if (!problem.isEmpty()) {
         // Queued, so that callers always hear of the result after start() returned.
         QMetaObject::invokeMethod(
@@ -243,13 +256,12 @@ void ImportProcess::processFinished(int exitCode, QProcess::ExitStatus status)
     m_deadline.stop();
     const QString name = m_path;
     if (m_cancelled) {
-        finish({nullptr, name + ": cancelled", true});
+        finish({nullptr, tr("%1: cancelled").arg(name), true});
     } else if (m_timedOut) {
-        finish({nullptr,
-                QString("%1: gave up after %2 s (the import time limit)")
-                    .arg(name)
-                    .arg(m_limits.seconds),
-                false});
+        finish(
+            {nullptr,
+             tr("%1: gave up after %2 s (the import time limit)").arg(name).arg(m_limits.seconds),
+             false});
     } else if (status == QProcess::NormalExit && exitCode == 0 && m_reader->complete()) {
         finish({meshFile(), {}, false});
     } else {
@@ -263,23 +275,23 @@ QString ImportProcess::describeFailure(int exitCode, QProcess::ExitStatus status
         return m_reader->error();
     if (status == QProcess::CrashExit) {
         if (exitCode == SIGXCPU)
-            return QString("gave up after %1 s of CPU time (the import time limit)")
+            return tr("gave up after %1 s of CPU time (the import time limit)")
                 .arg(m_limits.seconds);
         if (exitCode == SIGKILL)
-            return "the import helper was killed (by the system, for memory?)";
-        return "the importer crashed with " + signalName(exitCode) +
-               " while reading this file; the workbench is fine";
+            return tr("the import helper was killed (by the system, for memory?)");
+        return crashMessage(exitCode);
     }
     if (exitCode == wire::kExitOutOfMemory)
-        return QString("out of memory: reading this file needs more than the import memory "
-                       "limit (%1 MB)")
+        return tr("out of memory: reading this file needs more than the import memory limit "
+                  "(%1 MB)")
             .arg(m_limits.memoryMB);
-    QString detail = QString::fromLocal8Bit(m_stderr).trimmed();
-    if (!detail.isEmpty())
-        detail = ": " + detail.split('\n').last();
-    return QString("the import helper stopped (exit code %1) before sending the whole mesh%2")
-        .arg(exitCode)
-        .arg(detail);
+    const QString detail = QString::fromLocal8Bit(m_stderr).trimmed();
+    if (detail.isEmpty())
+        return tr("the import helper stopped (exit code %1) before sending the whole mesh")
+            .arg(exitCode);
+    //: %2 the last line the helper wrote on its error output (its own words, in English)
+    return tr("the import helper stopped (exit code %1) before sending the whole mesh: %2")
+        .arg(QString::number(exitCode), detail.split('\n').last());
 }
 
 std::shared_ptr<MeshFile> ImportProcess::meshFile()
@@ -317,7 +329,8 @@ std::shared_ptr<MeshFile> ImportProcess::meshFile()
             QImageReader reader(&buffer);
             image = reader.read();
             if (image.isNull())
-                file->textureProblem = "embedded texture unreadable: " + reader.errorString();
+                file->textureProblem =
+                    tr("embedded texture unreadable: %1").arg(reader.errorString());
         } else {
             // Assimp's texels are B, G, R, A in memory: QImage's ARGB32 on this machine.
             image = QImage(reinterpret_cast<const uchar *>(bytes.constData()), int(h->width),
@@ -330,18 +343,19 @@ std::shared_ptr<MeshFile> ImportProcess::meshFile()
         if (found.isEmpty()) {
             file->textureProblem = problem;
         } else if (const QString why = unreadableFile(found, kTextureFileLimit); !why.isEmpty()) {
-            file->textureProblem = "texture " + why;
+            //: %1 why a texture file cannot be used, "PATH: reason"
+            file->textureProblem = tr("texture %1").arg(why);
         } else {
             QImageReader reader(found);
             image = reader.read();
             if (image.isNull())
                 file->textureProblem =
-                    "texture '" + echoedValue(found) + "': " + reader.errorString();
+                    tr("texture '%1': %2").arg(echoedValue(found), reader.errorString());
         }
     }
     if (!image.isNull()) {
         if (file->mesh->uvs.empty())
-            file->textureProblem = "the file has a texture but no texture coordinates";
+            file->textureProblem = tr("the file has a texture but no texture coordinates");
         else
             file->texture = std::make_shared<const Texture>(Texture::fromImage(image));
     }

@@ -1,7 +1,6 @@
 #include "object_loader.h"
 
 #include <QFileInfo>
-#include <QLocale>
 
 #include <algorithm>
 #include <tuple>
@@ -177,21 +176,9 @@ QString ObjectLoader::summary() const
     if (!drawn)
         return {};
     const MeshFile *loaded = file();
-    const QLocale locale;
     const QString name = loaded ? QFileInfo(loaded->path).fileName()
-                                : toName(m_document->scene().selectedObject().shape);
-    QString s = tr("%1: %2 vertices, %3 triangles")
-                    .arg(name, locale.toString(qulonglong(drawn->vertexCount())),
-                         locale.toString(qulonglong(drawn->triangleCount())));
-    if (loaded) {
-        s += tr(", loaded in %1 s").arg(loaded->seconds, 0, 'f', 2);
-        if (!loaded->hasNormals())
-            s += loaded->nonFiniteNormals > 0 ? tr(", normals generated") // a remark says why
-                                              : tr(", normals generated (the file has none)");
-        if (const QStringList remarks = loaded->remarks(); !remarks.isEmpty())
-            s += " (" + remarks.join("; ") + ")";
-    }
-    return s;
+                                : shapeLabel(m_document->scene().selectedObject().shape);
+    return meshSummary(name, drawn->vertexCount(), drawn->triangleCount(), loaded);
 }
 
 void ObjectLoader::open(const QString &path)

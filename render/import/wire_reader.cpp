@@ -47,7 +47,7 @@ bool WireReader::feed(const char *data, qint64 size)
         case State::Failed:
             return false;
         case State::Done:
-            return fail("the import stream goes on after its end");
+            return fail(tr("the import stream goes on after its end"));
         case State::Magic:
         case State::Header:
         case State::MeshHeader: {
@@ -62,7 +62,7 @@ bool WireReader::feed(const char *data, qint64 size)
                 break;
             if (m_state == State::Magic) {
                 if (std::memcmp(m_pending.constData(), wire::kMagic, sizeof wire::kMagic) != 0)
-                    return fail("the import helper wrote something that is not a mesh stream");
+                    return fail(tr("the import helper wrote something that is not a mesh stream"));
                 m_pending.clear();
                 m_state = State::Header;
             } else if (m_state == State::Header) {
@@ -72,17 +72,17 @@ bool WireReader::feed(const char *data, qint64 size)
                 const auto type = wire::Record(m_header.type);
                 if (type == wire::Record::Mesh) {
                     if (m_haveMesh)
-                        return fail("the import stream holds two meshes");
+                        return fail(tr("the import stream holds two meshes"));
                     if (m_header.size < sizeof(wire::MeshHeader) ||
                         m_header.size > wire::kMaxRecordBytes)
-                        return fail("the import stream announces a mesh of a bad size");
+                        return fail(tr("the import stream announces a mesh of a bad size"));
                     m_state = State::MeshHeader;
                     break;
                 }
                 const std::uint64_t limit =
                     type == wire::Record::TextureData ? kMaxTextureRecord : kMaxSmallRecord;
                 if (m_header.size > limit)
-                    return fail("the import stream holds a record too large to be right");
+                    return fail(tr("the import stream holds a record too large to be right"));
                 m_state = State::Payload;
                 if (m_payloadLeft == 0 && !finishRecord())
                     return false;
@@ -109,7 +109,7 @@ bool WireReader::feed(const char *data, qint64 size)
             try {
                 std::memcpy(t.grow(m_targetOffset + take) + m_targetOffset, data, take);
             } catch (const std::bad_alloc &) {
-                return fail(QString("not enough memory for the mesh (%1 MB received)")
+                return fail(tr("not enough memory for the mesh (%1 MB received)")
                                 .arg(m_meshReceived >> 20));
             }
             data += take;
@@ -121,16 +121,18 @@ bool WireReader::feed(const char *data, qint64 size)
                 ++m_target;
             }
             if (onProgress && (m_target == m_targets.size() || (m_meshReceived & 0xffffff) < take))
-                onProgress(0.85 + 0.15 * double(m_meshReceived) / double(m_meshBytes), "receiving");
+                onProgress(0.85 + 0.15 * double(m_meshReceived) / double(m_meshBytes),
+                           //: a stage of loading a mesh file, shown beside its progress
+                           tr("receiving"));
             if (m_target == m_targets.size()) {
                 for (const std::uint32_t i : m_mesh.indices)
                     if (i >= m_mesh.positions.size())
-                        return fail("the import stream holds an index past the last vertex");
+                        return fail(tr("the import stream holds an index past the last vertex"));
                 // The helper drops what is not finite; NaN here would reach the bounds, the
                 // probe and the driver.
                 for (const auto *array : {&m_mesh.positions, &m_mesh.normals})
                     if (!std::all_of(array->begin(), array->end(), finite))
-                        return fail("the import stream holds coordinates that are not finite");
+                        return fail(tr("the import stream holds coordinates that are not finite"));
                 m_targets.clear();
                 m_haveMesh = true;
                 m_state = State::Header;
@@ -152,10 +154,10 @@ bool WireReader::startMesh()
     if (h.vertexCount == 0 || h.vertexCount > wire::kMaxVertices || h.indexCount == 0 ||
         h.indexCount % 3 != 0 || h.indexCount > wire::kMaxRecordBytes / 4 ||
         h.vertexCount * perVertex + h.indexCount * 4 + sizeof h != m_header.size)
-        return fail("the import stream announces a mesh whose sizes don't add up");
+        return fail(tr("the import stream announces a mesh whose sizes don't add up"));
     if (m_header.size > m_maxMeshBytes)
-        return fail(QString("the import stream announces a mesh of %1 MB, more than the helper "
-                            "may use (%2 MB)")
+        return fail(tr("the import stream announces a mesh of %1 MB, more than the helper "
+                       "may use (%2 MB)")
                         .arg(m_header.size >> 20)
                         .arg(m_maxMeshBytes >> 20));
     // Memory is used as the bytes arrive, never for what is only announced.
@@ -194,7 +196,7 @@ bool WireReader::finishRecord()
     switch (wire::Record(m_header.type)) {
     case wire::Record::Progress:
         if (payload.size() < qsizetype(sizeof(float)))
-            return fail("the import stream holds a short progress record");
+            return fail(tr("the import stream holds a short progress record"));
         if (onProgress)
             onProgress(std::clamp(double(read<float>(payload)), 0.0, 1.0),
                        QString::fromUtf8(payload.mid(sizeof(float))));
@@ -202,7 +204,7 @@ bool WireReader::finishRecord()
     case wire::Record::Error:
         m_error = QString::fromUtf8(payload).trimmed();
         if (m_error.isEmpty())
-            m_error = "the import failed without saying why";
+            m_error = tr("the import failed without saying why");
         m_state = State::Failed;
         return false;
     case wire::Record::Info:
@@ -214,7 +216,7 @@ bool WireReader::finishRecord()
         return true;
     case wire::Record::Material:
         if (payload.size() != qsizetype(sizeof(wire::MaterialRecord)))
-            return fail("the import stream holds a material of the wrong size");
+            return fail(tr("the import stream holds a material of the wrong size"));
         m_material = read<wire::MaterialRecord>(payload);
         return true;
     case wire::Record::TexturePath:
@@ -226,24 +228,24 @@ bool WireReader::finishRecord()
         return true;
     case wire::Record::TextureData: {
         if (payload.size() < qsizetype(sizeof(wire::TextureHeader)))
-            return fail("the import stream holds a short texture");
+            return fail(tr("the import stream holds a short texture"));
         const auto h = read<wire::TextureHeader>(payload);
         const std::uint64_t bytes = std::uint64_t(payload.size()) - sizeof h;
         if ((h.width || h.height) && std::uint64_t(h.width) * h.height * 4 != bytes)
-            return fail("the import stream holds a texture whose size doesn't add up");
+            return fail(tr("the import stream holds a texture whose size doesn't add up"));
         m_textureHeader = h;
         m_textureBytes = payload.mid(sizeof h);
         return true;
     }
     case wire::Record::End:
         if (!m_haveMesh)
-            return fail("the import stream ended without a mesh");
+            return fail(tr("the import stream ended without a mesh"));
         m_state = State::Done;
         return true;
     case wire::Record::Mesh:
         break;
     }
-    return fail(QString("the import stream holds a record of unknown type %1").arg(m_header.type));
+    return fail(tr("the import stream holds a record of unknown type %1").arg(m_header.type));
 }
 
 } // namespace lb

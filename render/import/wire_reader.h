@@ -7,6 +7,7 @@
 #include "wire.h"
 
 #include <QByteArray>
+#include <QCoreApplication>
 #include <QMap>
 #include <QString>
 #include <QStringList>
@@ -20,6 +21,8 @@ struct FileMaterial;
 
 class WireReader
 {
+    Q_DECLARE_TR_FUNCTIONS(lb::WireReader)
+
 public:
     // Called for each Progress record and as the mesh arrives: fraction in [0, 1], stage.
     std::function<void(double, const QString &)> onProgress;

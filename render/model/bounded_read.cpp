@@ -3,6 +3,7 @@
 #include "message_text.h"
 #include "safe_write.h"
 
+#include <QCoreApplication>
 #include <QFile>
 #include <QFileInfo>
 
@@ -19,19 +20,32 @@ QString shown(const QString &path)
     return echoedValue(path, 300);
 }
 
+// The translation context of this file's messages.
+struct Text
+{
+    Q_DECLARE_TR_FUNCTIONS(lb::BoundedRead)
+};
+
+// A kind of file, or what is saved, as FileLimit marks it.
+QString noun(const char *phrase)
+{
+    return QCoreApplication::translate("lb::FileLimit", phrase);
+}
+
 } // namespace
 
 QString missingFileReason(const QString &path)
 {
     struct stat st;
     if (::stat(QFile::encodeName(path).constData(), &st) == 0)
-        return "no such file"; // it came meanwhile; say what was seen
+        return Text::tr("no such file"); // it came meanwhile; say what was seen
     if (errno == ELOOP)
-        return "a loop of symbolic links";
+        return Text::tr("a loop of symbolic links");
     if (errno == ENOENT && QFileInfo(path).isSymLink())
-        return QString("a symbolic link to %1, which does not exist")
+        return Text::tr("a symbolic link to %1, which does not exist")
             .arg(shown(QFileInfo(path).symLinkTarget()));
-    return errno == ENOENT ? QString("no such file") : QString::fromLocal8Bit(std::strerror(errno));
+    return errno == ENOENT ? Text::tr("no such file")
+                           : QString::fromLocal8Bit(std::strerror(errno));
 }
 
 QString sizeForMessage(qint64 bytes)
@@ -39,13 +53,14 @@ QString sizeForMessage(qint64 bytes)
     // Rounded up: a file one byte over a 1024 KiB limit reads as 1025 KiB, not as the limit.
     const bool mega = bytes >= 10ll << 20;
     const qint64 unit = mega ? 1ll << 20 : 1ll << 10;
-    return QString::number((bytes + unit - 1) / unit) + (mega ? " MB" : " KiB");
+    return (mega ? Text::tr("%1 MB") : Text::tr("%1 KiB")).arg((bytes + unit - 1) / unit);
 }
 
 static QString limitText(const FileLimit &limit)
 {
     const QString size = sizeForMessage(limit.bytes);
-    return limit.why ? size + ", " + QString::fromLatin1(limit.why) : size;
+    //: a file's size limit (%1, "64 MB") and where it comes from (%2, "the import memory limit")
+    return limit.why ? Text::tr("%1, %2").arg(size, noun(limit.why)) : size;
 }
 
 QString unreadableFile(const QString &path, const FileLimit &limit)
@@ -54,11 +69,11 @@ QString unreadableFile(const QString &path, const FileLimit &limit)
     if (!info.exists())
         return QString("%1: %2").arg(shown(path), missingFileReason(path));
     if (!info.isFile())
-        return QString("%1: not a regular file (a folder, a device or a pipe)").arg(shown(path));
+        return Text::tr("%1: not a regular file (a folder, a device or a pipe)").arg(shown(path));
     if (info.size() > limit.bytes)
-        return QString("%1: %2 is more than %3 may be (%4)")
-            .arg(shown(path), sizeForMessage(info.size()), QString::fromLatin1(limit.kind),
-                 limitText(limit));
+        //: %1 a path, %2 its size, %3 a kind of file ("a scene file"), %4 the limit ("64 MB")
+        return Text::tr("%1: %2 is more than %3 may be (%4)")
+            .arg(shown(path), sizeForMessage(info.size()), noun(limit.kind), limitText(limit));
     return {};
 }
 
@@ -76,8 +91,9 @@ BoundedRead readBounded(const QString &path, const FileLimit &limit)
     r.bytes = f.read(limit.bytes + 1);
     if (r.bytes.size() > limit.bytes) { // it grew since the check
         r.bytes.clear();
-        r.error = QString("%1: more than %2 may be (%3)")
-                      .arg(shown(path), QString::fromLatin1(limit.kind), limitText(limit));
+        //: %1 a path, %2 a kind of file ("a scene file"), %3 the limit ("64 MB")
+        r.error = Text::tr("%1: more than %2 may be (%3)")
+                      .arg(shown(path), noun(limit.kind), limitText(limit));
     }
     return r;
 }
@@ -86,9 +102,12 @@ QString writeWithinLimit(const QString &path, const QByteArray &bytes, const cha
                          const FileLimit &limit)
 {
     if (bytes.size() > limit.bytes)
-        return QString("%1: not saved: %2 would take %3, more than %4 may be (%5), so it could "
-                       "not be opened again")
-            .arg(echoedValue(path, 300), what, sizeForMessage(bytes.size()), limit.kind,
+        //: %1 a path, %2 what is saved ("the scene"), %3 its size, %4 a kind of file ("a scene
+        //: file"), %5 the limit ("64 MB")
+        return Text::tr(
+                   "%1: not saved: %2 would take %3, more than %4 may be (%5), so it could not be "
+                   "opened again")
+            .arg(echoedValue(path, 300), noun(what), sizeForMessage(bytes.size()), noun(limit.kind),
                  sizeForMessage(limit.bytes));
     return writeFileSafely(path, bytes);
 }

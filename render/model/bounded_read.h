@@ -9,6 +9,8 @@
 
 namespace lb {
 
+// `kind` and `why` are English noun phrases marked where they are written with
+// QT_TRANSLATE_NOOP("lb::FileLimit", ...): the messages translate them in that context.
 struct FileLimit
 {
     const char *kind; // "a shader", "a scene file", ...: "2048 KiB is more than a shader may be"
@@ -30,7 +32,8 @@ BoundedRead readBounded(const QString &path, const FileLimit &limit);
 
 // Writes `bytes` safely (safe_write.h), unless they are more than `limit` allows, which
 // readBounded() would refuse: "PATH: not saved: the scene would take 70 MB, more than a scene
-// file may be (64 MB), so it could not be opened again". `what`: "the scene", "the lesson".
+// file may be (64 MB), so it could not be opened again". `what`: "the scene", "the lesson",
+// marked as `kind` is.
 QString writeWithinLimit(const QString &path, const QByteArray &bytes, const char *what,
                          const FileLimit &limit);
 // Why `path` is not there: "no such file", "a loop of symbolic links", "a symbolic link to

@@ -1,5 +1,6 @@
 #include "exercise.h"
 
+#include <QCoreApplication>
 #include <QJsonArray>
 
 #include <glm/geometric.hpp>
@@ -12,6 +13,12 @@
 namespace lb {
 
 namespace {
+
+// The translation context of this file's messages.
+struct Text
+{
+    Q_DECLARE_TR_FUNCTIONS(lb::Exercise)
+};
 
 constexpr std::array<const char *, 8> kVaryNames{"light",    "lightW", "lightFrame", "lightColour",
                                                  "material", "camera", "projection", "scale"};
@@ -109,10 +116,13 @@ ExerciseRead readExerciseSection(const QJsonValue &json, QStringList *ignored)
     ExerciseRead read;
     const auto ignore = [&](const QString &path, const QString &why) {
         if (ignored)
-            ignored->append(QString("exercise.%1 (%2)").arg(path, why));
+            //: a field of an exercise as the file spells it (%1, "exercise.grading.cases") and
+            //: why it was not used (%2)
+            ignored->append(Text::tr("%1 (%2)").arg("exercise." + path, why));
     };
+    // The sections' names in the errors are the file's words: arguments, never translated.
     if (!json.isObject()) {
-        read.error = "exercise: not an object";
+        read.error = Text::tr("%1: not an object").arg("exercise");
         return read;
     }
     const QJsonObject o = json.toObject();
@@ -122,14 +132,15 @@ ExerciseRead readExerciseSection(const QJsonValue &json, QStringList *ignored)
     const QJsonObject known = exerciseJson(e);
     for (auto it = o.begin(); it != o.end(); ++it)
         if (!known.contains(it.key()))
-            ignore(it.key(), "unknown field");
+            ignore(it.key(), Text::tr("unknown field"));
 
     const QJsonObject ref = o.value("reference").toObject();
     if (ref.contains("vertex") || ref.contains("fragment")) {
         e.reference.vertex = text(ref, "vertex");
         e.reference.fragment = text(ref, "fragment");
         if (e.reference.vertex.trimmed().isEmpty() || e.reference.fragment.trimmed().isEmpty()) {
-            read.error = "exercise.reference: needs both a vertex and a fragment shader";
+            read.error =
+                Text::tr("%1: needs both a vertex and a fragment shader").arg("exercise.reference");
             return read;
         }
     } else if (ref.contains("builtIn")) {
@@ -137,14 +148,17 @@ ExerciseRead readExerciseSection(const QJsonValue &json, QStringList *ignored)
         if (const auto s = parseShading(text(b, "shading")))
             e.reference.shading = *s;
         else if (b.contains("shading"))
-            ignore("reference.builtIn.shading", "not " + shadingNames().join(", "));
+            //: %1 the words a file may give, as it spells them ("phong, gouraud, flat")
+            ignore("reference.builtIn.shading", Text::tr("not %1").arg(shadingNames().join(", ")));
         if (const auto s = parseSpecularModel(text(b, "specular")))
             e.reference.specular = *s;
         else if (b.contains("specular"))
-            ignore("reference.builtIn.specular", "not " + specularModelNames().join(", "));
+            ignore("reference.builtIn.specular",
+                   Text::tr("not %1").arg(specularModelNames().join(", ")));
     } else {
-        read.error = "exercise: no reference program (\"reference\": {\"vertex\": ..., "
-                     "\"fragment\": ...} or {\"builtIn\": {...}})";
+        read.error = Text::tr("%1: no reference program (\"reference\": {\"vertex\": ..., "
+                              "\"fragment\": ...} or {\"builtIn\": {...}})")
+                         .arg("exercise");
         return read;
     }
 
@@ -155,12 +169,12 @@ ExerciseRead readExerciseSection(const QJsonValue &json, QStringList *ignored)
         if (v.isUndefined())
             return;
         if (!v.isDouble() || !std::isfinite(v.toDouble())) {
-            ignore(QString("grading.%1").arg(key), "not a number");
+            ignore(QString("grading.%1").arg(key), Text::tr("not a number"));
             return;
         }
         const double d = v.toDouble();
         if (d < lo || d > hi)
-            ignore(QString("grading.%1").arg(key), "out of range, clamped");
+            ignore(QString("grading.%1").arg(key), Text::tr("out of range, clamped"));
         value = std::remove_reference_t<decltype(value)>(std::clamp(d, lo, hi));
     };
     number("cases", 1, kMaxCases, spec.cases);
@@ -176,16 +190,16 @@ ExerciseRead readExerciseSection(const QJsonValue &json, QStringList *ignored)
                               std::clamp(a[1].toInt(), 16, kMaxSide));
         else
             ignore("grading.size",
-                   QString("not [width, height] in whole pixels, 16 to %1").arg(kMaxSide));
+                   Text::tr("not [width, height] in whole pixels, 16 to %1").arg(kMaxSide));
     }
     if (g.contains("vary") && (!g.value("vary").isArray() || g.value("vary").toArray().isEmpty())) {
-        ignore("grading.vary", "not a list of parameters; all of them vary");
+        ignore("grading.vary", Text::tr("not a list of parameters; all of them vary"));
     } else if (g.contains("vary")) {
         spec.vary = 0;
         for (const QJsonValue &v : g.value("vary").toArray()) {
             const int i = varyNames().indexOf(v.toString());
             if (i < 0)
-                ignore("grading.vary", QString("no such parameter '%1'; those are %2")
+                ignore("grading.vary", Text::tr("no such parameter '%1'; those are %2")
                                            .arg(v.toString().left(40), varyNames().join(", ")));
             else
                 spec.vary |= 1u << i;

@@ -3,6 +3,7 @@
 #include "compare.h"
 #include "message_text.h"
 
+#include <QCoreApplication>
 #include <QPainter>
 
 #include <algorithm>
@@ -11,6 +12,12 @@
 namespace lb {
 
 namespace {
+
+// The translation context of the sheet's text.
+struct Text
+{
+    Q_DECLARE_TR_FUNCTIONS(lb::Grading)
+};
 
 int channelDifference(QRgb a, QRgb b)
 {
@@ -65,6 +72,26 @@ QImage differenceHeatMap(const QImage &student, const QImage &reference)
     return heat;
 }
 
+QString gradingSheetTitle(const QString &title, const CaseResult &result, int caseIndex)
+{
+    // All at once: a name holding "%2" is not filled in by the arguments after it.
+    const QString name = escapedName(title); // a submission's name: one line, controls shown
+    const QString index = QString::number(caseIndex), largest = QString::number(result.largest);
+    const QString share = QString::number(100.0 * result.shareWithin, 'f', 1);
+    const QString compared = QString::number(result.compared);
+    //: the outcome of a case, at the end of a grading sheet's title
+    const QString outcome = result.passed ? Text::tr("passed") : Text::tr("failed");
+    if (result.at.x() < 0) // nothing differs
+        return Text::tr("%1 - case %2: largest difference %3/255, %4% of %5 pixels within "
+                        "tolerance, %6")
+            .arg(name, index, largest, share, compared, outcome);
+    //: %4, %5: the pixel that differs most
+    return Text::tr("%1 - case %2: largest difference %3/255 at (%4, %5), %6% of %7 pixels "
+                    "within tolerance, %8")
+        .arg(name, index, largest, QString::number(result.at.x()), QString::number(result.at.y()),
+             share, compared, outcome);
+}
+
 QImage gradingSheet(const QString &title, const QImage &student, const QImage &reference,
                     const CaseResult &result, int caseIndex)
 {
@@ -80,25 +107,15 @@ QImage gradingSheet(const QString &title, const QImage &student, const QImage &r
     p.setFont(font);
     p.setPen(Qt::black);
     p.drawText(QRect(margin, margin, sheet.width() - 2 * margin, titleHeight),
-               Qt::AlignLeft | Qt::AlignVCenter,
-               QString("%1 - case %2: largest difference %3/255%4, %5% of %6 pixels within "
-                       "tolerance, %7")
-                   .arg(escapedName(title)) // a submission's name: one line, controls shown
-                   .arg(caseIndex)
-                   .arg(result.largest)
-                   .arg(result.at.x() >= 0
-                            ? QString(" at (%1, %2)").arg(result.at.x()).arg(result.at.y())
-                            : QString())
-                   .arg(100.0 * result.shareWithin, 0, 'f', 1)
-                   .arg(result.compared)
-                   .arg(result.passed ? "passed" : "failed"));
+               Qt::AlignLeft | Qt::AlignVCenter, gradingSheetTitle(title, result, caseIndex));
     const QImage frames[3] = {student, reference, differenceHeatMap(student, reference)};
-    const char *captions[3] = {"student", "reference", "|student - reference| (white: 64/255)"};
+    //: the captions under a grading sheet's three frames
+    const QString captions[3] = {Text::tr("student"), Text::tr("reference"),
+                                 Text::tr("|student - reference| (white: 64/255)")};
     for (int i = 0; i < 3; ++i) {
         const QPoint at(margin + i * (w + margin), margin + titleHeight);
         p.drawImage(at, frames[i]);
-        p.drawText(QRect(at.x(), at.y() + h, w, captionHeight), Qt::AlignCenter,
-                   QLatin1String(captions[i]));
+        p.drawText(QRect(at.x(), at.y() + h, w, captionHeight), Qt::AlignCenter, captions[i]);
     }
     if (result.at.x() >= 0) { // the worst pixel, ringed on each frame
         p.setPen(QPen(QColor(230, 40, 40), 2));

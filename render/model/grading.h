@@ -26,6 +26,10 @@ CaseResult measureCase(const QImage &student, const QImage &reference, QRgb back
 // |student - reference| per pixel, black at 0 to white at 64/255 (the difference view's scale).
 QImage differenceHeatMap(const QImage &student, const QImage &reference);
 
+// The sheet's title: "alice - case 3: largest difference 12/255 at (40, 17), 98.5% of 5120
+// pixels within tolerance, failed".
+QString gradingSheetTitle(const QString &title, const CaseResult &result, int caseIndex);
+
 // The three frames side by side with a line of text under each and a title above.
 QImage gradingSheet(const QString &title, const QImage &student, const QImage &reference,
                     const CaseResult &result, int caseIndex);

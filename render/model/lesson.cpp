@@ -3,6 +3,7 @@
 #include "bounded_read.h"
 #include "message_text.h"
 
+#include <QCoreApplication>
 #include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -14,7 +15,21 @@ namespace lb {
 
 namespace {
 
+// The translation context of this file's messages.
+struct Text
+{
+    Q_DECLARE_TR_FUNCTIONS(lb::Lesson)
+};
+
 const char *kFormat = "lightbench-lesson";
+
+// One entry of `ignored`: where, as the file spells it ("step 2: caption.de"; data, never
+// translated but for "step"), and why it was not used.
+void note(QStringList &ignored, const QString &where, const QString &why)
+{
+    //: a field of a lesson file (%1, "step 2: caption.de") and why it was not used (%2)
+    ignored << Text::tr("%1 (%2)").arg(where, why);
+}
 
 // "a title", "a caption": a string (English) or {"en": ..., "pt": ...}. What is not text, or
 // too long to be a caption, is named in `ignored` and left out.
@@ -24,12 +39,12 @@ LocalizedText readText(const QJsonValue &value, const QString &where, QStringLis
     const auto take = [&](const QString &language, const QJsonValue &v) {
         const QString at = language.isEmpty() ? where : QString("%1.%2").arg(where, language);
         if (!v.isString())
-            ignored << QString("%1 (not text)").arg(at);
+            note(ignored, at, Text::tr("not text"));
         else if (v.toString().size() > kMaxLessonTextCharacters)
-            ignored << QString("%1 (%2 characters; at most %3)")
-                           .arg(at)
-                           .arg(v.toString().size())
-                           .arg(kMaxLessonTextCharacters);
+            note(ignored, at,
+                 Text::tr("%1 characters; at most %2")
+                     .arg(v.toString().size())
+                     .arg(kMaxLessonTextCharacters));
         else
             text[language.isEmpty() ? QString("en") : language] = v.toString();
     };
@@ -43,7 +58,8 @@ LocalizedText readText(const QJsonValue &value, const QString &where, QStringLis
     for (auto it = o.begin(); it != o.end(); ++it) {
         // A language code, as QLocale names it: "pt", "de", "pt_BR".
         if (it.key().size() < 2 || it.key().size() > 8)
-            ignored << QString("%1.%2 (not a language code)").arg(where, echoedValue(it.key(), 40));
+            note(ignored, QString("%1.%2").arg(where, echoedValue(it.key(), 40)),
+                 Text::tr("not a language code"));
         else
             take(it.key(), it.value());
     }
@@ -70,11 +86,12 @@ QString readChoice(const QJsonValue &value, const QStringList &allowed, const QS
         return {};
     if (value.isString() && allowed.contains(value.toString()))
         return value.toString();
-    ignored << QString("%1 (%2 is not one of %3)")
-                   .arg(where,
-                        value.isString() ? "\"" + echoedValue(value.toString(), 60) + "\""
-                                         : QString("a value that is not text"),
-                        allowed.join(", "));
+    //: %1 a word the file gave, %2 the words allowed (as files spell them)
+    note(ignored, where,
+         value.isString()
+             ? Text::tr("\"%1\" is not one of %2")
+                   .arg(echoedValue(value.toString(), 60), allowed.join(", "))
+             : Text::tr("a value that is not text is not one of %1").arg(allowed.join(", ")));
     return {};
 }
 
@@ -103,8 +120,9 @@ void readStepScene(const QJsonValue &scene, LessonStep &step, const QString &whe
         // take 500 times the memory a lesson may.
         const qint64 size = QFileInfo(path).size();
         if (size > context.budget) {
-            step.error = QString("%1: the scene file %2 (%3) is past what is left of the "
-                                 "lesson's limit (%4 for the lesson and its scene files)")
+            //: %1 the step ("step 3"), %2 a path, %3 its size, %4 the limit
+            step.error = Text::tr("%1: the scene file %2 (%3) is past what is left of the "
+                                  "lesson's limit (%4 for the lesson and its scene files)")
                              .arg(where, echoedValue(scene.toString(), 200), sizeForMessage(size),
                                   sizeForMessage(kMaxLessonBytes));
             return;
@@ -112,8 +130,8 @@ void readStepScene(const QJsonValue &scene, LessonStep &step, const QString &whe
         sceneRead = readSceneFile(path);
         context.budget -= std::max<qint64>(size, 0);
     } else {
-        step.error = QString("%1: no scene (\"scene\" must be a scene object or the name of a "
-                             "scene file)")
+        step.error = Text::tr("%1: no scene (\"scene\" must be a scene object or the name of a "
+                              "scene file)")
                          .arg(where);
         return;
     }
@@ -199,7 +217,8 @@ LessonRead parseLesson(const QByteArray &bytes, const QDir &dir, const QString &
     QJsonParseError parseError;
     const QJsonDocument document = QJsonDocument::fromJson(bytes, &parseError);
     if (parseError.error != QJsonParseError::NoError) {
-        read.error = QString("%1: not a lesson file: %2 at byte %3")
+        //: %1 a path, %2 Qt's JSON parser's reason
+        read.error = Text::tr("%1: not a lesson file: %2 at byte %3")
                          .arg(name, parseError.errorString())
                          .arg(parseError.offset);
         return read;
@@ -209,28 +228,27 @@ LessonRead parseLesson(const QByteArray &bytes, const QDir &dir, const QString &
         // A scene file is the likeliest mistake: say so rather than "no steps".
         read.error =
             root["format"] == QJsonValue("lightbench-scene")
-                ? QString("%1: a scene file, not a lesson (open it with File > Open Scene)")
+                ? Text::tr("%1: a scene file, not a lesson (open it with File > Open Scene)")
                       .arg(name)
-                : QString("%1: not a lesson file (\"format\" is not \"%2\")").arg(name, kFormat);
+                : Text::tr("%1: not a lesson file (\"format\" is not \"%2\")").arg(name, kFormat);
         return read;
     }
     const QJsonValue version = root["version"];
     if (!version.isDouble() || version.toDouble() < 1)
-        read.ignored
-            << QString("version (missing or not a number; read as %1)").arg(kLessonFileVersion);
+        note(read.ignored, "version",
+             Text::tr("missing or not a number; read as %1").arg(kLessonFileVersion));
     else if (version.toDouble() > kLessonFileVersion)
-        read.ignored << QString("version %1 (newer than this lightbench's %2: what it does not "
-                                "know is left out)")
-                            .arg(version.toDouble())
-                            .arg(kLessonFileVersion);
+        note(read.ignored, QString("version %1").arg(version.toDouble()),
+             Text::tr("newer than this lightbench's %1: what it does not know is left out")
+                 .arg(kLessonFileVersion));
     const QJsonValue steps = root["steps"];
     if (!steps.isArray() || steps.toArray().isEmpty()) {
         read.error =
-            QString("%1: the lesson has no steps (\"steps\" must be a list of steps)").arg(name);
+            Text::tr("%1: the lesson has no steps (\"steps\" must be a list of steps)").arg(name);
         return read;
     }
     if (steps.toArray().size() > kMaxLessonSteps) {
-        read.error = QString("%1: %2 steps; a lesson may have at most %3")
+        read.error = Text::tr("%1: %2 steps; a lesson may have at most %3")
                          .arg(name)
                          .arg(steps.toArray().size())
                          .arg(kMaxLessonSteps);
@@ -241,10 +259,11 @@ LessonRead parseLesson(const QByteArray &bytes, const QDir &dir, const QString &
     StepContext context{dir, budget, read};
     const QJsonArray list = steps.toArray();
     for (int i = 0; i < int(list.size()); ++i) {
-        const QString where = QString("step %1").arg(i + 1);
+        //: where in a lesson file a message is about: "step 3: title (not text)"
+        const QString where = Text::tr("step %1").arg(i + 1);
         LessonStep step;
         if (!list[i].isObject()) {
-            step.error = QString("%1: not an object").arg(where);
+            step.error = Text::tr("%1: not an object").arg(where);
         } else {
             const QJsonObject s = list[i].toObject();
             step.title = readText(s["title"], where + ": title", read.ignored);
@@ -264,7 +283,8 @@ LessonRead parseLesson(const QByteArray &bytes, const QDir &dir, const QString &
 
 LessonRead readLessonFile(const QString &path)
 {
-    const BoundedRead bytes = readBounded(path, {"a lesson file", kMaxLessonBytes});
+    const BoundedRead bytes =
+        readBounded(path, {QT_TRANSLATE_NOOP("lb::FileLimit", "a lesson file"), kMaxLessonBytes});
     if (!bytes.error.isEmpty()) {
         LessonRead read;
         read.error = bytes.error;
@@ -305,7 +325,8 @@ QString writeLessonFile(const QString &path, const Lesson &lesson)
 {
     // Never a file that readLessonFile() would refuse: one limit for both.
     return writeWithinLimit(path, lessonFileBytes(lesson, QFileInfo(path).absoluteDir()),
-                            "the lesson", {"a lesson file", kMaxLessonBytes});
+                            QT_TRANSLATE_NOOP("lb::FileLimit", "the lesson"),
+                            {QT_TRANSLATE_NOOP("lb::FileLimit", "a lesson file"), kMaxLessonBytes});
 }
 
 } // namespace lb

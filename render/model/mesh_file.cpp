@@ -2,11 +2,22 @@
 
 #include "scene.h"
 
+#include <QCoreApplication>
+#include <QLocale>
+
 #include <glm/common.hpp>
 
 #include <algorithm>
 
 namespace lb {
+
+namespace {
+// The translation context of this file's messages.
+struct Text
+{
+    Q_DECLARE_TR_FUNCTIONS(lb::MeshFile)
+};
+} // namespace
 
 Material adoptMaterial(const Material &current, const FileMaterial &file)
 {
@@ -27,19 +38,43 @@ QStringList MeshFile::remarks() const
 {
     QStringList r;
     if (skippedFaces > 0)
-        r << QString("%1 points, lines or broken faces skipped").arg(skippedFaces);
+        r << Text::tr("%1 points, lines or broken faces skipped").arg(skippedFaces);
     if (nonFiniteVertices > 0)
-        r << QString("%1 vertices with non-finite coordinates dropped, with the %2 triangles "
-                     "using them")
+        r << Text::tr("%1 vertices with non-finite coordinates dropped, with the %2 triangles "
+                      "using them")
                  .arg(nonFiniteVertices)
                  .arg(droppedTriangles);
     if (nonFiniteNormals > 0)
-        r << QString("%1 normals with non-finite coordinates: the file's normals not used")
+        r << Text::tr("%1 normals with non-finite coordinates: the file's normals not used")
                  .arg(nonFiniteNormals);
     r << sideFileProblems;
     if (!textureProblem.isEmpty())
         r << textureProblem;
     return r;
+}
+
+QString meshSummary(const QString &name, qulonglong vertices, qulonglong triangles,
+                    const MeshFile *loaded)
+{
+    const QLocale locale;
+    const QString v = locale.toString(vertices), t = locale.toString(triangles);
+    if (!loaded)
+        return Text::tr("%1: %2 vertices, %3 triangles").arg(name, v, t);
+    const QString seconds = QString::number(loaded->seconds, 'f', 2);
+    QString s;
+    if (loaded->hasNormals())
+        s = Text::tr("%1: %2 vertices, %3 triangles, loaded in %4 s").arg(name, v, t, seconds);
+    else if (loaded->nonFiniteNormals > 0) // a remark says why
+        s = Text::tr("%1: %2 vertices, %3 triangles, loaded in %4 s, normals generated")
+                .arg(name, v, t, seconds);
+    else
+        s = Text::tr("%1: %2 vertices, %3 triangles, loaded in %4 s, normals generated (the "
+                     "file has none)")
+                .arg(name, v, t, seconds);
+    if (const QStringList remarks = loaded->remarks(); !remarks.isEmpty())
+        //: a mesh's summary (%1) and what was skipped or not used in its file (%2, a list)
+        s = Text::tr("%1 (%2)").arg(s, remarks.join("; "));
+    return s;
 }
 
 } // namespace lb

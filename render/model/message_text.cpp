@@ -1,5 +1,6 @@
 #include "message_text.h"
 
+#include <QCoreApplication>
 #include <QLocale>
 
 #include <algorithm>
@@ -76,9 +77,19 @@ QString summarisedList(const QStringList &items, const QString &separator, int s
     for (int i = 0; i < std::min(shown, int(items.size())); ++i)
         parts << elidedForMessage(items[i]);
     if (items.size() > shown)
-        parts << QString("... and %1 more")
+        parts << QCoreApplication::translate("lb::MessageText", "... and %1 more")
                      .arg(QLocale(QLocale::English).toString(qlonglong(items.size() - shown)));
     return parts.join(separator);
+}
+
+QString countedText(const char *context, const char *source, int n)
+{
+    const QString translated = QCoreApplication::translate(context, source, nullptr, n);
+    QString untranslated = QString::fromUtf8(source);
+    untranslated.replace(QLatin1String("%n"), QString::number(n)); // as translate() does
+    if (translated != untranslated)
+        return translated;
+    return untranslated.replace(QLatin1String("(s)"), n == 1 ? QString() : QStringLiteral("s"));
 }
 
 } // namespace lb

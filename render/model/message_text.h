@@ -27,4 +27,11 @@ QString escapedControls(const QString &text);
 // The first `shown` items (each elided), joined by `separator`, then "... and N more".
 QString summarisedList(const QStringList &items, const QString &separator, int shown = 8);
 
+// A sentence with a count, through Qt's plural forms: `source` holds %n and is marked for
+// lupdate where it is written, with QT_TRANSLATE_N_NOOP(context, ...). Where no translation of
+// it is loaded (the command line installs no translator; the window in English) Qt gives the
+// source as it is, "1 object(s)"; English's own form is given instead, "(s)" dropped for 1
+// and "s" for any other count, so that English reads as it did before it was marked.
+QString countedText(const char *context, const char *source, int n);
+
 } // namespace lb

@@ -3,6 +3,7 @@
 #include "mesh_normals.h"
 #include "message_text.h"
 
+#include <QCoreApplication>
 #include <QFileInfo>
 
 #include <exception>
@@ -16,16 +17,32 @@ float creaseOf(const ObjectSettings &object)
     return object.normals == NormalMode::Flat ? 0.0f : object.creaseDegrees;
 }
 
-// "the torus at tessellation 2000", "teapot.obj's normals (12,288 triangles)".
-QString meshName(const ObjectSettings &object, const MeshFile *file)
+// The translation context of this file's messages.
+struct Text
 {
+    Q_DECLARE_TR_FUNCTIONS(lb::ObjectMesh)
+};
+
+// "out of memory building the torus at tessellation 2000", "... teapot.obj's normals (12288
+// triangles)": whole sentences, one for each shape.
+QString outOfMemory(const ObjectSettings &object, const MeshFile *file)
+{
+    const QString tessellation = QString::number(object.tessellation);
     if (file)
-        return QString("%1's normals (%2 triangles)")
-            .arg(escapedName(QFileInfo(file->path).fileName()))
-            .arg(file->mesh ? qulonglong(file->mesh->triangleCount()) : 0);
-    if (object.shape == Shape::Cube)
-        return "the cube";
-    return QString("the %1 at tessellation %2").arg(toName(object.shape)).arg(object.tessellation);
+        return Text::tr("out of memory building %1's normals (%2 triangles)")
+            .arg(escapedName(QFileInfo(file->path).fileName()),
+                 QString::number(file->mesh ? qulonglong(file->mesh->triangleCount()) : 0));
+    switch (object.shape) {
+    case Shape::Cube:
+        return Text::tr("out of memory building the cube");
+    case Shape::Sphere:
+        return Text::tr("out of memory building the sphere at tessellation %1").arg(tessellation);
+    case Shape::Torus:
+        return Text::tr("out of memory building the torus at tessellation %1").arg(tessellation);
+    case Shape::Plane:
+        return Text::tr("out of memory building the plane at tessellation %1").arg(tessellation);
+    }
+    return Text::tr("out of memory building a mesh");
 }
 } // namespace
 
@@ -75,9 +92,9 @@ std::shared_ptr<const Mesh> buildObjectMesh(const ObjectSettings &object, const 
         throw;
     } catch (const std::bad_alloc &) {
         // What was made is freed by now: there is room for the message.
-        throw ObjectMeshOutOfMemory(("out of memory building " + meshName(object, file)).toUtf8());
+        throw ObjectMeshOutOfMemory(outOfMemory(object, file).toUtf8());
     } catch (const std::length_error &) { // a vector longer than it may be: the same to the user
-        throw ObjectMeshOutOfMemory(("out of memory building " + meshName(object, file)).toUtf8());
+        throw ObjectMeshOutOfMemory(outOfMemory(object, file).toUtf8());
     }
 }
 
@@ -89,9 +106,13 @@ ObjectMeshBuild tryBuildObjectMesh(const ObjectSettings &object, const MeshFile 
     } catch (const std::exception &e) {
         try {
             return {nullptr, QString::fromUtf8(e.what())};
-        } catch (...) { // not even the message fits: the QString is made of a literal
+        } catch (...) { // not even the message fits: a shorter one below
         }
     } catch (...) {
+    }
+    try {
+        return {nullptr, Text::tr("out of memory building a mesh")};
+    } catch (...) { // not even that fits: the QString is made of a literal (no allocation)
     }
     return {nullptr, QStringLiteral("out of memory building a mesh")};
 }

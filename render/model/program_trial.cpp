@@ -3,15 +3,48 @@
 #include "loops.h"
 #include "macro_expansion.h"
 
+#include <QCoreApplication>
+
 #include <algorithm>
 #include <cmath>
 
 namespace lb {
 
+namespace {
+// The translation context of this file's messages.
+struct Text
+{
+    Q_DECLARE_TR_FUNCTIONS(lb::ProgramTrial)
+};
+
+// Why a program is refused for its frame's cost (`loops`: the program has loops).
+QString slowFrameMessage(double estimatedMs, QSize target, double measuredMs, QSize measured,
+                         double budgetMs, bool loops)
+{
+    const QString args[] = {durationText(estimatedMs),
+                            QString::number(target.width()),
+                            QString::number(target.height()),
+                            durationText(measuredMs),
+                            QString::number(measured.width()),
+                            QString::number(measured.height()),
+                            durationText(budgetMs)};
+    //: %1 the estimate at %2x%3 pixels, %4 the time measured at %5x%6, %7 the budget
+    return (loops ? Text::tr("drawing one frame with this program would take about %1 at %2x%3 "
+                             "(measured %4 at %5x%6; the budget is %7): an endless or very long "
+                             "loop?")
+                  : Text::tr("drawing one frame with this program would take about %1 at %2x%3 "
+                             "(measured %4 at %5x%6; the budget is %7): too much work for every "
+                             "pixel?"))
+        .arg(args[0], args[1], args[2], args[3], args[4], args[5], args[6]);
+}
+} // namespace
+
 QString durationText(double ms)
 {
-    return ms >= 1000.0 ? QString("%1 s").arg(ms / 1000.0, 0, 'f', ms >= 10000.0 ? 0 : 1)
-                        : QString("%1 ms").arg(ms, 0, 'f', 0);
+    //: a duration in seconds
+    return ms >= 1000.0 ? Text::tr("%1 s").arg(ms / 1000.0, 0, 'f', ms >= 10000.0 ? 0 : 1)
+                        //: a duration in milliseconds
+                        : Text::tr("%1 ms").arg(ms, 0, 'f', 0);
 }
 
 Diagnostic refusalAt(const QString &vertex, const QString &fragment, const QString &message)
@@ -51,18 +84,8 @@ std::optional<Diagnostic> refusalWithoutFrames(const QString &vertex, const QStr
     // and draws garbage. No need to draw to know.
     for (const auto &[stage, text] :
          {std::pair{ShaderStage::Fragment, fragment}, std::pair{ShaderStage::Vertex, vertex}})
-        for (Diagnostic d : certainEndlessLoops(text, stage)) {
-            d.severity = Diagnostic::Severity::Error;
-            const qsizetype macroNote = d.message.indexOf(" (the loop comes from macro ");
-            d.message = d.message.startsWith("this loop runs ")
-                            ? "this program never finishes a frame: the loop here r" +
-                                  d.message.mid(QString("this loop r").size())
-                            : "this program never finishes a frame: the loop here has no "
-                              "condition (or an always-true one) and no break, return or "
-                              "discard" +
-                                  (macroNote < 0 ? QString() : d.message.mid(macroNote));
-            return d;
-        }
+        if (const auto refusals = certainEndlessLoops(text, stage, true); !refusals.empty())
+            return refusals.front(); // the first loop's
     return std::nullopt;
 }
 
@@ -146,20 +169,10 @@ TrialResult tryProgram(const QString &vertex, const QString &fragment, QSize tar
         }
     }
     if (r.estimatedMs > budgetMs)
-        r.refusal =
-            refusalAt(vertex, fragment,
-                      QString("drawing one frame with this program would take about %1 at %2x%3 "
-                              "(measured %4 at %5x%6; the budget is %7): %8")
-                          .arg(durationText(r.estimatedMs))
-                          .arg(target.width())
-                          .arg(target.height())
-                          .arg(durationText(confirmed))
-                          .arg(confirm.width())
-                          .arg(confirm.height())
-                          .arg(durationText(budgetMs))
-                          .arg(loopPlaces(vertex).empty() && loopPlaces(fragment).empty()
-                                   ? "too much work for every pixel?"
-                                   : "an endless or very long loop?"));
+        r.refusal = refusalAt(
+            vertex, fragment,
+            slowFrameMessage(r.estimatedMs, target, confirmed, confirm, budgetMs,
+                             !loopPlaces(vertex).empty() || !loopPlaces(fragment).empty()));
     return r;
 }
 

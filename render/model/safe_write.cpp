@@ -4,6 +4,7 @@
 #include "png_encoder.h"
 
 #include <QBuffer>
+#include <QCoreApplication>
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
@@ -23,6 +24,12 @@
 namespace lb {
 
 namespace {
+
+// The translation context of this file's messages.
+struct Text
+{
+    Q_DECLARE_TR_FUNCTIONS(lb::SafeWrite)
+};
 
 // A path as a message shows it: a 60 MB name is cut short.
 QString shown(const QString &path)
@@ -59,7 +66,7 @@ Target resolveTarget(const QString &given)
         struct stat st;
         if (::lstat(native.constData(), &st) != 0) {
             if (errno == ELOOP)
-                return fail("a loop of symbolic links");
+                return fail(Text::tr("a loop of symbolic links"));
             if (errno != ENOENT)
                 return fail(systemReason(errno));
             break; // a new file
@@ -72,11 +79,12 @@ Target resolveTarget(const QString &given)
             link.truncate(int(n));
             path = QDir(QFileInfo(path).absolutePath()).absoluteFilePath(QFile::decodeName(link));
             if (links == 40)
-                return fail("a loop of symbolic links");
+                return fail(Text::tr("a loop of symbolic links"));
             continue;
         }
         if (!S_ISREG(st.st_mode))
-            return fail("not a regular file (a device, a pipe or a folder); not replaced");
+            return fail(
+                Text::tr("not a regular file (a device, a pipe or a folder); not replaced"));
         t.exists = true;
         t.mode = st.st_mode & 07777;
         break;
@@ -86,12 +94,12 @@ Target resolveTarget(const QString &given)
     const QByteArray nativeFolder = QFile::encodeName(folder);
     struct stat st;
     if (::stat(nativeFolder.constData(), &st) != 0)
-        return fail(errno == ENOENT ? QString("the folder %1 does not exist").arg(shown(folder))
+        return fail(errno == ENOENT ? Text::tr("the folder %1 does not exist").arg(shown(folder))
                                     : QString("%1: %2").arg(shown(folder), systemReason(errno)));
     if (!S_ISDIR(st.st_mode))
-        return fail(QString("%1 is not a folder").arg(shown(folder)));
+        return fail(Text::tr("%1 is not a folder").arg(shown(folder)));
     if (::access(nativeFolder.constData(), W_OK | X_OK) != 0)
-        return fail(QString("cannot write in %1: %2").arg(shown(folder), systemReason(errno)));
+        return fail(Text::tr("cannot write in %1: %2").arg(shown(folder), systemReason(errno)));
     t.path = path;
     return t;
 }
@@ -226,8 +234,9 @@ QString writeImageSafely(const QString &path, const QImage &image, int quality)
     if (suffix.isEmpty() || suffix == "png") {
         const QByteArray bytes = encodePng(image, pngLevelForQuality(quality));
         if (bytes.isEmpty())
-            return QString("%1: %2").arg(
-                shown(path), image.isNull() ? "no image to write" : "the PNG could not be encoded");
+            return QString("%1: %2").arg(shown(path),
+                                         image.isNull() ? Text::tr("no image to write")
+                                                        : Text::tr("the PNG could not be encoded"));
         return writeFileSafely(path, bytes);
     }
     QByteArray bytes;

@@ -2,6 +2,7 @@
 
 #include <tuple>
 
+#include <QCoreApplication>
 #include <QFileInfo>
 #include <QJsonArray>
 
@@ -401,7 +402,22 @@ QString displayName(const ObjectSettings &object)
         return object.name;
     if (!object.meshPath.isEmpty())
         return QFileInfo(object.meshPath).fileName();
-    return toName(object.shape);
+    return shapeLabel(object.shape);
+}
+
+QString shapeLabel(Shape shape)
+{
+    switch (shape) {
+    case Shape::Cube:
+        return QCoreApplication::translate("lb::Scene", "cube");
+    case Shape::Sphere:
+        return QCoreApplication::translate("lb::Scene", "sphere");
+    case Shape::Torus:
+        return QCoreApplication::translate("lb::Scene", "torus");
+    case Shape::Plane:
+        return QCoreApplication::translate("lb::Scene", "plane");
+    }
+    return toName(shape);
 }
 
 bool operator==(const Scene &a, const Scene &b)

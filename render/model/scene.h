@@ -164,8 +164,10 @@ void placeInRow(std::vector<ObjectSettings> &objects);
 // The camera at its default angles, aimed at the middle of the scene's visible objects and
 // far enough to see them all (each taken as its unit bounds, scaled).
 void frameScene(Scene &scene);
-// The name the Object panel shows: the object's own, or its shape's or file's.
+// The name the Object panel shows: the object's own, or its shape's (shapeLabel) or file's.
 QString displayName(const ObjectSettings &object);
+// A shape as the window names it, translated ("sphere"); toName() gives the files' word.
+QString shapeLabel(Shape shape);
 
 // Field by field: the parts in which `a` and `b` differ.
 SceneParts differingParts(const Scene &a, const Scene &b);

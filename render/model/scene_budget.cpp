@@ -3,6 +3,7 @@
 #include "mesh.h"
 #include "message_text.h"
 
+#include <QCoreApplication>
 #include <QFile>
 #include <QLocale>
 #include <QRegularExpression>
@@ -14,6 +15,12 @@
 namespace lb {
 
 namespace {
+
+// The translation context of this file's messages.
+struct Text
+{
+    Q_DECLARE_TR_FUNCTIONS(lb::SceneBudget)
+};
 
 // Whose tessellation counts: the shapes that have one, unless a loaded file is drawn instead.
 bool hasTessellation(const ObjectSettings &object, const MeshFileSizes &files)
@@ -53,9 +60,9 @@ QString countText(std::uint64_t n)
 {
     const QLocale english(QLocale::English);
     if (n >= 10'000'000)
-        return QString("%1 million").arg(english.toString(double(n) / 1e6, 'f', 0));
+        return Text::tr("%1 million").arg(english.toString(double(n) / 1e6, 'f', 0));
     if (n >= 1'000'000)
-        return QString("%1 million").arg(english.toString(double(n) / 1e6, 'f', 1));
+        return Text::tr("%1 million").arg(english.toString(double(n) / 1e6, 'f', 1));
     return english.toString(qulonglong(n));
 }
 
@@ -78,25 +85,38 @@ QString fitMessage(const Scene &scene, const BudgetFit &fit, const MeshBudget &b
         names << QString("%1 #%2")
                      .arg(echoedValue(displayName(scene.objects[std::size_t(i)]), 60))
                      .arg(i + 1);
-    const int n = int(scene.objects.size());
-    QString text = QString("%1 %2 at tessellation %3%4 would make %5 triangles (~%6); ")
-                       .arg(n)
-                       .arg(n == 1 ? "object" : "objects")
-                       .arg(askedSame ? "" : "up to ")
-                       .arg(askedMax)
-                       .arg(countText(fit.asked.triangles), byteSizeText(fit.asked.bytes));
-    text += QString("tessellation lowered to %1 on %2 %3 (%4) ")
-                .arg(fit.tessellation)
-                .arg(fit.lowered.size())
-                .arg(fit.lowered.size() == 1 ? "object" : "objects")
-                .arg(summarisedList(names, ", ", 4));
-    const QString limit = QString("%1, the most a scene may take on this machine (%2 of memory)")
-                              .arg(byteSizeText(budget.bytes), byteSizeText(budget.machineBytes));
-    if (fit.fits)
-        return text +
-               QString("to fit %1: %2 triangles now").arg(limit, countText(fit.fitted.triangles));
-    return text + QString("and still over %1: ~%2 (its mesh files count in full)")
-                      .arg(limit, byteSizeText(fit.fitted.bytes));
+    const char *context = "lb::SceneBudget";
+    //: what a scene asks for; %n the objects in the scene
+    const QString asked =
+        countedText(context,
+                    askedSame ? QT_TRANSLATE_N_NOOP("lb::SceneBudget",
+                                                    "%n object(s) at tessellation %1 would make %2 "
+                                                    "triangles (~%3)")
+                              : QT_TRANSLATE_N_NOOP("lb::SceneBudget",
+                                                    "%n object(s) at tessellation up to %1 would "
+                                                    "make %2 triangles (~%3)"),
+                    int(scene.objects.size()))
+            .arg(QString::number(askedMax), countText(fit.asked.triangles),
+                 byteSizeText(fit.asked.bytes));
+    //: what was done about it; %n the objects lowered, %2 their names
+    const QString lowered =
+        countedText(context,
+                    fit.fits
+                        ? QT_TRANSLATE_N_NOOP("lb::SceneBudget",
+                                              "tessellation lowered to %1 on %n object(s) (%2) "
+                                              "to fit %3, the most a scene may take on this "
+                                              "machine (%4 of memory): %5 triangles now")
+                        : QT_TRANSLATE_N_NOOP("lb::SceneBudget",
+                                              "tessellation lowered to %1 on %n object(s) (%2) "
+                                              "and still over %3, the most a scene may take on "
+                                              "this machine (%4 of memory): ~%5 (its mesh files "
+                                              "count in full)"),
+                    int(fit.lowered.size()))
+            .arg(QString::number(fit.tessellation), summarisedList(names, ", ", 4),
+                 byteSizeText(budget.bytes), byteSizeText(budget.machineBytes),
+                 fit.fits ? countText(fit.fitted.triangles) : byteSizeText(fit.fitted.bytes));
+    //: what a scene asked for (%1) and what was lowered to fit it in memory (%2)
+    return Text::tr("%1; %2").arg(asked, lowered);
 }
 
 } // namespace
@@ -205,8 +225,8 @@ QString byteSizeText(std::uint64_t bytes)
     const QLocale english(QLocale::English);
     const double mb = double(bytes) / double(1 << 20);
     if (mb >= 1024.0)
-        return QString("%1 GB").arg(english.toString(mb / 1024.0, 'f', 1));
-    return QString("%1 MB").arg(english.toString(mb, 'f', 0));
+        return Text::tr("%1 GB").arg(english.toString(mb / 1024.0, 'f', 1));
+    return Text::tr("%1 MB").arg(english.toString(mb, 'f', 0));
 }
 
 } // namespace lb

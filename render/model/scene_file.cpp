@@ -3,7 +3,9 @@
 #include "bounded_read.h"
 #include "dialect.h"
 #include "message_text.h"
+#include "scene_json_reader.h"
 
+#include <QCoreApplication>
 #include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -12,6 +14,12 @@
 namespace lb {
 
 namespace {
+
+// The translation context of this file's messages.
+struct Text
+{
+    Q_DECLARE_TR_FUNCTIONS(lb::SceneFile)
+};
 
 const char *kFormat = "lightbench-scene";
 // How files written before the "edited" field marked an edited program: an English suffix on
@@ -26,7 +34,8 @@ ProgramText programText(const QJsonObject &p, QStringList &ignored)
     if (edited.isBool()) {
         text.edited = edited.toBool();
     } else if (!edited.isUndefined()) {
-        ignored << "program.edited (not true or false; read as false)";
+        SceneJsonReader(&ignored).ignore("program.edited",
+                                         Text::tr("not true or false; read as false"));
     } else if (text.name.endsWith(kLegacyEditedSuffix)) {
         text.name.chop(kLegacyEditedSuffix.size());
         text.edited = true;
@@ -81,13 +90,14 @@ SceneFileRead parseSceneFile(const QByteArray &bytes, const QDir &dir, const QSt
     QJsonParseError parseError;
     const QJsonDocument document = QJsonDocument::fromJson(bytes, &parseError);
     if (parseError.error != QJsonParseError::NoError) {
-        read.error = QString("%1: not a scene file: %2 at byte %3")
+        //: %1 a path, %2 Qt's JSON parser's reason
+        read.error = Text::tr("%1: not a scene file: %2 at byte %3")
                          .arg(name, parseError.errorString())
                          .arg(parseError.offset);
         return read;
     }
     if (!document.isObject()) {
-        read.error = QString("%1: not a scene file: the JSON is not an object").arg(name);
+        read.error = Text::tr("%1: not a scene file: the JSON is not an object").arg(name);
         return read;
     }
     return parseSceneObject(document.object(), dir);
@@ -96,20 +106,20 @@ SceneFileRead parseSceneFile(const QByteArray &bytes, const QDir &dir, const QSt
 SceneFileRead parseSceneObject(QJsonObject root, const QDir &dir)
 {
     SceneFileRead read; // an object has no error of its own, only what is ignored
+    SceneJsonReader fields(&read.ignored);
 
     // A file from a newer lightbench is read for what this one knows.
     const QJsonValue format = root.take("format");
     if (!format.isUndefined() && format != QJsonValue(kFormat))
-        read.ignored << QString("format (expected \"%1\")").arg(kFormat);
+        fields.ignore("format", Text::tr("expected \"%1\"").arg(kFormat));
     const QJsonValue version = root.take("version");
     if (!version.isDouble() || version.toDouble() < 1)
-        read.ignored
-            << QString("version (missing or not a number; read as %1)").arg(kSceneFileVersion);
+        fields.ignore("version",
+                      Text::tr("missing or not a number; read as %1").arg(kSceneFileVersion));
     else if (version.toDouble() > kSceneFileVersion)
-        read.ignored << QString("version %1 (newer than this lightbench's %2: what it does not "
-                                "know is left out)")
-                            .arg(version.toDouble())
-                            .arg(kSceneFileVersion);
+        fields.ignore(QString("version %1").arg(version.toDouble()),
+                      Text::tr("newer than this lightbench's %1: what it does not know is left out")
+                          .arg(kSceneFileVersion));
 
     SceneFile file;
     const QJsonValue program = root.take("program");
@@ -121,9 +131,9 @@ SceneFileRead parseSceneObject(QJsonObject root, const QDir &dir)
             fragment.toString().size() <= kMaxSourceCharacters)
             file.program = programText(p, read.ignored);
         else
-            read.ignored << "program (needs vertex and fragment sources as strings)";
+            fields.ignore("program", Text::tr("needs vertex and fragment sources as strings"));
     } else if (!program.isUndefined() && !program.isNull()) {
-        read.ignored << "program (not an object)";
+        fields.ignore("program", Text::tr("not an object"));
     }
 
     const QJsonValue exercise = root.take("exercise");
@@ -132,7 +142,8 @@ SceneFileRead parseSceneObject(QJsonObject root, const QDir &dir)
         file.exercise = e.exercise;
         read.exerciseError = e.error;
         if (!e.error.isEmpty())
-            read.ignored << e.error + " (the section is kept as it is)";
+            //: %1 why an exercise section cannot be graded against
+            read.ignored << Text::tr("%1 (the section is kept as it is)").arg(e.error);
     }
     file.scene = Scene::fromJson(root, &read.ignored);
     for (ObjectSettings &object : file.scene.objects)
@@ -145,7 +156,8 @@ SceneFileRead parseSceneObject(QJsonObject root, const QDir &dir)
 
 SceneFileRead readSceneFile(const QString &path)
 {
-    const BoundedRead bytes = readBounded(path, {"a scene file", kMaxSceneFileBytes});
+    const BoundedRead bytes =
+        readBounded(path, {QT_TRANSLATE_NOOP("lb::FileLimit", "a scene file"), kMaxSceneFileBytes});
     if (!bytes.error.isEmpty()) {
         SceneFileRead read;
         read.error = bytes.error;
@@ -157,8 +169,10 @@ SceneFileRead readSceneFile(const QString &path)
 QString writeSceneFile(const QString &path, const SceneFile &file)
 {
     // Never a file that readSceneFile() would refuse: one limit for both.
-    return writeWithinLimit(path, sceneFileBytes(file, QFileInfo(path).absoluteDir()), "the scene",
-                            {"a scene file", kMaxSceneFileBytes});
+    return writeWithinLimit(
+        path, sceneFileBytes(file, QFileInfo(path).absoluteDir()),
+        QT_TRANSLATE_NOOP("lb::FileLimit", "the scene"),
+        {QT_TRANSLATE_NOOP("lb::FileLimit", "a scene file"), kMaxSceneFileBytes});
 }
 
 } // namespace lb

@@ -1,7 +1,9 @@
 // Scene <-> JSON. Writing gives every field; reading takes what it can use and names the rest.
 
 #include "scene.h"
+#include "scene_json_reader.h"
 
+#include <QCoreApplication>
 #include <QJsonArray>
 
 #include <glm/common.hpp>
@@ -90,123 +92,13 @@ QJsonObject termsJson(const TermSwitches &terms)
     return t;
 }
 
-// Reads fields into a Scene, keeping the default of each field it cannot use and naming it
-// ("object.tessellation", "lights[2].frame") in `ignored`: unknown keys, wrong types, values
-// out of range (those are clamped) and words it does not know.
-class Reader
+// The translation context of the reasons named in `ignored` (scene_json_reader.h).
+struct Text
 {
-public:
-    explicit Reader(QStringList *ignored) : m_ignored(ignored) {}
-
-    void ignore(const QString &path, const char *why)
-    {
-        if (m_ignored)
-            m_ignored->append(QString("%1 (%2)").arg(path, QLatin1String(why)));
-    }
-
-    // The object under `key`; an absent key gives an empty object, a non-object is ignored.
-    QJsonObject object(const QJsonObject &o, const QString &key, const QString &path)
-    {
-        const QJsonValue v = o.value(key);
-        if (v.isUndefined())
-            return {};
-        if (!v.isObject())
-            ignore(path, "not an object");
-        return v.toObject();
-    }
-
-    // Names each key of `o` that `known` (the same object as written) lacks.
-    void unknownKeys(const QJsonObject &o, const QJsonObject &known, const QString &path)
-    {
-        for (auto it = o.begin(); it != o.end(); ++it)
-            if (!known.contains(it.key()))
-                ignore(join(path, it.key()), "unknown field");
-    }
-
-    void numbers(const QJsonObject &o, const QString &key, const QString &path, float *v, int n,
-                 float lo, float hi)
-    {
-        const QJsonValue j = o.value(key);
-        if (j.isUndefined())
-            return;
-        const QJsonArray a = j.toArray();
-        bool ok = j.isArray() && a.size() == n;
-        for (int i = 0; ok && i < n; ++i)
-            ok = a[i].isDouble() && std::isfinite(a[i].toDouble());
-        if (!ok) {
-            ignore(join(path, key), n == 1 ? "not a number" : "not an array of numbers");
-            return;
-        }
-        bool clamped = false;
-        for (int i = 0; i < n; ++i) {
-            const double d = a[i].toDouble();
-            const double c = std::clamp(d, double(lo), double(hi));
-            v[i] = float(c);
-            clamped = clamped || c != d;
-        }
-        if (clamped)
-            ignore(join(path, key), "out of range, clamped");
-    }
-
-    template <typename T>
-    void number(const QJsonObject &o, const QString &key, const QString &path, T &v, T lo, T hi)
-    {
-        const QJsonValue j = o.value(key);
-        if (j.isUndefined())
-            return;
-        if (!j.isDouble() || !std::isfinite(j.toDouble())) {
-            ignore(join(path, key), "not a number");
-            return;
-        }
-        const double d = j.toDouble();
-        const double c = std::clamp(d, double(lo), double(hi));
-        v = T(c);
-        const bool fraction = std::is_integral_v<T> && double(v) != c;
-        if (c != d || fraction)
-            ignore(join(path, key), fraction ? "not a whole number" : "out of range, clamped");
-    }
-
-    void boolean(const QJsonObject &o, const QString &key, const QString &path, bool &v)
-    {
-        const QJsonValue j = o.value(key);
-        if (j.isBool())
-            v = j.toBool();
-        else if (!j.isUndefined())
-            ignore(join(path, key), "not true or false");
-    }
-
-    template <typename E>
-    void word(const QJsonObject &o, const QString &key, const QString &path,
-              std::optional<E> (*parse)(const QString &), E &v)
-    {
-        const QJsonValue j = o.value(key);
-        if (j.isUndefined())
-            return;
-        if (const auto parsed = parse(j.toString()))
-            v = *parsed;
-        else
-            ignore(join(path, key), "unknown value");
-    }
-
-    void text(const QJsonObject &o, const QString &key, const QString &path, QString &v)
-    {
-        const QJsonValue j = o.value(key);
-        if (j.isString())
-            v = j.toString();
-        else if (!j.isUndefined())
-            ignore(join(path, key), "not a string");
-    }
-
-    static QString join(const QString &path, const QString &key)
-    {
-        return path.isEmpty() ? key : path + "." + key;
-    }
-
-private:
-    QStringList *m_ignored;
+    Q_DECLARE_TR_FUNCTIONS(lb::SceneJson)
 };
 
-void readLight(Reader &r, const QJsonObject &l, const QString &path, Light &light)
+void readLight(SceneJsonReader &r, const QJsonObject &l, const QString &path, Light &light)
 {
     r.unknownKeys(l, lightJson(light), path);
     r.boolean(l, "enabled", path, light.enabled);
@@ -214,10 +106,10 @@ void readLight(Reader &r, const QJsonObject &l, const QString &path, Light &ligh
     const Light before = light;
     r.numbers(l, "position", path, &light.position.x, 4, -c, c);
     if (light.position.w != 0.0f && light.position.w != 1.0f) {
-        r.ignore(Reader::join(path, "position"), "w must be 0 or 1");
+        r.ignore(SceneJsonReader::join(path, "position"), Text::tr("w must be 0 or 1"));
         light.position = before.position;
     } else if (light.position == glm::vec4(0.0f)) {
-        r.ignore(Reader::join(path, "position"), "a direction of length 0");
+        r.ignore(SceneJsonReader::join(path, "position"), Text::tr("a direction of length 0"));
         light.position = before.position;
     }
     r.word(l, "frame", path, parseLightFrame, light.frame);
@@ -226,15 +118,15 @@ void readLight(Reader &r, const QJsonObject &l, const QString &path, Light &ligh
     r.numbers(l, "is", path, &light.colors.is.x, 3, 0.0f, 1.0f);
     r.numbers(l, "attenuation", path, &light.attenuation.x, 3, 0.0f, limits::kMaxAttenuation);
     if (light.attenuation == glm::vec3(0.0f)) {
-        r.ignore(Reader::join(path, "attenuation"), "kc, kl and kq all 0");
+        r.ignore(SceneJsonReader::join(path, "attenuation"), Text::tr("kc, kl and kq all 0"));
         light.attenuation = before.attenuation;
     }
-    const QString spotPath = Reader::join(path, "spot");
+    const QString spotPath = SceneJsonReader::join(path, "spot");
     const QJsonObject spot = r.object(l, "spot", spotPath);
     r.unknownKeys(spot, lightJson(light)["spot"].toObject(), spotPath);
     r.numbers(spot, "direction", spotPath, &light.spot.direction.x, 3, -c, c);
     if (glm::length(light.spot.direction) < limits::kMinDirectionLength) {
-        r.ignore(Reader::join(spotPath, "direction"), "a direction of length 0");
+        r.ignore(SceneJsonReader::join(spotPath, "direction"), Text::tr("a direction of length 0"));
         light.spot.direction = before.spot.direction;
     }
     r.number(spot, "cutoff", spotPath, light.spot.cutoffDegrees, 0.0f, limits::kMaxSpotCutoff);
@@ -243,7 +135,7 @@ void readLight(Reader &r, const QJsonObject &l, const QString &path, Light &ligh
     r.number(l, "object", path, light.object, 0, std::numeric_limits<int>::max());
 }
 
-void readMaterial(Reader &r, const QJsonObject &m, const QString &path, Material &material)
+void readMaterial(SceneJsonReader &r, const QJsonObject &m, const QString &path, Material &material)
 {
     r.unknownKeys(m, materialJson(material), path);
     r.numbers(m, "ka", path, &material.ka.x, 3, 0.0f, 1.0f);
@@ -254,7 +146,8 @@ void readMaterial(Reader &r, const QJsonObject &m, const QString &path, Material
 }
 
 // One object; version 2's "object" is read by the same code (it has fewer fields).
-void readObject(Reader &r, const QJsonObject &ob, const QString &path, ObjectSettings &object)
+void readObject(SceneJsonReader &r, const QJsonObject &ob, const QString &path,
+                ObjectSettings &object)
 {
     r.unknownKeys(ob, objectJson(object), path);
     r.text(ob, "name", path, object.name);
@@ -274,8 +167,8 @@ void readObject(Reader &r, const QJsonObject &ob, const QString &path, ObjectSet
     r.boolean(ob, "cullBackFaces", path, object.cullBackFaces);
     r.boolean(ob, "adoptFileMaterial", path, object.adoptFileMaterial);
     if (ob.contains("material"))
-        readMaterial(r, r.object(ob, "material", Reader::join(path, "material")),
-                     Reader::join(path, "material"), object.material);
+        readMaterial(r, r.object(ob, "material", SceneJsonReader::join(path, "material")),
+                     SceneJsonReader::join(path, "material"), object.material);
     r.boolean(ob, "texture", path, object.texture);
     r.text(ob, "textureFile", path, object.textureFile);
     r.word(ob, "textureWrap", path, parseTextureWrap, object.sampling.wrap);
@@ -335,7 +228,7 @@ QJsonObject Scene::toJson() const
 Scene Scene::fromJson(const QJsonObject &json, QStringList *ignored)
 {
     Scene sc;
-    Reader r(ignored);
+    SceneJsonReader r(ignored);
     const QJsonObject known = sc.toJson();
     QJsonObject knownRoot = known;
     knownRoot["light"] = QJsonObject();  // version 1 had a single light
@@ -350,13 +243,13 @@ Scene Scene::fromJson(const QJsonObject &json, QStringList *ignored)
         const QJsonValue v = json.value("lights");
         const QJsonArray ls = v.toArray();
         if (!v.isArray())
-            r.ignore("lights", "not an array");
+            r.ignore("lights", Text::tr("not an array"));
         for (int i = 0; i < int(ls.size()); ++i) {
             const QString path = QString("lights[%1]").arg(i);
             if (i >= kMaxLights)
-                r.ignore(path, "at most 4 lights");
+                r.ignore(path, Text::tr("at most 4 lights"));
             else if (!ls[i].isObject())
-                r.ignore(path, "not an object");
+                r.ignore(path, Text::tr("not an object"));
             else
                 readLight(r, ls[i].toObject(), path, sc.lights[std::size_t(i)]);
         }
@@ -383,19 +276,19 @@ Scene Scene::fromJson(const QJsonObject &json, QStringList *ignored)
         const QJsonValue v = json.value("objects");
         const QJsonArray obs = v.toArray();
         if (!v.isArray())
-            r.ignore("objects", "not an array");
+            r.ignore("objects", Text::tr("not an array"));
         else if (obs.isEmpty())
-            r.ignore("objects", "empty: one object drawn instead");
+            r.ignore("objects", Text::tr("empty: one object drawn instead"));
         std::vector<ObjectSettings> read;
         for (int i = 0; i < int(obs.size()); ++i) {
             const QString path = QString("objects[%1]").arg(i);
             if (int(read.size()) >= kMaxObjects) {
-                r.ignore(path, "at most 32 objects; the rest left out");
+                r.ignore(path, Text::tr("at most 32 objects; the rest left out"));
                 break;
             }
             read.emplace_back(); // in its place, so that the indices after it stay right
             if (!obs[i].isObject()) {
-                r.ignore(path, "not an object; a sphere in its place");
+                r.ignore(path, Text::tr("not an object; a sphere in its place"));
                 continue;
             }
             readObject(r, obs[i].toObject(), path, read.back());
@@ -416,7 +309,8 @@ Scene Scene::fromJson(const QJsonObject &json, QStringList *ignored)
     for (int i = 0; i < kMaxLights; ++i) {
         Light &light = sc.lights[std::size_t(i)];
         if (light.object > last) {
-            r.ignore(QString("lights[%1].object").arg(i), "no such object; the first one");
+            r.ignore(QString("lights[%1].object").arg(i),
+                     Text::tr("no such object; the first one"));
             light.object = 0;
         }
     }
@@ -444,28 +338,27 @@ Scene Scene::fromJson(const QJsonObject &json, QStringList *ignored)
     int kept = 0;
     for (auto it = values.begin(); it != values.end(); ++it) {
         if (kept == limits::kMaxShaderValues) {
-            r.ignore(QString("shaderValues (%1 more than the %2 kept)")
-                         .arg(values.size() - kept)
-                         .arg(limits::kMaxShaderValues),
-                     "too many");
+            r.ignore("shaderValues", Text::tr("too many: %1 more than the %2 kept")
+                                         .arg(values.size() - kept)
+                                         .arg(limits::kMaxShaderValues));
             break;
         }
         if (it.key().isEmpty() || it.key().size() > limits::kMaxShaderValueName) {
-            r.ignore("shaderValues." + it.key().left(40), "not a uniform's name");
+            r.ignore("shaderValues." + it.key().left(40), Text::tr("not a uniform's name"));
             continue;
         }
         const QJsonArray a = it.value().toArray();
         const int n = int(a.size());
         std::vector<float> v(std::size_t(std::clamp(n, 1, 4)), 0.0f);
         QStringList bad;
-        Reader one(&bad);
+        SceneJsonReader one(&bad);
         if (n >= 1 && n <= 4)
             one.numbers(values, it.key(), {}, v.data(), n, -3.4e38f, 3.4e38f);
         if (n >= 1 && n <= 4 && bad.isEmpty()) {
             sc.shaderValues[it.key()] = v;
             ++kept;
         } else
-            r.ignore("shaderValues." + it.key(), "not 1 to 4 numbers");
+            r.ignore("shaderValues." + it.key(), Text::tr("not 1 to 4 numbers"));
     }
     return sc;
 }

@@ -15,7 +15,8 @@ namespace lb {
 ShaderFileRead readShaderFile(const QString &path)
 {
     // UTF-8 takes at least a byte a character: a longer file is over the characters' limit.
-    const BoundedRead read = readBounded(path, {"a shader", kMaxSourceCharacters});
+    const BoundedRead read =
+        readBounded(path, {QT_TRANSLATE_NOOP("lb::FileLimit", "a shader"), kMaxSourceCharacters});
     ShaderFileRead r;
     r.error = read.error;
     if (r.error.isEmpty())

@@ -4,6 +4,7 @@
 #include "image_truncation.h"
 #include "message_text.h"
 
+#include <QCoreApplication>
 #include <QFile>
 #include <QFileInfo>
 #include <QImageIOHandler>
@@ -13,24 +14,33 @@
 
 namespace lb {
 
+namespace {
+// The translation context of this file's messages.
+struct Text
+{
+    Q_DECLARE_TR_FUNCTIONS(lb::TextureFile)
+};
+} // namespace
+
 TextureFileRead readTextureFile(const QString &path)
 {
     TextureFileRead read;
     // Messages name the path as the user gave it, like those of unreadableFile().
     const QString name = echoedValue(path, 300);
-    read.error = unreadableFile(path, {"an image", kMaxTextureFileBytes});
+    read.error = unreadableFile(
+        path, {QT_TRANSLATE_NOOP("lb::FileLimit", "an image"), kMaxTextureFileBytes});
     if (!read.error.isEmpty())
         return read;
     if (QFileInfo(path).size() == 0) {
-        read.error = QObject::tr("%1: an empty file, not an image").arg(name);
+        read.error = Text::tr("%1: an empty file, not an image").arg(name);
         return read;
     }
     QImageReader reader(path);
     reader.setAutoTransform(true); // a photo's EXIF orientation, as viewers show it
     if (!reader.canRead()) {
-        read.error = QObject::tr("%1: not an image (%2)")
+        read.error = Text::tr("%1: not an image (%2)")
                          .arg(name, reader.error() == QImageReader::UnsupportedFormatError
-                                        ? QObject::tr("the formats read are %1")
+                                        ? Text::tr("the formats read are %1")
                                               .arg(QString::fromLatin1(
                                                   QImageReader::supportedImageFormats().join(", ")))
                                         : reader.errorString());
@@ -38,7 +48,7 @@ TextureFileRead readTextureFile(const QString &path)
     }
     const QSize size = reader.size(); // from the header, before anything is decoded
     if (size.width() > kMaxTextureFileSide || size.height() > kMaxTextureFileSide) {
-        read.error = QObject::tr("%1: %2 x %3 texels is more than a texture may have (%4 x %4)")
+        read.error = Text::tr("%1: %2 x %3 texels is more than a texture may have (%4 x %4)")
                          .arg(name)
                          .arg(size.width())
                          .arg(size.height())
@@ -69,25 +79,30 @@ TextureFileRead readTextureFile(const QString &path)
                                              qsizetype(file.size()))
                    : QByteArray();
         if (const QString why = truncatedImage(bytes, reader.format()); mapped && !why.isEmpty()) {
-            read.error = QObject::tr("%1: could not be read as an image: %2").arg(name, why);
+            read.error = Text::tr("%1: could not be read as an image: %2").arg(name, why);
             return read;
         }
     }
     const QImage image = reader.read();
     if (image.isNull()) {
         read.error =
-            QObject::tr("%1: could not be read as an image: %2").arg(name, reader.errorString());
+            Text::tr("%1: could not be read as an image: %2").arg(name, reader.errorString());
         return read;
     }
     auto texture = std::make_shared<Texture>(Texture::fromImage(image));
     const QImage &drawn = texture->image();
-    read.summary = QObject::tr("%1: %2 x %3 texels")
-                       .arg(QFileInfo(path).fileName())
-                       .arg(drawn.width())
-                       .arg(drawn.height());
+    const QString fileName = QFileInfo(path).fileName();
     if (shown.isValid() && shown != drawn.size())
-        read.summary +=
-            QObject::tr(" (scaled from %1 x %2)").arg(shown.width()).arg(shown.height());
+        //: %1 a file's name, %2 x %3 the texels drawn, %4 x %5 the image's own size
+        read.summary = Text::tr("%1: %2 x %3 texels (scaled from %4 x %5)")
+                           .arg(fileName)
+                           .arg(drawn.width())
+                           .arg(drawn.height())
+                           .arg(shown.width())
+                           .arg(shown.height());
+    else
+        read.summary =
+            Text::tr("%1: %2 x %3 texels").arg(fileName).arg(drawn.width()).arg(drawn.height());
     read.texture = std::move(texture);
     return read;
 }
