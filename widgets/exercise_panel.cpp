@@ -148,8 +148,10 @@ void ExercisePanel::setExercise(const std::optional<Exercise> &exercise)
                .arg(m_size.width())
                .arg(m_size.height()));
     // A title is one line: a line break or a control in it is shown, not obeyed.
-    m_title->setText(exercise->title.isEmpty() ? tr("Exercise") : escapedName(exercise->title));
-    m_task->setText(exercise->task);
+    // In the window's language, as lessons are (localized_text.h), else English.
+    const QString title = localized(exercise->title, lessonLanguage());
+    m_title->setText(title.isEmpty() ? tr("Exercise") : escapedName(title));
+    m_task->setText(localized(exercise->task, lessonLanguage()));
     const ExerciseReference &ref = exercise->reference;
     const QString reference =
         !exercise->unread.isUndefined()

@@ -24,6 +24,7 @@ constexpr std::array<const char *, 8> kVaryNames{"light",    "lightW", "lightFra
                                                  "material", "camera", "projection", "scale"};
 constexpr int kMaxCases = 200;
 constexpr int kMaxSide = 2048;
+constexpr int kMaxExerciseTextCharacters = 8000; // a title or a task, in one language
 
 // Uniform in [lo, hi) from the generator's bits, the same with every standard library
 // (std::uniform_real_distribution is not specified bit for bit).
@@ -87,8 +88,8 @@ QJsonObject exerciseJson(const Exercise &exercise)
         if (g.vary & (1u << i))
             vary.append(QLatin1String(kVaryNames[std::size_t(i)]));
     return QJsonObject{
-        {"title", exercise.title},
-        {"task", exercise.task},
+        {"title", exercise.title.isEmpty() ? QJsonValue("") : localizedTextJson(exercise.title)},
+        {"task", exercise.task.isEmpty() ? QJsonValue("") : localizedTextJson(exercise.task)},
         {"reference", reference},
         {"grading", QJsonObject{{"cases", g.cases},
                                 {"size", QJsonArray{g.size.width(), g.size.height()}},
@@ -127,8 +128,9 @@ ExerciseRead readExerciseSection(const QJsonValue &json, QStringList *ignored)
     }
     const QJsonObject o = json.toObject();
     Exercise e;
-    e.title = text(o, "title");
-    e.task = text(o, "task");
+    // A title or a task that is not text is left out and named, as a lesson's caption is.
+    e.title = readLocalizedText(o.value("title"), "title", kMaxExerciseTextCharacters, ignore);
+    e.task = readLocalizedText(o.value("task"), "task", kMaxExerciseTextCharacters, ignore);
     const QJsonObject known = exerciseJson(e);
     for (auto it = o.begin(); it != o.end(); ++it)
         if (!known.contains(it.key()))

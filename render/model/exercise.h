@@ -5,13 +5,14 @@
 // and the tolerance per pixel. The scene file's own program is the student's starting point.
 //
 // In a scene file, the "exercise" object:
-//   {"title": "...", "task": "...",
+//   {"title": "...", "task": "...",     (or {"en": "...", "pt": "...", "de": "..."}, each)
 //    "reference": {"vertex": "...", "fragment": "..."}            (the teacher's solution)
 //             or {"builtIn": {"shading": "phong", "specular": "phong"}},
 //    "grading": {"cases": 20, "size": [320, 240], "tolerance": 2, "passShare": 0.99,
 //                "vary": ["light", "lightW", "lightFrame", "lightColour", "material",
 //                         "camera", "projection", "scale"]}}
 
+#include "localized_text.h"
 #include "scene.h"
 
 #include <QJsonObject>
@@ -60,7 +61,7 @@ struct GradingSpec
 
 struct Exercise
 {
-    QString title, task;
+    LocalizedText title, task; // shown in the window's language (localized_text.h)
     ExerciseReference reference;
     GradingSpec grading;
     // A section that cannot be graded against (no reference yet, while the teacher writes

@@ -31,51 +31,12 @@ void note(QStringList &ignored, const QString &where, const QString &why)
     ignored << Text::tr("%1 (%2)").arg(where, why);
 }
 
-// "a title", "a caption": a string (English) or {"en": ..., "pt": ...}. What is not text, or
-// too long to be a caption, is named in `ignored` and left out.
+// "a title", "a caption", in one language or several (localized_text.h).
 LocalizedText readText(const QJsonValue &value, const QString &where, QStringList &ignored)
 {
-    LocalizedText text;
-    const auto take = [&](const QString &language, const QJsonValue &v) {
-        const QString at = language.isEmpty() ? where : QString("%1.%2").arg(where, language);
-        if (!v.isString())
-            note(ignored, at, Text::tr("not text"));
-        else if (v.toString().size() > kMaxLessonTextCharacters)
-            note(ignored, at,
-                 Text::tr("%1 characters; at most %2")
-                     .arg(v.toString().size())
-                     .arg(kMaxLessonTextCharacters));
-        else
-            text[language.isEmpty() ? QString("en") : language] = v.toString();
-    };
-    if (value.isUndefined() || value.isNull())
-        return text;
-    if (!value.isObject()) {
-        take({}, value);
-        return text;
-    }
-    const QJsonObject o = value.toObject();
-    for (auto it = o.begin(); it != o.end(); ++it) {
-        // A language code, as QLocale names it: "pt", "de", "pt_BR".
-        if (it.key().size() < 2 || it.key().size() > 8)
-            note(ignored, QString("%1.%2").arg(where, echoedValue(it.key(), 40)),
-                 Text::tr("not a language code"));
-        else
-            take(it.key(), it.value());
-    }
-    return text;
-}
-
-QJsonValue textJson(const LocalizedText &text)
-{
-    if (text.isEmpty())
-        return QJsonValue();
-    if (text.size() == 1 && text.contains("en"))
-        return text["en"];
-    QJsonObject o;
-    for (auto it = text.begin(); it != text.end(); ++it)
-        o[it.key()] = it.value();
-    return o;
+    return readLocalizedText(
+        value, where, kMaxLessonTextCharacters,
+        [&](const QString &at, const QString &why) { note(ignored, at, why); });
 }
 
 // One of `allowed`, or empty with a word in `ignored`.
@@ -145,54 +106,6 @@ void readStepScene(const QJsonValue &scene, LessonStep &step, const QString &whe
 }
 
 } // namespace
-
-QString localized(const LocalizedText &text, const QString &language)
-{
-    if (text.isEmpty())
-        return {};
-    const QString code = language.section('.', 0, 0); // "de_DE.UTF-8" -> "de_DE"
-    for (const QString &key : {code, code.section('_', 0, 0), QString("en")})
-        if (!key.isEmpty() && text.contains(key))
-            return text[key];
-    return text.first();
-}
-
-namespace {
-QString &chosenLanguage()
-{
-    static QString language;
-    return language;
-}
-QString &defaultLanguage() // the window's, once it has chosen one
-{
-    static QString language;
-    return language;
-}
-} // namespace
-
-QString lessonLanguage()
-{
-    if (!chosenLanguage().isEmpty())
-        return chosenLanguage();
-    if (!defaultLanguage().isEmpty())
-        return defaultLanguage();
-    // The system's (LANG), for a program that chose no language (the command line). The C
-    // and POSIX locales (LANG=C, a bare container) name no language: English then, so that
-    // what is written is under a code a lesson file takes.
-    const QString language = QLocale::system().name().section('_', 0, 0);
-    static const QRegularExpression code("^[a-z]{2,3}$");
-    return code.match(language).hasMatch() ? language : QString("en");
-}
-
-void setLessonLanguage(const QString &language)
-{
-    chosenLanguage() = language;
-}
-
-void setDefaultLessonLanguage(const QString &language)
-{
-    defaultLanguage() = language;
-}
 
 const QStringList &lessonPanels()
 {
@@ -298,14 +211,14 @@ QByteArray lessonFileBytes(const Lesson &lesson, const QDir &dir)
 {
     QJsonObject root{{"format", kFormat}, {"version", kLessonFileVersion}};
     if (!lesson.title.isEmpty())
-        root["title"] = textJson(lesson.title);
+        root["title"] = localizedTextJson(lesson.title);
     QJsonArray steps;
     for (const LessonStep &step : lesson.steps) {
         QJsonObject s;
         if (!step.title.isEmpty())
-            s["title"] = textJson(step.title);
+            s["title"] = localizedTextJson(step.title);
         if (!step.caption.isEmpty())
-            s["caption"] = textJson(step.caption);
+            s["caption"] = localizedTextJson(step.caption);
         if (!step.panel.isEmpty())
             s["panel"] = step.panel;
         if (!step.highlight.isEmpty())

@@ -12,6 +12,8 @@
 // one size limit together, and a step whose scene cannot be used keeps its place with the
 // reason (the window shows it there; the command line refuses that step).
 
+#include "localized_text.h"
+
 #include "scene_file.h"
 
 #include <QDir>
@@ -29,19 +31,6 @@ constexpr int kLessonFileVersion = 1;
 constexpr qint64 kMaxLessonBytes = 64 * 1024 * 1024;
 constexpr int kMaxLessonSteps = 500;
 constexpr int kMaxLessonTextCharacters = 4000; // a title or a caption, in one language
-
-// Text in several languages, by language code ("en", "pt", "de"). Written as a plain string
-// when there is only English.
-using LocalizedText = QMap<QString, QString>;
-// The text for `language` ("pt", "pt_PT", "de_DE.UTF-8"): that language, else English, else
-// the first there is; empty when there is none.
-QString localized(const LocalizedText &text, const QString &language);
-// The language lessons and examples are shown and written in, as "en", "pt", "de": the one
-// chosen (Lesson > Caption Language), else the window's (View > Language), else the system's
-// (LANG), else English.
-QString lessonLanguage();
-void setLessonLanguage(const QString &language); // empty: the window's again
-void setDefaultLessonLanguage(const QString &language); // the window's language
 
 // The panels a step may bring forward, and the controls it may point at (as written in files).
 const QStringList &lessonPanels();

@@ -16,8 +16,8 @@ namespace {
 Exercise sample()
 {
     Exercise e;
-    e.title = "Lighting";
-    e.task = "Write the fragment shader.";
+    e.title = {{"en", "Lighting"}, {"de", "Beleuchtung"}};
+    e.task = {{"en", "Write the fragment shader."}};
     e.reference.vertex = "void main() { gl_Position = vec4(0.0); }";
     e.reference.fragment = "void main() { gl_FragColor = vec4(1.0); }";
     e.grading.cases = 7;
@@ -45,7 +45,10 @@ private slots:
         QVERIFY(read.exerciseError.isEmpty());
         QVERIFY(read.file->exercise);
         const Exercise &e = *read.file->exercise;
-        QCOMPARE(e.title, QString("Lighting"));
+        QCOMPARE(e.title, sample().title);
+        QCOMPARE(e.task, sample().task);
+        QCOMPARE(localized(e.title, "de_DE.UTF-8"), QString("Beleuchtung"));
+        QCOMPARE(localized(e.title, "pt"), QString("Lighting")); // English when there is no pt
         QCOMPARE(e.reference.fragment, sample().reference.fragment);
         QCOMPARE(e.grading.cases, 7);
         QCOMPARE(e.grading.size, QSize(200, 100));
@@ -61,6 +64,34 @@ private slots:
         QVERIFY(back.exercise && back.exercise->reference.builtIn());
         QCOMPARE(back.exercise->reference.shading, Shading::Gouraud);
         QCOMPARE(back.exercise->reference.specular, SpecularModel::Blinn);
+    }
+
+    // The title and the task in the course's languages (issue 31): a string is English; an
+    // object gives one per language. Bad input tried: a number, an array, a code too long,
+    // a task over 8000 characters: each left out and named, the rest kept.
+    void titleAndTaskPerLanguage()
+    {
+        QJsonObject json = exerciseJson(sample());
+        QCOMPARE(json["task"].toString(), QString("Write the fragment shader.")); // only English
+        QCOMPARE(json["title"].toObject()["de"].toString(), QString("Beleuchtung"));
+        json["title"] = QJsonObject{
+            {"en", "Lighting"}, {"pt", "Iluminação"}, {"de", 5}, {"a-very-long-code", "x"}};
+        json["task"] = QJsonObject{{"en", QString(8001, 'x')}, {"pt", "Escreva o shader."}};
+        QStringList ignored;
+        const ExerciseRead read = readExercise(json, &ignored);
+        QVERIFY(read.exercise);
+        QCOMPARE(read.exercise->title, (LocalizedText{{"en", "Lighting"}, {"pt", "Iluminação"}}));
+        QCOMPARE(read.exercise->task, (LocalizedText{{"pt", "Escreva o shader."}}));
+        QCOMPARE(ignored.size(), 3);
+        QVERIFY2(ignored.join("|").contains("exercise.title.de (not text)"),
+                 qPrintable(ignored.join("|")));
+        QVERIFY(ignored.join("|").contains("exercise.task.en (8001 characters; at most 8000)"));
+        QVERIFY(
+            ignored.join("|").contains("exercise.title.a-very-long-code (not a language code)"));
+        json["title"] = QJsonArray{"Lighting"};
+        ignored.clear();
+        QVERIFY(readExercise(json, &ignored).exercise->title.isEmpty());
+        QVERIFY(ignored.join("|").contains("exercise.title (not text)"));
     }
 
     void badFieldsAreNamed()

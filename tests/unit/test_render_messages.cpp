@@ -132,10 +132,10 @@ private slots:
         QVERIFY(read.lesson);
         const QString step1 = marked("lb::Lesson", "step %1").arg(1);
         const QString step2 = marked("lb::Lesson", "step %1").arg(2);
-        QVERIFY2(
-            read.ignored.contains(marked("lb::Lesson", "%1 (%2)")
-                                      .arg(step1 + ": caption", marked("lb::Lesson", "not text"))),
-            qPrintable(read.ignored.join('\n')));
+        QVERIFY2(read.ignored.contains(
+                     marked("lb::Lesson", "%1 (%2)")
+                         .arg(step1 + ": caption", marked("lb::LocalizedText", "not text"))),
+                 qPrintable(read.ignored.join('\n')));
         // The words a file may give are its own: listed as they are spelt.
         const QString panel = marked("lb::Lesson", "\"%1\" is not one of %2")
                                   .arg("kitchen", lessonPanels().join(", "));
