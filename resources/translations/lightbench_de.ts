@@ -299,42 +299,6 @@
         <source>nothing (every case is the scene as it is)</source>
         <translation>nichts (jeder Fall ist die Szene, wie sie ist)</translation>
     </message>
-    <message>
-        <location filename="../../render/model/texture_file.cpp" line="+25"/>
-        <source>%1: an empty file, not an image</source>
-        <translation>%1: eine leere Datei, kein Bild</translation>
-    </message>
-    <message>
-        <location line="+6"/>
-        <source>%1: not an image (%2)</source>
-        <translation>%1: kein Bild (%2)</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>the formats read are %1</source>
-        <translation>lesbare Formate sind %1</translation>
-    </message>
-    <message>
-        <location line="+8"/>
-        <source>%1: %2 x %3 texels is more than a texture may have (%4 x %4)</source>
-        <translation>%1: %2 x %3 Texel sind mehr, als eine Textur haben darf (%4 x %4)</translation>
-    </message>
-    <message>
-        <location line="+31"/>
-        <location line="+7"/>
-        <source>%1: could not be read as an image: %2</source>
-        <translation>%1: konnte nicht als Bild gelesen werden: %2</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>%1: %2 x %3 texels</source>
-        <translation>%1: %2 x %3 Texel</translation>
-    </message>
-    <message>
-        <location line="+6"/>
-        <source> (scaled from %1 x %2)</source>
-        <translation> (skaliert von %1 x %2)</translation>
-    </message>
 </context>
 <context>
     <name>QPlatformTheme</name>
@@ -427,6 +391,64 @@
         <location line="+1"/>
         <source>Restore Defaults</source>
         <translation>Voreinstellungen</translation>
+    </message>
+</context>
+<context>
+    <name>lb::BoundedRead</name>
+    <message>
+        <location filename="../../render/model/bounded_read.cpp" line="+41"/>
+        <location line="+6"/>
+        <source>no such file</source>
+        <translation>Datei nicht vorhanden</translation>
+    </message>
+    <message>
+        <location line="-4"/>
+        <source>a loop of symbolic links</source>
+        <translation>eine Schleife symbolischer Links</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>a symbolic link to %1, which does not exist</source>
+        <translation>ein symbolischer Link auf das nicht vorhandene Ziel %1</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>%1 MB</source>
+        <translation>%1 MB</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>%1 KiB</source>
+        <translation>%1 KiB</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1, %2</source>
+        <extracomment>a file&apos;s size limit (%1, &quot;64 MB&quot;) and where it comes from (%2, &quot;the import memory limit&quot;)</extracomment>
+        <translation>%1, %2</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>%1: not a regular file (a folder, a device or a pipe)</source>
+        <translation>%1: keine reguläre Datei (ein Ordner, ein Gerät oder eine Pipe)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1: %2 is more than %3 may be (%4)</source>
+        <extracomment>%1 a path, %2 its size, %3 a kind of file (&quot;a scene file&quot;), %4 the limit (&quot;64 MB&quot;)</extracomment>
+        <translation>%1: %2 sind mehr, als %3 haben darf (%4)</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>%1: more than %2 may be (%3)</source>
+        <extracomment>%1 a path, %2 a kind of file (&quot;a scene file&quot;), %3 the limit (&quot;64 MB&quot;)</extracomment>
+        <translation>%1: mehr, als %2 haben darf (%3)</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>%1: not saved: %2 would take %3, more than %4 may be (%5), so it could not be opened again</source>
+        <extracomment>%1 a path, %2 what is saved (&quot;the scene&quot;), %3 its size, %4 a kind of file (&quot;a scene file&quot;), %5 the limit (&quot;64 MB&quot;)</extracomment>
+        <translation>%1: nicht gespeichert: %2 würde %3 belegen, mehr als %4 haben darf (%5), und ließe sich dann nicht wieder öffnen</translation>
     </message>
 </context>
 <context>
@@ -606,15 +628,76 @@
     </message>
 </context>
 <context>
+    <name>lb::Exercise</name>
+    <message>
+        <location filename="../../render/model/exercise.cpp" line="+122"/>
+        <source>%1 (%2)</source>
+        <extracomment>a field of an exercise as the file spells it (%1, &quot;exercise.grading.cases&quot;) and why it was not used (%2)</extracomment>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1: not an object</source>
+        <translation>%1: kein JSON-Objekt</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>unknown field</source>
+        <translation>unbekanntes Feld</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1: needs both a vertex and a fragment shader</source>
+        <translation>%1: braucht sowohl einen Vertex- als auch einen Fragment-Shader</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <location line="+5"/>
+        <source>not %1</source>
+        <extracomment>%1 the words a file may give, as it spells them (&quot;phong, gouraud, flat&quot;)</extracomment>
+        <translation>keiner der Werte %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1: no reference program (&quot;reference&quot;: {&quot;vertex&quot;: ..., &quot;fragment&quot;: ...} or {&quot;builtIn&quot;: {...}})</source>
+        <translation>%1: kein Referenzprogramm (&quot;reference&quot;: {&quot;vertex&quot;: ..., &quot;fragment&quot;: ...} oder {&quot;builtIn&quot;: {...}})</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>not a number</source>
+        <translation>keine Zahl</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>out of range, clamped</source>
+        <translation>außerhalb des zulässigen Bereichs, auf die Grenze gesetzt</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>not [width, height] in whole pixels, 16 to %1</source>
+        <translation>nicht [Breite, Höhe] in ganzen Pixeln, 16 bis %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>not a list of parameters; all of them vary</source>
+        <translation>keine Liste von Parametern; alle werden variiert</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>no such parameter &apos;%1&apos;; those are %2</source>
+        <translation>unbekannter Parameter &apos;%1&apos;; möglich sind %2</translation>
+    </message>
+</context>
+<context>
     <name>lb::ExercisePanel</name>
     <message>
         <location filename="../../widgets/exercise_panel.cpp" line="+30"/>
-        <location line="+119"/>
+        <location line="+121"/>
         <source>Check my work</source>
         <translation>Arbeit prüfen</translation>
     </message>
     <message>
-        <location line="-118"/>
+        <location line="-120"/>
         <source>Draws the exercise&apos;s cases with the program in the editor and with the reference, as the teacher&apos;s grading does, and lists each case (F9)</source>
         <translation>Zeichnet die Fälle der Übung mit dem Programm im Editor und mit der Referenz, wie es die Bewertung der Lehrkraft tut, und listet jeden Fall auf (F9)</translation>
     </message>
@@ -679,7 +762,7 @@
         <translation>Der Anteil der von einem der beiden Programme gezeichneten Pixel, die höchstens %1/255 von der Referenz abweichen, bei %2 x %3: Die Differenzansicht zählt einen Fall genauso (in ihrer eigenen Größe)</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+8"/>
         <source>Exercise</source>
         <translation>Übung</translation>
     </message>
@@ -823,6 +906,236 @@
     </message>
 </context>
 <context>
+    <name>lb::FileLimit</name>
+    <message>
+        <location filename="../../render/import/import_process.cpp" line="+56"/>
+        <source>a texture file</source>
+        <translation>eine Texturdatei</translation>
+    </message>
+    <message>
+        <location line="+136"/>
+        <source>a mesh file</source>
+        <translation>eine Mesh-Datei</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the import memory limit</source>
+        <translation>die Speichergrenze für den Import</translation>
+    </message>
+    <message>
+        <location filename="../../render/model/lesson.cpp" line="+200"/>
+        <location line="+42"/>
+        <source>a lesson file</source>
+        <translation>eine Lektionsdatei</translation>
+    </message>
+    <message>
+        <location line="-1"/>
+        <source>the lesson</source>
+        <translation>die Lektion</translation>
+    </message>
+    <message>
+        <location filename="../../render/model/scene_file.cpp" line="+160"/>
+        <location line="+15"/>
+        <source>a scene file</source>
+        <translation>eine Szenendatei</translation>
+    </message>
+    <message>
+        <location line="-1"/>
+        <source>the scene</source>
+        <translation>die Szene</translation>
+    </message>
+    <message>
+        <location filename="../../render/model/shader_document.cpp" line="+19"/>
+        <source>a shader</source>
+        <translation>ein Shader</translation>
+    </message>
+    <message>
+        <location filename="../../render/model/texture_file.cpp" line="+31"/>
+        <source>an image</source>
+        <translation>ein Bild</translation>
+    </message>
+</context>
+<context>
+    <name>lb::Grading</name>
+    <message>
+        <location filename="../../render/model/grading.cpp" line="+83"/>
+        <source>passed</source>
+        <extracomment>the outcome of a case, at the end of a grading sheet&apos;s title</extracomment>
+        <translation>bestanden</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>failed</source>
+        <translation>nicht bestanden</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 - case %2: largest difference %3/255, %4% of %5 pixels within tolerance, %6</source>
+        <translation>%1 - Fall %2: größte Differenz %3/255, %4% von %5 Pixeln innerhalb der Toleranz, %6</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 - case %2: largest difference %3/255 at (%4, %5), %6% of %7 pixels within tolerance, %8</source>
+        <extracomment>%4, %5: the pixel that differs most</extracomment>
+        <translation>%1 - Fall %2: größte Differenz %3/255 bei (%4, %5), %6% von %7 Pixeln innerhalb der Toleranz, %8</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>student</source>
+        <extracomment>the captions under a grading sheet&apos;s three frames</extracomment>
+        <translation>Abgabe</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>reference</source>
+        <translation>Referenz</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>|student - reference| (white: 64/255)</source>
+        <translation>|Abgabe - Referenz| (weiß: 64/255)</translation>
+    </message>
+</context>
+<context>
+    <name>lb::ImageTruncation</name>
+    <message>
+        <location filename="../../render/model/image_truncation.cpp" line="+33"/>
+        <source>no image data (no scan)</source>
+        <translation>keine Bilddaten (kein Scan-Abschnitt)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the file ends inside the image data (no end-of-image marker): cut short?</source>
+        <translation>die Datei endet mitten in den Bilddaten (keine End-of-Image-Markierung): abgeschnitten?</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>the file ends inside its header</source>
+        <translation>die Datei endet mitten im Dateikopf</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>the file ends inside the image data (%1 of %2 bytes): cut short?</source>
+        <translation>die Datei endet mitten in den Bilddaten (%1 von %2 Bytes): abgeschnitten?</translation>
+    </message>
+</context>
+<context>
+    <name>lb::ImportProcess</name>
+    <message>
+        <location filename="../../render/import/import_process.cpp" line="-161"/>
+        <source>the importer crashed with a segmentation fault while reading this file; the workbench is fine</source>
+        <translation>der Import-Helfer ist beim Lesen dieser Datei mit einem Speicherzugriffsfehler (Segmentation Fault) abgestürzt; die Werkbank arbeitet normal weiter</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>the importer crashed with an abort while reading this file; the workbench is fine</source>
+        <translation>der Import-Helfer ist beim Lesen dieser Datei mit einem Abbruch (Abort) abgestürzt; die Werkbank arbeitet normal weiter</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>the importer crashed with a bus error while reading this file; the workbench is fine</source>
+        <translation>der Import-Helfer ist beim Lesen dieser Datei mit einem Busfehler abgestürzt; die Werkbank arbeitet normal weiter</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>the importer crashed with an arithmetic error while reading this file; the workbench is fine</source>
+        <translation>der Import-Helfer ist beim Lesen dieser Datei mit einem arithmetischen Fehler abgestürzt; die Werkbank arbeitet normal weiter</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>the importer crashed with an illegal instruction while reading this file; the workbench is fine</source>
+        <translation>der Import-Helfer ist beim Lesen dieser Datei mit einem ungültigen Maschinenbefehl abgestürzt; die Werkbank arbeitet normal weiter</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the importer crashed with signal %1 (%2) while reading this file; the workbench is fine</source>
+        <extracomment>%1 a signal&apos;s number, %2 the system&apos;s name for it</extracomment>
+        <translation>der Import-Helfer ist beim Lesen dieser Datei mit Signal %1 (%2) abgestürzt; die Werkbank arbeitet normal weiter</translation>
+    </message>
+    <message>
+        <location line="+35"/>
+        <source>texture &apos;%1&apos;: outside the mesh&apos;s folder</source>
+        <translation>Textur &apos;%1&apos;: außerhalb des Ordners des Meshes</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>texture &apos;%1&apos; not found</source>
+        <translation>Textur &apos;%1&apos; nicht gefunden</translation>
+    </message>
+    <message>
+        <location line="+42"/>
+        <source>%1: cannot start the import helper &apos;%2&apos;: %3</source>
+        <translation>%1: Der Import-Helfer &apos;%2&apos; kann nicht gestartet werden: %3</translation>
+    </message>
+    <message>
+        <location line="+69"/>
+        <source>%1: not readable (permissions)</source>
+        <translation>%1: nicht lesbar (Zugriffsrechte)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1: the file is empty</source>
+        <translation>%1: Die Datei ist leer</translation>
+    </message>
+    <message>
+        <location line="+62"/>
+        <source>%1: cancelled</source>
+        <translation>%1: abgebrochen</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1: gave up after %2 s (the import time limit)</source>
+        <translation>%1: nach %2 s aufgegeben (die Zeitgrenze für den Import)</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>gave up after %1 s of CPU time (the import time limit)</source>
+        <translation>nach %1 s CPU-Zeit aufgegeben (die Zeitgrenze für den Import)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>the import helper was killed (by the system, for memory?)</source>
+        <translation>der Import-Helfer wurde beendet (vom System, wegen Speichermangel?)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>out of memory: reading this file needs more than the import memory limit (%1 MB)</source>
+        <translation>nicht genug Speicher: Das Lesen dieser Datei braucht mehr als die Speichergrenze für den Import (%1 MB)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>the import helper stopped (exit code %1) before sending the whole mesh</source>
+        <translation>der Import-Helfer hat sich beendet (Exit-Code %1), bevor er das ganze Mesh gesendet hatte</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>the import helper stopped (exit code %1) before sending the whole mesh: %2</source>
+        <extracomment>%2 the last line the helper wrote on its error output (its own words, in English)</extracomment>
+        <translation>der Import-Helfer hat sich beendet (Exit-Code %1), bevor er das ganze Mesh gesendet hatte: %2</translation>
+    </message>
+    <message>
+        <location line="+40"/>
+        <source>embedded texture unreadable: %1</source>
+        <translation>eingebettete Textur nicht lesbar: %1</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>texture %1</source>
+        <extracomment>%1 why a texture file cannot be used, &quot;PATH: reason&quot;</extracomment>
+        <translation>Textur %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>texture &apos;%1&apos;: %2</source>
+        <translation>Textur &apos;%1&apos;: %2</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>the file has a texture but no texture coordinates</source>
+        <translation>die Datei hat eine Textur, aber keine Texturkoordinaten</translation>
+    </message>
+</context>
+<context>
     <name>lb::Language</name>
     <message>
         <location filename="../../app/language.cpp" line="+54"/>
@@ -859,6 +1172,84 @@
         <location line="+2"/>
         <source>&amp;Later</source>
         <translation>&amp;Später</translation>
+    </message>
+</context>
+<context>
+    <name>lb::Lesson</name>
+    <message>
+        <location filename="../../render/model/lesson.cpp" line="-210"/>
+        <source>%1 (%2)</source>
+        <extracomment>a field of a lesson file (%1, &quot;step 2: caption.de&quot;) and why it was not used (%2)</extracomment>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>&quot;%1&quot; is not one of %2</source>
+        <extracomment>%1 a word the file gave, %2 the words allowed (as files spell them)</extracomment>
+        <translation>&quot;%1&quot; ist keiner der Werte %2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>a value that is not text is not one of %1</source>
+        <translation>kein Text und damit keiner der Werte %1</translation>
+    </message>
+    <message>
+        <location line="+30"/>
+        <source>%1: the scene file %2 (%3) is past what is left of the lesson&apos;s limit (%4 for the lesson and its scene files)</source>
+        <extracomment>%1 the step (&quot;step 3&quot;), %2 a path, %3 its size, %4 the limit</extracomment>
+        <translation>%1: Die Szenendatei %2 (%3) übersteigt, was von der Größengrenze der Lektion noch übrig ist (%4 für die Lektion und ihre Szenendateien)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>%1: no scene (&quot;scene&quot; must be a scene object or the name of a scene file)</source>
+        <translation>%1: keine Szene (&quot;scene&quot; muss ein Szenenobjekt oder der Name einer Szenendatei sein)</translation>
+    </message>
+    <message>
+        <location line="+40"/>
+        <source>%1: not a lesson file: %2 at byte %3</source>
+        <extracomment>%1 a path, %2 Qt&apos;s JSON parser&apos;s reason</extracomment>
+        <translation>%1: keine Lektionsdatei: %2 bei Byte %3</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1: a scene file, not a lesson (open it with File &gt; Open Scene)</source>
+        <translation>%1: eine Szenendatei, keine Lektion (öffnen Sie sie mit Datei &gt; Szene öffnen)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1: not a lesson file (&quot;format&quot; is not &quot;%2&quot;)</source>
+        <translation>%1: keine Lektionsdatei (&quot;format&quot; ist nicht &quot;%2&quot;)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>missing or not a number; read as %1</source>
+        <translation>fehlt oder ist keine Zahl; gelesen als %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>newer than this lightbench&apos;s %1: what it does not know is left out</source>
+        <translation>neuer als Version %1, die dieses lightbench kennt: Unbekanntes wird ausgelassen</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1: the lesson has no steps (&quot;steps&quot; must be a list of steps)</source>
+        <translation>%1: Die Lektion hat keine Schritte (&quot;steps&quot; muss eine Liste von Schritten sein)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1: %2 steps; a lesson may have at most %3</source>
+        <translation>%1: %2 Schritte; eine Lektion darf höchstens %3 haben</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>step %1</source>
+        <extracomment>where in a lesson file a message is about: &quot;step 3: title (not text)&quot;</extracomment>
+        <translation>Schritt %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1: not an object</source>
+        <translation>%1: kein JSON-Objekt</translation>
     </message>
 </context>
 <context>
@@ -1331,6 +1722,122 @@
         <location line="+10"/>
         <source>Loading %1: %2</source>
         <translation>%1 wird geladen: %2</translation>
+    </message>
+</context>
+<context>
+    <name>lb::LocalizedText</name>
+    <message>
+        <location filename="../../render/model/localized_text.cpp" line="+29"/>
+        <source>not text</source>
+        <translation>kein Text</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 characters; at most %2</source>
+        <translation>%1 Zeichen; höchstens %2</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>not a language code</source>
+        <translation>kein Sprachcode</translation>
+    </message>
+</context>
+<context>
+    <name>lb::Loops</name>
+    <message>
+        <location filename="../../render/glsl/loop_messages.cpp" line="+18"/>
+        <source>this loop runs %1 times for every fragment: a frame would take seconds or more on any GPU (llvmpipe stops it after 65,535 steps and draws a wrong picture)</source>
+        <translation>diese Schleife läuft für jedes Fragment %1-mal: Ein Bild würde auf jeder GPU Sekunden oder länger dauern (llvmpipe bricht sie nach 65.535 Schritten ab und zeichnet ein falsches Bild)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>this loop runs %1 times for every fragment (its counter moves away from its bound: only wrapping around ends it): a frame would take seconds or more on any GPU (llvmpipe stops it after 65,535 steps and draws a wrong picture)</source>
+        <translation>diese Schleife läuft für jedes Fragment %1-mal (ihr Zähler entfernt sich von seiner Grenze: nur ein Zahlenüberlauf beendet sie): Ein Bild würde auf jeder GPU Sekunden oder länger dauern (llvmpipe bricht sie nach 65.535 Schritten ab und zeichnet ein falsches Bild)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>this loop runs %1 times for every vertex: a frame would take seconds or more on any GPU (llvmpipe stops it after 65,535 steps and draws a wrong picture)</source>
+        <translation>diese Schleife läuft für jeden Vertex %1-mal: Ein Bild würde auf jeder GPU Sekunden oder länger dauern (llvmpipe bricht sie nach 65.535 Schritten ab und zeichnet ein falsches Bild)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>this loop runs %1 times for every vertex (its counter moves away from its bound: only wrapping around ends it): a frame would take seconds or more on any GPU (llvmpipe stops it after 65,535 steps and draws a wrong picture)</source>
+        <translation>diese Schleife läuft für jeden Vertex %1-mal (ihr Zähler entfernt sich von seiner Grenze: nur ein Zahlenüberlauf beendet sie): Ein Bild würde auf jeder GPU Sekunden oder länger dauern (llvmpipe bricht sie nach 65.535 Schritten ab und zeichnet ein falsches Bild)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>this program never finishes a frame: the loop here runs %1 times for every fragment: a frame would take seconds or more on any GPU (llvmpipe stops it after 65,535 steps and draws a wrong picture)</source>
+        <translation>dieses Programm stellt nie ein Bild fertig: Die Schleife hier läuft für jedes Fragment %1-mal: Ein Bild würde auf jeder GPU Sekunden oder länger dauern (llvmpipe bricht sie nach 65.535 Schritten ab und zeichnet ein falsches Bild)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>this program never finishes a frame: the loop here runs %1 times for every fragment (its counter moves away from its bound: only wrapping around ends it): a frame would take seconds or more on any GPU (llvmpipe stops it after 65,535 steps and draws a wrong picture)</source>
+        <translation>dieses Programm stellt nie ein Bild fertig: Die Schleife hier läuft für jedes Fragment %1-mal (ihr Zähler entfernt sich von seiner Grenze: nur ein Zahlenüberlauf beendet sie): Ein Bild würde auf jeder GPU Sekunden oder länger dauern (llvmpipe bricht sie nach 65.535 Schritten ab und zeichnet ein falsches Bild)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>this program never finishes a frame: the loop here runs %1 times for every vertex: a frame would take seconds or more on any GPU (llvmpipe stops it after 65,535 steps and draws a wrong picture)</source>
+        <translation>dieses Programm stellt nie ein Bild fertig: Die Schleife hier läuft für jeden Vertex %1-mal: Ein Bild würde auf jeder GPU Sekunden oder länger dauern (llvmpipe bricht sie nach 65.535 Schritten ab und zeichnet ein falsches Bild)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>this program never finishes a frame: the loop here runs %1 times for every vertex (its counter moves away from its bound: only wrapping around ends it): a frame would take seconds or more on any GPU (llvmpipe stops it after 65,535 steps and draws a wrong picture)</source>
+        <translation>dieses Programm stellt nie ein Bild fertig: Die Schleife hier läuft für jeden Vertex %1-mal (ihr Zähler entfernt sich von seiner Grenze: nur ein Zahlenüberlauf beendet sie): Ein Bild würde auf jeder GPU Sekunden oder länger dauern (llvmpipe bricht sie nach 65.535 Schritten ab und zeichnet ein falsches Bild)</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>this loop never ends: it has no condition and nothing in it breaks, returns or discards (the driver may drop it and draw garbage, or hang)</source>
+        <translation>diese Schleife endet nie: Sie hat keine Bedingung, und nichts in ihr führt break, return oder discard aus (der Treiber kann sie verwerfen und Unsinn zeichnen oder hängen bleiben)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>this loop never ends: its condition is always true and nothing in it breaks, returns or discards (the driver may drop it and draw garbage, or hang)</source>
+        <translation>diese Schleife endet nie: Ihre Bedingung ist immer wahr, und nichts in ihr führt break, return oder discard aus (der Treiber kann sie verwerfen und Unsinn zeichnen oder hängen bleiben)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>this program never finishes a frame: the loop here has no condition (or an always-true one) and no break, return or discard</source>
+        <translation>dieses Programm stellt nie ein Bild fertig: Die Schleife hier hat keine Bedingung (oder eine immer wahre) und kein break, return oder discard</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>this loop never ends once it starts: its condition reads %1, and nothing in the loop changes it</source>
+        <extracomment>%1 the names the loop&apos;s condition reads, as the shader spells them (&quot;i, n&quot;)</extracomment>
+        <translation>diese Schleife endet nie, sobald sie einmal läuft: Ihre Bedingung liest %1, und nichts in der Schleife ändert diesen Wert</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>this loop never ends once it starts: its condition reads %1, and nothing in the loop changes them</source>
+        <translation>diese Schleife endet nie, sobald sie einmal läuft: Ihre Bedingung liest %1, und nichts in der Schleife ändert diese Werte</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1 (the loop comes from macro %2, used on this line)</source>
+        <extracomment>%1 a message about a loop, %2 the name of the macro that writes the loop</extracomment>
+        <translation>%1 (die Schleife stammt aus dem Makro %2, das in dieser Zeile verwendet wird)</translation>
+    </message>
+</context>
+<context>
+    <name>lb::MacroExpansion</name>
+    <message>
+        <location filename="../../render/glsl/macro_expansion.cpp" line="+94"/>
+        <source>macro %1 expands through more than %2 macros, one inside another: refused before the driver sees it</source>
+        <translation>Makro %1 expandiert über mehr als %2 ineinander verschachtelte Makros: abgelehnt, bevor der Treiber es sieht</translation>
+    </message>
+    <message>
+        <location line="+29"/>
+        <source>macro %1 expands to more than a million tokens (a macro that doubles itself?): refused before the driver sees it</source>
+        <translation>Makro %1 expandiert zu mehr als einer Million Tokens (ein Makro, das sich selbst verdoppelt?): abgelehnt, bevor der Treiber es sieht</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>macro %1 expands to more than 1 MB of text (a macro that doubles itself?): refused before the driver sees it</source>
+        <translation>Makro %1 expandiert zu mehr als 1 MB Text (ein Makro, das sich selbst verdoppelt?): abgelehnt, bevor der Treiber es sieht</translation>
+    </message>
+    <message>
+        <location line="+111"/>
+        <source>macro %1 calls macros inside macro arguments more than %2 deep: refused before the driver sees it</source>
+        <translation>Makro %1 ruft Makros in Makroargumenten mehr als %2 Ebenen tief auf: abgelehnt, bevor der Treiber es sieht</translation>
     </message>
 </context>
 <context>
@@ -2104,6 +2611,58 @@
     </message>
 </context>
 <context>
+    <name>lb::MeshFile</name>
+    <message>
+        <location filename="../../render/model/mesh_file.cpp" line="+41"/>
+        <source>%1 points, lines or broken faces skipped</source>
+        <translation>%1 Punkte, Linien oder defekte Flächen übersprungen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 vertices with non-finite coordinates dropped, with the %2 triangles using them</source>
+        <translation>%1 Vertices mit nicht endlichen Koordinaten entfernt, samt der %2 Dreiecke, die sie verwenden</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 normals with non-finite coordinates: the file&apos;s normals not used</source>
+        <translation>%1 Normalen mit nicht endlichen Koordinaten: Die Normalen der Datei werden nicht verwendet</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1: %2 vertices, %3 triangles</source>
+        <translation>%1: %2 Vertices, %3 Dreiecke</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1: %2 vertices, %3 triangles, loaded in %4 s</source>
+        <translation>%1: %2 Vertices, %3 Dreiecke, geladen in %4 s</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1: %2 vertices, %3 triangles, loaded in %4 s, normals generated</source>
+        <translation>%1: %2 Vertices, %3 Dreiecke, geladen in %4 s, Normalen erzeugt</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1: %2 vertices, %3 triangles, loaded in %4 s, normals generated (the file has none)</source>
+        <translation>%1: %2 Vertices, %3 Dreiecke, geladen in %4 s, Normalen erzeugt (die Datei hat keine)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 (%2)</source>
+        <extracomment>a mesh&apos;s summary (%1) and what was skipped or not used in its file (%2, a list)</extracomment>
+        <translation>%1 (%2)</translation>
+    </message>
+</context>
+<context>
+    <name>lb::MessageText</name>
+    <message>
+        <location filename="../../render/model/message_text.cpp" line="+80"/>
+        <source>... and %1 more</source>
+        <translation>... und %1 weitere</translation>
+    </message>
+</context>
+<context>
     <name>lb::NumberBox</name>
     <message>
         <location filename="../../widgets/number_box.cpp" line="+68"/>
@@ -2144,32 +2703,12 @@
 <context>
     <name>lb::ObjectLoader</name>
     <message>
-        <location filename="../../render/import/object_loader.cpp" line="+161"/>
+        <location filename="../../render/import/object_loader.cpp" line="+160"/>
         <source>%1 (the objects naming it show the mesh file&apos;s texture or the checker, and keep its name for when the file is back)</source>
         <translation>%1 (die Objekte, die diese Datei nennen, zeigen die Textur der Mesh-Datei oder das Schachbrettmuster und behalten den Dateinamen für den Fall, dass die Datei wieder da ist)</translation>
     </message>
     <message>
-        <location line="+22"/>
-        <source>%1: %2 vertices, %3 triangles</source>
-        <translation>%1: %2 Vertices, %3 Dreiecke</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>, loaded in %1 s</source>
-        <translation>, geladen in %1 s</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>, normals generated</source>
-        <translation>, Normalen erzeugt</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>, normals generated (the file has none)</source>
-        <translation>, Normalen erzeugt (die Datei hat keine)</translation>
-    </message>
-    <message>
-        <location line="+51"/>
+        <location line="+68"/>
         <source>%1: not used: its object was removed</source>
         <translation>%1: nicht verwendet: sein Objekt wurde entfernt</translation>
     </message>
@@ -2193,6 +2732,40 @@
         <location line="-62"/>
         <source>building</source>
         <translation>wird erstellt</translation>
+    </message>
+</context>
+<context>
+    <name>lb::ObjectMesh</name>
+    <message>
+        <location filename="../../render/model/object_mesh.cpp" line="+32"/>
+        <source>out of memory building %1&apos;s normals (%2 triangles)</source>
+        <translation>nicht genug Speicher zum Erzeugen der Normalen von %1 (%2 Dreiecke)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>out of memory building the cube</source>
+        <translation>nicht genug Speicher zum Erstellen des Würfels</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>out of memory building the sphere at tessellation %1</source>
+        <translation>nicht genug Speicher zum Erstellen der Kugel mit Tessellierung %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>out of memory building the torus at tessellation %1</source>
+        <translation>nicht genug Speicher zum Erstellen des Torus mit Tessellierung %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>out of memory building the plane at tessellation %1</source>
+        <translation>nicht genug Speicher zum Erstellen der Ebene mit Tessellierung %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <location line="+69"/>
+        <source>out of memory building a mesh</source>
+        <translation>nicht genug Speicher zum Erstellen eines Meshes</translation>
     </message>
 </context>
 <context>
@@ -2414,6 +2987,29 @@
     </message>
 </context>
 <context>
+    <name>lb::Offscreen</name>
+    <message>
+        <location filename="../../render/gl/offscreen.cpp" line="+47"/>
+        <source>cannot create an OpenGL context (is there an X server with OpenGL?)</source>
+        <translation>OpenGL-Kontext kann nicht erstellt werden (gibt es einen X-Server mit OpenGL?)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>cannot make the OpenGL context current</source>
+        <translation>OpenGL-Kontext kann nicht aktiviert werden</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>OpenGL 3.3 is needed, the driver gives %1.%2</source>
+        <translation>OpenGL 3.3 wird benötigt, der Treiber bietet %1.%2</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>cannot create a %1x%2 framebuffer</source>
+        <translation>Framebuffer der Größe %1x%2 kann nicht erstellt werden</translation>
+    </message>
+</context>
+<context>
     <name>lb::PreferencesDialog</name>
     <message>
         <location filename="../../widgets/preferences_dialog.cpp" line="+15"/>
@@ -2475,6 +3071,34 @@
         <location line="+4"/>
         <source>So the class sees where they go; off: each step jumps</source>
         <translation>Damit die Klasse sieht, wohin sie sich bewegen; aus: jeder Schritt springt</translation>
+    </message>
+</context>
+<context>
+    <name>lb::Presets</name>
+    <message>
+        <location filename="../../render/glsl/presets.cpp" line="+37"/>
+        <source>Built-in: Phong shading (per fragment)</source>
+        <translation>Eingebaut: Phong-Schattierung (pro Fragment)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Built-in: Gouraud shading (per vertex)</source>
+        <translation>Eingebaut: Gouraud-Schattierung (pro Vertex)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Slides: Gouraud, WebGL 1 as printed</source>
+        <translation>Folien: Gouraud, WebGL 1 wie abgedruckt</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Slides: Phong shading, WebGL 1 as printed</source>
+        <translation>Folien: Phong-Schattierung, WebGL 1 wie abgedruckt</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Toon (the exercise&apos;s &quot;like Zelda&quot;), GLSL 3.30</source>
+        <translation>Toon („wie Zelda“ aus der Übung), GLSL 3.30</translation>
     </message>
 </context>
 <context>
@@ -2695,6 +3319,96 @@
     </message>
 </context>
 <context>
+    <name>lb::Program</name>
+    <message>
+        <location filename="../../render/gl/program.cpp" line="+69"/>
+        <source>the vertex shader is empty</source>
+        <translation>der Vertex-Shader ist leer</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the fragment shader is empty</source>
+        <translation>der Fragment-Shader ist leer</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>the vertex shader is %1 KiB; lightbench compiles sources up to %2 KiB</source>
+        <translation>der Vertex-Shader ist %1 KiB groß; lightbench kompiliert Quelltexte bis %2 KiB</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the fragment shader is %1 KiB; lightbench compiles sources up to %2 KiB</source>
+        <translation>der Fragment-Shader ist %1 KiB groß; lightbench kompiliert Quelltexte bis %2 KiB</translation>
+    </message>
+    <message>
+        <location line="+29"/>
+        <source>the vertex shader does not compile (the driver gave no reason)</source>
+        <translation>der Vertex-Shader lässt sich nicht kompilieren (der Treiber nennt keinen Grund)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the fragment shader does not compile (the driver gave no reason)</source>
+        <translation>der Fragment-Shader lässt sich nicht kompilieren (der Treiber nennt keinen Grund)</translation>
+    </message>
+    <message>
+        <location line="+167"/>
+        <source>the program does not link (no reason given)</source>
+        <translation>das Programm lässt sich nicht linken (kein Grund angegeben)</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>no position input: the mesh reaches the shader through an attribute named vPosition, aVertexPosition, position or aPosition</source>
+        <translation>keine Positionseingabe: Das Mesh gelangt über ein Attribut namens vPosition, aVertexPosition, position oder aPosition in den Shader</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the fragment shader writes no colour: assign gl_FragColor (no #version, #version 100) or declare an out vec4 (#version 300 es, 330 and later)</source>
+        <translation>der Fragment-Shader schreibt keine Farbe: Weisen Sie gl_FragColor zu (ohne #version, #version 100) oder deklarieren Sie ein out vec4 (#version 300 es, 330 und neuer)</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <location line="+87"/>
+        <source>built-in shader &apos;%1&apos; failed:
+%2</source>
+        <extracomment>%1 a built-in program&apos;s name, %2 its build log</extracomment>
+        <translation>eingebauter Shader &apos;%1&apos; fehlgeschlagen:
+%2</translation>
+    </message>
+    <message>
+        <location line="-7"/>
+        <source>built-in shader &apos;%1&apos; lacks a &apos;#define MAX_LIGHTS&apos;, &apos;LIGHT_FACTORS&apos; or &apos;SHOW_CHOICES&apos; line
+</source>
+        <translation>dem eingebauten Shader &apos;%1&apos; fehlt eine Zeile &apos;#define MAX_LIGHTS&apos;, &apos;LIGHT_FACTORS&apos; oder &apos;SHOW_CHOICES&apos;
+</translation>
+    </message>
+</context>
+<context>
+    <name>lb::ProgramTrial</name>
+    <message>
+        <location filename="../../render/model/program_trial.cpp" line="+32"/>
+        <source>drawing one frame with this program would take about %1 at %2x%3 (measured %4 at %5x%6; the budget is %7): an endless or very long loop?</source>
+        <extracomment>%1 the estimate at %2x%3 pixels, %4 the time measured at %5x%6, %7 the budget</extracomment>
+        <translation>ein Bild mit diesem Programm zu zeichnen würde bei %2x%3 etwa %1 dauern (gemessen %4 bei %5x%6; das Budget beträgt %7): eine Endlosschleife oder sehr lange Schleife?</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>drawing one frame with this program would take about %1 at %2x%3 (measured %4 at %5x%6; the budget is %7): too much work for every pixel?</source>
+        <translation>ein Bild mit diesem Programm zu zeichnen würde bei %2x%3 etwa %1 dauern (gemessen %4 bei %5x%6; das Budget beträgt %7): zu viel Rechenarbeit pro Pixel?</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1 s</source>
+        <extracomment>a duration in seconds</extracomment>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 ms</source>
+        <extracomment>a duration in milliseconds</extracomment>
+        <translation>%1 ms</translation>
+    </message>
+</context>
+<context>
     <name>lb::RecentFiles</name>
     <message>
         <location filename="../../widgets/recent_files.cpp" line="+55"/>
@@ -2705,6 +3419,68 @@
         <location line="+4"/>
         <source>Clear the list</source>
         <translation>Liste leeren</translation>
+    </message>
+</context>
+<context>
+    <name>lb::SafeWrite</name>
+    <message>
+        <location filename="../../render/model/safe_write.cpp" line="+69"/>
+        <location line="+13"/>
+        <source>a loop of symbolic links</source>
+        <translation>eine Schleife symbolischer Links</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>not a regular file (a device, a pipe or a folder); not replaced</source>
+        <translation>keine reguläre Datei (ein Gerät, eine Pipe oder ein Ordner); nicht ersetzt</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>the folder %1 does not exist</source>
+        <translation>der Ordner %1 existiert nicht</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 is not a folder</source>
+        <translation>%1 ist kein Ordner</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>cannot write in %1: %2</source>
+        <translation>in %1 kann nicht geschrieben werden: %2</translation>
+    </message>
+    <message>
+        <location line="+136"/>
+        <source>no image to write</source>
+        <translation>kein Bild zum Schreiben</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the PNG could not be encoded</source>
+        <translation>das PNG konnte nicht kodiert werden</translation>
+    </message>
+</context>
+<context>
+    <name>lb::Scene</name>
+    <message>
+        <location filename="../../render/model/scene.cpp" line="+412"/>
+        <source>cube</source>
+        <translation>Würfel</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>sphere</source>
+        <translation>Kugel</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>torus</source>
+        <translation>Torus</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>plane</source>
+        <translation>Ebene</translation>
     </message>
 </context>
 <context>
@@ -2917,6 +3693,234 @@
     </message>
 </context>
 <context>
+    <name>lb::SceneBudget</name>
+    <message>
+        <location filename="../../render/model/scene_budget.cpp" line="+63"/>
+        <location line="+2"/>
+        <source>%1 million</source>
+        <translation>%1 Millionen</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+27"/>
+        <source>%n object(s) at tessellation %1 would make %2 triangles (~%3)</source>
+        <extracomment>what a scene asks for; %n the objects in the scene</extracomment>
+        <translation>
+            <numerusform>%n Objekt mit Tessellierung %1 ergäbe %2 Dreiecke (~%3)</numerusform>
+            <numerusform>%n Objekte mit Tessellierung %1 ergäben %2 Dreiecke (~%3)</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+3"/>
+        <source>%n object(s) at tessellation up to %1 would make %2 triangles (~%3)</source>
+        <translation>
+            <numerusform>%n Objekt mit Tessellierung bis %1 ergäbe %2 Dreiecke (~%3)</numerusform>
+            <numerusform>%n Objekte mit Tessellierung bis %1 ergäben %2 Dreiecke (~%3)</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+10"/>
+        <source>tessellation lowered to %1 on %n object(s) (%2) to fit %3, the most a scene may take on this machine (%4 of memory): %5 triangles now</source>
+        <extracomment>what was done about it; %n the objects lowered, %2 their names</extracomment>
+        <translation>
+            <numerusform>Tessellierung bei %n Objekt (%2) auf %1 gesenkt, um unter %3 zu bleiben (das Maximum für eine Szene auf diesem Rechner mit %4 Arbeitsspeicher): jetzt %5 Dreiecke</numerusform>
+            <numerusform>Tessellierung bei %n Objekten (%2) auf %1 gesenkt, um unter %3 zu bleiben (das Maximum für eine Szene auf diesem Rechner mit %4 Arbeitsspeicher): jetzt %5 Dreiecke</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+4"/>
+        <source>tessellation lowered to %1 on %n object(s) (%2) and still over %3, the most a scene may take on this machine (%4 of memory): ~%5 (its mesh files count in full)</source>
+        <translation>
+            <numerusform>Tessellierung bei %n Objekt (%2) auf %1 gesenkt und trotzdem über %3 (das Maximum für eine Szene auf diesem Rechner mit %4 Arbeitsspeicher): ~%5 (die Mesh-Dateien der Szene zählen voll)</numerusform>
+            <numerusform>Tessellierung bei %n Objekten (%2) auf %1 gesenkt und trotzdem über %3 (das Maximum für eine Szene auf diesem Rechner mit %4 Arbeitsspeicher): ~%5 (die Mesh-Dateien der Szene zählen voll)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1; %2</source>
+        <extracomment>what a scene asked for (%1) and what was lowered to fit it in memory (%2)</extracomment>
+        <translation>%1; %2</translation>
+    </message>
+    <message>
+        <location line="+109"/>
+        <source>%1 GB</source>
+        <translation>%1 GB</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 MB</source>
+        <translation>%1 MB</translation>
+    </message>
+</context>
+<context>
+    <name>lb::SceneFile</name>
+    <message>
+        <location filename="../../render/model/scene_file.cpp" line="-136"/>
+        <source>not true or false; read as false</source>
+        <translation>nicht true oder false; als false gelesen</translation>
+    </message>
+    <message>
+        <location line="+56"/>
+        <source>%1: not a scene file: %2 at byte %3</source>
+        <extracomment>%1 a path, %2 Qt&apos;s JSON parser&apos;s reason</extracomment>
+        <translation>%1: keine Szenendatei: %2 bei Byte %3</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1: not a scene file: the JSON is not an object</source>
+        <translation>%1: keine Szenendatei: Das JSON ist kein Objekt</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>expected &quot;%1&quot;</source>
+        <translation>erwartet: &quot;%1&quot;</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>missing or not a number; read as %1</source>
+        <translation>fehlt oder ist keine Zahl; gelesen als %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>newer than this lightbench&apos;s %1: what it does not know is left out</source>
+        <translation>neuer als Version %1, die dieses lightbench kennt: Unbekanntes wird ausgelassen</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>needs vertex and fragment sources as strings</source>
+        <translation>braucht Vertex- und Fragment-Quelltext als Zeichenketten</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>not an object</source>
+        <translation>kein JSON-Objekt</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1 (the section is kept as it is)</source>
+        <extracomment>%1 why an exercise section cannot be graded against</extracomment>
+        <translation>%1 (der Abschnitt bleibt unverändert erhalten)</translation>
+    </message>
+</context>
+<context>
+    <name>lb::SceneJson</name>
+    <message>
+        <location filename="../../render/model/scene_json.cpp" line="+109"/>
+        <source>w must be 0 or 1</source>
+        <translation>w muss 0 oder 1 sein</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <location line="+17"/>
+        <source>a direction of length 0</source>
+        <translation>eine Richtung der Länge 0</translation>
+    </message>
+    <message>
+        <location line="-8"/>
+        <source>kc, kl and kq all 0</source>
+        <translation>kc, kl und kq alle 0</translation>
+    </message>
+    <message>
+        <location line="+125"/>
+        <location line="+33"/>
+        <source>not an array</source>
+        <translation>kein Array</translation>
+    </message>
+    <message>
+        <location line="-29"/>
+        <source>at most 4 lights</source>
+        <translation>höchstens 4 Lichter</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <location filename="../../render/model/scene_json_reader.cpp" line="+19"/>
+        <source>not an object</source>
+        <translation>kein JSON-Objekt</translation>
+    </message>
+    <message>
+        <location line="+29"/>
+        <source>empty: one object drawn instead</source>
+        <translation>leer: stattdessen wird ein Objekt gezeichnet</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>at most 32 objects; the rest left out</source>
+        <translation>höchstens 32 Objekte; der Rest wird ausgelassen</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>not an object; a sphere in its place</source>
+        <translation>kein JSON-Objekt; an seiner Stelle eine Kugel</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>no such object; the first one</source>
+        <translation>dieses Objekt gibt es nicht; stattdessen das erste</translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <source>too many: %1 more than the %2 kept</source>
+        <translation>zu viele: %1 mehr als die %2 übernommenen</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>not a uniform&apos;s name</source>
+        <translation>kein gültiger Uniform-Name</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>not 1 to 4 numbers</source>
+        <translation>nicht 1 bis 4 Zahlen</translation>
+    </message>
+    <message>
+        <location filename="../../render/model/scene_json_reader.cpp" line="-9"/>
+        <source>%1 (%2)</source>
+        <extracomment>a field of a scene file as the file spells it (%1, &quot;lights[2].frame&quot;, never translated) and why it was not used (%2)</extracomment>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>unknown field</source>
+        <translation>unbekanntes Feld</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <location filename="../../render/model/scene_json_reader.h" line="+47"/>
+        <source>not a number</source>
+        <translation>keine Zahl</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>not an array of numbers</source>
+        <translation>kein Array von Zahlen</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <location filename="../../render/model/scene_json_reader.h" line="+9"/>
+        <source>out of range, clamped</source>
+        <translation>außerhalb des zulässigen Bereichs, auf die Grenze gesetzt</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>not true or false</source>
+        <translation>nicht true oder false</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>not a string</source>
+        <translation>keine Zeichenkette</translation>
+    </message>
+    <message>
+        <location filename="../../render/model/scene_json_reader.h" line="+0"/>
+        <source>not a whole number</source>
+        <translation>keine ganze Zahl</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>unknown value</source>
+        <translation>unbekannter Wert</translation>
+    </message>
+</context>
+<context>
     <name>lb::ScenePanel</name>
     <message>
         <location filename="../../widgets/scene_panel.cpp" line="+71"/>
@@ -2949,7 +3953,7 @@
 <context>
     <name>lb::ShaderDocument</name>
     <message>
-        <location filename="../../render/model/shader_document.cpp" line="+219"/>
+        <location filename="../../render/model/shader_document.cpp" line="+201"/>
         <source>Cannot open %1</source>
         <translation>%1 kann nicht geöffnet werden</translation>
     </message>
@@ -3358,6 +4362,46 @@
     </message>
 </context>
 <context>
+    <name>lb::TextureFile</name>
+    <message>
+        <location filename="../../render/model/texture_file.cpp" line="+4"/>
+        <source>%1: an empty file, not an image</source>
+        <translation>%1: eine leere Datei, kein Bild</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1: not an image (%2)</source>
+        <translation>%1: kein Bild (%2)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the formats read are %1</source>
+        <translation>lesbare Formate sind %1</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1: %2 x %3 texels is more than a texture may have (%4 x %4)</source>
+        <translation>%1: %2 x %3 Texel sind mehr, als eine Textur haben darf (%4 x %4)</translation>
+    </message>
+    <message>
+        <location line="+31"/>
+        <location line="+7"/>
+        <source>%1: could not be read as an image: %2</source>
+        <translation>%1: konnte nicht als Bild gelesen werden: %2</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1: %2 x %3 texels (scaled from %4 x %5)</source>
+        <extracomment>%1 a file&apos;s name, %2 x %3 the texels drawn, %4 x %5 the image&apos;s own size</extracomment>
+        <translation>%1: %2 x %3 Texel (skaliert von %4 x %5)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1: %2 x %3 texels</source>
+        <translation>%1: %2 x %3 Texel</translation>
+    </message>
+</context>
+<context>
     <name>lb::TrialProcess</name>
     <message>
         <location filename="../../render/trial/trial_process.cpp" line="+176"/>
@@ -3520,6 +4564,100 @@
         <location line="+2"/>
         <source>|A - B|, A: %7, %1: largest %2/255 at (%3, %4); %5% of the drawn pixels within %8/255; scale 0 (black) to %6/255 (white)</source>
         <translation>|A - B|, A: %7, %1: größte Differenz %2/255 bei (%3, %4); %5 % der gezeichneten Pixel innerhalb von %8/255; Skala 0 (schwarz) bis %6/255 (weiß)</translation>
+    </message>
+</context>
+<context>
+    <name>lb::WireReader</name>
+    <message>
+        <location filename="../../render/import/wire_reader.cpp" line="+50"/>
+        <source>the import stream goes on after its end</source>
+        <translation>der Import-Datenstrom geht nach seinem Ende weiter</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>the import helper wrote something that is not a mesh stream</source>
+        <translation>der Import-Helfer hat etwas geschrieben, das kein Mesh-Datenstrom ist</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>the import stream holds two meshes</source>
+        <translation>der Import-Datenstrom enthält zwei Meshes</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>the import stream announces a mesh of a bad size</source>
+        <translation>der Import-Datenstrom kündigt ein Mesh mit ungültiger Größe an</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>the import stream holds a record too large to be right</source>
+        <translation>der Import-Datenstrom enthält einen Datensatz, der zu groß ist, um stimmen zu können</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>not enough memory for the mesh (%1 MB received)</source>
+        <translation>nicht genug Speicher für das Mesh (%1 MB empfangen)</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>receiving</source>
+        <extracomment>a stage of loading a mesh file, shown beside its progress</extracomment>
+        <translation>wird empfangen</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the import stream holds an index past the last vertex</source>
+        <translation>der Import-Datenstrom enthält einen Index hinter dem letzten Vertex</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>the import stream holds coordinates that are not finite</source>
+        <translation>der Import-Datenstrom enthält nicht endliche Koordinaten</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>the import stream announces a mesh whose sizes don&apos;t add up</source>
+        <translation>der Import-Datenstrom kündigt ein Mesh an, dessen Größen nicht zusammenpassen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the import stream announces a mesh of %1 MB, more than the helper may use (%2 MB)</source>
+        <translation>der Import-Datenstrom kündigt ein Mesh von %1 MB an, mehr als der Helfer verwenden darf (%2 MB)</translation>
+    </message>
+    <message>
+        <location line="+40"/>
+        <source>the import stream holds a short progress record</source>
+        <translation>der Import-Datenstrom enthält einen zu kurzen Fortschritts-Datensatz</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>the import failed without saying why</source>
+        <translation>der Import ist ohne Angabe eines Grundes fehlgeschlagen</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>the import stream holds a material of the wrong size</source>
+        <translation>der Import-Datenstrom enthält ein Material der falschen Größe</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>the import stream holds a short texture</source>
+        <translation>der Import-Datenstrom enthält eine zu kurze Textur</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the import stream holds a texture whose size doesn&apos;t add up</source>
+        <translation>der Import-Datenstrom enthält eine Textur, deren Größe nicht stimmt</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>the import stream ended without a mesh</source>
+        <translation>der Import-Datenstrom endete ohne Mesh</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>the import stream holds a record of unknown type %1</source>
+        <translation>der Import-Datenstrom enthält einen Datensatz unbekannten Typs %1</translation>
     </message>
 </context>
 <context>

@@ -299,42 +299,6 @@
         <source>nothing (every case is the scene as it is)</source>
         <translation>nada (cada caso é a cena tal como está)</translation>
     </message>
-    <message>
-        <location filename="../../render/model/texture_file.cpp" line="+25"/>
-        <source>%1: an empty file, not an image</source>
-        <translation>%1: um ficheiro vazio, não uma imagem</translation>
-    </message>
-    <message>
-        <location line="+6"/>
-        <source>%1: not an image (%2)</source>
-        <translation>%1: não é uma imagem (%2)</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>the formats read are %1</source>
-        <translation>os formatos lidos são %1</translation>
-    </message>
-    <message>
-        <location line="+8"/>
-        <source>%1: %2 x %3 texels is more than a texture may have (%4 x %4)</source>
-        <translation>%1: %2 x %3 texels é mais do que uma textura pode ter (%4 x %4)</translation>
-    </message>
-    <message>
-        <location line="+31"/>
-        <location line="+7"/>
-        <source>%1: could not be read as an image: %2</source>
-        <translation>%1: não foi possível ler como imagem: %2</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>%1: %2 x %3 texels</source>
-        <translation>%1: %2 x %3 texels</translation>
-    </message>
-    <message>
-        <location line="+6"/>
-        <source> (scaled from %1 x %2)</source>
-        <translation> (reduzida de %1 x %2)</translation>
-    </message>
 </context>
 <context>
     <name>QPlatformTheme</name>
@@ -427,6 +391,64 @@
         <location line="+1"/>
         <source>Restore Defaults</source>
         <translation>Repor Predefinições</translation>
+    </message>
+</context>
+<context>
+    <name>lb::BoundedRead</name>
+    <message>
+        <location filename="../../render/model/bounded_read.cpp" line="+41"/>
+        <location line="+6"/>
+        <source>no such file</source>
+        <translation>ficheiro inexistente</translation>
+    </message>
+    <message>
+        <location line="-4"/>
+        <source>a loop of symbolic links</source>
+        <translation>um ciclo de ligações simbólicas</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>a symbolic link to %1, which does not exist</source>
+        <translation>uma ligação simbólica para %1, que não existe</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>%1 MB</source>
+        <translation>%1 MB</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>%1 KiB</source>
+        <translation>%1 KiB</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1, %2</source>
+        <extracomment>a file&apos;s size limit (%1, &quot;64 MB&quot;) and where it comes from (%2, &quot;the import memory limit&quot;)</extracomment>
+        <translation>%1, %2</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>%1: not a regular file (a folder, a device or a pipe)</source>
+        <translation>%1: não é um ficheiro regular (é uma pasta, um dispositivo ou um pipe)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1: %2 is more than %3 may be (%4)</source>
+        <extracomment>%1 a path, %2 its size, %3 a kind of file (&quot;a scene file&quot;), %4 the limit (&quot;64 MB&quot;)</extracomment>
+        <translation>%1: %2 é mais do que %3 pode ter (%4)</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>%1: more than %2 may be (%3)</source>
+        <extracomment>%1 a path, %2 a kind of file (&quot;a scene file&quot;), %3 the limit (&quot;64 MB&quot;)</extracomment>
+        <translation>%1: mais do que %2 pode ter (%3)</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>%1: not saved: %2 would take %3, more than %4 may be (%5), so it could not be opened again</source>
+        <extracomment>%1 a path, %2 what is saved (&quot;the scene&quot;), %3 its size, %4 a kind of file (&quot;a scene file&quot;), %5 the limit (&quot;64 MB&quot;)</extracomment>
+        <translation>%1: não guardado: %2 ocuparia %3, mais do que %4 pode ter (%5), pelo que não se poderia voltar a abri-lo</translation>
     </message>
 </context>
 <context>
@@ -606,15 +628,76 @@
     </message>
 </context>
 <context>
+    <name>lb::Exercise</name>
+    <message>
+        <location filename="../../render/model/exercise.cpp" line="+122"/>
+        <source>%1 (%2)</source>
+        <extracomment>a field of an exercise as the file spells it (%1, &quot;exercise.grading.cases&quot;) and why it was not used (%2)</extracomment>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1: not an object</source>
+        <translation>%1: não é um objeto</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>unknown field</source>
+        <translation>campo desconhecido</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1: needs both a vertex and a fragment shader</source>
+        <translation>%1: precisa de um vertex shader e de um fragment shader</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <location line="+5"/>
+        <source>not %1</source>
+        <extracomment>%1 the words a file may give, as it spells them (&quot;phong, gouraud, flat&quot;)</extracomment>
+        <translation>não é nenhum destes: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1: no reference program (&quot;reference&quot;: {&quot;vertex&quot;: ..., &quot;fragment&quot;: ...} or {&quot;builtIn&quot;: {...}})</source>
+        <translation>%1: sem programa de referência (&quot;reference&quot;: {&quot;vertex&quot;: ..., &quot;fragment&quot;: ...} ou {&quot;builtIn&quot;: {...}})</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>not a number</source>
+        <translation>não é um número</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>out of range, clamped</source>
+        <translation>fora do intervalo, ajustado ao limite</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>not [width, height] in whole pixels, 16 to %1</source>
+        <translation>não é [largura, altura] em píxeis inteiros, de 16 a %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>not a list of parameters; all of them vary</source>
+        <translation>não é uma lista de parâmetros; todos variam</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>no such parameter &apos;%1&apos;; those are %2</source>
+        <translation>o parâmetro &apos;%1&apos; não existe; os parâmetros válidos são %2</translation>
+    </message>
+</context>
+<context>
     <name>lb::ExercisePanel</name>
     <message>
         <location filename="../../widgets/exercise_panel.cpp" line="+30"/>
-        <location line="+119"/>
+        <location line="+121"/>
         <source>Check my work</source>
         <translation>Verificar o meu trabalho</translation>
     </message>
     <message>
-        <location line="-118"/>
+        <location line="-120"/>
         <source>Draws the exercise&apos;s cases with the program in the editor and with the reference, as the teacher&apos;s grading does, and lists each case (F9)</source>
         <translation>Desenha os casos do exercício com o programa do editor e com a referência, como faz a avaliação do professor, e lista cada caso (F9)</translation>
     </message>
@@ -679,7 +762,7 @@
         <translation>A percentagem dos píxeis desenhados por qualquer dos programas que diferem no máximo %1/255 da referência, a %2 x %3: a vista de diferença conta um caso da mesma forma (no seu próprio tamanho)</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+8"/>
         <source>Exercise</source>
         <translation>Exercício</translation>
     </message>
@@ -823,6 +906,236 @@
     </message>
 </context>
 <context>
+    <name>lb::FileLimit</name>
+    <message>
+        <location filename="../../render/import/import_process.cpp" line="+56"/>
+        <source>a texture file</source>
+        <translation>um ficheiro de textura</translation>
+    </message>
+    <message>
+        <location line="+136"/>
+        <source>a mesh file</source>
+        <translation>um ficheiro de malha</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the import memory limit</source>
+        <translation>o limite de memória da importação</translation>
+    </message>
+    <message>
+        <location filename="../../render/model/lesson.cpp" line="+200"/>
+        <location line="+42"/>
+        <source>a lesson file</source>
+        <translation>um ficheiro de lição</translation>
+    </message>
+    <message>
+        <location line="-1"/>
+        <source>the lesson</source>
+        <translation>a lição</translation>
+    </message>
+    <message>
+        <location filename="../../render/model/scene_file.cpp" line="+160"/>
+        <location line="+15"/>
+        <source>a scene file</source>
+        <translation>um ficheiro de cena</translation>
+    </message>
+    <message>
+        <location line="-1"/>
+        <source>the scene</source>
+        <translation>a cena</translation>
+    </message>
+    <message>
+        <location filename="../../render/model/shader_document.cpp" line="+19"/>
+        <source>a shader</source>
+        <translation>um shader</translation>
+    </message>
+    <message>
+        <location filename="../../render/model/texture_file.cpp" line="+31"/>
+        <source>an image</source>
+        <translation>uma imagem</translation>
+    </message>
+</context>
+<context>
+    <name>lb::Grading</name>
+    <message>
+        <location filename="../../render/model/grading.cpp" line="+83"/>
+        <source>passed</source>
+        <extracomment>the outcome of a case, at the end of a grading sheet&apos;s title</extracomment>
+        <translation>passou</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>failed</source>
+        <translation>falhou</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 - case %2: largest difference %3/255, %4% of %5 pixels within tolerance, %6</source>
+        <translation>%1 - caso %2: maior diferença %3/255, %4% de %5 píxeis dentro da tolerância, %6</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 - case %2: largest difference %3/255 at (%4, %5), %6% of %7 pixels within tolerance, %8</source>
+        <extracomment>%4, %5: the pixel that differs most</extracomment>
+        <translation>%1 - caso %2: maior diferença %3/255 em (%4, %5), %6% de %7 píxeis dentro da tolerância, %8</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>student</source>
+        <extracomment>the captions under a grading sheet&apos;s three frames</extracomment>
+        <translation>estudante</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>reference</source>
+        <translation>referência</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>|student - reference| (white: 64/255)</source>
+        <translation>|estudante - referência| (branco: 64/255)</translation>
+    </message>
+</context>
+<context>
+    <name>lb::ImageTruncation</name>
+    <message>
+        <location filename="../../render/model/image_truncation.cpp" line="+33"/>
+        <source>no image data (no scan)</source>
+        <translation>sem dados de imagem (nenhum scan)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the file ends inside the image data (no end-of-image marker): cut short?</source>
+        <translation>o ficheiro termina a meio dos dados da imagem (sem marcador de fim de imagem): truncado?</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>the file ends inside its header</source>
+        <translation>o ficheiro termina a meio do cabeçalho</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>the file ends inside the image data (%1 of %2 bytes): cut short?</source>
+        <translation>o ficheiro termina a meio dos dados da imagem (%1 de %2 bytes): truncado?</translation>
+    </message>
+</context>
+<context>
+    <name>lb::ImportProcess</name>
+    <message>
+        <location filename="../../render/import/import_process.cpp" line="-161"/>
+        <source>the importer crashed with a segmentation fault while reading this file; the workbench is fine</source>
+        <translation>o importador terminou abruptamente com uma falha de segmentação ao ler este ficheiro; a bancada de trabalho não foi afetada</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>the importer crashed with an abort while reading this file; the workbench is fine</source>
+        <translation>o importador terminou abruptamente com um abort ao ler este ficheiro; a bancada de trabalho não foi afetada</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>the importer crashed with a bus error while reading this file; the workbench is fine</source>
+        <translation>o importador terminou abruptamente com um erro de barramento (bus error) ao ler este ficheiro; a bancada de trabalho não foi afetada</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>the importer crashed with an arithmetic error while reading this file; the workbench is fine</source>
+        <translation>o importador terminou abruptamente com um erro aritmético ao ler este ficheiro; a bancada de trabalho não foi afetada</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>the importer crashed with an illegal instruction while reading this file; the workbench is fine</source>
+        <translation>o importador terminou abruptamente com uma instrução ilegal ao ler este ficheiro; a bancada de trabalho não foi afetada</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the importer crashed with signal %1 (%2) while reading this file; the workbench is fine</source>
+        <extracomment>%1 a signal&apos;s number, %2 the system&apos;s name for it</extracomment>
+        <translation>o importador terminou abruptamente com o sinal %1 (%2) ao ler este ficheiro; a bancada de trabalho não foi afetada</translation>
+    </message>
+    <message>
+        <location line="+35"/>
+        <source>texture &apos;%1&apos;: outside the mesh&apos;s folder</source>
+        <translation>textura &apos;%1&apos;: fora da pasta da malha</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>texture &apos;%1&apos; not found</source>
+        <translation>textura &apos;%1&apos; não encontrada</translation>
+    </message>
+    <message>
+        <location line="+42"/>
+        <source>%1: cannot start the import helper &apos;%2&apos;: %3</source>
+        <translation>%1: não é possível iniciar o processo auxiliar de importação &apos;%2&apos;: %3</translation>
+    </message>
+    <message>
+        <location line="+69"/>
+        <source>%1: not readable (permissions)</source>
+        <translation>%1: não pode ser lido (permissões)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1: the file is empty</source>
+        <translation>%1: o ficheiro está vazio</translation>
+    </message>
+    <message>
+        <location line="+62"/>
+        <source>%1: cancelled</source>
+        <translation>%1: cancelado</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1: gave up after %2 s (the import time limit)</source>
+        <translation>%1: abandonado após %2 s (o limite de tempo da importação)</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>gave up after %1 s of CPU time (the import time limit)</source>
+        <translation>abandonado após %1 s de tempo de CPU (o limite de tempo da importação)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>the import helper was killed (by the system, for memory?)</source>
+        <translation>o processo auxiliar de importação foi terminado à força (pelo sistema, por falta de memória?)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>out of memory: reading this file needs more than the import memory limit (%1 MB)</source>
+        <translation>sem memória: ler este ficheiro exige mais do que o limite de memória da importação (%1 MB)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>the import helper stopped (exit code %1) before sending the whole mesh</source>
+        <translation>o processo auxiliar de importação parou (código de saída %1) antes de enviar a malha completa</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>the import helper stopped (exit code %1) before sending the whole mesh: %2</source>
+        <extracomment>%2 the last line the helper wrote on its error output (its own words, in English)</extracomment>
+        <translation>o processo auxiliar de importação parou (código de saída %1) antes de enviar a malha completa: %2</translation>
+    </message>
+    <message>
+        <location line="+40"/>
+        <source>embedded texture unreadable: %1</source>
+        <translation>textura incorporada ilegível: %1</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>texture %1</source>
+        <extracomment>%1 why a texture file cannot be used, &quot;PATH: reason&quot;</extracomment>
+        <translation>textura %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>texture &apos;%1&apos;: %2</source>
+        <translation>textura &apos;%1&apos;: %2</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>the file has a texture but no texture coordinates</source>
+        <translation>o ficheiro tem uma textura mas não tem coordenadas de textura</translation>
+    </message>
+</context>
+<context>
     <name>lb::Language</name>
     <message>
         <location filename="../../app/language.cpp" line="+54"/>
@@ -859,6 +1172,84 @@
         <location line="+2"/>
         <source>&amp;Later</source>
         <translation>&amp;Mais Tarde</translation>
+    </message>
+</context>
+<context>
+    <name>lb::Lesson</name>
+    <message>
+        <location filename="../../render/model/lesson.cpp" line="-210"/>
+        <source>%1 (%2)</source>
+        <extracomment>a field of a lesson file (%1, &quot;step 2: caption.de&quot;) and why it was not used (%2)</extracomment>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>&quot;%1&quot; is not one of %2</source>
+        <extracomment>%1 a word the file gave, %2 the words allowed (as files spell them)</extracomment>
+        <translation>&quot;%1&quot; não é nenhum destes: %2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>a value that is not text is not one of %1</source>
+        <translation>um valor que não é texto não é nenhum destes: %1</translation>
+    </message>
+    <message>
+        <location line="+30"/>
+        <source>%1: the scene file %2 (%3) is past what is left of the lesson&apos;s limit (%4 for the lesson and its scene files)</source>
+        <extracomment>%1 the step (&quot;step 3&quot;), %2 a path, %3 its size, %4 the limit</extracomment>
+        <translation>%1: o ficheiro de cena %2 (%3) excede o que resta do limite da lição (%4 para a lição e os seus ficheiros de cena)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>%1: no scene (&quot;scene&quot; must be a scene object or the name of a scene file)</source>
+        <translation>%1: sem cena (&quot;scene&quot; tem de ser um objeto de cena ou o nome de um ficheiro de cena)</translation>
+    </message>
+    <message>
+        <location line="+40"/>
+        <source>%1: not a lesson file: %2 at byte %3</source>
+        <extracomment>%1 a path, %2 Qt&apos;s JSON parser&apos;s reason</extracomment>
+        <translation>%1: não é um ficheiro de lição: %2 no byte %3</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1: a scene file, not a lesson (open it with File &gt; Open Scene)</source>
+        <translation>%1: é um ficheiro de cena, não uma lição (abra-o com Ficheiro &gt; Abrir Cena)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1: not a lesson file (&quot;format&quot; is not &quot;%2&quot;)</source>
+        <translation>%1: não é um ficheiro de lição (&quot;format&quot; não é &quot;%2&quot;)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>missing or not a number; read as %1</source>
+        <translation>em falta ou não é um número; lido como %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>newer than this lightbench&apos;s %1: what it does not know is left out</source>
+        <translation>mais recente do que a versão %1 deste lightbench: o que este não conhece fica de fora</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1: the lesson has no steps (&quot;steps&quot; must be a list of steps)</source>
+        <translation>%1: a lição não tem passos (&quot;steps&quot; tem de ser uma lista de passos)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1: %2 steps; a lesson may have at most %3</source>
+        <translation>%1: %2 passos; uma lição pode ter no máximo %3</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>step %1</source>
+        <extracomment>where in a lesson file a message is about: &quot;step 3: title (not text)&quot;</extracomment>
+        <translation>passo %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1: not an object</source>
+        <translation>%1: não é um objeto</translation>
     </message>
 </context>
 <context>
@@ -1331,6 +1722,122 @@
         <location line="+10"/>
         <source>Loading %1: %2</source>
         <translation>A carregar %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>lb::LocalizedText</name>
+    <message>
+        <location filename="../../render/model/localized_text.cpp" line="+29"/>
+        <source>not text</source>
+        <translation>não é texto</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 characters; at most %2</source>
+        <translation>%1 carateres; no máximo %2</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>not a language code</source>
+        <translation>não é um código de idioma</translation>
+    </message>
+</context>
+<context>
+    <name>lb::Loops</name>
+    <message>
+        <location filename="../../render/glsl/loop_messages.cpp" line="+18"/>
+        <source>this loop runs %1 times for every fragment: a frame would take seconds or more on any GPU (llvmpipe stops it after 65,535 steps and draws a wrong picture)</source>
+        <translation>este ciclo é executado %1 vezes por cada fragmento: um fotograma demoraria segundos ou mais em qualquer GPU (o llvmpipe interrompe-o ao fim de 65 535 iterações e desenha uma imagem errada)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>this loop runs %1 times for every fragment (its counter moves away from its bound: only wrapping around ends it): a frame would take seconds or more on any GPU (llvmpipe stops it after 65,535 steps and draws a wrong picture)</source>
+        <translation>este ciclo é executado %1 vezes por cada fragmento (o seu contador afasta-se do limite: só termina quando o contador dá a volta): um fotograma demoraria segundos ou mais em qualquer GPU (o llvmpipe interrompe-o ao fim de 65 535 iterações e desenha uma imagem errada)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>this loop runs %1 times for every vertex: a frame would take seconds or more on any GPU (llvmpipe stops it after 65,535 steps and draws a wrong picture)</source>
+        <translation>este ciclo é executado %1 vezes por cada vértice: um fotograma demoraria segundos ou mais em qualquer GPU (o llvmpipe interrompe-o ao fim de 65 535 iterações e desenha uma imagem errada)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>this loop runs %1 times for every vertex (its counter moves away from its bound: only wrapping around ends it): a frame would take seconds or more on any GPU (llvmpipe stops it after 65,535 steps and draws a wrong picture)</source>
+        <translation>este ciclo é executado %1 vezes por cada vértice (o seu contador afasta-se do limite: só termina quando o contador dá a volta): um fotograma demoraria segundos ou mais em qualquer GPU (o llvmpipe interrompe-o ao fim de 65 535 iterações e desenha uma imagem errada)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>this program never finishes a frame: the loop here runs %1 times for every fragment: a frame would take seconds or more on any GPU (llvmpipe stops it after 65,535 steps and draws a wrong picture)</source>
+        <translation>este programa nunca termina um fotograma: o ciclo aqui é executado %1 vezes por cada fragmento: um fotograma demoraria segundos ou mais em qualquer GPU (o llvmpipe interrompe-o ao fim de 65 535 iterações e desenha uma imagem errada)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>this program never finishes a frame: the loop here runs %1 times for every fragment (its counter moves away from its bound: only wrapping around ends it): a frame would take seconds or more on any GPU (llvmpipe stops it after 65,535 steps and draws a wrong picture)</source>
+        <translation>este programa nunca termina um fotograma: o ciclo aqui é executado %1 vezes por cada fragmento (o seu contador afasta-se do limite: só termina quando o contador dá a volta): um fotograma demoraria segundos ou mais em qualquer GPU (o llvmpipe interrompe-o ao fim de 65 535 iterações e desenha uma imagem errada)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>this program never finishes a frame: the loop here runs %1 times for every vertex: a frame would take seconds or more on any GPU (llvmpipe stops it after 65,535 steps and draws a wrong picture)</source>
+        <translation>este programa nunca termina um fotograma: o ciclo aqui é executado %1 vezes por cada vértice: um fotograma demoraria segundos ou mais em qualquer GPU (o llvmpipe interrompe-o ao fim de 65 535 iterações e desenha uma imagem errada)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>this program never finishes a frame: the loop here runs %1 times for every vertex (its counter moves away from its bound: only wrapping around ends it): a frame would take seconds or more on any GPU (llvmpipe stops it after 65,535 steps and draws a wrong picture)</source>
+        <translation>este programa nunca termina um fotograma: o ciclo aqui é executado %1 vezes por cada vértice (o seu contador afasta-se do limite: só termina quando o contador dá a volta): um fotograma demoraria segundos ou mais em qualquer GPU (o llvmpipe interrompe-o ao fim de 65 535 iterações e desenha uma imagem errada)</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>this loop never ends: it has no condition and nothing in it breaks, returns or discards (the driver may drop it and draw garbage, or hang)</source>
+        <translation>este ciclo nunca termina: não tem condição e nada nele faz break, return ou discard (o controlador pode descartá-lo e desenhar lixo, ou bloquear)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>this loop never ends: its condition is always true and nothing in it breaks, returns or discards (the driver may drop it and draw garbage, or hang)</source>
+        <translation>este ciclo nunca termina: a sua condição é sempre verdadeira e nada nele faz break, return ou discard (o controlador pode descartá-lo e desenhar lixo, ou bloquear)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>this program never finishes a frame: the loop here has no condition (or an always-true one) and no break, return or discard</source>
+        <translation>este programa nunca termina um fotograma: o ciclo aqui não tem condição (ou tem uma sempre verdadeira) nem break, return ou discard</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>this loop never ends once it starts: its condition reads %1, and nothing in the loop changes it</source>
+        <extracomment>%1 the names the loop&apos;s condition reads, as the shader spells them (&quot;i, n&quot;)</extracomment>
+        <translation>este ciclo, uma vez iniciado, nunca termina: a sua condição lê %1, e nada no ciclo altera essa variável</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>this loop never ends once it starts: its condition reads %1, and nothing in the loop changes them</source>
+        <translation>este ciclo, uma vez iniciado, nunca termina: a sua condição lê %1, e nada no ciclo altera essas variáveis</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1 (the loop comes from macro %2, used on this line)</source>
+        <extracomment>%1 a message about a loop, %2 the name of the macro that writes the loop</extracomment>
+        <translation>%1 (o ciclo vem da macro %2, usada nesta linha)</translation>
+    </message>
+</context>
+<context>
+    <name>lb::MacroExpansion</name>
+    <message>
+        <location filename="../../render/glsl/macro_expansion.cpp" line="+94"/>
+        <source>macro %1 expands through more than %2 macros, one inside another: refused before the driver sees it</source>
+        <translation>a macro %1 expande-se através de mais de %2 macros, umas dentro das outras: recusada antes de chegar ao controlador</translation>
+    </message>
+    <message>
+        <location line="+29"/>
+        <source>macro %1 expands to more than a million tokens (a macro that doubles itself?): refused before the driver sees it</source>
+        <translation>a macro %1 expande-se em mais de um milhão de tokens (uma macro que se duplica a si própria?): recusada antes de chegar ao controlador</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>macro %1 expands to more than 1 MB of text (a macro that doubles itself?): refused before the driver sees it</source>
+        <translation>a macro %1 expande-se em mais de 1 MB de texto (uma macro que se duplica a si própria?): recusada antes de chegar ao controlador</translation>
+    </message>
+    <message>
+        <location line="+111"/>
+        <source>macro %1 calls macros inside macro arguments more than %2 deep: refused before the driver sees it</source>
+        <translation>a macro %1 chama macros dentro de argumentos de macros com mais de %2 níveis de profundidade: recusada antes de chegar ao controlador</translation>
     </message>
 </context>
 <context>
@@ -2104,6 +2611,58 @@
     </message>
 </context>
 <context>
+    <name>lb::MeshFile</name>
+    <message>
+        <location filename="../../render/model/mesh_file.cpp" line="+41"/>
+        <source>%1 points, lines or broken faces skipped</source>
+        <translation>%1 pontos, linhas ou faces defeituosas ignorados</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 vertices with non-finite coordinates dropped, with the %2 triangles using them</source>
+        <translation>%1 vértices com coordenadas não finitas descartados, com os %2 triângulos que os usam</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 normals with non-finite coordinates: the file&apos;s normals not used</source>
+        <translation>%1 normais com coordenadas não finitas: as normais do ficheiro não foram usadas</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1: %2 vertices, %3 triangles</source>
+        <translation>%1: %2 vértices, %3 triângulos</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1: %2 vertices, %3 triangles, loaded in %4 s</source>
+        <translation>%1: %2 vértices, %3 triângulos, carregado em %4 s</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1: %2 vertices, %3 triangles, loaded in %4 s, normals generated</source>
+        <translation>%1: %2 vértices, %3 triângulos, carregado em %4 s, normais geradas</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1: %2 vertices, %3 triangles, loaded in %4 s, normals generated (the file has none)</source>
+        <translation>%1: %2 vértices, %3 triângulos, carregado em %4 s, normais geradas (o ficheiro não tem nenhuma)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 (%2)</source>
+        <extracomment>a mesh&apos;s summary (%1) and what was skipped or not used in its file (%2, a list)</extracomment>
+        <translation>%1 (%2)</translation>
+    </message>
+</context>
+<context>
+    <name>lb::MessageText</name>
+    <message>
+        <location filename="../../render/model/message_text.cpp" line="+80"/>
+        <source>... and %1 more</source>
+        <translation>... e mais %1</translation>
+    </message>
+</context>
+<context>
     <name>lb::NumberBox</name>
     <message>
         <location filename="../../widgets/number_box.cpp" line="+68"/>
@@ -2144,32 +2703,12 @@
 <context>
     <name>lb::ObjectLoader</name>
     <message>
-        <location filename="../../render/import/object_loader.cpp" line="+161"/>
+        <location filename="../../render/import/object_loader.cpp" line="+160"/>
         <source>%1 (the objects naming it show the mesh file&apos;s texture or the checker, and keep its name for when the file is back)</source>
         <translation>%1 (os objetos que o referem mostram a textura do ficheiro da malha ou o xadrez, e guardam o seu nome para quando o ficheiro voltar)</translation>
     </message>
     <message>
-        <location line="+22"/>
-        <source>%1: %2 vertices, %3 triangles</source>
-        <translation>%1: %2 vértices, %3 triângulos</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>, loaded in %1 s</source>
-        <translation>, carregado em %1 s</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>, normals generated</source>
-        <translation>, normais geradas</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>, normals generated (the file has none)</source>
-        <translation>, normais geradas (o ficheiro não tem nenhumas)</translation>
-    </message>
-    <message>
-        <location line="+51"/>
+        <location line="+68"/>
         <source>%1: not used: its object was removed</source>
         <translation>%1: não usado: o seu objeto foi removido</translation>
     </message>
@@ -2193,6 +2732,40 @@
         <location line="-62"/>
         <source>building</source>
         <translation>a construir</translation>
+    </message>
+</context>
+<context>
+    <name>lb::ObjectMesh</name>
+    <message>
+        <location filename="../../render/model/object_mesh.cpp" line="+32"/>
+        <source>out of memory building %1&apos;s normals (%2 triangles)</source>
+        <translation>sem memória para construir as normais de %1 (%2 triângulos)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>out of memory building the cube</source>
+        <translation>sem memória para construir o cubo</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>out of memory building the sphere at tessellation %1</source>
+        <translation>sem memória para construir a esfera com tesselação %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>out of memory building the torus at tessellation %1</source>
+        <translation>sem memória para construir o toro com tesselação %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>out of memory building the plane at tessellation %1</source>
+        <translation>sem memória para construir o plano com tesselação %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <location line="+69"/>
+        <source>out of memory building a mesh</source>
+        <translation>sem memória para construir uma malha</translation>
     </message>
 </context>
 <context>
@@ -2414,6 +2987,29 @@
     </message>
 </context>
 <context>
+    <name>lb::Offscreen</name>
+    <message>
+        <location filename="../../render/gl/offscreen.cpp" line="+47"/>
+        <source>cannot create an OpenGL context (is there an X server with OpenGL?)</source>
+        <translation>não é possível criar um contexto OpenGL (existe um servidor X com OpenGL?)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>cannot make the OpenGL context current</source>
+        <translation>não é possível tornar atual o contexto OpenGL</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>OpenGL 3.3 is needed, the driver gives %1.%2</source>
+        <translation>é necessário OpenGL 3.3, o controlador oferece %1.%2</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>cannot create a %1x%2 framebuffer</source>
+        <translation>não é possível criar um framebuffer de %1x%2</translation>
+    </message>
+</context>
+<context>
     <name>lb::PreferencesDialog</name>
     <message>
         <location filename="../../widgets/preferences_dialog.cpp" line="+15"/>
@@ -2475,6 +3071,34 @@
         <location line="+4"/>
         <source>So the class sees where they go; off: each step jumps</source>
         <translation>Para que a turma veja para onde vão; desligado: cada passo salta</translation>
+    </message>
+</context>
+<context>
+    <name>lb::Presets</name>
+    <message>
+        <location filename="../../render/glsl/presets.cpp" line="+37"/>
+        <source>Built-in: Phong shading (per fragment)</source>
+        <translation>Integrado: sombreamento de Phong (por fragmento)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Built-in: Gouraud shading (per vertex)</source>
+        <translation>Integrado: sombreamento de Gouraud (por vértice)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Slides: Gouraud, WebGL 1 as printed</source>
+        <translation>Diapositivos: Gouraud, WebGL 1 tal como impresso</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Slides: Phong shading, WebGL 1 as printed</source>
+        <translation>Diapositivos: sombreamento de Phong, WebGL 1 tal como impresso</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Toon (the exercise&apos;s &quot;like Zelda&quot;), GLSL 3.30</source>
+        <translation>Toon (o &quot;como o Zelda&quot; do exercício), GLSL 3.30</translation>
     </message>
 </context>
 <context>
@@ -2695,6 +3319,96 @@
     </message>
 </context>
 <context>
+    <name>lb::Program</name>
+    <message>
+        <location filename="../../render/gl/program.cpp" line="+69"/>
+        <source>the vertex shader is empty</source>
+        <translation>o vertex shader está vazio</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the fragment shader is empty</source>
+        <translation>o fragment shader está vazio</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>the vertex shader is %1 KiB; lightbench compiles sources up to %2 KiB</source>
+        <translation>o vertex shader tem %1 KiB; o lightbench compila código-fonte até %2 KiB</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the fragment shader is %1 KiB; lightbench compiles sources up to %2 KiB</source>
+        <translation>o fragment shader tem %1 KiB; o lightbench compila código-fonte até %2 KiB</translation>
+    </message>
+    <message>
+        <location line="+29"/>
+        <source>the vertex shader does not compile (the driver gave no reason)</source>
+        <translation>o vertex shader não compila (o controlador não indicou o motivo)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the fragment shader does not compile (the driver gave no reason)</source>
+        <translation>o fragment shader não compila (o controlador não indicou o motivo)</translation>
+    </message>
+    <message>
+        <location line="+167"/>
+        <source>the program does not link (no reason given)</source>
+        <translation>a ligação (link) do programa falhou (sem motivo indicado)</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>no position input: the mesh reaches the shader through an attribute named vPosition, aVertexPosition, position or aPosition</source>
+        <translation>sem entrada de posição: a malha chega ao shader através de um atributo chamado vPosition, aVertexPosition, position ou aPosition</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the fragment shader writes no colour: assign gl_FragColor (no #version, #version 100) or declare an out vec4 (#version 300 es, 330 and later)</source>
+        <translation>o fragment shader não escreve nenhuma cor: atribua gl_FragColor (sem #version, #version 100) ou declare um out vec4 (#version 300 es, 330 e posteriores)</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <location line="+87"/>
+        <source>built-in shader &apos;%1&apos; failed:
+%2</source>
+        <extracomment>%1 a built-in program&apos;s name, %2 its build log</extracomment>
+        <translation>o shader integrado &apos;%1&apos; falhou:
+%2</translation>
+    </message>
+    <message>
+        <location line="-7"/>
+        <source>built-in shader &apos;%1&apos; lacks a &apos;#define MAX_LIGHTS&apos;, &apos;LIGHT_FACTORS&apos; or &apos;SHOW_CHOICES&apos; line
+</source>
+        <translation>falta ao shader integrado &apos;%1&apos; uma linha &apos;#define MAX_LIGHTS&apos;, &apos;LIGHT_FACTORS&apos; ou &apos;SHOW_CHOICES&apos;
+</translation>
+    </message>
+</context>
+<context>
+    <name>lb::ProgramTrial</name>
+    <message>
+        <location filename="../../render/model/program_trial.cpp" line="+32"/>
+        <source>drawing one frame with this program would take about %1 at %2x%3 (measured %4 at %5x%6; the budget is %7): an endless or very long loop?</source>
+        <extracomment>%1 the estimate at %2x%3 pixels, %4 the time measured at %5x%6, %7 the budget</extracomment>
+        <translation>desenhar um fotograma com este programa demoraria cerca de %1 a %2x%3 (medido: %4 a %5x%6; o orçamento é %7): um ciclo infinito ou muito longo?</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>drawing one frame with this program would take about %1 at %2x%3 (measured %4 at %5x%6; the budget is %7): too much work for every pixel?</source>
+        <translation>desenhar um fotograma com este programa demoraria cerca de %1 a %2x%3 (medido: %4 a %5x%6; o orçamento é %7): demasiado trabalho por píxel?</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1 s</source>
+        <extracomment>a duration in seconds</extracomment>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 ms</source>
+        <extracomment>a duration in milliseconds</extracomment>
+        <translation>%1 ms</translation>
+    </message>
+</context>
+<context>
     <name>lb::RecentFiles</name>
     <message>
         <location filename="../../widgets/recent_files.cpp" line="+55"/>
@@ -2705,6 +3419,68 @@
         <location line="+4"/>
         <source>Clear the list</source>
         <translation>Limpar a lista</translation>
+    </message>
+</context>
+<context>
+    <name>lb::SafeWrite</name>
+    <message>
+        <location filename="../../render/model/safe_write.cpp" line="+69"/>
+        <location line="+13"/>
+        <source>a loop of symbolic links</source>
+        <translation>um ciclo de ligações simbólicas</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>not a regular file (a device, a pipe or a folder); not replaced</source>
+        <translation>não é um ficheiro regular (é um dispositivo, um pipe ou uma pasta); não foi substituído</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>the folder %1 does not exist</source>
+        <translation>a pasta %1 não existe</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 is not a folder</source>
+        <translation>%1 não é uma pasta</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>cannot write in %1: %2</source>
+        <translation>não é possível escrever em %1: %2</translation>
+    </message>
+    <message>
+        <location line="+136"/>
+        <source>no image to write</source>
+        <translation>nenhuma imagem para escrever</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the PNG could not be encoded</source>
+        <translation>não foi possível codificar o PNG</translation>
+    </message>
+</context>
+<context>
+    <name>lb::Scene</name>
+    <message>
+        <location filename="../../render/model/scene.cpp" line="+412"/>
+        <source>cube</source>
+        <translation>cubo</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>sphere</source>
+        <translation>esfera</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>torus</source>
+        <translation>toro</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>plane</source>
+        <translation>plano</translation>
     </message>
 </context>
 <context>
@@ -2917,6 +3693,234 @@
     </message>
 </context>
 <context>
+    <name>lb::SceneBudget</name>
+    <message>
+        <location filename="../../render/model/scene_budget.cpp" line="+63"/>
+        <location line="+2"/>
+        <source>%1 million</source>
+        <translation>%1 milhões</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+27"/>
+        <source>%n object(s) at tessellation %1 would make %2 triangles (~%3)</source>
+        <extracomment>what a scene asks for; %n the objects in the scene</extracomment>
+        <translation>
+            <numerusform>%n objeto com tesselação %1 daria %2 triângulos (~%3)</numerusform>
+            <numerusform>%n objetos com tesselação %1 dariam %2 triângulos (~%3)</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+3"/>
+        <source>%n object(s) at tessellation up to %1 would make %2 triangles (~%3)</source>
+        <translation>
+            <numerusform>%n objeto com tesselação até %1 daria %2 triângulos (~%3)</numerusform>
+            <numerusform>%n objetos com tesselação até %1 dariam %2 triângulos (~%3)</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+10"/>
+        <source>tessellation lowered to %1 on %n object(s) (%2) to fit %3, the most a scene may take on this machine (%4 of memory): %5 triangles now</source>
+        <extracomment>what was done about it; %n the objects lowered, %2 their names</extracomment>
+        <translation>
+            <numerusform>tesselação reduzida para %1 em %n objeto (%2) para caber em %3, o máximo que uma cena pode ocupar nesta máquina (%4 de memória): agora %5 triângulos</numerusform>
+            <numerusform>tesselação reduzida para %1 em %n objetos (%2) para caber em %3, o máximo que uma cena pode ocupar nesta máquina (%4 de memória): agora %5 triângulos</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+4"/>
+        <source>tessellation lowered to %1 on %n object(s) (%2) and still over %3, the most a scene may take on this machine (%4 of memory): ~%5 (its mesh files count in full)</source>
+        <translation>
+            <numerusform>tesselação reduzida para %1 em %n objeto (%2) e ainda acima de %3, o máximo que uma cena pode ocupar nesta máquina (%4 de memória): ~%5 (os ficheiros de malha da cena contam por inteiro)</numerusform>
+            <numerusform>tesselação reduzida para %1 em %n objetos (%2) e ainda acima de %3, o máximo que uma cena pode ocupar nesta máquina (%4 de memória): ~%5 (os ficheiros de malha da cena contam por inteiro)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1; %2</source>
+        <extracomment>what a scene asked for (%1) and what was lowered to fit it in memory (%2)</extracomment>
+        <translation>%1; %2</translation>
+    </message>
+    <message>
+        <location line="+109"/>
+        <source>%1 GB</source>
+        <translation>%1 GB</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 MB</source>
+        <translation>%1 MB</translation>
+    </message>
+</context>
+<context>
+    <name>lb::SceneFile</name>
+    <message>
+        <location filename="../../render/model/scene_file.cpp" line="-136"/>
+        <source>not true or false; read as false</source>
+        <translation>não é true nem false; lido como false</translation>
+    </message>
+    <message>
+        <location line="+56"/>
+        <source>%1: not a scene file: %2 at byte %3</source>
+        <extracomment>%1 a path, %2 Qt&apos;s JSON parser&apos;s reason</extracomment>
+        <translation>%1: não é um ficheiro de cena: %2 no byte %3</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1: not a scene file: the JSON is not an object</source>
+        <translation>%1: não é um ficheiro de cena: o JSON não é um objeto</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>expected &quot;%1&quot;</source>
+        <translation>era esperado &quot;%1&quot;</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>missing or not a number; read as %1</source>
+        <translation>em falta ou não é um número; lido como %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>newer than this lightbench&apos;s %1: what it does not know is left out</source>
+        <translation>mais recente do que a versão %1 deste lightbench: o que este não conhece fica de fora</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>needs vertex and fragment sources as strings</source>
+        <translation>precisa do código-fonte do vertex shader e do fragment shader como strings</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>not an object</source>
+        <translation>não é um objeto</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1 (the section is kept as it is)</source>
+        <extracomment>%1 why an exercise section cannot be graded against</extracomment>
+        <translation>%1 (a secção é mantida tal como está)</translation>
+    </message>
+</context>
+<context>
+    <name>lb::SceneJson</name>
+    <message>
+        <location filename="../../render/model/scene_json.cpp" line="+109"/>
+        <source>w must be 0 or 1</source>
+        <translation>w tem de ser 0 ou 1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <location line="+17"/>
+        <source>a direction of length 0</source>
+        <translation>uma direção de comprimento 0</translation>
+    </message>
+    <message>
+        <location line="-8"/>
+        <source>kc, kl and kq all 0</source>
+        <translation>kc, kl e kq todos a 0</translation>
+    </message>
+    <message>
+        <location line="+125"/>
+        <location line="+33"/>
+        <source>not an array</source>
+        <translation>não é um array</translation>
+    </message>
+    <message>
+        <location line="-29"/>
+        <source>at most 4 lights</source>
+        <translation>no máximo 4 luzes</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <location filename="../../render/model/scene_json_reader.cpp" line="+19"/>
+        <source>not an object</source>
+        <translation>não é um objeto</translation>
+    </message>
+    <message>
+        <location line="+29"/>
+        <source>empty: one object drawn instead</source>
+        <translation>vazio: é desenhado um objeto em vez disso</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>at most 32 objects; the rest left out</source>
+        <translation>no máximo 32 objetos; os restantes ficam de fora</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>not an object; a sphere in its place</source>
+        <translation>não é um objeto; uma esfera no seu lugar</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>no such object; the first one</source>
+        <translation>objeto inexistente; é usado o primeiro</translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <source>too many: %1 more than the %2 kept</source>
+        <translation>demasiados: %1 além dos %2 mantidos</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>not a uniform&apos;s name</source>
+        <translation>não é o nome de um uniform</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>not 1 to 4 numbers</source>
+        <translation>não são 1 a 4 números</translation>
+    </message>
+    <message>
+        <location filename="../../render/model/scene_json_reader.cpp" line="-9"/>
+        <source>%1 (%2)</source>
+        <extracomment>a field of a scene file as the file spells it (%1, &quot;lights[2].frame&quot;, never translated) and why it was not used (%2)</extracomment>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>unknown field</source>
+        <translation>campo desconhecido</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <location filename="../../render/model/scene_json_reader.h" line="+47"/>
+        <source>not a number</source>
+        <translation>não é um número</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>not an array of numbers</source>
+        <translation>não é um array de números</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <location filename="../../render/model/scene_json_reader.h" line="+9"/>
+        <source>out of range, clamped</source>
+        <translation>fora do intervalo, ajustado ao limite</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>not true or false</source>
+        <translation>não é true nem false</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>not a string</source>
+        <translation>não é uma string</translation>
+    </message>
+    <message>
+        <location filename="../../render/model/scene_json_reader.h" line="+0"/>
+        <source>not a whole number</source>
+        <translation>não é um número inteiro</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>unknown value</source>
+        <translation>valor desconhecido</translation>
+    </message>
+</context>
+<context>
     <name>lb::ScenePanel</name>
     <message>
         <location filename="../../widgets/scene_panel.cpp" line="+71"/>
@@ -2949,7 +3953,7 @@
 <context>
     <name>lb::ShaderDocument</name>
     <message>
-        <location filename="../../render/model/shader_document.cpp" line="+219"/>
+        <location filename="../../render/model/shader_document.cpp" line="+201"/>
         <source>Cannot open %1</source>
         <translation>Não é possível abrir %1</translation>
     </message>
@@ -3358,6 +4362,46 @@
     </message>
 </context>
 <context>
+    <name>lb::TextureFile</name>
+    <message>
+        <location filename="../../render/model/texture_file.cpp" line="+4"/>
+        <source>%1: an empty file, not an image</source>
+        <translation>%1: um ficheiro vazio, não uma imagem</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1: not an image (%2)</source>
+        <translation>%1: não é uma imagem (%2)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the formats read are %1</source>
+        <translation>os formatos lidos são %1</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1: %2 x %3 texels is more than a texture may have (%4 x %4)</source>
+        <translation>%1: %2 x %3 texels é mais do que uma textura pode ter (%4 x %4)</translation>
+    </message>
+    <message>
+        <location line="+31"/>
+        <location line="+7"/>
+        <source>%1: could not be read as an image: %2</source>
+        <translation>%1: não foi possível ler como imagem: %2</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1: %2 x %3 texels (scaled from %4 x %5)</source>
+        <extracomment>%1 a file&apos;s name, %2 x %3 the texels drawn, %4 x %5 the image&apos;s own size</extracomment>
+        <translation>%1: %2 x %3 texels (redimensionado a partir de %4 x %5)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1: %2 x %3 texels</source>
+        <translation>%1: %2 x %3 texels</translation>
+    </message>
+</context>
+<context>
     <name>lb::TrialProcess</name>
     <message>
         <location filename="../../render/trial/trial_process.cpp" line="+176"/>
@@ -3520,6 +4564,100 @@
         <location line="+2"/>
         <source>|A - B|, A: %7, %1: largest %2/255 at (%3, %4); %5% of the drawn pixels within %8/255; scale 0 (black) to %6/255 (white)</source>
         <translation>|A - B|, A: %7, %1: maior %2/255 em (%3, %4); %5% dos píxeis desenhados com diferença até %8/255; escala de 0 (preto) a %6/255 (branco)</translation>
+    </message>
+</context>
+<context>
+    <name>lb::WireReader</name>
+    <message>
+        <location filename="../../render/import/wire_reader.cpp" line="+50"/>
+        <source>the import stream goes on after its end</source>
+        <translation>o fluxo de importação continua depois do seu fim</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>the import helper wrote something that is not a mesh stream</source>
+        <translation>o processo auxiliar de importação escreveu algo que não é um fluxo de malha</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>the import stream holds two meshes</source>
+        <translation>o fluxo de importação contém duas malhas</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>the import stream announces a mesh of a bad size</source>
+        <translation>o fluxo de importação anuncia uma malha de tamanho inválido</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>the import stream holds a record too large to be right</source>
+        <translation>o fluxo de importação contém um registo demasiado grande para ser válido</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>not enough memory for the mesh (%1 MB received)</source>
+        <translation>memória insuficiente para a malha (%1 MB recebidos)</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>receiving</source>
+        <extracomment>a stage of loading a mesh file, shown beside its progress</extracomment>
+        <translation>a receber</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the import stream holds an index past the last vertex</source>
+        <translation>o fluxo de importação contém um índice para além do último vértice</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>the import stream holds coordinates that are not finite</source>
+        <translation>o fluxo de importação contém coordenadas não finitas</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>the import stream announces a mesh whose sizes don&apos;t add up</source>
+        <translation>o fluxo de importação anuncia uma malha cujos tamanhos não batem certo</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the import stream announces a mesh of %1 MB, more than the helper may use (%2 MB)</source>
+        <translation>o fluxo de importação anuncia uma malha de %1 MB, mais do que o processo auxiliar pode usar (%2 MB)</translation>
+    </message>
+    <message>
+        <location line="+40"/>
+        <source>the import stream holds a short progress record</source>
+        <translation>o fluxo de importação contém um registo de progresso incompleto</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>the import failed without saying why</source>
+        <translation>a importação falhou sem indicar o motivo</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>the import stream holds a material of the wrong size</source>
+        <translation>o fluxo de importação contém um material com o tamanho errado</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>the import stream holds a short texture</source>
+        <translation>o fluxo de importação contém uma textura incompleta</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the import stream holds a texture whose size doesn&apos;t add up</source>
+        <translation>o fluxo de importação contém uma textura cujo tamanho não bate certo</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>the import stream ended without a mesh</source>
+        <translation>o fluxo de importação terminou sem uma malha</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>the import stream holds a record of unknown type %1</source>
+        <translation>o fluxo de importação contém um registo de tipo desconhecido %1</translation>
     </message>
 </context>
 <context>
