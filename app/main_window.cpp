@@ -15,6 +15,7 @@
 #include "probe_panel.h"
 #include "scene_actions.h"
 #include "scene_file.h"
+#include "scene_phrases.h"
 #include "settings_autosave.h"
 #include "shading_panel.h"
 #include "status_line.h"
@@ -257,12 +258,15 @@ void MainWindow::syncShadingWithProgram()
                 .arg(m_editor->programName()));
         return;
     }
-    const Shading drawn = *fixed.gouraud ? Shading::Gouraud : Shading::Phong;
+    // A whole sentence per model: the model's name and its gloss go together.
     m_shading->setShadingFixed(
-        true, tr("The program in the editor (%1) shades %2 (%3) whatever this says. Load a "
-                 "preset or Reset Everything to switch shading.")
-                  .arg(m_editor->programName(), toName(drawn),
-                       drawn == Shading::Gouraud ? tr("per vertex") : tr("per fragment")));
+        true, (*fixed.gouraud ? tr("The program in the editor (%1) shades gouraud (per vertex) "
+                                   "whatever this says. Load a preset or Reset Everything to "
+                                   "switch shading.")
+                              : tr("The program in the editor (%1) shades phong (per fragment) "
+                                   "whatever this says. Load a preset or Reset Everything to "
+                                   "switch shading."))
+                  .arg(m_editor->programName()));
 }
 
 void MainWindow::showProgramUsage(const ProgramBuild &build)
@@ -284,37 +288,17 @@ void MainWindow::showProgramUsage(const ProgramBuild &build)
 
 void MainWindow::updateStatus()
 {
-    const Scene &s = m_document.scene();
-    // One light: what it is and its frame; several: how many are on.
-    int on = 0;
-    for (const Light &l : s.lights)
-        on += l.enabled ? 1 : 0;
-    const Light &first = s.lights[0];
-    QString light = tr("%1 lights on").arg(on);
-    if (!m_programReadsLight)
-        light = tr("the program's own light (marker hidden)");
-    else if (on == 1 && first.enabled)
-        light = (first.position.w == 0.0f ? tr("directional light") : tr("point light")) +
-                tr(" in the %1 frame").arg(toName(first.frame));
     m_viewport->setProgramName(m_editor->programName()); // side A of a compare view
-    QString program = tr("Program: %1").arg(m_editor->programName());
-    if (m_shaders.showsBuiltIn() && s.shading.shading == Shading::Flat)
-        program += tr(", drawn flat (per triangle)"); // the same text, FLAT_SHADING 1
-    if (m_shaders.showsBuiltIn() && s.shading.show != ShowChoice::Colour)
-        program += tr(", showing %1").arg(toName(s.shading.show));
-    if (m_shaders.showsBuiltIn()) // the Shading panel's specular choice applies
-        program += s.shading.specular == SpecularModel::Blinn
-                       ? tr(", Blinn-Phong specular (N\u00b7H)")
-                       : tr(", Phong specular (R\u00b7V)");
-    m_status->setProgram(
-        QString("%1  |  %2  |  %3 projection").arg(program, light, toName(s.shading.projection)));
+    m_status->setProgram(statusDescription(m_document.scene(), m_editor->programName(),
+                                           m_shaders.showsBuiltIn(), m_programReadsLight));
 }
 
 void MainWindow::updateTitle()
 {
     QString name = m_sceneActions->documentName();
     if (m_lessons && m_lessons->isOpen()) // the lesson is the document
-        name = tr("%1, step %2").arg(m_lessons->name()).arg(m_lessons->currentStep() + 1);
+        name =
+            tr("%1, step %2").arg(m_lessons->name(), QString::number(m_lessons->currentStep() + 1));
     if (name.isEmpty() && !m_shaders.filePath(ShaderStage::Vertex).isEmpty())
         name = QFileInfo(m_shaders.filePath(ShaderStage::Vertex)).completeBaseName();
     if (name.isEmpty())

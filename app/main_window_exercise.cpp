@@ -5,6 +5,7 @@
 #include "exercise_panel.h"
 #include "probe_panel.h"
 #include "scene_actions.h"
+#include "scene_phrases.h"
 #include "shading_panel.h"
 #include "status_line.h"
 #include "submission.h"
@@ -24,11 +25,31 @@ namespace {
 // Not modal: the window (and a test driving it) goes on; the box stays until closed.
 void warnAboutSideB(QWidget *window, const QString &message)
 {
-    auto *box = new QMessageBox(QMessageBox::Warning, QObject::tr("Side B"), message,
+    auto *box = new QMessageBox(QMessageBox::Warning, MainWindow::tr("Side B"), message,
                                 QMessageBox::Ok, window);
     box->setObjectName("sideBMessage");
     box->setAttribute(Qt::WA_DeleteOnClose);
     box->open();
+}
+
+// The status line's word on a check that graded nothing. The statuses are the grading
+// report's data (grading_report.h), never shown as they are: a whole sentence for each.
+const std::pair<const char *, const char *> kNotChecked[] = {
+    {"does not compile", QT_TRANSLATE_NOOP("lb::MainWindow", "Not checked: does not compile")},
+    {"does not link", QT_TRANSLATE_NOOP("lb::MainWindow", "Not checked: does not link")},
+    {"refused", QT_TRANSLATE_NOOP("lb::MainWindow", "Not checked: refused")},
+    {"timed out", QT_TRANSLATE_NOOP("lb::MainWindow", "Not checked: timed out")},
+    {"could not start", QT_TRANSLATE_NOOP("lb::MainWindow", "Not checked: could not start")},
+    {"crashed", QT_TRANSLATE_NOOP("lb::MainWindow", "Not checked: crashed")},
+    {"unreadable", QT_TRANSLATE_NOOP("lb::MainWindow", "Not checked: unreadable")}};
+
+QString notChecked(const QString &status)
+{
+    for (const auto &[key, sentence] : kNotChecked)
+        if (status == QLatin1String(key))
+            return MainWindow::tr(sentence);
+    //: a check that graded nothing, for a reason this version does not know (%1, in English)
+    return MainWindow::tr("Not checked: %1").arg(status);
 }
 
 } // namespace
@@ -52,7 +73,7 @@ void MainWindow::setUpExercise()
         m_status->showMessage(report.graded() ? tr("Checked: %1 of %2 cases pass")
                                                     .arg(report.passedCount())
                                                     .arg(report.cases.size())
-                                              : tr("Not checked: %1").arg(report.status),
+                                              : notChecked(report.status),
                               10000);
     });
     connect(m_shading, &ShadingPanel::sideBFilesRequested, this, &MainWindow::chooseSideBFiles);
@@ -124,16 +145,19 @@ void MainWindow::applySideB()
     }
     m_viewport->setSideBProgram({}, {});
     m_probe->setSideBReference(
-        exerciseBuiltIn ? tr("the exercise's reference (built-in, %1 "
-                             "shading, %2 specular)")
-                              .arg(toName(e->reference.shading), toName(e->reference.specular))
-                        : QString());
+        exerciseBuiltIn
+            //: %1: gouraud, phong or flat; %2: phong or blinn
+            ? tr("the exercise's reference (built-in, %1 shading, %2 specular)")
+                  .arg(shownName(e->reference.shading), shownName(e->reference.specular))
+            : QString());
     if (exerciseBuiltIn) {
         holdSideBToReference();
-        m_shading->setSideB(tr("the built-in program, %1 shading and %2 specular (the "
-                               "exercise's reference)")
-                                .arg(toName(e->reference.shading), toName(e->reference.specular)),
-                            tr("The exercise's reference fixes side B's choices."), false);
+        //: %1: gouraud, phong or flat; %2: phong or blinn
+        m_shading->setSideB(
+            tr("the built-in program, %1 shading and %2 specular (the "
+               "exercise's reference)")
+                .arg(shownName(e->reference.shading), shownName(e->reference.specular)),
+            tr("The exercise's reference fixes side B's choices."), false);
         return;
     }
     m_shading->setSideB(tr("the built-in program"), {}, false);
@@ -248,6 +272,7 @@ void MainWindow::showCase(int index)
     m_probe->clear(); // its arrows and names belonged to the view left behind
     m_document.set(shown);
     m_exercisePanel->markShownCase(index);
+    //: "Back to my scene" is the Exercise panel's button: its name as translated there
     m_status->showMessage(tr("Case %1 in the difference view (key C: the other compare views; "
                              "\"Back to my scene\" in the Exercise panel)")
                               .arg(index),

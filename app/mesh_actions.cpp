@@ -5,6 +5,7 @@
 #include "message_box.h"
 #include "preferences_dialog.h"
 #include "recent_files.h"
+#include "scene_phrases.h"
 #include "status_line.h"
 
 #include <QDragEnterEvent>
@@ -120,7 +121,7 @@ void MeshActions::addToMenus(QMenu *file, QMenu *edit, QMenu *view)
             shown = !shown;
         });
     });
-    normals->setShortcut(QKeySequence(tr("N")));
+    normals->setShortcut(QKeySequence(tr("N", "shortcut")));
 }
 
 void MeshActions::showSummary()
@@ -133,18 +134,21 @@ void MeshActions::showSummary()
     const MeshFile *file = m_loader->file();
     const ObjectSettings &object = m_document->scene().selectedObject();
     if (const QString problem = m_loader->meshProblem(); !problem.isEmpty()) {
-        m_summary->setText(tr("%1 not loaded (%2 drawn)")
-                               .arg(QFileInfo(object.meshPath).fileName(), toName(object.shape)));
+        //: %1: the mesh file; %2: the built-in shape drawn instead (cube, sphere, ...)
+        m_summary->setText(
+            tr("%1 not loaded (%2 drawn)")
+                .arg(QFileInfo(object.meshPath).fileName(), shownName(object.shape)));
         m_summary->setFullText(problem);
         return;
     }
-    QString shortForm = tr("%1: %2 triangles")
-                            .arg(file ? QFileInfo(file->path).fileName()
-                                      : displayName(m_document->scene().selectedObject()),
-                                 QLocale().toString(qulonglong(mesh->triangleCount())));
-    if (file)
-        shortForm += tr(", %1 s").arg(file->seconds, 0, 'f', 2);
-    m_summary->setText(shortForm);
+    const QString triangles = QLocale().toString(qulonglong(mesh->triangleCount()));
+    // A file says how long it took to read, in the same sentence.
+    m_summary->setText(
+        file ? tr("%1: %2 triangles, %3 s")
+                   .arg(QFileInfo(file->path).fileName(), triangles,
+                        QString::number(file->seconds, 'f', 2))
+             : tr("%1: %2 triangles")
+                   .arg(displayName(m_document->scene().selectedObject()), triangles));
     m_summary->setFullText(m_loader->summary());
 }
 
@@ -224,7 +228,9 @@ void MeshActions::finished(bool ok, const QString &message)
         return;
     }
     showSummary(); // a file the scene names and could not be read: the status bar says so
-    if (message == tr("Loading cancelled")) {
+    // The loader's own words (its context), so that a translated "Loading cancelled" is
+    // still told from an error.
+    if (message == ObjectLoader::tr("Loading cancelled")) {
         showStatusMessage(m_window, message, 5000);
         return;
     }
