@@ -1,6 +1,7 @@
 #include "help.h"
 
 #include <QAction>
+#include <QCoreApplication>
 #include <QDesktopServices>
 #include <QDialog>
 #include <QDialogButtonBox>
@@ -16,10 +17,45 @@ namespace lb {
 
 namespace {
 
+// The translation context of the help windows' words ("lb::Help" in the .ts files).
+struct Help
+{
+    Q_DECLARE_TR_FUNCTIONS(lb::Help)
+};
+
 QString row(const QString &keys, const QString &what)
 {
     return QString("<tr><td style='padding-right:16px'><b>%1</b></td><td>%2</td></tr>")
         .arg(keys.toHtmlEscaped(), what.toHtmlEscaped());
+}
+
+QString keyName(const QKeySequence &key)
+{
+    return key.toString(QKeySequence::NativeText);
+}
+
+// "F11 or F5": the keys that do the same, in the translator's words and order. Key names
+// are Qt's own (QKeySequence's native text, which Qt's catalogue translates).
+QString alternatives(const QList<QKeySequence> &keys)
+{
+    QStringList names;
+    for (const QKeySequence &k : keys)
+        names << keyName(k);
+    if (names.size() < 2)
+        return names.value(0);
+    QString text = names.takeFirst();
+    const QString last = names.takeLast();
+    for (const QString &name : names)
+        //: shortcuts that do the same: all but the last two, "Ctrl++, Ctrl+= or ..."
+        text = Help::tr("%1, %2").arg(text, name);
+    //: shortcuts that do the same: "F11 or F5"
+    return Help::tr("%1 or %2").arg(text, last);
+}
+
+// Two keys for two actions side by side: "Ctrl+Z / Ctrl+Y" for "undo / redo".
+QString keyPair(const QKeySequence &first, const QKeySequence &second)
+{
+    return QString("%1 / %2").arg(keyName(first), keyName(second));
 }
 
 void addMenu(QString &html, const QMenu *menu, const QString &path)
@@ -31,10 +67,7 @@ void addMenu(QString &html, const QMenu *menu, const QString &path)
         }
         if (a->shortcuts().isEmpty())
             continue;
-        QStringList keys;
-        for (const QKeySequence &k : a->shortcuts())
-            keys << k.toString(QKeySequence::NativeText);
-        html += row(keys.join(QObject::tr(" or ")), path + " > " + a->text().remove('&'));
+        html += row(alternatives(a->shortcuts()), path + " > " + a->text().remove('&'));
     }
 }
 
@@ -68,27 +101,34 @@ QDialog *textWindow(QWidget *parent, const QString &title, QTextBrowser *&browse
 
 QString shortcutsHtml(const QMenuBar *menus)
 {
+    const QString heading = "<tr><td colspan='2'><h3>%1</h3></td></tr>";
     QString html = "<table cellspacing='3'>";
-    html += QString("<tr><td colspan='2'><h3>%1</h3></td></tr>").arg(QObject::tr("Menus"));
+    //: Help > Keyboard Shortcuts: the heading over every menu's keys
+    html += heading.arg(Help::tr("Menus"));
     for (const QAction *a : menus->actions())
         if (a->menu())
             addMenu(html, a->menu(), a->menu()->title().remove('&'));
-    html += QString("<tr><td colspan='2'><h3>%1</h3></td></tr>").arg(QObject::tr("Shader editor"));
-    html += row("Ctrl+Enter", QObject::tr("compile and link now"));
-    html += row("Ctrl+F", QObject::tr("find in the shader"));
-    html += row("Ctrl+Z / Ctrl+Y", QObject::tr("undo / redo (also what a preset, an example or "
-                                               "a reset replaced)"));
-    html += row("Ctrl+Space", QObject::tr("complete the word"));
-    html += row("Ctrl+L / Ctrl+D", QObject::tr("delete / duplicate the line"));
-    html += QString("<tr><td colspan='2'><h3>%1</h3></td></tr>").arg(QObject::tr("View"));
-    html += row(QObject::tr("left drag"), QObject::tr("orbit the camera"));
-    html += row(QObject::tr("click"), QObject::tr("select the object under the cursor"));
-    html += row(QObject::tr("right or middle drag"), QObject::tr("pan"));
-    html += row(QObject::tr("wheel"), QObject::tr("zoom"));
-    html += row(QObject::tr("Ctrl+click, Shift+click"),
-                QObject::tr("probe the surface point (drag to move it)"));
-    html += row(QObject::tr("drag the wipe's line"), QObject::tr("move the wipe (compare)"));
-    html += row(QObject::tr("drop a file"), QObject::tr("open a mesh, a scene, a lesson or a shader pair"));
+    html += heading.arg(Help::tr("Shader editor"));
+    html += row(keyName(QKeySequence(Qt::CTRL | Qt::Key_Enter)), Help::tr("compile and link now"));
+    html += row(keyName(QKeySequence(Qt::CTRL | Qt::Key_F)), Help::tr("find in the shader"));
+    html += row(keyPair(QKeySequence(Qt::CTRL | Qt::Key_Z), QKeySequence(Qt::CTRL | Qt::Key_Y)),
+                Help::tr("undo / redo (also what a preset, an example or a reset replaced)"));
+    html += row(keyName(QKeySequence(Qt::CTRL | Qt::Key_Space)), Help::tr("complete the word"));
+    html += row(keyPair(QKeySequence(Qt::CTRL | Qt::Key_L), QKeySequence(Qt::CTRL | Qt::Key_D)),
+                Help::tr("delete / duplicate the line"));
+    //: Help > Keyboard Shortcuts: the heading over the mouse and keys of the 3D view (not
+    //: the View menu)
+    html += heading.arg(Help::tr("View"));
+    html += row(Help::tr("left drag"), Help::tr("orbit the camera"));
+    html += row(Help::tr("click"), Help::tr("select the object under the cursor"));
+    html += row(Help::tr("right or middle drag"), Help::tr("pan"));
+    html += row(Help::tr("wheel"), Help::tr("zoom"));
+    //: the keys as the keyboard names them (Ctrl, Shift), held while clicking
+    html += row(Help::tr("Ctrl+click, Shift+click"),
+                Help::tr("probe the surface point (drag to move it)"));
+    html += row(Help::tr("drag the wipe's line"), Help::tr("move the wipe (compare)"));
+    html +=
+        row(Help::tr("drop a file"), Help::tr("open a mesh, a scene, a lesson or a shader pair"));
     html += "</table>";
     return html;
 }
@@ -96,7 +136,7 @@ QString shortcutsHtml(const QMenuBar *menus)
 void showShortcuts(QWidget *parent, const QMenuBar *menus)
 {
     QTextBrowser *browser = nullptr;
-    QDialog *dialog = textWindow(parent, QObject::tr("Keyboard shortcuts - lightbench"), browser);
+    QDialog *dialog = textWindow(parent, Help::tr("Keyboard shortcuts - lightbench"), browser);
     browser->setHtml(shortcutsHtml(menus));
     dialog->setObjectName("shortcutsWindow");
     dialog->show();
@@ -105,13 +145,13 @@ void showShortcuts(QWidget *parent, const QMenuBar *menus)
 void showFeatures(QWidget *parent)
 {
     QTextBrowser *browser = nullptr;
-    QDialog *dialog = textWindow(parent, QObject::tr("Features - lightbench"), browser);
+    QDialog *dialog = textWindow(parent, Help::tr("Features - lightbench"), browser);
     QFile readme(":/docs/README.md");
     browser->setSearchPaths({":/docs"}); // its screenshots, by their paths in the README
     if (readme.open(QIODevice::ReadOnly))
         browser->setMarkdown(QString::fromUtf8(readme.readAll()));
     else
-        browser->setPlainText(QObject::tr("The README is missing from this build."));
+        browser->setPlainText(Help::tr("The README is missing from this build."));
     dialog->setObjectName("featuresWindow");
     dialog->show();
 }
@@ -119,15 +159,14 @@ void showFeatures(QWidget *parent)
 void showAbout(QWidget *parent, const QString &glInfo)
 {
     QMessageBox::about(
-        parent, QObject::tr("About lightbench"),
-        QObject::tr("<h3>lightbench %1</h3><p>A workbench for the lighting model of computer "
-                    "graphics courses: ambient, diffuse and specular terms, Phong and "
-                    "Blinn-Phong, Gouraud and Phong shading, every pixel checked against a CPU "
-                    "reference.</p><p>Qt %2 (built with %3)<br>%4</p>")
+        parent, Help::tr("About lightbench"),
+        Help::tr("<h3>lightbench %1</h3><p>A workbench for the lighting model of computer "
+                 "graphics courses: ambient, diffuse and specular terms, Phong and "
+                 "Blinn-Phong, Gouraud and Phong shading, every pixel checked against a CPU "
+                 "reference.</p><p>Qt %2 (built with %3)<br>%4</p>")
             .arg(QStringLiteral(LIGHTBENCH_VERSION), QString::fromLatin1(qVersion()),
                  QStringLiteral(QT_VERSION_STR),
-                 glInfo.isEmpty() ? QObject::tr("OpenGL not started yet")
-                                  : glInfo.toHtmlEscaped()));
+                 glInfo.isEmpty() ? Help::tr("OpenGL not started yet") : glInfo.toHtmlEscaped()));
 }
 
 } // namespace lb
