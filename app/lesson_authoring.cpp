@@ -26,13 +26,16 @@ const char *kDirKey = "lessons/lastDirectory";
 
 void LessonActions::newLesson()
 {
-    if (m_open && m_modified && m_maySetAside &&
-        !m_maySetAside(SetAsideFor::OpeningLesson, tr("a new lesson")))
+    if (m_open && m_modified && m_maySetAside && !m_maySetAside(SetAsideFor::NewLesson, {}))
         return;
     m_motion->stop(true);
     Lesson lesson;
+    // The first title and step titles are the teacher's to change: written into the lesson
+    // file as its text (in the captions' language), not read back as keys.
+    //: a new lesson's title, until the teacher renames it (saved in the lesson file)
     lesson.title.insert(lessonLanguage(), tr("Lesson"));
     LessonStep first;
+    //: a new step's title, until the teacher renames it (saved in the lesson file)
     first.title.insert(lessonLanguage(), tr("Step %1").arg(1));
     first.scene = currentView();
     first.scene.exercise.reset(); // the view: its scene and program
@@ -105,10 +108,10 @@ bool LessonActions::setCaption(const LocalizedText &caption)
     for (auto it = caption.begin(); it != caption.end(); ++it)
         if (it.value().size() > kMaxLessonTextCharacters) {
             showMessage(QMessageBox::Warning, tr("The step keeps its caption."),
+                        //: %1: the caption's language code (en, de, pt)
                         tr("The %1 caption has %2 characters; a caption holds at most %3.")
-                            .arg(it.key())
-                            .arg(it.value().size())
-                            .arg(kMaxLessonTextCharacters));
+                            .arg(it.key(), QString::number(it.value().size()),
+                                 QString::number(kMaxLessonTextCharacters)));
             return false;
         }
     m_lesson.steps[std::size_t(m_current)].caption = caption;
