@@ -14,10 +14,12 @@ namespace {
 constexpr const char *kSerialKey = "autosave/serial";
 constexpr const char *kSerialName = "serial"; // its line in the INI file: serial=N
 
-QString why(QSettings::Status status)
+// "PATH cannot be written": a whole sentence for each reason, the path in it.
+QString notWritten(const QString &path, QSettings::Status status)
 {
-    return status == QSettings::FormatError ? QObject::tr("is no settings file")
-                                            : QObject::tr("cannot be written");
+    return (status == QSettings::FormatError ? SettingsAutosave::tr("%1 is no settings file")
+                                             : SettingsAutosave::tr("%1 cannot be written"))
+        .arg(path);
 }
 
 } // namespace
@@ -68,7 +70,7 @@ void SettingsAutosave::sync()
     } else {
         m_settings.sync();
         if (!reachedTheDisk())
-            error = QString("%1 %2").arg(m_settings.fileName(), why(m_settings.status()));
+            error = notWritten(m_settings.fileName(), m_settings.status());
     }
     if (error.isEmpty()) {
         if (m_failing)

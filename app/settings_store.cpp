@@ -25,8 +25,7 @@ SettingsStore::SettingsStore(const QString &path)
 {
     const QString scratch = scratchOf(m_scratch, path);
     if (!m_scratch.isValid())
-        m_error = QString("no temporary folder for the settings (%1): they are written "
-                          "directly")
+        m_error = tr("no temporary folder for the settings (%1): they are written directly")
                       .arg(m_scratch.errorString());
     else if (QFileInfo::exists(path)) {
         const BoundedRead read = readBounded(path, {"a settings file", kMaxSettingsBytes});
@@ -42,11 +41,10 @@ QString SettingsStore::save()
 {
     m_settings->sync();
     if (!m_scratch.isValid()) // QSettings wrote the file itself
-        return m_settings->status() == QSettings::NoError
-                   ? QString()
-                   : QString("%1: cannot be written").arg(m_path);
+        return m_settings->status() == QSettings::NoError ? QString()
+                                                          : tr("%1: cannot be written").arg(m_path);
     if (m_settings->status() != QSettings::NoError)
-        return QString("%1: its scratch copy %2 cannot be written (a full temporary folder?)")
+        return tr("%1: its scratch copy %2 cannot be written (a full temporary folder?)")
             .arg(m_path, m_settings->fileName());
     const BoundedRead scratch =
         readBounded(m_settings->fileName(), {"a settings file", kMaxSettingsBytes});

@@ -6,6 +6,7 @@
 // folder, and save() takes what it holds to the settings file through the one writer
 // (safe_write.h), which leaves the old file as it was when a write fails and says why.
 
+#include <QCoreApplication>
 #include <QSettings>
 #include <QString>
 #include <QTemporaryDir>
@@ -16,6 +17,7 @@ namespace lb {
 
 class SettingsStore
 {
+    Q_DECLARE_TR_FUNCTIONS(lb::SettingsStore) // its messages reach the window's status line
 public:
     // `path`: the settings file (QSettings().fileName() for the application's own). Its
     // values are read now; `error()` says why they could not be (the store starts empty).

@@ -66,11 +66,9 @@ Submission readSubmission(const QString &given)
         const QStringList verts = dir.entryList({"*.vert"}, QDir::Files);
         const QStringList frags = dir.entryList({"*.frag"}, QDir::Files);
         if (verts.size() != 1 || frags.size() != 1) {
-            s.error = QString("%1: a folder needs one NAME.vert and one NAME.frag (it has %2 and "
-                              "%3)")
-                          .arg(path)
-                          .arg(verts.size())
-                          .arg(frags.size());
+            s.error = Submission::tr("%1: a folder needs one NAME.vert and one NAME.frag (it has "
+                                     "%2 and %3)")
+                          .arg(path, QString::number(verts.size()), QString::number(frags.size()));
             return s;
         }
         return pair(s.name, dir.filePath(verts[0]), dir.filePath(frags[0]));
@@ -81,7 +79,7 @@ Submission readSubmission(const QString &given)
         if (!read.file) {
             s.error = read.error;
         } else if (!read.file->program) {
-            s.error = QString("%1: the scene file has no program").arg(path);
+            s.error = Submission::tr("%1: the scene file has no program").arg(path);
         } else {
             s.vertexPath = s.fragmentPath = path;
             s.vertex = read.file->program->vertex;
@@ -101,8 +99,9 @@ Submission readSubmission(const QString &given)
     }
     for (const QString &p : {vertex, fragment})
         if (!QFileInfo::exists(p)) {
-            s.error = QString("%1: no %2 beside it (a submission is NAME.vert and NAME.frag)")
-                          .arg(path, QFileInfo(p).fileName());
+            s.error =
+                Submission::tr("%1: no %2 beside it (a submission is NAME.vert and NAME.frag)")
+                    .arg(path, QFileInfo(p).fileName());
             return s;
         }
     return pair(s.name, vertex, fragment);

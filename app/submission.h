@@ -2,6 +2,7 @@
 // A student's submission as --grade names it: NAME.vert + NAME.frag (either file, or NAME
 // alone), a folder holding one such pair, or a scene file with a program.
 
+#include <QCoreApplication>
 #include <QString>
 #include <QStringList>
 
@@ -9,6 +10,9 @@ namespace lb {
 
 struct Submission
 {
+    // Its messages: English on the command line (no translator), translated in the window.
+    Q_DECLARE_TR_FUNCTIONS(lb::Submission)
+public:
     QString name;                     // NAME, the folder's or the scene file's base name
     QString vertexPath, fragmentPath; // for messages: where each stage's lines are
     QString vertex, fragment;

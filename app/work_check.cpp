@@ -28,13 +28,15 @@ int gradingTimeLimitMs(int cases)
 
 QString endedWithoutReport(const QProcess &child)
 {
+    // WorkCheck's words: English from --grade (no translator), translated in the window.
     if (child.error() == QProcess::FailedToStart)
         return QString("%1: %2").arg(child.program(), child.errorString());
     if (child.exitStatus() == QProcess::CrashExit) // the exit code is the signal then
-        return QString("killed by signal %1 (%2)")
+        //: %2 is the C library's name of the signal, in English ("Segmentation fault")
+        return WorkCheck::tr("killed by signal %1 (%2)")
             .arg(child.exitCode())
             .arg(QString::fromLatin1(strsignal(child.exitCode())));
-    return QString("exit code %1").arg(child.exitCode());
+    return WorkCheck::tr("exit code %1").arg(child.exitCode());
 }
 
 WorkCheck::WorkCheck(QObject *parent) : QObject(parent), m_timer(new QTimer(this))
