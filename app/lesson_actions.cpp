@@ -155,8 +155,14 @@ void LessonActions::addLanguageMenu()
     QMenu *menu = m_menu->addMenu(tr("Caption &Language"));
     auto *group = new QActionGroup(menu);
     const QString chosen = m_settings.value(kLanguageKey).toString();
+    // Each language named in itself (as language menus do), so it is found whatever the
+    // window speaks: not translated.
     const std::pair<QString, QString> languages[] = {
-        {QString(), tr("The System's")}, {"en", "English"}, {"pt", "Português"}, {"de", "Deutsch"}};
+        //: Lesson > Caption Language: the system's language (LANG)
+        {QString(), tr("The System's")},
+        {"en", "English"},
+        {"pt", "Português"},
+        {"de", "Deutsch"}};
     for (const auto &[code, name] : languages) {
         QAction *action = menu->addAction(name, this, [this, code = code] {
             m_settings.setValue(kLanguageKey, code);

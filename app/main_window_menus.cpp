@@ -63,6 +63,7 @@ void MainWindow::buildMenus()
     addItem(file, tr("Save Shaders As..."), QKeySequence(), [this] { saveShadersAs(); });
     file->addSeparator();
     QMenu *edit = new QMenu(tr("&Edit"), this); // filled below, shown after File
+    //: the menu (camera, probe, zoom, presentation, docks), not the 3D view itself
     QMenu *view = new QMenu(tr("&View"), this);
     m_meshActions->addToMenus(file, edit, view);
     file->addSeparator();
@@ -82,7 +83,7 @@ void MainWindow::buildMenus()
     QMenu *shading = menuBar()->addMenu(tr("&Shading"));
     // A choice the program on screen does not follow is greyed in the panel with why; its
     // key then says why instead of changing what does not draw.
-    addItem(shading, tr("Toggle &Gouraud / Phong"), QKeySequence(tr("G")), [this] {
+    addItem(shading, tr("Toggle &Gouraud / Phong"), QKeySequence(tr("G", "shortcut")), [this] {
         if (!m_shading->shadingCombo()->isEnabled()) {
             m_status->showMessage(m_shading->shadingCombo()->toolTip());
             return;
@@ -111,14 +112,15 @@ void MainWindow::buildMenus()
                                          : SpecularModel::Blinn;
             });
         });
-    addItem(shading, tr("Toggle &Perspective / Orthographic"), QKeySequence(tr("P")), [this] {
-        m_document.edit([](Scene &s) {
-            s.shading.projection = s.shading.projection == Projection::Perspective
-                                       ? Projection::Orthographic
-                                       : Projection::Perspective;
-        });
-    });
-    addItem(shading, tr("Toggle &Lighting"), QKeySequence(tr("L")), [this] {
+    addItem(shading, tr("Toggle &Perspective / Orthographic"), QKeySequence(tr("P", "shortcut")),
+            [this] {
+                m_document.edit([](Scene &s) {
+                    s.shading.projection = s.shading.projection == Projection::Perspective
+                                               ? Projection::Orthographic
+                                               : Projection::Perspective;
+                });
+            });
+    addItem(shading, tr("Toggle &Lighting"), QKeySequence(tr("L", "shortcut")), [this] {
         m_document.edit([](Scene &s) { s.shading.lighting = !s.shading.lighting; });
     });
     // The model taken apart: each term on or off (the built-in programs and any program that
@@ -127,21 +129,29 @@ void MainWindow::buildMenus()
         {tr("Toggle the &Ambient Term"), &TermSwitches::ambient},
         {tr("Toggle the &Diffuse Term"), &TermSwitches::diffuse},
         {tr("Toggle the &Specular Term"), &TermSwitches::specular}};
-    const char *termKeys[] = {"A", "D", "S"};
+    // Their initials: a translation may give them its own.
+    struct Key
+    {
+        const char *source, *disambiguation;
+    };
+    const Key termKeys[] = {QT_TRANSLATE_NOOP3("lb::MainWindow", "A", "shortcut"),
+                            QT_TRANSLATE_NOOP3("lb::MainWindow", "D", "shortcut"),
+                            QT_TRANSLATE_NOOP3("lb::MainWindow", "S", "shortcut")};
     for (int i = 0; i < 3; ++i)
-        addItem(shading, terms[i].first, QKeySequence(tr(termKeys[i])),
+        addItem(shading, terms[i].first,
+                QKeySequence(tr(termKeys[i].source, termKeys[i].disambiguation)),
                 [this, member = terms[i].second] {
                     m_document.edit(
                         [&](Scene &s) { s.shading.terms.*member = !(s.shading.terms.*member); });
                 });
-    addItem(shading, tr("&Compare: Off / Side by Side / Wipe / Difference"), QKeySequence(tr("C")),
-            [this] {
+    addItem(shading, tr("&Compare: Off / Side by Side / Wipe / Difference"),
+            QKeySequence(tr("C", "shortcut")), [this] {
                 m_document.edit(
                     [](Scene &s) { s.compare.mode = CompareMode((int(s.compare.mode) + 1) % 4); });
             });
 
     menuBar()->addMenu(view);
-    addItem(view, tr("&Reset Camera"), QKeySequence(tr("R")),
+    addItem(view, tr("&Reset Camera"), QKeySequence(tr("R", "shortcut")),
             [this] { m_viewport->resetCamera(); });
     addItem(view, tr("Clear the &Probe (in Presentation Mode: Leave It)"), QKeySequence(tr("Esc")),
             [this] { escapePressed(); });
@@ -180,6 +190,7 @@ void MainWindow::addViewMenu(QMenu *view)
     QMenu *scale = view->addMenu(tr("UI &Scale"));
     m_scaleGroup = new QActionGroup(this);
     for (int percent : kScalePercents) {
+        //: View > UI Scale: a size in percent ("125%")
         QAction *a = scale->addAction(tr("%1%").arg(percent), this,
                                       [this, percent] { setUiScale(percent / 100.0); });
         a->setCheckable(true);

@@ -53,7 +53,7 @@ void MainWindow::addPresentationActions(QMenu *view)
     // Both keys a clicker may send for its blank-screen button.
     QAction *blank = view->addAction(tr("&Blank the Screen (Presentation Mode)"), this,
                                      [this] { blankPressed(); });
-    blank->setShortcuts({QKeySequence(tr("B")), QKeySequence(Qt::Key_Period)});
+    blank->setShortcuts({QKeySequence(tr("B", "shortcut")), QKeySequence(Qt::Key_Period)});
 
     m_fadedArrowsAction = view->addAction(tr("&Faded Probe Arrows"), this, [this](bool on) {
         m_settings.setValue(kFadedArrowsKey, on);
@@ -115,6 +115,7 @@ void MainWindow::setPresentationPanels(bool shown)
         return;
     if (!editor) // said, not silently left out
         m_status->showMessage(
+            //: View > Shader editor: the menu's and the dock's names as translated there
             tr("The editor needs %1 px at this scale: View > Shader editor shows it")
                 .arg(m_editor->minimumSizeHint().width()));
     applyDockWidths();

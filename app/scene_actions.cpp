@@ -27,7 +27,11 @@ const char *kRecentKey = "recentScenes";
 const char *kDirKey = "scenes/lastDirectory";
 const char *kExportSizeKey = "export/size";
 const char *kCurrentKey = "scenes/current"; // the file the session's scene came from
-const QString kFilter = QObject::tr("Scenes (*.json);;All files (*)");
+// Translated when a dialog opens (a constant would be made before any translator is in).
+QString sceneFilter()
+{
+    return SceneActions::tr("Scenes (*.json);;All files (*)");
+}
 // A scene file as the window opens it: an example's mesh (none today) would name a file beside
 // the resource, so its objects keep their shapes.
 SceneFile asOpened(SceneFile file, bool example)
@@ -143,24 +147,32 @@ void SceneActions::apply(const SceneFile &file, const QStringList &ignoredFields
         emit documentChanged();
     }
     // A lesson's step (no origin) names itself in the lesson bar, and says what it ignored
-    // once for the whole lesson.
-    const QString name = origin.isEmpty() ? tr("This step") : escapedName(m_name);
-    const QString ignored = ignoredFields.isEmpty()
-                                ? QString()
-                                : tr("%n field(s) could not be used and kept their defaults:", "",
-                                     int(ignoredFields.size())) +
-                                      "\n" + summarisedList(ignoredFields, "\n", 20);
+    // once for the whole lesson. A whole sentence for a step and for a file, for translators.
+    const bool step = origin.isEmpty();
+    const QString name = escapedName(m_name);
+    const int ignoredCount = int(ignoredFields.size());
+    const QString ignored =
+        ignoredFields.isEmpty()
+            ? QString()
+            : tr("%n field(s) could not be used and kept their defaults:", "", ignoredCount) +
+                  "\n" + summarisedList(ignoredFields, "\n", 20);
     if (!lowered.isEmpty())
         showMessage(QMessageBox::Information,
-                    tr("%1 opened with less tessellation than it asks for, to fit this "
-                       "machine's memory; the file is unchanged unless you save the scene.")
-                        .arg(name),
+                    step ? tr("This step opened with less tessellation than it asks for, to fit "
+                              "this machine's memory; the file is unchanged unless you save the "
+                              "scene.")
+                         : tr("%1 opened with less tessellation than it asks for, to fit this "
+                              "machine's memory; the file is unchanged unless you save the scene.")
+                               .arg(name),
                     lowered + (ignored.isEmpty() ? QString() : "\n\n" + ignored));
     else if (!ignoredFields.isEmpty())
         showMessage(QMessageBox::Information,
-                    tr("%1 opened; %n field(s) could not be used and kept their defaults.", "",
-                       int(ignoredFields.size()))
-                        .arg(name),
+                    step ? tr("This step opened; %n field(s) could not be used and kept their "
+                              "defaults.",
+                              "", ignoredCount)
+                         : tr("%1 opened; %n field(s) could not be used and kept their defaults.",
+                              "", ignoredCount)
+                               .arg(name),
                     summarisedList(ignoredFields, "\n", 20));
     if (lowered.isEmpty() && !origin.isEmpty()) // else the status line says what was lowered
         showStatusMessage(m_window, tr("Opened the scene %1").arg(name), 5000);
@@ -208,10 +220,9 @@ QString SceneActions::exportImage(const QString &path, QSize pixels)
     if (error.isEmpty()) {
         const QImage image = m_viewport->renderImage(pixels);
         if (image.isNull())
-            error = tr("%1: the view could not be drawn at %2 x %3")
-                        .arg(path)
-                        .arg(pixels.width())
-                        .arg(pixels.height());
+            error =
+                tr("%1: the view could not be drawn at %2 x %3")
+                    .arg(path, QString::number(pixels.width()), QString::number(pixels.height()));
         else
             error = writeImageSafely(path, image); // a temporary file, then a rename
     }
@@ -238,7 +249,7 @@ void SceneActions::copyImage()
 void SceneActions::showOpenDialog()
 {
     const QString path = QFileDialog::getOpenFileName(
-        m_window, tr("Open a scene"), m_settings.value(kDirKey).toString(), kFilter);
+        m_window, tr("Open a scene"), m_settings.value(kDirKey).toString(), sceneFilter());
     if (path.isEmpty())
         return;
     m_settings.setValue(kDirKey, QFileInfo(path).absolutePath());
@@ -249,7 +260,7 @@ bool SceneActions::showSaveDialog()
 {
     QString path = QFileDialog::getSaveFileName(
         m_window, tr("Save the scene"),
-        m_path.isEmpty() ? m_settings.value(kDirKey).toString() : m_path, kFilter);
+        m_path.isEmpty() ? m_settings.value(kDirKey).toString() : m_path, sceneFilter());
     if (path.isEmpty())
         return false;
     if (QFileInfo(path).suffix().isEmpty())
