@@ -5,7 +5,6 @@
 #include "message_box.h"
 #include "preferences_dialog.h"
 #include "recent_files.h"
-#include "scene_phrases.h"
 #include "status_line.h"
 
 #include <QDragEnterEvent>
@@ -137,7 +136,7 @@ void MeshActions::showSummary()
         //: %1: the mesh file; %2: the built-in shape drawn instead (cube, sphere, ...)
         m_summary->setText(
             tr("%1 not loaded (%2 drawn)")
-                .arg(QFileInfo(object.meshPath).fileName(), shownName(object.shape)));
+                .arg(QFileInfo(object.meshPath).fileName(), shapeLabel(object.shape)));
         m_summary->setFullText(problem);
         return;
     }

@@ -37,16 +37,6 @@ const Names<SpecularModel> kSpeculars[] = {
     //: the Blinn-Phong specular model (N·H), as in "%1 specular"
     {SpecularModel::Blinn, QT_TRANSLATE_NOOP3("lb::ScenePhrases", "blinn", "specular")}};
 
-const Names<Shape> kShapes[] = {
-    //: a built-in shape, as in "away.ply not loaded (%1 drawn)"
-    {Shape::Cube, QT_TRANSLATE_NOOP3("lb::ScenePhrases", "cube", "shape")},
-    //: a built-in shape, as in "away.ply not loaded (%1 drawn)"
-    {Shape::Sphere, QT_TRANSLATE_NOOP3("lb::ScenePhrases", "sphere", "shape")},
-    //: a built-in shape, as in "away.ply not loaded (%1 drawn)"
-    {Shape::Torus, QT_TRANSLATE_NOOP3("lb::ScenePhrases", "torus", "shape")},
-    //: a built-in shape, as in "away.ply not loaded (%1 drawn)"
-    {Shape::Plane, QT_TRANSLATE_NOOP3("lb::ScenePhrases", "plane", "shape")}};
-
 // What the built-in program shows instead of the lit colour (the Shading panel's Show).
 const Names<ShowChoice> kShowing[] = {
     //: status line: the built-in program draws N as a colour
@@ -103,11 +93,6 @@ QString shownName(Shading shading)
 QString shownName(SpecularModel specular)
 {
     return translated(kSpeculars, specular);
-}
-
-QString shownName(Shape shape)
-{
-    return translated(kShapes, shape);
 }
 
 QString statusDescription(const Scene &s, const QString &programName, bool builtInProgram,

@@ -11,11 +11,10 @@
 
 namespace lb {
 
-// A choice as it goes into a sentence ("%1 shading", "%1 specular", "(%1 drawn)"): English
-// "gouraud", "blinn", "sphere", as toName() spells it.
+// A choice as it goes into a sentence ("%1 shading", "%1 specular"): English "gouraud",
+// "blinn", as toName() spells it. (A shape's is shapeLabel(), scene.h.)
 QString shownName(Shading shading);
 QString shownName(SpecularModel specular);
-QString shownName(Shape shape);
 
 // The status line's description of what draws: "Program: toon.vert, Phong specular (R·V)  |
 // point light in the world frame  |  perspective projection". `builtInProgram`: the editor

@@ -28,7 +28,8 @@ SettingsStore::SettingsStore(const QString &path)
         m_error = tr("no temporary folder for the settings (%1): they are written directly")
                       .arg(m_scratch.errorString());
     else if (QFileInfo::exists(path)) {
-        const BoundedRead read = readBounded(path, {"a settings file", kMaxSettingsBytes});
+        const BoundedRead read = readBounded(
+            path, {QT_TRANSLATE_NOOP("lb::FileLimit", "a settings file"), kMaxSettingsBytes});
         if (read.error.isEmpty())
             m_error = writeFileSafely(scratch, read.bytes);
         else
@@ -47,7 +48,8 @@ QString SettingsStore::save()
         return tr("%1: its scratch copy %2 cannot be written (a full temporary folder?)")
             .arg(m_path, m_settings->fileName());
     const BoundedRead scratch =
-        readBounded(m_settings->fileName(), {"a settings file", kMaxSettingsBytes});
+        readBounded(m_settings->fileName(),
+                    {QT_TRANSLATE_NOOP("lb::FileLimit", "a settings file"), kMaxSettingsBytes});
     if (!scratch.error.isEmpty())
         return scratch.error;
     QDir().mkpath(QFileInfo(m_path).absolutePath()); // ~/.config/lightbench at the first start
