@@ -150,16 +150,16 @@ void LessonActions::buildLessonMenu()
 
 void LessonActions::addLanguageMenu()
 {
-    // Until the window itself speaks them (issue 31), the captions follow the system's
-    // language (LANG) or the one chosen here: a teacher shows the German sheet in English.
+    // The captions (and the examples' exercise) follow the window's language (View >
+    // Language) or the one chosen here: a teacher shows the German sheet in English.
     QMenu *menu = m_menu->addMenu(tr("Caption &Language"));
     auto *group = new QActionGroup(menu);
     const QString chosen = m_settings.value(kLanguageKey).toString();
     // Each language named in itself (as language menus do), so it is found whatever the
     // window speaks: not translated.
     const std::pair<QString, QString> languages[] = {
-        //: Lesson > Caption Language: the system's language (LANG)
-        {QString(), tr("The System's")},
+        //: Lesson > Caption Language: the same language as the window's menus (View > Language)
+        {QString(), tr("The Window's")},
         {"en", "English"},
         {"pt", "Português"},
         {"de", "Deutsch"}};

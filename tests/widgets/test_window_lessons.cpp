@@ -229,7 +229,12 @@ private slots:
         m_window->show();
         QVERIFY(lessons()->isOpen()); // the lesson of the last session came back
         QVERIFY(lessons()->bar()->captionLabel()->text().contains("Legenda 1"));
-        choose("The System's");
+        // "The Window's": the captions follow View > Language (here Portuguese).
+        setDefaultLessonLanguage("pt");
+        choose("Deutsch");
+        choose("The Window's");
+        QVERIFY(lessons()->bar()->captionLabel()->text().contains("Legenda 1"));
+        setDefaultLessonLanguage({});
     }
 
     void captionsShowMarkdownButReadNoFiles()
