@@ -1,6 +1,8 @@
 #include "probe_panel.h"
 
+#include "choice_labels.h"
 #include "probe_equation.h"
+#include "probe_equation_words.h"
 #include "viewport.h"
 
 #include <QClipboard>
@@ -187,18 +189,24 @@ void ProbePanel::showText()
     const Frames frames = computeFrames(side, float(view.width()) / float(view.height()), r.object);
 
     QString html = "<table cellspacing='2'>";
-    html +=
-        row(tr("Point"), tr("pixel (%1, %2), %3, triangle %4%5")
-                             .arg(std::lround(r.pixel.x() + view.x()))
-                             .arg(std::lround(r.pixel.y() + view.y()))
-                             .arg(displayName(scene.objects[std::size_t(r.object)]).toHtmlEscaped())
-                             .arg(r.triangle)
-                             .arg(scene.compare.mode == CompareMode::Off
-                                      ? QString()
-                                      : (m_point->sideB ? tr(", side B") : tr(", side A"))));
+    //: %1, %2 the pixel; %3 the object's name; %4 the triangle's number
+    const QString point = scene.compare.mode == CompareMode::Off
+                              ? tr("pixel (%1, %2), %3, triangle %4")
+                          //: the point is on side B of a compare view
+                          : m_point->sideB ? tr("pixel (%1, %2), %3, triangle %4, side B")
+                                           //: the point is on side A of a compare view
+                                           : tr("pixel (%1, %2), %3, triangle %4, side A");
+    html += row(tr("Point"),
+                // One arg() for all four: a "%4" in the object's name stays as typed.
+                point.arg(QString::number(std::lround(r.pixel.x() + view.x())),
+                          QString::number(std::lround(r.pixel.y() + view.y())),
+                          displayName(scene.objects[std::size_t(r.object)]).toHtmlEscaped(),
+                          QString::number(r.triangle)));
+    //: P, the probed point, in eye coordinates
     html += row(tr("P (eye)"), vec(r.position));
-    html += row(tr("N"), vec(r.normal));
-    html += row(tr("V"), vec(viewVector(r.position, side.shading.projection)));
+    // The vectors' names are the course's symbols, as the equation writes them: not words.
+    html += row(QStringLiteral("N"), vec(r.normal));
+    html += row(QStringLiteral("V"), vec(viewVector(r.position, side.shading.projection)));
     const ObjectSettings &object = side.objects[std::size_t(r.object)];
     if (object.texture) {
         // Where the texture is read, and which mipmap levels the level of detail picks.
@@ -209,19 +217,24 @@ void ProbePanel::showText()
                                                         .arg(levels.second)
                                                         .arg(std::lround(100.0f * levels.weight))
                                                   : tr("level %1").arg(levels.first);
-        html += row(tr("texture"),
-                    tr("uv (%1, %2), level of detail %3: %4, %5")
-                        .arg(double(r.uv.x), 0, 'f', 3)
-                        .arg(double(r.uv.y), 0, 'f', 3)
-                        .arg(double(r.lod), 0, 'f', 2)
-                        .arg(read, object.sampling.mipmaps ? tr("mipmaps") : tr("no mipmaps")));
+        //: %1, %2 the texture coordinates; %3 the level of detail; %4 the mipmap levels read
+        const QString where = object.sampling.mipmaps
+                                  ? tr("uv (%1, %2), level of detail %3: %4, mipmaps")
+                                  : tr("uv (%1, %2), level of detail %3: %4, no mipmaps");
+        html += row(tr("texture"), where.arg(double(r.uv.x), 0, 'f', 3)
+                                       .arg(double(r.uv.y), 0, 'f', 3)
+                                       .arg(double(r.lod), 0, 'f', 2)
+                                       .arg(read));
         html += row(tr("base colour"), vec(r.base));
     }
     for (const ProbeLight &l : r.lights) {
         const Light &light = scene.lights[std::size_t(l.index)];
         const LightingTerms &t = l.terms;
-        html += QString("<tr><td colspan='2'><hr><b>%1</b> (%2 frame)</td></tr>")
-                    .arg(tr("Light %1").arg(l.index + 1), toName(light.frame));
+        html += QString("<tr><td colspan='2'><hr>%1</td></tr>")
+                    //: %1 the light's name in bold (Light 2); %2 its frame (camera, world, object)
+                    .arg(tr("%1 (%2 frame)")
+                             .arg("<b>" + tr("Light %1").arg(l.index + 1) + "</b>",
+                                  frameLabel(light.frame)));
         html += row("L", vec(t.L));
         html += row(blinn ? "H" : "R", vec(blinn ? t.H : t.R));
         // The light's own frame: the way lightInEye() came, undone.
@@ -230,7 +243,8 @@ void ProbePanel::showText()
                 eyeToFrame(frames, l.index, glm::vec4(r.position, 1.0f), light.frame);
             const glm::vec4 towards =
                 eyeToFrame(frames, l.index, glm::vec4(t.L, 0.0f), light.frame);
-            html += row(tr("P, L (%1)").arg(toName(light.frame)),
+            //: P and L in the light's own frame: %1 the frame (world, object)
+            html += row(tr("P, L (%1)").arg(frameLabel(light.frame)),
                         vec(glm::vec3(p)) + ", " + vec(glm::normalize(glm::vec3(towards))));
         }
         html += row(QString("N\u00b7L"), QString::number(double(t.nDotL), 'f', 4));
@@ -273,20 +287,22 @@ void ProbePanel::showText()
             m_reference = bytes255(b.reference);
         }
     } else if (!(m_point->sideB && sideBProgram)) {
-        m_referenceName = tr("the model (%1 shading)").arg(toName(side.shading.shading));
+        m_referenceName = tr("the model (%1 shading)").arg(shadingLabel(side.shading.shading));
         m_reference = bytes255(r.reference);
     }
     // On side B's program the side's shading choice is greyed: it is not the program's.
+    //: %1 the colour (r, g, b) of 255; %2 the shading (gouraud, phong, flat)
+    const QString model = m_point->sideB && sideBProgram
+                              ? tr("%1 of 255 (the built-in model, %2 shading)")
+                              : tr("%1 of 255 (%2 shading)");
     html += row(againstSideB || (m_point->sideB && sideBProgram) ? tr("model") : tr("reference"),
-                rgb(bytes255(r.reference)) + (m_point->sideB && sideBProgram
-                                                  ? tr(" of 255 (the built-in model, %1 shading)")
-                                                  : tr(" of 255 (%1 shading)"))
-                                                 .arg(toName(side.shading.shading)));
+                model.arg(rgb(bytes255(r.reference)), shadingLabel(side.shading.shading)));
     if (againstSideB)
-        html +=
-            row(tr("reference"), tr("%1 draws %2")
-                                     .arg(m_referenceName.toHtmlEscaped(),
-                                          m_reference ? rgb(*m_reference) : tr("nothing here")));
+        html += row(tr("reference"),
+                    m_reference
+                        //: %1 the reference's name; %2 its colour (r, g, b) at the point
+                        ? tr("%1 draws %2").arg(m_referenceName.toHtmlEscaped(), rgb(*m_reference))
+                        : tr("%1 draws nothing here").arg(m_referenceName.toHtmlEscaped()));
     if (m_gpu && scene.compare.mode != CompareMode::Difference) {
         html += row(tr("GPU drew"), rgb(*m_gpu));
         if (m_reference) {
@@ -300,7 +316,7 @@ void ProbePanel::showText()
     }
     html += "</table>";
     // The equation with the numbers, as the course writes it (also copied by the button).
-    m_equation = lightingEquation(side, r);
+    m_equation = equationForDisplay(lightingEquation(side, r));
     m_copyEquation->setEnabled(!m_equation.isEmpty());
     const int equationPixels =
         std::max(8, int(std::lround(QFontInfo(font()).pixelSize() * m_equationShare)));

@@ -32,7 +32,8 @@ public:
     const ProbeResult &result() const { return m_result; }
     QLabel *textLabel() const { return m_text; }
     QPushButton *copyEquationButton() const { return m_copyEquation; }
-    // The lighting equation with the probed point's numbers (probe_equation.h); empty if none.
+    // The lighting equation with the probed point's numbers (probe_equation.h), its words
+    // translated (probe_equation_words.h), as shown and copied; empty if none.
     const QString &equation() const { return m_equation; }
     // What the reference does not know about the program on screen ("it computes V =
     // (0,0,1)..."), shown under the numbers; empty for none.
