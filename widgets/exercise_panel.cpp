@@ -1,5 +1,6 @@
 #include "exercise_panel.h"
 
+#include "choice_labels.h"
 #include "message_text.h"
 
 #include <QHeaderView>
@@ -18,15 +19,18 @@ namespace {
 // What a case may vary, in the panel's words (exercise.h's Vary, in its order).
 QString variedText(unsigned vary)
 {
-    const QStringList words{QObject::tr("light position"), QObject::tr("point or directional"),
-                            QObject::tr("light frame"),    QObject::tr("light colours"),
-                            QObject::tr("material"),       QObject::tr("camera"),
-                            QObject::tr("projection"),     QObject::tr("non-uniform scale")};
+    // The panel's context (not QObject's): a translator finds them beside the sentence
+    // they go into ("The cases vary: %6.").
+    const QStringList words{
+        ExercisePanel::tr("light position"), ExercisePanel::tr("point or directional"),
+        ExercisePanel::tr("light frame"),    ExercisePanel::tr("light colours"),
+        ExercisePanel::tr("material"),       ExercisePanel::tr("camera"),
+        ExercisePanel::tr("projection"),     ExercisePanel::tr("non-uniform scale")};
     QStringList varied;
     for (int i = 0; i < words.size(); ++i)
         if (vary & (1u << i))
             varied << words[i];
-    return varied.isEmpty() ? QObject::tr("nothing (every case is the scene as it is)")
+    return varied.isEmpty() ? ExercisePanel::tr("nothing (every case is the scene as it is)")
                             : varied.join(", ");
 }
 
@@ -157,8 +161,9 @@ void ExercisePanel::setExercise(const std::optional<Exercise> &exercise)
         !exercise->unread.isUndefined()
             ? tr("This exercise cannot be checked: its reference is missing or unusable.")
         : ref.builtIn()
+            //: %1 the shading (gouraud, phong, flat); %2 the specular term (phong, blinn)
             ? tr("Reference: the built-in program, %1 shading, %2 specular.")
-                  .arg(toName(ref.shading), toName(ref.specular))
+                  .arg(shadingLabel(ref.shading), specularLabel(ref.specular))
             : tr("Reference: the teacher's program (not shown; it is side B of the compare "
                  "views, key C).");
     const GradingSpec &g = exercise->grading;
@@ -194,21 +199,42 @@ void ExercisePanel::showProblem(const QString &text)
     m_cases->hide();
 }
 
+QString ExercisePanel::problemText(const GradingReport &report)
+{
+    // The status words are the report's data (its CSV and JSON): compared, never shown as
+    // they are, except one this panel does not know. Each sentence is whole, with and
+    // without the reason after it.
+    const QString &why = report.diagnostic;
+    const bool said = !why.isEmpty();
+    if (report.status == "does not compile")
+        //: %1 the compiler's messages
+        return said ? tr("Your program does not compile:\n%1").arg(why)
+                    : tr("Your program does not compile");
+    if (report.status == "does not link")
+        //: %1 the linker's messages
+        return said ? tr("Your program does not link:\n%1").arg(why)
+                    : tr("Your program does not link");
+    if (report.status == "refused")
+        //: %1 why it was refused (a loop that never ends, a frame too slow)
+        return said ? tr("Your program was refused:\n%1").arg(why) : tr("Your program was refused");
+    if (report.status == "timed out")
+        //: %1 how long it was given
+        return tr("The check took too long (%1) and was stopped").arg(why);
+    if (report.status == "could not start")
+        //: %1 why the checking process did not start
+        return said ? tr("The check could not start:\n%1").arg(why)
+                    : tr("The check could not start");
+    //: %1 the grading's status word (English, as the report has it); %2 its reason
+    return said ? tr("Not checked: %1:\n%2").arg(report.status, why)
+                : tr("Not checked: %1").arg(report.status);
+}
+
 void ExercisePanel::showReport(const GradingReport &report)
 {
     setOutOfDate(false);
     m_cases->clear();
     if (!report.graded()) {
-        const QString why = report.diagnostic.isEmpty() ? QString() : ":\n" + report.diagnostic;
-        const QString text =
-            report.status == "does not compile" ? tr("Your program does not compile%1").arg(why)
-            : report.status == "does not link"  ? tr("Your program does not link%1").arg(why)
-            : report.status == "refused"        ? tr("Your program was refused%1").arg(why)
-            : report.status == "timed out"
-                ? tr("The check took too long (%1) and was stopped").arg(report.diagnostic)
-            : report.status == "could not start" ? tr("The check could not start%1").arg(why)
-                                                 : tr("Not checked: %1%2").arg(report.status, why);
-        showProblem(text);
+        showProblem(problemText(report));
         return;
     }
     const int passed = report.passedCount();
@@ -228,6 +254,7 @@ void ExercisePanel::showReport(const GradingReport &report)
     for (int k = 0; k < cases; ++k) {
         const CaseResult &r = report.cases[std::size_t(k)];
         auto *item = new QTreeWidgetItem(m_cases);
+        //: case 0 of the list: the exercise's scene as it is, not varied
         item->setText(0, k == 0 ? tr("%1 (as given)").arg(k) : QString::number(k));
         item->setText(1, r.passed ? tr("passed") : tr("failed"));
         item->setText(2, QString("%1/255").arg(r.largest));

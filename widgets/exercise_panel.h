@@ -51,6 +51,9 @@ signals:
     void backRequested();       // the scene as it was before the first case was shown
 
 private:
+    // Why a report lists no cases, in words (its status and diagnostic).
+    static QString problemText(const GradingReport &report);
+
     QLabel *m_title;
     QLabel *m_task;
     QLabel *m_about;
