@@ -101,11 +101,9 @@ void Viewport::initializeGL()
     }
     const QSurfaceFormat f = context()->format();
     auto *gl = context()->functions();
-    emit glInfo(QString("OpenGL %1.%2, %3%4")
-                    .arg(f.majorVersion())
-                    .arg(f.minorVersion())
-                    .arg(reinterpret_cast<const char *>(gl->glGetString(GL_RENDERER)))
-                    .arg(translatesWebGl1() ? tr("; WebGL 1 shaders run as GLSL 3.30") : ""));
+    emit glInfo(driverText(QString("%1.%2").arg(f.majorVersion()).arg(f.minorVersion()),
+                           reinterpret_cast<const char *>(gl->glGetString(GL_RENDERER)),
+                           translatesWebGl1()));
 }
 
 void Viewport::paintEvent(QPaintEvent *event)
@@ -152,9 +150,7 @@ void Viewport::refuseDrawingProgram(const QString &why, bool newContext)
             m_renderer.setUserProgram(m_goodVertex, m_goodFragment);
         doneCurrent();
     }
-    const QString drawing = m_goodVertex.isEmpty() ? tr("the built-in program is drawing")
-                                                   : tr("the last good program is drawing");
-    setBanner(tr("Refused: %1; %2").arg(why, drawing));
+    setBanner(bannerText(why, m_goodVertex.isEmpty()));
     update();
     if (!vertex.isEmpty()) {
         ProgramBuild refused;
@@ -168,6 +164,7 @@ QString Viewport::tooSlowAt(QSize pixels) const
     if (!m_goodTrial || !m_renderer.hasUserProgram() ||
         !m_goodTrial->overBudgetAt(double(pixels.width()) * pixels.height(), m_frameBudgetMs))
         return {};
+    //: %1 a duration (0.8 s); %2x%3 the view's size in pixels; %4 the frame budget
     return tr("drawing one frame with this program would take about %1 at %2x%3 (the budget "
               "is %4): an endless or very long loop?")
         .arg(durationText(m_goodTrial->estimateAt(double(pixels.width()) * pixels.height())))
@@ -345,8 +342,7 @@ void Viewport::finishBuild(const ProgramBuild &build, const QString &refused,
                            const QString &vertexSource, const QString &fragmentSource,
                            const std::optional<TrialResult> &trial)
 {
-    const QString drawing = m_renderer.hasUserProgram() ? tr("the last good program is drawing")
-                                                        : tr("the built-in program is drawing");
+    const bool builtInDrawing = !m_renderer.hasUserProgram();
     if (build.ok()) {
         if (vertexSource != m_goodVertex || fragmentSource != m_goodFragment) {
             m_previousVertex = m_goodVertex;
@@ -357,10 +353,8 @@ void Viewport::finishBuild(const ProgramBuild &build, const QString &refused,
         m_goodFragment = fragmentSource;
         m_goodTrial = trial;
         setBanner({});
-    } else if (!refused.isEmpty()) {
-        setBanner(tr("Refused: %1; %2").arg(refused, drawing));
     } else {
-        setBanner(tr("The shader has errors (see the editor): %1").arg(drawing));
+        setBanner(bannerText(refused, builtInDrawing)); // no reason given: it did not build
     }
     update();
     emit programBuilt(build);

@@ -143,6 +143,11 @@ private:
     std::optional<ProgramBuild> refusedInHelper(const QString &vertexSource,
                                                 const QString &fragmentSource);
     void setBanner(const QString &text);
+    // The banner over a program that was refused (`why`) or did not build (`why` empty), with
+    // what draws instead; the driver line (`version` 4.5, the driver's `renderer`). Whole
+    // sentences, translatable as such (viewport_captions.cpp).
+    static QString bannerText(const QString &why, bool builtInDrawing);
+    static QString driverText(const QString &version, const QString &renderer, bool webGl1);
     void updateCompareLabel();
     bool nearWipe(QPoint position) const;
     void syncAnimation();

@@ -1,5 +1,6 @@
 // The texts over the picture (the compare caption, the colour scale's numbers, the banner and
-// the probe's names), which follow the UI scale, and the compare view's words.
+// the probe's names), which follow the UI scale, and their words: the banner's, the driver line's
+// and the compare view's.
 #include "viewport.h"
 
 #include "difference_scale_labels.h"
@@ -12,12 +13,36 @@
 
 namespace lb {
 
+QString Viewport::bannerText(const QString &why, bool builtInDrawing)
+{
+    // Whole sentences, not a clause glued to another ("Refused: %1; %2").
+    if (why.isEmpty())
+        return builtInDrawing ? tr("The shader has errors (see the editor): the built-in program "
+                                   "is drawing")
+                              : tr("The shader has errors (see the editor): the last good "
+                                   "program is drawing");
+    //: %1 why the program was refused (a loop that never ends, a frame too slow)
+    return builtInDrawing ? tr("Refused: %1; the built-in program is drawing").arg(why)
+                          //: %1 why the program was refused
+                          : tr("Refused: %1; the last good program is drawing").arg(why);
+}
+
+QString Viewport::driverText(const QString &version, const QString &renderer, bool webGl1)
+{
+    //: %1 the OpenGL version (4.5); %2 the driver's renderer (llvmpipe ...)
+    return webGl1 ? tr("OpenGL %1, %2; WebGL 1 shaders run as GLSL 3.30").arg(version, renderer)
+                  //: %1 the OpenGL version (4.5); %2 the driver's renderer
+                  : tr("OpenGL %1, %2").arg(version, renderer);
+}
+
 QString Viewport::compareText() const
 {
     const Scene &s = m_document->scene();
     const QString b =
         !m_sideBVertex.isEmpty()
+            //: side B of the compare view and the program it draws
             ? tr("B: %1").arg(m_sideBName.isEmpty() ? tr("the reference program") : m_sideBName)
+            //: side B draws the built-in program: %1 its shading, %2 its specular term
             : tr("B: built-in %1, %2")
                   .arg(s.compare.shading == Shading::Gouraud ? tr("Gouraud")
                        : s.compare.shading == Shading::Flat  ? tr("flat")
@@ -29,6 +54,7 @@ QString Viewport::compareText() const
         return {};
     case CompareMode::SideBySide:
     case CompareMode::Wipe:
+        //: side A (left) names its program; %2 says side B's ("B: ..."), on the right
         return tr("A (left): %1  |  %2 (right)")
             .arg(m_programName.isEmpty() ? tr("the program on screen") : m_programName, b);
     case CompareMode::Difference: {
