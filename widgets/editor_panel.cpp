@@ -30,6 +30,24 @@ namespace lb {
 namespace {
 constexpr int kDefaultPauseMs = 150;
 constexpr ShaderStage kStages[] = {ShaderStage::Vertex, ShaderStage::Fragment};
+
+// Where a message is, as the list says it ("fragment 5:3"): the stage in the user's language
+// (stageName() gives the command line's English word).
+QString stageLabel(ShaderStage stage)
+{
+    switch (stage) {
+    case ShaderStage::Vertex:
+        //: the shader stage a message is about, before its line:column
+        return EditorPanel::tr("vertex");
+    case ShaderStage::Fragment:
+        //: the shader stage a message is about, before its line:column
+        return EditorPanel::tr("fragment");
+    case ShaderStage::Link:
+        //: a message of the linker, about no single stage
+        return EditorPanel::tr("link");
+    }
+    return stageName(stage);
+}
 } // namespace
 
 QString programDisplayName(const ShaderOrigin &origin)
@@ -63,6 +81,7 @@ EditorPanel::EditorPanel(ShaderDocument *document, QWidget *parent)
     connect(compile, &QToolButton::clicked, this, &EditorPanel::compileNow);
     bar->addWidget(compile);
 
+    //: recompile while typing (a switch)
     m_live = new QCheckBox(tr("Live"), this);
     m_live->setChecked(true);
     m_live->setToolTip(tr("Recompile after a pause in typing; off: only on Ctrl+Enter"));
@@ -70,6 +89,7 @@ EditorPanel::EditorPanel(ShaderDocument *document, QWidget *parent)
     m_delay = new IntegerBox(this);
     m_delay->setRange(0, 5000);
     m_delay->setSingleStep(50);
+    //: milliseconds, after the number
     m_delay->setSuffix(tr(" ms"));
     m_delay->setValue(kDefaultPauseMs);
     m_delay->setToolTip(tr("The pause after the last key before a live recompile (wheel or "
@@ -98,8 +118,8 @@ EditorPanel::EditorPanel(ShaderDocument *document, QWidget *parent)
     m_tabs = new QTabWidget(this);
     m_vertex = new ShaderEditor(this);
     m_fragment = new ShaderEditor(this);
-    m_tabs->addTab(m_vertex, tr("Vertex"));
-    m_tabs->addTab(m_fragment, tr("Fragment"));
+    m_tabs->addTab(m_vertex, tr("Vertex"));     // updateTitles() names the tabs
+    m_tabs->addTab(m_fragment, tr("Fragment")); // (and their files) from here on
     // Presets sit before the stage tabs, where they cost no row and leave the bar narrow
     // (the editor fits beside a 1024-pixel screen's view with both tabs shown).
     m_tabs->setCornerWidget(presetButton, Qt::TopLeftCorner);
@@ -142,8 +162,10 @@ EditorPanel::EditorPanel(ShaderDocument *document, QWidget *parent)
     connect(m_list, &QListWidget::itemClicked, this,
             [this](QListWidgetItem *item) { jumpTo(m_list->row(item)); });
 
-    for (const char *key : {"Ctrl+Return", "Ctrl+Enter"}) {
-        auto *s = new QShortcut(QKeySequence(tr(key)), this, this, &EditorPanel::compileNow);
+    // Keys, not words: the same in every language (QKeySequence shows them translated).
+    for (const QKeySequence &key :
+         {QKeySequence(Qt::CTRL | Qt::Key_Return), QKeySequence(Qt::CTRL | Qt::Key_Enter)}) {
+        auto *s = new QShortcut(key, this, this, &EditorPanel::compileNow);
         s->setContext(Qt::WidgetWithChildrenShortcut);
     }
     updateTitles();
@@ -219,9 +241,14 @@ void EditorPanel::updateTitles()
     for (ShaderStage stage : kStages) {
         const int i = stage == ShaderStage::Fragment ? 1 : 0;
         const QString path = m_document->filePath(stage);
-        QString title = i ? tr("Fragment") : tr("Vertex");
-        if (!path.isEmpty())
-            title += " - " + QFileInfo(path).fileName();
+        const QString file = QFileInfo(path).fileName();
+        QString title;
+        if (i == 0)
+            //: the vertex shader's tab; %1 its file's name
+            title = !path.isEmpty() ? tr("Vertex - %1").arg(file) : tr("Vertex");
+        else
+            //: the fragment shader's tab; %1 its file's name
+            title = !path.isEmpty() ? tr("Fragment - %1").arg(file) : tr("Fragment");
         if (m_document->isModified(stage) && !path.isEmpty())
             title += " *";
         if (editor(stage)->markedLineCount() > 0)
@@ -333,25 +360,28 @@ void EditorPanel::showBuild(const ProgramBuild &build)
         if (d.stage != ShaderStage::Link)
             perStage[d.stage == ShaderStage::Fragment].push_back(d);
         const QString where =
-            d.line > 0 ? QString("%1 %2:%3").arg(stageName(d.stage)).arg(d.line).arg(d.column)
-                       : stageName(d.stage);
+            d.line > 0 ? QString("%1 %2:%3").arg(stageLabel(d.stage)).arg(d.line).arg(d.column)
+                       : stageLabel(d.stage);
+        //: %1 where (fragment 5:3); %2 the compiler's message
         auto *item = new QListWidgetItem(
-            QString("%1  %2: %3").arg(where, error ? tr("error") : tr("warning"), d.message),
-            m_list);
+            (error ? tr("%1  error: %2") : tr("%1  warning: %2")).arg(where, d.message), m_list);
         item->setForeground(error ? QColor("#c62828") : QColor("#8a5a00"));
     }
     fitMessages();
     m_vertex->showDiagnostics(perStage[0]);
     m_fragment->showDiagnostics(perStage[1]);
     updateTitles();
+    // The colour is markup around the words, so translators see the words alone.
+    const auto coloured = [](const char *colour, const QString &text) {
+        return QString("<span style='color:%1'>%2</span>").arg(colour, text.toHtmlEscaped());
+    };
     if (build.ok())
-        m_status->setText(
-            warnings ? tr("<span style='color:#8a5a00'>linked, %n warning(s)</span>", "", warnings)
-                     : tr("<span style='color:#2e7d32'>linked</span>"));
+        m_status->setText(warnings ? coloured("#8a5a00", tr("linked, %n warning(s)", "", warnings))
+                                   //: the shaders compiled and linked without a message
+                                   : coloured("#2e7d32", tr("linked")));
     else
         m_status->setText(
-            tr("<span style='color:#c62828'>%n error(s): last good program drawing</span>", "",
-               errors));
+            coloured("#c62828", tr("%n error(s): last good program drawing", "", errors)));
 }
 
 void EditorPanel::jumpTo(int row)

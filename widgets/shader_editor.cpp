@@ -132,7 +132,10 @@ void ShaderEditor::showDiagnostics(const std::vector<Diagnostic> &diagnostics)
         const int line = d.line - 1;
         const bool error = d.severity == Diagnostic::Severity::Error;
         auto &[text, hasError] = notes[line];
-        text += (text.isEmpty() ? "" : "\n") + QString(error ? "error: " : "warning: ") + d.message;
+        //: a compiler's message under its line in the editor; %1 the message
+        const QString said =
+            error ? tr("error: %1").arg(d.message) : tr("warning: %1").arg(d.message);
+        text += (text.isEmpty() ? "" : "\n") + said;
         hasError = hasError || error;
         if (d.column > 0) {
             // Underline from the column to the end of the word there.
