@@ -42,6 +42,7 @@ LightPanel::LightPanel(SceneDocument *document, QWidget *parent)
     });
     form->addRow(m_tabs);
 
+    //: the light is switched on (a check box)
     m_enabled = new QCheckBox(tr("On"), this);
     m_enabled->setToolTip(tr("uLightEnabled[i]: a light switched off adds nothing (its colours "
                              "go to shaders as black)"));
@@ -49,6 +50,7 @@ LightPanel::LightPanel(SceneDocument *document, QWidget *parent)
             [this](bool on) { edit([&](Scene &s) { current(s).enabled = on; }); });
     feeds(m_enabled, {Semantic::LightEnabled, Semantic::LightAmbient, Semantic::LightDiffuse,
                       Semantic::LightSpecular});
+    //: the row of the light's on/off switch
     form->addRow(tr("Light"), m_enabled);
     const char *axes[3] = {"x", "y", "z"};
     auto *xyzRow = new QHBoxLayout;
@@ -65,6 +67,7 @@ LightPanel::LightPanel(SceneDocument *document, QWidget *parent)
     }
     form->addRow(tr("Position"), xyzRow);
 
+    //: w is the light position's 4th (homogeneous) coordinate: a symbol, not a word
     m_w = makeCombo({tr("w = 1: point light"), tr("w = 0: directional")},
                     tr("lightPosition.w: 1 puts the light at (x, y, z); 0 makes (x, y, z) the "
                        "direction towards a light at infinity"));
@@ -77,6 +80,7 @@ LightPanel::LightPanel(SceneDocument *document, QWidget *parent)
         });
     });
     feeds(m_w, {Semantic::LightPosition, Semantic::LightPositionEye});
+    //: a light's type: point or directional
     form->addRow(tr("Type"), m_w);
 
     m_frame =
@@ -95,19 +99,22 @@ LightPanel::LightPanel(SceneDocument *document, QWidget *parent)
             edit([&](Scene &s) { current(s).object = index; });
     });
     feeds(m_frameObject, {Semantic::LightPosition, Semantic::LightPositionEye});
+    //: the coordinate frame the light's position is given in
     form->addRow(tr("Frame"), m_frame);
+    //: the object whose frame an object-frame light is given in
     form->addRow(tr("Of object"), m_frameObject);
 
     const char *symbols[3] = {"Ia", "Id", "Is"};
     const Semantic semantics[3] = {Semantic::LightAmbient, Semantic::LightDiffuse,
                                    Semantic::LightSpecular};
+    // Whole sentences, one a term: the term's word is not slotted into one sentence for three.
+    //: %1 the symbol (Ia, Id, Is); %2 the uniforms that carry it
+    const QString tips[3] = {tr("%1 (%2): the light's ambient intensity"),
+                             tr("%1 (%2): the light's diffuse intensity"),
+                             tr("%1 (%2): the light's specular intensity")};
     for (int i = 0; i < 3; ++i) {
         auto *colour = new ColorEdit(symbols[i], this);
-        colour->setToolTip(tr("%1 (%2): the light's %3 intensity")
-                               .arg(symbols[i], namesOf({semantics[i]}),
-                                    i == 0   ? tr("ambient")
-                                    : i == 1 ? tr("diffuse")
-                                             : tr("specular")));
+        colour->setToolTip(tips[i].arg(symbols[i], namesOf({semantics[i]})));
         connect(colour, &ColorEdit::colorChanged, this, [this, i](const glm::vec3 &c) {
             edit([&](Scene &s) { current(s).colors.*kColourMembers[i] = c; });
         });
@@ -182,6 +189,7 @@ LightPanel::LightPanel(SceneDocument *document, QWidget *parent)
     feeds(m_spotExponent, {Semantic::SpotExponent});
     spotRow->addWidget(m_spotCutoff);
     spotRow->addWidget(m_spotExponent);
+    //: the spotlight's cutoff angle and exponent
     form->addRow(tr("Spot cutoff, exp"), spotRow);
 
     addResetButton(form, tr("Reset light"),

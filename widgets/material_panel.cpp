@@ -36,11 +36,14 @@ MaterialPanel::MaterialPanel(SceneDocument *document, QWidget *parent)
     const char *symbols[3] = {"Ka", "Kd", "Ks"};
     const Semantic semantics[3] = {Semantic::MaterialAmbient, Semantic::MaterialDiffuse,
                                    Semantic::MaterialSpecular};
-    const char *terms[3] = {"ambient", "diffuse", "specular"};
+    // Whole sentences, one a term (the term's word was slotted in untranslated).
+    //: %1 the symbol (Ka, Kd, Ks); %2 the uniforms that carry it
+    const QString tips[3] = {tr("%1 (%2): the material's ambient reflection coefficients"),
+                             tr("%1 (%2): the material's diffuse reflection coefficients"),
+                             tr("%1 (%2): the material's specular reflection coefficients")};
     for (int i = 0; i < 3; ++i) {
         auto *colour = new ColorEdit(symbols[i], this);
-        colour->setToolTip(tr("%1 (%2): the material's %3 reflection coefficients")
-                               .arg(symbols[i], namesOf({semantics[i]}), terms[i]));
+        colour->setToolTip(tips[i].arg(symbols[i], namesOf({semantics[i]})));
         connect(colour, &ColorEdit::colorChanged, this, [this, i](const glm::vec3 &c) {
             edit([&](Scene &s) { s.selectedObject().material.*kColourMembers[i] = c; });
         });

@@ -73,12 +73,13 @@ ObjectPanel::ObjectPanel(SceneDocument *document, QWidget *parent)
     m_duplicate->setToolTip(tr("A copy of the selected object, material and all, in the first free "
                                "place near the centre"));
     connect(m_duplicate, &QPushButton::clicked, this, [this] {
-        const QString suffix = tr(" copy");
         edit([&](Scene &s) {
             ObjectSettings copy = s.selectedObject();
             copy.translation = freePlace(s);
+            // The copy's name is the user's to edit, saved as shown: in the user's language.
             if (!copy.name.isEmpty())
-                copy.name += suffix;
+                //: the name of a duplicated object; %1 the original's name
+                copy.name = tr("%1 copy").arg(copy.name);
             addObject(s, copy);
         });
     });
@@ -197,8 +198,11 @@ ObjectPanel::ObjectPanel(SceneDocument *document, QWidget *parent)
                         "applied last)")
                          .arg(axes[i]));
     }
+    //: the row of the object's rotation about X, Y and Z
     form->addRow(tr("Rotate"), rotationRow);
+    //: the row of the object's scale along X, Y and Z
     form->addRow(tr("Scale"), scaleRow);
+    //: the row of the object's translation along X, Y and Z
     form->addRow(tr("Move"), translationRow);
 
     m_autoRotate = new QCheckBox(tr("Auto-rotate about Y"), this);
@@ -273,6 +277,7 @@ void ObjectPanel::refresh(const Scene &scene)
         // shape drawn meanwhile.
         const QString problem = m_meshProblem ? m_meshProblem() : QString();
         const QString name = QFileInfo(o.meshPath).fileName();
+        //: the shape combo's entry for a mesh file; %1 the file's name
         m_shape->addItem(problem.isEmpty() ? tr("File: %1").arg(name)
                                            : tr("File: %1 (not loaded)").arg(name));
         m_shape->setItemData(kShapeCount, problem.isEmpty() ? o.meshPath : problem,

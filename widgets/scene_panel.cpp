@@ -67,8 +67,14 @@ QString ScenePanel::namesOf(const std::vector<Semantic> &semantics)
     QStringList names;
     for (Semantic s : semantics)
         names << uniformNames(s);
-    const QString last = names.isEmpty() ? QString() : names.takeLast();
-    return names.isEmpty() ? last : names.join(", ") + tr(" or ") + last;
+    if (names.size() < 2)
+        return names.value(0);
+    // One pattern for the whole list, not " or " glued between names: the translator places
+    // the names and the word.
+    const QString last = names.takeLast();
+    //: uniform names, one of which a shader may declare: %1 the first ones, comma-separated; %2 the
+    //: last
+    return tr("%1 or %2").arg(names.join(", "), last);
 }
 
 void ScenePanel::setApplies(QWidget *control, bool applies)

@@ -38,6 +38,7 @@ ShadingPanel::ShadingPanel(SceneDocument *document, QWidget *parent)
     connect(m_specular, &QComboBox::currentIndexChanged, this,
             [this](int i) { edit([&](Scene &s) { s.shading.specular = SpecularModel(i); }); });
     feeds(m_specular, {Semantic::SpecularModel});
+    //: the row of the specular term's choice (Phong or Blinn-Phong)
     form->addRow(tr("Specular"), m_specular);
 
     m_projection = makeCombo({tr("Perspective: V = -posC"), tr("Orthographic: V = (0,0,1)")},
@@ -56,6 +57,7 @@ ShadingPanel::ShadingPanel(SceneDocument *document, QWidget *parent)
         form->addRow(check);
         return check;
     };
+    //: what the surface shows: the lit colour, or a vector (N, L, V, H, R) or number as colour
     m_show = makeCombo({tr("Colour (lit)"), tr("N as colour"), tr("L as colour"), tr("V as colour"),
                         tr("H as colour"), tr("R as colour"), tr("N\u00b7L as grey"),
                         tr("Specular factor as grey"), tr("Attenuation as grey")},
@@ -65,8 +67,10 @@ ShadingPanel::ShadingPanel(SceneDocument *document, QWidget *parent)
     connect(m_show, &QComboBox::currentIndexChanged, this,
             [this](int i) { edit([&](Scene &s) { s.shading.show = ShowChoice(i); }); });
     feeds(m_show, {Semantic::Show});
+    //: the row of the Show choice (what the surface shows)
     form->addRow(tr("Show"), m_show);
 
+    //: a switch: the lighting model on, or Kd unlit
     m_lighting = makeCheck(tr("Lighting"), tr("uEnableLighting: off shows Kd unlit (key L)"),
                            &ShadingSettings::lighting);
     m_vertexColors = makeCheck(tr("Vertex colours"),
@@ -93,6 +97,7 @@ ShadingPanel::ShadingPanel(SceneDocument *document, QWidget *parent)
         m_terms[i] = check;
     }
     termsRow->addStretch();
+    //: the row of the ambient, diffuse and specular terms' switches
     form->addRow(tr("Terms"), termsRow);
     feeds(m_lighting, {Semantic::EnableLighting});
     feeds(m_vertexColors, {Semantic::EnableVertexColor});
@@ -124,22 +129,29 @@ ShadingPanel::ShadingPanel(SceneDocument *document, QWidget *parent)
     sideBRow->addWidget(m_sideB, 1);
     sideBRow->addWidget(m_sideBFiles);
     sideBRow->addWidget(m_sideBClear);
+    //: the program side B of the compare view draws (A and B are the two sides)
     form->addRow(tr("B program"), sideBRow);
+    //: the compare view is off (A alone)
     m_compareMode = makeCombo({tr("Off"), tr("Side by side"), tr("Wipe"), tr("Difference |A - B|")},
                               tr("Side by side: A left, B right; wipe: drag the line in the view; "
                                  "difference: |A - B| as a heat map (key C cycles)"));
     connect(m_compareMode, &QComboBox::currentIndexChanged, this,
             [this](int i) { edit([&](Scene &s) { s.compare.mode = CompareMode(i); }); });
+    //: the compare view (off, side by side, wipe, difference); not the menu, not the camera
     form->addRow(tr("View"), m_compareMode);
+    //: side B's shading (B is the compare view's second side)
     m_compareShading = makeCombo({tr("B: Gouraud"), tr("B: Phong"), tr("B: Flat")},
                                  tr("Side B's shading: per vertex or per fragment"));
     connect(m_compareShading, &QComboBox::currentIndexChanged, this,
             [this](int i) { edit([&](Scene &s) { s.compare.shading = Shading(i); }); });
+    //: side B's shading (B is the compare view's second side)
     form->addRow(tr("B shading"), m_compareShading);
     m_compareSpecular =
+        //: side B's specular term (B is the compare view's second side)
         makeCombo({tr("B: Phong (R·V)"), tr("B: Blinn-Phong (N·H)")}, tr("Side B's specular term"));
     connect(m_compareSpecular, &QComboBox::currentIndexChanged, this,
             [this](int i) { edit([&](Scene &s) { s.compare.specular = SpecularModel(i); }); });
+    //: side B's specular term (B is the compare view's second side)
     form->addRow(tr("B specular"), m_compareSpecular);
     for (QComboBox *combo : {m_compareShading, m_compareSpecular})
         combo->setProperty("ownTip", combo->toolTip());
@@ -148,6 +160,7 @@ ShadingPanel::ShadingPanel(SceneDocument *document, QWidget *parent)
     m_wipe->setToolTip(tr("Where the wipe divides A (left) from B (right)"));
     connect(m_wipe, &QSlider::valueChanged, this,
             [this](int v) { edit([&](Scene &s) { s.compare.wipe = float(v) / 1000.0f; }); });
+    //: the row of the slider that places the wipe's dividing line
     form->addRow(tr("Wipe"), m_wipe);
 
     addResetButton(form, tr("Reset shading"),

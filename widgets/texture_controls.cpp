@@ -51,6 +51,7 @@ TextureControls::TextureControls(SceneDocument *document, QWidget *parent)
     form->addRow(imageRow);
 
     auto *samplingRow = new QHBoxLayout;
+    //: texture wrapping: GL_REPEAT or GL_CLAMP_TO_EDGE
     m_wrap = makeCombo({tr("Repeat"), tr("Clamp")},
                        tr("Texture coordinates outside 0 to 1: the image repeats (GL_REPEAT) or "
                           "its edge stretches (GL_CLAMP_TO_EDGE)"));
@@ -58,6 +59,7 @@ TextureControls::TextureControls(SceneDocument *document, QWidget *parent)
         edit([&](Scene &s) { s.selectedObject().sampling.wrap = TextureWrap(i); });
     });
     samplingRow->addWidget(m_wrap);
+    //: texture filtering: GL_NEAREST or GL_LINEAR
     m_filter = makeCombo({tr("Nearest"), tr("Linear")},
                          tr("The texel nearest the coordinate (GL_NEAREST: blocky when "
                             "magnified) or the four around it weighted (GL_LINEAR)"));
@@ -85,10 +87,11 @@ void TextureControls::refresh(const Scene &scene)
     const bool image = !o.textureFile.isEmpty();
     const QString problem = image && m_problem ? m_problem() : QString();
     m_image->setText(image && !problem.isEmpty()
+                         //: %1 an image file's name that could not be shown as the texture
                          ? tr("%1 (not shown)").arg(QFileInfo(o.textureFile).fileName())
-                     : image                ? QFileInfo(o.textureFile).fileName()
-                     : o.meshPath.isEmpty() ? tr("the checker")
-                                            : tr("the mesh file's texture, or the checker"));
+                         : image                  ? QFileInfo(o.textureFile).fileName()
+                           : o.meshPath.isEmpty() ? tr("the checker")
+                                                  : tr("the mesh file's texture, or the checker"));
     m_image->setFullText(!problem.isEmpty() ? problem : image ? o.textureFile : QString());
     m_clear->setEnabled(image);
     m_wrap->setCurrentIndex(int(o.sampling.wrap));

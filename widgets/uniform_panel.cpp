@@ -81,6 +81,7 @@ void UniformPanel::setUniforms(const std::vector<ActiveUniform> &uniforms)
                             "feeds gets a control here.")
                        : tr("The program's own uniforms; values stay when you recompile.");
     if (!fixed.isEmpty())
+        //: %1 the names of uniforms that get no control, comma-separated
         note +=
             ' ' + tr("No control for: %1 (matrices, samplers and arrays).").arg(fixed.join(", "));
     m_note->setText(note);
@@ -93,7 +94,8 @@ void UniformPanel::addControl(const ActiveUniform &u)
     auto *field = new QWidget(this);
     auto *row = new QHBoxLayout(field);
     row->setContentsMargins(0, 0, 0, 0);
-    field->setToolTip(tr("uniform %1 %2").arg(typeName(u), name));
+    // Its declaration in GLSL, which stays as the shader has it (not words to translate).
+    field->setToolTip(QString("uniform %1 %2").arg(typeName(u), name));
 
     if (!u.isInteger() && n >= 3 && namesAColour(name)) {
         auto *colour = new ColorEdit(name, field);
@@ -103,7 +105,7 @@ void UniformPanel::addControl(const ActiveUniform &u)
             alpha = new NumberBox(field);
             alpha->setRange(0, 1);
             alpha->setSingleStep(0.05);
-            alpha->setToolTip(tr("%1.a").arg(name));
+            alpha->setToolTip(QString("%1.a").arg(name)); // GLSL: the vector's alpha
             row->addWidget(alpha);
         }
         auto save = [this, name, colour, alpha] {
