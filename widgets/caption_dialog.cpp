@@ -11,17 +11,20 @@ namespace lb {
 
 namespace {
 
-// The languages a lesson is written in, with their names for the tabs.
-QList<QPair<QString, QString>> languages()
+// The languages a lesson is written in: the code the lesson file keys a caption by (data) and
+// the name the tab shows (translated where shown, in this dialog's context).
+struct Language
 {
-    return {{"en", QObject::tr("English")},
-            {"pt", QObject::tr("Portuguese")},
-            {"de", QObject::tr("German")}};
-}
+    const char *code;
+    const char *name;
+};
+constexpr Language kLanguages[] = {{"en", QT_TRANSLATE_NOOP("lb::CaptionDialog", "English")},
+                                   {"pt", QT_TRANSLATE_NOOP("lb::CaptionDialog", "Portuguese")},
+                                   {"de", QT_TRANSLATE_NOOP("lb::CaptionDialog", "German")}};
 
 } // namespace
 
-CaptionDialog::CaptionDialog(const QMap<QString, QString> &captions, const QString &language,
+CaptionDialog::CaptionDialog(const QMap<QString, QString> &captions, const QString &uiLanguage,
                              int maxCharacters, QWidget *parent)
     : QDialog(parent), m_others(captions), m_max(maxCharacters)
 {
@@ -34,14 +37,16 @@ CaptionDialog::CaptionDialog(const QMap<QString, QString> &captions, const QStri
     intro->setWordWrap(true);
     layout->addWidget(intro);
     m_tabs = new QTabWidget(this);
-    for (const auto &[code, name] : languages()) {
+    for (const Language &language : kLanguages) {
+        const QString code = QString::fromLatin1(language.code);
         auto *field = new QPlainTextEdit(captions.value(code), this);
         field->setObjectName("caption_" + code);
         field->setTabChangesFocus(true);
         m_others.remove(code);
         m_fields.insert(code, field);
-        const int tab = m_tabs->addTab(field, QString("%1 (%2)").arg(name, code));
-        if (code == language)
+        //: a caption's tab: %1 the language's name, %2 its code (en, pt, de)
+        const int tab = m_tabs->addTab(field, tr("%1 (%2)").arg(tr(language.name), code));
+        if (code == uiLanguage)
             m_tabs->setCurrentIndex(tab);
     }
     layout->addWidget(m_tabs, 1);
@@ -68,6 +73,7 @@ void CaptionDialog::accept()
         if (length > m_max) {
             m_tabs->setCurrentWidget(it.value());
             QMessageBox::warning(this, tr("Edit Caption"),
+                                 //: %1 the language's code (en, pt, de); %2, %3 counts
                                  tr("The %1 caption has %2 characters; a caption holds at most "
                                     "%3. Nothing was changed yet: shorten it, or Cancel.")
                                      .arg(it.key())

@@ -14,9 +14,9 @@ class CaptionDialog : public QDialog
 {
     Q_OBJECT
 public:
-    // `captions`: by language code; `language`: the UI's ("en", "pt", "de"), shown first.
+    // `captions`: by language code; `uiLanguage`: the UI's ("en", "pt", "de"), shown first.
     // `maxCharacters`: the most one language may hold (longer is refused with a message).
-    CaptionDialog(const QMap<QString, QString> &captions, const QString &language,
+    CaptionDialog(const QMap<QString, QString> &captions, const QString &uiLanguage,
                   int maxCharacters, QWidget *parent = nullptr);
     // What the fields hold (empty fields left out), with any other language as it was.
     QMap<QString, QString> captions() const;

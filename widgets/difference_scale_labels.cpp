@@ -51,6 +51,7 @@ std::vector<DifferenceScaleLabels::Tick> DifferenceScaleLabels::ticks() const
     std::vector<Tick> ticks;
     for (int value = 0; value <= top; value += kDifferenceTickStep) {
         // Above the top the scale stays white: the top tick says "and more".
+        //: the top of the difference scale: this difference (of 255) and more
         const QString text = value == top ? tr("%1+").arg(value) : QString::number(value);
         const double y = bar.bottom() - bar.height() * double(value) / double(top);
         const int w = metrics.horizontalAdvance(text) + 2 * pad;
@@ -58,6 +59,7 @@ std::vector<DifferenceScaleLabels::Tick> DifferenceScaleLabels::ticks() const
         const int right = int(std::floor(bar.left())) - pad;
         ticks.push_back({QRect(right - w, int(std::lround(y - h / 2.0)), w, h), text});
     }
+    //: the difference scale's title: |A-B| the difference of sides A and B, out of 255
     const QString title = tr("|A-B| of 255");
     const int w = metrics.horizontalAdvance(title) + 2 * pad;
     // Above the top tick, which is centred on the bar's top.

@@ -14,6 +14,7 @@ ExportSizeDialog::ExportSizeDialog(QSize initial, QWidget *parent) : QDialog(par
     auto spin = [this](int value) {
         auto *box = new IntegerBox(this);
         box->setRange(1, kMaxSide);
+        //: pixels, after the number
         box->setSuffix(tr(" px"));
         box->setValue(value);
         return box;

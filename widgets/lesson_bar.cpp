@@ -58,7 +58,9 @@ LessonBar::LessonBar(QWidget *parent) : QFrame(parent)
     m_menu = barButton(QString::fromUtf8("\u2630"),
                        tr("The Lesson menu: add, rename, caption, move and save steps"), this);
     m_menu->setPopupMode(QToolButton::InstantPopup);
-    m_close = barButton(tr("\u2715"), tr("Close the lesson (the scene stays)"), this);
+    // The buttons show symbols (◀ ▶ ☰ ✕), the same in every language; their tooltips say it.
+    m_close =
+        barButton(QString::fromUtf8("\u2715"), tr("Close the lesson (the scene stays)"), this);
     m_close->setObjectName("lessonClose");
 
     // Three rows: where the class is and the buttons, the title, then the caption across the
@@ -99,6 +101,7 @@ void LessonBar::setMenu(QMenu *menu)
 void LessonBar::showStep(int index, int count, const QString &title, const QString &caption,
                          const QString &error)
 {
+    //: where the class is in the lesson: step %1 of %2 steps
     m_position->setText(tr("Step %1 of %2").arg(index + 1).arg(count));
     m_title->setText("<b>" + title.toHtmlEscaped() + "</b>");
     m_previous->setEnabled(index > 0);
@@ -157,6 +160,7 @@ QString LessonBar::captionHtml(const QString &markdown, const QFont &font)
         QTextCursor cursor(&document);
         cursor.setPosition(image->first);
         cursor.setPosition(image->first + image->second, QTextCursor::KeepAnchor);
+        //: in a lesson's caption, where the markdown had an image (never shown there)
         cursor.insertText(tr("[picture]"), QTextCharFormat());
     }
     return document.toHtml();

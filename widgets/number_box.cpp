@@ -71,10 +71,12 @@ QString describe(const NumberBox::Reading &r, int decimals, bool wholeNumber, co
                            : NumberBox::tr("One decimal separator, a point or a comma (2.5 or "
                                            "2,5), and no thousands separators.");
     case P::Decimals:
-        return decimals == 0   ? NumberBox::tr("This box takes whole numbers.")
-               : decimals == 1 ? NumberBox::tr("This box takes one decimal.")
-                               : NumberBox::tr("This box takes %1 decimals.").arg(decimals);
+        // A count: Qt's plural forms pick the word ("%n decimal(s)"), not this code.
+        return decimals == 0 ? NumberBox::tr("This box takes whole numbers.")
+                             //: %n the digits allowed after the decimal separator
+                             : NumberBox::tr("This box takes %n decimal(s).", nullptr, decimals);
     case P::Range:
+        //: %1 the lowest number the box takes, %2 the highest (with their units)
         return NumberBox::tr("This box takes %1 to %2.").arg(lowest, highest);
     }
     return {};

@@ -24,6 +24,7 @@ PreferencesDialog::PreferencesDialog(const ImportLimits &limits, double frameBud
     m_memory = new IntegerBox(this);
     m_memory->setRange(64, int(std::min<qint64>(ImportLimits::defaultMemoryMB() * 2, 1 << 30)));
     m_memory->setSingleStep(256);
+    //: megabytes, after the number
     m_memory->setSuffix(tr(" MB"));
     m_memory->setToolTip(tr("The helper's address-space limit. Default: half of this machine's "
                             "memory (%1 MB). Also --import-memory-limit MB")
@@ -32,6 +33,7 @@ PreferencesDialog::PreferencesDialog(const ImportLimits &limits, double frameBud
 
     m_time = new IntegerBox(this);
     m_time->setRange(1, 3600);
+    //: seconds, after the number
     m_time->setSuffix(tr(" s"));
     m_time->setToolTip(
         tr("A load that takes longer is stopped. Default: %1 s").arg(ImportLimits{}.seconds));
