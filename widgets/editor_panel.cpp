@@ -53,6 +53,12 @@ QString stageLabel(ShaderStage stage)
 QString programDisplayName(const ShaderOrigin &origin)
 {
     QString name = origin.name;
+    // A preset's name is its key (scene files and settings keep it in English): shown, it is
+    // the preset's title.
+    if (origin.kind == ShaderOrigin::Kind::Preset)
+        for (const Preset &p : presets())
+            if (p.name == name)
+                name = p.title();
     if (name.isEmpty())
         name = origin.kind == ShaderOrigin::Kind::Scene ? EditorPanel::tr("the scene's shaders")
                                                         : EditorPanel::tr("your shaders");
@@ -71,7 +77,7 @@ EditorPanel::EditorPanel(ShaderDocument *document, QWidget *parent)
     presetButton->setPopupMode(QToolButton::InstantPopup);
     m_presets = new QMenu(presetButton);
     for (const Preset &p : presets())
-        m_presets->addAction(p.name, this, [this, &p] { m_document->loadPreset(p); });
+        m_presets->addAction(p.title(), this, [this, &p] { m_document->loadPreset(p); });
     presetButton->setMenu(m_presets);
     presetButton->setToolTip(tr("The built-in programs, the slides' shaders as printed, toon"));
 

@@ -42,15 +42,6 @@ class TestViewportTranslated : public QObject
         QVERIFY2(found.isEmpty(), qPrintable(found.join('\n')));
     }
 
-    // The objects' names: render/'s words (its engineer's to mark), data here.
-    std::set<QString> objectNames() const
-    {
-        std::set<QString> names;
-        for (const ObjectSettings &o : m_document.scene().objects)
-            names = wordsOf(displayName(o), names);
-        return names;
-    }
-
     // Applies `change` and waits for the frame it brings (the probe's text follows it).
     bool drawn(const std::function<void(Scene &)> &change)
     {
@@ -66,7 +57,7 @@ class TestViewportTranslated : public QObject
         const QString rows =
             QTextDocumentFragment::fromHtml(m_probe->textLabel()->text()).toPlainText();
         QVERIFY2(!m_probe->equation().isEmpty(), state);
-        QStringList found = problems(rows, objectNames());
+        QStringList found = problems(rows);
         found << problems(m_probe->equation());
         QVERIFY2(found.isEmpty(), qPrintable(QString(state) + ":\n" + found.join('\n')));
     }

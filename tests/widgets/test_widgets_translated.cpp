@@ -61,9 +61,7 @@ private slots:
         MaterialPanel material(&document);
         ObjectPanel object(&document);
         ShadingPanel shading(&document);
-        std::set<QString> data = wordsOf("Teapot lid");
-        for (const ObjectSettings &o : document.scene().objects)
-            data.merge(wordsOf(displayName(o))); // render/'s words (its engineer's to mark)
+        const std::set<QString> data = wordsOf("Teapot lid");
         for (ScenePanel *panel :
              std::initializer_list<ScenePanel *>{&light, &material, &object, &shading}) {
             expectNone(problemsIn(panel, data));
@@ -198,12 +196,13 @@ private slots:
         QTemporaryDir dir;
         ShaderDocument document;
         EditorPanel panel(&document);
-        // The Presets menu shows the presets' names as render/ gives them (its engineer's
-        // to mark, with the presets' titles); the folder's and the files' names are data.
+        // The folder's and the files' names are data.
         std::set<QString> data = wordsOf(dir.path(), {"toon", "vert", "frag"});
-        for (const Preset &p : presets())
-            data = wordsOf(p.name, data);
         expectNone(problemsIn(&panel, data));
+        // The Presets menu shows the presets' titles; their names are keys (files keep them).
+        for (QAction *preset : panel.presetsMenu()->actions())
+            QVERIFY2(oneSentence(preset->text()) && preset->text().contains("lb::Presets|"),
+                     qPrintable(preset->text()));
         QVERIFY(panel.saveAs(dir.filePath("toon.vert")).isEmpty());
         expectNone(problemsIn(&panel, data));
         for (QTabBar *tabs : panel.findChildren<QTabBar *>())
@@ -239,6 +238,10 @@ private slots:
         ShaderOrigin origin;
         origin.kind = ShaderOrigin::Kind::Scene;
         origin.edited = true;
+        expectNone(problems(programDisplayName(origin)));
+        origin.kind = ShaderOrigin::Kind::Preset;
+        origin.name = presets().back().name; // a key, in English
+        QVERIFY(oneSentence(programDisplayName(origin)));
         expectNone(problems(programDisplayName(origin)));
     }
 
