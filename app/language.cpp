@@ -71,19 +71,20 @@ QString resolvedLanguage(const QString &setting)
 QStringList installTranslators(QCoreApplication &app, const QString &language)
 {
     QStringList loaded;
-    if (language == "en")
-        return loaded; // the sources' language: nothing to load
     const QLocale locale = catalogueLocale(language);
     const QString qtFolder = QLibraryInfo::path(QLibraryInfo::TranslationsPath);
-    // Qt's own (standard buttons, file dialogs): "qt" names the whole set for a language.
-    if (install(app, locale, "qt", qtFolder))
-        loaded << "qt";
-    // The editor's context menu: Debian ships QScintilla's German and Brazilian Portuguese.
-    if (install(app, locale, "qscintilla", qtFolder) ||
-        (language == "pt" &&
-         install(app, QLocale(QLocale::Portuguese, QLocale::Brazil), "qscintilla", qtFolder)))
-        loaded << "qscintilla";
-    // Ours last: the last installed is asked first.
+    if (language != "en") { // Qt and QScintilla speak English of their own
+        // Qt's own (standard buttons, file dialogs): "qt" names the whole set for a language.
+        if (install(app, locale, "qt", qtFolder))
+            loaded << "qt";
+        // The editor's context menu: Debian ships QScintilla's German and Brazilian Portuguese.
+        if (install(app, locale, "qscintilla", qtFolder) ||
+            (language == "pt" &&
+             install(app, QLocale(QLocale::Portuguese, QLocale::Brazil), "qscintilla", qtFolder)))
+            loaded << "qscintilla";
+    }
+    // Ours last: the last installed is asked first. English's holds only plural forms ("1
+    // error", "2 errors"): the sources' own words are English.
     if (install(app, locale, "lightbench", ":/i18n"))
         loaded << "lightbench";
     // Lessons and examples follow the window's language unless their captions are set apart.

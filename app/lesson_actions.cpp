@@ -159,7 +159,7 @@ void LessonActions::addLanguageMenu()
     // window speaks: not translated.
     const std::pair<QString, QString> languages[] = {
         //: Lesson > Caption Language: the same language as the window's menus (View > Language)
-        {QString(), tr("The Window's")},
+        {QString(), tr("Same as the Window")},
         {"en", "English"},
         {"pt", "Português"},
         {"de", "Deutsch"}};

@@ -260,10 +260,10 @@ void MainWindow::syncShadingWithProgram()
     }
     // A whole sentence per model: the model's name and its gloss go together.
     m_shading->setShadingFixed(
-        true, (*fixed.gouraud ? tr("The program in the editor (%1) shades gouraud (per vertex) "
+        true, (*fixed.gouraud ? tr("The program in the editor (%1) shades Gouraud (per vertex) "
                                    "whatever this says. Load a preset or Reset Everything to "
                                    "switch shading.")
-                              : tr("The program in the editor (%1) shades phong (per fragment) "
+                              : tr("The program in the editor (%1) shades Phong (per fragment) "
                                    "whatever this says. Load a preset or Reset Everything to "
                                    "switch shading."))
                   .arg(m_editor->programName()));

@@ -2,6 +2,8 @@
 // a click showing one in the difference view) and what side B of the compare views draws.
 #include "main_window.h"
 
+#include "choice_labels.h"
+
 #include "exercise_panel.h"
 #include "probe_panel.h"
 #include "scene_actions.h"
@@ -148,7 +150,7 @@ void MainWindow::applySideB()
         exerciseBuiltIn
             //: %1: gouraud, phong or flat; %2: phong or blinn
             ? tr("the exercise's reference (built-in, %1 shading, %2 specular)")
-                  .arg(shownName(e->reference.shading), shownName(e->reference.specular))
+                  .arg(shadingLabel(e->reference.shading), specularLabel(e->reference.specular))
             : QString());
     if (exerciseBuiltIn) {
         holdSideBToReference();
@@ -156,7 +158,7 @@ void MainWindow::applySideB()
         m_shading->setSideB(
             tr("the built-in program, %1 shading and %2 specular (the "
                "exercise's reference)")
-                .arg(shownName(e->reference.shading), shownName(e->reference.specular)),
+                .arg(shadingLabel(e->reference.shading), specularLabel(e->reference.specular)),
             tr("The exercise's reference fixes side B's choices."), false);
         return;
     }

@@ -15,27 +15,13 @@ struct ScenePhrases
 };
 
 // The names are the files' words (scene.cpp), marked for lupdate and translated when shown.
-// The disambiguation keeps "phong" the shading apart from "phong" the specular model.
+// (The shading's and the specular model's names are widgets/choice_labels.h's.)
 struct Text
 {
     const char *source;
     const char *disambiguation;
 };
 template <typename E> using Names = std::pair<E, Text>;
-
-const Names<Shading> kShadings[] = {
-    //: a shading model, as in "%1 shading" ("the built-in program, gouraud shading")
-    {Shading::Gouraud, QT_TRANSLATE_NOOP3("lb::ScenePhrases", "gouraud", "shading")},
-    //: a shading model (per fragment), as in "%1 shading"
-    {Shading::Phong, QT_TRANSLATE_NOOP3("lb::ScenePhrases", "phong", "shading")},
-    //: a shading model (per triangle), as in "%1 shading"
-    {Shading::Flat, QT_TRANSLATE_NOOP3("lb::ScenePhrases", "flat", "shading")}};
-
-const Names<SpecularModel> kSpeculars[] = {
-    //: the specular model (R·V), as in "%1 specular"
-    {SpecularModel::Phong, QT_TRANSLATE_NOOP3("lb::ScenePhrases", "phong", "specular")},
-    //: the Blinn-Phong specular model (N·H), as in "%1 specular"
-    {SpecularModel::Blinn, QT_TRANSLATE_NOOP3("lb::ScenePhrases", "blinn", "specular")}};
 
 // What the built-in program shows instead of the lit colour (the Shading panel's Show).
 const Names<ShowChoice> kShowing[] = {
@@ -84,16 +70,6 @@ QString lightPhrase(const Light &light)
 }
 
 } // namespace
-
-QString shownName(Shading shading)
-{
-    return translated(kShadings, shading);
-}
-
-QString shownName(SpecularModel specular)
-{
-    return translated(kSpeculars, specular);
-}
 
 QString statusDescription(const Scene &s, const QString &programName, bool builtInProgram,
                           bool readsLight)

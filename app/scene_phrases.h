@@ -11,11 +11,6 @@
 
 namespace lb {
 
-// A choice as it goes into a sentence ("%1 shading", "%1 specular"): English "gouraud",
-// "blinn", as toName() spells it. (A shape's is shapeLabel(), scene.h.)
-QString shownName(Shading shading);
-QString shownName(SpecularModel specular);
-
 // The status line's description of what draws: "Program: toon.vert, Phong specular (R·V)  |
 // point light in the world frame  |  perspective projection". `builtInProgram`: the editor
 // shows a built-in program, which follows the Shading panel (flat, Show, specular choice);

@@ -17,7 +17,7 @@ constexpr const char *kSerialName = "serial"; // its line in the INI file: seria
 // "PATH cannot be written": a whole sentence for each reason, the path in it.
 QString notWritten(const QString &path, QSettings::Status status)
 {
-    return (status == QSettings::FormatError ? SettingsAutosave::tr("%1 is no settings file")
+    return (status == QSettings::FormatError ? SettingsAutosave::tr("%1 is not a settings file")
                                              : SettingsAutosave::tr("%1 cannot be written"))
         .arg(path);
 }

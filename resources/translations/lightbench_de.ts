@@ -2,305 +2,6 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="de_DE">
 <context>
-    <name>QObject</name>
-    <message>
-        <location filename="../../app/help.cpp" line="+37"/>
-        <source> or </source>
-        <translation> oder </translation>
-    </message>
-    <message>
-        <location line="+35"/>
-        <source>Menus</source>
-        <translation>Menüs</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>Shader editor</source>
-        <translation>Shader-Editor</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>compile and link now</source>
-        <translation>jetzt kompilieren und linken</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>find in the shader</source>
-        <translation>im Shader suchen</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>undo / redo (also what a preset, an example or a reset replaced)</source>
-        <translation>rückgängig / wiederherstellen (auch was eine Vorlage, ein Beispiel oder ein Zurücksetzen ersetzt hat)</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>complete the word</source>
-        <translation>Wort vervollständigen</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>delete / duplicate the line</source>
-        <translation>Zeile löschen / duplizieren</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>View</source>
-        <translation>Ansicht</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>left drag</source>
-        <translation>mit der linken Maustaste ziehen</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>orbit the camera</source>
-        <translation>Kamera um die Szene kreisen lassen</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>click</source>
-        <translation>Klick</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>select the object under the cursor</source>
-        <translation>Objekt unter dem Mauszeiger auswählen</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>right or middle drag</source>
-        <translation>mit der rechten oder mittleren Maustaste ziehen</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>pan</source>
-        <translation>verschieben</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>wheel</source>
-        <translation>Mausrad</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>zoom</source>
-        <translation>zoomen</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Ctrl+click, Shift+click</source>
-        <translation>Strg+Klick, Umschalt+Klick</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>probe the surface point (drag to move it)</source>
-        <translation>Oberflächenpunkt mit der Sonde messen (ziehen verschiebt ihn)</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>drag the wipe&apos;s line</source>
-        <translation>die Linie der Wischblende ziehen</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>move the wipe (compare)</source>
-        <translation>Wischblende verschieben (Vergleich)</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>drop a file</source>
-        <translation>Datei ablegen</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>open a mesh, a scene, a lesson or a shader pair</source>
-        <translation>ein Mesh, eine Szene, eine Lektion oder ein Shader-Paar öffnen</translation>
-    </message>
-    <message>
-        <location line="+8"/>
-        <source>Keyboard shortcuts - lightbench</source>
-        <translation>Tastenkürzel - lightbench</translation>
-    </message>
-    <message>
-        <location line="+9"/>
-        <source>Features - lightbench</source>
-        <translation>Funktionen - lightbench</translation>
-    </message>
-    <message>
-        <location line="+6"/>
-        <source>The README is missing from this build.</source>
-        <translation>Die README fehlt in diesem Build.</translation>
-    </message>
-    <message>
-        <location line="+8"/>
-        <source>About lightbench</source>
-        <translation>Über lightbench</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>&lt;h3&gt;lightbench %1&lt;/h3&gt;&lt;p&gt;A workbench for the lighting model of computer graphics courses: ambient, diffuse and specular terms, Phong and Blinn-Phong, Gouraud and Phong shading, every pixel checked against a CPU reference.&lt;/p&gt;&lt;p&gt;Qt %2 (built with %3)&lt;br&gt;%4&lt;/p&gt;</source>
-        <translation>&lt;h3&gt;lightbench %1&lt;/h3&gt;&lt;p&gt;Eine Werkbank für das Beleuchtungsmodell aus Vorlesungen zur Computergrafik: ambienter, diffuser und spiegelnder Anteil, Phong und Blinn-Phong, Gouraud- und Phong-Schattierung, jedes Pixel geprüft gegen eine CPU-Referenz.&lt;/p&gt;&lt;p&gt;Qt %2 (erstellt mit %3)&lt;br&gt;%4&lt;/p&gt;</translation>
-    </message>
-    <message>
-        <location line="+6"/>
-        <source>OpenGL not started yet</source>
-        <translation>OpenGL noch nicht gestartet</translation>
-    </message>
-    <message>
-        <location filename="../../app/main_window_exercise.cpp" line="+27"/>
-        <source>Side B</source>
-        <translation>Seite B</translation>
-    </message>
-    <message>
-        <location filename="../../app/scene_actions.cpp" line="+30"/>
-        <source>Scenes (*.json);;All files (*)</source>
-        <translation>Szenen (*.json);;Alle Dateien (*)</translation>
-    </message>
-    <message>
-        <location filename="../../app/settings_autosave.cpp" line="+19"/>
-        <source>is no settings file</source>
-        <translation>ist keine Einstellungsdatei</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>cannot be written</source>
-        <translation>kann nicht geschrieben werden</translation>
-    </message>
-    <message>
-        <location filename="../../app/unsaved_work.cpp" line="+14"/>
-        <source>the shader file %1</source>
-        <translation>der Shader-Datei %1</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>the shader files %1 and %2</source>
-        <translation>den Shader-Dateien %1 und %2</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>the lesson “%1”</source>
-        <translation>der Lektion „%1“</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <location line="+7"/>
-        <source>%1 and %2</source>
-        <translation>%1 und %2</translation>
-    </message>
-    <message>
-        <location line="-2"/>
-        <source>the untitled scene</source>
-        <translation>der unbenannten Szene</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>the scene “%1”</source>
-        <translation>der Szene „%1“</translation>
-    </message>
-    <message>
-        <location line="+10"/>
-        <source>Save the changes to %1 before closing?</source>
-        <translation>Änderungen an %1 vor dem Schließen speichern?</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>Save the changes to %1 before opening “%2”?</source>
-        <translation>Änderungen an %1 vor dem Öffnen von „%2“ speichern?</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>Save the changes to %1 before resetting everything?</source>
-        <translation>Änderungen an %1 speichern, bevor alles zurückgesetzt wird?</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Save the changes to %1 before closing it?</source>
-        <translation>Änderungen an %1 vor dem Schließen der Lektion speichern?</translation>
-    </message>
-    <message>
-        <location line="+8"/>
-        <source>Your changes will be lost if you don&apos;t save them. Save saves them all.</source>
-        <translation>Ihre Änderungen gehen verloren, wenn Sie sie nicht speichern. „Speichern“ speichert alle.</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Your changes will be lost if you don&apos;t save them.</source>
-        <translation>Ihre Änderungen gehen verloren, wenn Sie sie nicht speichern.</translation>
-    </message>
-    <message>
-        <location line="+6"/>
-        <source>Unsaved changes</source>
-        <translation>Ungespeicherte Änderungen</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>Discard</source>
-        <translation>Verwerfen</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/caption_dialog.cpp" line="+17"/>
-        <source>English</source>
-        <translation>Englisch</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Portuguese</source>
-        <translation>Portugiesisch</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>German</source>
-        <translation>Deutsch</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/exercise_panel.cpp" line="+21"/>
-        <source>light position</source>
-        <translation>Lichtposition</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>point or directional</source>
-        <translation>Punktlicht oder gerichtetes Licht</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>light frame</source>
-        <translation>Koordinatensystem des Lichts</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>light colours</source>
-        <translation>Lichtfarben</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>material</source>
-        <translation>Material</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>camera</source>
-        <translation>Kamera</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>projection</source>
-        <translation>Projektion</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>non-uniform scale</source>
-        <translation>ungleichmäßige Skalierung</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>nothing (every case is the scene as it is)</source>
-        <translation>nichts (jeder Fall ist die Szene, wie sie ist)</translation>
-    </message>
-</context>
-<context>
     <name>QPlatformTheme</name>
     <message>
         <location filename="../../app/qt_standard_words.cpp" line="+12"/>
@@ -454,20 +155,160 @@
 <context>
     <name>lb::CaptionDialog</name>
     <message>
-        <location filename="../../widgets/caption_dialog.cpp" line="+10"/>
-        <location line="+41"/>
+        <location filename="../../widgets/caption_dialog.cpp" line="+21"/>
+        <source>English</source>
+        <translation>Englisch</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Portuguese</source>
+        <translation>Portugiesisch</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>German</source>
+        <translation>Deutsch</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <location line="+43"/>
         <source>Edit Caption</source>
         <translation>Beschriftung bearbeiten</translation>
     </message>
     <message>
-        <location line="-39"/>
+        <location line="-41"/>
         <source>What the class reads under the view. Markdown: *italic*, **bold**, `code`, lists. An empty language shows English.</source>
         <translation>Was die Klasse unter der Ansicht liest. Markdown: *kursiv*, **fett**, `Code`, Listen. Eine leere Sprache zeigt Englisch.</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+14"/>
+        <source>%1 (%2)</source>
+        <extracomment>a caption&apos;s tab: %1 the language&apos;s name, %2 its code (en, pt, de)</extracomment>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <location line="+29"/>
         <source>The %1 caption has %2 characters; a caption holds at most %3. Nothing was changed yet: shorten it, or Cancel.</source>
+        <extracomment>%1 the language&apos;s code (en, pt, de); %2, %3 counts</extracomment>
         <translation>Die Beschriftung (%1) hat %2 Zeichen; eine Beschriftung fasst höchstens %3. Noch wurde nichts geändert: Kürzen Sie sie oder brechen Sie ab.</translation>
+    </message>
+</context>
+<context>
+    <name>lb::ChoiceLabels</name>
+    <message>
+        <location filename="../../widgets/choice_labels.cpp" line="+14"/>
+        <source>camera</source>
+        <comment>light frame</comment>
+        <translation>Kamerakoordinaten</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>world</source>
+        <comment>light frame</comment>
+        <translation>Weltkoordinaten</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>object</source>
+        <comment>light frame</comment>
+        <translation>Objektkoordinaten</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>gouraud</source>
+        <comment>shading</comment>
+        <extracomment>Gouraud shading (per vertex), as in &quot;gouraud shading&quot;</extracomment>
+        <translation>Gouraud</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>phong</source>
+        <comment>shading</comment>
+        <extracomment>Phong shading (per fragment), as in &quot;phong shading&quot;</extracomment>
+        <translation>Phong</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>flat</source>
+        <comment>shading</comment>
+        <extracomment>flat shading (per triangle), as in &quot;flat shading&quot;</extracomment>
+        <translation>flach</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>phong</source>
+        <comment>specular</comment>
+        <extracomment>Phong&apos;s specular term (R.V)^n, as in &quot;phong specular&quot;</extracomment>
+        <translation>Phong</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>blinn</source>
+        <comment>specular</comment>
+        <extracomment>Blinn-Phong&apos;s specular term (N.H)^n, as in &quot;blinn specular&quot;</extracomment>
+        <translation>Blinn-Phong</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>colour</source>
+        <comment>show</comment>
+        <translation>Farbe</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>normal</source>
+        <comment>show</comment>
+        <extracomment>the normal N, drawn as a colour</extracomment>
+        <translation>Normale N</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>light</source>
+        <comment>show</comment>
+        <extracomment>the light vector L, drawn as a colour</extracomment>
+        <translation>Lichtvektor L</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>view</source>
+        <comment>show</comment>
+        <extracomment>the view vector V, drawn as a colour</extracomment>
+        <translation>Blickvektor V</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>half</source>
+        <comment>show</comment>
+        <extracomment>the half vector H, drawn as a colour</extracomment>
+        <translation>Halbvektor H</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>reflect</source>
+        <comment>show</comment>
+        <extracomment>the reflected light R, drawn as a colour</extracomment>
+        <translation>Reflexionsvektor R</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>ndotl</source>
+        <comment>show</comment>
+        <extracomment>N·L drawn as grey</extracomment>
+        <translation>N·L</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>specular</source>
+        <comment>show</comment>
+        <extracomment>the specular factor drawn as grey</extracomment>
+        <translation>Glanzfaktor</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>attenuation</source>
+        <comment>show</comment>
+        <extracomment>the attenuation drawn as grey</extracomment>
+        <translation>Abschwächung</translation>
     </message>
 </context>
 <context>
@@ -491,20 +332,40 @@
 <context>
     <name>lb::DifferenceScaleLabels</name>
     <message>
-        <location filename="../../widgets/difference_scale_labels.cpp" line="+54"/>
+        <location filename="../../widgets/difference_scale_labels.cpp" line="+55"/>
         <source>%1+</source>
+        <extracomment>the top of the difference scale: this difference (of 255) and more</extracomment>
         <translation>%1+</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>|A-B| of 255</source>
+        <extracomment>the difference scale&apos;s title: |A-B| the difference of sides A and B, out of 255</extracomment>
         <translation>|A-B| von 255</translation>
     </message>
 </context>
 <context>
     <name>lb::EditorPanel</name>
     <message>
-        <location filename="../../widgets/editor_panel.cpp" line="+39"/>
+        <location filename="../../widgets/editor_panel.cpp" line="+41"/>
+        <source>vertex</source>
+        <extracomment>the shader stage a message is about, before its line:column</extracomment>
+        <translation>Vertex</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>fragment</source>
+        <extracomment>the shader stage a message is about, before its line:column</extracomment>
+        <translation>Fragment</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>link</source>
+        <extracomment>a message of the linker, about no single stage</extracomment>
+        <translation>Linker</translation>
+    </message>
+    <message>
+        <location line="+16"/>
         <source>the scene&apos;s shaders</source>
         <translation>die Shader der Szene</translation>
     </message>
@@ -539,8 +400,9 @@
         <translation>Jetzt kompilieren und linken (Strg+Eingabe)</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>Live</source>
+        <extracomment>recompile while typing (a switch)</extracomment>
         <translation>Live</translation>
     </message>
     <message>
@@ -549,8 +411,9 @@
         <translation>Nach einer Tipppause neu kompilieren; aus: nur mit Strg+Eingabe</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source> ms</source>
+        <extracomment>milliseconds, after the number</extracomment>
         <translation> ms</translation>
     </message>
     <message>
@@ -565,23 +428,23 @@
     </message>
     <message>
         <location line="+19"/>
-        <location line="+121"/>
+        <location line="+127"/>
         <source>Vertex</source>
         <translation>Vertex</translation>
     </message>
     <message>
-        <location line="-120"/>
-        <location line="+120"/>
+        <location line="-126"/>
+        <location line="+129"/>
         <source>Fragment</source>
         <translation>Fragment</translation>
     </message>
     <message>
-        <location line="-115"/>
+        <location line="-124"/>
         <source>Click a message to go to its line</source>
         <translation>Klicken Sie auf eine Meldung, um zu ihrer Zeile zu springen</translation>
     </message>
     <message>
-        <location line="+103"/>
+        <location line="+105"/>
         <source>%1 is gone from the disk; your text is kept</source>
         <translation>%1 ist nicht mehr auf der Festplatte; Ihr Text bleibt erhalten</translation>
     </message>
@@ -591,39 +454,52 @@
         <translation>%1 wurde auf der Festplatte geändert; Ihre ungespeicherten Änderungen bleiben erhalten (erneut öffnen, um die Version auf der Festplatte zu laden)</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+14"/>
+        <source>Vertex - %1</source>
+        <extracomment>the vertex shader&apos;s tab; %1 its file&apos;s name</extracomment>
+        <translation>Vertex - %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Fragment - %1</source>
+        <extracomment>the fragment shader&apos;s tab; %1 its file&apos;s name</extracomment>
+        <translation>Fragment - %1</translation>
+    </message>
+    <message>
+        <location line="+30"/>
         <source>Your unsaved shader edits from the last session are back</source>
         <translation>Ihre ungespeicherten Shader-Änderungen aus der letzten Sitzung sind wieder da</translation>
     </message>
     <message>
-        <location line="+85"/>
-        <source>error</source>
-        <translation>Fehler</translation>
+        <location line="+86"/>
+        <source>%1  error: %2</source>
+        <extracomment>%1 where (fragment 5:3); %2 the compiler&apos;s message</extracomment>
+        <translation>%1  Fehler: %2</translation>
     </message>
     <message>
         <location line="+0"/>
-        <source>warning</source>
-        <translation>Warnung</translation>
+        <source>%1  warning: %2</source>
+        <translation>%1  Warnung: %2</translation>
     </message>
     <message numerus="yes">
-        <location line="+10"/>
-        <source>&lt;span style=&apos;color:#8a5a00&apos;&gt;linked, %n warning(s)&lt;/span&gt;</source>
+        <location line="+12"/>
+        <source>linked, %n warning(s)</source>
         <translation>
-            <numerusform>&lt;span style=&apos;color:#8a5a00&apos;&gt;gelinkt, %n Warnung&lt;/span&gt;</numerusform>
-            <numerusform>&lt;span style=&apos;color:#8a5a00&apos;&gt;gelinkt, %n Warnungen&lt;/span&gt;</numerusform>
+            <numerusform>gelinkt, %n Warnung</numerusform>
+            <numerusform>gelinkt, %n Warnungen</numerusform>
         </translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>&lt;span style=&apos;color:#2e7d32&apos;&gt;linked&lt;/span&gt;</source>
-        <translation>&lt;span style=&apos;color:#2e7d32&apos;&gt;gelinkt&lt;/span&gt;</translation>
+        <location line="+2"/>
+        <source>linked</source>
+        <translation>gelinkt</translation>
     </message>
     <message numerus="yes">
         <location line="+3"/>
-        <source>&lt;span style=&apos;color:#c62828&apos;&gt;%n error(s): last good program drawing&lt;/span&gt;</source>
+        <source>%n error(s): last good program drawing</source>
         <translation>
-            <numerusform>&lt;span style=&apos;color:#c62828&apos;&gt;%n Fehler: das letzte funktionierende Programm zeichnet&lt;/span&gt;</numerusform>
-            <numerusform>&lt;span style=&apos;color:#c62828&apos;&gt;%n Fehler: das letzte funktionierende Programm zeichnet&lt;/span&gt;</numerusform>
+            <numerusform>%n Fehler: das letzte funktionierende Programm zeichnet</numerusform>
+            <numerusform>%n Fehler: das letzte funktionierende Programm zeichnet</numerusform>
         </translation>
     </message>
 </context>
@@ -691,13 +567,58 @@
 <context>
     <name>lb::ExercisePanel</name>
     <message>
-        <location filename="../../widgets/exercise_panel.cpp" line="+30"/>
-        <location line="+121"/>
+        <location filename="../../widgets/exercise_panel.cpp" line="+25"/>
+        <source>light position</source>
+        <translation>Lichtposition</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>point or directional</source>
+        <translation>Punktlicht oder gerichtetes Licht</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>light frame</source>
+        <translation>Koordinatensystem des Lichts</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>light colours</source>
+        <translation>Lichtfarben</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>material</source>
+        <translation>Material</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>camera</source>
+        <translation>Kamera</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>projection</source>
+        <translation>Projektion</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>non-uniform scale</source>
+        <translation>ungleichmäßige Skalierung</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>nothing (every case is the scene as it is)</source>
+        <translation>nichts (jeder Fall ist die Szene, wie sie ist)</translation>
+    </message>
+    <message>
+        <location line="+30"/>
+        <location line="+122"/>
         <source>Check my work</source>
         <translation>Arbeit prüfen</translation>
     </message>
     <message>
-        <location line="-120"/>
+        <location line="-121"/>
         <source>Draws the exercise&apos;s cases with the program in the editor and with the reference, as the teacher&apos;s grading does, and lists each case (F9)</source>
         <translation>Zeichnet die Fälle der Übung mit dem Programm im Editor und mit der Referenz, wie es die Bewertung der Lehrkraft tut, und listet jeden Fall auf (F9)</translation>
     </message>
@@ -772,8 +693,9 @@
         <translation>Diese Übung kann nicht geprüft werden: Ihre Referenz fehlt oder ist unbrauchbar.</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>Reference: the built-in program, %1 shading, %2 specular.</source>
+        <extracomment>%1 the shading (gouraud, phong, flat); %2 the specular term (phong, blinn)</extracomment>
         <translation>Referenz: das eingebaute Programm, Schattierung %1, spiegelnder Anteil %2.</translation>
     </message>
     <message>
@@ -797,37 +719,78 @@
         <translation>Prüfung läuft: Die Fälle werden mit Ihrem Programm und der Referenz gezeichnet...</translation>
     </message>
     <message>
-        <location line="+22"/>
-        <source>Your program does not compile%1</source>
-        <translation>Ihr Programm lässt sich nicht kompilieren%1</translation>
+        <location line="+24"/>
+        <source>Your program does not compile:
+%1</source>
+        <extracomment>%1 the compiler&apos;s messages</extracomment>
+        <translation>Ihr Programm lässt sich nicht kompilieren:
+%1</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>Your program does not link%1</source>
-        <translation>Ihr Programm lässt sich nicht linken%1</translation>
+        <source>Your program does not compile</source>
+        <translation>Ihr Programm lässt sich nicht kompilieren</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Your program does not link:
+%1</source>
+        <extracomment>%1 the linker&apos;s messages</extracomment>
+        <translation>Ihr Programm lässt sich nicht linken:
+%1</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>Your program was refused%1</source>
-        <translation>Ihr Programm wurde abgelehnt%1</translation>
+        <source>Your program does not link</source>
+        <translation>Ihr Programm lässt sich nicht linken</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Your program was refused:
+%1</source>
+        <extracomment>%1 why it was refused (a loop that never ends, a frame too slow)</extracomment>
+        <translation>Ihr Programm wurde abgelehnt:
+%1</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Your program was refused</source>
+        <translation>Ihr Programm wurde abgelehnt</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>The check could not start:
+%1</source>
+        <extracomment>%1 why the checking process did not start</extracomment>
+        <translation>Die Prüfung konnte nicht starten:
+%1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The check could not start</source>
+        <translation>Die Prüfung konnte nicht starten</translation>
     </message>
     <message>
         <location line="+2"/>
+        <source>Not checked: %1:
+%2</source>
+        <extracomment>%1 the grading&apos;s status word (English, as the report has it); %2 its reason</extracomment>
+        <translation>Nicht geprüft: %1:
+%2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Not checked: %1</source>
+        <translation>Nicht geprüft: %1</translation>
+    </message>
+    <message>
+        <location line="-7"/>
         <source>The check took too long (%1) and was stopped</source>
+        <extracomment>%1 how long it was given</extracomment>
         <translation>Die Prüfung dauerte zu lange (%1) und wurde abgebrochen</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>The check could not start%1</source>
-        <translation>Die Prüfung konnte nicht starten%1</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Not checked: %1%2</source>
-        <translation>Nicht geprüft: %1%2</translation>
-    </message>
-    <message>
-        <location line="+7"/>
+        <location line="+21"/>
         <source>Passed: all %1 cases (in each, at least %2 of the pixels within %3/255); largest difference %4/255</source>
         <translation>Bestanden: alle %1 Fälle (in jedem mindestens %2 der Pixel innerhalb von %3/255); größte Differenz %4/255</translation>
     </message>
@@ -842,8 +805,9 @@
         <translation>Klicken Sie auf einen Fall, um ihn in der Differenzansicht zu sehen.</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>%1 (as given)</source>
+        <extracomment>case 0 of the list: the exercise&apos;s scene as it is, not varied</extracomment>
         <translation>%1 (wie vorgegeben)</translation>
     </message>
     <message>
@@ -880,8 +844,9 @@
         <translation>Bild exportieren</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source> px</source>
+        <extracomment>pixels, after the number</extracomment>
         <translation> px</translation>
     </message>
     <message>
@@ -954,6 +919,12 @@
         <source>an image</source>
         <translation>ein Bild</translation>
     </message>
+    <message>
+        <location filename="../../app/settings_store.cpp" line="+32"/>
+        <location line="+20"/>
+        <source>a settings file</source>
+        <translation>eine Einstellungsdatei</translation>
+    </message>
 </context>
 <context>
     <name>lb::Grading</name>
@@ -994,6 +965,164 @@
         <location line="+1"/>
         <source>|student - reference| (white: 64/255)</source>
         <translation>|Abgabe - Referenz| (weiß: 64/255)</translation>
+    </message>
+</context>
+<context>
+    <name>lb::Help</name>
+    <message>
+        <location filename="../../app/help.cpp" line="+50"/>
+        <source>%1, %2</source>
+        <extracomment>shortcuts that do the same: all but the last two, &quot;Ctrl++, Ctrl+= or ...&quot;</extracomment>
+        <translation>%1, %2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 or %2</source>
+        <extracomment>shortcuts that do the same: &quot;F11 or F5&quot;</extracomment>
+        <translation>%1 oder %2</translation>
+    </message>
+    <message>
+        <location line="+55"/>
+        <source>Menus</source>
+        <extracomment>Help &gt; Keyboard Shortcuts: the heading over every menu&apos;s keys</extracomment>
+        <translation>Menüs</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Shader editor</source>
+        <translation>Shader-Editor</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>compile and link now</source>
+        <translation>jetzt kompilieren und linken</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>find in the shader</source>
+        <translation>im Shader suchen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>undo / redo (also what a preset, an example or a reset replaced)</source>
+        <translation>rückgängig / wiederherstellen (auch was eine Vorlage, ein Beispiel oder ein Zurücksetzen ersetzt hat)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>complete the word</source>
+        <translation>Wort vervollständigen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>delete / duplicate the line</source>
+        <translation>Zeile löschen / duplizieren</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>View</source>
+        <extracomment>Help &gt; Keyboard Shortcuts: the heading over the mouse and keys of the 3D view (not the View menu)</extracomment>
+        <translation>Ansicht</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>left drag</source>
+        <translation>mit der linken Maustaste ziehen</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>orbit the camera</source>
+        <translation>Kamera um die Szene kreisen lassen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>click</source>
+        <translation>Klick</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>select the object under the cursor</source>
+        <translation>Objekt unter dem Mauszeiger auswählen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>right or middle drag</source>
+        <translation>mit der rechten oder mittleren Maustaste ziehen</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>pan</source>
+        <translation>verschieben</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>wheel</source>
+        <translation>Mausrad</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>zoom</source>
+        <translation>zoomen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Ctrl+click, Shift+click</source>
+        <extracomment>the keys as the keyboard names them (Ctrl, Shift), held while clicking</extracomment>
+        <translation>Strg+Klick, Umschalt+Klick</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>probe the surface point (drag to move it)</source>
+        <translation>Oberflächenpunkt mit der Sonde messen (ziehen verschiebt ihn)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>drag the wipe&apos;s line</source>
+        <translation>die Linie der Wischblende ziehen</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>move the wipe (compare)</source>
+        <translation>Wischblende verschieben (Vergleich)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>drop a file</source>
+        <translation>Datei ablegen</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>open a mesh, a scene, a lesson or a shader pair</source>
+        <translation>ein Mesh, eine Szene, eine Lektion oder ein Shader-Paar öffnen</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Keyboard shortcuts - lightbench</source>
+        <translation>Tastenkürzel - lightbench</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Features - lightbench</source>
+        <translation>Funktionen - lightbench</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>The README is missing from this build.</source>
+        <translation>Die README fehlt in diesem Build.</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>About lightbench</source>
+        <translation>Über lightbench</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&lt;h3&gt;lightbench %1&lt;/h3&gt;&lt;p&gt;A workbench for the lighting model of computer graphics courses: ambient, diffuse and specular terms, Phong and Blinn-Phong, Gouraud and Phong shading, every pixel checked against a CPU reference.&lt;/p&gt;&lt;p&gt;Qt %2 (built with %3)&lt;br&gt;%4&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;lightbench %1&lt;/h3&gt;&lt;p&gt;Eine Werkbank für das Beleuchtungsmodell aus Vorlesungen zur Computergrafik: ambienter, diffuser und spiegelnder Anteil, Phong und Blinn-Phong, Gouraud- und Phong-Schattierung, jedes Pixel geprüft gegen eine CPU-Referenz.&lt;/p&gt;&lt;p&gt;Qt %2 (erstellt mit %3)&lt;br&gt;%4&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>OpenGL not started yet</source>
+        <translation>OpenGL noch nicht gestartet</translation>
     </message>
 </context>
 <context>
@@ -1144,7 +1273,7 @@
         <translation>&amp;System</translation>
     </message>
     <message>
-        <location line="+51"/>
+        <location line="+52"/>
         <source>&amp;Language</source>
         <translation>&amp;Sprache</translation>
     </message>
@@ -1370,12 +1499,13 @@
         <translation>S&amp;prache der Beschriftung</translation>
     </message>
     <message>
-        <location line="+4"/>
-        <source>The System&apos;s</source>
-        <translation>Systemsprache</translation>
+        <location line="+7"/>
+        <source>Same as the Window</source>
+        <extracomment>Lesson &gt; Caption Language: the same language as the window&apos;s menus (View &gt; Language)</extracomment>
+        <translation>Sprache des Fensters</translation>
     </message>
     <message>
-        <location line="+51"/>
+        <location line="+54"/>
         <source>untitled lesson</source>
         <translation>unbenannte Lektion</translation>
     </message>
@@ -1402,9 +1532,10 @@
     </message>
     <message>
         <location line="+116"/>
-        <location filename="../../app/lesson_authoring.cpp" line="+36"/>
+        <location filename="../../app/lesson_authoring.cpp" line="+39"/>
         <location line="+24"/>
         <source>Step %1</source>
+        <extracomment>a new step&apos;s title, until the teacher renames it (saved in the lesson file)</extracomment>
         <translation>Schritt %1</translation>
     </message>
     <message>
@@ -1420,17 +1551,13 @@
     </message>
     <message>
         <location line="+9"/>
-        <location filename="../../app/lesson_authoring.cpp" line="-149"/>
+        <location filename="../../app/lesson_authoring.cpp" line="-150"/>
         <source>Lesson</source>
+        <extracomment>a new lesson&apos;s title, until the teacher renames it (saved in the lesson file)</extracomment>
         <translation>Lektion</translation>
     </message>
     <message>
-        <location filename="../../app/lesson_authoring.cpp" line="-4"/>
-        <source>a new lesson</source>
-        <translation>neue Lektion</translation>
-    </message>
-    <message>
-        <location line="+59"/>
+        <location filename="../../app/lesson_authoring.cpp" line="+56"/>
         <source>The step keeps its title.</source>
         <translation>Der Schritt behält seinen Titel.</translation>
     </message>
@@ -1450,12 +1577,13 @@
         <translation>Der Schritt behält seine Beschriftung.</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>The %1 caption has %2 characters; a caption holds at most %3.</source>
+        <extracomment>%1: the caption&apos;s language code (en, de, pt)</extracomment>
         <translation>Die Beschriftung (%1) hat %2 Zeichen; eine Beschriftung fasst höchstens %3.</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+26"/>
         <source>The step stays.</source>
         <translation>Der Schritt bleibt.</translation>
     </message>
@@ -1518,18 +1646,14 @@
         <translation>Das Menü „Lektion“: Schritte hinzufügen, umbenennen, beschriften, verschieben und speichern</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>✕</source>
-        <translation>✕</translation>
-    </message>
-    <message>
-        <location line="+0"/>
+        <location line="+4"/>
         <source>Close the lesson (the scene stays)</source>
         <translation>Lektion schließen (die Szene bleibt)</translation>
     </message>
     <message>
-        <location line="+41"/>
+        <location line="+42"/>
         <source>Step %1 of %2</source>
+        <extracomment>where the class is in the lesson: step %1 of %2 steps</extracomment>
         <translation>Schritt %1 von %2</translation>
     </message>
     <message>
@@ -1538,8 +1662,9 @@
         <translation>Dieser Schritt kann nicht angezeigt werden; die Szene bleibt, wie sie war. %1</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+43"/>
         <source>[picture]</source>
+        <extracomment>in a lesson&apos;s caption, where the markdown had an image (never shown there)</extracomment>
         <translation>[Bild]</translation>
     </message>
 </context>
@@ -1556,8 +1681,9 @@
         <translation>Bis zu vier Lichter; ihre Anteile addieren sich. Ein Shader, der nur ein Licht deklariert (kein Array), liest Licht 1</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source>On</source>
+        <extracomment>the light is switched on (a check box)</extracomment>
         <translation>An</translation>
     </message>
     <message>
@@ -1566,8 +1692,9 @@
         <translation>uLightEnabled[i]: Ein ausgeschaltetes Licht trägt nichts bei (seine Farben gehen als Schwarz an die Shader)</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>Light</source>
+        <extracomment>the row of the light&apos;s on/off switch</extracomment>
         <translation>Licht</translation>
     </message>
     <message>
@@ -1581,8 +1708,9 @@
         <translation>Position</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>w = 1: point light</source>
+        <extracomment>w is the light position&apos;s 4th (homogeneous) coordinate: a symbol, not a word</extracomment>
         <translation>w = 1: Punktlicht</translation>
     </message>
     <message>
@@ -1596,8 +1724,9 @@
         <translation>lightPosition.w: 1 setzt das Licht an (x, y, z); 0 macht (x, y, z) zur Richtung zu einem Licht im Unendlichen</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source>Type</source>
+        <extracomment>a light&apos;s type: point or directional</extracomment>
         <translation>Typ</translation>
     </message>
     <message>
@@ -1626,37 +1755,35 @@
         <translation>Das Objekt, in dessen Koordinaten ein Licht in Objektkoordinaten angegeben ist: Das Licht dreht und bewegt sich mit ihm und beleuchtet von dort aus jedes Objekt</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>Frame</source>
+        <extracomment>the coordinate frame the light&apos;s position is given in</extracomment>
         <translation>Koordinaten</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Of object</source>
+        <extracomment>the object whose frame an object-frame light is given in</extracomment>
         <translation>Bezugsobjekt</translation>
     </message>
     <message>
         <location line="+7"/>
-        <source>%1 (%2): the light&apos;s %3 intensity</source>
-        <translation>%1 (%2): Intensität des Lichts (%3)</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>ambient</source>
-        <translation>ambient</translation>
+        <source>%1 (%2): the light&apos;s ambient intensity</source>
+        <extracomment>%1 the symbol (Ia, Id, Is); %2 the uniforms that carry it</extracomment>
+        <translation>%1 (%2): die ambiente Intensität des Lichts</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>diffuse</source>
-        <translation>diffus</translation>
+        <source>%1 (%2): the light&apos;s diffuse intensity</source>
+        <translation>%1 (%2): die diffuse Intensität des Lichts</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>specular</source>
-        <translation>spiegelnd</translation>
+        <source>%1 (%2): the light&apos;s specular intensity</source>
+        <translation>%1 (%2): die spiegelnde Intensität des Lichts</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+18"/>
         <source>lightAttenuation.%1 (%2): a point light&apos;s terms are divided by kc + kl·d + kq·d², d its distance to the surface (1, 0, 0: none; a directional light is never attenuated)</source>
         <translation>lightAttenuation.%1 (%2): Die Anteile eines Punktlichts werden durch kc + kl·d + kq·d² geteilt, d ist sein Abstand zur Oberfläche (1, 0, 0: keine; ein gerichtetes Licht wird nie abgeschwächt)</translation>
     </message>
@@ -1686,8 +1813,9 @@
         <translation>spotExponent: Innerhalb des Kegels werden die Anteile mit max(-L·D, 0)^exponent skaliert, zur Achse hin heller</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>Spot cutoff, exp</source>
+        <extracomment>the spotlight&apos;s cutoff angle and exponent</extracomment>
         <translation>Spot-Winkel, Exp.</translation>
     </message>
     <message>
@@ -1843,7 +1971,7 @@
 <context>
     <name>lb::MainWindow</name>
     <message>
-        <location filename="../../app/main_window.cpp" line="+80"/>
+        <location filename="../../app/main_window.cpp" line="+81"/>
         <source>Light</source>
         <translation>Licht</translation>
     </message>
@@ -1917,71 +2045,16 @@
     </message>
     <message>
         <location line="+7"/>
-        <source>The program in the editor (%1) shades %2 (%3) whatever this says. Load a preset or Reset Everything to switch shading.</source>
-        <translation>Das Programm im Editor (%1) schattiert nach %2 (%3), egal was hier steht. Laden Sie eine Vorlage oder wählen Sie „Alles zurücksetzen“, um die Schattierung umzuschalten.</translation>
+        <source>The program in the editor (%1) shades Gouraud (per vertex) whatever this says. Load a preset or Reset Everything to switch shading.</source>
+        <translation>Das Programm im Editor (%1) schattiert nach Gouraud (pro Vertex), egal was hier steht. Laden Sie eine Vorlage oder wählen Sie „Alles zurücksetzen“, um die Schattierung umzuschalten.</translation>
     </message>
     <message>
         <location line="+3"/>
-        <source>per vertex</source>
-        <translation>pro Vertex</translation>
+        <source>The program in the editor (%1) shades Phong (per fragment) whatever this says. Load a preset or Reset Everything to switch shading.</source>
+        <translation>Das Programm im Editor (%1) schattiert nach Phong (pro Fragment), egal was hier steht. Laden Sie eine Vorlage oder wählen Sie „Alles zurücksetzen“, um die Schattierung umzuschalten.</translation>
     </message>
     <message>
-        <location line="+0"/>
-        <source>per fragment</source>
-        <translation>pro Fragment</translation>
-    </message>
-    <message>
-        <location line="+28"/>
-        <source>%1 lights on</source>
-        <translation>%1 Lichter an</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>the program&apos;s own light (marker hidden)</source>
-        <translation>das eigene Licht des Programms (Markierung ausgeblendet)</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>directional light</source>
-        <translation>gerichtetes Licht</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>point light</source>
-        <translation>Punktlicht</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source> in the %1 frame</source>
-        <translation> (Koordinatensystem: %1)</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Program: %1</source>
-        <translation>Programm: %1</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>, drawn flat (per triangle)</source>
-        <translation>, flach gezeichnet (pro Dreieck)</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>, showing %1</source>
-        <translation>, zeigt %1</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>, Blinn-Phong specular (N·H)</source>
-        <translation>, spiegelnder Anteil nach Blinn-Phong (N·H)</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>, Phong specular (R·V)</source>
-        <translation>, spiegelnder Anteil nach Phong (R·V)</translation>
-    </message>
-    <message>
-        <location line="+9"/>
+        <location line="+35"/>
         <source>%1, step %2</source>
         <translation>%1, Schritt %2</translation>
     </message>
@@ -2001,7 +2074,7 @@
         <translation>Mehr bräuchte mehr Speicher, als die Meshes der Szene auf diesem Rechner belegen dürfen: %1 für alle Objekte zusammen.</translation>
     </message>
     <message>
-        <location filename="../../app/main_window_exercise.cpp" line="+17"/>
+        <location filename="../../app/main_window_exercise.cpp" line="+67"/>
         <source>Check cancelled.</source>
         <translation>Prüfung abgebrochen.</translation>
     </message>
@@ -2011,12 +2084,53 @@
         <translation>Geprüft: %1 von %2 Fällen bestanden</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="-21"/>
         <source>Not checked: %1</source>
+        <extracomment>a check that graded nothing, for a reason this version does not know (%1, in English)</extracomment>
         <translation>Nicht geprüft: %1</translation>
     </message>
     <message>
-        <location line="+46"/>
+        <location line="-24"/>
+        <source>Side B</source>
+        <translation>Seite B</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Not checked: does not compile</source>
+        <translation>Nicht geprüft: lässt sich nicht kompilieren</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Not checked: does not link</source>
+        <translation>Nicht geprüft: lässt sich nicht linken</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Not checked: refused</source>
+        <translation>Nicht geprüft: abgelehnt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Not checked: timed out</source>
+        <translation>Nicht geprüft: Zeitüberschreitung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Not checked: could not start</source>
+        <translation>Nicht geprüft: konnte nicht starten</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Not checked: crashed</source>
+        <translation>Nicht geprüft: abgestürzt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Not checked: unreadable</source>
+        <translation>Nicht geprüft: nicht lesbar</translation>
+    </message>
+    <message>
+        <location line="+78"/>
         <location line="+16"/>
         <location line="+1"/>
         <location line="+1"/>
@@ -2030,12 +2144,12 @@
     </message>
     <message>
         <location line="+1"/>
-        <location line="+36"/>
+        <location line="+39"/>
         <source>the built-in program</source>
         <translation>das eingebaute Programm</translation>
     </message>
     <message>
-        <location line="-32"/>
+        <location line="-35"/>
         <source>side B (%1)</source>
         <translation>Seite B (%1)</translation>
     </message>
@@ -2050,13 +2164,15 @@
         <translation>Seite B zeichnet das Referenzprogramm der Übung: Es schattiert so, wie es geschrieben ist, daher bewirken diese Einstellungen nichts.</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+9"/>
         <source>the exercise&apos;s reference (built-in, %1 shading, %2 specular)</source>
+        <extracomment>%1: gouraud, phong or flat; %2: phong or blinn</extracomment>
         <translation>die Referenz der Übung (eingebaut, Schattierung %1, spiegelnder Anteil %2)</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>the built-in program, %1 shading and %2 specular (the exercise&apos;s reference)</source>
+        <extracomment>%1: gouraud, phong or flat; %2: phong or blinn</extracomment>
         <translation>das eingebaute Programm, Schattierung %1 und spiegelnder Anteil %2 (die Referenz der Übung)</translation>
     </message>
     <message>
@@ -2092,8 +2208,9 @@
         <translation>Die Prüfung konnte nicht starten: %1</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+32"/>
         <source>Case %1 in the difference view (key C: the other compare views; &quot;Back to my scene&quot; in the Exercise panel)</source>
+        <extracomment>&quot;Back to my scene&quot; is the Exercise panel&apos;s button: its name as translated there</extracomment>
         <translation>Fall %1 in der Differenzansicht (Taste C: die anderen Vergleichsansichten; „Zurück zu meiner Szene“ im Bereich „Übung“)</translation>
     </message>
     <message>
@@ -2158,8 +2275,9 @@
         <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>&amp;View</source>
+        <extracomment>the menu (camera, probe, zoom, presentation, docks), not the 3D view itself</extracomment>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
@@ -2216,10 +2334,35 @@
     <message>
         <location line="+0"/>
         <source>G</source>
+        <comment>shortcut</comment>
         <translation>G</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+29"/>
+        <source>P</source>
+        <comment>shortcut</comment>
+        <translation>P</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>L</source>
+        <comment>shortcut</comment>
+        <translation>L</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>C</source>
+        <comment>shortcut</comment>
+        <translation>C</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>R</source>
+        <comment>shortcut</comment>
+        <translation>R</translation>
+    </message>
+    <message>
+        <location line="-56"/>
         <source>Toggle Phong / &amp;Blinn-Phong specular</source>
         <translation>Spiegelnden Anteil Phong / &amp;Blinn-Phong umschalten</translation>
     </message>
@@ -2239,19 +2382,9 @@
         <translation>&amp;Perspektivisch / orthografisch umschalten</translation>
     </message>
     <message>
-        <location line="+0"/>
-        <source>P</source>
-        <translation>P</translation>
-    </message>
-    <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>Toggle &amp;Lighting</source>
         <translation>Be&amp;leuchtung ein/aus</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>L</source>
-        <translation>L</translation>
     </message>
     <message>
         <location line="+6"/>
@@ -2269,24 +2402,32 @@
         <translation>&amp;Spiegelnden Anteil ein/aus</translation>
     </message>
     <message>
+        <location line="+6"/>
+        <source>A</source>
+        <comment>shortcut</comment>
+        <translation>A</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>D</source>
+        <comment>shortcut</comment>
+        <translation>D</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>S</source>
+        <comment>shortcut</comment>
+        <translation>S</translation>
+    </message>
+    <message>
         <location line="+8"/>
         <source>&amp;Compare: Off / Side by Side / Wipe / Difference</source>
         <translation>&amp;Vergleich: Aus / Nebeneinander / Wischblende / Differenz</translation>
     </message>
     <message>
-        <location line="+0"/>
-        <source>C</source>
-        <translation>C</translation>
-    </message>
-    <message>
         <location line="+7"/>
         <source>&amp;Reset Camera</source>
         <translation>&amp;Kamera zurücksetzen</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>R</source>
-        <translation>R</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -2359,8 +2500,9 @@
         <translation>&amp;Oberflächenskalierung</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>%1%</source>
+        <extracomment>View &gt; UI Scale: a size in percent (&quot;125%&quot;)</extracomment>
         <translation>%1 %</translation>
     </message>
     <message>
@@ -2406,6 +2548,7 @@
     <message>
         <location line="+2"/>
         <source>B</source>
+        <comment>shortcut</comment>
         <translation>B</translation>
     </message>
     <message>
@@ -2434,8 +2577,9 @@
         <translation>Der Präsentationsmodus (F5) blendet die Bereiche aus (F6 zeigt sie an)</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+14"/>
         <source>The editor needs %1 px at this scale: View &gt; Shader editor shows it</source>
+        <extracomment>View &gt; Shader editor: the menu&apos;s and the dock&apos;s names as translated there</extracomment>
         <translation>Der Editor braucht bei dieser Skalierung %1 px: Ansicht &gt; Shader-Editor zeigt ihn</translation>
     </message>
     <message>
@@ -2447,12 +2591,23 @@
 <context>
     <name>lb::MaterialPanel</name>
     <message>
-        <location filename="../../widgets/material_panel.cpp" line="+42"/>
-        <source>%1 (%2): the material&apos;s %3 reflection coefficients</source>
-        <translation>%1 (%2): Reflexionskoeffizienten des Materials (%3)</translation>
+        <location filename="../../widgets/material_panel.cpp" line="+41"/>
+        <source>%1 (%2): the material&apos;s ambient reflection coefficients</source>
+        <extracomment>%1 the symbol (Ka, Kd, Ks); %2 the uniforms that carry it</extracomment>
+        <translation>%1 (%2): die ambienten Reflexionskoeffizienten des Materials</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+1"/>
+        <source>%1 (%2): the material&apos;s diffuse reflection coefficients</source>
+        <translation>%1 (%2): die diffusen Reflexionskoeffizienten des Materials</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 (%2): the material&apos;s specular reflection coefficients</source>
+        <translation>%1 (%2): die spiegelnden Reflexionskoeffizienten des Materials</translation>
+    </message>
+    <message>
+        <location line="+12"/>
         <source>shininess: the specular exponent n in (R.V)^n or (N.H)^n; higher gives a smaller, sharper highlight</source>
         <translation>shininess: der Glanzexponent n in (R.V)^n oder (N.H)^n; ein größerer Wert ergibt ein kleineres, schärferes Glanzlicht</translation>
     </message>
@@ -2537,22 +2692,24 @@
     <message>
         <location line="+6"/>
         <source>N</source>
+        <comment>shortcut</comment>
         <translation>N</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+15"/>
         <source>%1 not loaded (%2 drawn)</source>
+        <extracomment>%1: the mesh file; %2: the built-in shape drawn instead (cube, sphere, ...)</extracomment>
         <translation>%1 nicht geladen (%2 gezeichnet)</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <source>%1: %2 triangles</source>
-        <translation>%1: %2 Dreiecke</translation>
+        <location line="+8"/>
+        <source>%1: %2 triangles, %3 s</source>
+        <translation>%1: %2 Dreiecke, %3 s</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <source>, %1 s</source>
-        <translation>, %1 s</translation>
+        <location line="+3"/>
+        <source>%1: %2 triangles</source>
+        <translation>%1: %2 Dreiecke</translation>
     </message>
     <message>
         <location line="+10"/>
@@ -2580,12 +2737,7 @@
         <translation>Bilder (%1);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location line="+44"/>
-        <source>Loading cancelled</source>
-        <translation>Laden abgebrochen</translation>
-    </message>
-    <message>
-        <location line="+10"/>
+        <location line="+56"/>
         <source>Mesh not loaded</source>
         <translation>Mesh nicht geladen</translation>
     </message>
@@ -2680,23 +2832,22 @@
         <translation>Ein Dezimaltrennzeichen, Punkt oder Komma (2.5 oder 2,5), und keine Tausendertrennzeichen.</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>This box takes whole numbers.</source>
         <translation>Dieses Feld nimmt ganze Zahlen an.</translation>
     </message>
-    <message>
-        <location line="+1"/>
-        <source>This box takes one decimal.</source>
-        <translation>Dieses Feld nimmt eine Nachkommastelle an.</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>This box takes %1 decimals.</source>
-        <translation>Dieses Feld nimmt %1 Nachkommastellen an.</translation>
-    </message>
-    <message>
+    <message numerus="yes">
         <location line="+2"/>
+        <source>This box takes %n decimal(s).</source>
+        <translation>
+            <numerusform>Dieses Feld nimmt %n Nachkommastelle an.</numerusform>
+            <numerusform>Dieses Feld nimmt %n Nachkommastellen an.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>This box takes %1 to %2.</source>
+        <extracomment>%1 the lowest number the box takes, %2 the highest (with their units)</extracomment>
         <translation>Dieses Feld nimmt Werte von %1 bis %2 an.</translation>
     </message>
 </context>
@@ -2723,13 +2874,14 @@
         <translation>%1: nicht geladen: sein Objekt wurde entfernt</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location filename="../../app/mesh_actions.cpp" line="-25"/>
+        <location filename="../../render/import/object_loader.cpp" line="+2"/>
         <location line="+184"/>
         <source>Loading cancelled</source>
         <translation>Laden abgebrochen</translation>
     </message>
     <message>
-        <location line="-62"/>
+        <location filename="../../render/import/object_loader.cpp" line="-62"/>
         <source>building</source>
         <translation>wird erstellt</translation>
     </message>
@@ -2796,12 +2948,12 @@
         <translation>Eine Kopie des ausgewählten Objekts samt Material am ersten freien Platz nahe der Mitte</translation>
     </message>
     <message>
-        <location line="+3"/>
-        <source> copy</source>
-        <translation> Kopie</translation>
+        <location line="+9"/>
+        <source>%1 copy</source>
+        <translation>%1 - Kopie</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+4"/>
         <source>Remove</source>
         <translation>Entfernen</translation>
     </message>
@@ -2941,18 +3093,21 @@
         <translation>Verschiebung entlang der Welt-%1-Achse: wo der Mittelpunkt des Objekts liegt (Modellmatrix, zuletzt angewendet)</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>Rotate</source>
+        <extracomment>the row of the object&apos;s rotation about X, Y and Z</extracomment>
         <translation>Drehen</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Scale</source>
+        <extracomment>the row of the object&apos;s scale along X, Y and Z</extracomment>
         <translation>Skalieren</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Move</source>
+        <extracomment>the row of the object&apos;s translation along X, Y and Z</extracomment>
         <translation>Verschieben</translation>
     </message>
     <message>
@@ -2976,8 +3131,9 @@
         <translation>Das ausgewählte Objekt zurück zur groben Einheitskugel, nicht gedreht, nicht skaliert und ohne automatische Drehung; Name, Ort und Material bleiben</translation>
     </message>
     <message>
-        <location line="+64"/>
+        <location line="+65"/>
         <source>File: %1</source>
+        <extracomment>the shape combo&apos;s entry for a mesh file; %1 the file&apos;s name</extracomment>
         <translation>Datei: %1</translation>
     </message>
     <message>
@@ -3022,8 +3178,9 @@
         <translation>Mesh-Dateien werden von einem Hilfsprozess (lightbench-import) gelesen. Braucht er mehr Speicher oder Zeit als hier angegeben, wird er beendet und die Datei erhält eine Meldung; die Werkbank arbeitet weiter.</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+11"/>
         <source> MB</source>
+        <extracomment>megabytes, after the number</extracomment>
         <translation> MB</translation>
     </message>
     <message>
@@ -3037,9 +3194,10 @@
         <translation>Speichergrenze für den Import</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <location line="+9"/>
         <source> s</source>
+        <extracomment>seconds, after the number</extracomment>
         <translation> s</translation>
     </message>
     <message>
@@ -3102,9 +3260,63 @@
     </message>
 </context>
 <context>
+    <name>lb::ProbeEquation</name>
+    <message>
+        <location filename="../../widgets/probe_equation_words.cpp" line="+24"/>
+        <source>Lighting is off: the surface shows Kd times the base colour instead.</source>
+        <translation>Beleuchtung aus: Die Oberfläche zeigt stattdessen Kd mal die Grundfarbe.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Flat shading draws the model at the triangle&apos;s last (provoking) vertex, one colour for the triangle; these numbers are the model at this point.</source>
+        <translation>Flache Schattierung wertet das Modell am letzten (provozierenden) Vertex des Dreiecks aus, eine Farbe für das ganze Dreieck; diese Zahlen geben das Modell an diesem Punkt wieder.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Gouraud shading draws the model at the triangle&apos;s vertices, interpolated; these numbers are the model at this point.</source>
+        <translation>Gouraud-Schattierung wertet das Modell an den Vertices des Dreiecks aus und interpoliert dazwischen; diese Zahlen geben das Modell an diesem Punkt wieder.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>(base multiplies ambient and diffuse only)</source>
+        <extracomment>after the equation in symbols, where a texture&apos;s base colour multiplies it</extracomment>
+        <translation>(base multipliziert nur den ambienten und den diffusen Anteil)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>(0: the light is behind the surface)</source>
+        <extracomment>after the specular term&apos;s numbers, where N·L &lt; 0</extracomment>
+        <translation>(0: das Licht liegt hinter der Oberfläche)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>[off]</source>
+        <extracomment>before a term the Shading panel switched off</extracomment>
+        <translation>[aus]</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>light %1: %2</source>
+        <extracomment>a light&apos;s line of the equation: %1 its number, %2 its factors (att·spot = ...)</extracomment>
+        <translation>Licht %1: %2</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>pixel = %1 of 255 (clamped to 0..1)</source>
+        <extracomment>%1 the pixel&apos;s red, green and blue, as (r, g, b)</extracomment>
+        <translation>Pixel = %1 von 255 (auf 0..1 begrenzt)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>The surface shows %1, not this colour.</source>
+        <extracomment>%1 what the Shading panel&apos;s Show choice draws instead (normal, ndotl, ...)</extracomment>
+        <translation>Die Oberfläche zeigt statt dieser Farbe: %1.</translation>
+    </message>
+</context>
+<context>
     <name>lb::ProbePanel</name>
     <message>
-        <location filename="../../widgets/probe_panel.cpp" line="+60"/>
+        <location filename="../../widgets/probe_panel.cpp" line="+62"/>
         <source>Copy the Equation</source>
         <translation>Gleichung kopieren</translation>
     </message>
@@ -3124,42 +3336,34 @@
         <translation>Keine Oberfläche bei (%1, %2).</translation>
     </message>
     <message>
-        <location line="+69"/>
+        <location line="+70"/>
+        <source>pixel (%1, %2), %3, triangle %4</source>
+        <extracomment>%1, %2 the pixel; %3 the object&apos;s name; %4 the triangle&apos;s number</extracomment>
+        <translation>Pixel (%1, %2), %3, Dreieck %4</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>pixel (%1, %2), %3, triangle %4, side B</source>
+        <translation>Pixel (%1, %2), %3, Dreieck %4, Seite B</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>pixel (%1, %2), %3, triangle %4, side A</source>
+        <translation>Pixel (%1, %2), %3, Dreieck %4, Seite A</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>Point</source>
         <translation>Punkt</translation>
     </message>
     <message>
-        <location line="+0"/>
-        <source>pixel (%1, %2), %3, triangle %4%5</source>
-        <translation>Pixel (%1, %2), %3, Dreieck %4%5</translation>
-    </message>
-    <message>
         <location line="+7"/>
-        <source>, side B</source>
-        <translation>, Seite B</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>, side A</source>
-        <translation>, Seite A</translation>
-    </message>
-    <message>
-        <location line="+1"/>
         <source>P (eye)</source>
+        <extracomment>P, the probed point, in eye coordinates</extracomment>
         <translation>P (Kamera)</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>N</source>
-        <translation>N</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>V</source>
-        <translation>V</translation>
-    </message>
-    <message>
-        <location line="+6"/>
+        <location line="+9"/>
         <source>levels %1 and %2 (%3% of %2)</source>
         <translation>Stufen %1 und %2 (%3 % von %2)</translation>
     </message>
@@ -3169,38 +3373,41 @@
         <translation>Stufe %1</translation>
     </message>
     <message>
+        <location line="+3"/>
+        <source>uv (%1, %2), level of detail %3: %4, mipmaps</source>
+        <extracomment>%1, %2 the texture coordinates; %3 the level of detail; %4 the mipmap levels read</extracomment>
+        <translation>uv (%1, %2), Detailstufe %3: %4, Mipmaps</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>uv (%1, %2), level of detail %3: %4, no mipmaps</source>
+        <translation>uv (%1, %2), Detailstufe %3: %4, ohne Mipmaps</translation>
+    </message>
+    <message>
         <location line="+1"/>
         <source>texture</source>
         <translation>Textur</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>uv (%1, %2), level of detail %3: %4, %5</source>
-        <translation>uv (%1, %2), Detailstufe %3: %4, %5</translation>
-    </message>
-    <message>
         <location line="+4"/>
-        <source>mipmaps</source>
-        <translation>Mipmaps</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>no mipmaps</source>
-        <translation>keine Mipmaps</translation>
-    </message>
-    <message>
-        <location line="+1"/>
         <source>base colour</source>
         <translation>Grundfarbe</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
+        <source>%1 (%2 frame)</source>
+        <extracomment>%1 the light&apos;s name in bold (Light 2); %2 its frame (camera, world, object)</extracomment>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>Light %1</source>
         <translation>Licht %1</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+11"/>
         <source>P, L (%1)</source>
+        <extracomment>P and L in the light&apos;s own frame: %1 the frame (world, object)</extracomment>
         <translation>P, L (%1)</translation>
     </message>
     <message>
@@ -3252,38 +3459,40 @@
         <translation>das Modell (Schattierung %1)</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+6"/>
+        <source>%1 of 255 (the built-in model, %2 shading)</source>
+        <extracomment>%1 the colour (r, g, b) of 255; %2 the shading (gouraud, phong, flat)</extracomment>
+        <translation>%1 von 255 (das eingebaute Modell, Schattierung %2)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 of 255 (%2 shading)</source>
+        <translation>%1 von 255 (Schattierung %2)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>model</source>
         <translation>Modell</translation>
     </message>
     <message>
         <location line="+0"/>
-        <location line="+7"/>
+        <location line="+3"/>
         <source>reference</source>
         <translation>Referenz</translation>
     </message>
     <message>
-        <location line="-5"/>
-        <source> of 255 (the built-in model, %1 shading)</source>
-        <translation> von 255 (das eingebaute Modell, Schattierung %1)</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source> of 255 (%1 shading)</source>
-        <translation> von 255 (Schattierung %1)</translation>
-    </message>
-    <message>
         <location line="+4"/>
+        <source>%1 draws nothing here</source>
+        <translation>%1 zeichnet hier nichts</translation>
+    </message>
+    <message>
+        <location line="-1"/>
         <source>%1 draws %2</source>
+        <extracomment>%1 the reference&apos;s name; %2 its colour (r, g, b) at the point</extracomment>
         <translation>%1 zeichnet %2</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>nothing here</source>
-        <translation>hier nichts</translation>
-    </message>
-    <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>GPU drew</source>
         <translation>GPU zeichnete</translation>
     </message>
@@ -3380,6 +3589,19 @@
 </source>
         <translation>dem eingebauten Shader &apos;%1&apos; fehlt eine Zeile &apos;#define MAX_LIGHTS&apos;, &apos;LIGHT_FACTORS&apos; oder &apos;SHOW_CHOICES&apos;
 </translation>
+    </message>
+</context>
+<context>
+    <name>lb::ProgramGuard</name>
+    <message>
+        <location filename="../../app/program_guard.cpp" line="+16"/>
+        <source>the driver ran out of memory compiling or drawing this program (limit %1): a macro that doubles itself, or a program too big for it?</source>
+        <translation>dem Treiber ging beim Kompilieren oder Zeichnen dieses Programms der Speicher aus (Grenze %1): ein Makro, das sich selbst verdoppelt, oder ein Programm, das zu groß für ihn ist?</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>compiling this program and drawing it on small frames took more than %1: an endless or very long loop, or a program too big for the driver?</source>
+        <translation>das Kompilieren dieses Programms und das Zeichnen kleiner Testbilder dauerte länger als %1: eine Endlosschleife oder sehr lange Schleife, oder ein Programm, das zu groß für den Treiber ist?</translation>
     </message>
 </context>
 <context>
@@ -3486,7 +3708,12 @@
 <context>
     <name>lb::SceneActions</name>
     <message>
-        <location filename="../../app/scene_actions.cpp" line="+18"/>
+        <location filename="../../app/scene_actions.cpp" line="+33"/>
+        <source>Scenes (*.json);;All files (*)</source>
+        <translation>Szenen (*.json);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <location line="+19"/>
         <source>Open Recent S&amp;cene</source>
         <translation>&amp;Zuletzt geöffnete Szene</translation>
     </message>
@@ -3600,13 +3827,8 @@
         <source>The scene could not be opened; nothing changed.</source>
         <translation>Die Szene konnte nicht geöffnet werden; nichts wurde geändert.</translation>
     </message>
-    <message>
-        <location line="+35"/>
-        <source>This step</source>
-        <translation>Dieser Schritt</translation>
-    </message>
     <message numerus="yes">
-        <location line="+3"/>
+        <location line="+41"/>
         <source>%n field(s) could not be used and kept their defaults:</source>
         <translation>
             <numerusform>%n Feld konnte nicht verwendet werden und behält seinen Standardwert:</numerusform>
@@ -3614,12 +3836,25 @@
         </translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+4"/>
+        <source>This step opened with less tessellation than it asks for, to fit this machine&apos;s memory; the file is unchanged unless you save the scene.</source>
+        <translation>Dieser Schritt wurde mit geringerer Tessellierung als angefordert geöffnet, passend zum Speicher dieses Rechners; die Datei bleibt unverändert, solange Sie die Szene nicht speichern.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>%1 opened with less tessellation than it asks for, to fit this machine&apos;s memory; the file is unchanged unless you save the scene.</source>
         <translation>%1 wurde mit geringerer Tessellierung als angefordert geöffnet, passend zum Speicher dieses Rechners; die Datei bleibt unverändert, solange Sie die Szene nicht speichern.</translation>
     </message>
     <message numerus="yes">
         <location line="+6"/>
+        <source>This step opened; %n field(s) could not be used and kept their defaults.</source>
+        <translation>
+            <numerusform>Dieser Schritt wurde geöffnet; %n Feld konnte nicht verwendet werden und behält seinen Standardwert.</numerusform>
+            <numerusform>Dieser Schritt wurde geöffnet; %n Felder konnten nicht verwendet werden und behalten ihre Standardwerte.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+3"/>
         <source>%1 opened; %n field(s) could not be used and kept their defaults.</source>
         <translation>
             <numerusform>%1 geöffnet; %n Feld konnte nicht verwendet werden und behält seinen Standardwert.</numerusform>
@@ -3647,12 +3882,12 @@
         <translation>%1: nicht gezeichnet: %2</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>%1: the view could not be drawn at %2 x %3</source>
         <translation>%1: Die Ansicht konnte nicht in %2 x %3 gezeichnet werden</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+6"/>
         <source>The image was not exported.</source>
         <translation>Das Bild wurde nicht exportiert.</translation>
     </message>
@@ -3923,9 +4158,10 @@
 <context>
     <name>lb::ScenePanel</name>
     <message>
-        <location filename="../../widgets/scene_panel.cpp" line="+71"/>
-        <source> or </source>
-        <translation> oder </translation>
+        <location filename="../../widgets/scene_panel.cpp" line="+77"/>
+        <source>%1 or %2</source>
+        <extracomment>uniform names, one of which a shader may declare: %1 the first ones, comma-separated; %2 the last</extracomment>
+        <translation>%1 oder %2</translation>
     </message>
     <message>
         <location line="+26"/>
@@ -3938,9 +4174,160 @@
     </message>
 </context>
 <context>
+    <name>lb::ScenePhrases</name>
+    <message>
+        <location filename="../../app/scene_phrases.cpp" line="+29"/>
+        <source>showing normal</source>
+        <comment>show</comment>
+        <extracomment>status line: the built-in program draws N as a colour</extracomment>
+        <translation>zeigt N als Farbe</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>showing light</source>
+        <comment>show</comment>
+        <extracomment>status line: the built-in program draws L (towards the light) as a colour</extracomment>
+        <translation>zeigt L als Farbe</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>showing view</source>
+        <comment>show</comment>
+        <extracomment>status line: the built-in program draws V (towards the eye) as a colour</extracomment>
+        <translation>zeigt V als Farbe</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>showing half</source>
+        <comment>show</comment>
+        <extracomment>status line: the built-in program draws H, the half vector, as a colour</extracomment>
+        <translation>zeigt H als Farbe</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>showing reflect</source>
+        <comment>show</comment>
+        <extracomment>status line: the built-in program draws R, the reflected light, as a colour</extracomment>
+        <translation>zeigt R als Farbe</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>showing ndotl</source>
+        <comment>show</comment>
+        <extracomment>status line: the built-in program draws N·L as grey (&quot;ndotl&quot; is its name in files)</extracomment>
+        <translation>zeigt N·L als Grauwert</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>showing specular</source>
+        <comment>show</comment>
+        <extracomment>status line: the built-in program draws the specular factor as grey</extracomment>
+        <translation>zeigt Glanzfaktor als Grauwert</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>showing attenuation</source>
+        <comment>show</comment>
+        <extracomment>status line: the built-in program draws a point light&apos;s attenuation as grey</extracomment>
+        <translation>zeigt Abschwächung als Grauwert</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>directional light in the camera frame</source>
+        <translation>gerichtetes Licht in Kamerakoordinaten</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>point light in the camera frame</source>
+        <translation>Punktlicht in Kamerakoordinaten</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>directional light in the world frame</source>
+        <translation>gerichtetes Licht in Weltkoordinaten</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>point light in the world frame</source>
+        <translation>Punktlicht in Weltkoordinaten</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>directional light in the object frame</source>
+        <translation>gerichtetes Licht in Objektkoordinaten</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>point light in the object frame</source>
+        <translation>Punktlicht in Objektkoordinaten</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1 lights on</source>
+        <translation>%1 Lichter an</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the program&apos;s own light (marker hidden)</source>
+        <translation>das eigene Licht des Programms (Markierung ausgeblendet)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Program: %1</source>
+        <translation>Programm: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>drawn flat (per triangle)</source>
+        <translation>flach gezeichnet (pro Dreieck)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Blinn-Phong specular (N·H)</source>
+        <translation>spiegelnder Anteil nach Blinn-Phong (N·H)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Phong specular (R·V)</source>
+        <translation>spiegelnder Anteil nach Phong (R·V)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1, %2</source>
+        <extracomment>joins the status line&apos;s clauses about the program: &quot;Program: toon.vert, drawn flat&quot;</extracomment>
+        <translation>%1, %2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>perspective projection</source>
+        <translation>perspektivische Projektion</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>orthographic projection</source>
+        <translation>orthografische Projektion</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1  |  %2  |  %3</source>
+        <extracomment>the status line&apos;s three places: the program, the light, the projection</extracomment>
+        <translation>%1  |  %2  |  %3</translation>
+    </message>
+</context>
+<context>
     <name>lb::SettingsAutosave</name>
     <message>
-        <location filename="../../app/settings_autosave.cpp" line="+56"/>
+        <location filename="../../app/settings_autosave.cpp" line="+20"/>
+        <source>%1 is not a settings file</source>
+        <translation>%1 ist keine Einstellungsdatei</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 cannot be written</source>
+        <translation>%1 kann nicht geschrieben werden</translation>
+    </message>
+    <message>
+        <location line="+57"/>
         <source>Your work is saved again in %1</source>
         <translation>Ihre Arbeit wird wieder in %1 gespeichert</translation>
     </message>
@@ -3948,6 +4335,24 @@
         <location line="+7"/>
         <source>Your work is not saved, trying again every %1 s: %2</source>
         <translation>Ihre Arbeit ist nicht gespeichert, neuer Versuch alle %1 s: %2</translation>
+    </message>
+</context>
+<context>
+    <name>lb::SettingsStore</name>
+    <message>
+        <location filename="../../app/settings_store.cpp" line="-24"/>
+        <source>no temporary folder for the settings (%1): they are written directly</source>
+        <translation>kein temporärer Ordner für die Einstellungen (%1): Diese werden direkt geschrieben</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>%1: cannot be written</source>
+        <translation>%1: kann nicht geschrieben werden</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1: its scratch copy %2 cannot be written (a full temporary folder?)</source>
+        <translation>%1: Die Zwischenkopie %2 kann nicht geschrieben werden (ist der temporäre Ordner voll?)</translation>
     </message>
 </context>
 <context>
@@ -3966,6 +4371,20 @@
         <location line="+21"/>
         <source>The shaders have no files yet: use Save As</source>
         <translation>Die Shader haben noch keine Dateien: Verwenden Sie „Shader speichern unter“</translation>
+    </message>
+</context>
+<context>
+    <name>lb::ShaderEditor</name>
+    <message>
+        <location filename="../../widgets/shader_editor.cpp" line="+137"/>
+        <source>error: %1</source>
+        <extracomment>a compiler&apos;s message under its line in the editor; %1 the message</extracomment>
+        <translation>Fehler: %1</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>warning: %1</source>
+        <translation>Warnung: %1</translation>
     </message>
 </context>
 <context>
@@ -4011,13 +4430,14 @@
         <translation>R = reflect(-L, N), die gespiegelte Lichtrichtung; H = normalize(L + V), der Halbvektor (Taste B)</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <location line="+41"/>
+        <location line="+6"/>
+        <location line="+44"/>
         <source>Specular</source>
+        <extracomment>the row of the specular term&apos;s choice (Phong or Blinn-Phong)</extracomment>
         <translation>Spiegelnd</translation>
     </message>
     <message>
-        <location line="-39"/>
+        <location line="-42"/>
         <source>Perspective: V = -posC</source>
         <translation>Perspektivisch: V = -posC</translation>
     </message>
@@ -4037,8 +4457,9 @@
         <translation>Projektion</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source>Colour (lit)</source>
+        <extracomment>what the surface shows: the lit colour, or a vector (N, L, V, H, R) or number as colour</extracomment>
         <translation>Farbe (beleuchtet)</translation>
     </message>
     <message>
@@ -4087,13 +4508,15 @@
         <translation>uShow: das Modell zerlegt. Vektoren als 0.5·v + 0.5 (x rot, y grün, z blau), Zahlen als Grauwert; L, H, R und die Zahlen gehören zu Licht 1 (auch wenn mehrere Lichter an sind)</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>Show</source>
+        <extracomment>the row of the Show choice (what the surface shows)</extracomment>
         <translation>Anzeige</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>Lighting</source>
+        <extracomment>a switch: the lighting model on, or Kd unlit</extracomment>
         <translation>Beleuchtung</translation>
     </message>
     <message>
@@ -4137,8 +4560,9 @@
         <translation>Is·Ks·(R·V oder N·H)^n: uEnableSpecular (Taste S)</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+15"/>
         <source>Terms</source>
+        <extracomment>the row of the ambient, diffuse and specular terms&apos; switches</extracomment>
         <translation>Anteile</translation>
     </message>
     <message>
@@ -4177,13 +4601,15 @@
         <translation>Diese Dateien nicht mehr verwenden: Seite B zeichnet wieder, was sie vorher gezeichnet hat</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>B program</source>
+        <extracomment>the program side B of the compare view draws (A and B are the two sides)</extracomment>
         <translation>B-Programm</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Off</source>
+        <extracomment>the compare view is off (A alone)</extracomment>
         <translation>Aus</translation>
     </message>
     <message>
@@ -4193,12 +4619,13 @@
     </message>
     <message>
         <location line="+0"/>
-        <location line="+23"/>
+        <location line="+29"/>
         <source>Wipe</source>
+        <extracomment>the row of the slider that places the wipe&apos;s dividing line</extracomment>
         <translation>Wischblende</translation>
     </message>
     <message>
-        <location line="-23"/>
+        <location line="-29"/>
         <source>Difference |A - B|</source>
         <translation>Differenz |A - B|</translation>
     </message>
@@ -4208,13 +4635,15 @@
         <translation>Nebeneinander: A links, B rechts; Wischblende: die Linie in der Ansicht ziehen; Differenz: |A - B| als Heatmap (Taste C schaltet weiter)</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>View</source>
+        <extracomment>the compare view (off, side by side, wipe, difference); not the menu, not the camera</extracomment>
         <translation>Ansicht</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>B: Gouraud</source>
+        <extracomment>side B&apos;s shading (B is the compare view&apos;s second side)</extracomment>
         <translation>B: Gouraud</translation>
     </message>
     <message>
@@ -4233,13 +4662,15 @@
         <translation>Schattierung von Seite B: pro Vertex oder pro Fragment</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>B shading</source>
+        <extracomment>side B&apos;s shading (B is the compare view&apos;s second side)</extracomment>
         <translation>B-Schattierung</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>B: Phong (R·V)</source>
+        <extracomment>side B&apos;s specular term (B is the compare view&apos;s second side)</extracomment>
         <translation>B: Phong (R·V)</translation>
     </message>
     <message>
@@ -4253,8 +4684,9 @@
         <translation>Spiegelnder Anteil von Seite B</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>B specular</source>
+        <extracomment>side B&apos;s specular term (B is the compare view&apos;s second side)</extracomment>
         <translation>B-Spiegelanteil</translation>
     </message>
     <message>
@@ -4263,7 +4695,7 @@
         <translation>Wo die Wischblende A (links) von B (rechts) trennt</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>Reset shading</source>
         <translation>Schattierung zurücksetzen</translation>
     </message>
@@ -4276,6 +4708,24 @@
         <location line="+5"/>
         <source>the built-in program</source>
         <translation>das eingebaute Programm</translation>
+    </message>
+</context>
+<context>
+    <name>lb::Submission</name>
+    <message>
+        <location filename="../../app/submission.cpp" line="+69"/>
+        <source>%1: a folder needs one NAME.vert and one NAME.frag (it has %2 and %3)</source>
+        <translation>%1: Ein Ordner braucht genau eine NAME.vert und eine NAME.frag (er enthält %2 .vert und %3 .frag)</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>%1: the scene file has no program</source>
+        <translation>%1: Die Szenendatei enthält kein Programm</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>%1: no %2 beside it (a submission is NAME.vert and NAME.frag)</source>
+        <translation>%1: %2 fehlt im selben Ordner (eine Abgabe besteht aus NAME.vert und NAME.frag)</translation>
     </message>
 </context>
 <context>
@@ -4306,8 +4756,9 @@
         <translation>Kein Bild: zurück zur Textur der Mesh-Datei oder zum Schachbrettmuster</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>Repeat</source>
+        <extracomment>texture wrapping: GL_REPEAT or GL_CLAMP_TO_EDGE</extracomment>
         <translation>Wiederholen</translation>
     </message>
     <message>
@@ -4321,8 +4772,9 @@
         <translation>Texturkoordinaten außerhalb von 0 bis 1: Das Bild wiederholt sich (GL_REPEAT) oder sein Rand wird gestreckt (GL_CLAMP_TO_EDGE)</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>Nearest</source>
+        <extracomment>texture filtering: GL_NEAREST or GL_LINEAR</extracomment>
         <translation>Nächster Nachbar</translation>
     </message>
     <message>
@@ -4346,7 +4798,7 @@
         <translation>Wo die Textur verkleinert wird, eine kleinere Kopie lesen, gewählt nach der Detailstufe (GL_NEAREST_MIPMAP_NEAREST, oder trilinear GL_LINEAR_MIPMAP_LINEAR mit dem linearen Filter): kein Flimmern in der Ferne. Die Sonde zeigt die Stufe</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+20"/>
         <source>%1 (not shown)</source>
         <translation>%1 (nicht angezeigt)</translation>
     </message>
@@ -4437,19 +4889,93 @@
         <translation>Die eigenen Uniforms des Programms; die Werte bleiben beim Neukompilieren erhalten.</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>No control for: %1 (matrices, samplers and arrays).</source>
+        <extracomment>%1 the names of uniforms that get no control, comma-separated</extracomment>
         <translation>Kein Steuerelement für: %1 (Matrizen, Sampler und Arrays).</translation>
     </message>
+</context>
+<context>
+    <name>lb::UnsavedWork</name>
     <message>
-        <location line="+11"/>
-        <source>uniform %1 %2</source>
-        <translation>uniform %1 %2</translation>
+        <location filename="../../app/unsaved_work.cpp" line="+17"/>
+        <source>the shader file %1</source>
+        <extracomment>goes into &quot;Save the changes to %1 before ...?&quot;</extracomment>
+        <translation>der Shader-Datei %1</translation>
     </message>
     <message>
-        <location line="+10"/>
-        <source>%1.a</source>
-        <translation>%1.a</translation>
+        <location line="+4"/>
+        <source>the shader files %1 and %2</source>
+        <extracomment>goes into &quot;Save the changes to %1 before ...?&quot;; %1 and %2 are NAME.vert, NAME.frag</extracomment>
+        <translation>den Shader-Dateien %1 und %2</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>the lesson “%1”</source>
+        <extracomment>goes into &quot;Save the changes to %1 before ...?&quot;</extracomment>
+        <translation>der Lektion „%1“</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the untitled scene</source>
+        <extracomment>goes into &quot;Save the changes to %1 before ...?&quot;</extracomment>
+        <translation>der unbenannten Szene</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the scene “%1”</source>
+        <translation>der Szene „%1“</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 and %2</source>
+        <extracomment>the lesson or the scene (%1) and the shader files (%2), in &quot;Save the changes to %1&quot;</extracomment>
+        <translation>%1 und %2</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Save the changes to %1 before closing?</source>
+        <translation>Änderungen an %1 vor dem Schließen speichern?</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Save the changes to %1 before opening “%2”?</source>
+        <translation>Änderungen an %1 vor dem Öffnen von „%2“ speichern?</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Save the changes to %1 before resetting everything?</source>
+        <translation>Änderungen an %1 speichern, bevor alles zurückgesetzt wird?</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Save the changes to %1 before closing it?</source>
+        <translation>Änderungen an %1 vor dem Schließen der Lektion speichern?</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Save the changes to %1 before starting a new lesson?</source>
+        <translation>Änderungen an %1 vor dem Beginn einer neuen Lektion speichern?</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Your changes will be lost if you don&apos;t save them. Save saves them all.</source>
+        <translation>Ihre Änderungen gehen verloren, wenn Sie sie nicht speichern. „Speichern“ speichert alle.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Your changes will be lost if you don&apos;t save them.</source>
+        <translation>Ihre Änderungen gehen verloren, wenn Sie sie nicht speichern.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Unsaved changes</source>
+        <translation>Ungespeicherte Änderungen</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Discard</source>
+        <translation>Verwerfen</translation>
     </message>
 </context>
 <context>
@@ -4460,36 +4986,14 @@
         <translation>Linke Maustaste ziehen: kreisen - rechte oder mittlere Maustaste ziehen: verschieben - Mausrad: zoomen - R: Ansicht zurücksetzen</translation>
     </message>
     <message>
-        <location line="+69"/>
-        <source>; WebGL 1 shaders run as GLSL 3.30</source>
-        <translation>; WebGL-1-Shader laufen als GLSL 3.30</translation>
-    </message>
-    <message>
-        <location line="+17"/>
+        <location line="+84"/>
         <source>the OpenGL context was lost while this program drew (the driver reset the GPU: an endless or very long loop?)</source>
         <translation>der OpenGL-Kontext ging verloren, während dieses Programm zeichnete (der Treiber hat die GPU zurückgesetzt: eine Endlosschleife oder sehr lange Schleife?)</translation>
     </message>
     <message>
-        <location line="+30"/>
-        <location line="+194"/>
-        <source>the built-in program is drawing</source>
-        <translation>das eingebaute Programm zeichnet</translation>
-    </message>
-    <message>
-        <location line="-193"/>
-        <location line="+192"/>
-        <source>the last good program is drawing</source>
-        <translation>das letzte funktionierende Programm zeichnet</translation>
-    </message>
-    <message>
-        <location line="-191"/>
-        <location line="+204"/>
-        <source>Refused: %1; %2</source>
-        <translation>Abgelehnt: %1; %2</translation>
-    </message>
-    <message>
-        <location line="-190"/>
+        <location line="+45"/>
         <source>drawing one frame with this program would take about %1 at %2x%3 (the budget is %4): an endless or very long loop?</source>
+        <extracomment>%1 a duration (0.8 s); %2x%3 the view&apos;s size in pixels; %4 the frame budget</extracomment>
         <translation>ein Bild mit diesem Programm zu zeichnen würde bei %2x%3 etwa %1 dauern (das Budget beträgt %4): eine Endlosschleife oder sehr lange Schleife?</translation>
     </message>
     <message>
@@ -4500,13 +5004,43 @@
 %1</translation>
     </message>
     <message>
-        <location line="+177"/>
-        <source>The shader has errors (see the editor): %1</source>
-        <translation>Der Shader hat Fehler (siehe Editor): %1</translation>
+        <location filename="../../widgets/viewport_captions.cpp" line="+20"/>
+        <source>The shader has errors (see the editor): the built-in program is drawing</source>
+        <translation>Der Shader hat Fehler (siehe Editor): Das eingebaute Programm zeichnet</translation>
     </message>
     <message>
-        <location filename="../../widgets/viewport_captions.cpp" line="+20"/>
+        <location line="+2"/>
+        <source>The shader has errors (see the editor): the last good program is drawing</source>
+        <translation>Der Shader hat Fehler (siehe Editor): Das letzte funktionierende Programm zeichnet</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Refused: %1; the built-in program is drawing</source>
+        <extracomment>%1 why the program was refused (a loop that never ends, a frame too slow)</extracomment>
+        <translation>Abgelehnt: %1; das eingebaute Programm zeichnet</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Refused: %1; the last good program is drawing</source>
+        <extracomment>%1 why the program was refused</extracomment>
+        <translation>Abgelehnt: %1; das letzte funktionierende Programm zeichnet</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>OpenGL %1, %2; WebGL 1 shaders run as GLSL 3.30</source>
+        <extracomment>%1 the OpenGL version (4.5); %2 the driver&apos;s renderer (llvmpipe ...)</extracomment>
+        <translation>OpenGL %1, %2; WebGL-1-Shader laufen als GLSL 3.30</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>OpenGL %1, %2</source>
+        <extracomment>%1 the OpenGL version (4.5); %2 the driver&apos;s renderer</extracomment>
+        <translation>OpenGL %1, %2</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>B: %1</source>
+        <extracomment>side B of the compare view and the program it draws</extracomment>
         <translation>B: %1</translation>
     </message>
     <message>
@@ -4515,8 +5049,9 @@
         <translation>das Referenzprogramm</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>B: built-in %1, %2</source>
+        <extracomment>side B draws the built-in program: %1 its shading, %2 its specular term</extracomment>
         <translation>B: eingebaut, %1, %2</translation>
     </message>
     <message>
@@ -4545,8 +5080,9 @@
         <translation>Phong (R·V)</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>A (left): %1  |  %2 (right)</source>
+        <extracomment>side A (left) names its program; %2 says side B&apos;s (&quot;B: ...&quot;), on the right</extracomment>
         <translation>A (links): %1  |  %2 (rechts)</translation>
     </message>
     <message>
@@ -4663,7 +5199,18 @@
 <context>
     <name>lb::WorkCheck</name>
     <message>
-        <location filename="../../app/work_check.cpp" line="+81"/>
+        <location filename="../../app/work_check.cpp" line="+36"/>
+        <source>killed by signal %1 (%2)</source>
+        <extracomment>%2 is the C library&apos;s name of the signal, in English (&quot;Segmentation fault&quot;)</extracomment>
+        <translation>durch Signal %1 beendet (%2)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>exit code %1</source>
+        <translation>Exit-Code %1</translation>
+    </message>
+    <message>
+        <location line="+44"/>
         <source>no temporary folder for the check: %1</source>
         <translation>kein temporärer Ordner für die Prüfung: %1</translation>
     </message>

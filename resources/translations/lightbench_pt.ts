@@ -2,305 +2,6 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="pt_PT">
 <context>
-    <name>QObject</name>
-    <message>
-        <location filename="../../app/help.cpp" line="+37"/>
-        <source> or </source>
-        <translation> ou </translation>
-    </message>
-    <message>
-        <location line="+35"/>
-        <source>Menus</source>
-        <translation>Menus</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>Shader editor</source>
-        <translation>Editor de shaders</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>compile and link now</source>
-        <translation>compilar e ligar (link) agora</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>find in the shader</source>
-        <translation>procurar no shader</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>undo / redo (also what a preset, an example or a reset replaced)</source>
-        <translation>desfazer / refazer (também o que uma predefinição, um exemplo ou uma reposição substituiu)</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>complete the word</source>
-        <translation>completar a palavra</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>delete / duplicate the line</source>
-        <translation>apagar / duplicar a linha</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>View</source>
-        <translation>Vista</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>left drag</source>
-        <translation>arrastar com o botão esquerdo</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>orbit the camera</source>
-        <translation>orbitar a câmara</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>click</source>
-        <translation>clique</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>select the object under the cursor</source>
-        <translation>selecionar o objeto sob o cursor</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>right or middle drag</source>
-        <translation>arrastar com o botão direito ou do meio</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>pan</source>
-        <translation>deslocar a vista</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>wheel</source>
-        <translation>roda do rato</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>zoom</source>
-        <translation>zoom</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Ctrl+click, Shift+click</source>
-        <translation>Ctrl+clique, Shift+clique</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>probe the surface point (drag to move it)</source>
-        <translation>sondar o ponto da superfície (arraste para o mover)</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>drag the wipe&apos;s line</source>
-        <translation>arrastar a linha da cortina</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>move the wipe (compare)</source>
-        <translation>mover a cortina (comparação)</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>drop a file</source>
-        <translation>largar um ficheiro</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>open a mesh, a scene, a lesson or a shader pair</source>
-        <translation>abrir uma malha, uma cena, uma lição ou um par de shaders</translation>
-    </message>
-    <message>
-        <location line="+8"/>
-        <source>Keyboard shortcuts - lightbench</source>
-        <translation>Atalhos de teclado - lightbench</translation>
-    </message>
-    <message>
-        <location line="+9"/>
-        <source>Features - lightbench</source>
-        <translation>Funcionalidades - lightbench</translation>
-    </message>
-    <message>
-        <location line="+6"/>
-        <source>The README is missing from this build.</source>
-        <translation>O README não está incluído nesta compilação.</translation>
-    </message>
-    <message>
-        <location line="+8"/>
-        <source>About lightbench</source>
-        <translation>Acerca do lightbench</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>&lt;h3&gt;lightbench %1&lt;/h3&gt;&lt;p&gt;A workbench for the lighting model of computer graphics courses: ambient, diffuse and specular terms, Phong and Blinn-Phong, Gouraud and Phong shading, every pixel checked against a CPU reference.&lt;/p&gt;&lt;p&gt;Qt %2 (built with %3)&lt;br&gt;%4&lt;/p&gt;</source>
-        <translation>&lt;h3&gt;lightbench %1&lt;/h3&gt;&lt;p&gt;Uma bancada de trabalho para o modelo de iluminação das disciplinas de computação gráfica: termos ambiente, difuso e especular, Phong e Blinn-Phong, sombreamento de Gouraud e de Phong, com cada píxel verificado face a uma referência calculada no CPU.&lt;/p&gt;&lt;p&gt;Qt %2 (compilado com %3)&lt;br&gt;%4&lt;/p&gt;</translation>
-    </message>
-    <message>
-        <location line="+6"/>
-        <source>OpenGL not started yet</source>
-        <translation>O OpenGL ainda não foi iniciado</translation>
-    </message>
-    <message>
-        <location filename="../../app/main_window_exercise.cpp" line="+27"/>
-        <source>Side B</source>
-        <translation>Lado B</translation>
-    </message>
-    <message>
-        <location filename="../../app/scene_actions.cpp" line="+30"/>
-        <source>Scenes (*.json);;All files (*)</source>
-        <translation>Cenas (*.json);;Todos os ficheiros (*)</translation>
-    </message>
-    <message>
-        <location filename="../../app/settings_autosave.cpp" line="+19"/>
-        <source>is no settings file</source>
-        <translation>não é um ficheiro de definições</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>cannot be written</source>
-        <translation>não pode ser escrito</translation>
-    </message>
-    <message>
-        <location filename="../../app/unsaved_work.cpp" line="+14"/>
-        <source>the shader file %1</source>
-        <translation>o ficheiro de shader %1</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>the shader files %1 and %2</source>
-        <translation>os ficheiros de shader %1 e %2</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>the lesson “%1”</source>
-        <translation>a lição “%1”</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <location line="+7"/>
-        <source>%1 and %2</source>
-        <translation>%1 e %2</translation>
-    </message>
-    <message>
-        <location line="-2"/>
-        <source>the untitled scene</source>
-        <translation>a cena sem título</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>the scene “%1”</source>
-        <translation>a cena “%1”</translation>
-    </message>
-    <message>
-        <location line="+10"/>
-        <source>Save the changes to %1 before closing?</source>
-        <translation>Guardar as alterações a %1 antes de fechar?</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>Save the changes to %1 before opening “%2”?</source>
-        <translation>Guardar as alterações a %1 antes de abrir “%2”?</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>Save the changes to %1 before resetting everything?</source>
-        <translation>Guardar as alterações a %1 antes de repor tudo?</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Save the changes to %1 before closing it?</source>
-        <translation>Guardar as alterações a %1 antes de a fechar?</translation>
-    </message>
-    <message>
-        <location line="+8"/>
-        <source>Your changes will be lost if you don&apos;t save them. Save saves them all.</source>
-        <translation>As suas alterações perdem-se se não as guardar. Guardar guarda-as todas.</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Your changes will be lost if you don&apos;t save them.</source>
-        <translation>As suas alterações perdem-se se não as guardar.</translation>
-    </message>
-    <message>
-        <location line="+6"/>
-        <source>Unsaved changes</source>
-        <translation>Alterações por guardar</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>Discard</source>
-        <translation>Descartar</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/caption_dialog.cpp" line="+17"/>
-        <source>English</source>
-        <translation>Inglês</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Portuguese</source>
-        <translation>Português</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>German</source>
-        <translation>Alemão</translation>
-    </message>
-    <message>
-        <location filename="../../widgets/exercise_panel.cpp" line="+21"/>
-        <source>light position</source>
-        <translation>posição da luz</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>point or directional</source>
-        <translation>pontual ou direcional</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>light frame</source>
-        <translation>referencial da luz</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>light colours</source>
-        <translation>cores da luz</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>material</source>
-        <translation>material</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>camera</source>
-        <translation>câmara</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>projection</source>
-        <translation>projeção</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>non-uniform scale</source>
-        <translation>escala não uniforme</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>nothing (every case is the scene as it is)</source>
-        <translation>nada (cada caso é a cena tal como está)</translation>
-    </message>
-</context>
-<context>
     <name>QPlatformTheme</name>
     <message>
         <location filename="../../app/qt_standard_words.cpp" line="+12"/>
@@ -454,20 +155,160 @@
 <context>
     <name>lb::CaptionDialog</name>
     <message>
-        <location filename="../../widgets/caption_dialog.cpp" line="+10"/>
-        <location line="+41"/>
+        <location filename="../../widgets/caption_dialog.cpp" line="+21"/>
+        <source>English</source>
+        <translation>Inglês</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Portuguese</source>
+        <translation>Português</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>German</source>
+        <translation>Alemão</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <location line="+43"/>
         <source>Edit Caption</source>
         <translation>Editar Legenda</translation>
     </message>
     <message>
-        <location line="-39"/>
+        <location line="-41"/>
         <source>What the class reads under the view. Markdown: *italic*, **bold**, `code`, lists. An empty language shows English.</source>
         <translation>O que a turma lê por baixo da vista. Markdown: *itálico*, **negrito**, `código`, listas. Um idioma vazio mostra o inglês.</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+14"/>
+        <source>%1 (%2)</source>
+        <extracomment>a caption&apos;s tab: %1 the language&apos;s name, %2 its code (en, pt, de)</extracomment>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <location line="+29"/>
         <source>The %1 caption has %2 characters; a caption holds at most %3. Nothing was changed yet: shorten it, or Cancel.</source>
+        <extracomment>%1 the language&apos;s code (en, pt, de); %2, %3 counts</extracomment>
         <translation>A legenda (%1) tem %2 carateres; uma legenda tem no máximo %3. Ainda nada foi alterado: encurte-a, ou Cancelar.</translation>
+    </message>
+</context>
+<context>
+    <name>lb::ChoiceLabels</name>
+    <message>
+        <location filename="../../widgets/choice_labels.cpp" line="+14"/>
+        <source>camera</source>
+        <comment>light frame</comment>
+        <translation>câmara</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>world</source>
+        <comment>light frame</comment>
+        <translation>mundo</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>object</source>
+        <comment>light frame</comment>
+        <translation>objeto</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>gouraud</source>
+        <comment>shading</comment>
+        <extracomment>Gouraud shading (per vertex), as in &quot;gouraud shading&quot;</extracomment>
+        <translation>Gouraud</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>phong</source>
+        <comment>shading</comment>
+        <extracomment>Phong shading (per fragment), as in &quot;phong shading&quot;</extracomment>
+        <translation>Phong</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>flat</source>
+        <comment>shading</comment>
+        <extracomment>flat shading (per triangle), as in &quot;flat shading&quot;</extracomment>
+        <translation>plano</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>phong</source>
+        <comment>specular</comment>
+        <extracomment>Phong&apos;s specular term (R.V)^n, as in &quot;phong specular&quot;</extracomment>
+        <translation>Phong</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>blinn</source>
+        <comment>specular</comment>
+        <extracomment>Blinn-Phong&apos;s specular term (N.H)^n, as in &quot;blinn specular&quot;</extracomment>
+        <translation>Blinn-Phong</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>colour</source>
+        <comment>show</comment>
+        <translation>a cor iluminada</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>normal</source>
+        <comment>show</comment>
+        <extracomment>the normal N, drawn as a colour</extracomment>
+        <translation>a normal N</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>light</source>
+        <comment>show</comment>
+        <extracomment>the light vector L, drawn as a colour</extracomment>
+        <translation>o vetor da luz L</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>view</source>
+        <comment>show</comment>
+        <extracomment>the view vector V, drawn as a colour</extracomment>
+        <translation>o vetor de observação V</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>half</source>
+        <comment>show</comment>
+        <extracomment>the half vector H, drawn as a colour</extracomment>
+        <translation>o vetor médio H</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>reflect</source>
+        <comment>show</comment>
+        <extracomment>the reflected light R, drawn as a colour</extracomment>
+        <translation>o vetor de reflexão R</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>ndotl</source>
+        <comment>show</comment>
+        <extracomment>N·L drawn as grey</extracomment>
+        <translation>N·L</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>specular</source>
+        <comment>show</comment>
+        <extracomment>the specular factor drawn as grey</extracomment>
+        <translation>o fator especular</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>attenuation</source>
+        <comment>show</comment>
+        <extracomment>the attenuation drawn as grey</extracomment>
+        <translation>a atenuação</translation>
     </message>
 </context>
 <context>
@@ -491,20 +332,40 @@
 <context>
     <name>lb::DifferenceScaleLabels</name>
     <message>
-        <location filename="../../widgets/difference_scale_labels.cpp" line="+54"/>
+        <location filename="../../widgets/difference_scale_labels.cpp" line="+55"/>
         <source>%1+</source>
+        <extracomment>the top of the difference scale: this difference (of 255) and more</extracomment>
         <translation>%1+</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>|A-B| of 255</source>
+        <extracomment>the difference scale&apos;s title: |A-B| the difference of sides A and B, out of 255</extracomment>
         <translation>|A-B| de 255</translation>
     </message>
 </context>
 <context>
     <name>lb::EditorPanel</name>
     <message>
-        <location filename="../../widgets/editor_panel.cpp" line="+39"/>
+        <location filename="../../widgets/editor_panel.cpp" line="+41"/>
+        <source>vertex</source>
+        <extracomment>the shader stage a message is about, before its line:column</extracomment>
+        <translation>vertex</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>fragment</source>
+        <extracomment>the shader stage a message is about, before its line:column</extracomment>
+        <translation>fragment</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>link</source>
+        <extracomment>a message of the linker, about no single stage</extracomment>
+        <translation>ligação</translation>
+    </message>
+    <message>
+        <location line="+16"/>
         <source>the scene&apos;s shaders</source>
         <translation>os shaders da cena</translation>
     </message>
@@ -539,8 +400,9 @@
         <translation>Compilar e ligar (link) agora (Ctrl+Enter)</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>Live</source>
+        <extracomment>recompile while typing (a switch)</extracomment>
         <translation>Ao vivo</translation>
     </message>
     <message>
@@ -549,8 +411,9 @@
         <translation>Recompilar após uma pausa na escrita; desligado: só com Ctrl+Enter</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source> ms</source>
+        <extracomment>milliseconds, after the number</extracomment>
         <translation> ms</translation>
     </message>
     <message>
@@ -565,23 +428,23 @@
     </message>
     <message>
         <location line="+19"/>
-        <location line="+121"/>
+        <location line="+127"/>
         <source>Vertex</source>
         <translation>Vertex</translation>
     </message>
     <message>
-        <location line="-120"/>
-        <location line="+120"/>
+        <location line="-126"/>
+        <location line="+129"/>
         <source>Fragment</source>
         <translation>Fragment</translation>
     </message>
     <message>
-        <location line="-115"/>
+        <location line="-124"/>
         <source>Click a message to go to its line</source>
         <translation>Clique numa mensagem para ir para a sua linha</translation>
     </message>
     <message>
-        <location line="+103"/>
+        <location line="+105"/>
         <source>%1 is gone from the disk; your text is kept</source>
         <translation>%1 desapareceu do disco; o seu texto é mantido</translation>
     </message>
@@ -591,39 +454,52 @@
         <translation>%1 mudou no disco; as suas edições por guardar são mantidas (abra-o de novo para usar a versão do disco)</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+14"/>
+        <source>Vertex - %1</source>
+        <extracomment>the vertex shader&apos;s tab; %1 its file&apos;s name</extracomment>
+        <translation>Vertex - %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Fragment - %1</source>
+        <extracomment>the fragment shader&apos;s tab; %1 its file&apos;s name</extracomment>
+        <translation>Fragment - %1</translation>
+    </message>
+    <message>
+        <location line="+30"/>
         <source>Your unsaved shader edits from the last session are back</source>
         <translation>As suas edições dos shaders por guardar da última sessão foram recuperadas</translation>
     </message>
     <message>
-        <location line="+85"/>
-        <source>error</source>
-        <translation>erro</translation>
+        <location line="+86"/>
+        <source>%1  error: %2</source>
+        <extracomment>%1 where (fragment 5:3); %2 the compiler&apos;s message</extracomment>
+        <translation>%1  erro: %2</translation>
     </message>
     <message>
         <location line="+0"/>
-        <source>warning</source>
-        <translation>aviso</translation>
+        <source>%1  warning: %2</source>
+        <translation>%1  aviso: %2</translation>
     </message>
     <message numerus="yes">
-        <location line="+10"/>
-        <source>&lt;span style=&apos;color:#8a5a00&apos;&gt;linked, %n warning(s)&lt;/span&gt;</source>
+        <location line="+12"/>
+        <source>linked, %n warning(s)</source>
         <translation>
-            <numerusform>&lt;span style=&apos;color:#8a5a00&apos;&gt;ligado, %n aviso&lt;/span&gt;</numerusform>
-            <numerusform>&lt;span style=&apos;color:#8a5a00&apos;&gt;ligado, %n avisos&lt;/span&gt;</numerusform>
+            <numerusform>ligado, %n aviso</numerusform>
+            <numerusform>ligado, %n avisos</numerusform>
         </translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>&lt;span style=&apos;color:#2e7d32&apos;&gt;linked&lt;/span&gt;</source>
-        <translation>&lt;span style=&apos;color:#2e7d32&apos;&gt;ligado&lt;/span&gt;</translation>
+        <location line="+2"/>
+        <source>linked</source>
+        <translation>ligado</translation>
     </message>
     <message numerus="yes">
         <location line="+3"/>
-        <source>&lt;span style=&apos;color:#c62828&apos;&gt;%n error(s): last good program drawing&lt;/span&gt;</source>
+        <source>%n error(s): last good program drawing</source>
         <translation>
-            <numerusform>&lt;span style=&apos;color:#c62828&apos;&gt;%n erro: o último programa válido continua a desenhar&lt;/span&gt;</numerusform>
-            <numerusform>&lt;span style=&apos;color:#c62828&apos;&gt;%n erros: o último programa válido continua a desenhar&lt;/span&gt;</numerusform>
+            <numerusform>%n erro: o último programa válido continua a desenhar</numerusform>
+            <numerusform>%n erros: o último programa válido continua a desenhar</numerusform>
         </translation>
     </message>
 </context>
@@ -691,13 +567,58 @@
 <context>
     <name>lb::ExercisePanel</name>
     <message>
-        <location filename="../../widgets/exercise_panel.cpp" line="+30"/>
-        <location line="+121"/>
+        <location filename="../../widgets/exercise_panel.cpp" line="+25"/>
+        <source>light position</source>
+        <translation>posição da luz</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>point or directional</source>
+        <translation>pontual ou direcional</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>light frame</source>
+        <translation>referencial da luz</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>light colours</source>
+        <translation>cores da luz</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>material</source>
+        <translation>material</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>camera</source>
+        <translation>câmara</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>projection</source>
+        <translation>projeção</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>non-uniform scale</source>
+        <translation>escala não uniforme</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>nothing (every case is the scene as it is)</source>
+        <translation>nada (cada caso é a cena tal como está)</translation>
+    </message>
+    <message>
+        <location line="+30"/>
+        <location line="+122"/>
         <source>Check my work</source>
         <translation>Verificar o meu trabalho</translation>
     </message>
     <message>
-        <location line="-120"/>
+        <location line="-121"/>
         <source>Draws the exercise&apos;s cases with the program in the editor and with the reference, as the teacher&apos;s grading does, and lists each case (F9)</source>
         <translation>Desenha os casos do exercício com o programa do editor e com a referência, como faz a avaliação do professor, e lista cada caso (F9)</translation>
     </message>
@@ -772,8 +693,9 @@
         <translation>Este exercício não pode ser verificado: a sua referência falta ou não pode ser usada.</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>Reference: the built-in program, %1 shading, %2 specular.</source>
+        <extracomment>%1 the shading (gouraud, phong, flat); %2 the specular term (phong, blinn)</extracomment>
         <translation>Referência: o programa integrado, sombreamento %1, especular %2.</translation>
     </message>
     <message>
@@ -797,37 +719,78 @@
         <translation>A verificar: os casos são desenhados com o seu programa e com a referência...</translation>
     </message>
     <message>
-        <location line="+22"/>
-        <source>Your program does not compile%1</source>
-        <translation>O seu programa não compila%1</translation>
+        <location line="+24"/>
+        <source>Your program does not compile:
+%1</source>
+        <extracomment>%1 the compiler&apos;s messages</extracomment>
+        <translation>O seu programa não compila:
+%1</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>Your program does not link%1</source>
-        <translation>A ligação (link) do seu programa falhou%1</translation>
+        <source>Your program does not compile</source>
+        <translation>O seu programa não compila</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Your program does not link:
+%1</source>
+        <extracomment>%1 the linker&apos;s messages</extracomment>
+        <translation>A ligação (link) do seu programa falhou:
+%1</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>Your program was refused%1</source>
-        <translation>O seu programa foi recusado%1</translation>
+        <source>Your program does not link</source>
+        <translation>A ligação (link) do seu programa falhou</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Your program was refused:
+%1</source>
+        <extracomment>%1 why it was refused (a loop that never ends, a frame too slow)</extracomment>
+        <translation>O seu programa foi recusado:
+%1</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Your program was refused</source>
+        <translation>O seu programa foi recusado</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>The check could not start:
+%1</source>
+        <extracomment>%1 why the checking process did not start</extracomment>
+        <translation>Não foi possível iniciar a verificação:
+%1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The check could not start</source>
+        <translation>Não foi possível iniciar a verificação</translation>
     </message>
     <message>
         <location line="+2"/>
+        <source>Not checked: %1:
+%2</source>
+        <extracomment>%1 the grading&apos;s status word (English, as the report has it); %2 its reason</extracomment>
+        <translation>Não verificado: %1:
+%2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Not checked: %1</source>
+        <translation>Não verificado: %1</translation>
+    </message>
+    <message>
+        <location line="-7"/>
         <source>The check took too long (%1) and was stopped</source>
+        <extracomment>%1 how long it was given</extracomment>
         <translation>A verificação demorou demasiado (%1) e foi interrompida</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>The check could not start%1</source>
-        <translation>Não foi possível iniciar a verificação%1</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Not checked: %1%2</source>
-        <translation>Não verificado: %1%2</translation>
-    </message>
-    <message>
-        <location line="+7"/>
+        <location line="+21"/>
         <source>Passed: all %1 cases (in each, at least %2 of the pixels within %3/255); largest difference %4/255</source>
         <translation>Passou: todos os %1 casos (em cada um, pelo menos %2 dos píxeis com diferença até %3/255); maior diferença %4/255</translation>
     </message>
@@ -842,8 +805,9 @@
         <translation>Clique num caso para o ver na vista de diferença.</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>%1 (as given)</source>
+        <extracomment>case 0 of the list: the exercise&apos;s scene as it is, not varied</extracomment>
         <translation>%1 (tal como dado)</translation>
     </message>
     <message>
@@ -880,8 +844,9 @@
         <translation>Exportar Imagem</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source> px</source>
+        <extracomment>pixels, after the number</extracomment>
         <translation> px</translation>
     </message>
     <message>
@@ -954,6 +919,12 @@
         <source>an image</source>
         <translation>uma imagem</translation>
     </message>
+    <message>
+        <location filename="../../app/settings_store.cpp" line="+32"/>
+        <location line="+20"/>
+        <source>a settings file</source>
+        <translation>um ficheiro de definições</translation>
+    </message>
 </context>
 <context>
     <name>lb::Grading</name>
@@ -994,6 +965,164 @@
         <location line="+1"/>
         <source>|student - reference| (white: 64/255)</source>
         <translation>|estudante - referência| (branco: 64/255)</translation>
+    </message>
+</context>
+<context>
+    <name>lb::Help</name>
+    <message>
+        <location filename="../../app/help.cpp" line="+50"/>
+        <source>%1, %2</source>
+        <extracomment>shortcuts that do the same: all but the last two, &quot;Ctrl++, Ctrl+= or ...&quot;</extracomment>
+        <translation>%1, %2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 or %2</source>
+        <extracomment>shortcuts that do the same: &quot;F11 or F5&quot;</extracomment>
+        <translation>%1 ou %2</translation>
+    </message>
+    <message>
+        <location line="+55"/>
+        <source>Menus</source>
+        <extracomment>Help &gt; Keyboard Shortcuts: the heading over every menu&apos;s keys</extracomment>
+        <translation>Menus</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Shader editor</source>
+        <translation>Editor de shaders</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>compile and link now</source>
+        <translation>compilar e ligar (link) agora</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>find in the shader</source>
+        <translation>procurar no shader</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>undo / redo (also what a preset, an example or a reset replaced)</source>
+        <translation>desfazer / refazer (também o que uma predefinição, um exemplo ou uma reposição substituiu)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>complete the word</source>
+        <translation>completar a palavra</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>delete / duplicate the line</source>
+        <translation>apagar / duplicar a linha</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>View</source>
+        <extracomment>Help &gt; Keyboard Shortcuts: the heading over the mouse and keys of the 3D view (not the View menu)</extracomment>
+        <translation>Vista</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>left drag</source>
+        <translation>arrastar com o botão esquerdo</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>orbit the camera</source>
+        <translation>orbitar a câmara</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>click</source>
+        <translation>clique</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>select the object under the cursor</source>
+        <translation>selecionar o objeto sob o cursor</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>right or middle drag</source>
+        <translation>arrastar com o botão direito ou do meio</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>pan</source>
+        <translation>deslocar a vista</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>wheel</source>
+        <translation>roda do rato</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>zoom</source>
+        <translation>zoom</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Ctrl+click, Shift+click</source>
+        <extracomment>the keys as the keyboard names them (Ctrl, Shift), held while clicking</extracomment>
+        <translation>Ctrl+clique, Shift+clique</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>probe the surface point (drag to move it)</source>
+        <translation>sondar o ponto da superfície (arraste para o mover)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>drag the wipe&apos;s line</source>
+        <translation>arrastar a linha da cortina</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>move the wipe (compare)</source>
+        <translation>mover a cortina (comparação)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>drop a file</source>
+        <translation>largar um ficheiro</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>open a mesh, a scene, a lesson or a shader pair</source>
+        <translation>abrir uma malha, uma cena, uma lição ou um par de shaders</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Keyboard shortcuts - lightbench</source>
+        <translation>Atalhos de teclado - lightbench</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Features - lightbench</source>
+        <translation>Funcionalidades - lightbench</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>The README is missing from this build.</source>
+        <translation>O README não está incluído nesta compilação.</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>About lightbench</source>
+        <translation>Acerca do lightbench</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&lt;h3&gt;lightbench %1&lt;/h3&gt;&lt;p&gt;A workbench for the lighting model of computer graphics courses: ambient, diffuse and specular terms, Phong and Blinn-Phong, Gouraud and Phong shading, every pixel checked against a CPU reference.&lt;/p&gt;&lt;p&gt;Qt %2 (built with %3)&lt;br&gt;%4&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;lightbench %1&lt;/h3&gt;&lt;p&gt;Uma bancada de trabalho para o modelo de iluminação das disciplinas de computação gráfica: termos ambiente, difuso e especular, Phong e Blinn-Phong, sombreamento de Gouraud e de Phong, com cada píxel verificado face a uma referência calculada no CPU.&lt;/p&gt;&lt;p&gt;Qt %2 (compilado com %3)&lt;br&gt;%4&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>OpenGL not started yet</source>
+        <translation>O OpenGL ainda não foi iniciado</translation>
     </message>
 </context>
 <context>
@@ -1144,7 +1273,7 @@
         <translation>&amp;Sistema</translation>
     </message>
     <message>
-        <location line="+51"/>
+        <location line="+52"/>
         <source>&amp;Language</source>
         <translation>&amp;Idioma</translation>
     </message>
@@ -1370,12 +1499,13 @@
         <translation>&amp;Idioma da Legenda</translation>
     </message>
     <message>
-        <location line="+4"/>
-        <source>The System&apos;s</source>
-        <translation>Idioma do Sistema</translation>
+        <location line="+7"/>
+        <source>Same as the Window</source>
+        <extracomment>Lesson &gt; Caption Language: the same language as the window&apos;s menus (View &gt; Language)</extracomment>
+        <translation>Idioma da Janela</translation>
     </message>
     <message>
-        <location line="+51"/>
+        <location line="+54"/>
         <source>untitled lesson</source>
         <translation>lição sem título</translation>
     </message>
@@ -1402,9 +1532,10 @@
     </message>
     <message>
         <location line="+116"/>
-        <location filename="../../app/lesson_authoring.cpp" line="+36"/>
+        <location filename="../../app/lesson_authoring.cpp" line="+39"/>
         <location line="+24"/>
         <source>Step %1</source>
+        <extracomment>a new step&apos;s title, until the teacher renames it (saved in the lesson file)</extracomment>
         <translation>Passo %1</translation>
     </message>
     <message>
@@ -1420,17 +1551,13 @@
     </message>
     <message>
         <location line="+9"/>
-        <location filename="../../app/lesson_authoring.cpp" line="-149"/>
+        <location filename="../../app/lesson_authoring.cpp" line="-150"/>
         <source>Lesson</source>
+        <extracomment>a new lesson&apos;s title, until the teacher renames it (saved in the lesson file)</extracomment>
         <translation>Lição</translation>
     </message>
     <message>
-        <location filename="../../app/lesson_authoring.cpp" line="-4"/>
-        <source>a new lesson</source>
-        <translation>uma nova lição</translation>
-    </message>
-    <message>
-        <location line="+59"/>
+        <location filename="../../app/lesson_authoring.cpp" line="+56"/>
         <source>The step keeps its title.</source>
         <translation>O passo mantém o seu título.</translation>
     </message>
@@ -1450,12 +1577,13 @@
         <translation>O passo mantém a sua legenda.</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>The %1 caption has %2 characters; a caption holds at most %3.</source>
+        <extracomment>%1: the caption&apos;s language code (en, de, pt)</extracomment>
         <translation>A legenda (%1) tem %2 carateres; uma legenda tem no máximo %3.</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+26"/>
         <source>The step stays.</source>
         <translation>O passo mantém-se.</translation>
     </message>
@@ -1518,18 +1646,14 @@
         <translation>O menu Lição: adicionar, mudar o nome, legendar, mover e guardar passos</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>✕</source>
-        <translation>✕</translation>
-    </message>
-    <message>
-        <location line="+0"/>
+        <location line="+4"/>
         <source>Close the lesson (the scene stays)</source>
         <translation>Fechar a lição (a cena mantém-se)</translation>
     </message>
     <message>
-        <location line="+41"/>
+        <location line="+42"/>
         <source>Step %1 of %2</source>
+        <extracomment>where the class is in the lesson: step %1 of %2 steps</extracomment>
         <translation>Passo %1 de %2</translation>
     </message>
     <message>
@@ -1538,8 +1662,9 @@
         <translation>Este passo não pode ser mostrado; a cena está como estava. %1</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+43"/>
         <source>[picture]</source>
+        <extracomment>in a lesson&apos;s caption, where the markdown had an image (never shown there)</extracomment>
         <translation>[imagem]</translation>
     </message>
 </context>
@@ -1556,8 +1681,9 @@
         <translation>Até quatro luzes; os seus termos somam-se. Um shader que declara uma só luz (não um array) lê a luz 1</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source>On</source>
+        <extracomment>the light is switched on (a check box)</extracomment>
         <translation>Ligada</translation>
     </message>
     <message>
@@ -1566,8 +1692,9 @@
         <translation>uLightEnabled[i]: uma luz desligada não contribui nada (as suas cores chegam aos shaders como preto)</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>Light</source>
+        <extracomment>the row of the light&apos;s on/off switch</extracomment>
         <translation>Luz</translation>
     </message>
     <message>
@@ -1581,8 +1708,9 @@
         <translation>Posição</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>w = 1: point light</source>
+        <extracomment>w is the light position&apos;s 4th (homogeneous) coordinate: a symbol, not a word</extracomment>
         <translation>w = 1: luz pontual</translation>
     </message>
     <message>
@@ -1596,8 +1724,9 @@
         <translation>lightPosition.w: 1 coloca a luz em (x, y, z); 0 faz de (x, y, z) a direção para uma luz no infinito</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source>Type</source>
+        <extracomment>a light&apos;s type: point or directional</extracomment>
         <translation>Tipo</translation>
     </message>
     <message>
@@ -1626,37 +1755,35 @@
         <translation>O objeto em cujo referencial é dada uma luz no referencial do objeto: a luz roda e move-se com ele, e ilumina todos os objetos a partir daí</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>Frame</source>
+        <extracomment>the coordinate frame the light&apos;s position is given in</extracomment>
         <translation>Referencial</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Of object</source>
+        <extracomment>the object whose frame an object-frame light is given in</extracomment>
         <translation>Do objeto</translation>
     </message>
     <message>
         <location line="+7"/>
-        <source>%1 (%2): the light&apos;s %3 intensity</source>
-        <translation>%1 (%2): a intensidade da luz para o termo %3</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>ambient</source>
-        <translation>ambiente</translation>
+        <source>%1 (%2): the light&apos;s ambient intensity</source>
+        <extracomment>%1 the symbol (Ia, Id, Is); %2 the uniforms that carry it</extracomment>
+        <translation>%1 (%2): a intensidade ambiente da luz</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>diffuse</source>
-        <translation>difuso</translation>
+        <source>%1 (%2): the light&apos;s diffuse intensity</source>
+        <translation>%1 (%2): a intensidade difusa da luz</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>specular</source>
-        <translation>especular</translation>
+        <source>%1 (%2): the light&apos;s specular intensity</source>
+        <translation>%1 (%2): a intensidade especular da luz</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+18"/>
         <source>lightAttenuation.%1 (%2): a point light&apos;s terms are divided by kc + kl·d + kq·d², d its distance to the surface (1, 0, 0: none; a directional light is never attenuated)</source>
         <translation>lightAttenuation.%1 (%2): os termos de uma luz pontual são divididos por kc + kl·d + kq·d², sendo d a sua distância à superfície (1, 0, 0: nenhuma; uma luz direcional nunca é atenuada)</translation>
     </message>
@@ -1686,8 +1813,9 @@
         <translation>spotExponent: dentro do cone os termos são multiplicados por max(-L·D, 0)^exponent, mais brilhantes perto do eixo</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>Spot cutoff, exp</source>
+        <extracomment>the spotlight&apos;s cutoff angle and exponent</extracomment>
         <translation>Corte do foco, exp</translation>
     </message>
     <message>
@@ -1843,7 +1971,7 @@
 <context>
     <name>lb::MainWindow</name>
     <message>
-        <location filename="../../app/main_window.cpp" line="+80"/>
+        <location filename="../../app/main_window.cpp" line="+81"/>
         <source>Light</source>
         <translation>Luz</translation>
     </message>
@@ -1917,71 +2045,16 @@
     </message>
     <message>
         <location line="+7"/>
-        <source>The program in the editor (%1) shades %2 (%3) whatever this says. Load a preset or Reset Everything to switch shading.</source>
-        <translation>O programa no editor (%1) usa sombreamento %2 (%3), seja qual for a escolha aqui. Carregue uma predefinição ou use Repor Tudo para mudar o sombreamento.</translation>
+        <source>The program in the editor (%1) shades Gouraud (per vertex) whatever this says. Load a preset or Reset Everything to switch shading.</source>
+        <translation>O programa no editor (%1) usa sombreamento de Gouraud (por vértice), seja qual for a escolha aqui. Carregue uma predefinição ou use Repor Tudo para mudar o sombreamento.</translation>
     </message>
     <message>
         <location line="+3"/>
-        <source>per vertex</source>
-        <translation>por vértice</translation>
+        <source>The program in the editor (%1) shades Phong (per fragment) whatever this says. Load a preset or Reset Everything to switch shading.</source>
+        <translation>O programa no editor (%1) usa sombreamento de Phong (por fragmento), seja qual for a escolha aqui. Carregue uma predefinição ou use Repor Tudo para mudar o sombreamento.</translation>
     </message>
     <message>
-        <location line="+0"/>
-        <source>per fragment</source>
-        <translation>por fragmento</translation>
-    </message>
-    <message>
-        <location line="+28"/>
-        <source>%1 lights on</source>
-        <translation>%1 luzes ligadas</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>the program&apos;s own light (marker hidden)</source>
-        <translation>a luz própria do programa (marcador oculto)</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>directional light</source>
-        <translation>luz direcional</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>point light</source>
-        <translation>luz pontual</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source> in the %1 frame</source>
-        <translation> no referencial %1</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Program: %1</source>
-        <translation>Programa: %1</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>, drawn flat (per triangle)</source>
-        <translation>, desenhado com sombreamento plano (por triângulo)</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>, showing %1</source>
-        <translation>, a mostrar %1</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>, Blinn-Phong specular (N·H)</source>
-        <translation>, especular Blinn-Phong (N·H)</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>, Phong specular (R·V)</source>
-        <translation>, especular Phong (R·V)</translation>
-    </message>
-    <message>
-        <location line="+9"/>
+        <location line="+35"/>
         <source>%1, step %2</source>
         <translation>%1, passo %2</translation>
     </message>
@@ -2001,7 +2074,7 @@
         <translation>Mais do que isto exigiria mais memória do que as malhas da cena podem ocupar nesta máquina: %1 para todos os objetos juntos.</translation>
     </message>
     <message>
-        <location filename="../../app/main_window_exercise.cpp" line="+17"/>
+        <location filename="../../app/main_window_exercise.cpp" line="+67"/>
         <source>Check cancelled.</source>
         <translation>Verificação cancelada.</translation>
     </message>
@@ -2011,12 +2084,53 @@
         <translation>Verificado: %1 de %2 casos passam</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="-21"/>
         <source>Not checked: %1</source>
+        <extracomment>a check that graded nothing, for a reason this version does not know (%1, in English)</extracomment>
         <translation>Não verificado: %1</translation>
     </message>
     <message>
-        <location line="+46"/>
+        <location line="-24"/>
+        <source>Side B</source>
+        <translation>Lado B</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Not checked: does not compile</source>
+        <translation>Não verificado: o programa não compila</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Not checked: does not link</source>
+        <translation>Não verificado: a ligação (link) falhou</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Not checked: refused</source>
+        <translation>Não verificado: programa recusado</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Not checked: timed out</source>
+        <translation>Não verificado: tempo esgotado</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Not checked: could not start</source>
+        <translation>Não verificado: não foi possível iniciar a verificação</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Not checked: crashed</source>
+        <translation>Não verificado: a verificação terminou abruptamente</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Not checked: unreadable</source>
+        <translation>Não verificado: programa ilegível</translation>
+    </message>
+    <message>
+        <location line="+78"/>
         <location line="+16"/>
         <location line="+1"/>
         <location line="+1"/>
@@ -2030,12 +2144,12 @@
     </message>
     <message>
         <location line="+1"/>
-        <location line="+36"/>
+        <location line="+39"/>
         <source>the built-in program</source>
         <translation>o programa integrado</translation>
     </message>
     <message>
-        <location line="-32"/>
+        <location line="-35"/>
         <source>side B (%1)</source>
         <translation>lado B (%1)</translation>
     </message>
@@ -2050,13 +2164,15 @@
         <translation>O lado B desenha o programa de referência do exercício: sombreia tal como está escrito, por isso estas escolhas não fazem nada.</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+9"/>
         <source>the exercise&apos;s reference (built-in, %1 shading, %2 specular)</source>
+        <extracomment>%1: gouraud, phong or flat; %2: phong or blinn</extracomment>
         <translation>a referência do exercício (integrada, sombreamento %1, especular %2)</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>the built-in program, %1 shading and %2 specular (the exercise&apos;s reference)</source>
+        <extracomment>%1: gouraud, phong or flat; %2: phong or blinn</extracomment>
         <translation>o programa integrado, sombreamento %1 e especular %2 (a referência do exercício)</translation>
     </message>
     <message>
@@ -2092,8 +2208,9 @@
         <translation>Não foi possível iniciar a verificação: %1</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+32"/>
         <source>Case %1 in the difference view (key C: the other compare views; &quot;Back to my scene&quot; in the Exercise panel)</source>
+        <extracomment>&quot;Back to my scene&quot; is the Exercise panel&apos;s button: its name as translated there</extracomment>
         <translation>Caso %1 na vista de diferença (tecla C: as outras vistas de comparação; &quot;Voltar à minha cena&quot; no painel Exercício)</translation>
     </message>
     <message>
@@ -2158,8 +2275,9 @@
         <translation>&amp;Editar</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>&amp;View</source>
+        <extracomment>the menu (camera, probe, zoom, presentation, docks), not the 3D view itself</extracomment>
         <translation>&amp;Ver</translation>
     </message>
     <message>
@@ -2216,10 +2334,35 @@
     <message>
         <location line="+0"/>
         <source>G</source>
+        <comment>shortcut</comment>
         <translation>G</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+29"/>
+        <source>P</source>
+        <comment>shortcut</comment>
+        <translation>P</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>L</source>
+        <comment>shortcut</comment>
+        <translation>L</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>C</source>
+        <comment>shortcut</comment>
+        <translation>C</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>R</source>
+        <comment>shortcut</comment>
+        <translation>R</translation>
+    </message>
+    <message>
+        <location line="-56"/>
         <source>Toggle Phong / &amp;Blinn-Phong specular</source>
         <translation>Alternar Especular Phong / &amp;Blinn-Phong</translation>
     </message>
@@ -2239,19 +2382,9 @@
         <translation>Alternar Projeção &amp;Perspetiva / Ortográfica</translation>
     </message>
     <message>
-        <location line="+0"/>
-        <source>P</source>
-        <translation>P</translation>
-    </message>
-    <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>Toggle &amp;Lighting</source>
         <translation>Alternar &amp;Iluminação</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>L</source>
-        <translation>L</translation>
     </message>
     <message>
         <location line="+6"/>
@@ -2269,24 +2402,32 @@
         <translation>Alternar o Termo &amp;Especular</translation>
     </message>
     <message>
+        <location line="+6"/>
+        <source>A</source>
+        <comment>shortcut</comment>
+        <translation>A</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>D</source>
+        <comment>shortcut</comment>
+        <translation>D</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>S</source>
+        <comment>shortcut</comment>
+        <translation>S</translation>
+    </message>
+    <message>
         <location line="+8"/>
         <source>&amp;Compare: Off / Side by Side / Wipe / Difference</source>
         <translation>&amp;Comparação: Desligada / Lado a Lado / Cortina / Diferença</translation>
     </message>
     <message>
-        <location line="+0"/>
-        <source>C</source>
-        <translation>C</translation>
-    </message>
-    <message>
         <location line="+7"/>
         <source>&amp;Reset Camera</source>
         <translation>&amp;Repor a Câmara</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>R</source>
-        <translation>R</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -2359,8 +2500,9 @@
         <translation>Escala da &amp;Interface</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>%1%</source>
+        <extracomment>View &gt; UI Scale: a size in percent (&quot;125%&quot;)</extracomment>
         <translation>%1%</translation>
     </message>
     <message>
@@ -2406,6 +2548,7 @@
     <message>
         <location line="+2"/>
         <source>B</source>
+        <comment>shortcut</comment>
         <translation>B</translation>
     </message>
     <message>
@@ -2434,8 +2577,9 @@
         <translation>O modo de apresentação (F5) vai esconder os painéis (F6 mostra-os)</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+14"/>
         <source>The editor needs %1 px at this scale: View &gt; Shader editor shows it</source>
+        <extracomment>View &gt; Shader editor: the menu&apos;s and the dock&apos;s names as translated there</extracomment>
         <translation>O editor precisa de %1 px nesta escala: Ver &gt; Editor de shaders mostra-o</translation>
     </message>
     <message>
@@ -2447,12 +2591,23 @@
 <context>
     <name>lb::MaterialPanel</name>
     <message>
-        <location filename="../../widgets/material_panel.cpp" line="+42"/>
-        <source>%1 (%2): the material&apos;s %3 reflection coefficients</source>
-        <translation>%1 (%2): os coeficientes de reflexão do material (%3)</translation>
+        <location filename="../../widgets/material_panel.cpp" line="+41"/>
+        <source>%1 (%2): the material&apos;s ambient reflection coefficients</source>
+        <extracomment>%1 the symbol (Ka, Kd, Ks); %2 the uniforms that carry it</extracomment>
+        <translation>%1 (%2): os coeficientes de reflexão ambiente do material</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+1"/>
+        <source>%1 (%2): the material&apos;s diffuse reflection coefficients</source>
+        <translation>%1 (%2): os coeficientes de reflexão difusa do material</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 (%2): the material&apos;s specular reflection coefficients</source>
+        <translation>%1 (%2): os coeficientes de reflexão especular do material</translation>
+    </message>
+    <message>
+        <location line="+12"/>
         <source>shininess: the specular exponent n in (R.V)^n or (N.H)^n; higher gives a smaller, sharper highlight</source>
         <translation>shininess: o expoente especular n em (R.V)^n ou (N.H)^n; maior dá um reflexo especular menor e mais nítido</translation>
     </message>
@@ -2537,22 +2692,24 @@
     <message>
         <location line="+6"/>
         <source>N</source>
+        <comment>shortcut</comment>
         <translation>N</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+15"/>
         <source>%1 not loaded (%2 drawn)</source>
+        <extracomment>%1: the mesh file; %2: the built-in shape drawn instead (cube, sphere, ...)</extracomment>
         <translation>%1 não carregado (desenha-se %2)</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <source>%1: %2 triangles</source>
-        <translation>%1: %2 triângulos</translation>
+        <location line="+8"/>
+        <source>%1: %2 triangles, %3 s</source>
+        <translation>%1: %2 triângulos, %3 s</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <source>, %1 s</source>
-        <translation>, %1 s</translation>
+        <location line="+3"/>
+        <source>%1: %2 triangles</source>
+        <translation>%1: %2 triângulos</translation>
     </message>
     <message>
         <location line="+10"/>
@@ -2580,12 +2737,7 @@
         <translation>Imagens (%1);;Todos os ficheiros (*)</translation>
     </message>
     <message>
-        <location line="+44"/>
-        <source>Loading cancelled</source>
-        <translation>Carregamento cancelado</translation>
-    </message>
-    <message>
-        <location line="+10"/>
+        <location line="+56"/>
         <source>Mesh not loaded</source>
         <translation>Malha não carregada</translation>
     </message>
@@ -2680,23 +2832,22 @@
         <translation>Um só separador decimal, um ponto ou uma vírgula (2.5 ou 2,5), e sem separadores de milhares.</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>This box takes whole numbers.</source>
         <translation>Esta caixa aceita números inteiros.</translation>
     </message>
-    <message>
-        <location line="+1"/>
-        <source>This box takes one decimal.</source>
-        <translation>Esta caixa aceita uma casa decimal.</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>This box takes %1 decimals.</source>
-        <translation>Esta caixa aceita %1 casas decimais.</translation>
-    </message>
-    <message>
+    <message numerus="yes">
         <location line="+2"/>
+        <source>This box takes %n decimal(s).</source>
+        <translation>
+            <numerusform>Esta caixa aceita %n casa decimal.</numerusform>
+            <numerusform>Esta caixa aceita %n casas decimais.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>This box takes %1 to %2.</source>
+        <extracomment>%1 the lowest number the box takes, %2 the highest (with their units)</extracomment>
         <translation>Esta caixa aceita de %1 a %2.</translation>
     </message>
 </context>
@@ -2723,13 +2874,14 @@
         <translation>%1: não carregado: o seu objeto foi removido</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location filename="../../app/mesh_actions.cpp" line="-25"/>
+        <location filename="../../render/import/object_loader.cpp" line="+2"/>
         <location line="+184"/>
         <source>Loading cancelled</source>
         <translation>Carregamento cancelado</translation>
     </message>
     <message>
-        <location line="-62"/>
+        <location filename="../../render/import/object_loader.cpp" line="-62"/>
         <source>building</source>
         <translation>a construir</translation>
     </message>
@@ -2796,12 +2948,12 @@
         <translation>Uma cópia do objeto selecionado, com material e tudo, no primeiro lugar livre perto do centro</translation>
     </message>
     <message>
-        <location line="+3"/>
-        <source> copy</source>
-        <translation> (cópia)</translation>
+        <location line="+9"/>
+        <source>%1 copy</source>
+        <translation>%1 - cópia</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+4"/>
         <source>Remove</source>
         <translation>Remover</translation>
     </message>
@@ -2941,18 +3093,21 @@
         <translation>Translação segundo %1 do mundo: onde fica o centro do objeto (matriz de modelo, aplicada por último)</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>Rotate</source>
+        <extracomment>the row of the object&apos;s rotation about X, Y and Z</extracomment>
         <translation>Rodar</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Scale</source>
+        <extracomment>the row of the object&apos;s scale along X, Y and Z</extracomment>
         <translation>Escala</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Move</source>
+        <extracomment>the row of the object&apos;s translation along X, Y and Z</extracomment>
         <translation>Mover</translation>
     </message>
     <message>
@@ -2976,8 +3131,9 @@
         <translation>O objeto selecionado de volta à esfera unitária grosseira, sem rotação, sem escala e parado; o seu nome, lugar e material mantêm-se</translation>
     </message>
     <message>
-        <location line="+64"/>
+        <location line="+65"/>
         <source>File: %1</source>
+        <extracomment>the shape combo&apos;s entry for a mesh file; %1 the file&apos;s name</extracomment>
         <translation>Ficheiro: %1</translation>
     </message>
     <message>
@@ -3022,8 +3178,9 @@
         <translation>Os ficheiros de malha são lidos por um processo auxiliar (lightbench-import). Quando precisa de mais memória ou tempo do que isto, é parado e o ficheiro recebe uma mensagem; a bancada de trabalho continua.</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+11"/>
         <source> MB</source>
+        <extracomment>megabytes, after the number</extracomment>
         <translation> MB</translation>
     </message>
     <message>
@@ -3037,9 +3194,10 @@
         <translation>Limite de memória da importação</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <location line="+9"/>
         <source> s</source>
+        <extracomment>seconds, after the number</extracomment>
         <translation> s</translation>
     </message>
     <message>
@@ -3102,9 +3260,63 @@
     </message>
 </context>
 <context>
+    <name>lb::ProbeEquation</name>
+    <message>
+        <location filename="../../widgets/probe_equation_words.cpp" line="+24"/>
+        <source>Lighting is off: the surface shows Kd times the base colour instead.</source>
+        <translation>A iluminação está desligada: em vez disto, a superfície mostra Kd vezes a cor de base.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Flat shading draws the model at the triangle&apos;s last (provoking) vertex, one colour for the triangle; these numbers are the model at this point.</source>
+        <translation>O sombreamento plano desenha o modelo calculado no último vértice do triângulo (o provoking vertex), uma só cor para todo o triângulo; estes números são os do modelo neste ponto.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Gouraud shading draws the model at the triangle&apos;s vertices, interpolated; these numbers are the model at this point.</source>
+        <translation>O sombreamento de Gouraud desenha o modelo calculado nos vértices do triângulo e interpolado; estes números são os do modelo neste ponto.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>(base multiplies ambient and diffuse only)</source>
+        <extracomment>after the equation in symbols, where a texture&apos;s base colour multiplies it</extracomment>
+        <translation>(base multiplica só os termos ambiente e difuso)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>(0: the light is behind the surface)</source>
+        <extracomment>after the specular term&apos;s numbers, where N·L &lt; 0</extracomment>
+        <translation>(0: a luz está atrás da superfície)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>[off]</source>
+        <extracomment>before a term the Shading panel switched off</extracomment>
+        <translation>[desligado]</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>light %1: %2</source>
+        <extracomment>a light&apos;s line of the equation: %1 its number, %2 its factors (att·spot = ...)</extracomment>
+        <translation>luz %1: %2</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>pixel = %1 of 255 (clamped to 0..1)</source>
+        <extracomment>%1 the pixel&apos;s red, green and blue, as (r, g, b)</extracomment>
+        <translation>píxel = %1 de 255 (limitado a 0..1)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>The surface shows %1, not this colour.</source>
+        <extracomment>%1 what the Shading panel&apos;s Show choice draws instead (normal, ndotl, ...)</extracomment>
+        <translation>A superfície mostra %1, não esta cor.</translation>
+    </message>
+</context>
+<context>
     <name>lb::ProbePanel</name>
     <message>
-        <location filename="../../widgets/probe_panel.cpp" line="+60"/>
+        <location filename="../../widgets/probe_panel.cpp" line="+62"/>
         <source>Copy the Equation</source>
         <translation>Copiar a Equação</translation>
     </message>
@@ -3124,42 +3336,34 @@
         <translation>Nenhuma superfície em (%1, %2).</translation>
     </message>
     <message>
-        <location line="+69"/>
+        <location line="+70"/>
+        <source>pixel (%1, %2), %3, triangle %4</source>
+        <extracomment>%1, %2 the pixel; %3 the object&apos;s name; %4 the triangle&apos;s number</extracomment>
+        <translation>píxel (%1, %2), %3, triângulo %4</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>pixel (%1, %2), %3, triangle %4, side B</source>
+        <translation>píxel (%1, %2), %3, triângulo %4, lado B</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>pixel (%1, %2), %3, triangle %4, side A</source>
+        <translation>píxel (%1, %2), %3, triângulo %4, lado A</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>Point</source>
         <translation>Ponto</translation>
     </message>
     <message>
-        <location line="+0"/>
-        <source>pixel (%1, %2), %3, triangle %4%5</source>
-        <translation>píxel (%1, %2), %3, triângulo %4%5</translation>
-    </message>
-    <message>
         <location line="+7"/>
-        <source>, side B</source>
-        <translation>, lado B</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>, side A</source>
-        <translation>, lado A</translation>
-    </message>
-    <message>
-        <location line="+1"/>
         <source>P (eye)</source>
+        <extracomment>P, the probed point, in eye coordinates</extracomment>
         <translation>P (olho)</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>N</source>
-        <translation>N</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>V</source>
-        <translation>V</translation>
-    </message>
-    <message>
-        <location line="+6"/>
+        <location line="+9"/>
         <source>levels %1 and %2 (%3% of %2)</source>
         <translation>níveis %1 e %2 (%3% do %2)</translation>
     </message>
@@ -3169,38 +3373,41 @@
         <translation>nível %1</translation>
     </message>
     <message>
+        <location line="+3"/>
+        <source>uv (%1, %2), level of detail %3: %4, mipmaps</source>
+        <extracomment>%1, %2 the texture coordinates; %3 the level of detail; %4 the mipmap levels read</extracomment>
+        <translation>uv (%1, %2), nível de detalhe %3: %4, mipmaps</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>uv (%1, %2), level of detail %3: %4, no mipmaps</source>
+        <translation>uv (%1, %2), nível de detalhe %3: %4, sem mipmaps</translation>
+    </message>
+    <message>
         <location line="+1"/>
         <source>texture</source>
         <translation>textura</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>uv (%1, %2), level of detail %3: %4, %5</source>
-        <translation>uv (%1, %2), nível de detalhe %3: %4, %5</translation>
-    </message>
-    <message>
         <location line="+4"/>
-        <source>mipmaps</source>
-        <translation>mipmaps</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>no mipmaps</source>
-        <translation>sem mipmaps</translation>
-    </message>
-    <message>
-        <location line="+1"/>
         <source>base colour</source>
         <translation>cor de base</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
+        <source>%1 (%2 frame)</source>
+        <extracomment>%1 the light&apos;s name in bold (Light 2); %2 its frame (camera, world, object)</extracomment>
+        <translation>%1 (referencial: %2)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>Light %1</source>
         <translation>Luz %1</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+11"/>
         <source>P, L (%1)</source>
+        <extracomment>P and L in the light&apos;s own frame: %1 the frame (world, object)</extracomment>
         <translation>P, L (%1)</translation>
     </message>
     <message>
@@ -3252,38 +3459,40 @@
         <translation>o modelo (sombreamento %1)</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+6"/>
+        <source>%1 of 255 (the built-in model, %2 shading)</source>
+        <extracomment>%1 the colour (r, g, b) of 255; %2 the shading (gouraud, phong, flat)</extracomment>
+        <translation>%1 de 255 (o modelo integrado, sombreamento %2)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 of 255 (%2 shading)</source>
+        <translation>%1 de 255 (sombreamento %2)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>model</source>
         <translation>modelo</translation>
     </message>
     <message>
         <location line="+0"/>
-        <location line="+7"/>
+        <location line="+3"/>
         <source>reference</source>
         <translation>referência</translation>
     </message>
     <message>
-        <location line="-5"/>
-        <source> of 255 (the built-in model, %1 shading)</source>
-        <translation> de 255 (o modelo integrado, sombreamento %1)</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source> of 255 (%1 shading)</source>
-        <translation> de 255 (sombreamento %1)</translation>
-    </message>
-    <message>
         <location line="+4"/>
+        <source>%1 draws nothing here</source>
+        <translation>%1 não desenha nada aqui</translation>
+    </message>
+    <message>
+        <location line="-1"/>
         <source>%1 draws %2</source>
+        <extracomment>%1 the reference&apos;s name; %2 its colour (r, g, b) at the point</extracomment>
         <translation>%1 desenha %2</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>nothing here</source>
-        <translation>nada aqui</translation>
-    </message>
-    <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>GPU drew</source>
         <translation>a GPU desenhou</translation>
     </message>
@@ -3380,6 +3589,19 @@
 </source>
         <translation>falta ao shader integrado &apos;%1&apos; uma linha &apos;#define MAX_LIGHTS&apos;, &apos;LIGHT_FACTORS&apos; ou &apos;SHOW_CHOICES&apos;
 </translation>
+    </message>
+</context>
+<context>
+    <name>lb::ProgramGuard</name>
+    <message>
+        <location filename="../../app/program_guard.cpp" line="+16"/>
+        <source>the driver ran out of memory compiling or drawing this program (limit %1): a macro that doubles itself, or a program too big for it?</source>
+        <translation>o controlador ficou sem memória ao compilar ou desenhar este programa (limite %1): uma macro que se duplica a si própria, ou um programa grande demais para ele?</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>compiling this program and drawing it on small frames took more than %1: an endless or very long loop, or a program too big for the driver?</source>
+        <translation>compilar este programa e desenhá-lo em fotogramas pequenos demorou mais de %1: um ciclo infinito ou muito longo, ou um programa grande demais para o controlador?</translation>
     </message>
 </context>
 <context>
@@ -3486,7 +3708,12 @@
 <context>
     <name>lb::SceneActions</name>
     <message>
-        <location filename="../../app/scene_actions.cpp" line="+18"/>
+        <location filename="../../app/scene_actions.cpp" line="+33"/>
+        <source>Scenes (*.json);;All files (*)</source>
+        <translation>Cenas (*.json);;Todos os ficheiros (*)</translation>
+    </message>
+    <message>
+        <location line="+19"/>
         <source>Open Recent S&amp;cene</source>
         <translation>Abrir &amp;Cena Recente</translation>
     </message>
@@ -3600,13 +3827,8 @@
         <source>The scene could not be opened; nothing changed.</source>
         <translation>Não foi possível abrir a cena; nada mudou.</translation>
     </message>
-    <message>
-        <location line="+35"/>
-        <source>This step</source>
-        <translation>este passo</translation>
-    </message>
     <message numerus="yes">
-        <location line="+3"/>
+        <location line="+41"/>
         <source>%n field(s) could not be used and kept their defaults:</source>
         <translation>
             <numerusform>%n campo não pôde ser usado e ficou com o valor predefinido:</numerusform>
@@ -3614,12 +3836,25 @@
         </translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+4"/>
+        <source>This step opened with less tessellation than it asks for, to fit this machine&apos;s memory; the file is unchanged unless you save the scene.</source>
+        <translation>Abriu-se este passo com menos tesselação do que pede, para caber na memória desta máquina; o ficheiro fica inalterado a menos que guarde a cena.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>%1 opened with less tessellation than it asks for, to fit this machine&apos;s memory; the file is unchanged unless you save the scene.</source>
         <translation>Abriu-se %1 com menos tesselação do que pede, para caber na memória desta máquina; o ficheiro fica inalterado a menos que guarde a cena.</translation>
     </message>
     <message numerus="yes">
         <location line="+6"/>
+        <source>This step opened; %n field(s) could not be used and kept their defaults.</source>
+        <translation>
+            <numerusform>Abriu-se este passo; %n campo não pôde ser usado e ficou com o valor predefinido.</numerusform>
+            <numerusform>Abriu-se este passo; %n campos não puderam ser usados e ficaram com os valores predefinidos.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+3"/>
         <source>%1 opened; %n field(s) could not be used and kept their defaults.</source>
         <translation>
             <numerusform>Abriu-se %1; %n campo não pôde ser usado e ficou com o valor predefinido.</numerusform>
@@ -3647,12 +3882,12 @@
         <translation>%1: não desenhado: %2</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>%1: the view could not be drawn at %2 x %3</source>
         <translation>%1: não foi possível desenhar a vista a %2 x %3</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+6"/>
         <source>The image was not exported.</source>
         <translation>A imagem não foi exportada.</translation>
     </message>
@@ -3923,9 +4158,10 @@
 <context>
     <name>lb::ScenePanel</name>
     <message>
-        <location filename="../../widgets/scene_panel.cpp" line="+71"/>
-        <source> or </source>
-        <translation> ou </translation>
+        <location filename="../../widgets/scene_panel.cpp" line="+77"/>
+        <source>%1 or %2</source>
+        <extracomment>uniform names, one of which a shader may declare: %1 the first ones, comma-separated; %2 the last</extracomment>
+        <translation>%1 ou %2</translation>
     </message>
     <message>
         <location line="+26"/>
@@ -3938,9 +4174,160 @@
     </message>
 </context>
 <context>
+    <name>lb::ScenePhrases</name>
+    <message>
+        <location filename="../../app/scene_phrases.cpp" line="+29"/>
+        <source>showing normal</source>
+        <comment>show</comment>
+        <extracomment>status line: the built-in program draws N as a colour</extracomment>
+        <translation>a mostrar N como cor</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>showing light</source>
+        <comment>show</comment>
+        <extracomment>status line: the built-in program draws L (towards the light) as a colour</extracomment>
+        <translation>a mostrar L como cor</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>showing view</source>
+        <comment>show</comment>
+        <extracomment>status line: the built-in program draws V (towards the eye) as a colour</extracomment>
+        <translation>a mostrar V como cor</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>showing half</source>
+        <comment>show</comment>
+        <extracomment>status line: the built-in program draws H, the half vector, as a colour</extracomment>
+        <translation>a mostrar H como cor</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>showing reflect</source>
+        <comment>show</comment>
+        <extracomment>status line: the built-in program draws R, the reflected light, as a colour</extracomment>
+        <translation>a mostrar R como cor</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>showing ndotl</source>
+        <comment>show</comment>
+        <extracomment>status line: the built-in program draws N·L as grey (&quot;ndotl&quot; is its name in files)</extracomment>
+        <translation>a mostrar N·L em cinzento</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>showing specular</source>
+        <comment>show</comment>
+        <extracomment>status line: the built-in program draws the specular factor as grey</extracomment>
+        <translation>a mostrar o fator especular em cinzento</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>showing attenuation</source>
+        <comment>show</comment>
+        <extracomment>status line: the built-in program draws a point light&apos;s attenuation as grey</extracomment>
+        <translation>a mostrar a atenuação em cinzento</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>directional light in the camera frame</source>
+        <translation>luz direcional no referencial da câmara</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>point light in the camera frame</source>
+        <translation>luz pontual no referencial da câmara</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>directional light in the world frame</source>
+        <translation>luz direcional no referencial do mundo</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>point light in the world frame</source>
+        <translation>luz pontual no referencial do mundo</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>directional light in the object frame</source>
+        <translation>luz direcional no referencial do objeto</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>point light in the object frame</source>
+        <translation>luz pontual no referencial do objeto</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1 lights on</source>
+        <translation>%1 luzes ligadas</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the program&apos;s own light (marker hidden)</source>
+        <translation>a luz própria do programa (marcador oculto)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Program: %1</source>
+        <translation>Programa: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>drawn flat (per triangle)</source>
+        <translation>desenhado com sombreamento plano (por triângulo)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Blinn-Phong specular (N·H)</source>
+        <translation>especular Blinn-Phong (N·H)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Phong specular (R·V)</source>
+        <translation>especular Phong (R·V)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1, %2</source>
+        <extracomment>joins the status line&apos;s clauses about the program: &quot;Program: toon.vert, drawn flat&quot;</extracomment>
+        <translation>%1, %2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>perspective projection</source>
+        <translation>projeção perspetiva</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>orthographic projection</source>
+        <translation>projeção ortográfica</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1  |  %2  |  %3</source>
+        <extracomment>the status line&apos;s three places: the program, the light, the projection</extracomment>
+        <translation>%1  |  %2  |  %3</translation>
+    </message>
+</context>
+<context>
     <name>lb::SettingsAutosave</name>
     <message>
-        <location filename="../../app/settings_autosave.cpp" line="+56"/>
+        <location filename="../../app/settings_autosave.cpp" line="+20"/>
+        <source>%1 is not a settings file</source>
+        <translation>%1 não é um ficheiro de definições</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 cannot be written</source>
+        <translation>%1 não pode ser escrito</translation>
+    </message>
+    <message>
+        <location line="+57"/>
         <source>Your work is saved again in %1</source>
         <translation>O seu trabalho volta a ser guardado em %1</translation>
     </message>
@@ -3948,6 +4335,24 @@
         <location line="+7"/>
         <source>Your work is not saved, trying again every %1 s: %2</source>
         <translation>O seu trabalho não está guardado; nova tentativa a cada %1 s: %2</translation>
+    </message>
+</context>
+<context>
+    <name>lb::SettingsStore</name>
+    <message>
+        <location filename="../../app/settings_store.cpp" line="-24"/>
+        <source>no temporary folder for the settings (%1): they are written directly</source>
+        <translation>sem pasta temporária para as definições (%1): são escritas diretamente</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>%1: cannot be written</source>
+        <translation>%1: não pode ser escrito</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1: its scratch copy %2 cannot be written (a full temporary folder?)</source>
+        <translation>%1: a sua cópia temporária %2 não pode ser escrita (uma pasta temporária cheia?)</translation>
     </message>
 </context>
 <context>
@@ -3966,6 +4371,20 @@
         <location line="+21"/>
         <source>The shaders have no files yet: use Save As</source>
         <translation>Os shaders ainda não têm ficheiros: use Guardar Como</translation>
+    </message>
+</context>
+<context>
+    <name>lb::ShaderEditor</name>
+    <message>
+        <location filename="../../widgets/shader_editor.cpp" line="+137"/>
+        <source>error: %1</source>
+        <extracomment>a compiler&apos;s message under its line in the editor; %1 the message</extracomment>
+        <translation>erro: %1</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>warning: %1</source>
+        <translation>aviso: %1</translation>
     </message>
 </context>
 <context>
@@ -4011,13 +4430,14 @@
         <translation>R = reflect(-L, N), a direção da luz espelhada; H = normalize(L + V), o vetor médio (tecla B)</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <location line="+41"/>
+        <location line="+6"/>
+        <location line="+44"/>
         <source>Specular</source>
+        <extracomment>the row of the specular term&apos;s choice (Phong or Blinn-Phong)</extracomment>
         <translation>Especular</translation>
     </message>
     <message>
-        <location line="-39"/>
+        <location line="-42"/>
         <source>Perspective: V = -posC</source>
         <translation>Perspetiva: V = -posC</translation>
     </message>
@@ -4037,8 +4457,9 @@
         <translation>Projeção</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source>Colour (lit)</source>
+        <extracomment>what the surface shows: the lit colour, or a vector (N, L, V, H, R) or number as colour</extracomment>
         <translation>Cor (iluminada)</translation>
     </message>
     <message>
@@ -4087,13 +4508,15 @@
         <translation>uShow: o modelo desmontado. Vetores como 0.5·v + 0.5 (x vermelho, y verde, z azul), números em cinzento; L, H, R e os números são os da luz 1 (também com várias luzes ligadas)</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>Show</source>
+        <extracomment>the row of the Show choice (what the surface shows)</extracomment>
         <translation>Mostrar</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>Lighting</source>
+        <extracomment>a switch: the lighting model on, or Kd unlit</extracomment>
         <translation>Iluminação</translation>
     </message>
     <message>
@@ -4137,8 +4560,9 @@
         <translation>Is·Ks·(R·V ou N·H)^n: uEnableSpecular (tecla S)</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+15"/>
         <source>Terms</source>
+        <extracomment>the row of the ambient, diffuse and specular terms&apos; switches</extracomment>
         <translation>Termos</translation>
     </message>
     <message>
@@ -4177,13 +4601,15 @@
         <translation>Deixar de usar estes ficheiros: o lado B desenha o que desenhava antes deles</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>B program</source>
+        <extracomment>the program side B of the compare view draws (A and B are the two sides)</extracomment>
         <translation>Programa B</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Off</source>
+        <extracomment>the compare view is off (A alone)</extracomment>
         <translation>Desligada</translation>
     </message>
     <message>
@@ -4193,12 +4619,13 @@
     </message>
     <message>
         <location line="+0"/>
-        <location line="+23"/>
+        <location line="+29"/>
         <source>Wipe</source>
+        <extracomment>the row of the slider that places the wipe&apos;s dividing line</extracomment>
         <translation>Cortina</translation>
     </message>
     <message>
-        <location line="-23"/>
+        <location line="-29"/>
         <source>Difference |A - B|</source>
         <translation>Diferença |A - B|</translation>
     </message>
@@ -4208,13 +4635,15 @@
         <translation>Lado a lado: A à esquerda, B à direita; cortina: arraste a linha na vista; diferença: |A - B| como mapa de calor (a tecla C alterna)</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>View</source>
+        <extracomment>the compare view (off, side by side, wipe, difference); not the menu, not the camera</extracomment>
         <translation>Vista</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>B: Gouraud</source>
+        <extracomment>side B&apos;s shading (B is the compare view&apos;s second side)</extracomment>
         <translation>B: Gouraud</translation>
     </message>
     <message>
@@ -4233,13 +4662,15 @@
         <translation>O sombreamento do lado B: por vértice ou por fragmento</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>B shading</source>
+        <extracomment>side B&apos;s shading (B is the compare view&apos;s second side)</extracomment>
         <translation>Sombreamento B</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>B: Phong (R·V)</source>
+        <extracomment>side B&apos;s specular term (B is the compare view&apos;s second side)</extracomment>
         <translation>B: Phong (R·V)</translation>
     </message>
     <message>
@@ -4253,8 +4684,9 @@
         <translation>O termo especular do lado B</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>B specular</source>
+        <extracomment>side B&apos;s specular term (B is the compare view&apos;s second side)</extracomment>
         <translation>Especular B</translation>
     </message>
     <message>
@@ -4263,7 +4695,7 @@
         <translation>Onde a cortina separa A (esquerda) de B (direita)</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>Reset shading</source>
         <translation>Repor sombreamento</translation>
     </message>
@@ -4276,6 +4708,24 @@
         <location line="+5"/>
         <source>the built-in program</source>
         <translation>o programa integrado</translation>
+    </message>
+</context>
+<context>
+    <name>lb::Submission</name>
+    <message>
+        <location filename="../../app/submission.cpp" line="+69"/>
+        <source>%1: a folder needs one NAME.vert and one NAME.frag (it has %2 and %3)</source>
+        <translation>%1: uma pasta precisa de um NAME.vert e de um NAME.frag (tem %2 e %3)</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>%1: the scene file has no program</source>
+        <translation>%1: o ficheiro de cena não tem programa</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>%1: no %2 beside it (a submission is NAME.vert and NAME.frag)</source>
+        <translation>%1: não há nenhum %2 ao lado (uma submissão é NAME.vert e NAME.frag)</translation>
     </message>
 </context>
 <context>
@@ -4306,8 +4756,9 @@
         <translation>Sem imagem: volta à textura do ficheiro da malha ou ao xadrez</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>Repeat</source>
+        <extracomment>texture wrapping: GL_REPEAT or GL_CLAMP_TO_EDGE</extracomment>
         <translation>Repetir</translation>
     </message>
     <message>
@@ -4321,8 +4772,9 @@
         <translation>Coordenadas de textura fora de 0 a 1: a imagem repete-se (GL_REPEAT) ou a sua orla estende-se (GL_CLAMP_TO_EDGE)</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>Nearest</source>
+        <extracomment>texture filtering: GL_NEAREST or GL_LINEAR</extracomment>
         <translation>Mais próximo</translation>
     </message>
     <message>
@@ -4346,7 +4798,7 @@
         <translation>Onde a textura é reduzida, ler uma cópia mais pequena dela escolhida pelo nível de detalhe (GL_NEAREST_MIPMAP_NEAREST, ou trilinear GL_LINEAR_MIPMAP_LINEAR com o filtro linear): sem cintilação ao longe. A sonda mostra o nível</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+20"/>
         <source>%1 (not shown)</source>
         <translation>%1 (não mostrada)</translation>
     </message>
@@ -4437,19 +4889,93 @@
         <translation>Os uniforms próprios do programa; os valores mantêm-se quando recompila.</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>No control for: %1 (matrices, samplers and arrays).</source>
+        <extracomment>%1 the names of uniforms that get no control, comma-separated</extracomment>
         <translation>Sem controlo para: %1 (matrizes, samplers e arrays).</translation>
     </message>
+</context>
+<context>
+    <name>lb::UnsavedWork</name>
     <message>
-        <location line="+11"/>
-        <source>uniform %1 %2</source>
-        <translation>uniform %1 %2</translation>
+        <location filename="../../app/unsaved_work.cpp" line="+17"/>
+        <source>the shader file %1</source>
+        <extracomment>goes into &quot;Save the changes to %1 before ...?&quot;</extracomment>
+        <translation>o ficheiro de shader %1</translation>
     </message>
     <message>
-        <location line="+10"/>
-        <source>%1.a</source>
-        <translation>%1.a</translation>
+        <location line="+4"/>
+        <source>the shader files %1 and %2</source>
+        <extracomment>goes into &quot;Save the changes to %1 before ...?&quot;; %1 and %2 are NAME.vert, NAME.frag</extracomment>
+        <translation>os ficheiros de shader %1 e %2</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>the lesson “%1”</source>
+        <extracomment>goes into &quot;Save the changes to %1 before ...?&quot;</extracomment>
+        <translation>a lição “%1”</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the untitled scene</source>
+        <extracomment>goes into &quot;Save the changes to %1 before ...?&quot;</extracomment>
+        <translation>a cena sem título</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the scene “%1”</source>
+        <translation>a cena “%1”</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 and %2</source>
+        <extracomment>the lesson or the scene (%1) and the shader files (%2), in &quot;Save the changes to %1&quot;</extracomment>
+        <translation>%1 e %2</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Save the changes to %1 before closing?</source>
+        <translation>Guardar as alterações a %1 antes de fechar?</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Save the changes to %1 before opening “%2”?</source>
+        <translation>Guardar as alterações a %1 antes de abrir “%2”?</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Save the changes to %1 before resetting everything?</source>
+        <translation>Guardar as alterações a %1 antes de repor tudo?</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Save the changes to %1 before closing it?</source>
+        <translation>Guardar as alterações a %1 antes de a fechar?</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Save the changes to %1 before starting a new lesson?</source>
+        <translation>Guardar as alterações a %1 antes de começar uma nova lição?</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Your changes will be lost if you don&apos;t save them. Save saves them all.</source>
+        <translation>As suas alterações perdem-se se não as guardar. Guardar guarda-as todas.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Your changes will be lost if you don&apos;t save them.</source>
+        <translation>As suas alterações perdem-se se não as guardar.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Unsaved changes</source>
+        <translation>Alterações por guardar</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Discard</source>
+        <translation>Descartar</translation>
     </message>
 </context>
 <context>
@@ -4460,36 +4986,14 @@
         <translation>Arrastar com o botão esquerdo: orbitar - arrastar com o direito ou o do meio: deslocar - roda: zoom - R: repor a vista</translation>
     </message>
     <message>
-        <location line="+69"/>
-        <source>; WebGL 1 shaders run as GLSL 3.30</source>
-        <translation>; os shaders WebGL 1 correm como GLSL 3.30</translation>
-    </message>
-    <message>
-        <location line="+17"/>
+        <location line="+84"/>
         <source>the OpenGL context was lost while this program drew (the driver reset the GPU: an endless or very long loop?)</source>
         <translation>o contexto OpenGL perdeu-se enquanto este programa desenhava (o controlador reiniciou a GPU: um ciclo infinito ou muito longo?)</translation>
     </message>
     <message>
-        <location line="+30"/>
-        <location line="+194"/>
-        <source>the built-in program is drawing</source>
-        <translation>o programa integrado está a desenhar</translation>
-    </message>
-    <message>
-        <location line="-193"/>
-        <location line="+192"/>
-        <source>the last good program is drawing</source>
-        <translation>o último programa válido está a desenhar</translation>
-    </message>
-    <message>
-        <location line="-191"/>
-        <location line="+204"/>
-        <source>Refused: %1; %2</source>
-        <translation>Recusado: %1; %2</translation>
-    </message>
-    <message>
-        <location line="-190"/>
+        <location line="+45"/>
         <source>drawing one frame with this program would take about %1 at %2x%3 (the budget is %4): an endless or very long loop?</source>
+        <extracomment>%1 a duration (0.8 s); %2x%3 the view&apos;s size in pixels; %4 the frame budget</extracomment>
         <translation>desenhar um fotograma com este programa demoraria cerca de %1 a %2x%3 (o orçamento é %4): um ciclo infinito ou muito longo?</translation>
     </message>
     <message>
@@ -4500,13 +5004,43 @@
 %1</translation>
     </message>
     <message>
-        <location line="+177"/>
-        <source>The shader has errors (see the editor): %1</source>
-        <translation>O shader tem erros (ver o editor): %1</translation>
+        <location filename="../../widgets/viewport_captions.cpp" line="+20"/>
+        <source>The shader has errors (see the editor): the built-in program is drawing</source>
+        <translation>O shader tem erros (ver o editor): o programa integrado está a desenhar</translation>
     </message>
     <message>
-        <location filename="../../widgets/viewport_captions.cpp" line="+20"/>
+        <location line="+2"/>
+        <source>The shader has errors (see the editor): the last good program is drawing</source>
+        <translation>O shader tem erros (ver o editor): o último programa válido está a desenhar</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Refused: %1; the built-in program is drawing</source>
+        <extracomment>%1 why the program was refused (a loop that never ends, a frame too slow)</extracomment>
+        <translation>Recusado: %1; o programa integrado está a desenhar</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Refused: %1; the last good program is drawing</source>
+        <extracomment>%1 why the program was refused</extracomment>
+        <translation>Recusado: %1; o último programa válido está a desenhar</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>OpenGL %1, %2; WebGL 1 shaders run as GLSL 3.30</source>
+        <extracomment>%1 the OpenGL version (4.5); %2 the driver&apos;s renderer (llvmpipe ...)</extracomment>
+        <translation>OpenGL %1, %2; os shaders WebGL 1 correm como GLSL 3.30</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>OpenGL %1, %2</source>
+        <extracomment>%1 the OpenGL version (4.5); %2 the driver&apos;s renderer</extracomment>
+        <translation>OpenGL %1, %2</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>B: %1</source>
+        <extracomment>side B of the compare view and the program it draws</extracomment>
         <translation>B: %1</translation>
     </message>
     <message>
@@ -4515,8 +5049,9 @@
         <translation>o programa de referência</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>B: built-in %1, %2</source>
+        <extracomment>side B draws the built-in program: %1 its shading, %2 its specular term</extracomment>
         <translation>B: programa integrado %1, %2</translation>
     </message>
     <message>
@@ -4545,8 +5080,9 @@
         <translation>Phong (R·V)</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>A (left): %1  |  %2 (right)</source>
+        <extracomment>side A (left) names its program; %2 says side B&apos;s (&quot;B: ...&quot;), on the right</extracomment>
         <translation>A (esquerda): %1  |  %2 (direita)</translation>
     </message>
     <message>
@@ -4663,7 +5199,18 @@
 <context>
     <name>lb::WorkCheck</name>
     <message>
-        <location filename="../../app/work_check.cpp" line="+81"/>
+        <location filename="../../app/work_check.cpp" line="+36"/>
+        <source>killed by signal %1 (%2)</source>
+        <extracomment>%2 is the C library&apos;s name of the signal, in English (&quot;Segmentation fault&quot;)</extracomment>
+        <translation>terminado pelo sinal %1 (%2)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>exit code %1</source>
+        <translation>código de saída %1</translation>
+    </message>
+    <message>
+        <location line="+44"/>
         <source>no temporary folder for the check: %1</source>
         <translation>sem pasta temporária para a verificação: %1</translation>
     </message>

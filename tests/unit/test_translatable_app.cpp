@@ -119,10 +119,6 @@ private slots:
                                     << "";
         QTest::newRow("show choice") << phrases << "showing ndotl"
                                      << "show";
-        QTest::newRow("shading name") << phrases << "gouraud"
-                                      << "shading";
-        QTest::newRow("specular name") << phrases << "phong"
-                                       << "specular";
         // Help's " or " between keys, now a sentence with both keys in it.
         QTest::newRow("keys or keys") << "lb::Help"
                                       << "%1 or %2"

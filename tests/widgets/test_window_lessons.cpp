@@ -229,10 +229,10 @@ private slots:
         m_window->show();
         QVERIFY(lessons()->isOpen()); // the lesson of the last session came back
         QVERIFY(lessons()->bar()->captionLabel()->text().contains("Legenda 1"));
-        // "The Window's": the captions follow View > Language (here Portuguese).
+        // "Same as the Window": the captions follow View > Language (here Portuguese).
         setDefaultLessonLanguage("pt");
         choose("Deutsch");
-        choose("The Window's");
+        choose("Same as the Window");
         QVERIFY(lessons()->bar()->captionLabel()->text().contains("Legenda 1"));
         setDefaultLessonLanguage({});
     }

@@ -313,7 +313,7 @@ private slots:
         // The edited Gouraud program keeps its shading: the choice is greyed and G refused.
         QVERIFY(!shading->shadingCombo()->isEnabled());
         QVERIFY2(shading->shadingCombo()->toolTip().contains("(edited)") &&
-                     shading->shadingCombo()->toolTip().contains("gouraud"),
+                     shading->shadingCombo()->toolTip().contains("shades Gouraud"),
                  qPrintable(shading->shadingCombo()->toolTip()));
         m_window->activateWindow();
         m_window->setFocus();

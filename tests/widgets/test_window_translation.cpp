@@ -16,6 +16,8 @@
 #include "submission.h"
 #include "unsaved_work.h"
 #include "window_fixture.h"
+
+#include "choice_labels.h"
 #include "work_check.h"
 
 #include <QFileDialog>
@@ -184,11 +186,11 @@ private slots:
     {
         QCoreApplication::removeTranslator(&m_translator);
         for (Shading v : {Shading::Gouraud, Shading::Phong, Shading::Flat})
-            QCOMPARE(shownName(v), toName(v));
+            QCOMPARE(shadingLabel(v), toName(v));
         for (SpecularModel v : {SpecularModel::Phong, SpecularModel::Blinn})
-            QCOMPARE(shownName(v), toName(v));
+            QCOMPARE(specularLabel(v), toName(v));
         QVERIFY(QCoreApplication::installTranslator(&m_translator));
-        QCOMPARE(shownName(Shading::Phong), marked("lb::ScenePhrases", "phong"));
+        QCOMPARE(shadingLabel(Shading::Phong), marked("lb::ChoiceLabels", "phong"));
 
         const QString gone = m_dir.filePath("away.ply");
         m_window->document().edit([&](Scene &s) {
