@@ -21,6 +21,7 @@ const char *const kInterfaceLanguageKey = "interface/language";
 namespace {
 
 bool g_restartRequested = false;
+QString g_language = "en"; // the one installTranslators() installed
 
 // The locale a language's catalogues are looked up by: Portuguese as Portugal writes it, the
 // way the course's slides are (Qt's own catalogue has a pt_PT; QScintilla has only pt_BR).
@@ -70,6 +71,7 @@ QString resolvedLanguage(const QString &setting)
 
 QStringList installTranslators(QCoreApplication &app, const QString &language)
 {
+    g_language = language;
     QStringList loaded;
     const QLocale locale = catalogueLocale(language);
     const QString qtFolder = QLibraryInfo::path(QLibraryInfo::TranslationsPath);
@@ -92,8 +94,14 @@ QStringList installTranslators(QCoreApplication &app, const QString &language)
     return loaded;
 }
 
+QLocale interfaceLocale()
+{
+    return catalogueLocale(g_language);
+}
+
 void removeTranslators(QCoreApplication &app)
 {
+    g_language = "en";
     for (QTranslator *translator : app.findChildren<QTranslator *>(Qt::FindDirectChildrenOnly)) {
         app.removeTranslator(translator);
         delete translator;

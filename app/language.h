@@ -9,6 +9,7 @@
 #include <QString>
 
 class QCoreApplication;
+class QLocale;
 class QMenu;
 class QSettings;
 class QWidget;
@@ -32,6 +33,9 @@ QString resolvedLanguage(const QString &setting);
 // QScintilla's) and returns the names of the catalogues that loaded. Call before the
 // window is built: the window reads its strings once (a change asks for a restart).
 QStringList installTranslators(QCoreApplication &app, const QString &language);
+// The window's language as a QLocale, for counts written in its sentences ("9.216 Dreiecke",
+// "9 216 triângulos"). Numbers with decimals keep the point in every language (main.cpp).
+QLocale interfaceLocale();
 // Takes them off again (English from then on, for what is built after).
 void removeTranslators(QCoreApplication &app);
 

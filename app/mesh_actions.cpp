@@ -1,5 +1,7 @@
 #include "mesh_actions.h"
 
+#include "language.h"
+
 #include "load_progress.h"
 #include "main_window_settings.h"
 #include "message_box.h"
@@ -140,7 +142,7 @@ void MeshActions::showSummary()
         m_summary->setFullText(problem);
         return;
     }
-    const QString triangles = QLocale().toString(qulonglong(mesh->triangleCount()));
+    const QString triangles = interfaceLocale().toString(qulonglong(mesh->triangleCount()));
     // A file says how long it took to read, in the same sentence.
     m_summary->setText(
         file ? tr("%1: %2 triangles, %3 s")
