@@ -14,6 +14,7 @@
 // built under an address-space limit; endless, counted and macro-made loops; a macro bomb; a
 // program too slow to draw.
 
+#include "address_space.h"
 #include "bounded_read.h"
 #include "exercise.h"
 #include "grading.h"
@@ -303,12 +304,8 @@ private slots:
     {
         rlimit old{};
         QVERIFY(getrlimit(RLIMIT_AS, &old) == 0);
-        QFile status("/proc/self/status");
-        QVERIFY(status.open(QIODevice::ReadOnly));
-        const QByteArray text = status.readAll();
-        const qsizetype at = text.indexOf("VmSize:");
-        QVERIFY(at >= 0);
-        const rlim_t now = text.mid(at + 7).trimmed().split(' ').first().toULongLong() * 1024;
+        const rlim_t now = lb::test::addressSpaceInUse();
+        QVERIFY(now > 0);
         ObjectSettings torus;
         torus.shape = Shape::Torus;
         torus.tessellation = 2000;

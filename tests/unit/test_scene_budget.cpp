@@ -6,6 +6,7 @@
 // std::bad_alloc while building a torus under an address-space limit, and one thrown in a
 // normal-generation thread.
 
+#include "address_space.h"
 #include "mesh.h"
 #include "object_mesh.h"
 #include "parallel_for.h"
@@ -213,12 +214,8 @@ private slots:
     {
         rlimit old{};
         QVERIFY(getrlimit(RLIMIT_AS, &old) == 0);
-        QFile status("/proc/self/status");
-        QVERIFY(status.open(QIODevice::ReadOnly));
-        const QByteArray text = status.readAll();
-        const qsizetype at = text.indexOf("VmSize:");
-        QVERIFY(at >= 0);
-        const rlim_t now = text.mid(at + 7).trimmed().split(' ').first().toULongLong() * 1024;
+        const rlim_t now = lb::test::addressSpaceInUse();
+        QVERIFY(now > 0);
         ObjectSettings torus;
         torus.shape = Shape::Torus;
         torus.tessellation = 2000;

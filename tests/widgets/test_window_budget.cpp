@@ -6,6 +6,7 @@
 // typed into the 32nd object's box, a sphere turned into a torus (4 times the triangles), a
 // torus at 2000 built with the budget off under an address-space limit.
 
+#include "address_space.h"
 #include "number_box.h"
 #include "window_fixture.h"
 
@@ -140,14 +141,10 @@ private slots:
         m_window->document().setLimit({});
         rlimit old{};
         QVERIFY(getrlimit(RLIMIT_AS, &old) == 0);
-        QFile status("/proc/self/status");
-        QVERIFY(status.open(QIODevice::ReadOnly));
-        const QByteArray text = status.readAll();
-        const qsizetype at = text.indexOf("VmSize:");
-        QVERIFY(at >= 0);
+        const rlim_t now = lb::test::addressSpaceInUse();
+        QVERIFY(now > 0);
         rlimit tight = old;
-        tight.rlim_cur =
-            text.mid(at + 7).trimmed().split(' ').first().toULongLong() * 1024 + (128u << 20);
+        tight.rlim_cur = now + (128u << 20);
         QSignalSpy failed(m_window->objectLoader(), &ObjectLoader::buildFailed);
         QVERIFY(setrlimit(RLIMIT_AS, &tight) == 0);
         m_window->document().edit([](Scene &s) {

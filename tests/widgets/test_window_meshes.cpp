@@ -73,12 +73,8 @@ private slots:
 
     void slowLoadShowsProgressAndCancelStopsTheHelper()
     {
-        const QString helper = m_dir.filePath("slow-helper.sh");
-        QFile f(helper);
-        QVERIFY(f.open(QIODevice::WriteOnly));
-        f.write("#!/bin/sh\nexec sleep 600\n");
-        f.close();
-        f.setPermissions(QFile::ReadOwner | QFile::WriteOwner | QFile::ExeOwner);
+        const QString helper = writeSlowImportHelper(m_dir);
+        QVERIFY(!helper.isEmpty());
         const QByteArray saved = qgetenv("LIGHTBENCH_IMPORT_HELPER");
         qputenv("LIGHTBENCH_IMPORT_HELPER", helper.toLocal8Bit());
         const Scene before = scene();

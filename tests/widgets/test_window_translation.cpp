@@ -321,12 +321,8 @@ private slots:
     // words are translated: the window compares them in the loader's own context.
     void cancelledLoadIsNoErrorInAnyLanguage()
     {
-        const QString helper = m_dir.filePath("slow-helper.sh");
-        QFile f(helper);
-        QVERIFY(f.open(QIODevice::WriteOnly));
-        f.write("#!/bin/sh\nexec sleep 600\n");
-        f.close();
-        f.setPermissions(QFile::ReadOwner | QFile::WriteOwner | QFile::ExeOwner);
+        const QString helper = writeSlowImportHelper(m_dir);
+        QVERIFY(!helper.isEmpty());
         const QByteArray saved = qgetenv("LIGHTBENCH_IMPORT_HELPER");
         qputenv("LIGHTBENCH_IMPORT_HELPER", helper.toLocal8Bit());
         QSignalSpy finished(m_window->objectLoader(), &ObjectLoader::loadFinished);

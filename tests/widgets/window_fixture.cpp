@@ -69,6 +69,17 @@ void WindowTest::init()
              qPrintable(m_window->viewport()->renderError()));
 }
 
+QString writeSlowImportHelper(const QTemporaryDir &dir)
+{
+    const QString helper = dir.filePath("slow-helper.sh");
+    QFile f(helper);
+    if (!f.open(QIODevice::WriteOnly) || f.write("#!/bin/sh\nexec sleep 600\n") < 0)
+        return {};
+    f.close();
+    f.setPermissions(QFile::ReadOwner | QFile::WriteOwner | QFile::ExeOwner);
+    return helper;
+}
+
 QString docksNeedingSideways(MainWindow &window)
 {
     QStringList wide;

@@ -87,6 +87,10 @@ inline int runLightbench(const QStringList &args, const QString &configDir,
 }
 #endif
 
+// An import helper that never answers (it sleeps ten minutes), as `dir`/slow-helper.sh, for
+// the tests of a load that is cancelled or runs long; empty when it cannot be written.
+QString writeSlowImportHelper(const QTemporaryDir &dir);
+
 // Every panel dock brought forward in turn: the ones whose panel is wider than its dock (a
 // horizontal scrollbar), "Light (230 px for 260)", or empty.
 QString docksNeedingSideways(MainWindow &window);
