@@ -331,7 +331,8 @@ void parseInto(const QCommandLineParser &parser, CommandLine &cl)
     if (given("language")) {
         const QString language = value("language");
         if (!QStringList{"system", "en", "pt", "de"}.contains(language))
-            fail("language", QString("expected system, en, pt or de, got '%1'").arg(echoed(language)));
+            fail("language",
+                 QString("expected system, en, pt or de, got '%1'").arg(echoed(language)));
         cl.language = language == "system" ? QString() : language;
     }
     cl.check = given("check");

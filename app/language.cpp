@@ -1,5 +1,6 @@
 #include "language.h"
 
+#include "catalogue.h"
 #include "lesson.h"
 
 #include <QActionGroup>
@@ -87,8 +88,11 @@ QStringList installTranslators(QCoreApplication &app, const QString &language)
     }
     // Ours last: the last installed is asked first. English's holds only plural forms ("1
     // error", "2 errors"): the sources' own words are English.
-    if (install(app, locale, "lightbench", ":/i18n"))
+    if (installCatalogue(app, language))
         loaded << "lightbench";
+    // The helpers whose words the window shows (the trial helper, Check My Work's grading
+    // child) speak it too (catalogue.h).
+    qputenv(kLanguageVariable, language.toUtf8());
     // Lessons and examples follow the window's language unless their captions are set apart.
     setDefaultLessonLanguage(language);
     return loaded;
@@ -102,6 +106,7 @@ QLocale interfaceLocale()
 void removeTranslators(QCoreApplication &app)
 {
     g_language = "en";
+    qunsetenv(kLanguageVariable);
     for (QTranslator *translator : app.findChildren<QTranslator *>(Qt::FindDirectChildrenOnly)) {
         app.removeTranslator(translator);
         delete translator;
@@ -121,11 +126,9 @@ void addLanguageMenu(QMenu *view, QSettings &settings, QWidget *window)
         a->setData(language.code);
         group->addAction(a);
         QObject::connect(a, &QAction::triggered, window, [&settings, window, code = language.code] {
-            const QString before =
-                resolvedLanguage(settings.value(kInterfaceLanguageKey).toString());
             settings.setValue(kInterfaceLanguageKey, code);
-            if (resolvedLanguage(code) == before)
-                return; // "System" when the system's is the one shown: nothing changes
+            if (resolvedLanguage(code) == g_language)
+                return; // the one the window speaks now ("System" when LANG gives it)
             QMessageBox box(QMessageBox::Question,
                             QCoreApplication::translate("lb::Language", "Language"),
                             QCoreApplication::translate(

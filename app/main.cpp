@@ -1,5 +1,6 @@
 // lightbench: the window, or one headless frame (--render / --probe / --bench-frames).
 
+#include "catalogue.h"
 #include "command_line.h"
 #include "edit_bench.h"
 #include "grade.h"
@@ -23,6 +24,7 @@
 #include <QApplication>
 #include <QGuiApplication>
 #include <QLocale>
+#include <QMessageBox>
 #include <QSettings>
 #include <QTimer>
 
@@ -83,8 +85,10 @@ int main(int argc, char **argv)
         QGuiApplication app(argc, argv);
         if (cl.grade)
             return lb::runGrade(cl);
-        if (!cl.gradeOne.isEmpty())
+        if (!cl.gradeOne.isEmpty()) {
+            lb::installCatalogueFromWindow(app); // Check My Work's reasons in its language
             return lb::runGradeOne(cl);
+        }
         // Headless frames start from the scene file or the defaults, not the saved session.
         const lb::Scene scene = cl.headlessScene();
         if (!cl.saveScenePath.isEmpty()) {
@@ -121,9 +125,8 @@ int main(int argc, char **argv)
         std::fprintf(stderr, "lightbench: settings: %s\n", qPrintable(store.error()));
     QSettings &settings = store.settings();
     // The window's words: View > Language, else LANG (language.h); before the window reads them.
-    lb::installTranslators(
-        app, lb::resolvedLanguage(cl.language.value_or(
-                 settings.value(lb::kInterfaceLanguageKey).toString())));
+    lb::installTranslators(app, lb::resolvedLanguage(cl.language.value_or(
+                                    settings.value(lb::kInterfaceLanguageKey).toString())));
     lb::MainWindow window(settings);
     window.autosave()->setWriteThrough(store.fileName(), [&store] { return store.save(); });
     // What is set after the window's last save (QSettings used to write it as it went).
@@ -197,9 +200,14 @@ int main(int argc, char **argv)
     }
     const int status = exitSaved(app.exec());
     // View > Language's restart: after the settings are saved, so the new one reads them.
-    if (lb::restartRequested() && !lb::restartApplication())
+    if (lb::restartRequested() && !lb::restartApplication()) {
         std::fputs("lightbench: could not start again; start it yourself to see the new "
                    "language\n",
                    stderr);
+        QMessageBox::warning(nullptr, QCoreApplication::translate("lb::Language", "Language"),
+                             QCoreApplication::translate(
+                                 "lb::Language", "lightbench could not start again. Start it "
+                                                 "yourself to see the new language."));
+    }
     return status;
 }

@@ -231,7 +231,7 @@ void MeshActions::finished(bool ok, const QString &message)
     showSummary(); // a file the scene names and could not be read: the status bar says so
     // The loader's own words (its context), so that a translated "Loading cancelled" is
     // still told from an error.
-    if (message == ObjectLoader::tr("Loading cancelled")) {
+    if (message == lb::ObjectLoader::tr("Loading cancelled")) {
         showStatusMessage(m_window, message, 5000);
         return;
     }

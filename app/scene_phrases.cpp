@@ -78,11 +78,13 @@ QString statusDescription(const Scene &s, const QString &programName, bool built
     int on = 0;
     for (const Light &l : s.lights)
         on += l.enabled ? 1 : 0;
-    QString light = ScenePhrases::tr("%1 lights on").arg(on);
+    QString light = ScenePhrases::tr("%n light(s) on", nullptr, on);
     if (!readsLight)
         light = ScenePhrases::tr("the program's own light (marker hidden)");
-    else if (on == 1 && s.lights[0].enabled)
-        light = lightPhrase(s.lights[0]);
+    else if (on == 1) // the one that is on, whichever it is
+        for (const Light &l : s.lights)
+            if (l.enabled)
+                light = lightPhrase(l);
 
     // The program, then what the built-in one follows: each clause translated whole, joined
     // in the translator's order and punctuation.

@@ -2,6 +2,7 @@
 // draws them (render/trial/trial_server.h). The window starts it once and keeps it; a driver
 // that hangs or crashes on a program does it here, and the window starts another.
 
+#include "catalogue.h"
 #include "trial_server.h"
 
 #include <QGuiApplication>
@@ -16,5 +17,6 @@ int main(int argc, char **argv)
     // Goes with the window: a helper must not outlive it, stuck in a draw.
     prctl(PR_SET_PDEATHSIG, SIGKILL);
     QGuiApplication app(argc, argv);
+    lb::installCatalogueFromWindow(app); // a refusal's reason in the window's language
     return lb::runTrialServer(stdin, stdout);
 }

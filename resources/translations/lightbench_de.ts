@@ -1267,18 +1267,19 @@
 <context>
     <name>lb::Language</name>
     <message>
-        <location filename="../../app/language.cpp" line="+54"/>
+        <location filename="../../app/language.cpp" line="+56"/>
         <source>&amp;System</source>
         <extracomment>View &gt; Language: follow the system&apos;s language (LANG)</extracomment>
         <translation>&amp;System</translation>
     </message>
     <message>
-        <location line="+52"/>
+        <location line="+63"/>
         <source>&amp;Language</source>
         <translation>&amp;Sprache</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+14"/>
+        <location filename="../../app/main.cpp" line="+207"/>
         <source>Language</source>
         <translation>Sprache</translation>
     </message>
@@ -1301,6 +1302,11 @@
         <location line="+2"/>
         <source>&amp;Later</source>
         <translation>&amp;Später</translation>
+    </message>
+    <message>
+        <location filename="../../app/main.cpp" line="+1"/>
+        <source>lightbench could not start again. Start it yourself to see the new language.</source>
+        <translation>lightbench konnte nicht neu starten. Starten Sie es selbst, um die neue Sprache zu sehen.</translation>
     </message>
 </context>
 <context>
@@ -2630,7 +2636,7 @@
 <context>
     <name>lb::MeshActions</name>
     <message>
-        <location filename="../../app/mesh_actions.cpp" line="+65"/>
+        <location filename="../../app/mesh_actions.cpp" line="+67"/>
         <source>Open &amp;Recent Mesh</source>
         <translation>Zuletzt geöffnetes M&amp;esh</translation>
     </message>
@@ -4261,10 +4267,13 @@
         <source>point light in the object frame</source>
         <translation>Punktlicht in Objektkoordinaten</translation>
     </message>
-    <message>
+    <message numerus="yes">
         <location line="+14"/>
-        <source>%1 lights on</source>
-        <translation>%1 Lichter an</translation>
+        <source>%n light(s) on</source>
+        <translation>
+            <numerusform>%n Licht an</numerusform>
+            <numerusform>%n Lichter an</numerusform>
+        </translation>
     </message>
     <message>
         <location line="+2"/>
@@ -4272,7 +4281,7 @@
         <translation>das eigene Licht des Programms (Markierung ausgeblendet)</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+8"/>
         <source>Program: %1</source>
         <translation>Programm: %1</translation>
     </message>

@@ -1262,18 +1262,19 @@
 <context>
     <name>lb::Language</name>
     <message>
-        <location filename="../../app/language.cpp" line="+54"/>
+        <location filename="../../app/language.cpp" line="+56"/>
         <source>&amp;System</source>
         <extracomment>View &gt; Language: follow the system&apos;s language (LANG)</extracomment>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+52"/>
+        <location line="+63"/>
         <source>&amp;Language</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+14"/>
+        <location filename="../../app/main.cpp" line="+207"/>
         <source>Language</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1295,6 +1296,11 @@
     <message>
         <location line="+2"/>
         <source>&amp;Later</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../app/main.cpp" line="+1"/>
+        <source>lightbench could not start again. Start it yourself to see the new language.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -2624,7 +2630,7 @@
 <context>
     <name>lb::MeshActions</name>
     <message>
-        <location filename="../../app/mesh_actions.cpp" line="+65"/>
+        <location filename="../../app/mesh_actions.cpp" line="+67"/>
         <source>Open &amp;Recent Mesh</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4251,10 +4257,13 @@
         <source>point light in the object frame</source>
         <translation type="unfinished"></translation>
     </message>
-    <message>
+    <message numerus="yes">
         <location line="+14"/>
-        <source>%1 lights on</source>
-        <translation type="unfinished"></translation>
+        <source>%n light(s) on</source>
+        <translation>
+            <numerusform>%n light on</numerusform>
+            <numerusform>%n lights on</numerusform>
+        </translation>
     </message>
     <message>
         <location line="+2"/>
@@ -4262,7 +4271,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+8"/>
         <source>Program: %1</source>
         <translation type="unfinished"></translation>
     </message>

@@ -1267,18 +1267,19 @@
 <context>
     <name>lb::Language</name>
     <message>
-        <location filename="../../app/language.cpp" line="+54"/>
+        <location filename="../../app/language.cpp" line="+56"/>
         <source>&amp;System</source>
         <extracomment>View &gt; Language: follow the system&apos;s language (LANG)</extracomment>
         <translation>&amp;Sistema</translation>
     </message>
     <message>
-        <location line="+52"/>
+        <location line="+63"/>
         <source>&amp;Language</source>
         <translation>&amp;Idioma</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+14"/>
+        <location filename="../../app/main.cpp" line="+207"/>
         <source>Language</source>
         <translation>Idioma</translation>
     </message>
@@ -1301,6 +1302,11 @@
         <location line="+2"/>
         <source>&amp;Later</source>
         <translation>&amp;Mais Tarde</translation>
+    </message>
+    <message>
+        <location filename="../../app/main.cpp" line="+1"/>
+        <source>lightbench could not start again. Start it yourself to see the new language.</source>
+        <translation>O lightbench não conseguiu voltar a arrancar. Inicie-o para ver o novo idioma.</translation>
     </message>
 </context>
 <context>
@@ -2630,7 +2636,7 @@
 <context>
     <name>lb::MeshActions</name>
     <message>
-        <location filename="../../app/mesh_actions.cpp" line="+65"/>
+        <location filename="../../app/mesh_actions.cpp" line="+67"/>
         <source>Open &amp;Recent Mesh</source>
         <translation>Abrir Malha Rece&amp;nte</translation>
     </message>
@@ -4261,10 +4267,13 @@
         <source>point light in the object frame</source>
         <translation>luz pontual no referencial do objeto</translation>
     </message>
-    <message>
+    <message numerus="yes">
         <location line="+14"/>
-        <source>%1 lights on</source>
-        <translation>%1 luzes ligadas</translation>
+        <source>%n light(s) on</source>
+        <translation>
+            <numerusform>%n luz ligada</numerusform>
+            <numerusform>%n luzes ligadas</numerusform>
+        </translation>
     </message>
     <message>
         <location line="+2"/>
@@ -4272,7 +4281,7 @@
         <translation>a luz própria do programa (marcador oculto)</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+8"/>
         <source>Program: %1</source>
         <translation>Programa: %1</translation>
     </message>

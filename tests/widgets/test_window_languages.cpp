@@ -6,6 +6,7 @@
 
 #include "language.h"
 #include "lesson.h"
+#include "presets.h"
 
 #include <QAbstractButton>
 #include <QDockWidget>
@@ -117,7 +118,9 @@ class TestWindowLanguages : public WindowTest
             *boxText = box->text();
             for (QAbstractButton *b : box->buttons())
                 if (b->text() == button)
-                    b->click();
+                    return b->click();
+            box->reject(); // no such button: the test fails on what it finds, not by waiting
+            *boxText = "no button " + button + " in: " + box->text();
         });
     }
 
@@ -182,6 +185,31 @@ private slots:
         QCOMPARE(standard.button(QMessageBox::Cancel)->text(), expected[6]);
         // Lessons and examples follow the window's language.
         QCOMPARE(lessonLanguage(), language);
+    }
+
+    // The trial helper tries a program in its own process: a refusal it writes (an endless
+    // loop, a class's most common mistake) reaches the editor and the banner in German too.
+    void aRefusalFromTheTrialHelperSpeaksTheLanguage()
+    {
+        showIn("de");
+        EditorPanel *e = m_window->editorPanel();
+        QVERIFY(buildAfter([&] { e->loadPreset(presets()[3]); })); // the slides' Phong
+        QString fragment = e->source(ShaderStage::Fragment);
+        const int at = int(fragment.indexOf("    gl_FragColor"));
+        QVERIFY(at > 0);
+        fragment.insert(at, "    float k = N.x + 2.0;\n"
+                            "    while (k > 0.0) { k = k * 1.0 + 0.0001; }\n"
+                            "    diffuse *= k;\n");
+        const std::optional<ProgramBuild> b =
+            buildAfter([&] { e->editor(ShaderStage::Fragment)->setText(fragment); });
+        QVERIFY(b && !b->ok() && !b->diagnostics.empty());
+        // The helper's estimate, or (on a loaded machine) the window's own time-out.
+        const QString said = b->diagnostics.back().message;
+        QVERIFY2(said.startsWith("ein Bild mit diesem Programm zu zeichnen") ||
+                     said.startsWith("das Kompilieren dieses Programms"),
+                 qPrintable(said));
+        QVERIFY2(m_window->viewport()->banner().contains(said),
+                 qPrintable(m_window->viewport()->banner()));
     }
 
     void fitsTheScreenInEveryLanguage_data()
