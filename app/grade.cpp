@@ -7,6 +7,7 @@
 #include "import_process.h"
 #include "message_text.h"
 #include "offscreen.h"
+#include "process_bounds.h"
 #include "program_guard.h"
 #include "safe_write.h"
 #include "scene_budget.h"
@@ -29,7 +30,6 @@
 #include <functional>
 
 #ifdef __linux__
-#include <sys/prctl.h>
 #endif
 
 namespace lb {
@@ -239,10 +239,8 @@ QString signalName(int signal)
 
 int runGradeOne(const CommandLine &cl)
 {
-#ifdef __linux__
     // Goes with the batch or the window that started it, even one killed with SIGKILL.
-    prctl(PR_SET_PDEATHSIG, SIGKILL);
-#endif
+    platform::dieWithParent();
     GradingReport out;
     const auto finish = [&](const QString &status, const QString &diagnostic = {}) {
         out.status = status;

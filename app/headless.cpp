@@ -6,6 +6,7 @@
 #include "offscreen.h"
 #include "program_guard.h"
 #include "program_trial.h"
+#include "resident_memory.h"
 #include "safe_write.h"
 #include "scene_budget.h"
 
@@ -19,8 +20,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <functional>
-
-#include <sys/resource.h>
 
 namespace lb {
 
@@ -309,9 +308,7 @@ int runHeadless(const CommandLine &cl, const Scene &requested)
         o["fps"] = double(cl.benchFrames) / seconds;
         o["triangles"] = qint64(offscreen.objectTriangleCount());
         o["size"] = QString("%1x%2").arg(cl.size.width()).arg(cl.size.height());
-        rusage usage{};
-        getrusage(RUSAGE_SELF, &usage);
-        o["peakMB"] = double(usage.ru_maxrss) / 1024.0; // this process, not the helper
+        o["peakMB"] = double(peakResidentKB()) / 1024.0; // this process, not the helper
         if (!paths.isEmpty()) {
             o["loadSeconds"] = loadSeconds;
             o["helperPeakMB"] = double(helperPeakKB) / 1024.0;

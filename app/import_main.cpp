@@ -7,6 +7,7 @@
 //   lightbench-import --formats        Assimp's extensions, "*.obj;*.ply;..."
 
 #include "assimp_import.h"
+#include "process_bounds.h"
 #include "resident_memory.h"
 
 #include <chrono>
@@ -17,9 +18,6 @@
 #include <thread>
 
 #include <fcntl.h>
-#include <signal.h>
-#include <sys/prctl.h>
-#include <sys/resource.h>
 #include <unistd.h>
 
 #ifdef LIGHTBENCH_SANITIZE
@@ -47,14 +45,6 @@ bool positive(const char *text, long long &value)
     return end && *end == '\0' && end != text && value > 0;
 }
 
-void limit(int resource, rlim_t value)
-{
-    rlimit r{value, value};
-    if (resource == RLIMIT_CPU)
-        r.rlim_max = value + 2; // SIGXCPU first, SIGKILL two seconds later
-    setrlimit(resource, &r);
-}
-
 #ifdef LIGHTBENCH_SANITIZE
 // AddressSanitizer reserves terabytes of address space for its shadow memory at start, so
 // RLIMIT_AS (and RLIMIT_DATA, which counts those private mappings too) stops it at its next
@@ -69,7 +59,7 @@ void onSanitizerReport(const char *report)
 {
     for (const char *kind : {"allocation-size-too-big", "out-of-memory", "rss-limit-exceeded"})
         if (std::strstr(report, kind))
-            _exit(lb::wire::kExitOutOfMemory);
+            std::_Exit(lb::wire::kExitOutOfMemory);
 }
 
 } // namespace
@@ -90,13 +80,13 @@ void limitMemory(long long megabytes)
     std::thread([kilobytes = long(megabytes) * 1024] {
         while (lb::residentKB() <= kilobytes)
             std::this_thread::sleep_for(std::chrono::milliseconds(2));
-        _exit(lb::wire::kExitOutOfMemory);
+        std::_Exit(lb::wire::kExitOutOfMemory);
     }).detach();
 }
 #else
 void limitMemory(long long megabytes)
 {
-    limit(RLIMIT_AS, rlim_t(megabytes) << 20);
+    lb::platform::limitAddressSpace(megabytes << 20); // the portable layer cannot
 }
 #endif
 
@@ -136,7 +126,7 @@ void *operator new[](std::size_t size, std::align_val_t alignment)
 int main(int argc, char **argv)
 {
     // Die with the workbench: a helper must never outlive the window that asked for it.
-    prctl(PR_SET_PDEATHSIG, SIGKILL);
+    lb::platform::dieWithParent();
 #ifdef LIGHTBENCH_MIMALLOC
     mi_option_disable(mi_option_show_errors); // failures are the helper's message to give
 #endif
@@ -166,8 +156,8 @@ int main(int argc, char **argv)
     if (memoryMB > 0)
         limitMemory(memoryMB);
     if (seconds > 0)
-        limit(RLIMIT_CPU, rlim_t(seconds));
-    limit(RLIMIT_CORE, 0); // a crash costs a message, not a core file
+        lb::platform::limitCpuSeconds(seconds); // the workbench's clock bounds it too
+    lb::platform::disableCoreFiles();
 
     // The stream gets stdout's descriptor to itself; anything an importer prints on stdout
     // goes to stderr instead of corrupting the stream.

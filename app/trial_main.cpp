@@ -3,19 +3,17 @@
 // that hangs or crashes on a program does it here, and the window starts another.
 
 #include "catalogue.h"
+#include "process_bounds.h"
 #include "trial_server.h"
 
 #include <QGuiApplication>
 
 #include <cstdio>
 
-#include <signal.h>
-#include <sys/prctl.h>
-
 int main(int argc, char **argv)
 {
     // Goes with the window: a helper must not outlive it, stuck in a draw.
-    prctl(PR_SET_PDEATHSIG, SIGKILL);
+    lb::platform::dieWithParent();
     QGuiApplication app(argc, argv);
     lb::installCatalogueFromWindow(app); // a refusal's reason in the window's language
     return lb::runTrialServer(stdin, stdout);

@@ -1,6 +1,7 @@
 #include "assimp_import.h"
 
 #include "confined_io_system.h"
+#include "resident_memory.h"
 #include "scene_stream.h"
 
 #include <assimp/Importer.hpp>
@@ -14,8 +15,6 @@
 #include <memory>
 #include <new>
 #include <sstream>
-
-#include <unistd.h>
 
 namespace lb {
 
@@ -71,9 +70,8 @@ std::string outOfMemory(long long limitMB)
 // itself (ImportLimits::meshByteCap), the memory limit and never more than the machine has.
 std::pair<std::uint64_t, std::string> fileByteLimit(long long memoryLimitMB)
 {
-    const long pages = sysconf(_SC_PHYS_PAGES), pageSize = sysconf(_SC_PAGE_SIZE);
-    const long long machineMB =
-        pages > 0 && pageSize > 0 ? (long long)pages * pageSize / (1 << 20) : 8192;
+    const std::uint64_t machine = physicalMemoryBytes();
+    const long long machineMB = machine > 0 ? (long long)(machine >> 20) : 8192; // 0: unknown
     if (memoryLimitMB > 0 && memoryLimitMB <= machineMB)
         return {std::uint64_t(memoryLimitMB) << 20, "the import memory limit"};
     return {std::uint64_t(machineMB) << 20, "the machine's memory"};

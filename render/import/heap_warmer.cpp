@@ -1,10 +1,9 @@
 #include "heap_warmer.h"
 
+#include "allocator_tuning.h"
+
 #include <algorithm>
 #include <cstdlib>
-
-#include <malloc.h>
-#include <unistd.h>
 
 namespace lb {
 
@@ -21,10 +20,8 @@ constexpr int kMmapThreshold = 512 << 20;
 HeapWarmer::HeapWarmer(std::size_t bytes)
 {
     if (bytes == 0)
-        return;                                // no mesh file: the allocator as it comes
-    mallopt(M_MMAP_THRESHOLD, kMmapThreshold); // big arrays from the heap, not mapped alone
-    mallopt(M_TRIM_THRESHOLD, 1 << 30);        // what is freed stays for the next stage
-    mallopt(M_TOP_PAD, 64 << 20);              // the heap grows in few steps
+        return; // no mesh file: the allocator as it comes
+    platform::keepFreedMemoryInHeap(kMmapThreshold);
     bytes = std::min(bytes, std::size_t(kMmapThreshold) - kStepBytes);
     // Taken whole at once (no page is touched yet), so that allocations made between the
     // steps (the stream's buffers, Qt's events) land beside it, not inside it.
@@ -44,7 +41,7 @@ HeapWarmer::~HeapWarmer()
 void HeapWarmer::step()
 {
     const std::size_t end = std::min(m_size, m_warmed + kStepBytes);
-    const std::size_t page = std::size_t(sysconf(_SC_PAGESIZE));
+    const std::size_t page = platform::pageSize();
     volatile char *block = m_block;
     for (std::size_t at = m_warmed; at < end; at += page)
         block[at] = 0;

@@ -1,5 +1,7 @@
 #include "scene_stream.h"
 
+#include "resident_memory.h"
+
 #include <assimp/material.h>
 #include <assimp/scene.h>
 
@@ -14,8 +16,6 @@
 #include <limits>
 #include <sstream>
 #include <vector>
-
-#include <sys/resource.h>
 
 namespace lb {
 
@@ -244,13 +244,6 @@ void sendMaterial(const aiScene &scene, const aiMesh &mesh, wire::Writer &out)
     }
 }
 
-long peakKilobytes()
-{
-    rusage usage{};
-    getrusage(RUSAGE_SELF, &usage);
-    return usage.ru_maxrss;
-}
-
 int fail(wire::Writer &out, const std::string &message)
 {
     out.text(Record::Error, message);
@@ -394,7 +387,7 @@ int writeScene(const aiScene &scene, wire::Writer &out, const ImportProgress &pr
          << "\ndroppedTriangles=" << counts.droppedTriangles
          << "\nnonFiniteNormals=" << nonFiniteNormals << "\nskippedMeshRefs=" << skippedMeshRefs
          << "\nfileNormals=" << (normals ? 1 : 0) << "\nseconds=" << readSeconds
-         << "\npeakKB=" << peakKilobytes() << "\n";
+         << "\npeakKB=" << peakResidentKB() << "\n";
     out.text(Record::Info, info.str());
     progress(1.0f, "done");
     out.record(Record::End, nullptr, 0);

@@ -2,15 +2,12 @@
 
 #include "mesh.h"
 #include "message_text.h"
+#include "resident_memory.h"
 
 #include <QCoreApplication>
-#include <QFile>
 #include <QLocale>
-#include <QRegularExpression>
 
 #include <algorithm>
-
-#include <unistd.h>
 
 namespace lb {
 
@@ -66,17 +63,6 @@ QString countText(std::uint64_t n)
     return english.toString(qulonglong(n));
 }
 
-std::uint64_t memTotalFromProc()
-{
-    QFile meminfo("/proc/meminfo");
-    if (!meminfo.open(QIODevice::ReadOnly))
-        return 0;
-    static const QRegularExpression line(R"(^MemTotal:\s+(\d+)\s+kB)",
-                                         QRegularExpression::MultilineOption);
-    const QRegularExpressionMatch m = line.match(QString::fromLatin1(meminfo.read(4096)));
-    return m.hasMatch() ? m.captured(1).toULongLong() * 1024 : 0;
-}
-
 QString fitMessage(const Scene &scene, const BudgetFit &fit, const MeshBudget &budget, int askedMax,
                    bool askedSame)
 {
@@ -123,13 +109,9 @@ QString fitMessage(const Scene &scene, const BudgetFit &fit, const MeshBudget &b
 
 std::uint64_t machineMemoryBytes()
 {
-    const long pages = sysconf(_SC_PHYS_PAGES);
-    const long pageSize = sysconf(_SC_PAGE_SIZE);
-    if (pages > 0 && pageSize > 0)
-        return std::uint64_t(pages) * std::uint64_t(pageSize);
-    if (const std::uint64_t proc = memTotalFromProc())
-        return proc;
-    return 8ull << 30;
+    if (const std::uint64_t bytes = physicalMemoryBytes())
+        return bytes;
+    return 8ull << 30; // unknown (the portable layer): a laptop's
 }
 
 MeshBudget meshBudget(std::uint64_t machineBytes)

@@ -3,6 +3,7 @@
 #include <QSocketNotifier>
 
 #include <cerrno>
+#include <csignal>
 #include <fcntl.h>
 #include <unistd.h>
 
@@ -28,23 +29,31 @@ void noteStop(int signal)
 
 } // namespace
 
-StopSignals::StopSignals(QObject *parent) : QObject(parent)
+struct StopSignals::Handlers
+{
+    struct sigaction previous[3];
+    int pipe[2] = {-1, -1};
+    QSocketNotifier *notifier = nullptr;
+};
+
+StopSignals::StopSignals(QObject *parent) : QObject(parent), m_handlers(new Handlers)
 {
     g_received = 0;
-    if (::pipe(m_pipe) == 0) {
-        for (int fd : m_pipe) {
-            ::fcntl(fd, F_SETFD, FD_CLOEXEC); // not for the children
-            ::fcntl(fd, F_SETFL, O_NONBLOCK); // a full pipe never blocks the handler
+    int *ends = m_handlers->pipe;
+    if (::pipe(ends) == 0) {
+        for (int i = 0; i < 2; ++i) {
+            ::fcntl(ends[i], F_SETFD, FD_CLOEXEC); // not for the children
+            ::fcntl(ends[i], F_SETFL, O_NONBLOCK); // a full pipe never blocks the handler
         }
     } else {
-        m_pipe[0] = m_pipe[1] = -1; // received() still says it, at the batch's next step
+        ends[0] = ends[1] = -1; // received() still says it, at the batch's next step
     }
-    g_writeEnd = m_pipe[1];
-    if (m_pipe[0] >= 0) {
-        m_notifier = new QSocketNotifier(m_pipe[0], QSocketNotifier::Read, this);
-        connect(m_notifier, &QSocketNotifier::activated, this, [this] {
+    g_writeEnd = ends[1];
+    if (ends[0] >= 0) {
+        m_handlers->notifier = new QSocketNotifier(ends[0], QSocketNotifier::Read, this);
+        connect(m_handlers->notifier, &QSocketNotifier::activated, this, [this, ends] {
             char bytes[16];
-            while (::read(m_pipe[0], bytes, sizeof bytes) > 0) {
+            while (::read(ends[0], bytes, sizeof bytes) > 0) {
             }
             emit stopRequested(int(g_received));
         });
@@ -54,16 +63,16 @@ StopSignals::StopSignals(QObject *parent) : QObject(parent)
     sigemptyset(&action.sa_mask);
     action.sa_flags = SA_RESTART;
     for (int i = 0; i < 3; ++i)
-        ::sigaction(kSignals[i], &action, &m_previous[i]);
+        ::sigaction(kSignals[i], &action, &m_handlers->previous[i]);
 }
 
 StopSignals::~StopSignals()
 {
     for (int i = 0; i < 3; ++i)
-        ::sigaction(kSignals[i], &m_previous[i], nullptr);
+        ::sigaction(kSignals[i], &m_handlers->previous[i], nullptr);
     g_writeEnd = -1;
-    delete m_notifier;
-    for (int fd : m_pipe)
+    delete m_handlers->notifier;
+    for (int fd : m_handlers->pipe)
         if (fd >= 0)
             ::close(fd);
 }

@@ -1,0 +1,16 @@
+#pragma once
+// Asks the C library's allocator to keep what is freed for the next allocation and to serve
+// big arrays from its heap (Linux: glibc's mallopt), so that a heap warmed ahead of a big
+// mesh stays warm (render/import/heap_warmer.h). Does nothing where no such tuning exists.
+
+#include <cstddef>
+
+namespace lb::platform {
+
+// Allocations up to `bigBlockBytes` come from the heap, and freed memory stays in it.
+void keepFreedMemoryInHeap(std::size_t bigBlockBytes);
+
+// The size of a memory page: touching one byte in each makes a block resident.
+std::size_t pageSize();
+
+} // namespace lb::platform
