@@ -7,6 +7,9 @@
 
 namespace lb::platform {
 
+// Whether keepFreedMemoryInHeap() does anything here (false in the portable layer).
+bool canTuneAllocator();
+
 // Allocations up to `bigBlockBytes` come from the heap, and freed memory stays in it.
 void keepFreedMemoryInHeap(std::size_t bigBlockBytes);
 

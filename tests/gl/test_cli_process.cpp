@@ -1,5 +1,6 @@
 // The lightbench executable as a user scripts it: exit codes, messages, PNG and probe JSON.
 #include "frames.h"
+#include "platform_skips.h"
 #include "reference_compare.h"
 
 #include <QDir>
@@ -307,6 +308,7 @@ private slots:
     // that an ordinary compile passes it.
     void aProgramThatTakesTheDriverTooMuchMemoryIsRefused()
     {
+        LB_SKIP_WITHOUT_MEMORY_BOUNDS();
         const QString vertex = m_dir.filePath("big.vert"), fragment = m_dir.filePath("big.frag");
         QVERIFY(writeFile(vertex, "attribute vec4 vPosition;\nvarying vec3 v;\n"
                                   "void main() { v = vPosition.xyz; gl_Position = vPosition; }\n"));
@@ -395,6 +397,8 @@ private slots:
     {
         QFETCH(QStringList, args);
         QFETCH(QString, message);
+        if (message.startsWith("out of memory"))
+            LB_SKIP_WITHOUT_MEMORY_BOUNDS();
         const QString png = m_dir.filePath("never.png");
         const Run r = run(args + QStringList{"--render", png});
         QCOMPARE(r.exitCode, 1);

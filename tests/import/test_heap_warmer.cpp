@@ -3,6 +3,8 @@
 // faulting them in; a block taken beside it faults every page, so the count can tell.
 #include "heap_warmer.h"
 
+#include "allocator_tuning.h"
+
 #include <QCoreApplication>
 #include <QFile>
 #include <QTest>
@@ -52,6 +54,8 @@ private slots:
 #ifdef LIGHTBENCH_SANITIZE
         QSKIP("AddressSanitizer's allocator ignores glibc's settings");
 #endif
+        if (!platform::canTuneAllocator())
+            QSKIP("this platform layer leaves the allocator as it comes: freed blocks go back");
         // With transparent huge pages always on, a fresh block faults 2 MB at a time: too few
         // faults for the count to tell warmed pages from new ones.
         QFile thp("/sys/kernel/mm/transparent_hugepage/enabled");

@@ -1,6 +1,7 @@
 // The shader editor: live compiles, errors on the line, presets, the program's own uniforms,
 // shader files and the session's unsaved edits.
 #include "context_loss.h"
+#include "platform_skips.h"
 #include "window_fixture.h"
 
 #include <QElapsedTimer>
@@ -344,6 +345,7 @@ private slots:
     // next helper starts with) so that an ordinary compile passes it.
     void aProgramThatTakesTheDriverTooMuchMemoryIsRefused()
     {
+        LB_SKIP_WITHOUT_MEMORY_BOUNDS();
         EditorPanel *e = m_window->editorPanel();
         Viewport *v = m_window->viewport();
         TrialProcess *helper = v->trialProcess();

@@ -5,6 +5,11 @@
 
 namespace lb::platform {
 
+bool canTuneAllocator()
+{
+    return true;
+}
+
 void keepFreedMemoryInHeap(std::size_t bigBlockBytes)
 {
     mallopt(M_MMAP_THRESHOLD, int(bigBlockBytes)); // big arrays from the heap, not mapped alone

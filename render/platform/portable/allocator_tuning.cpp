@@ -2,6 +2,11 @@
 
 namespace lb::platform {
 
+bool canTuneAllocator()
+{
+    return false;
+}
+
 // The allocator as it comes: warming may then be undone by the allocator giving memory back.
 void keepFreedMemoryInHeap(std::size_t) {}
 

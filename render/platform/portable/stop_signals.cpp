@@ -8,9 +8,14 @@ namespace lb {
 
 namespace {
 
-// The signals standard C++ names (SIGHUP is POSIX's; Windows delivers Ctrl+C as SIGINT and
-// Ctrl+Break as SIGBREAK, which this layer leaves alone).
-constexpr int kSignals[2] = {SIGINT, SIGTERM};
+// The signals standard C++ names, and SIGHUP where the system has one (POSIX: a closed
+// terminal). Windows delivers Ctrl+C as SIGINT; Ctrl+Break (SIGBREAK) is left alone.
+constexpr int kSignals[] = {SIGINT, SIGTERM,
+#ifdef SIGHUP
+                            SIGHUP
+#endif
+};
+constexpr int kCount = int(sizeof kSignals / sizeof kSignals[0]);
 volatile std::sig_atomic_t g_received = 0;
 
 extern "C" void noteStop(int signal)
@@ -25,14 +30,14 @@ extern "C" void noteStop(int signal)
 
 struct StopSignals::Handlers
 {
-    void (*previous[2])(int) = {SIG_DFL, SIG_DFL};
+    void (*previous[kCount])(int) = {};
     QTimer poll;
 };
 
 StopSignals::StopSignals(QObject *parent) : QObject(parent), m_handlers(new Handlers)
 {
     g_received = 0;
-    for (int i = 0; i < 2; ++i)
+    for (int i = 0; i < kCount; ++i)
         m_handlers->previous[i] = std::signal(kSignals[i], noteStop);
     // No portable way for a handler to wake an event loop: it is looked at 20 times a second.
     m_handlers->poll.setInterval(50);
@@ -47,7 +52,7 @@ StopSignals::StopSignals(QObject *parent) : QObject(parent), m_handlers(new Hand
 
 StopSignals::~StopSignals()
 {
-    for (int i = 0; i < 2; ++i)
+    for (int i = 0; i < kCount; ++i)
         if (m_handlers->previous[i] != SIG_ERR)
             std::signal(kSignals[i], m_handlers->previous[i]);
 }
