@@ -77,6 +77,8 @@ namespace {
 void limitMemory(long long megabytes)
 {
     __asan_set_error_report_callback(onSanitizerReport);
+    if (!lb::platform::canBoundMemory()) // no resident size to watch in the portable layer
+        return;
     std::thread([kilobytes = long(megabytes) * 1024] {
         while (lb::residentKB() <= kilobytes)
             std::this_thread::sleep_for(std::chrono::milliseconds(2));
