@@ -172,6 +172,29 @@ private slots:
         QCOMPARE(box->informativeText(), QString("second.json\nthird.lblesson"));
     }
 
+    // Dropped on the window, .lbscene and .lblesson open as .json files do (not as meshes).
+    void droppedLbFilesOpen()
+    {
+        m_settings->setValue(window_settings::kAnimateLessonsKey, false);
+        const auto drop = [this](const QString &path) {
+            QMimeData mime;
+            mime.setUrls({QUrl::fromLocalFile(path)});
+            QDragEnterEvent enter(QPoint(50, 50), Qt::CopyAction, &mime, Qt::LeftButton,
+                                  Qt::NoModifier);
+            QApplication::sendEvent(m_window.get(), &enter); // Qt delivers no drop without it
+            QDropEvent event(QPointF(50, 50), Qt::CopyAction, &mime, Qt::LeftButton,
+                             Qt::NoModifier);
+            QApplication::sendEvent(m_window.get(), &event);
+            return event.isAccepted();
+        };
+        QVERIFY(drop(writeScene("dropped.lbscene", 44)));
+        QVERIFY(
+            QTest::qWaitFor([this] { return scene().objects[0].material.shininess == 44; }, 2000));
+        QVERIFY(drop(writeLesson(fourSteps(), "dropped.lblesson")));
+        QVERIFY(QTest::qWaitFor([this] { return lessons()->isOpen(); }, 2000));
+        QVERIFY(scene() == stepScene(0));
+    }
+
     // Saving without an ending: .json unless the .lbscene filter was chosen; opening lists
     // both. Qt's own dialog, answered by the test.
     void theSceneDialogsTakeLbscene()
