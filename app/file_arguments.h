@@ -20,7 +20,7 @@ FileKind fileKind(const QString &path);
 
 // Opens `paths`' first file in `window`; true when it opened. One that cannot be opened (a
 // missing file, a folder, a pipe, not a scene) leaves the window as it was, with the
-// reader's message. The object name of the message naming the files not opened.
+// reader's message. The other files are named in one message box, object name below.
 bool openFileArguments(MainWindow &window, const QStringList &paths);
 inline constexpr const char *kFilesNotOpenedMessage = "filesNotOpenedMessage";
 
