@@ -1,5 +1,7 @@
 #include "command_line.h"
 
+#include "lightbench_version.h"
+
 #include "lesson.h"
 
 #include "message_text.h"
@@ -77,9 +79,10 @@ glm::vec3 colourOption(const QString &option, const QString &text)
 
 bool onOff(const QString &option, const QString &text)
 {
-    if (text == "on")
+    const QStringList names = onOffNames(); // "on", "off"
+    if (text == names[0])
         return true;
-    if (text == "off")
+    if (text == names[1])
         return false;
     fail(option, QString("expected on or off, got '%1'").arg(echoed(text)));
 }
@@ -103,128 +106,6 @@ int integer(const QString &option, const QString &text, int lo, int hi)
         fail(option, QString("%1 is outside %2 to %3").arg(v).arg(lo).arg(hi));
     return v;
 }
-
-struct OptionSpec
-{
-    const char *name;
-    const char *valueName;
-    const char *help;
-};
-
-const OptionSpec kOptions[] = {
-    {"scene", "FILE.json",
-     "Start from a scene file (lights, material, shading, object, camera, program, compare); "
-     "the other options override it."},
-    {"save-scene", "FILE.json",
-     "Write the scene (with --scene and every option applied) to FILE.json; exit unless "
-     "--render, --probe or --bench-frames is given too."},
-    {"lesson", "FILE.json",
-     "Open a lesson (steps of scenes with captions) at --step, in the window; with --render, "
-     "--screenshot or --probe, that step's scene. Not with --scene."},
-    {"step", "N", "With --lesson: the step, from 1 (default 1)."},
-    {"render", "FILE.png", "Draw one frame offscreen into FILE.png and exit."},
-    {"probe", "X,Y", "Print the probe's JSON for pixel X,Y (origin top-left) and exit."},
-    {"size", "WxH", "Frame size for --render and --probe (default 800x600)."},
-    {"object", "SHAPE|FILE",
-     "Add an object: cube, sphere, torus, plane or a mesh file (repeatable; placed side by side "
-     "and the camera framing them). The object options (shape, mesh, model, material, texture) "
-     "apply to the last object named; without --object, to the scene's selected object. "
-     "Without --scene the objects named replace the saved session's."},
-    {"shape", "cube|sphere|torus|plane", "Object shape."},
-    {"tessellation", "N", "Subdivisions of the sphere, torus and plane (3 to 2000)."},
-    {"mesh", "FILE", "Draw a mesh file (any format Assimp reads) instead of the shape."},
-    {"normals", "file|smooth|flat",
-     "Normals: the mesh's own (generated smooth when it has none), smooth or flat."},
-    {"crease-angle", "DEGREES", "Generated smooth normals stop at sharper edges (0 to 180)."},
-    {"show-normals", "on|off", "Draw each vertex normal as a short line."},
-    {"cull-back-faces", "on|off",
-     "Leave out triangles facing away (closed meshes: the same picture, drawn faster)."},
-    {"file-material", "on|off", "Take Ka, Kd, Ks and shininess from the mesh file."},
-    {"import-memory-limit", "MB",
-     "Memory limit of the import helper (default: half of physical memory)."},
-    {"import-time-limit", "SECONDS", "Time limit of the import helper (default 300)."},
-    {"shading", "gouraud|phong|flat",
-     "Lighting per vertex (Gouraud), per fragment (Phong) or per triangle at its last vertex "
-     "(flat)."},
-    {"specular", "phong|blinn", "Specular term: Phong (R.V) or Blinn-Phong (N.H)."},
-    {"show", "colour|normal|light|view|half|reflect|ndotl|specular|attenuation",
-     "What the surface shows: the lit colour, or N, L, V, H, R (as 0.5v + 0.5), N.L, the "
-     "specular factor or the attenuation (as grey); L, H, R and the numbers are light 1's."},
-    {"terms", "ambient,diffuse,specular",
-     "The terms of the model that are on: any of the three, or none (default all); the "
-     "others add nothing."},
-    {"frame", "camera|world|object", "Frame the light position is given in."},
-    {"light-object", "INDEX",
-     "The object (0 for the first) whose frame an object-frame light 1 is given in."},
-    {"light", "X,Y,Z,W", "Light position (W = 1) or direction towards the light (W = 0)."},
-    {"attenuation", "KC,KL,KQ",
-     "Attenuation of light 1 when it is a point: 1 / (KC + KL*d + KQ*d^2) (each 0 to 1000, "
-     "not all 0; default 1,0,0: none)."},
-    {"spot", "DX,DY,DZ,CUTOFF,EXPONENT",
-     "Make light 1 a spotlight: the cone's axis in the light's frame, its half-angle in "
-     "degrees (0 to 180; 180: no spot) and its exponent (0 to 128)."},
-    {"ia", "R,G,B", "Ambient intensity of the light, Ia (0 to 1)."},
-    {"id", "R,G,B", "Diffuse intensity of the light, Id (0 to 1)."},
-    {"is", "R,G,B", "Specular intensity of the light, Is (0 to 1)."},
-    {"ka", "R,G,B", "Ambient reflection of the material, Ka (0 to 1)."},
-    {"kd", "R,G,B", "Diffuse reflection of the material, Kd (0 to 1)."},
-    {"ks", "R,G,B", "Specular reflection of the material, Ks (0 to 1)."},
-    {"shininess", "S", "Specular exponent (1 to 1000)."},
-    {"projection", "perspective|orthographic", "Projection; V = -posC or (0,0,1) to match."},
-    {"camera-orbit", "YAW,PITCH", "Camera orbit in degrees (pitch -89 to 89)."},
-    {"model-rotate", "X,Y,Z", "Model rotation in degrees about X, then Y, then Z."},
-    {"model-scale", "X,Y,Z", "Model scale per axis (0.01 to 100)."},
-    {"model-translate", "X,Y,Z", "Where the object's centre lies in the world (-1000 to 1000)."},
-    {"lighting", "on|off", "Lighting model on, or the diffuse colour unlit."},
-    {"vertex-colors", "on|off", "Modulate ambient and diffuse by the vertex colours."},
-    {"texture", "on|off",
-     "Modulate ambient and diffuse by the texture: the image file, else the mesh file's own, "
-     "else the checker."},
-    {"texture-file", "FILE",
-     "An image (PNG, JPEG, any format Qt reads; at most 16384 x 16384, drawn at most 4096 on a "
-     "side) as the texture; switches the texture on."},
-    {"texture-wrap", "repeat|clamp", "Texture coordinates outside 0 to 1 repeat or clamp."},
-    {"texture-filter", "nearest|linear", "The nearest texel or the four around, weighted."},
-    {"texture-mipmaps", "on|off",
-     "Read smaller copies of the texture where it is minified (trilinear with the linear "
-     "filter)."},
-    {"show-light", "on|off", "Draw the light's marker."},
-    {"screenshot", "FILE.png", "Open the window, save a screenshot once it has drawn, exit."},
-    {"presentation", "",
-     "Open the window in presentation mode: full screen, the presentation UI scale (F11)."},
-    {"ui-scale", "PERCENT",
-     "UI scale of the window (or of presentation mode with --presentation), 100 to 250; kept."},
-    {"language", "system|en|pt|de",
-     "The window's language for this run (View > Language keeps one; the command line's own "
-     "output is English)."},
-    {"bench-frames", "N", "Draw N frames offscreen and print the frame rate as JSON."},
-    {"bench-edits", "N", "Open the window, time N shader edits to the screen, print JSON, exit."},
-    {"vertex", "FILE", "Vertex shader to draw with instead of the built-in one (with --fragment)."},
-    {"fragment", "FILE", "Fragment shader to draw with (with --vertex)."},
-    {"frame-budget", "SECONDS",
-     "Refuse your program when one frame at --size would take longer (default 1; 0.01 to 60)."},
-    {"translate-webgl1", "",
-     "Run WebGL 1 shaders (no #version) translated to GLSL 3.30 core instead of under "
-     "\"#version 100\" (automatic where the driver refuses #version 100)."},
-    {"grade", "",
-     "Grade submissions (the arguments after the options: NAME.vert + NAME.frag, a folder "
-     "with one such pair, or a scene file with a program) against --exercise; one line per "
-     "submission; exit 0, or 2 when one could not be read (the others are graded)."},
-    {"exercise", "FILE.json",
-     "The exercise to grade against: a scene file with an \"exercise\" section (reference "
-     "program, cases, tolerance)."},
-    {"report", "FILE.csv", "With --grade: one CSV row per submission."},
-    {"sheets", "DIR",
-     "With --grade: one PNG per submission (its worst case: student, "
-     "reference, difference)."},
-    {"seed", "N",
-     "With --grade: the cases' random parameters (default 1; the same seed gives "
-     "the same cases)."},
-    {"check", "",
-     "Compile and link --vertex and --fragment and try them on small frames, print each "
-     "diagnostic as FILE:LINE:COLUMN: error|warning: message; exit 0 if the program links and "
-     "passes the trial (see --frame-budget), 1 if not."},
-};
 
 QString readShader(const char *option, const QString &path)
 {
@@ -330,10 +211,11 @@ void parseInto(const QCommandLineParser &parser, CommandLine &cl)
         cl.uiScalePercent = integer("ui-scale", value("ui-scale"), 100, 250);
     if (given("language")) {
         const QString language = value("language");
-        if (!QStringList{"system", "en", "pt", "de"}.contains(language))
+        const QStringList languages = commandLineLanguages(); // "system" first
+        if (!languages.contains(language))
             fail("language",
-                 QString("expected system, en, pt or de, got '%1'").arg(echoed(language)));
-        cl.language = language == "system" ? QString() : language;
+                 QString("expected %1, got '%2'").arg(languages.join('|'), echoed(language)));
+        cl.language = language == languages[0] ? QString() : language;
     }
     cl.check = given("check");
     cl.grade = given("grade");
@@ -656,11 +538,9 @@ CommandLineResult parseCommandLine(const QStringList &arguments)
     parser.setApplicationDescription(
         "lightbench: a lighting workbench for the Phong and Blinn-Phong models.\n"
         "Without --render, --probe or --bench-frames it opens the window.");
-    const QCommandLineOption help = parser.addHelpOption();
-    for (const OptionSpec &o : kOptions)
-        parser.addOption(QCommandLineOption(QString::fromLatin1(o.name),
-                                            QString::fromLatin1(o.help),
-                                            QString::fromLatin1(o.valueName)));
+    for (const OptionInfo &o : visibleOptions())
+        parser.addOption(QCommandLineOption(o.names, o.description, o.valueName));
+    parser.addPositionalArgument("FILE", fileArgumentsHelp(), "[FILE...]");
 
     CommandLineResult result;
     if (!parser.parse(arguments)) {
@@ -668,19 +548,32 @@ CommandLineResult parseCommandLine(const QStringList &arguments)
         result.message = echoed(parser.errorText(), 200) + " (see --help)";
         return result;
     }
-    if (parser.isSet(help)) {
-        result.message = parser.helpText();
+    if (parser.isSet("help")) {
+        // Parsed before QCoreApplication exists, which is where Qt would take the name from.
+        result.message = parser.helpText().replace("<executable_name>", "lightbench");
         return result;
     }
-    if (!parser.positionalArguments().isEmpty() && !parser.isSet("grade")) {
-        result.exitCode = 2;
-        result.message = QString("unexpected argument '%1' (see --help)")
-                             .arg(echoed(parser.positionalArguments().first()));
+    if (parser.isSet("version")) {
+        result.message = QStringLiteral("lightbench " LIGHTBENCH_VERSION "\n");
         return result;
     }
     try {
         CommandLine cl;
         parseInto(parser, cl);
+        const QStringList files = parser.positionalArguments();
+        if (!files.isEmpty() && !cl.grade) {
+            // Files open in the window (the desktop's `lightbench %F`); a headless run draws
+            // --scene's or --lesson's scene, and one file opens there, not two.
+            if (cl.headless())
+                throw BadOption{
+                    QString("unexpected argument '%1' (see --help)").arg(echoed(files.first()))};
+            if (!cl.scenePath.isEmpty())
+                fail(cl.lessonPath.isEmpty() ? "scene" : "lesson",
+                     QString("opens one file in the window; '%1' is another (give one of them)")
+                         .arg(echoed(files.first())));
+            for (const QString &file : files)
+                cl.filePaths << (file.isEmpty() ? file : QFileInfo(file).absoluteFilePath());
+        }
         result.commandLine = std::move(cl);
     } catch (const BadOption &bad) {
         result.exitCode = 2;

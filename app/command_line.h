@@ -31,6 +31,10 @@ struct CommandLine
     // lesson and the step); the window opens the lesson there.
     QString lessonPath;
     int lessonStep = 1;
+    // FILE...: scene or lesson files for the window to open (absolute), as the desktop's
+    // `lightbench %F` gives them; never with --scene, --lesson or a headless mode. Read by
+    // the window, which says what is wrong with one (file_arguments.h).
+    QStringList filePaths;
     QString saveScenePath; // --save-scene FILE: write the resulting scene, then go on or exit
     bool programFromScene = false;
     // Each scene option given, in order; applied on top of the default or the saved scene.
@@ -86,6 +90,36 @@ struct CommandLineResult
 };
 
 // `arguments` starts with the program name, as QCoreApplication::arguments() does.
+// --version's message is "lightbench VERSION\n", the version of CMake's project().
 CommandLineResult parseCommandLine(const QStringList &arguments);
+
+// An option as --help, the man page and the shell's completion show it.
+struct OptionInfo
+{
+    QStringList names;   // "h", "help": the one-letter name first, the long one last
+    QString valueName;   // "FILE.png", "gouraud|phong|flat"; empty: the option takes none
+    QString description; // one paragraph, English
+    // What its value can be, for the completion: fixed words (the list the parser checks
+    // against), files (ending in one of `suffixes`; any file when there are none), a folder.
+    // None of them: a number or a list, with nothing to offer.
+    QStringList words;
+    bool files = false;
+    QStringList suffixes; // "png", "json": without the dot, in lower case
+    bool directory = false;
+
+    QString longName() const { return names.last(); }
+};
+
+// Every option --help lists, in its order (the grading child's hidden ones left out).
+std::vector<OptionInfo> visibleOptions();
+// What FILE... arguments are, as --help says it.
+QString fileArgumentsHelp();
+// The endings of scene and lesson files: lightbench's own first (.lbscene, .lblesson: the
+// desktop's MIME types), then .json (which holds either: its content decides).
+QStringList sceneFileSuffixes();
+QStringList lessonFileSuffixes();
+// --language's values ("system" first: the system's language) and the switches' on|off.
+QStringList commandLineLanguages();
+QStringList onOffNames();
 
 } // namespace lb

@@ -1,5 +1,7 @@
 #include "help.h"
 
+#include "lightbench_version.h"
+
 #include <QAction>
 #include <QCoreApplication>
 #include <QDesktopServices>

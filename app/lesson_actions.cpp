@@ -389,9 +389,9 @@ void LessonActions::markModified()
 
 void LessonActions::showOpenDialog()
 {
-    const QString path = QFileDialog::getOpenFileName(m_window, tr("Open a lesson"),
-                                                      m_settings.value(kDirKey).toString(),
-                                                      tr("Lessons (*.json);;All files (*)"));
+    const QString path = QFileDialog::getOpenFileName(
+        m_window, tr("Open a lesson"), m_settings.value(kDirKey).toString(),
+        tr("Lessons (*.lblesson *.json);;All files (*)"));
     if (path.isEmpty())
         return;
     m_settings.setValue(kDirKey, QFileInfo(path).absolutePath());

@@ -182,12 +182,17 @@ void LessonActions::showSaveAsDialog()
 {
     const QString start =
         m_path.isEmpty() || m_path.startsWith(":/") ? m_settings.value(kDirKey).toString() : m_path;
+    // .json first, the course's format: a name typed without an ending gets .json unless the
+    // .lblesson filter (the desktop's type for lessons) is chosen, or the lesson's file has it.
+    const QString json = tr("Lessons (*.json)"), lblesson = tr("lightbench lessons (*.lblesson)");
+    QString chosenFilter = m_path.endsWith(".lblesson", Qt::CaseInsensitive) ? lblesson : json;
     QString path = QFileDialog::getSaveFileName(m_window, tr("Save the lesson"), start,
-                                                tr("Lessons (*.json);;All files (*)"));
+                                                json + ";;" + lblesson + ";;" + tr("All files (*)"),
+                                                &chosenFilter);
     if (path.isEmpty())
         return;
     if (QFileInfo(path).suffix().isEmpty())
-        path += ".json";
+        path += chosenFilter == lblesson ? ".lblesson" : ".json";
     m_settings.setValue(kDirKey, QFileInfo(path).absolutePath());
     saveAs(path);
 }

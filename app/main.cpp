@@ -1,8 +1,10 @@
-// lightbench: the window, or one headless frame (--render / --probe / --bench-frames).
+// lightbench: the window (with FILE... opened in it), or one headless frame (--render /
+// --probe / --bench-frames).
 
 #include "catalogue.h"
 #include "command_line.h"
 #include "edit_bench.h"
+#include "file_arguments.h"
 #include "grade.h"
 #include "headless.h"
 #include "language.h"
@@ -142,13 +144,15 @@ int main(int argc, char **argv)
         window.meshActions()->setSessionLimits(limits);
     }
     // A scene file opens as File > Open Scene would (its message included), a lesson as File
-    // > Open Lesson would, at its step; the options given beside them apply on top.
+    // > Open Lesson would, at its step; the options given beside them apply on top. FILE...
+    // (the desktop's) open the same way, and one that cannot be opened is said in the window.
     if (!cl.lessonPath.isEmpty())
         window.lessonActions()->open(cl.lessonPath, cl.lessonStep - 1);
     else if (!cl.scenePath.isEmpty()) {
         window.lessonActions()->closeLesson(); // the last session's: a scene was asked for
         window.sceneActions()->open(cl.scenePath);
-    }
+    } else if (!cl.filePaths.isEmpty())
+        lb::openFileArguments(window, cl.filePaths);
     lb::Scene scene = window.document().scene();
     cl.applyTo(scene);
     window.document().set(scene);

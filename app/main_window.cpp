@@ -2,6 +2,7 @@
 
 #include "editor_panel.h"
 #include "exercise_panel.h"
+#include "file_arguments.h"
 #include "lesson_actions.h"
 #include "lesson_bar.h"
 #include "light_panel.h"
@@ -155,7 +156,7 @@ MainWindow::MainWindow(QSettings &settings, QWidget *parent)
     connect(
         m_meshActions, &MeshActions::sceneFileDropped, m_sceneActions,
         [this](const QString &path) {
-            if (LessonActions::isLessonFile(path))
+            if (fileKind(path) == FileKind::Lesson)
                 m_lessons->openAsking(path);
             else
                 m_sceneActions->openAsking(path);

@@ -221,7 +221,7 @@ void MainWindow::chooseSideBFiles()
 {
     const QString path = QFileDialog::getOpenFileName(
         this, tr("Side B: a shader pair (NAME.vert or NAME.frag) or a scene file's program"), {},
-        tr("Shader pairs and scene files (*.vert *.frag *.json);;All files (*)"));
+        tr("Shader pairs and scene files (*.vert *.frag *.json *.lbscene);;All files (*)"));
     if (!path.isEmpty())
         setSideBFiles(path);
 }

@@ -283,7 +283,9 @@ bool MeshActions::eventFilter(QObject *watched, QEvent *event)
             const QString path = url.toLocalFile();
             if (!url.isLocalFile())
                 continue;
-            if (QFileInfo(path).suffix().toLower() == "json")
+            // Scenes and lessons (main_window.cpp tells them apart, file_arguments.h).
+            if (QStringList{"json", "lbscene", "lblesson"}.contains(
+                    QFileInfo(path).suffix().toLower()))
                 scenes << path;
             else if (isImageFile(path))
                 images << path;

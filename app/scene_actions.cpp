@@ -28,9 +28,20 @@ const char *kDirKey = "scenes/lastDirectory";
 const char *kExportSizeKey = "export/size";
 const char *kCurrentKey = "scenes/current"; // the file the session's scene came from
 // Translated when a dialog opens (a constant would be made before any translator is in).
-QString sceneFilter()
+// Scene files end in .lbscene (the desktop's type for them) or .json (the course's).
+QString sceneOpenFilter()
 {
-    return SceneActions::tr("Scenes (*.json);;All files (*)");
+    return SceneActions::tr("Scenes (*.lbscene *.json);;All files (*)");
+}
+// Saving: .json first, the format the course hands out, so a name typed without an ending
+// gets .json unless the .lbscene filter is chosen.
+QString jsonSceneFilter()
+{
+    return SceneActions::tr("Scenes (*.json)");
+}
+QString lbsceneFilter()
+{
+    return SceneActions::tr("lightbench scenes (*.lbscene)");
 }
 // A scene file as the window opens it: an example's mesh (none today) would name a file beside
 // the resource, so its objects keep their shapes.
@@ -249,7 +260,7 @@ void SceneActions::copyImage()
 void SceneActions::showOpenDialog()
 {
     const QString path = QFileDialog::getOpenFileName(
-        m_window, tr("Open a scene"), m_settings.value(kDirKey).toString(), sceneFilter());
+        m_window, tr("Open a scene"), m_settings.value(kDirKey).toString(), sceneOpenFilter());
     if (path.isEmpty())
         return;
     m_settings.setValue(kDirKey, QFileInfo(path).absolutePath());
@@ -258,13 +269,17 @@ void SceneActions::showOpenDialog()
 
 bool SceneActions::showSaveDialog()
 {
+    // The filter shown first: the one of the scene's own file's ending.
+    QString chosenFilter =
+        m_path.endsWith(".lbscene", Qt::CaseInsensitive) ? lbsceneFilter() : jsonSceneFilter();
     QString path = QFileDialog::getSaveFileName(
         m_window, tr("Save the scene"),
-        m_path.isEmpty() ? m_settings.value(kDirKey).toString() : m_path, sceneFilter());
+        m_path.isEmpty() ? m_settings.value(kDirKey).toString() : m_path,
+        jsonSceneFilter() + ";;" + lbsceneFilter() + ";;" + tr("All files (*)"), &chosenFilter);
     if (path.isEmpty())
         return false;
     if (QFileInfo(path).suffix().isEmpty())
-        path += ".json";
+        path += chosenFilter == lbsceneFilter() ? ".lbscene" : ".json";
     m_settings.setValue(kDirKey, QFileInfo(path).absolutePath());
     return save(path).isEmpty();
 }

@@ -74,7 +74,7 @@ Submission readSubmission(const QString &given)
         return pair(s.name, dir.filePath(verts[0]), dir.filePath(frags[0]));
     }
     const QString suffix = info.suffix().toLower();
-    if (suffix == "json") {
+    if (suffix == "json" || suffix == "lbscene") { // a scene file, the course's or the desktop's
         const SceneFileRead read = readSceneFile(path);
         if (!read.file) {
             s.error = read.error;

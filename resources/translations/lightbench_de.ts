@@ -871,6 +871,19 @@
     </message>
 </context>
 <context>
+    <name>lb::FileArguments</name>
+    <message>
+        <location filename="../../app/file_arguments.cpp" line="+52"/>
+        <source>Files not opened</source>
+        <translation>Nicht geöffnete Dateien</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>lightbench opens one scene or lesson at a time, the first file given (%1); the files below were not opened. Open them with File &gt; Open Scene or File &gt; Open Lesson.</source>
+        <translation>lightbench öffnet eine Szene oder Lektion auf einmal, die erste angegebene Datei (%1); die Dateien unten wurden nicht geöffnet. Öffnen Sie sie mit Datei &gt; Szene öffnen oder Datei &gt; Lektion öffnen.</translation>
+    </message>
+</context>
+<context>
     <name>lb::FileLimit</name>
     <message>
         <location filename="../../render/import/import_process.cpp" line="+56"/>
@@ -970,7 +983,7 @@
 <context>
     <name>lb::Help</name>
     <message>
-        <location filename="../../app/help.cpp" line="+50"/>
+        <location filename="../../app/help.cpp" line="+52"/>
         <source>%1, %2</source>
         <extracomment>shortcuts that do the same: all but the last two, &quot;Ctrl++, Ctrl+= or ...&quot;</extracomment>
         <translation>%1, %2</translation>
@@ -1279,7 +1292,7 @@
     </message>
     <message>
         <location line="+14"/>
-        <location filename="../../app/main.cpp" line="+207"/>
+        <location filename="../../app/main.cpp" line="+211"/>
         <source>Language</source>
         <translation>Sprache</translation>
     </message>
@@ -1545,19 +1558,18 @@
         <translation>Schritt %1</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+16"/>
         <source>Open a lesson</source>
         <translation>Lektion öffnen</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <location filename="../../app/lesson_authoring.cpp" line="+123"/>
-        <source>Lessons (*.json);;All files (*)</source>
-        <translation>Lektionen (*.json);;Alle Dateien (*)</translation>
+        <location line="+1"/>
+        <source>Lessons (*.lblesson *.json);;All files (*)</source>
+        <translation>Lektionen (*.lblesson *.json);;Alle Dateien (*)</translation>
     </message>
     <message>
         <location line="+9"/>
-        <location filename="../../app/lesson_authoring.cpp" line="-150"/>
+        <location filename="../../app/lesson_authoring.cpp" line="-27"/>
         <source>Lesson</source>
         <extracomment>a new lesson&apos;s title, until the teacher renames it (saved in the lesson file)</extracomment>
         <translation>Lektion</translation>
@@ -1609,9 +1621,24 @@
         <translation>Lektion gespeichert in %1</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+11"/>
+        <source>Lessons (*.json)</source>
+        <translation>Lektionen (*.json)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>lightbench lessons (*.lblesson)</source>
+        <translation>lightbench-Lektionen (*.lblesson)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Save the lesson</source>
         <translation>Lektion speichern</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>All files (*)</source>
+        <translation>Alle Dateien (*)</translation>
     </message>
     <message>
         <location line="+16"/>
@@ -1977,7 +2004,7 @@
 <context>
     <name>lb::MainWindow</name>
     <message>
-        <location filename="../../app/main_window.cpp" line="+81"/>
+        <location filename="../../app/main_window.cpp" line="+82"/>
         <source>Light</source>
         <translation>Licht</translation>
     </message>
@@ -2205,8 +2232,8 @@
     </message>
     <message>
         <location line="+1"/>
-        <source>Shader pairs and scene files (*.vert *.frag *.json);;All files (*)</source>
-        <translation>Shader-Paare und Szenendateien (*.vert *.frag *.json);;Alle Dateien (*)</translation>
+        <source>Shader pairs and scene files (*.vert *.frag *.json *.lbscene);;All files (*)</source>
+        <translation>Shader-Paare und Szenendateien (*.vert *.frag *.json *.lbscene);;Alle Dateien (*)</translation>
     </message>
     <message>
         <location line="+22"/>
@@ -3714,9 +3741,19 @@
 <context>
     <name>lb::SceneActions</name>
     <message>
-        <location filename="../../app/scene_actions.cpp" line="+33"/>
-        <source>Scenes (*.json);;All files (*)</source>
-        <translation>Szenen (*.json);;Alle Dateien (*)</translation>
+        <location filename="../../app/scene_actions.cpp" line="+34"/>
+        <source>Scenes (*.lbscene *.json);;All files (*)</source>
+        <translation>Szenen (*.lbscene *.json);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Scenes (*.json)</source>
+        <translation>Szenen (*.json)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>lightbench scenes (*.lbscene)</source>
+        <translation>lightbench-Szenen (*.lbscene)</translation>
     </message>
     <message>
         <location line="+19"/>
@@ -3913,12 +3950,17 @@
         <translation>Szene öffnen</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+13"/>
         <source>Save the scene</source>
         <translation>Szene speichern</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+2"/>
+        <source>All files (*)</source>
+        <translation>Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <location line="+16"/>
         <source>Export the view</source>
         <translation>Ansicht exportieren</translation>
     </message>

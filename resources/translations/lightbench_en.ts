@@ -866,6 +866,19 @@
     </message>
 </context>
 <context>
+    <name>lb::FileArguments</name>
+    <message>
+        <location filename="../../app/file_arguments.cpp" line="+52"/>
+        <source>Files not opened</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>lightbench opens one scene or lesson at a time, the first file given (%1); the files below were not opened. Open them with File &gt; Open Scene or File &gt; Open Lesson.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>lb::FileLimit</name>
     <message>
         <location filename="../../app/settings_store.cpp" line="+32"/>
@@ -965,7 +978,7 @@
 <context>
     <name>lb::Help</name>
     <message>
-        <location filename="../../app/help.cpp" line="+50"/>
+        <location filename="../../app/help.cpp" line="+52"/>
         <source>%1, %2</source>
         <extracomment>shortcuts that do the same: all but the last two, &quot;Ctrl++, Ctrl+= or ...&quot;</extracomment>
         <translation type="unfinished"></translation>
@@ -1274,7 +1287,7 @@
     </message>
     <message>
         <location line="+14"/>
-        <location filename="../../app/main.cpp" line="+207"/>
+        <location filename="../../app/main.cpp" line="+211"/>
         <source>Language</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1540,19 +1553,18 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+16"/>
         <source>Open a lesson</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+2"/>
-        <location filename="../../app/lesson_authoring.cpp" line="+123"/>
-        <source>Lessons (*.json);;All files (*)</source>
+        <location line="+1"/>
+        <source>Lessons (*.lblesson *.json);;All files (*)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location line="+9"/>
-        <location filename="../../app/lesson_authoring.cpp" line="-150"/>
+        <location filename="../../app/lesson_authoring.cpp" line="-27"/>
         <source>Lesson</source>
         <extracomment>a new lesson&apos;s title, until the teacher renames it (saved in the lesson file)</extracomment>
         <translation type="unfinished"></translation>
@@ -1604,8 +1616,23 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+11"/>
+        <source>Lessons (*.json)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>lightbench lessons (*.lblesson)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Save the lesson</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>All files (*)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -1972,7 +1999,7 @@
 <context>
     <name>lb::MainWindow</name>
     <message>
-        <location filename="../../app/main_window.cpp" line="+81"/>
+        <location filename="../../app/main_window.cpp" line="+82"/>
         <source>Light</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2199,7 +2226,7 @@
     </message>
     <message>
         <location line="+1"/>
-        <source>Shader pairs and scene files (*.vert *.frag *.json);;All files (*)</source>
+        <source>Shader pairs and scene files (*.vert *.frag *.json *.lbscene);;All files (*)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -3706,8 +3733,18 @@
 <context>
     <name>lb::SceneActions</name>
     <message>
-        <location filename="../../app/scene_actions.cpp" line="+33"/>
-        <source>Scenes (*.json);;All files (*)</source>
+        <location filename="../../app/scene_actions.cpp" line="+34"/>
+        <source>Scenes (*.lbscene *.json);;All files (*)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Scenes (*.json)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>lightbench scenes (*.lbscene)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -3905,12 +3942,17 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+13"/>
         <source>Save the scene</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+2"/>
+        <source>All files (*)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+16"/>
         <source>Export the view</source>
         <translation type="unfinished"></translation>
     </message>

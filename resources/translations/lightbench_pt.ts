@@ -871,6 +871,19 @@
     </message>
 </context>
 <context>
+    <name>lb::FileArguments</name>
+    <message>
+        <location filename="../../app/file_arguments.cpp" line="+52"/>
+        <source>Files not opened</source>
+        <translation>Ficheiros não abertos</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>lightbench opens one scene or lesson at a time, the first file given (%1); the files below were not opened. Open them with File &gt; Open Scene or File &gt; Open Lesson.</source>
+        <translation>O lightbench abre uma cena ou lição de cada vez, o primeiro ficheiro indicado (%1); os ficheiros abaixo não foram abertos. Abra-os com Ficheiro &gt; Abrir Cena ou Ficheiro &gt; Abrir Lição.</translation>
+    </message>
+</context>
+<context>
     <name>lb::FileLimit</name>
     <message>
         <location filename="../../render/import/import_process.cpp" line="+56"/>
@@ -970,7 +983,7 @@
 <context>
     <name>lb::Help</name>
     <message>
-        <location filename="../../app/help.cpp" line="+50"/>
+        <location filename="../../app/help.cpp" line="+52"/>
         <source>%1, %2</source>
         <extracomment>shortcuts that do the same: all but the last two, &quot;Ctrl++, Ctrl+= or ...&quot;</extracomment>
         <translation>%1, %2</translation>
@@ -1279,7 +1292,7 @@
     </message>
     <message>
         <location line="+14"/>
-        <location filename="../../app/main.cpp" line="+207"/>
+        <location filename="../../app/main.cpp" line="+211"/>
         <source>Language</source>
         <translation>Idioma</translation>
     </message>
@@ -1545,19 +1558,18 @@
         <translation>Passo %1</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+16"/>
         <source>Open a lesson</source>
         <translation>Abrir uma lição</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <location filename="../../app/lesson_authoring.cpp" line="+123"/>
-        <source>Lessons (*.json);;All files (*)</source>
-        <translation>Lições (*.json);;Todos os ficheiros (*)</translation>
+        <location line="+1"/>
+        <source>Lessons (*.lblesson *.json);;All files (*)</source>
+        <translation>Lições (*.lblesson *.json);;Todos os ficheiros (*)</translation>
     </message>
     <message>
         <location line="+9"/>
-        <location filename="../../app/lesson_authoring.cpp" line="-150"/>
+        <location filename="../../app/lesson_authoring.cpp" line="-27"/>
         <source>Lesson</source>
         <extracomment>a new lesson&apos;s title, until the teacher renames it (saved in the lesson file)</extracomment>
         <translation>Lição</translation>
@@ -1609,9 +1621,24 @@
         <translation>Lição guardada em %1</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+11"/>
+        <source>Lessons (*.json)</source>
+        <translation>Lições (*.json)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>lightbench lessons (*.lblesson)</source>
+        <translation>Lições do lightbench (*.lblesson)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Save the lesson</source>
         <translation>Guardar a lição</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>All files (*)</source>
+        <translation>Todos os ficheiros (*)</translation>
     </message>
     <message>
         <location line="+16"/>
@@ -1977,7 +2004,7 @@
 <context>
     <name>lb::MainWindow</name>
     <message>
-        <location filename="../../app/main_window.cpp" line="+81"/>
+        <location filename="../../app/main_window.cpp" line="+82"/>
         <source>Light</source>
         <translation>Luz</translation>
     </message>
@@ -2205,8 +2232,8 @@
     </message>
     <message>
         <location line="+1"/>
-        <source>Shader pairs and scene files (*.vert *.frag *.json);;All files (*)</source>
-        <translation>Pares de shaders e ficheiros de cena (*.vert *.frag *.json);;Todos os ficheiros (*)</translation>
+        <source>Shader pairs and scene files (*.vert *.frag *.json *.lbscene);;All files (*)</source>
+        <translation>Pares de shaders e ficheiros de cena (*.vert *.frag *.json *.lbscene);;Todos os ficheiros (*)</translation>
     </message>
     <message>
         <location line="+22"/>
@@ -3714,9 +3741,19 @@
 <context>
     <name>lb::SceneActions</name>
     <message>
-        <location filename="../../app/scene_actions.cpp" line="+33"/>
-        <source>Scenes (*.json);;All files (*)</source>
-        <translation>Cenas (*.json);;Todos os ficheiros (*)</translation>
+        <location filename="../../app/scene_actions.cpp" line="+34"/>
+        <source>Scenes (*.lbscene *.json);;All files (*)</source>
+        <translation>Cenas (*.lbscene *.json);;Todos os ficheiros (*)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Scenes (*.json)</source>
+        <translation>Cenas (*.json)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>lightbench scenes (*.lbscene)</source>
+        <translation>Cenas do lightbench (*.lbscene)</translation>
     </message>
     <message>
         <location line="+19"/>
@@ -3913,12 +3950,17 @@
         <translation>Abrir uma cena</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+13"/>
         <source>Save the scene</source>
         <translation>Guardar a cena</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+2"/>
+        <source>All files (*)</source>
+        <translation>Todos os ficheiros (*)</translation>
+    </message>
+    <message>
+        <location line="+16"/>
         <source>Export the view</source>
         <translation>Exportar a vista</translation>
     </message>

@@ -14,7 +14,8 @@ using namespace lb;
 
 namespace {
 const QString kSlides = QStringLiteral(LB_TEST_DATA "/../../resources/lessons/slides.json");
-}
+const QString kExample = QStringLiteral(LB_TEST_DATA "/../../resources/examples/toon.json");
+} // namespace
 
 namespace {
 CommandLineResult parse(const QString &args)
@@ -99,6 +100,38 @@ private slots:
         QVERIFY(!r.commandLine);
         QVERIFY(r.message.contains("--probe"));
         QVERIFY(r.message.contains("--camera-orbit"));
+    }
+
+    // --version: the version of CMake's project() and nothing else, exit 0.
+    void version()
+    {
+        for (const char *option : {"--version", "-v"}) {
+            const CommandLineResult r = parse(option);
+            QCOMPARE(r.exitCode, 0);
+            QVERIFY(!r.commandLine);
+            QCOMPARE(r.message, QString("lightbench " LB_PROJECT_VERSION "\n"));
+        }
+        QVERIFY(parse("--help").message.startsWith("Usage: lightbench [options] [FILE...]\n"));
+    }
+
+    // FILE... (the desktop's `lightbench %F`) is for the window to open, made absolute and
+    // read there (nothing is read here: a missing file or a FIFO is the window's to say);
+    // with --grade, the submissions as before.
+    void fileArgumentsOpenInTheWindow()
+    {
+        const CommandLineResult r = parse("a.lbscene /nowhere/b.json --shading flat c.lblesson");
+        QVERIFY2(r.commandLine, qPrintable(r.message));
+        QVERIFY(!r.commandLine->headless());
+        QCOMPARE(r.commandLine->filePaths,
+                 QStringList({QDir::current().absoluteFilePath("a.lbscene"), "/nowhere/b.json",
+                              QDir::current().absoluteFilePath("c.lblesson")}));
+        QVERIFY(r.commandLine->scenePath.isEmpty() && r.commandLine->lessonPath.isEmpty());
+        QVERIFY(parse("--screenshot s.png a.lbscene").commandLine); // the window, then a grab
+        QVERIFY(parse("--shading flat").commandLine->filePaths.isEmpty());
+        const CommandLineResult grade = parse("--grade x.vert y --exercise e.json");
+        QVERIFY2(grade.commandLine, qPrintable(grade.message));
+        QCOMPARE(grade.commandLine->submissions, QStringList({"x.vert", "y"}));
+        QVERIFY(grade.commandLine->filePaths.isEmpty());
     }
 
     // --object lists the objects; the object options apply to the last one named.
@@ -256,8 +289,18 @@ private slots:
                                         << "teapot";
         QTest::newRow("missing value") << "--shape"
                                        << "shape";
-        QTest::newRow("stray argument") << "sphere"
-                                        << "sphere";
+        // FILE... opens in the window: beside a headless mode, --scene or --lesson, refused.
+        QTest::newRow("stray argument, render") << "--render a.png sphere"
+                                                << "unexpected argument 'sphere'";
+        QTest::newRow("stray argument, probe") << "--probe 1,1 a.lbscene"
+                                               << "unexpected argument 'a.lbscene'";
+        QTest::newRow("stray argument, save-scene") << "--save-scene s.json a.lblesson"
+                                                    << "unexpected argument 'a.lblesson'";
+        QTest::newRow("file beside lesson") << "--lesson " + kSlides + " b.lbscene"
+                                            << "--lesson: opens one file in the window; "
+                                               "'b.lbscene' is another";
+        QTest::newRow("file beside scene") << "--scene " + kExample + " b.lbscene"
+                                           << "--scene: opens one file";
     }
 
     // A lesson's step is the scene, as --scene's file would be; its program comes along.

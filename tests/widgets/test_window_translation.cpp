@@ -122,8 +122,8 @@ private slots:
               "kein tempor\u00e4rer Ordner (%1)");
         t.add("lb::SettingsStore", "%1: cannot be written", "%1: nicht schreibbar");
         t.add("lb::MainWindow", "Not checked: timed out", "Nicht gepr\u00fcft: zu lange");
-        t.add("lb::SceneActions", "Scenes (*.json);;All files (*)",
-              "Szenen (*.json);;Alle Dateien (*)");
+        t.add("lb::SceneActions", "Scenes (*.lbscene *.json);;All files (*)",
+              "Szenen (*.lbscene *.json);;Alle Dateien (*)");
         QVERIFY(QCoreApplication::installTranslator(&m_translator));
     }
     void cleanupTestCase() { QCoreApplication::removeTranslator(&m_translator); }
@@ -314,7 +314,7 @@ private slots:
                 open = a;
         QVERIFY(open);
         open->trigger(); // returns once the dialog is rejected
-        QCOMPARE(filters, QStringList({"Szenen (*.json)", "Alle Dateien (*)"}));
+        QCOMPARE(filters, QStringList({"Szenen (*.lbscene *.json)", "Alle Dateien (*)"}));
     }
 
     // A cancelled load says so on the status line and is no error, also when the loader's
