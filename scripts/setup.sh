@@ -14,6 +14,9 @@ PACKAGES=(cmake g++ make qt6-base-dev libqt6opengl6-dev qt6-qpa-plugins libglm-d
           qt6-tools-dev qt6-l10n-tools qt6-translations-l10n libqscintilla2-qt6-l10n)
 # Only the tests need these: Debian's corpus of ~600 model files, valid and broken.
 TEST_PACKAGES=(assimp-testmodels)
+# Only scripts/package needs these: dpkg-shlibdeps (dpkg-dev) and `file` for the package's
+# dependencies, and the checkers of the package and of the desktop's files it installs.
+PACKAGE_PACKAGES=(dpkg-dev file lintian desktop-file-utils appstream shared-mime-info man-db)
 
 # ensure_packages [EXTRA...]: installs whatever of PACKAGES and EXTRA is missing.
 ensure_packages() {

@@ -1,16 +1,15 @@
 #include "import_process.h"
 
 #include "bounded_read.h"
+#include "helper_program.h"
 #include "message_text.h"
 #include "scene_budget.h"
 
 #include <QBuffer>
-#include <QCoreApplication>
 #include <QDir>
 #include <QEventLoop>
 #include <QFileInfo>
 #include <QImageReader>
-#include <QStandardPaths>
 
 #include <algorithm>
 #include <csignal>
@@ -140,14 +139,7 @@ ImportProcess::~ImportProcess()
 
 QString ImportProcess::helperPath()
 {
-    const QString fromEnvironment = qEnvironmentVariable("LIGHTBENCH_IMPORT_HELPER");
-    if (!fromEnvironment.isEmpty())
-        return fromEnvironment;
-    const QString beside = QCoreApplication::applicationDirPath() + "/lightbench-import";
-    if (QFileInfo(beside).isExecutable())
-        return beside;
-    const QString onPath = QStandardPaths::findExecutable("lightbench-import");
-    return onPath.isEmpty() ? beside : onPath;
+    return helperProgramPath(QStringLiteral("lightbench-import"), "LIGHTBENCH_IMPORT_HELPER");
 }
 
 QStringList ImportProcess::filePatterns()

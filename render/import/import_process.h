@@ -54,7 +54,8 @@ public:
     // Loads and waits (runs an event loop meanwhile); needs a QCoreApplication.
     static ImportResult import(const QString &path, const ImportLimits &limits = {});
 
-    // The helper: $LIGHTBENCH_IMPORT_HELPER, else lightbench-import beside the executable.
+    // The helper: $LIGHTBENCH_IMPORT_HELPER, else lightbench-import beside the executable, in
+    // the installed libexec folder or on the PATH (helper_program.h).
     static QString helperPath();
     // The patterns of every format Assimp reads ("*.obj", ...), asked of the helper once.
     static QStringList filePatterns();

@@ -1,11 +1,9 @@
 #include "trial_process.h"
 
+#include "helper_program.h"
 #include "work_guard.h"
 
-#include <QCoreApplication>
 #include <QEventLoop>
-#include <QFileInfo>
-#include <QStandardPaths>
 
 namespace lb {
 
@@ -36,14 +34,7 @@ TrialProcess::~TrialProcess()
 
 QString TrialProcess::helperPath()
 {
-    const QString fromEnvironment = qEnvironmentVariable("LIGHTBENCH_TRIAL_HELPER");
-    if (!fromEnvironment.isEmpty())
-        return fromEnvironment;
-    const QString beside = QCoreApplication::applicationDirPath() + "/lightbench-trial";
-    if (QFileInfo(beside).isExecutable())
-        return beside;
-    const QString onPath = QStandardPaths::findExecutable("lightbench-trial");
-    return onPath.isEmpty() ? beside : onPath;
+    return helperProgramPath(QStringLiteral("lightbench-trial"), "LIGHTBENCH_TRIAL_HELPER");
 }
 
 qint64 TrialProcess::helperPid() const

@@ -52,7 +52,8 @@ public:
     // Unavailable.
     bool isAvailable() const { return m_available; }
 
-    // $LIGHTBENCH_TRIAL_HELPER, else lightbench-trial beside the executable or on the PATH.
+    // $LIGHTBENCH_TRIAL_HELPER, else lightbench-trial beside the executable, in the installed
+    // libexec folder or on the PATH (helper_program.h).
     static QString helperPath();
 
 signals:
