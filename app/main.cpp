@@ -25,6 +25,7 @@
 
 #include <QApplication>
 #include <QGuiApplication>
+#include <QIcon>
 #include <QLocale>
 #include <QMessageBox>
 #include <QSettings>
@@ -78,6 +79,8 @@ int main(int argc, char **argv)
     }
     QCoreApplication::setOrganizationName("lightbench");
     QCoreApplication::setApplicationName("lightbench");
+    // The installed menu entry's id: Wayland docks and task bars match the window to it.
+    QGuiApplication::setDesktopFileName(QStringLiteral(LIGHTBENCH_APP_ID));
 
     if (!cl.sceneIgnored.isEmpty() && cl.headless()) // the window shows them in a message
         std::fprintf(stderr, "lightbench: %s: ignored: %s\n",
@@ -121,6 +124,10 @@ int main(int argc, char **argv)
     // above keep the system's locale, and write numbers with QString::number and JSON.
     QLocale::setDefault(QLocale(QLocale::English, QLocale::UnitedStates));
     QApplication app(argc, argv);
+    QIcon icon;
+    for (const int size : {64, 256})
+        icon.addFile(QString(":/icons/%1-%2.png").arg(LIGHTBENCH_APP_ID).arg(size));
+    QApplication::setWindowIcon(icon);
     // The settings file is written whole or not at all (settings_store.h).
     lb::SettingsStore store(QSettings().fileName());
     if (!store.error().isEmpty())

@@ -22,9 +22,14 @@ QString installedHelperDir()
     return QStringLiteral(LB_HELPERS_FROM_BINDIR);
 }
 
-QString helperProgramPath(const QString &name, const char *environmentVariable,
+QString helperProgramPath(const QString &givenName, const char *environmentVariable,
                           const QString &executableDir)
 {
+#ifdef Q_OS_WIN
+    const QString name = givenName + QStringLiteral(".exe");
+#else
+    const QString &name = givenName;
+#endif
     const QString fromEnvironment = qEnvironmentVariable(environmentVariable);
     if (!fromEnvironment.isEmpty())
         return fromEnvironment;
