@@ -880,7 +880,7 @@
     <message>
         <location line="+1"/>
         <source>lightbench opens one scene or lesson at a time, the first file given (%1); the files below were not opened. Open them with File &gt; Open Scene or File &gt; Open Lesson.</source>
-        <translation>lightbench öffnet eine Szene oder Lektion auf einmal, die erste angegebene Datei (%1); die Dateien unten wurden nicht geöffnet. Öffnen Sie sie mit Datei &gt; Szene öffnen oder Datei &gt; Lektion öffnen.</translation>
+        <translation>lightbench öffnet jeweils nur eine Szene oder Lektion: die erste angegebene Datei (%1). Die Dateien unten wurden nicht geöffnet. Öffnen Sie sie mit Datei &gt; Szene öffnen oder Datei &gt; Lektion öffnen.</translation>
     </message>
 </context>
 <context>
