@@ -2,14 +2,13 @@
 
 #include "safe_write.h"
 #include "scene_file.h"
+#include "signal_names.h"
 
 #include <QCoreApplication>
 #include <QDir>
 #include <QProcess>
 #include <QTemporaryDir>
 #include <QTimer>
-
-#include <cstring>
 
 namespace lb {
 
@@ -35,7 +34,7 @@ QString endedWithoutReport(const QProcess &child)
         //: %2 is the C library's name of the signal, in English ("Segmentation fault")
         return WorkCheck::tr("killed by signal %1 (%2)")
             .arg(child.exitCode())
-            .arg(QString::fromLatin1(strsignal(child.exitCode())));
+            .arg(platform::signalName(child.exitCode()));
     return WorkCheck::tr("exit code %1").arg(child.exitCode());
 }
 

@@ -1,33 +1,31 @@
 #include "confined_io_system.h"
 
+#include "file_status.h"
+#include "read_only_file.h"
+
 #include <assimp/IOStream.hpp>
 
 #include <algorithm>
 #include <cctype>
-#include <cerrno>
-#include <climits>
-#include <cstdio>
-#include <cstdlib>
 #include <cstring>
+#include <memory>
 #include <utility>
-
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 namespace lb {
 
 namespace {
 
-// The path with links, "." and ".." resolved, or empty (errno says why).
+// The path with links, "." and ".." resolved, or empty (`error` says why). Folders are
+// separated by '/' on every system, as the names Assimp gives are.
+std::string resolved(const std::string &path, platform::FileError &error)
+{
+    return platform::resolvedPath(path, error).generic_string();
+}
+
 std::string resolved(const std::string &path)
 {
-    char *r = ::realpath(path.c_str(), nullptr);
-    if (!r)
-        return {};
-    std::string result(r);
-    std::free(r);
-    return result;
+    platform::FileError error;
+    return resolved(path, error);
 }
 
 std::string folderOf(const std::string &path)
@@ -53,17 +51,20 @@ std::string sizeText(std::uint64_t bytes)
     return std::to_string((bytes + unit - 1) / unit) + (mega ? " MB" : " KiB");
 }
 
-const char *kindOf(mode_t mode)
+const char *kindOf(platform::FileKind kind)
 {
-    if (S_ISFIFO(mode))
+    switch (kind) {
+    case platform::FileKind::Fifo:
         return "a FIFO";
-    if (S_ISDIR(mode))
+    case platform::FileKind::Folder:
         return "a folder";
-    if (S_ISCHR(mode) || S_ISBLK(mode))
+    case platform::FileKind::Device:
         return "a device";
-    if (S_ISSOCK(mode))
+    case platform::FileKind::Socket:
         return "a socket";
-    return "not a file";
+    default:
+        return "not a file";
+    }
 }
 
 bool endsWithMtl(const std::string &path)
@@ -76,24 +77,26 @@ bool endsWithMtl(const std::string &path)
     return tail == ".mtl";
 }
 
-// A file opened for reading, read through stdio's buffer (as Assimp's own stream does), never
-// past the size that was checked: a file that grows meanwhile reads as it was.
+// A file opened for reading, never read past the size that was checked: a file that grows
+// meanwhile reads as it was.
 class BoundedStream : public Assimp::IOStream
 {
 public:
-    BoundedStream(std::FILE *file, std::uint64_t size) : m_file(file), m_size(size) {}
-    ~BoundedStream() override { std::fclose(m_file); }
+    BoundedStream(std::unique_ptr<platform::ReadOnlyFile> file, std::uint64_t size)
+        : m_file(std::move(file)), m_size(size)
+    {
+    }
 
     size_t Read(void *buffer, size_t size, size_t count) override
     {
         if (size == 0 || count == 0 || m_pos >= m_size)
             return 0;
         const size_t items = std::min<std::uint64_t>(count, (m_size - m_pos) / size);
-        const size_t n = std::fread(buffer, size, items, m_file);
+        const size_t n = m_file->read(buffer, size, items);
         if (n == items) {
             m_pos += std::uint64_t(n) * size;
         } else { // shrunk meanwhile, or a read error: where are we now
-            const off_t at = ftello(m_file);
+            const long long at = m_file->position();
             m_pos = at < 0 ? m_size : std::uint64_t(at);
         }
         return n;
@@ -107,8 +110,7 @@ public:
                                : origin == aiOrigin_CUR ? (long long)m_pos
                                                         : (long long)m_size;
         const long long target = origin == aiOrigin_SET ? (long long)offset : base + delta;
-        if (target < 0 || std::uint64_t(target) > m_size ||
-            fseeko(m_file, off_t(target), SEEK_SET) != 0)
+        if (target < 0 || std::uint64_t(target) > m_size || !m_file->seek(std::uint64_t(target)))
             return aiReturn_FAILURE;
         m_pos = std::uint64_t(target);
         return aiReturn_SUCCESS;
@@ -118,7 +120,7 @@ public:
     void Flush() override {}
 
 private:
-    std::FILE *m_file;
+    std::unique_ptr<platform::ReadOnlyFile> m_file;
     std::uint64_t m_size;
     std::uint64_t m_pos = 0;
 };
@@ -162,34 +164,38 @@ void ConfinedIOSystem::note(const std::string &problem) const
         m_problems.push_back(problem);
 }
 
-ConfinedIOSystem::Check ConfinedIOSystem::check(const std::string &path, int fd) const
+ConfinedIOSystem::Check ConfinedIOSystem::check(const std::string &path,
+                                                const platform::FileStatus *opened) const
 {
+    using platform::FileError;
     Check c;
-    const std::string real = resolved(path);
-    if (real.empty()) {
-        c.missing = errno == ENOENT;
+    FileError error;
+    const std::string real = resolved(path, error);
+    if (error) {
+        c.missing = error.code == FileError::Missing;
         c.problem = shown(path) + ": " +
-                    (c.missing        ? std::string("no such file")
-                     : errno == ELOOP ? std::string("a loop of symbolic links")
-                                      : std::string(std::strerror(errno)));
+                    (c.missing                       ? std::string("no such file")
+                     : error.code == FileError::Loop ? std::string("a loop of symbolic links")
+                                                     : error.reason);
         return c;
     }
     // The mesh itself may be anywhere (the user chose it); what it names stays below it.
     const bool isMesh = real == m_meshResolved;
-    struct stat st;
-    if ((fd >= 0 ? ::fstat(fd, &st) : ::stat(real.c_str(), &st)) != 0) {
-        c.problem = shown(path) + ": " + std::strerror(errno);
+    const platform::FileStatus st =
+        opened ? *opened : platform::fileStatus(real, platform::Links::Follow);
+    if (st.error) {
+        c.problem = shown(path) + ": " + st.error.reason;
         return c;
     }
-    if (!S_ISREG(st.st_mode)) {
-        c.problem = shown(path) + ": not a regular file (" + kindOf(st.st_mode) + ")";
+    if (st.kind != platform::FileKind::Regular) {
+        c.problem = shown(path) + ": not a regular file (" + kindOf(st.kind) + ")";
         return c;
     }
     if (!isMesh && (m_root.empty() || real.compare(0, m_root.size(), m_root) != 0)) {
         c.problem = shown(path) + ": outside the mesh's folder";
         return c;
     }
-    c.size = std::uint64_t(st.st_size);
+    c.size = st.size;
     const bool library = !isMesh && endsWithMtl(path);
     const std::uint64_t limit =
         library ? std::min(m_maxBytes, kMaxMaterialLibraryBytes) : m_maxBytes;
@@ -236,26 +242,21 @@ Assimp::IOStream *ConfinedIOSystem::Open(const char *path, const char *mode)
             note(c.problem);
         return nullptr;
     }
-    // Checked again on what was opened (the name may point elsewhere by now); O_NONBLOCK so
-    // that a FIFO put there meanwhile does not hang the open itself.
-    const std::string real = resolved(path);
-    const int fd = ::open(real.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY | O_NOFOLLOW);
-    if (fd < 0) {
-        note(shown(path) + ": " + std::strerror(errno));
+    // Checked again on what was opened (the name may point elsewhere by now), which is only
+    // a regular file, opened without waiting (read_only_file.h).
+    platform::FileStatus opened;
+    std::unique_ptr<platform::ReadOnlyFile> file =
+        platform::ReadOnlyFile::open(resolved(path), opened);
+    if (opened.error) {
+        note(shown(path) + ": " + opened.error.reason);
         return nullptr;
     }
-    c = check(path, fd);
-    std::FILE *file = nullptr;
-    if (c.problem.empty()) {
-        ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);
-        file = ::fdopen(fd, "rb");
-    }
-    if (!file) {
-        note(c.problem.empty() ? shown(path) + ": " + std::strerror(errno) : c.problem);
-        ::close(fd);
+    c = check(path, &opened);
+    if (!c.problem.empty() || !file) {
+        note(c.problem.empty() ? shown(path) + ": not a regular file (not a file)" : c.problem);
         return nullptr;
     }
-    return new BoundedStream(file, c.size);
+    return new BoundedStream(std::move(file), c.size);
 }
 
 void ConfinedIOSystem::Close(Assimp::IOStream *stream)

@@ -6,7 +6,8 @@
 // most files whole), and, for the files the mesh refers to, inside the mesh's folder tree
 // after links are resolved (a glTF buffer "../../../etc/passwd" would be drawn as vertices).
 // What is refused is kept as a line for the user; Assimp decides whether it can do without
-// the file (a material library: yes; a glTF buffer: no). Plain C++ and POSIX: helper only.
+// the file (a material library: yes; a glTF buffer: no). Plain C++ and the platform room's
+// file_status.h and read_only_file.h: helper only.
 
 #include <assimp/DefaultIOSystem.h>
 
@@ -15,6 +16,10 @@
 #include <vector>
 
 namespace lb {
+
+namespace platform {
+struct FileStatus;
+}
 
 class ConfinedIOSystem : public Assimp::DefaultIOSystem
 {
@@ -44,8 +49,9 @@ private:
         bool missing = false;
         std::uint64_t size = 0;
     };
-    // Checks `path` (no file is opened); `fd` >= 0: checks that open file instead of stat().
-    Check check(const std::string &path, int fd = -1) const;
+    // Checks `path` (no file is opened); `opened`: checks the status of the file opened
+    // instead of the name's.
+    Check check(const std::string &path, const platform::FileStatus *opened = nullptr) const;
     void note(const std::string &problem) const;
     std::string shown(const std::string &path) const;
 

@@ -4,6 +4,7 @@
 #include "helper_program.h"
 #include "message_text.h"
 #include "scene_budget.h"
+#include "signal_names.h"
 
 #include <QBuffer>
 #include <QDir>
@@ -13,9 +14,6 @@
 
 #include <algorithm>
 #include <csignal>
-#include <cstring>
-
-#include <unistd.h>
 
 namespace lb {
 
@@ -33,9 +31,11 @@ QString crashMessage(int signal)
     case SIGABRT:
         return ImportProcess::tr("the importer crashed with an abort while reading this file; the "
                                  "workbench is fine");
+#ifdef SIGBUS // POSIX's, not standard C's
     case SIGBUS:
         return ImportProcess::tr("the importer crashed with a bus error while reading this file; "
                                  "the workbench is fine");
+#endif
     case SIGFPE:
         return ImportProcess::tr("the importer crashed with an arithmetic error while reading "
                                  "this file; the workbench is fine");
@@ -46,7 +46,7 @@ QString crashMessage(int signal)
         //: %1 a signal's number, %2 the system's name for it
         return ImportProcess::tr("the importer crashed with signal %1 (%2) while reading this "
                                  "file; the workbench is fine")
-            .arg(QString::number(signal), QString::fromLocal8Bit(strsignal(signal)));
+            .arg(QString::number(signal), platform::signalName(signal));
     }
 }
 

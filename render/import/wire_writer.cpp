@@ -1,9 +1,6 @@
 #include "wire_writer.h"
 
-#include <cerrno>
-#include <cstring>
-
-#include <unistd.h>
+#include "stream_output.h"
 
 namespace lb::wire {
 
@@ -11,7 +8,7 @@ namespace {
 constexpr std::size_t kBufferBytes = 1 << 20;
 }
 
-Writer::Writer(int fd) : m_fd(fd)
+Writer::Writer(platform::StreamOutput &out) : m_out(out)
 {
     m_buffer.reserve(kBufferBytes);
     write(kMagic, sizeof kMagic);
@@ -57,17 +54,8 @@ void Writer::flush()
 
 void Writer::writeAll(const char *p, std::size_t size)
 {
-    while (m_ok && size > 0) {
-        const ssize_t n = ::write(m_fd, p, size);
-        if (n < 0 && errno == EINTR)
-            continue;
-        if (n <= 0) {
-            m_ok = false; // the reader went away
-            break;
-        }
-        p += n;
-        size -= std::size_t(n);
-    }
+    if (m_ok && size > 0 && !m_out.writeAll(p, size))
+        m_ok = false; // the reader went away
 }
 
 } // namespace lb::wire

@@ -1,6 +1,6 @@
 #pragma once
-// Writes the import stream (wire.h) to a file descriptor through a buffer. Used by the
-// helper only; plain C++.
+// Writes the import stream (wire.h) to the helper's standard output (platform/stream_output.h)
+// through a buffer. Used by the helper only; plain C++.
 
 #include "wire.h"
 
@@ -8,12 +8,16 @@
 #include <string>
 #include <vector>
 
+namespace lb::platform {
+class StreamOutput;
+}
+
 namespace lb::wire {
 
 class Writer
 {
 public:
-    explicit Writer(int fd);
+    explicit Writer(platform::StreamOutput &out);
     ~Writer();
     Writer(const Writer &) = delete;
     Writer &operator=(const Writer &) = delete;
@@ -31,7 +35,7 @@ public:
 private:
     void writeAll(const char *p, std::size_t size);
 
-    int m_fd;
+    platform::StreamOutput &m_out;
     bool m_ok = true;
     std::vector<char> m_buffer;
 };

@@ -1,15 +1,12 @@
 #include "bounded_read.h"
 
+#include "file_status.h"
 #include "message_text.h"
 #include "safe_write.h"
 
 #include <QCoreApplication>
 #include <QFile>
 #include <QFileInfo>
-
-#include <cerrno>
-#include <cstring>
-#include <sys/stat.h>
 
 namespace lb {
 
@@ -36,16 +33,17 @@ QString noun(const char *phrase)
 
 QString missingFileReason(const QString &path)
 {
-    struct stat st;
-    if (::stat(QFile::encodeName(path).constData(), &st) == 0)
+    using platform::FileError;
+    const platform::FileStatus st =
+        platform::fileStatus(platform::nativePath(path), platform::Links::Follow);
+    if (!st.error)
         return Text::tr("no such file"); // it came meanwhile; say what was seen
-    if (errno == ELOOP)
+    if (st.error.code == FileError::Loop)
         return Text::tr("a loop of symbolic links");
-    if (errno == ENOENT && QFileInfo(path).isSymLink())
+    if (st.error.code == FileError::Missing && QFileInfo(path).isSymLink())
         return Text::tr("a symbolic link to %1, which does not exist")
             .arg(shown(QFileInfo(path).symLinkTarget()));
-    return errno == ENOENT ? Text::tr("no such file")
-                           : QString::fromLocal8Bit(std::strerror(errno));
+    return st.error.code == FileError::Missing ? Text::tr("no such file") : st.error.text();
 }
 
 QString sizeForMessage(qint64 bytes)

@@ -1,5 +1,7 @@
 #include "safe_write.h"
 
+#include "exclusive_file.h"
+#include "file_status.h"
 #include "message_text.h"
 #include "png_encoder.h"
 
@@ -11,15 +13,9 @@
 #include <QImageWriter>
 #include <QRandomGenerator>
 
-#include <cerrno>
-#include <climits>
-#include <csignal>
-#include <cstring>
-#include <fcntl.h>
+#include <filesystem>
 #include <memory>
 #include <mutex>
-#include <sys/stat.h>
-#include <unistd.h>
 
 namespace lb {
 
@@ -37,23 +33,20 @@ QString shown(const QString &path)
     return echoedValue(path, 300);
 }
 
-QString systemReason(int error)
-{
-    return QString::fromLocal8Bit(std::strerror(error));
-}
-
 // Where the bytes go: the file at the end of the target's symbolic links (the links stay
 // links), or why there is none that may be replaced.
 struct Target
 {
     QString path; // resolved
     bool exists = false;
-    mode_t mode = 0; // the old file's permissions, kept by the new one
-    QString error;   // "GIVEN: why"
+    unsigned permissions = 0; // the old file's, kept by the new one
+    QString error;            // "GIVEN: why"
 };
 
 Target resolveTarget(const QString &given)
 {
+    using platform::FileError;
+    using platform::FileKind;
     Target t;
     QString path = given;
     const auto fail = [&](const QString &why) {
@@ -62,44 +55,45 @@ Target resolveTarget(const QString &given)
     };
     // As the kernel counts: more links than this in a row is a loop.
     for (int links = 0; links <= 40; ++links) {
-        const QByteArray native = QFile::encodeName(path);
-        struct stat st;
-        if (::lstat(native.constData(), &st) != 0) {
-            if (errno == ELOOP)
-                return fail(Text::tr("a loop of symbolic links"));
-            if (errno != ENOENT)
-                return fail(systemReason(errno));
+        const platform::FileStatus st =
+            platform::fileStatus(platform::nativePath(path), platform::Links::Keep);
+        if (st.error.code == FileError::Loop)
+            return fail(Text::tr("a loop of symbolic links"));
+        if (st.error.code == FileError::Missing)
             break; // a new file
-        }
-        if (S_ISLNK(st.st_mode)) {
-            QByteArray link(PATH_MAX, '\0');
-            const ssize_t n = ::readlink(native.constData(), link.data(), std::size_t(link.size()));
-            if (n < 0)
-                return fail(systemReason(errno));
-            link.truncate(int(n));
-            path = QDir(QFileInfo(path).absolutePath()).absoluteFilePath(QFile::decodeName(link));
+        if (st.error)
+            return fail(st.error.text());
+        if (st.kind == FileKind::Link) {
+            FileError error;
+            const std::filesystem::path link =
+                platform::linkTarget(platform::nativePath(path), error);
+            if (error)
+                return fail(error.text());
+            path = QDir(QFileInfo(path).absolutePath())
+                       .absoluteFilePath(platform::fromNativePath(link));
             if (links == 40)
                 return fail(Text::tr("a loop of symbolic links"));
             continue;
         }
-        if (!S_ISREG(st.st_mode))
+        if (st.kind != FileKind::Regular)
             return fail(
                 Text::tr("not a regular file (a device, a pipe or a folder); not replaced"));
         t.exists = true;
-        t.mode = st.st_mode & 07777;
+        t.permissions = st.permissions;
         break;
     }
     // The temporary file is made in the target's folder, so that folder must take one.
     const QString folder = QFileInfo(path).absolutePath();
-    const QByteArray nativeFolder = QFile::encodeName(folder);
-    struct stat st;
-    if (::stat(nativeFolder.constData(), &st) != 0)
-        return fail(errno == ENOENT ? Text::tr("the folder %1 does not exist").arg(shown(folder))
-                                    : QString("%1: %2").arg(shown(folder), systemReason(errno)));
-    if (!S_ISDIR(st.st_mode))
+    const platform::FileStatus st =
+        platform::fileStatus(platform::nativePath(folder), platform::Links::Follow);
+    if (st.error)
+        return fail(st.error.code == FileError::Missing
+                        ? Text::tr("the folder %1 does not exist").arg(shown(folder))
+                        : QString("%1: %2").arg(shown(folder), st.error.text()));
+    if (st.kind != FileKind::Folder)
         return fail(Text::tr("%1 is not a folder").arg(shown(folder)));
-    if (::access(nativeFolder.constData(), W_OK | X_OK) != 0)
-        return fail(Text::tr("cannot write in %1: %2").arg(shown(folder), systemReason(errno)));
+    if (const FileError refused = platform::creatingFilesRefused(platform::nativePath(folder)))
+        return fail(Text::tr("cannot write in %1: %2").arg(shown(folder), refused.text()));
     t.path = path;
     return t;
 }
@@ -109,86 +103,56 @@ class PendingFile
 {
 public:
     explicit PendingFile(Target target) : m_target(std::move(target)) {}
-    PendingFile(const PendingFile &) = delete;
-    PendingFile &operator=(const PendingFile &) = delete;
-    ~PendingFile() { discard(); }
 
     // Writes `bytes` to a new temporary file beside the target; empty or why not.
     QString write(const QByteArray &bytes)
     {
-        if (!open())
-            return failed(errno);
+        if (const platform::FileError error = open())
+            return failed(error);
         if (m_target.exists) // the permissions the old file had, not the umask's
-            ::fchmod(m_fd, m_target.mode);
-        for (qint64 done = 0; done < bytes.size();) {
-            const ssize_t n =
-                ::write(m_fd, bytes.constData() + done, std::size_t(bytes.size() - done));
-            if (n < 0 && errno == EINTR)
-                continue;
-            if (n <= 0)
-                return failed(n < 0 ? errno : ENOSPC);
-            done += n;
-        }
-        // Some file systems report a full disk or a quota only here (NFS) or at close.
-        if (::fsync(m_fd) != 0 && errno != EINVAL && errno != EROFS)
-            return failed(errno);
-        const int fd = std::exchange(m_fd, -1);
-        if (::close(fd) != 0 && errno != EINTR)
-            return failed(errno);
+            m_file.keepPermissions(m_target.permissions);
+        if (const platform::FileError error =
+                m_file.writeAll(bytes.constData(), std::size_t(bytes.size())))
+            return failed(error);
+        if (const platform::FileError error = m_file.finish())
+            return failed(error);
         return {};
     }
 
     // Puts the written temporary in the target's place; empty or why not.
     QString commit()
     {
-        if (::rename(m_temp.constData(), QFile::encodeName(m_target.path).constData()) != 0)
-            return failed(errno);
-        m_temp.clear();
+        if (const platform::FileError error = m_file.commitOver(m_target.path))
+            return failed(error);
         return {};
     }
 
 private:
-    bool open()
+    platform::FileError open()
     {
         const QString base = QFileInfo(m_target.path).fileName();
         const QString folder = QFileInfo(m_target.path).absolutePath();
+        platform::FileError error;
         for (int attempt = 0; attempt < 100; ++attempt) {
             const QString name =
                 QString(".%1.%2.tmp")
                     .arg(base.left(200))
                     .arg(QRandomGenerator::global()->generate(), 8, 16, QLatin1Char('0'));
-            m_temp = QFile::encodeName(QDir(folder).filePath(name));
-            // 0666 less the umask, as any new file; O_EXCL: never someone else's file.
-            m_fd = ::open(m_temp.constData(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-            if (m_fd >= 0)
-                return true;
-            if (errno != EEXIST) {
-                m_temp.clear();
-                return false;
-            }
+            error = m_file.create(QDir(folder).filePath(name));
+            if (error.code != platform::FileError::Exists)
+                break;
         }
-        m_temp.clear();
-        return false;
+        return error;
     }
 
-    QString failed(int error)
+    QString failed(const platform::FileError &error)
     {
-        discard();
-        return QString("%1: %2").arg(shown(m_target.path), systemReason(error));
-    }
-
-    void discard()
-    {
-        if (m_fd >= 0)
-            ::close(std::exchange(m_fd, -1));
-        if (!m_temp.isEmpty())
-            ::unlink(m_temp.constData());
-        m_temp.clear();
+        m_file.discard();
+        return QString("%1: %2").arg(shown(m_target.path), error.text());
     }
 
     Target m_target;
-    QByteArray m_temp; // the temporary's path while it exists
-    int m_fd = -1;
+    platform::ExclusiveFile m_file; // removed as this goes, unless committed
 };
 
 } // namespace
@@ -196,7 +160,7 @@ private:
 void reportFileSizeLimitAsError()
 {
     static std::once_flag once;
-    std::call_once(once, [] { std::signal(SIGXFSZ, SIG_IGN); });
+    std::call_once(once, [] { platform::reportFileSizeLimitAsError(); });
 }
 
 QString unwritableTarget(const QString &path)

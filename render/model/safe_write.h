@@ -11,6 +11,8 @@
 //   exceeded", "File too large", "Permission denied").
 // Not QSaveFile: Qt 6.4's commit() renames the temporary over the target even when the flush
 // at its close failed (ENOSPC on a full disk), which left a 0-byte scene and reported success.
+// The system's calls are the platform room's (render/platform: file_status.h for the checks,
+// exclusive_file.h for the temporary); its portable layer cannot flush to the disk.
 
 #include <QByteArray>
 #include <QImage>

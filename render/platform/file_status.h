@@ -1,0 +1,83 @@
+#pragma once
+// What a path is (a regular file, a folder, a link, a FIFO, a device), with or without
+// following its links, and the system's own words when it cannot be told: the checks the
+// writer (safe_write) and the readers (bounded_read, the import helper's confined files) make
+// before they touch a file. Linux asks lstat, stat, readlink, realpath and access; the
+// portable layer asks std::filesystem (and QFileInfo where the standard has nothing), which
+// gives the same answers except where noted in portable/file_status.cpp.
+
+#include <QFile>
+#include <QString>
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+
+namespace lb::platform {
+
+// Why a call on a path failed. The callers word their messages from the code and show
+// `reason` for the rest, so that a user reads what the system said ("Not a directory").
+struct FileError
+{
+    enum Code {
+        None,
+        Missing, // no such file (ENOENT)
+        Loop,    // a loop of symbolic links (ELOOP)
+        Exists,  // a new file's name is taken (EEXIST)
+        Other,   // anything else: `reason` says it
+    };
+    Code code = None;
+    std::string reason; // the system's words, in the local 8-bit encoding; empty for None
+
+    explicit operator bool() const { return code != None; }
+    QString text() const { return QString::fromLocal8Bit(reason.c_str()); }
+};
+
+enum class FileKind { Unknown, Regular, Folder, Link, Fifo, Device, Socket, Other };
+
+struct FileStatus
+{
+    FileKind kind = FileKind::Unknown; // Unknown when `error` is set
+    FileError error;
+    std::uint64_t size = 0;   // a regular file's bytes
+    unsigned permissions = 0; // the 07777 bits, numbered as POSIX does (0644: rw-r--r--)
+};
+
+enum class Links { Follow, Keep };
+
+// The status of `path` itself (Links::Keep: a link is a Link) or of what its links lead to.
+FileStatus fileStatus(const std::filesystem::path &path, Links links);
+
+// What the symbolic link `link` says, as it says it (relative to the link's folder unless it
+// is absolute); empty with `error` set when it cannot be read.
+std::filesystem::path linkTarget(const std::filesystem::path &link, FileError &error);
+
+// `path` with every link, "." and ".." resolved, for a file that exists; empty with `error`
+// set when there is none (Missing, Loop, or the system's reason).
+std::filesystem::path resolvedPath(const std::filesystem::path &path, FileError &error);
+
+// Why this process may not create files in the folder `folder` (None when it may).
+FileError creatingFilesRefused(const std::filesystem::path &folder);
+
+// A Qt path as the system's calls take it: the bytes QFile would hand them, so that a name
+// that is not valid Unicode still names the same file.
+inline std::filesystem::path nativePath(const QString &path)
+{
+#ifdef Q_OS_WIN
+    return std::filesystem::path(path.toStdWString());
+#else
+    return std::filesystem::path(QFile::encodeName(path).toStdString());
+#endif
+}
+
+// The other way: a path the system gave (a link's target) as Qt shows it.
+inline QString fromNativePath(const std::filesystem::path &path)
+{
+#ifdef Q_OS_WIN
+    return QString::fromStdWString(path.wstring());
+#else
+    return QFile::decodeName(QByteArray::fromStdString(path.string()));
+#endif
+}
+
+} // namespace lb::platform
