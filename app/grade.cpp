@@ -229,8 +229,10 @@ QString signalName(int signal)
         return "SIGINT";
     case SIGTERM:
         return "SIGTERM";
+#ifdef SIGHUP // POSIX's, not standard C's
     case SIGHUP:
         return "SIGHUP";
+#endif
     }
     return QString("signal %1").arg(signal);
 }
@@ -370,7 +372,9 @@ int runGradeOne(const CommandLine &cl)
 
 int runGrade(const CommandLine &cl)
 {
-    std::signal(SIGPIPE, SIG_IGN); // stdout piped into a reader that went: the CSV still counts
+#ifdef SIGPIPE // POSIX's: stdout piped into a reader that went; the CSV still counts
+    std::signal(SIGPIPE, SIG_IGN);
+#endif
     const ExerciseFile e = readExerciseFile(cl.exercisePath);
     if (!e.error.isEmpty()) {
         printLine("lightbench: --exercise: " + e.error, stderr);

@@ -49,7 +49,7 @@ QJsonArray bytes(const glm::vec3 &v)
 // it, the context) is the system's to free, at once; tearing it all down took about 50 ms of
 // a 1M-triangle --render (issue 14). The sanitizer build tears down as usual, so that its leak
 // check sees the whole run. A helper still running when this process ends is killed by the
-// system (PR_SET_PDEATHSIG in import_main.cpp), as ~ImportProcess would have done.
+// system (platform::dieWithParent() in import_main.cpp; Linux only), as ~ImportProcess would have done.
 int leave(int code)
 {
 #ifdef LIGHTBENCH_SANITIZE

@@ -266,11 +266,13 @@ QString ImportProcess::describeFailure(int exitCode, QProcess::ExitStatus status
     if (m_reader->failed())
         return m_reader->error();
     if (status == QProcess::CrashExit) {
+#if defined(SIGXCPU) && defined(SIGKILL) // POSIX's (setrlimit's signals); not standard C's
         if (exitCode == SIGXCPU)
             return tr("gave up after %1 s of CPU time (the import time limit)")
                 .arg(m_limits.seconds);
         if (exitCode == SIGKILL)
             return tr("the import helper was killed (by the system, for memory?)");
+#endif
         return crashMessage(exitCode);
     }
     if (exitCode == wire::kExitOutOfMemory)

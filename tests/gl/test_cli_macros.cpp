@@ -15,8 +15,10 @@
 
 namespace {
 
+#ifndef LIGHTBENCH_SANITIZE
 // Far above what lightbench needs (llvmpipe included), far below the 24 GB the bomb took.
 constexpr rlim_t kAddressSpaceCap = rlim_t(3) << 30;
+#endif
 
 struct Run
 {
