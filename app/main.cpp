@@ -59,9 +59,13 @@ int main(int argc, char **argv)
     // The command line is checked before Qt starts, so a bad one answers even with no display.
     const lb::CommandLineResult parsed = lb::parseCommandLine(rawArguments(argc, argv));
     if (!parsed.commandLine) {
-        if (parsed.exitCode == 0)
+        if (parsed.exitCode == 0) { // --help, --version: a full disk or a closed pipe is said
             std::fputs(qPrintable(parsed.message), stdout);
-        else
+            if (std::fflush(stdout) != 0 || std::ferror(stdout)) {
+                std::fputs("lightbench: could not write to standard output\n", stderr);
+                return 1;
+            }
+        } else
             std::fprintf(stderr, "lightbench: %s\n", qPrintable(parsed.message));
         return parsed.exitCode;
     }

@@ -9,6 +9,7 @@
 
 #include <QElapsedTimer>
 #include <QFileDialog>
+#include <QFileInfo>
 
 using namespace lb;
 using namespace lb::test;
@@ -306,6 +307,17 @@ private slots:
         QCOMPARE(version.exitCode(), 0);
         QCOMPARE(version.readAllStandardOutput(),
                  QByteArray("lightbench " LB_PROJECT_VERSION "\n"));
+
+        // Bad input: standard output on a full disk. The version is not written, and it says so.
+        if (QFileInfo::exists("/dev/full")) {
+            QProcess full;
+            full.setProcessEnvironment(env);
+            full.setStandardOutputFile("/dev/full");
+            full.start(LIGHTBENCH_EXE, {"--version"});
+            QVERIFY(full.waitForFinished(30000));
+            QCOMPARE(full.exitCode(), 1);
+            QVERIFY(full.readAllStandardError().contains("could not write to standard output"));
+        }
     }
 };
 
