@@ -38,9 +38,9 @@ bool openFileArguments(MainWindow &window, const QStringList &paths)
     const QString &first = paths.first();
     bool opened = false;
     if (fileKind(first) == FileKind::Lesson) {
-        opened = window.lessonActions()->open(first, 0);
+        opened = window.lessonActions()->openAsking(first, 0);
     } else {
-        opened = window.sceneActions()->open(first);
+        opened = window.sceneActions()->openAsking(first);
         if (opened) // the last session's lesson gives way to the scene asked for
             window.lessonActions()->closeLesson();
     }

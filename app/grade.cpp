@@ -29,9 +29,6 @@
 #include <cstdio>
 #include <functional>
 
-#ifdef __linux__
-#endif
-
 namespace lb {
 
 namespace {

@@ -59,7 +59,7 @@ int main(int argc, char **argv)
     // The command line is checked before Qt starts, so a bad one answers even with no display.
     const lb::CommandLineResult parsed = lb::parseCommandLine(rawArguments(argc, argv));
     if (!parsed.commandLine) {
-        if (parsed.exitCode == 0) { // --help, --version: a full disk or a closed pipe is said
+        if (parsed.exitCode == 0) { // --help, --version: a full disk is said
             std::fputs(qPrintable(parsed.message), stdout);
             if (std::fflush(stdout) != 0 || std::ferror(stdout)) {
                 std::fputs("lightbench: could not write to standard output\n", stderr);
@@ -154,9 +154,16 @@ int main(int argc, char **argv)
         limits.seconds = cl.importSeconds.value_or(limits.seconds);
         window.meshActions()->setSessionLimits(limits);
     }
+    // Someone is there to answer: quit, close, another scene (FILE... included) and Reset
+    // Everything ask Save / Discard / Cancel before unsaved work is set aside. A scripted run
+    // (--screenshot, --bench-edits) has no one to answer and must never wait: it never asks.
+    if (cl.screenshotPath.isEmpty() && cl.benchEdits == 0)
+        window.setUnsavedWorkAsker(lb::askAboutUnsavedWork);
     // A scene file opens as File > Open Scene would (its message included), a lesson as File
     // > Open Lesson would, at its step; the options given beside them apply on top. FILE...
-    // (the desktop's) open the same way, and one that cannot be opened is said in the window.
+    // (the desktop's) open the same way, asking first about the last session's unsaved work
+    // (a double-clicked file must not set it aside unasked), and one that cannot be opened is
+    // said in the window.
     if (!cl.lessonPath.isEmpty())
         window.lessonActions()->open(cl.lessonPath, cl.lessonStep - 1);
     else if (!cl.scenePath.isEmpty()) {
@@ -177,11 +184,6 @@ int main(int argc, char **argv)
     }
     if (cl.hasUserProgram() && !cl.programFromScene) // opened as File > Open Shaders would
         window.shaderDocument().openFiles({cl.vertexPath, cl.fragmentPath});
-    // Someone is there to answer: quit, close, another scene and Reset Everything ask Save /
-    // Discard / Cancel before unsaved work is set aside. A scripted run (--screenshot,
-    // --bench-edits above) has no one to answer and must never wait: it closes without asking.
-    if (cl.screenshotPath.isEmpty())
-        window.setUnsavedWorkAsker(lb::askAboutUnsavedWork);
     window.show();
     if (cl.presentation)
         window.setPresentation(true);

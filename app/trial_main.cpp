@@ -4,6 +4,7 @@
 
 #include "catalogue.h"
 #include "process_bounds.h"
+#include "stream_output.h"
 #include "trial_server.h"
 
 #include <QGuiApplication>
@@ -14,6 +15,7 @@ int main(int argc, char **argv)
 {
     // Goes with the window: a helper must not outlive it, stuck in a draw.
     lb::platform::dieWithParent();
+    lb::platform::useBinaryStandardStreams(); // the messages are bytes (trial_wire.h)
     QGuiApplication app(argc, argv);
     lb::installCatalogueFromWindow(app); // a refusal's reason in the window's language
     return lb::runTrialServer(stdin, stdout);

@@ -1,7 +1,7 @@
 #include "bounded_read.h"
 
-#include "file_status.h"
 #include "message_text.h"
+#include "qt_paths.h"
 #include "safe_write.h"
 
 #include <QCoreApplication>
@@ -43,7 +43,8 @@ QString missingFileReason(const QString &path)
     if (st.error.code == FileError::Missing && QFileInfo(path).isSymLink())
         return Text::tr("a symbolic link to %1, which does not exist")
             .arg(shown(QFileInfo(path).symLinkTarget()));
-    return st.error.code == FileError::Missing ? Text::tr("no such file") : st.error.text();
+    return st.error.code == FileError::Missing ? Text::tr("no such file")
+                                               : platform::errorText(st.error);
 }
 
 QString sizeForMessage(qint64 bytes)

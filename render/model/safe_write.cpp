@@ -1,9 +1,9 @@
 #include "safe_write.h"
 
 #include "exclusive_file.h"
-#include "file_status.h"
 #include "message_text.h"
 #include "png_encoder.h"
+#include "qt_paths.h"
 
 #include <QBuffer>
 #include <QCoreApplication>
@@ -62,13 +62,13 @@ Target resolveTarget(const QString &given)
         if (st.error.code == FileError::Missing)
             break; // a new file
         if (st.error)
-            return fail(st.error.text());
+            return fail(platform::errorText(st.error));
         if (st.kind == FileKind::Link) {
             FileError error;
             const std::filesystem::path link =
                 platform::linkTarget(platform::nativePath(path), error);
             if (error)
-                return fail(error.text());
+                return fail(platform::errorText(error));
             path = QDir(QFileInfo(path).absolutePath())
                        .absoluteFilePath(platform::fromNativePath(link));
             if (links == 40)
@@ -89,11 +89,12 @@ Target resolveTarget(const QString &given)
     if (st.error)
         return fail(st.error.code == FileError::Missing
                         ? Text::tr("the folder %1 does not exist").arg(shown(folder))
-                        : QString("%1: %2").arg(shown(folder), st.error.text()));
+                        : QString("%1: %2").arg(shown(folder), platform::errorText(st.error)));
     if (st.kind != FileKind::Folder)
         return fail(Text::tr("%1 is not a folder").arg(shown(folder)));
     if (const FileError refused = platform::creatingFilesRefused(platform::nativePath(folder)))
-        return fail(Text::tr("cannot write in %1: %2").arg(shown(folder), refused.text()));
+        return fail(
+            Text::tr("cannot write in %1: %2").arg(shown(folder), platform::errorText(refused)));
     t.path = path;
     return t;
 }
@@ -148,7 +149,7 @@ private:
     QString failed(const platform::FileError &error)
     {
         m_file.discard();
-        return QString("%1: %2").arg(shown(m_target.path), error.text());
+        return QString("%1: %2").arg(shown(m_target.path), platform::errorText(error));
     }
 
     Target m_target;

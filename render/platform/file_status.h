@@ -4,10 +4,8 @@
 // writer (safe_write) and the readers (bounded_read, the import helper's confined files) make
 // before they touch a file. Linux asks lstat, stat, readlink, realpath and access; the
 // portable layer asks std::filesystem (and QFileInfo where the standard has nothing), which
-// gives the same answers except where noted in portable/file_status.cpp.
-
-#include <QFile>
-#include <QString>
+// gives the same answers except where noted in portable/file_status.cpp. No Qt here: the
+// import helper uses it and links no Qt (qt_paths.h has the conversions for Qt's side).
 
 #include <cstdint>
 #include <filesystem>
@@ -30,7 +28,6 @@ struct FileError
     std::string reason; // the system's words, in the local 8-bit encoding; empty for None
 
     explicit operator bool() const { return code != None; }
-    QString text() const { return QString::fromLocal8Bit(reason.c_str()); }
 };
 
 enum class FileKind { Unknown, Regular, Folder, Link, Fifo, Device, Socket, Other };
@@ -58,26 +55,5 @@ std::filesystem::path resolvedPath(const std::filesystem::path &path, FileError 
 
 // Why this process may not create files in the folder `folder` (None when it may).
 FileError creatingFilesRefused(const std::filesystem::path &folder);
-
-// A Qt path as the system's calls take it: the bytes QFile would hand them, so that a name
-// that is not valid Unicode still names the same file.
-inline std::filesystem::path nativePath(const QString &path)
-{
-#ifdef Q_OS_WIN
-    return std::filesystem::path(path.toStdWString());
-#else
-    return std::filesystem::path(QFile::encodeName(path).toStdString());
-#endif
-}
-
-// The other way: a path the system gave (a link's target) as Qt shows it.
-inline QString fromNativePath(const std::filesystem::path &path)
-{
-#ifdef Q_OS_WIN
-    return QString::fromStdWString(path.wstring());
-#else
-    return QFile::decodeName(QByteArray::fromStdString(path.string()));
-#endif
-}
 
 } // namespace lb::platform

@@ -9,6 +9,10 @@
 
 namespace lb::platform {
 
+// Standard input and output carry bytes as they are, for the helpers' binary messages:
+// nothing to do on Linux (and macOS); Windows' C runtime would turn "\n" into "\r\n".
+void useBinaryStandardStreams();
+
 class StreamOutput
 {
 public:

@@ -8,6 +8,7 @@
 #include "exclusive_file.h"
 #include "file_status.h"
 #include "process_bounds.h"
+#include "qt_paths.h"
 #include "read_only_file.h"
 #include "signal_names.h"
 
@@ -119,7 +120,7 @@ private slots:
         QCOMPARE(bool(st.error), error != FileError::None);
         QCOMPARE(st.error.reason.empty(), error == FileError::None);
         if (!reason.isEmpty())
-            QCOMPARE(st.error.text(), reason);
+            QCOMPARE(errorText(st.error), reason);
     }
 
     void sizeAndPermissions()
@@ -156,7 +157,7 @@ private slots:
         QVERIFY(QFile::setPermissions(at("closed"), QFile::ReadOwner | QFile::ExeOwner));
         const FileError refused = creatingFilesRefused(native(at("closed")));
         QFile::setPermissions(at("closed"), QFile::ReadOwner | QFile::WriteOwner | QFile::ExeOwner);
-        QCOMPARE(refused.text(), QString("Permission denied"));
+        QCOMPARE(errorText(refused), QString("Permission denied"));
     }
 
     // A temporary file: never an existing name (not even a link's, which would write through

@@ -1,5 +1,7 @@
 #include "exclusive_file.h"
 
+#include <QFile>
+
 #include "posix_file.h"
 
 #include <csignal>

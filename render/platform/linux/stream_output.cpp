@@ -12,6 +12,8 @@ struct StreamOutput::Channel
     int fd = -1;
 };
 
+void useBinaryStandardStreams() {} // POSIX streams are binary
+
 StreamOutput::StreamOutput() : m_channel(new Channel)
 {
     // The stream gets stdout's descriptor to itself; anything an importer prints on stdout

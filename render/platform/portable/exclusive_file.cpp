@@ -1,4 +1,5 @@
 #include "exclusive_file.h"
+#include "qt_paths.h"
 
 #include <QFileInfo>
 

@@ -2,11 +2,15 @@
 
 #include <cstdio>
 
+#ifdef _WIN32 // the one system whose C runtime translates line ends on stdin and stdout
+#include <fcntl.h>
+#include <io.h>
+#endif
+
 // Standard C++ cannot move a descriptor: the stream shares stdout with anything an importer
 // prints there. Assimp speaks through its logger, which the helper does not attach; a reader
 // that printed on stdout all the same would break the stream, and the workbench would refuse
 // it as broken (a message, not a wrong mesh). Nor can standard C++ size a pipe.
-// On Windows stdout would also need binary mode (_setmode), or "\n" becomes "\r\n".
 
 namespace lb::platform {
 
@@ -14,7 +18,18 @@ struct StreamOutput::Channel
 {
 };
 
-StreamOutput::StreamOutput() : m_channel(new Channel) {}
+void useBinaryStandardStreams()
+{
+#ifdef _WIN32
+    _setmode(_fileno(stdin), _O_BINARY);
+    _setmode(_fileno(stdout), _O_BINARY);
+#endif
+}
+
+StreamOutput::StreamOutput() : m_channel(new Channel)
+{
+    useBinaryStandardStreams();
+}
 
 StreamOutput::~StreamOutput()
 {
