@@ -5,9 +5,10 @@
 # files, and the headless modes and the window run from there. Bad inputs it tries: a shader
 # with a syntax error (--check), a wrong program (--grade), a broken OBJ (--mesh: the import
 # helper's own reason, not "cannot start"); and no installed file may name this build tree.
-#   test_installed_tree.sh CMAKE BUILD_DIR SOURCE_DIR
+#   test_installed_tree.sh CMAKE BUILD_DIR SOURCE_DIR [--sanitized]
 set -euo pipefail
 cmake=$1 build=$2 source=$3
+shift 3
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/lightbench-install-test.XXXXXX")
 trap 'rm -rf "$tmp"' EXIT
 # Stripped, as the package is: debug information (the sanitizer build's -g1) names the build
@@ -15,4 +16,4 @@ trap 'rm -rf "$tmp"' EXIT
 "$cmake" --install "$build" --prefix "$tmp/installed" --strip >"$tmp/install.log" ||
     { cat "$tmp/install.log" >&2; exit 1; }
 mv "$tmp/installed" "$tmp/moved"
-"$source/scripts/check_installed_tree" --build-dir "$build" "$tmp/moved"
+"$source/scripts/check_installed_tree" --build-dir "$build" "$@" "$tmp/moved"
