@@ -21,14 +21,14 @@ struct FileArguments
 
 } // namespace
 
-FileKind fileKind(const QString &path)
+DocumentKind documentKind(const QString &path)
 {
     const QString suffix = QFileInfo(path).suffix().toLower();
     if (suffix == "lblesson")
-        return FileKind::Lesson;
+        return DocumentKind::Lesson;
     if (suffix == "lbscene")
-        return FileKind::Scene;
-    return LessonActions::isLessonFile(path) ? FileKind::Lesson : FileKind::Scene;
+        return DocumentKind::Scene;
+    return LessonActions::isLessonFile(path) ? DocumentKind::Lesson : DocumentKind::Scene;
 }
 
 bool openFileArguments(MainWindow &window, const QStringList &paths)
@@ -37,7 +37,7 @@ bool openFileArguments(MainWindow &window, const QStringList &paths)
         return false;
     const QString &first = paths.first();
     bool opened = false;
-    if (fileKind(first) == FileKind::Lesson) {
+    if (documentKind(first) == DocumentKind::Lesson) {
         opened = window.lessonActions()->openAsking(first, 0);
     } else {
         opened = window.sceneActions()->openAsking(first);

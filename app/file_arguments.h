@@ -11,12 +11,12 @@ namespace lb {
 
 class MainWindow;
 
-enum class FileKind { Scene, Lesson };
+enum class DocumentKind { Scene, Lesson };
 
 // A .lblesson file is a lesson and a .lbscene file a scene, whatever they hold (opening
 // one that is not says why); any other (.json, the course's files) is a lesson when it says
 // so at its start ("format": "lightbench-lesson"), else a scene.
-FileKind fileKind(const QString &path);
+DocumentKind documentKind(const QString &path);
 
 // Opens `paths`' first file in `window`; true when it opened. One that cannot be opened (a
 // missing file, a folder, a pipe, not a scene) leaves the window as it was, with the

@@ -156,7 +156,7 @@ MainWindow::MainWindow(QSettings &settings, QWidget *parent)
     connect(
         m_meshActions, &MeshActions::sceneFileDropped, m_sceneActions,
         [this](const QString &path) {
-            if (fileKind(path) == FileKind::Lesson)
+            if (documentKind(path) == DocumentKind::Lesson)
                 m_lessons->openAsking(path);
             else
                 m_sceneActions->openAsking(path);

@@ -57,22 +57,23 @@ private slots:
         const QString sceneJson = writeScene("scene.json", 40);
         const QString sceneAsLesson = writeScene("scene.lblesson", 40);
         QVERIFY(!lessonJson.isEmpty() && !sceneJson.isEmpty() && !sceneAsLesson.isEmpty());
-        QCOMPARE(fileKind(lessonJson), FileKind::Lesson);
-        QCOMPARE(fileKind(sceneJson), FileKind::Scene);
-        QCOMPARE(fileKind(sceneAsLesson), FileKind::Lesson); // opening it says it is not one
+        QCOMPARE(documentKind(lessonJson), DocumentKind::Lesson);
+        QCOMPARE(documentKind(sceneJson), DocumentKind::Scene);
+        QCOMPARE(documentKind(sceneAsLesson),
+                 DocumentKind::Lesson); // opening it says it is not one
         QVERIFY(QFile::copy(lessonJson, m_dir.filePath("lesson.lbscene")));
-        QCOMPARE(fileKind(m_dir.filePath("lesson.lbscene")), FileKind::Scene);
+        QCOMPARE(documentKind(m_dir.filePath("lesson.lbscene")), DocumentKind::Scene);
         QVERIFY(QFile::copy(lessonJson, m_dir.filePath("lesson.txt")));
-        QCOMPARE(fileKind(m_dir.filePath("lesson.txt")), FileKind::Lesson);
-        QCOMPARE(fileKind(m_dir.filePath("L.LBLESSON")), FileKind::Lesson); // in any case
+        QCOMPARE(documentKind(m_dir.filePath("lesson.txt")), DocumentKind::Lesson);
+        QCOMPARE(documentKind(m_dir.filePath("L.LBLESSON")), DocumentKind::Lesson); // in any case
         // Nothing to read: a scene's message will say why.
-        QCOMPARE(fileKind(m_dir.filePath("missing.json")), FileKind::Scene);
-        QCOMPARE(fileKind(m_dir.path()), FileKind::Scene);
+        QCOMPARE(documentKind(m_dir.filePath("missing.json")), DocumentKind::Scene);
+        QCOMPARE(documentKind(m_dir.path()), DocumentKind::Scene);
         const QString fifo = m_dir.filePath("kind-pipe.json");
         QCOMPARE(mkfifo(fifo.toLocal8Bit().constData(), 0600), 0);
         QElapsedTimer clock;
         clock.start();
-        QCOMPARE(fileKind(fifo), FileKind::Scene); // not opened: it would wait for a writer
+        QCOMPARE(documentKind(fifo), DocumentKind::Scene); // not opened: it would wait for a writer
         QVERIFY(clock.elapsed() < 2000);
     }
 
@@ -142,7 +143,7 @@ private slots:
             QVERIFY(!writeScene(name, 50).isEmpty());
         m_window->document().edit([](Scene &s) { s.objects[0].material.shininess = 77; });
         const Scene before = scene();
-        const bool lesson = fileKind(path) == FileKind::Lesson;
+        const bool lesson = documentKind(path) == DocumentKind::Lesson;
         QElapsedTimer clock;
         clock.start();
         QVERIFY(!openFileArguments(*m_window, {path}));
@@ -258,7 +259,7 @@ private slots:
         QVERIFY(saveAs);
         saveAs->trigger();
         QVERIFY(QFileInfo(m_dir.filePath("talk.lblesson")).isFile());
-        QCOMPARE(fileKind(m_dir.filePath("talk.lblesson")), FileKind::Lesson);
+        QCOMPARE(documentKind(m_dir.filePath("talk.lblesson")), DocumentKind::Lesson);
         QVERIFY(readLessonFile(m_dir.filePath("talk.lblesson")).lesson);
     }
 
