@@ -1,0 +1,208 @@
+// --grade-one: one submission graded in the batch's child process (grade.h): the reference's
+// frames, then the student's program built and tried within bounds, then its frames measured
+// against the reference's, case by case. Whatever happens, one line of JSON on stdout says it.
+#include "grade.h"
+
+#include "grading.h"
+#include "grading_files.h"
+#include "grading_report.h"
+#include "import_process.h"
+#include "message_text.h"
+#include "offscreen.h"
+#include "process_bounds.h"
+#include "program_guard.h"
+#include "safe_write.h"
+#include "scene_budget.h"
+#include "submission.h"
+#include "work_check.h"
+
+#include <QFileInfo>
+#include <QJsonDocument>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <optional>
+
+namespace lb {
+
+namespace {
+
+// "lighting.frag:26: message": the student's file and line. A link error belongs to no one
+// stage; a scene file's program is text inside the file, so its stage is named.
+QString diagnosticText(const Diagnostic &d, const Submission &s)
+{
+    const bool scene = s.vertexPath == s.fragmentPath;
+    QString where;
+    if (d.stage == ShaderStage::Link)
+        where =
+            scene ? escapedName(QFileInfo(s.vertexPath).fileName()) + " (link)" : QString("link");
+    else
+        where =
+            escapedName(QFileInfo(d.stage == ShaderStage::Fragment ? s.fragmentPath : s.vertexPath)
+                            .fileName()) +
+            (scene ? QString(" (%1)").arg(stageName(d.stage)) : QString());
+    return d.line > 0 ? QString("%1:%2: %3").arg(where).arg(d.line).arg(d.message)
+                      : QString("%1: %2").arg(where, d.message);
+}
+
+// "reference fragment:12: message": the exercise's own program, inline in its file.
+QString referenceText(const Diagnostic &d)
+{
+    const QString where = d.stage == ShaderStage::Link
+                              ? QString("reference (link)")
+                              : QString("reference %1").arg(stageName(d.stage));
+    return d.line > 0 ? QString("%1:%2: %3").arg(where).arg(d.line).arg(d.message)
+                      : QString("%1: %2").arg(where, d.message);
+}
+
+// Meshes and images the exercise's scene names, read into `offscreen`; "" or why not.
+QString loadSceneFiles(OffscreenRenderer &offscreen, const Scene &scene)
+{
+    QStringList done;
+    for (const ObjectSettings &o : scene.objects) {
+        if (!o.meshPath.isEmpty() && !done.contains(o.meshPath)) {
+            const ImportResult r = ImportProcess::import(o.meshPath);
+            if (!r.ok())
+                return r.error;
+            offscreen.addMeshFile(r.file);
+            done << o.meshPath;
+        }
+    }
+    return offscreen.readTextureFiles(scene);
+}
+
+} // namespace
+
+int runGradeOne(const CommandLine &cl)
+{
+    // Goes with the batch or the window that started it, even one killed with SIGKILL.
+    platform::dieWithParent();
+    GradingReport out;
+    const auto finish = [&](const QString &status, const QString &diagnostic = {}) {
+        out.status = status;
+        out.diagnostic = diagnostic;
+        printLine(
+            QString::fromUtf8(QJsonDocument(gradingReportJson(out)).toJson(QJsonDocument::Compact)),
+            stdout);
+        return 0;
+    };
+    const Submission s = readSubmission(cl.gradeOne);
+    const QString name = cl.gradeName.isEmpty() ? s.name : cl.gradeName;
+    out.submission = name;
+    if (!s.error.isEmpty())
+        return finish("unreadable", s.error);
+    const ExerciseFile e = readExerciseFile(cl.exercisePath);
+    if (!e.error.isEmpty())
+        return finish("no exercise", e.error);
+    const Exercise &exercise = *e.file.exercise;
+    const GradingSpec &spec = exercise.grading;
+
+    OffscreenRenderer offscreen;
+    if (const QString error = offscreen.initialize(spec.size); !error.isEmpty())
+        return finish("no OpenGL", error);
+    if (const QString error = loadSceneFiles(offscreen, e.file.scene); !error.isEmpty())
+        return finish("exercise files", error);
+    // An exercise is a scene someone handed out: held to the scene budget as the window and
+    // --render hold it (the same lowered scene for the reference and the student's program).
+    Scene base = e.file.scene;
+    fitToBudget(base, {}, meshBudget());
+    const std::vector<Scene> cases = gradingCases(base, spec, cl.seed);
+
+    // The reference's frames first, then the student's: one program build each.
+    std::vector<QImage> reference;
+    if (exercise.reference.builtIn()) {
+        offscreen.renderer().clearUserProgram();
+        for (Scene c : cases) {
+            c.shading.shading = exercise.reference.shading;
+            c.shading.specular = exercise.reference.specular;
+            reference.push_back(offscreen.render(c));
+        }
+    } else {
+        // The teacher's program is a stranger's too (an exercise handed on): tried as every
+        // submission is. One that loops or is over the budget stops the batch, on its line.
+        const QString &vertex = exercise.reference.vertex, &fragment = exercise.reference.fragment;
+        const auto refused = [&](const Diagnostic &d) {
+            return finish("reference refused", referenceText(d));
+        };
+        std::optional<WorkGuard> guard;
+        guard.emplace(programMemoryKB(), kProgramLimitMs,
+                      [&](WorkGuard::Limit limit, long limitKB) {
+                          refused(guardRefusal(limit, limitKB, vertex, fragment));
+                          std::fflush(nullptr);
+                          std::_Exit(0);
+                      });
+        const ProgramBuild build = offscreen.useProgram(vertex, fragment);
+        if (!build.ok())
+            return finish("reference does not build", build.log());
+        const TrialResult trial = offscreen.tryUserProgram(
+            cases.front(), vertex, fragment, spec.size, kGradingTrialBudgetMs, kCommandLineTrial);
+        if (trial.refusal)
+            return refused(*trial.refusal);
+        guard.reset();
+        for (const Scene &c : cases)
+            reference.push_back(offscreen.render(c));
+    }
+
+    // The driver compiles and tries the student's program within bounds: past one, the
+    // report says so and this process ends (the driver never returns to this thread).
+    std::optional<WorkGuard> guard;
+    guard.emplace(programMemoryKB(), kProgramLimitMs, [&](WorkGuard::Limit limit, long limitKB) {
+        finish("refused", diagnosticText(guardRefusal(limit, limitKB, s.vertex, s.fragment), s));
+        std::fflush(nullptr);
+        std::_Exit(0);
+    });
+    const ProgramBuild build = offscreen.useProgram(s.vertex, s.fragment);
+    if (!build.ok()) {
+        const auto first = std::find_if(
+            build.diagnostics.begin(), build.diagnostics.end(),
+            [](const Diagnostic &d) { return d.severity == Diagnostic::Severity::Error; });
+        const bool compiled = first == build.diagnostics.end() || first->stage == ShaderStage::Link;
+        return finish(compiled ? "does not link" : "does not compile",
+                      first == build.diagnostics.end() ? build.log() : diagnosticText(*first, s));
+    }
+    // An endless loop or a program far too slow is refused before its frames are drawn
+    // (the batch's time limit ends one that hangs anyway).
+    const TrialResult trial = offscreen.tryUserProgram(
+        cases.front(), s.vertex, s.fragment, spec.size, kGradingTrialBudgetMs, kCommandLineTrial);
+    if (trial.refusal)
+        return finish("refused", diagnosticText(*trial.refusal, s));
+    guard.reset(); // the frames below are the batch's time limit's
+
+    int worst = -1;
+    CaseResult worstResult;
+    QImage worstFrame;
+    for (std::size_t k = 0; k < cases.size(); ++k) {
+        const QImage frame = offscreen.render(cases[k]);
+        // A driver that reset its context drew nothing worth grading (a real GPU stopping a
+        // program that ran too long in this case).
+        if (offscreen.wasReset())
+            return finish("GPU reset", QString("the driver reset the context in case %1: a "
+                                               "loop too long for this case?")
+                                           .arg(k));
+        const CaseResult r =
+            measureCase(frame, reference[k], kBackgroundPixel, spec.tolerance, spec.passShare);
+        out.cases.push_back(r);
+        const bool worse =
+            worst < 0 || r.shareWithin < worstResult.shareWithin ||
+            (r.shareWithin == worstResult.shareWithin && r.largest > worstResult.largest);
+        if (worse) {
+            worst = int(k);
+            worstResult = r;
+            worstFrame = frame;
+        }
+    }
+    out.worstCase = worst;
+    if (!cl.sheetsDir.isEmpty()) {
+        const QString path = gradingSheetPath(cl.sheetsDir, name);
+        // A sheet is whole or not there; why not is the submission's diagnostic.
+        out.sheetError =
+            writeImageSafely(path, gradingSheet(name, worstFrame, reference[std::size_t(worst)],
+                                                worstResult, worst));
+        if (out.sheetError.isEmpty())
+            out.sheet = path;
+    }
+    return finish("graded");
+}
+
+} // namespace lb
