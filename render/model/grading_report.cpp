@@ -49,6 +49,11 @@ QJsonObject gradingReportJson(const GradingReport &report)
         out["cases"] = cases;
         out["worstCase"] = report.worstCase;
     }
+    if (report.mistake)
+        out["mistake"] = QJsonObject{{"index", report.mistake->index},
+                                     {"name", report.mistake->name},
+                                     {"hint", report.mistake->hint},
+                                     {"shareWithin", report.mistake->shareWithin}};
     if (!report.sheet.isEmpty())
         out["sheet"] = report.sheet;
     if (!report.sheetError.isEmpty())
@@ -70,6 +75,9 @@ std::optional<GradingReport> readGradingReport(const QByteArray &output)
         r.sheet = o["sheet"].toString();
         r.sheetError = o["sheetError"].toString();
         r.worstCase = o["worstCase"].toInt(-1);
+        if (const QJsonObject m = o["mistake"].toObject(); !m.isEmpty())
+            r.mistake = MistakeMatch{m["index"].toInt(-1), m["name"].toString(),
+                                     m["hint"].toString(), m["shareWithin"].toDouble()};
         for (const QJsonValue &v : o["cases"].toArray()) {
             const QJsonObject c = v.toObject();
             CaseResult cr;

@@ -15,6 +15,16 @@
 
 namespace lb {
 
+// A known mistake of the exercise (exercise.h) whose frames match the student's far better
+// than the reference's do, in the cases that failed: what the reports say to the student.
+struct MistakeMatch
+{
+    int index = -1; // in the exercise's list of mistakes (the window shows its own language)
+    QString name;   // the mistake's short name, as the exercise gives it ("normal matrix")
+    QString hint;   // in English: what the reports on the command line say
+    double shareWithin = 0; // of the failing cases' pixels, student against the mistake
+};
+
 struct GradingReport
 {
     QString submission;
@@ -26,6 +36,7 @@ struct GradingReport
     std::vector<CaseResult> cases;
     int worstCase = -1; // the case the sheet shows
     QString sheet, sheetError;
+    std::optional<MistakeMatch> mistake; // only for a graded submission that failed a case
 
     bool graded() const { return status == "graded"; }
     int passedCount() const;
