@@ -25,6 +25,9 @@ constexpr std::array<const char *, 8> kVaryNames{"light",    "lightW", "lightFra
 constexpr int kMaxCases = 200;
 constexpr int kMaxSide = 2048;
 constexpr int kMaxExerciseTextCharacters = 8000; // a title or a task, in one language
+// A case's points, or the total: enough for any marking scheme, and far from where sums of
+// 200 cases lose whole points to rounding.
+constexpr double kMaxPoints = 1e6;
 
 // Uniform in [lo, hi) from the generator's bits, the same with every standard library
 // (std::uniform_real_distribution is not specified bit for bit).
@@ -59,6 +62,43 @@ QString text(const QJsonObject &o, const char *key)
     return o.value(QLatin1String(key)).toString();
 }
 
+// "points": a total in equal shares, or one per case (read after "cases": the list must have
+// as many). What cannot be used keeps the default, 100 in equal shares, and is named.
+template <typename Ignore>
+void readPoints(const QJsonValue &json, GradingSpec &spec, const Ignore &ignore)
+{
+    const auto usable = [](const QJsonValue &v) {
+        return v.isDouble() && std::isfinite(v.toDouble()) && v.toDouble() >= 0.0 &&
+               v.toDouble() <= kMaxPoints;
+    };
+    if (json.isUndefined())
+        return;
+    if (!json.isArray()) {
+        if (usable(json))
+            spec.points = json.toDouble();
+        else
+            //: %1 the largest number of points ("1000000")
+            ignore("grading.points", Text::tr("not a number of points from 0 to %1, nor a list "
+                                              "of one per case")
+                                         .arg(kMaxPoints, 0, 'f', 0));
+        return;
+    }
+    const QJsonArray list = json.toArray();
+    std::vector<double> each;
+    for (const QJsonValue &v : list)
+        if (usable(v))
+            each.push_back(v.toDouble());
+    if (each.size() != std::size_t(list.size()))
+        ignore("grading.points", Text::tr("each case's points must be a number from 0 to %1")
+                                     .arg(kMaxPoints, 0, 'f', 0));
+    else if (list.size() != spec.cases)
+        //: %1 how many points the list gives, %2 how many cases the exercise has
+        ignore("grading.points",
+               Text::tr("%1 values for %2 cases (one per case)").arg(list.size()).arg(spec.cases));
+    else
+        spec.casePoints = each;
+}
+
 } // namespace
 
 ExerciseRead readExerciseSection(const QJsonValue &json, QStringList *ignored);
@@ -69,6 +109,14 @@ QStringList varyNames()
     for (const char *n : kVaryNames)
         names << QLatin1String(n);
     return names;
+}
+
+std::vector<double> pointsPerCase(const GradingSpec &spec)
+{
+    if (spec.casePoints.size() == std::size_t(spec.cases))
+        return spec.casePoints;
+    return std::vector<double>(std::size_t(std::max(spec.cases, 0)),
+                               spec.cases > 0 ? spec.points / spec.cases : 0.0);
 }
 
 QJsonObject exerciseJson(const Exercise &exercise)
@@ -87,6 +135,9 @@ QJsonObject exerciseJson(const Exercise &exercise)
     for (int i = 0; i < int(kVaryNames.size()); ++i)
         if (g.vary & (1u << i))
             vary.append(QLatin1String(kVaryNames[std::size_t(i)]));
+    QJsonArray casePoints;
+    for (double p : g.casePoints)
+        casePoints.append(p);
     return QJsonObject{
         {"title", exercise.title.isEmpty() ? QJsonValue("") : localizedTextJson(exercise.title)},
         {"task", exercise.task.isEmpty() ? QJsonValue("") : localizedTextJson(exercise.task)},
@@ -95,7 +146,9 @@ QJsonObject exerciseJson(const Exercise &exercise)
                                 {"size", QJsonArray{g.size.width(), g.size.height()}},
                                 {"tolerance", g.tolerance},
                                 {"passShare", g.passShare},
-                                {"vary", vary}}}};
+                                {"vary", vary},
+                                {"points", g.casePoints.empty() ? QJsonValue(g.points)
+                                                                : QJsonValue(casePoints)}}}};
 }
 
 ExerciseRead readExercise(const QJsonValue &json, QStringList *ignored)
@@ -165,6 +218,10 @@ ExerciseRead readExerciseSection(const QJsonValue &json, QStringList *ignored)
     }
 
     const QJsonObject g = o.value("grading").toObject();
+    const QJsonObject knownGrading = exerciseJson(e).value("grading").toObject();
+    for (auto it = g.begin(); it != g.end(); ++it)
+        if (!knownGrading.contains(it.key()))
+            ignore("grading." + it.key(), Text::tr("unknown field"));
     GradingSpec &spec = e.grading;
     const auto number = [&](const char *key, double lo, double hi, auto &value) {
         const QJsonValue v = g.value(QLatin1String(key));
@@ -207,6 +264,7 @@ ExerciseRead readExerciseSection(const QJsonValue &json, QStringList *ignored)
                 spec.vary |= 1u << i;
         }
     }
+    readPoints(g.value("points"), spec, ignore);
     read.exercise = e;
     return read;
 }

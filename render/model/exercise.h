@@ -10,7 +10,8 @@
 //             or {"builtIn": {"shading": "phong", "specular": "phong"}},
 //    "grading": {"cases": 20, "size": [320, 240], "tolerance": 2, "passShare": 0.99,
 //                "vary": ["light", "lightW", "lightFrame", "lightColour", "material",
-//                         "camera", "projection", "scale"]}}
+//                         "camera", "projection", "scale"],
+//                "points": 100}}     (the total in equal shares, or [p0, p1, ...]: one per case)
 
 #include "localized_text.h"
 #include "scene.h"
@@ -57,7 +58,13 @@ struct GradingSpec
     int tolerance = 2;       // per channel, out of 255
     double passShare = 0.99; // a case passes when this share of its pixels is within tolerance
     unsigned vary = kVaryAll;
+    // What the cases are worth: `points` in equal shares, unless `casePoints` gives each
+    // case's own (then it has one per case). A submission scores the points of its passed cases.
+    double points = 100.0;
+    std::vector<double> casePoints;
 };
+// The points of each case, `spec.cases` of them.
+std::vector<double> pointsPerCase(const GradingSpec &spec);
 
 struct Exercise
 {

@@ -97,7 +97,7 @@
 <context>
     <name>lb::BoundedRead</name>
     <message>
-        <location filename="../../render/model/bounded_read.cpp" line="+41"/>
+        <location filename="../../render/model/bounded_read.cpp" line="+40"/>
         <location line="+6"/>
         <source>no such file</source>
         <translation>Datei nicht vorhanden</translation>
@@ -506,7 +506,24 @@
 <context>
     <name>lb::Exercise</name>
     <message>
-        <location filename="../../render/model/exercise.cpp" line="+122"/>
+        <location filename="../../render/model/exercise.cpp" line="+81"/>
+        <source>not a number of points from 0 to %1, nor a list of one per case</source>
+        <extracomment>%1 the largest number of points (&quot;1000000&quot;)</extracomment>
+        <translation>weder eine Punktzahl von 0 bis %1 noch eine Liste mit einer pro Fall</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>each case&apos;s points must be a number from 0 to %1</source>
+        <translation>die Punkte jedes Falls müssen eine Zahl von 0 bis %1 sein</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 values for %2 cases (one per case)</source>
+        <extracomment>%1 how many points the list gives, %2 how many cases the exercise has</extracomment>
+        <translation>%1 Werte für %2 Fälle (einer pro Fall)</translation>
+    </message>
+    <message>
+        <location line="+78"/>
         <source>%1 (%2)</source>
         <extracomment>a field of an exercise as the file spells it (%1, &quot;exercise.grading.cases&quot;) and why it was not used (%2)</extracomment>
         <translation>%1 (%2)</translation>
@@ -518,11 +535,12 @@
     </message>
     <message>
         <location line="+11"/>
+        <location line="+34"/>
         <source>unknown field</source>
         <translation>unbekanntes Feld</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="-26"/>
         <source>%1: needs both a vertex and a fragment shader</source>
         <translation>%1: braucht sowohl einen Vertex- als auch einen Fragment-Shader</translation>
     </message>
@@ -539,7 +557,7 @@
         <translation>%1: kein Referenzprogramm (&quot;reference&quot;: {&quot;vertex&quot;: ..., &quot;fragment&quot;: ...} oder {&quot;builtIn&quot;: {...}})</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+17"/>
         <source>not a number</source>
         <translation>keine Zahl</translation>
     </message>
@@ -886,12 +904,12 @@
 <context>
     <name>lb::FileLimit</name>
     <message>
-        <location filename="../../render/import/import_process.cpp" line="+56"/>
+        <location filename="../../render/import/import_process.cpp" line="+55"/>
         <source>a texture file</source>
         <translation>eine Texturdatei</translation>
     </message>
     <message>
-        <location line="+136"/>
+        <location line="+129"/>
         <source>a mesh file</source>
         <translation>eine Mesh-Datei</translation>
     </message>
@@ -1164,7 +1182,7 @@
 <context>
     <name>lb::ImportProcess</name>
     <message>
-        <location filename="../../render/import/import_process.cpp" line="-161"/>
+        <location filename="../../render/import/import_process.cpp" line="-156"/>
         <source>the importer crashed with a segmentation fault while reading this file; the workbench is fine</source>
         <translation>der Import-Helfer ist beim Lesen dieser Datei mit einem Speicherzugriffsfehler (Segmentation Fault) abgestürzt; die Werkbank arbeitet normal weiter</translation>
     </message>
@@ -1174,12 +1192,12 @@
         <translation>der Import-Helfer ist beim Lesen dieser Datei mit einem Abbruch (Abort) abgestürzt; die Werkbank arbeitet normal weiter</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>the importer crashed with a bus error while reading this file; the workbench is fine</source>
         <translation>der Import-Helfer ist beim Lesen dieser Datei mit einem Busfehler abgestürzt; die Werkbank arbeitet normal weiter</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>the importer crashed with an arithmetic error while reading this file; the workbench is fine</source>
         <translation>der Import-Helfer ist beim Lesen dieser Datei mit einem arithmetischen Fehler abgestürzt; die Werkbank arbeitet normal weiter</translation>
     </message>
@@ -1210,7 +1228,7 @@
         <translation>%1: Der Import-Helfer &apos;%2&apos; kann nicht gestartet werden: %3</translation>
     </message>
     <message>
-        <location line="+69"/>
+        <location line="+62"/>
         <source>%1: not readable (permissions)</source>
         <translation>%1: nicht lesbar (Zugriffsrechte)</translation>
     </message>
@@ -1230,7 +1248,7 @@
         <translation>%1: nach %2 s aufgegeben (die Zeitgrenze für den Import)</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+16"/>
         <source>gave up after %1 s of CPU time (the import time limit)</source>
         <translation>nach %1 s CPU-Zeit aufgegeben (die Zeitgrenze für den Import)</translation>
     </message>
@@ -1240,7 +1258,7 @@
         <translation>der Import-Helfer wurde beendet (vom System, wegen Speichermangel?)</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>out of memory: reading this file needs more than the import memory limit (%1 MB)</source>
         <translation>nicht genug Speicher: Das Lesen dieser Datei braucht mehr als die Speichergrenze für den Import (%1 MB)</translation>
     </message>
@@ -1292,7 +1310,7 @@
     </message>
     <message>
         <location line="+14"/>
-        <location filename="../../app/main.cpp" line="+211"/>
+        <location filename="../../app/main.cpp" line="+230"/>
         <source>Language</source>
         <translation>Sprache</translation>
     </message>
@@ -3679,8 +3697,8 @@
 <context>
     <name>lb::SafeWrite</name>
     <message>
-        <location filename="../../render/model/safe_write.cpp" line="+69"/>
-        <location line="+13"/>
+        <location filename="../../render/model/safe_write.cpp" line="+61"/>
+        <location line="+14"/>
         <source>a loop of symbolic links</source>
         <translation>eine Schleife symbolischer Links</translation>
     </message>
@@ -3690,7 +3708,7 @@
         <translation>keine reguläre Datei (ein Gerät, eine Pipe oder ein Ordner); nicht ersetzt</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+11"/>
         <source>the folder %1 does not exist</source>
         <translation>der Ordner %1 existiert nicht</translation>
     </message>
@@ -3700,12 +3718,12 @@
         <translation>%1 ist kein Ordner</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>cannot write in %1: %2</source>
         <translation>in %1 kann nicht geschrieben werden: %2</translation>
     </message>
     <message>
-        <location line="+136"/>
+        <location line="+106"/>
         <source>no image to write</source>
         <translation>kein Bild zum Schreiben</translation>
     </message>
@@ -3978,13 +3996,13 @@
 <context>
     <name>lb::SceneBudget</name>
     <message>
-        <location filename="../../render/model/scene_budget.cpp" line="+63"/>
+        <location filename="../../render/model/scene_budget.cpp" line="+60"/>
         <location line="+2"/>
         <source>%1 million</source>
         <translation>%1 Millionen</translation>
     </message>
     <message numerus="yes">
-        <location line="+27"/>
+        <location line="+16"/>
         <source>%n object(s) at tessellation %1 would make %2 triangles (~%3)</source>
         <extracomment>what a scene asks for; %n the objects in the scene</extracomment>
         <translation>
@@ -4024,7 +4042,7 @@
         <translation>%1; %2</translation>
     </message>
     <message>
-        <location line="+109"/>
+        <location line="+105"/>
         <source>%1 GB</source>
         <translation>%1 GB</translation>
     </message>
@@ -4907,7 +4925,7 @@
 <context>
     <name>lb::TrialProcess</name>
     <message>
-        <location filename="../../render/trial/trial_process.cpp" line="+176"/>
+        <location filename="../../render/trial/trial_process.cpp" line="+167"/>
         <source>compiling this program and drawing it on small frames did not finish within %1 (the trial&apos;s helper was replaced): an endless or very long loop, or a program too big for the driver?</source>
         <translation>das Kompilieren dieses Programms und das Zeichnen kleiner Testbilder wurde nicht innerhalb von %1 fertig (der Hilfsprozess für die Erprobung wurde ersetzt): eine Endlosschleife oder sehr lange Schleife, oder ein Programm, das zu groß für den Treiber ist?</translation>
     </message>
@@ -5250,7 +5268,7 @@
 <context>
     <name>lb::WorkCheck</name>
     <message>
-        <location filename="../../app/work_check.cpp" line="+36"/>
+        <location filename="../../app/work_check.cpp" line="+35"/>
         <source>killed by signal %1 (%2)</source>
         <extracomment>%2 is the C library&apos;s name of the signal, in English (&quot;Segmentation fault&quot;)</extracomment>
         <translation>durch Signal %1 beendet (%2)</translation>

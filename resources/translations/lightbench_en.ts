@@ -97,7 +97,7 @@
 <context>
     <name>lb::BoundedRead</name>
     <message>
-        <location filename="../../render/model/bounded_read.cpp" line="+41"/>
+        <location filename="../../render/model/bounded_read.cpp" line="+40"/>
         <location line="+6"/>
         <source>no such file</source>
         <translation type="unfinished"></translation>
@@ -506,7 +506,24 @@
 <context>
     <name>lb::Exercise</name>
     <message>
-        <location filename="../../render/model/exercise.cpp" line="+122"/>
+        <location filename="../../render/model/exercise.cpp" line="+81"/>
+        <source>not a number of points from 0 to %1, nor a list of one per case</source>
+        <extracomment>%1 the largest number of points (&quot;1000000&quot;)</extracomment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>each case&apos;s points must be a number from 0 to %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 values for %2 cases (one per case)</source>
+        <extracomment>%1 how many points the list gives, %2 how many cases the exercise has</extracomment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+78"/>
         <source>%1 (%2)</source>
         <extracomment>a field of an exercise as the file spells it (%1, &quot;exercise.grading.cases&quot;) and why it was not used (%2)</extracomment>
         <translation type="unfinished"></translation>
@@ -518,11 +535,12 @@
     </message>
     <message>
         <location line="+11"/>
+        <location line="+34"/>
         <source>unknown field</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="-26"/>
         <source>%1: needs both a vertex and a fragment shader</source>
         <translation type="unfinished"></translation>
     </message>
@@ -539,7 +557,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+17"/>
         <source>not a number</source>
         <translation type="unfinished"></translation>
     </message>
@@ -887,12 +905,12 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../render/import/import_process.cpp" line="+56"/>
+        <location filename="../../render/import/import_process.cpp" line="+55"/>
         <source>a texture file</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+136"/>
+        <location line="+129"/>
         <source>a mesh file</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1159,7 +1177,7 @@
 <context>
     <name>lb::ImportProcess</name>
     <message>
-        <location filename="../../render/import/import_process.cpp" line="-161"/>
+        <location filename="../../render/import/import_process.cpp" line="-156"/>
         <source>the importer crashed with a segmentation fault while reading this file; the workbench is fine</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1169,12 +1187,12 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>the importer crashed with a bus error while reading this file; the workbench is fine</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>the importer crashed with an arithmetic error while reading this file; the workbench is fine</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1205,7 +1223,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+69"/>
+        <location line="+62"/>
         <source>%1: not readable (permissions)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1225,7 +1243,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+16"/>
         <source>gave up after %1 s of CPU time (the import time limit)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1235,7 +1253,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>out of memory: reading this file needs more than the import memory limit (%1 MB)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1287,7 +1305,7 @@
     </message>
     <message>
         <location line="+14"/>
-        <location filename="../../app/main.cpp" line="+211"/>
+        <location filename="../../app/main.cpp" line="+230"/>
         <source>Language</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3671,8 +3689,8 @@
 <context>
     <name>lb::SafeWrite</name>
     <message>
-        <location filename="../../render/model/safe_write.cpp" line="+69"/>
-        <location line="+13"/>
+        <location filename="../../render/model/safe_write.cpp" line="+61"/>
+        <location line="+14"/>
         <source>a loop of symbolic links</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3682,7 +3700,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+11"/>
         <source>the folder %1 does not exist</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3692,12 +3710,12 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>cannot write in %1: %2</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+136"/>
+        <location line="+106"/>
         <source>no image to write</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3970,13 +3988,13 @@
 <context>
     <name>lb::SceneBudget</name>
     <message>
-        <location filename="../../render/model/scene_budget.cpp" line="+63"/>
+        <location filename="../../render/model/scene_budget.cpp" line="+60"/>
         <location line="+2"/>
         <source>%1 million</source>
         <translation type="unfinished"></translation>
     </message>
     <message numerus="yes">
-        <location line="+27"/>
+        <location line="+16"/>
         <source>%n object(s) at tessellation %1 would make %2 triangles (~%3)</source>
         <extracomment>what a scene asks for; %n the objects in the scene</extracomment>
         <translation>
@@ -4016,7 +4034,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+109"/>
+        <location line="+105"/>
         <source>%1 GB</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4897,7 +4915,7 @@
 <context>
     <name>lb::TrialProcess</name>
     <message>
-        <location filename="../../render/trial/trial_process.cpp" line="+176"/>
+        <location filename="../../render/trial/trial_process.cpp" line="+167"/>
         <source>compiling this program and drawing it on small frames did not finish within %1 (the trial&apos;s helper was replaced): an endless or very long loop, or a program too big for the driver?</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5239,7 +5257,7 @@
 <context>
     <name>lb::WorkCheck</name>
     <message>
-        <location filename="../../app/work_check.cpp" line="+36"/>
+        <location filename="../../app/work_check.cpp" line="+35"/>
         <source>killed by signal %1 (%2)</source>
         <extracomment>%2 is the C library&apos;s name of the signal, in English (&quot;Segmentation fault&quot;)</extracomment>
         <translation type="unfinished"></translation>

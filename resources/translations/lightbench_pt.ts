@@ -97,7 +97,7 @@
 <context>
     <name>lb::BoundedRead</name>
     <message>
-        <location filename="../../render/model/bounded_read.cpp" line="+41"/>
+        <location filename="../../render/model/bounded_read.cpp" line="+40"/>
         <location line="+6"/>
         <source>no such file</source>
         <translation>ficheiro inexistente</translation>
@@ -506,7 +506,24 @@
 <context>
     <name>lb::Exercise</name>
     <message>
-        <location filename="../../render/model/exercise.cpp" line="+122"/>
+        <location filename="../../render/model/exercise.cpp" line="+81"/>
+        <source>not a number of points from 0 to %1, nor a list of one per case</source>
+        <extracomment>%1 the largest number of points (&quot;1000000&quot;)</extracomment>
+        <translation>nem um número de pontos de 0 a %1, nem uma lista com um por caso</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>each case&apos;s points must be a number from 0 to %1</source>
+        <translation>os pontos de cada caso devem ser um número de 0 a %1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 values for %2 cases (one per case)</source>
+        <extracomment>%1 how many points the list gives, %2 how many cases the exercise has</extracomment>
+        <translation>%1 valores para %2 casos (um por caso)</translation>
+    </message>
+    <message>
+        <location line="+78"/>
         <source>%1 (%2)</source>
         <extracomment>a field of an exercise as the file spells it (%1, &quot;exercise.grading.cases&quot;) and why it was not used (%2)</extracomment>
         <translation>%1 (%2)</translation>
@@ -518,11 +535,12 @@
     </message>
     <message>
         <location line="+11"/>
+        <location line="+34"/>
         <source>unknown field</source>
         <translation>campo desconhecido</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="-26"/>
         <source>%1: needs both a vertex and a fragment shader</source>
         <translation>%1: precisa de um vertex shader e de um fragment shader</translation>
     </message>
@@ -539,7 +557,7 @@
         <translation>%1: sem programa de referência (&quot;reference&quot;: {&quot;vertex&quot;: ..., &quot;fragment&quot;: ...} ou {&quot;builtIn&quot;: {...}})</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+17"/>
         <source>not a number</source>
         <translation>não é um número</translation>
     </message>
@@ -886,12 +904,12 @@
 <context>
     <name>lb::FileLimit</name>
     <message>
-        <location filename="../../render/import/import_process.cpp" line="+56"/>
+        <location filename="../../render/import/import_process.cpp" line="+55"/>
         <source>a texture file</source>
         <translation>um ficheiro de textura</translation>
     </message>
     <message>
-        <location line="+136"/>
+        <location line="+129"/>
         <source>a mesh file</source>
         <translation>um ficheiro de malha</translation>
     </message>
@@ -1164,7 +1182,7 @@
 <context>
     <name>lb::ImportProcess</name>
     <message>
-        <location filename="../../render/import/import_process.cpp" line="-161"/>
+        <location filename="../../render/import/import_process.cpp" line="-156"/>
         <source>the importer crashed with a segmentation fault while reading this file; the workbench is fine</source>
         <translation>o importador terminou abruptamente com uma falha de segmentação ao ler este ficheiro; a bancada de trabalho não foi afetada</translation>
     </message>
@@ -1174,12 +1192,12 @@
         <translation>o importador terminou abruptamente com um abort ao ler este ficheiro; a bancada de trabalho não foi afetada</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>the importer crashed with a bus error while reading this file; the workbench is fine</source>
         <translation>o importador terminou abruptamente com um erro de barramento (bus error) ao ler este ficheiro; a bancada de trabalho não foi afetada</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>the importer crashed with an arithmetic error while reading this file; the workbench is fine</source>
         <translation>o importador terminou abruptamente com um erro aritmético ao ler este ficheiro; a bancada de trabalho não foi afetada</translation>
     </message>
@@ -1210,7 +1228,7 @@
         <translation>%1: não é possível iniciar o processo auxiliar de importação &apos;%2&apos;: %3</translation>
     </message>
     <message>
-        <location line="+69"/>
+        <location line="+62"/>
         <source>%1: not readable (permissions)</source>
         <translation>%1: não pode ser lido (permissões)</translation>
     </message>
@@ -1230,7 +1248,7 @@
         <translation>%1: abandonado após %2 s (o limite de tempo da importação)</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+16"/>
         <source>gave up after %1 s of CPU time (the import time limit)</source>
         <translation>abandonado após %1 s de tempo de CPU (o limite de tempo da importação)</translation>
     </message>
@@ -1240,7 +1258,7 @@
         <translation>o processo auxiliar de importação foi terminado à força (pelo sistema, por falta de memória?)</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>out of memory: reading this file needs more than the import memory limit (%1 MB)</source>
         <translation>sem memória: ler este ficheiro exige mais do que o limite de memória da importação (%1 MB)</translation>
     </message>
@@ -1292,7 +1310,7 @@
     </message>
     <message>
         <location line="+14"/>
-        <location filename="../../app/main.cpp" line="+211"/>
+        <location filename="../../app/main.cpp" line="+230"/>
         <source>Language</source>
         <translation>Idioma</translation>
     </message>
@@ -3679,8 +3697,8 @@
 <context>
     <name>lb::SafeWrite</name>
     <message>
-        <location filename="../../render/model/safe_write.cpp" line="+69"/>
-        <location line="+13"/>
+        <location filename="../../render/model/safe_write.cpp" line="+61"/>
+        <location line="+14"/>
         <source>a loop of symbolic links</source>
         <translation>um ciclo de ligações simbólicas</translation>
     </message>
@@ -3690,7 +3708,7 @@
         <translation>não é um ficheiro regular (é um dispositivo, um pipe ou uma pasta); não foi substituído</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+11"/>
         <source>the folder %1 does not exist</source>
         <translation>a pasta %1 não existe</translation>
     </message>
@@ -3700,12 +3718,12 @@
         <translation>%1 não é uma pasta</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>cannot write in %1: %2</source>
         <translation>não é possível escrever em %1: %2</translation>
     </message>
     <message>
-        <location line="+136"/>
+        <location line="+106"/>
         <source>no image to write</source>
         <translation>nenhuma imagem para escrever</translation>
     </message>
@@ -3978,13 +3996,13 @@
 <context>
     <name>lb::SceneBudget</name>
     <message>
-        <location filename="../../render/model/scene_budget.cpp" line="+63"/>
+        <location filename="../../render/model/scene_budget.cpp" line="+60"/>
         <location line="+2"/>
         <source>%1 million</source>
         <translation>%1 milhões</translation>
     </message>
     <message numerus="yes">
-        <location line="+27"/>
+        <location line="+16"/>
         <source>%n object(s) at tessellation %1 would make %2 triangles (~%3)</source>
         <extracomment>what a scene asks for; %n the objects in the scene</extracomment>
         <translation>
@@ -4024,7 +4042,7 @@
         <translation>%1; %2</translation>
     </message>
     <message>
-        <location line="+109"/>
+        <location line="+105"/>
         <source>%1 GB</source>
         <translation>%1 GB</translation>
     </message>
@@ -4907,7 +4925,7 @@
 <context>
     <name>lb::TrialProcess</name>
     <message>
-        <location filename="../../render/trial/trial_process.cpp" line="+176"/>
+        <location filename="../../render/trial/trial_process.cpp" line="+167"/>
         <source>compiling this program and drawing it on small frames did not finish within %1 (the trial&apos;s helper was replaced): an endless or very long loop, or a program too big for the driver?</source>
         <translation>compilar este programa e desenhá-lo em fotogramas pequenos não terminou em %1 (o processo auxiliar de teste foi substituído): um ciclo infinito ou muito longo, ou um programa grande demais para o controlador?</translation>
     </message>
@@ -5250,7 +5268,7 @@
 <context>
     <name>lb::WorkCheck</name>
     <message>
-        <location filename="../../app/work_check.cpp" line="+36"/>
+        <location filename="../../app/work_check.cpp" line="+35"/>
         <source>killed by signal %1 (%2)</source>
         <extracomment>%2 is the C library&apos;s name of the signal, in English (&quot;Segmentation fault&quot;)</extracomment>
         <translation>terminado pelo sinal %1 (%2)</translation>
