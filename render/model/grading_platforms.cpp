@@ -1,0 +1,188 @@
+// The result files of the platforms that grade one student per run: GitHub Classroom,
+// Gradescope, Moodle CodeRunner (grading_formats.h says each shape and where it comes from).
+#include "grading_formats.h"
+
+#include "message_text.h"
+
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+
+#include <algorithm>
+#include <cmath>
+
+namespace lb {
+
+namespace {
+
+QString hintText(const GradingReport &report)
+{
+    return report.mistake ? escapedControls(report.mistake->hint.simplified()) : QString();
+}
+
+QString gradedBy(const GradingRun &run)
+{
+    return QString("Graded by lightbench %1 with seed %2.").arg(run.version).arg(run.seed);
+}
+
+// "does not compile: syntax.frag:26: ..." for a submission that was not graded.
+QString notGradedText(const GradingReport &report)
+{
+    const QString diagnostic = escapedLines(report.diagnostic);
+    return diagnostic.isEmpty() ? report.status : report.status + ": " + diagnostic;
+}
+
+// Why nobody was graded: the batch's error, or (a report written before the first submission
+// finished, left by a batch that was stopped) that it was not.
+QString batchErrorText(const GradingRun &run)
+{
+    return run.error.isEmpty() ? QString("not graded: the batch ended before it finished")
+                               : escapedLines(run.error);
+}
+
+QByteArray json(const QJsonObject &object)
+{
+    return QJsonDocument(object).toJson(QJsonDocument::Indented);
+}
+
+} // namespace
+
+QByteArray githubResult(const GradingRun &run, const std::vector<GradedSubmission> &rows)
+{
+    // The reporter prints "name - line N" unless line_no is 0, and test_code under each test;
+    // it sums the tests' scores against max_score for the grade it sends to the classroom.
+    const auto test = [&](const QString &name, const QString &status, double points,
+                          const QString &message, double seconds) {
+        return QJsonObject{
+            {"name", name},
+            {"status", status},
+            {"score", points},
+            {"message", message},
+            {"test_code",
+             QString("lightbench %1 --seed %2, %3").arg(run.version).arg(run.seed).arg(name)},
+            {"filename", ""},
+            {"line_no", 0},
+            {"execution_time", QString("%1s").arg(seconds, 0, 'f', 3)}};
+    };
+    QJsonObject out{{"version", 1},
+                    {"max_score", maxPoints(run)},
+                    {"lightbench", run.version},
+                    {"seed", double(run.seed)}};
+    QJsonArray tests;
+    if (!run.error.isEmpty() || rows.empty()) {
+        out["status"] = "error";
+        tests.append(test("grading", "error", 0, batchErrorText(run), 0));
+    } else {
+        const GradedSubmission &row = rows.front();
+        const GradingReport &r = row.report;
+        out["submission"] = escapedName(row.name);
+        if (!r.graded()) {
+            out["status"] = "error";
+            tests.append(test("grading", "error", 0, notGradedText(r), row.seconds));
+        } else {
+            out["status"] = r.passedCount() == int(r.cases.size()) ? "pass" : "fail";
+            const double each = row.seconds / double(std::max<std::size_t>(1, r.cases.size()));
+            for (int k = 0; k < int(r.cases.size()); ++k) {
+                const bool passed = r.cases[std::size_t(k)].passed;
+                QString message = caseText(run, r, k);
+                if (!passed && r.mistake)
+                    message += "; hint: " + hintText(r);
+                tests.append(test(QString("case %1").arg(k), passed ? "pass" : "fail",
+                                  passed ? pointsOfCase(run, k) : 0.0, message, each));
+            }
+        }
+    }
+    out["tests"] = tests;
+    return json(out);
+}
+
+QByteArray gradescopeResults(const GradingRun &run, const std::vector<GradedSubmission> &rows)
+{
+    QJsonObject out{
+        {"visibility", "visible"},
+        {"stdout_visibility", "hidden"}, // the batch's own lines: for the teacher
+        {"extra_data", QJsonObject{{"lightbench", run.version}, {"seed", double(run.seed)}}}};
+    QJsonArray tests;
+    if (!run.error.isEmpty() || rows.empty()) {
+        out["score"] = 0;
+        out["execution_time"] = 0;
+        out["output"] = "lightbench could not grade this submission: " + batchErrorText(run) +
+                        "\n" + gradedBy(run);
+    } else {
+        const GradedSubmission &row = rows.front();
+        const GradingReport &r = row.report;
+        out["score"] = score(run, r);
+        out["execution_time"] = int(std::ceil(row.seconds)); // whole seconds, as the spec's
+        QString output = r.graded() ? summaryLine(run, row) : notGradedText(r);
+        output += "\n" + gradedBy(run);
+        out["output"] = output;
+        if (!r.graded())
+            tests.append(QJsonObject{{"name", "grading"},
+                                     {"number", "0"},
+                                     {"score", 0},
+                                     {"max_score", maxPoints(run)},
+                                     {"status", "failed"},
+                                     {"output", notGradedText(r)},
+                                     {"visibility", "visible"}});
+        for (int k = 0; r.graded() && k < int(r.cases.size()); ++k) {
+            const bool passed = r.cases[std::size_t(k)].passed;
+            QString caseOutput = caseText(run, r, k);
+            if (!passed && r.mistake)
+                caseOutput += "\nHint: " + hintText(r);
+            const double points = pointsOfCase(run, k);
+            tests.append(QJsonObject{{"name", QString("case %1").arg(k)},
+                                     {"number", QString::number(k)},
+                                     {"score", passed ? points : 0.0},
+                                     {"max_score", points},
+                                     {"status", passed ? "passed" : "failed"},
+                                     {"output", caseOutput},
+                                     {"visibility", "visible"}});
+        }
+    }
+    out["tests"] = tests;
+    return json(out);
+}
+
+QByteArray codeRunnerOutcome(const GradingRun &run, const std::vector<GradedSubmission> &rows)
+{
+    // CodeRunner shows prologuehtml and epiloguehtml as HTML: every text in them is escaped,
+    // the student's included (a name or a compiler's line quoting "<script>").
+    const auto html = [](const QString &text) { return text.toHtmlEscaped(); };
+    QJsonObject out{{"epiloguehtml", "<p>" + html(gradedBy(run)) + "</p>"}};
+    if (!run.error.isEmpty() || rows.empty()) {
+        out["fraction"] = 0;
+        out["prologuehtml"] = "<p>lightbench could not grade this answer:</p><pre>" +
+                              html(batchErrorText(run)) + "</pre>";
+        return json(out);
+    }
+    const GradedSubmission &row = rows.front();
+    const GradingReport &r = row.report;
+    if (!r.graded()) {
+        out["fraction"] = 0;
+        out["prologuehtml"] = "<p>" + html(escapedName(row.name)) + ": " + html(r.status) +
+                              "</p><pre>" + html(escapedLines(r.diagnostic)) + "</pre>";
+        return json(out);
+    }
+    const double most = maxPoints(run);
+    const bool allPassed = r.passedCount() == int(r.cases.size());
+    out["fraction"] = most > 0 ? std::clamp(score(run, r) / most, 0.0, 1.0) : allPassed ? 1 : 0;
+    QString prologue = "<p>" + html(summaryLine(run, row)) + "</p>";
+    if (r.mistake)
+        prologue += "<p><b>Hint:</b> " + html(hintText(r)) + "</p>";
+    out["prologuehtml"] = prologue;
+    // "iscorrect": CodeRunner's own column, a tick for 1 and a cross for 0.
+    QJsonArray table{
+        QJsonArray{"iscorrect", "Case", "Pixels within tolerance", "Largest difference", "Points"}};
+    for (int k = 0; k < int(r.cases.size()); ++k) {
+        const CaseResult &c = r.cases[std::size_t(k)];
+        const double points = pointsOfCase(run, k);
+        table.append(QJsonArray{
+            c.passed ? 1 : 0, QString("case %1").arg(k),
+            QString::number(100.0 * c.shareWithin, 'f', 1) + '%', QString("%1/255").arg(c.largest),
+            QString("%1/%2").arg(pointsText(c.passed ? points : 0.0), pointsText(points))});
+    }
+    out["testresults"] = table;
+    return json(out);
+}
+
+} // namespace lb
