@@ -2,6 +2,7 @@
 
 #include "lightbench_version.h"
 
+#include "command_line_grade.h"
 #include "lesson.h"
 
 #include "message_text.h"
@@ -218,34 +219,8 @@ void parseInto(const QCommandLineParser &parser, CommandLine &cl)
         cl.language = language == languages[0] ? QString() : language;
     }
     cl.check = given("check");
-    cl.grade = given("grade");
-    if (given("grade-one")) {
-        cl.gradeOne = value("grade-one");
-        cl.gradeName = value("grade-name");
-    }
-    for (const char *option : {"exercise", "report", "sheets", "seed"})
-        if (given(option) && !cl.grade && cl.gradeOne.isEmpty())
-            fail(option, "goes with --grade");
-    if (cl.grade || !cl.gradeOne.isEmpty()) {
-        // The exercise's scene and each submission's program are what is graded: any other
-        // option would be ignored without a word.
-        const QStringList allowed{"grade",  "grade-one", "grade-name", "exercise",
-                                  "report", "sheets",    "seed"};
-        for (const QString &name : parser.optionNames())
-            if (!allowed.contains(name))
-                fail(name, "does nothing with --grade (the exercise's scene and each submission's "
-                           "program are graded)");
-        cl.submissions = parser.positionalArguments();
-        if (!given("exercise") || value("exercise").isEmpty())
-            fail("grade", "needs --exercise FILE.json");
-        if (cl.grade && cl.submissions.isEmpty())
-            fail("grade", "needs submissions to grade (NAME.vert, a folder, or a scene file)");
-        cl.exercisePath = value("exercise");
-        cl.reportPath = value("report");
-        cl.sheetsDir = value("sheets");
-        if (given("seed"))
-            cl.seed = std::uint32_t(integer("seed", value("seed"), 0, 2147483647));
-    }
+    if (const QString error = parseGradeOptions(parser, cl); !error.isEmpty())
+        throw BadOption{error};
     if (cl.check && !cl.hasUserProgram())
         fail("check", "needs --vertex FILE and --fragment FILE");
 

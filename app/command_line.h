@@ -57,12 +57,14 @@ struct CommandLine
                         // add a second pair to time)
     // --import-memory-limit MB, --import-time-limit S; unset: the preferences' (window) or
     // the defaults (headless).
-    // --grade SUBMISSION... --exercise FILE [--report CSV] [--sheets DIR] [--seed N]
-    // (grade.h); --grade-one SUBMISSION is one submission, in the batch's child process.
+    // --grade SUBMISSION... --exercise FILE [--report FILE|- [--report-format WORD]]
+    // [--sheets DIR] [--seed N] (grade.h); --grade-one SUBMISSION is one submission, in the
+    // batch's child process.
     bool grade = false;
     QStringList submissions;
     QString gradeOne, gradeName; // --grade-name: the name the batch gives it (unique)
-    QString exercisePath, reportPath, sheetsDir;
+    QString exercisePath, reportPath, sheetsDir; // reportPath "-": standard output
+    int reportFormat = 0; // a ReportFormat (grading_formats.h): csv unless --report-format
     std::uint32_t seed = 1;
     std::optional<qint64> importMemoryMB;
     std::optional<int> importSeconds;

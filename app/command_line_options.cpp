@@ -2,6 +2,7 @@
 // (command_line.h: visibleOptions()): one table, so the three cannot drift apart.
 #include "command_line.h"
 
+#include "grading_formats.h"
 #include "scene.h"
 
 namespace lb {
@@ -208,15 +209,28 @@ std::vector<OptionInfo> visibleOptions()
              "under \"#version 100\" (automatic where the driver refuses #version 100)."),
         flag("grade", "Grade submissions (the arguments after the options: NAME.vert + "
                       "NAME.frag, a folder with one such pair, or a scene file with a program) "
-                      "against --exercise; one line per submission; exit 0, or 2 when one could "
-                      "not be read (the others are graded)."),
+                      "against --exercise; one line per submission, and a progress line on a "
+                      "terminal; exit 0, 2 when one could not be read (the others are graded), "
+                      "1 when the report or a sheet could not be written, 3 with "
+                      "--report-format github when the submission did not pass every case."),
         file("exercise", "FILE.json", kSceneSuffixes,
              "The exercise to grade against: a scene file with an \"exercise\" section "
              "(reference program, cases, tolerance)."),
-        file("report", "FILE.csv", {"csv"}, "With --grade: one CSV row per submission."),
+        file("report", "FILE", {"csv", "xml", "json"},
+             "With --grade: the report, written again whole after each submission (one CSV "
+             "row per submission unless --report-format says otherwise); - writes it to "
+             "standard output once the batch ends, and the summary lines to standard error."),
+        words("report-format", reportFormatNames(),
+              "With --report: csv (default; points, seed and version in columns), junit (XML, "
+              "one testsuite per submission, as GitLab and Jenkins read it), or one "
+              "submission's file for a platform: gradescope (results.json), github (GitHub "
+              "Classroom's runner result: base64 it into the step's result output; exit 3 "
+              "unless every case passed) or coderunner (CodeRunner's combinator grader JSON; "
+              "nothing on standard error, a batch error goes into the JSON)."),
         folder("sheets", "DIR",
                "With --grade: one PNG per submission (its worst case: student, reference, "
-               "difference)."),
+               "difference); the sheets of the previous run there (listed in "
+               "DIR/.lightbench-sheets) are removed first."),
         value("seed", "N",
               "With --grade: the cases' random parameters (default 1; the same seed "
               "gives the same cases)."),

@@ -1,7 +1,10 @@
 #include "grade.h"
 
-#include "csv_cell.h"
+#include "lightbench_version.h"
+
+#include "grade_outputs.h"
 #include "grading_files.h"
+#include "grading_formats.h"
 #include "grading_report.h"
 #include "message_text.h"
 #include "safe_write.h"
@@ -10,7 +13,9 @@
 #include "work_check.h"
 
 #include <QDir>
+#include <QElapsedTimer>
 #include <QEventLoop>
+#include <QFileInfo>
 #include <QProcess>
 #include <QSet>
 #include <QThread>
@@ -28,68 +33,6 @@ namespace {
 // What a child says when the exercise, not the submission, is at fault: the batch stops.
 const QStringList kBatchFailures{"no exercise", "no OpenGL", "exercise files",
                                  "reference does not build", "reference refused"};
-
-// What one child said, or what became of it.
-struct Graded
-{
-    QString name;
-    QString status; // "graded", "does not compile", "does not link", "refused", "timed out", ...
-    QString diagnostic;
-    bool sheetFailed = false; // graded, but its sheet could not be written (the diagnostic)
-    int cases = 0, passed = 0, worst = 0;
-    double meanShare = 0.0;
-};
-
-Graded fromReport(const GradingReport &r)
-{
-    Graded g;
-    g.status = r.status;
-    g.diagnostic = r.sheetError.isEmpty() ? r.diagnostic : r.sheetError;
-    g.sheetFailed = !r.sheetError.isEmpty();
-    g.cases = int(r.cases.size());
-    g.passed = r.passedCount();
-    g.worst = r.largest();
-    g.meanShare = r.meanShare();
-    return g;
-}
-
-QString summaryLine(const Graded &g)
-{
-    // Names and diagnostics (which name the student's files) with their controls shown as
-    // escapes: a name cannot make a line of its own or recolour the terminal.
-    const QString diagnostic = escapedControls(g.diagnostic.section('\n', 0, 0));
-    if (g.status != "graded")
-        return QString("%1: %2%3")
-            .arg(escapedName(g.name), g.status,
-                 diagnostic.isEmpty() ? QString() : ": " + diagnostic);
-    return QString("%1: %2, %3/%4 cases passed, largest difference %5/255, %6% of pixels within "
-                   "tolerance%7")
-        .arg(escapedName(g.name), g.passed == g.cases ? "passed" : "failed")
-        .arg(g.passed)
-        .arg(g.cases)
-        .arg(g.worst)
-        .arg(100.0 * g.meanShare, 0, 'f', 1)
-        .arg(diagnostic.isEmpty() ? QString() : " (" + diagnostic + ")");
-}
-
-QString csv(const std::vector<Graded> &rows)
-{
-    QString out = "submission,status,cases_passed,cases,worst_difference,mean_share_within,"
-                  "first_diagnostic\n";
-    for (const Graded &g : rows) {
-        const bool graded = g.status == "graded";
-        out += QStringList{csvCell(escapedName(g.name)),
-                           csvCell(g.status),
-                           graded ? QString::number(g.passed) : QString(),
-                           graded ? QString::number(g.cases) : QString(),
-                           graded ? QString::number(g.worst) : QString(),
-                           graded ? QString::number(g.meanShare, 'f', 4) : QString(),
-                           csvCell(escapedControls(g.diagnostic.section('\n', 0, 0)))}
-                   .join(',') +
-               "\n";
-    }
-    return out;
-}
 
 // Names as the report gives them: a submission's own, made unique ("lighting", "lighting-2")
 // so that rows and sheets are told apart.
@@ -112,13 +55,15 @@ QStringList uniqueNames(const QStringList &names)
 // "--report: PATH: why" when a result of the batch could not be written; empty when all can.
 QString outputsUnwritable(const CommandLine &cl, const QStringList &names)
 {
-    if (!cl.reportPath.isEmpty())
+    if (!cl.reportPath.isEmpty() && cl.reportPath != "-")
         if (const QString why = unwritableTarget(cl.reportPath); !why.isEmpty())
             return "--report: " + why;
     if (cl.sheetsDir.isEmpty())
         return {};
     if (!QDir().mkpath(cl.sheetsDir))
         return QString("--sheets: %1: cannot make the folder").arg(cl.sheetsDir);
+    if (const QString why = unwritableTarget(sheetListPath(cl.sheetsDir)); !why.isEmpty())
+        return "--sheets: " + why;
     for (const QString &name : names)
         if (const QString why = unwritableTarget(gradingSheetPath(cl.sheetsDir, name));
             !why.isEmpty())
@@ -141,28 +86,69 @@ QString signalName(int signal)
     return QString("signal %1").arg(signal);
 }
 
+GradingRun batchRun(const CommandLine &cl)
+{
+    GradingRun run;
+    run.seed = cl.seed;
+    run.version = QStringLiteral(LIGHTBENCH_VERSION);
+    return run;
+}
+
 } // namespace
+
+void quietStandardErrorForGrade(const CommandLine &cl)
+{
+    // CodeRunner takes any output on stderr for a failure of the grader itself: nothing goes
+    // there (the children's is read by the batch), and what would is said in the JSON.
+    // Should the null device fail to open, freopen closes stderr: quiet all the same.
+    if (cl.grade && ReportFormat(cl.reportFormat) == ReportFormat::CodeRunner) {
+        FILE *const quiet = std::freopen(qPrintable(QProcess::nullDevice()), "w", stderr);
+        (void)quiet;
+    }
+}
+
+int failGrade(const CommandLine &cl, const QString &error, int exitCode)
+{
+    printLine("lightbench: " + error, stderr);
+    BatchReport(cl.reportPath, ReportFormat(cl.reportFormat), batchRun(cl)).writeBatchError(error);
+    return exitCode;
+}
 
 int runGrade(const CommandLine &cl)
 {
 #ifdef SIGPIPE // POSIX's: stdout piped into a reader that went; the CSV still counts
     std::signal(SIGPIPE, SIG_IGN);
 #endif
+    const auto format = ReportFormat(cl.reportFormat);
+    quietStandardErrorForGrade(cl); // main() did, before Qt could say a word; tests call this
+    BatchReport report(cl.reportPath, format, batchRun(cl));
+    // The report on standard output: the summary lines go to stderr, out of its way.
+    FILE *const lines = report.toStandardOutput() ? stderr : stdout;
+    // A fault of the batch, not of a submission: said on stderr, and in the report where the
+    // format can say it (the platforms' files).
+    const auto batchError = [&](const QString &error) { return failGrade(cl, error); };
+
     const ExerciseFile e = readExerciseFile(cl.exercisePath);
-    if (!e.error.isEmpty()) {
-        printLine("lightbench: --exercise: " + e.error, stderr);
-        return 2;
-    }
+    if (!e.error.isEmpty())
+        return batchError("--exercise: " + e.error);
     if (!e.ignored.isEmpty())
         printLine(QString("lightbench: --exercise: %1: ignored: %2")
                       .arg(cl.exercisePath, summarisedList(e.ignored, "; ")),
                   stderr);
-    const int cases = e.file.exercise->grading.cases;
+    const GradingSpec &spec = e.file.exercise->grading;
+    report.run().casePoints = pointsPerCase(spec);
+    report.run().passShare = spec.passShare;
+    report.run().tolerance = spec.tolerance;
     // Time for one submission: its process, its trial and its frames; a hang ends here.
-    const int limitMs = gradingTimeLimitMs(cases);
+    const int limitMs = gradingTimeLimitMs(spec.cases);
 
     const QStringList paths = distinctSubmissions(cl.submissions);
-    std::vector<Graded> rows(std::size_t(paths.size()));
+    if (describesOneSubmission(format) && paths.size() > 1)
+        return batchError(QString("--report-format %1: describes one submission (the platform "
+                                  "grades one student per run); %2 were given")
+                              .arg(reportFormatNames().value(cl.reportFormat))
+                              .arg(paths.size()));
+    std::vector<GradedSubmission> rows(std::size_t(paths.size()));
     std::vector<bool> finished(rows.size(), false);
     QStringList names;
     std::vector<Submission> submissions;
@@ -174,20 +160,28 @@ int runGrade(const CommandLine &cl)
 
     // Where the results go is checked before the first submission is graded: a FIFO, a
     // device or a folder in their place, or a folder that cannot take them, ends the batch.
-    if (const QString error = outputsUnwritable(cl, names); !error.isEmpty()) {
-        printLine("lightbench: " + error, stderr);
-        return 2;
+    if (const QString error = outputsUnwritable(cl, names); !error.isEmpty())
+        return batchError(error);
+    if (!cl.sheetsDir.isEmpty()) {
+        // The folder holds this run's sheets alone: the last run's (its list) go first.
+        QStringList sheets;
+        for (const QString &name : names)
+            sheets << QFileInfo(gradingSheetPath(cl.sheetsDir, name)).fileName();
+        if (const QString error = replaceSheetList(cl.sheetsDir, sheets); !error.isEmpty()) {
+            printLine("lightbench: --sheets: " + error, stderr);
+            return 1;
+        }
     }
 
     bool anyUnreadable = false;
     std::vector<int> toRun;
     for (int i = 0; i < int(submissions.size()); ++i) {
-        Graded &row = rows[std::size_t(i)];
+        GradedSubmission &row = rows[std::size_t(i)];
         row.name = names[i];
         if (!submissions[std::size_t(i)].error.isEmpty()) {
             printLine("lightbench: " + escapedControls(submissions[std::size_t(i)].error), stderr);
-            row.status = "unreadable";
-            row.diagnostic = submissions[std::size_t(i)].error;
+            row.report.status = "unreadable";
+            row.report.diagnostic = submissions[std::size_t(i)].error;
             finished[std::size_t(i)] = true;
             anyUnreadable = true;
         } else {
@@ -195,31 +189,32 @@ int runGrade(const CommandLine &cl)
         }
     }
 
-    // Each line is printed once its submission and all before it are done, and the CSV is
+    ProgressLine progress(int(rows.size()));
+    // Each line is printed once its submission and all before it are done, and the report is
     // written again after each: what finished is kept whenever the batch ends.
     std::size_t printed = 0;
     const auto printFinished = [&](bool all) {
         for (; printed < rows.size(); ++printed) {
-            if (finished[printed])
-                printLine(summaryLine(rows[printed]), stdout);
-            else if (!all)
+            if (finished[printed]) {
+                progress.clear();
+                printLine(summaryLine(report.run(), rows[printed]), lines);
+            } else if (!all) {
                 break;
+            }
         }
     };
     QString reportError; // the last write's, said once until it changes
-    const auto writeReport = [&] {
-        if (cl.reportPath.isEmpty())
-            return;
-        std::vector<Graded> done;
+    const auto writeReport = [&](bool final) {
+        std::vector<GradedSubmission> done;
         for (std::size_t i = 0; i < rows.size(); ++i)
             if (finished[i])
                 done.push_back(rows[i]);
-        const QString error = writeFileSafely(cl.reportPath, csv(done).toUtf8());
+        const QString error = report.write(done, final);
         if (!error.isEmpty() && error != reportError)
             printLine("lightbench: --report: " + error, stderr);
         reportError = error;
     };
-    writeReport();
+    writeReport(false);
     if (!reportError.isEmpty())
         return 1; // nothing graded yet: no time lost on a batch whose report cannot be kept
 
@@ -235,40 +230,50 @@ int runGrade(const CommandLine &cl)
     std::size_t next = 0;
     int running = 0;
     QString batchFailure; // the exercise's fault, said by a child: no more are started
+    QElapsedTimer clock;
+    clock.start();
+    std::vector<qint64> startedAt(rows.size(), 0);
+    progress.show(int(std::count(finished.begin(), finished.end(), true)));
+    QTimer ticks; // the progress line's clock moves while nothing finishes
+    QObject::connect(&ticks, &QTimer::timeout, &loop, [&] {
+        progress.show(int(std::count(finished.begin(), finished.end(), true)));
+    });
+    ticks.start(1000);
     std::function<void()> startMore;
     const auto ended = [&](int i, QProcess *p) {
-        Graded &row = rows[std::size_t(i)];
-        const std::optional<GradingReport> report = readGradingReport(p->readAllStandardOutput());
+        GradedSubmission &row = rows[std::size_t(i)];
+        row.seconds = double(clock.elapsed() - startedAt[std::size_t(i)]) / 1000.0;
+        GradingReport &result = row.report;
+        const std::optional<GradingReport> said = readGradingReport(p->readAllStandardOutput());
         p->deleteLater();
         --running;
         // A child that ended without a report while the batch is being stopped was stopped
         // with it (Ctrl+C reaches the whole process group): it did not finish.
-        const bool stopped = StopSignals::received() && !report;
+        const bool stopped = StopSignals::received() && !said;
         if (stopped) {
-        } else if (row.status == "timed out") {
-            row.diagnostic = QString("more than %1 s").arg(limitMs / 1000.0, 0, 'f', 1);
-        } else if (report) { // a result printed counts, whatever came after it
-            const QString name = row.name;
-            row = fromReport(*report);
-            row.name = name;
-            if (kBatchFailures.contains(row.status) && batchFailure.isEmpty())
-                batchFailure = row.status + ": " + row.diagnostic.section('\n', 0, 0);
+        } else if (result.status == "timed out") {
+            result.diagnostic = QString("more than %1 s").arg(limitMs / 1000.0, 0, 'f', 1);
+        } else if (said) { // a result printed counts, whatever came after it
+            result = *said;
+            if (kBatchFailures.contains(result.status) && batchFailure.isEmpty())
+                batchFailure = result.status + ": " + result.diagnostic.section('\n', 0, 0);
         } else {
-            row.status = "crashed";
-            const QString said = QString::fromUtf8(p->readAllStandardError())
+            result.status = "crashed";
+            const QString line = QString::fromUtf8(p->readAllStandardError())
                                      .split('\n')
                                      .filter("lightbench")
                                      .value(0)
                                      .trimmed();
-            row.diagnostic = (p->error() == QProcess::FailedToStart ? "could not start: " : "") +
-                             endedWithoutReport(*p);
-            if (!said.isEmpty())
-                row.diagnostic += "; " + said;
+            result.diagnostic = (p->error() == QProcess::FailedToStart ? "could not start: " : "") +
+                                endedWithoutReport(*p);
+            if (!line.isEmpty())
+                result.diagnostic += "; " + line;
         }
         if (!stopped && batchFailure.isEmpty()) {
             finished[std::size_t(i)] = true;
             printFinished(false);
-            writeReport();
+            writeReport(false);
+            progress.show(int(std::count(finished.begin(), finished.end(), true)));
         }
         startMore(); // or the end, when nothing is left to start and nothing runs
     };
@@ -285,7 +290,7 @@ int runGrade(const CommandLine &cl)
             auto *timer = new QTimer(p);
             timer->setSingleShot(true);
             QObject::connect(timer, &QTimer::timeout, p, [&rows, i, p] {
-                rows[std::size_t(i)].status = "timed out";
+                rows[std::size_t(i)].report.status = "timed out";
                 p->kill();
             });
             // Queued: a process that fails to start says so from inside start(), before
@@ -302,6 +307,7 @@ int runGrade(const CommandLine &cl)
                     emit p->finished(-1, QProcess::CrashExit);
             });
             ++running;
+            startedAt[std::size_t(i)] = clock.elapsed();
             // LIGHTBENCH_GRADE_PROGRAM stands in for this program in the children (the tests
             // give one that crashes, chatters or is not there).
             p->start(gradingChildProgram(), args);
@@ -318,6 +324,8 @@ int runGrade(const CommandLine &cl)
         QTimer::singleShot(0, &loop, startMore); // from inside the loop, so its quit counts
         loop.exec();
     }
+    ticks.stop();
+    progress.clear();
     stoppedBy = StopSignals::received(); // also one that came while the loop was ending
     if (stoppedBy) {
         // No child is left running: each is killed and waited for before the batch ends.
@@ -327,28 +335,35 @@ int runGrade(const CommandLine &cl)
             p->waitForFinished(5000);
         }
         printFinished(true);
+        writeReport(true);
         const int done = int(std::count(finished.begin(), finished.end(), true));
         printLine(QString("lightbench: --grade: stopped by %1 with %2 of %3 submissions done%4")
                       .arg(signalName(stoppedBy))
                       .arg(done)
                       .arg(rows.size())
-                      .arg(cl.reportPath.isEmpty()
-                               ? QString()
+                      .arg(!report.wanted() ? QString()
+                           : report.toStandardOutput()
+                               ? QString("; standard output holds their rows")
                                : QString("; %1 holds their rows").arg(cl.reportPath)),
                   stderr);
         return StopSignals::exitCodeFor(stoppedBy);
     }
-    if (!batchFailure.isEmpty()) {
-        printLine(QString("lightbench: --exercise: %1: %2").arg(cl.exercisePath, batchFailure),
-                  stderr);
-        return 2;
-    }
+    if (!batchFailure.isEmpty())
+        return batchError(QString("--exercise: %1: %2").arg(cl.exercisePath, batchFailure));
     printFinished(true);
-    const bool sheetFailed =
-        std::any_of(rows.begin(), rows.end(), [](const Graded &g) { return g.sheetFailed; });
+    writeReport(true);
+    const bool sheetFailed = std::any_of(rows.begin(), rows.end(), [](const GradedSubmission &g) {
+        return g.report.graded() && !g.report.sheetError.isEmpty();
+    });
     if (!reportError.isEmpty() || sheetFailed)
         return 1; // each line said which file and why
-    return anyUnreadable ? 2 : 0;
+    if (anyUnreadable)
+        return 2;
+    // GitHub Classroom: the job fails unless the submission passed every case.
+    const bool allPassed = std::all_of(rows.begin(), rows.end(), [](const GradedSubmission &g) {
+        return g.report.graded() && g.report.passedCount() == int(g.report.cases.size());
+    });
+    return format == ReportFormat::GitHub && !allPassed ? 3 : 0;
 }
 
 } // namespace lb

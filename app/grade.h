@@ -15,7 +15,14 @@ namespace lb {
 // exercise cannot be used, the report or a sheet has no place that can take it (said before
 // any is graded) or a submission could not be read (the others are still graded), 1 when the
 // report or a sheet could not be written (a full disk: the old report is left as it was).
+// Exit code 3 with --report-format github when the submission did not pass every case.
 int runGrade(const CommandLine &commandLine);
+// First of all for --grade --report-format coderunner: standard error goes to the null device
+// (CodeRunner takes any word there for the grader's failure), Qt's warnings included.
+void quietStandardErrorForGrade(const CommandLine &commandLine);
+// A batch that cannot grade anyone (no display, a faulty exercise): `error` on stderr and in
+// the report where its format can say it (the platforms' files). Returns `exitCode`.
+int failGrade(const CommandLine &commandLine, const QString &error, int exitCode = 2);
 // One submission, in the process the batch starts: its result as one line of JSON.
 int runGradeOne(const CommandLine &commandLine);
 

@@ -70,7 +70,13 @@ int main(int argc, char **argv)
         return parsed.exitCode;
     }
     const lb::CommandLine &cl = *parsed.commandLine;
+    lb::quietStandardErrorForGrade(cl);
     if (!haveDisplay()) {
+        if (cl.grade)
+            return lb::failGrade(cl,
+                                 "no display; OpenGL needs an X server (try xvfb-run -a -s "
+                                 "\"-screen 0 1920x1080x24\" lightbench ...)",
+                                 1);
         std::fputs("lightbench: no display; OpenGL needs an X server (try xvfb-run -a -s "
                    "\"-screen 0 1920x1080x24\" lightbench ...)\n",
                    stderr);

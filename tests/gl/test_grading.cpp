@@ -151,7 +151,8 @@ private slots:
         const QList<QStringList> rows = csvRows(report);
         QCOMPARE(rows.size(), 6);
         QCOMPARE(rows[0], QString("submission,status,cases_passed,cases,worst_difference,"
-                                  "mean_share_within,first_diagnostic")
+                                  "mean_share_within,first_diagnostic,points,max_points,hint,"
+                                  "seed,lightbench")
                               .split(','));
         QCOMPARE(rows[1].mid(0, 4), QStringList({"correct", "graded", "20", "20"}));
         QVERIFY(rows[1][4].toInt() <= 2);
@@ -543,10 +544,11 @@ private slots:
                            "--exercise", kExercise},
                           env);
         QVERIFY2(r.exitCode == 0, r.err.constData());
-        QCOMPARE(r.out, QByteArray("alice: passed, 1/1 cases passed, largest difference 1/255, "
-                                   "100.0% of pixels within tolerance\n"
-                                   "bob: passed, 1/1 cases passed, largest difference 1/255, "
-                                   "100.0% of pixels within tolerance\n"));
+        // The stand-in passes one case of the exercise's 20: its 5 points of 100.
+        QCOMPARE(r.out, QByteArray("alice: passed, 1/1 cases passed (5/100 points), largest "
+                                   "difference 1/255, 100.0% of pixels within tolerance\n"
+                                   "bob: passed, 1/1 cases passed (5/100 points), largest "
+                                   "difference 1/255, 100.0% of pixels within tolerance\n"));
     }
 
     // The report and the sheets never replace what is not a regular file, and say so before

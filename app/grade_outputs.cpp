@@ -1,0 +1,117 @@
+#include "grade_outputs.h"
+
+#include "bounded_read.h"
+#include "grading_progress.h"
+#include "safe_write.h"
+#include "terminal.h"
+
+#include <QDir>
+#include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+
+namespace lb {
+
+namespace {
+
+// Far more names than any class: the list is read before the batch, and a list gone wrong
+// must not cost time or memory.
+constexpr qint64 kMaxSheetListBytes = 4 << 20;
+const char *const kSheetListName = ".lightbench-sheets";
+
+bool isOwnSheetName(const QString &name)
+{
+    return name.endsWith(QLatin1String(".png")) && name.size() > 4 && !name.contains('/') &&
+           !name.contains('\\') && !name.contains(QChar(0));
+}
+
+} // namespace
+
+BatchReport::BatchReport(const QString &path, ReportFormat format, const GradingRun &run)
+    : m_path(path), m_format(format), m_run(run)
+{
+}
+
+QString BatchReport::write(const std::vector<GradedSubmission> &rows, bool final)
+{
+    if (!wanted())
+        return {};
+    const QByteArray bytes = reportBytes(m_format, m_run, rows);
+    if (!toStandardOutput())
+        return writeFileSafely(m_path, bytes);
+    if (!final) // a stream cannot be rewritten: it gets the whole report once
+        return {};
+    const bool written = std::fwrite(bytes.constData(), 1, std::size_t(bytes.size()), stdout) ==
+                             std::size_t(bytes.size()) &&
+                         std::fflush(stdout) == 0;
+    return written ? QString() : QString("standard output: could not be written");
+}
+
+void BatchReport::writeBatchError(const QString &error)
+{
+    if (!wanted() || !describesOneSubmission(m_format))
+        return;
+    m_run.error = error;
+    write({}, true); // its own failure cannot be said better than the error itself
+}
+
+ProgressLine::ProgressLine(int total) : m_terminal(platform::isTerminal(stderr)), m_total(total)
+{
+    m_clock.start();
+}
+
+void ProgressLine::show(int done)
+{
+    m_done = done;
+    if (!m_terminal)
+        return;
+    const QByteArray text = progressText(done, m_total, m_clock.elapsed()).toUtf8();
+    // Spaces over what a longer line before left; the cursor stays at its start.
+    const int pad = std::max(0, m_width - int(text.size()));
+    std::fprintf(stderr, "\r%s%*s\r", text.constData(), pad, "");
+    std::fflush(stderr);
+    m_width = int(text.size());
+    m_shown = true;
+}
+
+void ProgressLine::clear()
+{
+    if (!m_shown)
+        return;
+    std::fprintf(stderr, "\r%*s\r", m_width, "");
+    std::fflush(stderr);
+    m_shown = false;
+    m_width = 0;
+}
+
+QString sheetListPath(const QString &dir)
+{
+    return QDir(dir).filePath(QLatin1String(kSheetListName));
+}
+
+QString replaceSheetList(const QString &dir, const QStringList &sheetNames)
+{
+    const QString listPath = sheetListPath(dir);
+    if (QFileInfo::exists(listPath)) {
+        // A list that cannot be read (too big, no file) removes nothing.
+        const BoundedRead read =
+            readBounded(listPath, FileLimit{"a sheet list", kMaxSheetListBytes});
+        const QJsonArray previous =
+            QJsonDocument::fromJson(read.bytes).object()["sheets"].toArray();
+        for (const QJsonValue &v : previous) {
+            const QString name = v.toString();
+            if (!isOwnSheetName(name))
+                continue;
+            const QFileInfo sheet(QDir(dir).filePath(name));
+            if (sheet.isFile() && !sheet.isSymLink())
+                QFile::remove(sheet.filePath());
+        }
+    }
+    QJsonArray names;
+    for (const QString &name : sheetNames)
+        names.append(name);
+    return writeFileSafely(listPath, QJsonDocument(QJsonObject{{"sheets", names}}).toJson());
+}
+
+} // namespace lb

@@ -1,0 +1,64 @@
+#pragma once
+// Where a grading batch's results go (grade.h): the report, in its format, to a file written
+// again whole after each submission or to standard output once at the end; the progress line
+// on a terminal; the sheet folder's list of the sheets this run writes there.
+
+#include "grading_formats.h"
+
+#include <QElapsedTimer>
+#include <QString>
+#include <QStringList>
+
+#include <cstdio>
+#include <vector>
+
+namespace lb {
+
+// The report of --report FILE (or "-") in its format.
+class BatchReport
+{
+public:
+    BatchReport(const QString &path, ReportFormat format, const GradingRun &run);
+    bool wanted() const { return !m_path.isEmpty(); }
+    bool toStandardOutput() const { return m_path == QLatin1String("-"); }
+    ReportFormat format() const { return m_format; }
+    GradingRun &run() { return m_run; }
+    // The rows so far, written whole: to the file after each submission ("" or "PATH: why");
+    // standard output only takes the report once, with `final`.
+    QString write(const std::vector<GradedSubmission> &rows, bool final);
+    // Why nobody was graded, in the report of a format that can say it (the platforms' files:
+    // CodeRunner shows no stderr); a CSV or JUnit report is left as it is.
+    void writeBatchError(const QString &error);
+
+private:
+    QString m_path;
+    ReportFormat m_format;
+    GradingRun m_run;
+};
+
+// "graded 3/30, 0:12 elapsed, about 1:48 left" on stderr, rewritten in place, only when
+// stderr is a terminal; cleared before each line the batch prints.
+class ProgressLine
+{
+public:
+    explicit ProgressLine(int total);
+    void show(int done);
+    void clear();
+
+private:
+    bool m_shown = false, m_terminal = false;
+    int m_total = 0, m_done = 0, m_width = 0;
+    QElapsedTimer m_clock;
+};
+
+// DIR/.lightbench-sheets: the sheets the last --grade wrote into DIR (a JSON list of file
+// names: any name a submission has fits), so that the next run removes them first and the
+// folder holds this run's sheets alone.
+QString sheetListPath(const QString &dir);
+// Removes the sheets the folder's list names, each only if it is a plain file name ending in
+// .png (no folder part) and a regular file in `dir` itself (no symbolic link):
+// nothing else is ever deleted. Then lists `sheetNames` (this run's) in its place. Returns
+// "PATH: why" when the list cannot be written.
+QString replaceSheetList(const QString &dir, const QStringList &sheetNames);
+
+} // namespace lb
