@@ -162,14 +162,17 @@ int runGrade(const CommandLine &cl)
     // device or a folder in their place, or a folder that cannot take them, ends the batch.
     if (const QString error = outputsUnwritable(cl, names); !error.isEmpty())
         return batchError(error);
+    // The sheet folder holds this run's sheets alone: the last run's (its list) go first. A
+    // list that cannot be written (a full disk) is said and costs the exit code, not the
+    // grading: the sheets say their own failures, and a stale list names only our sheets.
+    bool sheetListFailed = false;
     if (!cl.sheetsDir.isEmpty()) {
-        // The folder holds this run's sheets alone: the last run's (its list) go first.
         QStringList sheets;
         for (const QString &name : names)
             sheets << QFileInfo(gradingSheetPath(cl.sheetsDir, name)).fileName();
         if (const QString error = replaceSheetList(cl.sheetsDir, sheets); !error.isEmpty()) {
             printLine("lightbench: --sheets: " + error, stderr);
-            return 1;
+            sheetListFailed = true;
         }
     }
 
@@ -355,7 +358,7 @@ int runGrade(const CommandLine &cl)
     const bool sheetFailed = std::any_of(rows.begin(), rows.end(), [](const GradedSubmission &g) {
         return g.report.graded() && !g.report.sheetError.isEmpty();
     });
-    if (!reportError.isEmpty() || sheetFailed)
+    if (!reportError.isEmpty() || sheetFailed || sheetListFailed)
         return 1; // each line said which file and why
     if (anyUnreadable)
         return 2;

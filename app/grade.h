@@ -14,7 +14,8 @@ namespace lb {
 // The batch. Exit code 0 when every submission was graded (whatever its grade), 2 when the
 // exercise cannot be used, the report or a sheet has no place that can take it (said before
 // any is graded) or a submission could not be read (the others are still graded), 1 when the
-// report or a sheet could not be written (a full disk: the old report is left as it was).
+// report, a sheet or the sheet folder's list could not be written (a full disk: the old report
+// is left as it was).
 // Exit code 3 with --report-format github when the submission did not pass every case.
 int runGrade(const CommandLine &commandLine);
 // First of all for --grade --report-format coderunner: standard error goes to the null device
