@@ -12,8 +12,9 @@ PACKAGES=(cmake g++ make qt6-base-dev libqt6opengl6-dev qt6-qpa-plugins libglm-d
           libqscintilla2-qt6-dev libassimp-dev libmimalloc-dev libpng-dev
           xvfb xauth libgl1-mesa-dri fonts-dejavu-core
           qt6-tools-dev qt6-l10n-tools qt6-translations-l10n libqscintilla2-qt6-l10n)
-# Only the tests need these: Debian's corpus of ~600 model files, valid and broken.
-TEST_PACKAGES=(assimp-testmodels)
+# Only the tests need these: Debian's corpus of ~600 model files, valid and broken; Python for
+# CodeRunner's template (resources/autograders/) and the autograders' checks of their JSON.
+TEST_PACKAGES=(assimp-testmodels python3)
 # Only scripts/package needs these: dpkg-shlibdeps (dpkg-dev) and `file` for the package's
 # dependencies, and the checkers of the package and of the desktop's files it installs.
 PACKAGE_PACKAGES=(dpkg-dev file lintian desktop-file-utils appstream shared-mime-info man-db)

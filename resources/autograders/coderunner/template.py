@@ -1,0 +1,40 @@
+"""Moodle CodeRunner: a combinator template grader that grades the student's answer with
+lightbench. Make a question type with this file as its template (Python 3, "Is combinator"
+and "Template does grading" both on), the exercise (exercise.json) and the program's other
+stage (lighting.vert when the answer is the fragment shader) as support files. The Jobe server
+needs lightbench and xvfb installed, and room for them: a memory limit of 2000 MB, 60 s and
+64 processes (the question's sandbox settings). lightbench prints CodeRunner's JSON (fraction,
+testresults, prologuehtml) and nothing on stderr; this template passes it on."""
+
+import html
+import json
+import os
+import subprocess
+
+ANSWER_STAGE = "fragment"  # the stage the student writes: "fragment" or "vertex"
+EXERCISE = "exercise.json"
+LIGHTBENCH = os.environ.get("LIGHTBENCH", "lightbench")
+
+answer = """{{ STUDENT_ANSWER | e('py') }}"""
+with open("lighting.frag" if ANSWER_STAGE == "fragment" else "lighting.vert", "w",
+          encoding="utf-8") as f:
+    f.write(answer)
+
+command = ["xvfb-run", "-a", "-s", "-screen 0 1280x1024x24", LIGHTBENCH,
+           "--grade", "lighting.vert", "lighting.frag", "--exercise", EXERCISE,
+           "--report-format", "coderunner", "--report", "-"]
+try:
+    run = subprocess.run(command, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL,
+                         timeout=55, check=False)
+    output, why = run.stdout.decode("utf-8", "replace"), "exit %d" % run.returncode
+except (OSError, subprocess.TimeoutExpired) as error:
+    output, why = "", str(error)
+try:
+    result = json.loads(output)
+    if not isinstance(result, dict) or "fraction" not in result:
+        raise ValueError("no fraction")
+except ValueError:
+    # Nothing on stderr here either: CodeRunner counts any as a failed run.
+    result = {"fraction": 0.0,
+              "prologuehtml": "<p>lightbench gave no grade (%s).</p>" % html.escape(why)}
+print(json.dumps(result))
