@@ -87,7 +87,7 @@ QJsonObject exerciseJson(const Exercise &exercise)
     for (int i = 0; i < int(kVaryNames.size()); ++i)
         if (g.vary & (1u << i))
             vary.append(QLatin1String(kVaryNames[std::size_t(i)]));
-    return QJsonObject{
+    QJsonObject json{
         {"title", exercise.title.isEmpty() ? QJsonValue("") : localizedTextJson(exercise.title)},
         {"task", exercise.task.isEmpty() ? QJsonValue("") : localizedTextJson(exercise.task)},
         {"reference", reference},
@@ -96,6 +96,9 @@ QJsonObject exerciseJson(const Exercise &exercise)
                                 {"tolerance", g.tolerance},
                                 {"passShare", g.passShare},
                                 {"vary", vary}}}};
+    if (!exercise.mistakes.empty())
+        json["mistakes"] = exerciseMistakesJson(exercise.mistakes);
+    return json;
 }
 
 ExerciseRead readExercise(const QJsonValue &json, QStringList *ignored)
@@ -133,7 +136,7 @@ ExerciseRead readExerciseSection(const QJsonValue &json, QStringList *ignored)
     e.task = readLocalizedText(o.value("task"), "task", kMaxExerciseTextCharacters, ignore);
     const QJsonObject known = exerciseJson(e);
     for (auto it = o.begin(); it != o.end(); ++it)
-        if (!known.contains(it.key()))
+        if (!known.contains(it.key()) && it.key() != QLatin1String("mistakes"))
             ignore(it.key(), Text::tr("unknown field"));
 
     const QJsonObject ref = o.value("reference").toObject();
@@ -163,6 +166,8 @@ ExerciseRead readExerciseSection(const QJsonValue &json, QStringList *ignored)
                          .arg("exercise");
         return read;
     }
+
+    e.mistakes = readExerciseMistakes(o.value("mistakes"), e.reference.builtIn(), ignore);
 
     const QJsonObject g = o.value("grading").toObject();
     GradingSpec &spec = e.grading;
