@@ -26,8 +26,10 @@ namespace lb {
 namespace {
 
 // What a child says when the exercise, not the submission, is at fault: the batch stops.
-const QStringList kBatchFailures{"no exercise", "no OpenGL", "exercise files",
-                                 "reference does not build", "reference refused"};
+const QStringList kBatchFailures{"no exercise",       "no OpenGL",
+                                 "exercise files",    "reference does not build",
+                                 "reference refused", "mistake does not build",
+                                 "mistake refused"};
 
 // What one child said, or what became of it.
 struct Graded
