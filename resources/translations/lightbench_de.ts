@@ -97,7 +97,7 @@
 <context>
     <name>lb::BoundedRead</name>
     <message>
-        <location filename="../../render/model/bounded_read.cpp" line="+41"/>
+        <location filename="../../render/model/bounded_read.cpp" line="+40"/>
         <location line="+6"/>
         <source>no such file</source>
         <translation>Datei nicht vorhanden</translation>
@@ -506,7 +506,7 @@
 <context>
     <name>lb::Exercise</name>
     <message>
-        <location filename="../../render/model/exercise.cpp" line="+122"/>
+        <location filename="../../render/model/exercise.cpp" line="+125"/>
         <source>%1 (%2)</source>
         <extracomment>a field of an exercise as the file spells it (%1, &quot;exercise.grading.cases&quot;) and why it was not used (%2)</extracomment>
         <translation>%1 (%2)</translation>
@@ -518,6 +518,9 @@
     </message>
     <message>
         <location line="+11"/>
+        <location filename="../../render/model/exercise_mistakes.cpp" line="+55"/>
+        <location line="+11"/>
+        <location line="+20"/>
         <source>unknown field</source>
         <translation>unbekanntes Feld</translation>
     </message>
@@ -529,6 +532,7 @@
     <message>
         <location line="+9"/>
         <location line="+5"/>
+        <location filename="../../render/model/exercise_mistakes.cpp" line="-51"/>
         <source>not %1</source>
         <extracomment>%1 the words a file may give, as it spells them (&quot;phong, gouraud, flat&quot;)</extracomment>
         <translation>keiner der Werte %1</translation>
@@ -539,7 +543,7 @@
         <translation>%1: kein Referenzprogramm (&quot;reference&quot;: {&quot;vertex&quot;: ..., &quot;fragment&quot;: ...} oder {&quot;builtIn&quot;: {...}})</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+15"/>
         <source>not a number</source>
         <translation>keine Zahl</translation>
     </message>
@@ -562,6 +566,57 @@
         <location line="+6"/>
         <source>no such parameter &apos;%1&apos;; those are %2</source>
         <translation>unbekannter Parameter &apos;%1&apos;; möglich sind %2</translation>
+    </message>
+    <message>
+        <location filename="../../render/model/exercise_mistakes.cpp" line="+11"/>
+        <source>not true or false</source>
+        <translation>weder true noch false</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <location line="+17"/>
+        <source>not an object</source>
+        <translation>kein Objekt</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>not a name of 1 to %1 characters; the mistake is left out</source>
+        <translation>kein Name mit 1 bis %1 Zeichen; der Fehler wird weggelassen</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>no usable hint; the mistake is left out</source>
+        <translation>kein verwendbarer Hinweis; der Fehler wird weggelassen</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>not a shader&apos;s text of up to 1 MiB; the mistake is left out</source>
+        <translation>kein Shader-Text von bis zu 1 MiB; der Fehler wird weggelassen</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>both a program and a built-in; the mistake is left out</source>
+        <translation>sowohl ein Programm als auch ein eingebautes; der Fehler wird weggelassen</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>needs both a vertex and a fragment shader: the reference is the built-in program; the mistake is left out</source>
+        <translation>braucht einen Vertex- und einen Fragment-Shader: Die Referenz ist das eingebaute Programm; der Fehler wird weggelassen</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>neither a program (&quot;vertex&quot;, &quot;fragment&quot;) nor &quot;builtIn&quot;: {...}; the mistake is left out</source>
+        <translation>weder ein Programm (&quot;vertex&quot;, &quot;fragment&quot;) noch &quot;builtIn&quot;: {...}; der Fehler wird weggelassen</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>not a list</source>
+        <translation>keine Liste</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>more than %1 mistakes; the rest are left out</source>
+        <translation>mehr als %1 Fehler; die übrigen werden weggelassen</translation>
     </message>
 </context>
 <context>
@@ -613,12 +668,12 @@
     </message>
     <message>
         <location line="+30"/>
-        <location line="+122"/>
+        <location line="+136"/>
         <source>Check my work</source>
         <translation>Arbeit prüfen</translation>
     </message>
     <message>
-        <location line="-121"/>
+        <location line="-135"/>
         <source>Draws the exercise&apos;s cases with the program in the editor and with the reference, as the teacher&apos;s grading does, and lists each case (F9)</source>
         <translation>Zeichnet die Fälle der Übung mit dem Programm im Editor und mit der Referenz, wie es die Bewertung der Lehrkraft tut, und listet jeden Fall auf (F9)</translation>
     </message>
@@ -628,7 +683,7 @@
         <translation>Veraltet: Das Programm im Editor wurde seit dieser Prüfung geändert. „Arbeit prüfen“ (F9) prüft es im jetzigen Zustand.</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+17"/>
         <source>Case</source>
         <translation>Fall</translation>
     </message>
@@ -668,7 +723,7 @@
         <translation>Die Szene, wie sie war, bevor ein Fall gezeigt wurde</translation>
     </message>
     <message>
-        <location line="+39"/>
+        <location line="+42"/>
         <source>No exercise is open</source>
         <translation>Keine Übung geöffnet</translation>
     </message>
@@ -678,7 +733,7 @@
         <translation>Eine Übung ist eine Szenendatei mit einer Aufgabe, dem Referenzprogramm der Lehrkraft und der Art der Bewertung. Datei &gt; Beispiele &gt; „Übung: Beleuchtung pro Fragment“ ist eine davon; Datei &gt; Szene öffnen öffnet weitere.</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+13"/>
         <source>The share of the pixels either program draws that are within %1/255 of the reference, at %2 x %3: the difference view counts a case alike (at its own size)</source>
         <translation>Der Anteil der von einem der beiden Programme gezeichneten Pixel, die höchstens %1/255 von der Referenz abweichen, bei %2 x %3: Die Differenzansicht zählt einen Fall genauso (in ihrer eigenen Größe)</translation>
     </message>
@@ -719,7 +774,7 @@
         <translation>Prüfung läuft: Die Fälle werden mit Ihrem Programm und der Referenz gezeichnet...</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+26"/>
         <source>Your program does not compile:
 %1</source>
         <extracomment>%1 the compiler&apos;s messages</extracomment>
@@ -758,7 +813,15 @@
         <translation>Ihr Programm wurde abgelehnt</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+3"/>
+        <source>This exercise cannot check your work: one of the known mistakes it lists cannot be drawn. Tell your teacher:
+%1</source>
+        <extracomment>%1 which of the exercise&apos;s known mistakes, and why (the driver&apos;s words)</extracomment>
+        <translation>Diese Übung kann Ihre Arbeit nicht prüfen: Einer der bekannten Fehler, die sie aufführt, lässt sich nicht zeichnen. Sagen Sie es Ihrer Lehrkraft:
+%1</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>The check could not start:
 %1</source>
         <extracomment>%1 why the checking process did not start</extracomment>
@@ -784,7 +847,13 @@
         <translation>Nicht geprüft: %1</translation>
     </message>
     <message>
-        <location line="-7"/>
+        <location line="+66"/>
+        <source>Your failing cases match the exercise&apos;s known mistake &quot;%1&quot; in %2 of their pixels, far more than they match the reference</source>
+        <extracomment>%1 the mistake&apos;s name as the exercise gives it (data, English); %2 a share (&quot;98.5%&quot;)</extracomment>
+        <translation>Ihre fehlgeschlagenen Fälle stimmen in %2 ihrer Pixel mit dem bekannten Fehler „%1“ der Übung überein, weit mehr als mit der Referenz</translation>
+    </message>
+    <message>
+        <location line="-73"/>
         <source>The check took too long (%1) and was stopped</source>
         <extracomment>%1 how long it was given</extracomment>
         <translation>Die Prüfung dauerte zu lange (%1) und wurde abgebrochen</translation>
@@ -886,12 +955,12 @@
 <context>
     <name>lb::FileLimit</name>
     <message>
-        <location filename="../../render/import/import_process.cpp" line="+56"/>
+        <location filename="../../render/import/import_process.cpp" line="+55"/>
         <source>a texture file</source>
         <translation>eine Texturdatei</translation>
     </message>
     <message>
-        <location line="+136"/>
+        <location line="+129"/>
         <source>a mesh file</source>
         <translation>eine Mesh-Datei</translation>
     </message>
@@ -1164,7 +1233,7 @@
 <context>
     <name>lb::ImportProcess</name>
     <message>
-        <location filename="../../render/import/import_process.cpp" line="-161"/>
+        <location filename="../../render/import/import_process.cpp" line="-156"/>
         <source>the importer crashed with a segmentation fault while reading this file; the workbench is fine</source>
         <translation>der Import-Helfer ist beim Lesen dieser Datei mit einem Speicherzugriffsfehler (Segmentation Fault) abgestürzt; die Werkbank arbeitet normal weiter</translation>
     </message>
@@ -1174,12 +1243,12 @@
         <translation>der Import-Helfer ist beim Lesen dieser Datei mit einem Abbruch (Abort) abgestürzt; die Werkbank arbeitet normal weiter</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>the importer crashed with a bus error while reading this file; the workbench is fine</source>
         <translation>der Import-Helfer ist beim Lesen dieser Datei mit einem Busfehler abgestürzt; die Werkbank arbeitet normal weiter</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>the importer crashed with an arithmetic error while reading this file; the workbench is fine</source>
         <translation>der Import-Helfer ist beim Lesen dieser Datei mit einem arithmetischen Fehler abgestürzt; die Werkbank arbeitet normal weiter</translation>
     </message>
@@ -1210,7 +1279,7 @@
         <translation>%1: Der Import-Helfer &apos;%2&apos; kann nicht gestartet werden: %3</translation>
     </message>
     <message>
-        <location line="+69"/>
+        <location line="+62"/>
         <source>%1: not readable (permissions)</source>
         <translation>%1: nicht lesbar (Zugriffsrechte)</translation>
     </message>
@@ -1230,7 +1299,7 @@
         <translation>%1: nach %2 s aufgegeben (die Zeitgrenze für den Import)</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+16"/>
         <source>gave up after %1 s of CPU time (the import time limit)</source>
         <translation>nach %1 s CPU-Zeit aufgegeben (die Zeitgrenze für den Import)</translation>
     </message>
@@ -1240,7 +1309,7 @@
         <translation>der Import-Helfer wurde beendet (vom System, wegen Speichermangel?)</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>out of memory: reading this file needs more than the import memory limit (%1 MB)</source>
         <translation>nicht genug Speicher: Das Lesen dieser Datei braucht mehr als die Speichergrenze für den Import (%1 MB)</translation>
     </message>
@@ -1292,7 +1361,7 @@
     </message>
     <message>
         <location line="+14"/>
-        <location filename="../../app/main.cpp" line="+211"/>
+        <location filename="../../app/main.cpp" line="+224"/>
         <source>Language</source>
         <translation>Sprache</translation>
     </message>
@@ -3679,8 +3748,8 @@
 <context>
     <name>lb::SafeWrite</name>
     <message>
-        <location filename="../../render/model/safe_write.cpp" line="+69"/>
-        <location line="+13"/>
+        <location filename="../../render/model/safe_write.cpp" line="+61"/>
+        <location line="+14"/>
         <source>a loop of symbolic links</source>
         <translation>eine Schleife symbolischer Links</translation>
     </message>
@@ -3690,7 +3759,7 @@
         <translation>keine reguläre Datei (ein Gerät, eine Pipe oder ein Ordner); nicht ersetzt</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+11"/>
         <source>the folder %1 does not exist</source>
         <translation>der Ordner %1 existiert nicht</translation>
     </message>
@@ -3700,12 +3769,12 @@
         <translation>%1 ist kein Ordner</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>cannot write in %1: %2</source>
         <translation>in %1 kann nicht geschrieben werden: %2</translation>
     </message>
     <message>
-        <location line="+136"/>
+        <location line="+106"/>
         <source>no image to write</source>
         <translation>kein Bild zum Schreiben</translation>
     </message>
@@ -3978,13 +4047,13 @@
 <context>
     <name>lb::SceneBudget</name>
     <message>
-        <location filename="../../render/model/scene_budget.cpp" line="+63"/>
+        <location filename="../../render/model/scene_budget.cpp" line="+60"/>
         <location line="+2"/>
         <source>%1 million</source>
         <translation>%1 Millionen</translation>
     </message>
     <message numerus="yes">
-        <location line="+27"/>
+        <location line="+16"/>
         <source>%n object(s) at tessellation %1 would make %2 triangles (~%3)</source>
         <extracomment>what a scene asks for; %n the objects in the scene</extracomment>
         <translation>
@@ -4024,7 +4093,7 @@
         <translation>%1; %2</translation>
     </message>
     <message>
-        <location line="+109"/>
+        <location line="+105"/>
         <source>%1 GB</source>
         <translation>%1 GB</translation>
     </message>
@@ -4907,7 +4976,7 @@
 <context>
     <name>lb::TrialProcess</name>
     <message>
-        <location filename="../../render/trial/trial_process.cpp" line="+176"/>
+        <location filename="../../render/trial/trial_process.cpp" line="+167"/>
         <source>compiling this program and drawing it on small frames did not finish within %1 (the trial&apos;s helper was replaced): an endless or very long loop, or a program too big for the driver?</source>
         <translation>das Kompilieren dieses Programms und das Zeichnen kleiner Testbilder wurde nicht innerhalb von %1 fertig (der Hilfsprozess für die Erprobung wurde ersetzt): eine Endlosschleife oder sehr lange Schleife, oder ein Programm, das zu groß für den Treiber ist?</translation>
     </message>
@@ -5250,7 +5319,7 @@
 <context>
     <name>lb::WorkCheck</name>
     <message>
-        <location filename="../../app/work_check.cpp" line="+36"/>
+        <location filename="../../app/work_check.cpp" line="+35"/>
         <source>killed by signal %1 (%2)</source>
         <extracomment>%2 is the C library&apos;s name of the signal, in English (&quot;Segmentation fault&quot;)</extracomment>
         <translation>durch Signal %1 beendet (%2)</translation>

@@ -97,7 +97,7 @@
 <context>
     <name>lb::BoundedRead</name>
     <message>
-        <location filename="../../render/model/bounded_read.cpp" line="+41"/>
+        <location filename="../../render/model/bounded_read.cpp" line="+40"/>
         <location line="+6"/>
         <source>no such file</source>
         <translation type="unfinished"></translation>
@@ -506,7 +506,7 @@
 <context>
     <name>lb::Exercise</name>
     <message>
-        <location filename="../../render/model/exercise.cpp" line="+122"/>
+        <location filename="../../render/model/exercise.cpp" line="+125"/>
         <source>%1 (%2)</source>
         <extracomment>a field of an exercise as the file spells it (%1, &quot;exercise.grading.cases&quot;) and why it was not used (%2)</extracomment>
         <translation type="unfinished"></translation>
@@ -518,6 +518,9 @@
     </message>
     <message>
         <location line="+11"/>
+        <location filename="../../render/model/exercise_mistakes.cpp" line="+55"/>
+        <location line="+11"/>
+        <location line="+20"/>
         <source>unknown field</source>
         <translation type="unfinished"></translation>
     </message>
@@ -529,6 +532,7 @@
     <message>
         <location line="+9"/>
         <location line="+5"/>
+        <location filename="../../render/model/exercise_mistakes.cpp" line="-51"/>
         <source>not %1</source>
         <extracomment>%1 the words a file may give, as it spells them (&quot;phong, gouraud, flat&quot;)</extracomment>
         <translation type="unfinished"></translation>
@@ -539,7 +543,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+15"/>
         <source>not a number</source>
         <translation type="unfinished"></translation>
     </message>
@@ -561,6 +565,57 @@
     <message>
         <location line="+6"/>
         <source>no such parameter &apos;%1&apos;; those are %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../render/model/exercise_mistakes.cpp" line="+11"/>
+        <source>not true or false</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <location line="+17"/>
+        <source>not an object</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>not a name of 1 to %1 characters; the mistake is left out</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>no usable hint; the mistake is left out</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>not a shader&apos;s text of up to 1 MiB; the mistake is left out</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>both a program and a built-in; the mistake is left out</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>needs both a vertex and a fragment shader: the reference is the built-in program; the mistake is left out</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>neither a program (&quot;vertex&quot;, &quot;fragment&quot;) nor &quot;builtIn&quot;: {...}; the mistake is left out</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>not a list</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>more than %1 mistakes; the rest are left out</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -613,12 +668,12 @@
     </message>
     <message>
         <location line="+30"/>
-        <location line="+122"/>
+        <location line="+136"/>
         <source>Check my work</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-121"/>
+        <location line="-135"/>
         <source>Draws the exercise&apos;s cases with the program in the editor and with the reference, as the teacher&apos;s grading does, and lists each case (F9)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -628,7 +683,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+17"/>
         <source>Case</source>
         <translation type="unfinished"></translation>
     </message>
@@ -668,7 +723,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+39"/>
+        <location line="+42"/>
         <source>No exercise is open</source>
         <translation type="unfinished"></translation>
     </message>
@@ -678,7 +733,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+13"/>
         <source>The share of the pixels either program draws that are within %1/255 of the reference, at %2 x %3: the difference view counts a case alike (at its own size)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -719,7 +774,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+26"/>
         <source>Your program does not compile:
 %1</source>
         <extracomment>%1 the compiler&apos;s messages</extracomment>
@@ -756,6 +811,13 @@
     </message>
     <message>
         <location line="+3"/>
+        <source>This exercise cannot check your work: one of the known mistakes it lists cannot be drawn. Tell your teacher:
+%1</source>
+        <extracomment>%1 which of the exercise&apos;s known mistakes, and why (the driver&apos;s words)</extracomment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>The check took too long (%1) and was stopped</source>
         <extracomment>%1 how long it was given</extracomment>
         <translation type="unfinished"></translation>
@@ -830,6 +892,12 @@
         <source>%1 pixels drawn</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <location line="+22"/>
+        <source>Your failing cases match the exercise&apos;s known mistake &quot;%1&quot; in %2 of their pixels, far more than they match the reference</source>
+        <extracomment>%1 the mistake&apos;s name as the exercise gives it (data, English); %2 a share (&quot;98.5%&quot;)</extracomment>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>lb::ExportSizeDialog</name>
@@ -887,12 +955,12 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../render/import/import_process.cpp" line="+56"/>
+        <location filename="../../render/import/import_process.cpp" line="+55"/>
         <source>a texture file</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+136"/>
+        <location line="+129"/>
         <source>a mesh file</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1159,7 +1227,7 @@
 <context>
     <name>lb::ImportProcess</name>
     <message>
-        <location filename="../../render/import/import_process.cpp" line="-161"/>
+        <location filename="../../render/import/import_process.cpp" line="-156"/>
         <source>the importer crashed with a segmentation fault while reading this file; the workbench is fine</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1169,12 +1237,12 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>the importer crashed with a bus error while reading this file; the workbench is fine</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>the importer crashed with an arithmetic error while reading this file; the workbench is fine</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1205,7 +1273,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+69"/>
+        <location line="+62"/>
         <source>%1: not readable (permissions)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1225,7 +1293,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+16"/>
         <source>gave up after %1 s of CPU time (the import time limit)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1235,7 +1303,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>out of memory: reading this file needs more than the import memory limit (%1 MB)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1287,7 +1355,7 @@
     </message>
     <message>
         <location line="+14"/>
-        <location filename="../../app/main.cpp" line="+211"/>
+        <location filename="../../app/main.cpp" line="+224"/>
         <source>Language</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3671,8 +3739,8 @@
 <context>
     <name>lb::SafeWrite</name>
     <message>
-        <location filename="../../render/model/safe_write.cpp" line="+69"/>
-        <location line="+13"/>
+        <location filename="../../render/model/safe_write.cpp" line="+61"/>
+        <location line="+14"/>
         <source>a loop of symbolic links</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3682,7 +3750,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+11"/>
         <source>the folder %1 does not exist</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3692,12 +3760,12 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>cannot write in %1: %2</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+136"/>
+        <location line="+106"/>
         <source>no image to write</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3970,13 +4038,13 @@
 <context>
     <name>lb::SceneBudget</name>
     <message>
-        <location filename="../../render/model/scene_budget.cpp" line="+63"/>
+        <location filename="../../render/model/scene_budget.cpp" line="+60"/>
         <location line="+2"/>
         <source>%1 million</source>
         <translation type="unfinished"></translation>
     </message>
     <message numerus="yes">
-        <location line="+27"/>
+        <location line="+16"/>
         <source>%n object(s) at tessellation %1 would make %2 triangles (~%3)</source>
         <extracomment>what a scene asks for; %n the objects in the scene</extracomment>
         <translation>
@@ -4016,7 +4084,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+109"/>
+        <location line="+105"/>
         <source>%1 GB</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4897,7 +4965,7 @@
 <context>
     <name>lb::TrialProcess</name>
     <message>
-        <location filename="../../render/trial/trial_process.cpp" line="+176"/>
+        <location filename="../../render/trial/trial_process.cpp" line="+167"/>
         <source>compiling this program and drawing it on small frames did not finish within %1 (the trial&apos;s helper was replaced): an endless or very long loop, or a program too big for the driver?</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5239,7 +5307,7 @@
 <context>
     <name>lb::WorkCheck</name>
     <message>
-        <location filename="../../app/work_check.cpp" line="+36"/>
+        <location filename="../../app/work_check.cpp" line="+35"/>
         <source>killed by signal %1 (%2)</source>
         <extracomment>%2 is the C library&apos;s name of the signal, in English (&quot;Segmentation fault&quot;)</extracomment>
         <translation type="unfinished"></translation>

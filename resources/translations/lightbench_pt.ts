@@ -97,7 +97,7 @@
 <context>
     <name>lb::BoundedRead</name>
     <message>
-        <location filename="../../render/model/bounded_read.cpp" line="+41"/>
+        <location filename="../../render/model/bounded_read.cpp" line="+40"/>
         <location line="+6"/>
         <source>no such file</source>
         <translation>ficheiro inexistente</translation>
@@ -506,7 +506,7 @@
 <context>
     <name>lb::Exercise</name>
     <message>
-        <location filename="../../render/model/exercise.cpp" line="+122"/>
+        <location filename="../../render/model/exercise.cpp" line="+125"/>
         <source>%1 (%2)</source>
         <extracomment>a field of an exercise as the file spells it (%1, &quot;exercise.grading.cases&quot;) and why it was not used (%2)</extracomment>
         <translation>%1 (%2)</translation>
@@ -518,6 +518,9 @@
     </message>
     <message>
         <location line="+11"/>
+        <location filename="../../render/model/exercise_mistakes.cpp" line="+55"/>
+        <location line="+11"/>
+        <location line="+20"/>
         <source>unknown field</source>
         <translation>campo desconhecido</translation>
     </message>
@@ -529,6 +532,7 @@
     <message>
         <location line="+9"/>
         <location line="+5"/>
+        <location filename="../../render/model/exercise_mistakes.cpp" line="-51"/>
         <source>not %1</source>
         <extracomment>%1 the words a file may give, as it spells them (&quot;phong, gouraud, flat&quot;)</extracomment>
         <translation>não é nenhum destes: %1</translation>
@@ -539,7 +543,7 @@
         <translation>%1: sem programa de referência (&quot;reference&quot;: {&quot;vertex&quot;: ..., &quot;fragment&quot;: ...} ou {&quot;builtIn&quot;: {...}})</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+15"/>
         <source>not a number</source>
         <translation>não é um número</translation>
     </message>
@@ -562,6 +566,57 @@
         <location line="+6"/>
         <source>no such parameter &apos;%1&apos;; those are %2</source>
         <translation>o parâmetro &apos;%1&apos; não existe; os parâmetros válidos são %2</translation>
+    </message>
+    <message>
+        <location filename="../../render/model/exercise_mistakes.cpp" line="+11"/>
+        <source>not true or false</source>
+        <translation>não é true nem false</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <location line="+17"/>
+        <source>not an object</source>
+        <translation>não é um objeto</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>not a name of 1 to %1 characters; the mistake is left out</source>
+        <translation>não é um nome de 1 a %1 carateres; o erro é posto de parte</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>no usable hint; the mistake is left out</source>
+        <translation>sem sugestão utilizável; o erro é posto de parte</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>not a shader&apos;s text of up to 1 MiB; the mistake is left out</source>
+        <translation>não é o texto de um shader de até 1 MiB; o erro é posto de parte</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>both a program and a built-in; the mistake is left out</source>
+        <translation>é ao mesmo tempo um programa e um integrado; o erro é posto de parte</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>needs both a vertex and a fragment shader: the reference is the built-in program; the mistake is left out</source>
+        <translation>precisa de um vertex e de um fragment shader: a referência é o programa integrado; o erro é posto de parte</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>neither a program (&quot;vertex&quot;, &quot;fragment&quot;) nor &quot;builtIn&quot;: {...}; the mistake is left out</source>
+        <translation>não é um programa (&quot;vertex&quot;, &quot;fragment&quot;) nem &quot;builtIn&quot;: {...}; o erro é posto de parte</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>not a list</source>
+        <translation>não é uma lista</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>more than %1 mistakes; the rest are left out</source>
+        <translation>mais de %1 erros; os restantes são postos de parte</translation>
     </message>
 </context>
 <context>
@@ -613,12 +668,12 @@
     </message>
     <message>
         <location line="+30"/>
-        <location line="+122"/>
+        <location line="+136"/>
         <source>Check my work</source>
         <translation>Verificar o meu trabalho</translation>
     </message>
     <message>
-        <location line="-121"/>
+        <location line="-135"/>
         <source>Draws the exercise&apos;s cases with the program in the editor and with the reference, as the teacher&apos;s grading does, and lists each case (F9)</source>
         <translation>Desenha os casos do exercício com o programa do editor e com a referência, como faz a avaliação do professor, e lista cada caso (F9)</translation>
     </message>
@@ -628,7 +683,7 @@
         <translation>Desatualizado: o programa no editor mudou desde esta verificação. Verificar o meu trabalho (F9) verifica-o tal como está agora.</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+17"/>
         <source>Case</source>
         <translation>Caso</translation>
     </message>
@@ -668,7 +723,7 @@
         <translation>A cena tal como estava antes de se mostrar um caso</translation>
     </message>
     <message>
-        <location line="+39"/>
+        <location line="+42"/>
         <source>No exercise is open</source>
         <translation>Nenhum exercício aberto</translation>
     </message>
@@ -678,7 +733,7 @@
         <translation>Um exercício é um ficheiro de cena com um enunciado, o programa de referência do professor e a forma como é avaliado. Ficheiro &gt; Exemplos &gt; &quot;Exercício: iluminação por fragmento&quot; é um deles; Ficheiro &gt; Abrir Cena abre outros.</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+13"/>
         <source>The share of the pixels either program draws that are within %1/255 of the reference, at %2 x %3: the difference view counts a case alike (at its own size)</source>
         <translation>A percentagem dos píxeis desenhados por qualquer dos programas que diferem no máximo %1/255 da referência, a %2 x %3: a vista de diferença conta um caso da mesma forma (no seu próprio tamanho)</translation>
     </message>
@@ -719,7 +774,7 @@
         <translation>A verificar: os casos são desenhados com o seu programa e com a referência...</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+26"/>
         <source>Your program does not compile:
 %1</source>
         <extracomment>%1 the compiler&apos;s messages</extracomment>
@@ -758,7 +813,15 @@
         <translation>O seu programa foi recusado</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+3"/>
+        <source>This exercise cannot check your work: one of the known mistakes it lists cannot be drawn. Tell your teacher:
+%1</source>
+        <extracomment>%1 which of the exercise&apos;s known mistakes, and why (the driver&apos;s words)</extracomment>
+        <translation>Este exercício não consegue verificar o seu trabalho: um dos erros conhecidos que indica não pode ser desenhado. Avise o seu professor:
+%1</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>The check could not start:
 %1</source>
         <extracomment>%1 why the checking process did not start</extracomment>
@@ -784,7 +847,13 @@
         <translation>Não verificado: %1</translation>
     </message>
     <message>
-        <location line="-7"/>
+        <location line="+66"/>
+        <source>Your failing cases match the exercise&apos;s known mistake &quot;%1&quot; in %2 of their pixels, far more than they match the reference</source>
+        <extracomment>%1 the mistake&apos;s name as the exercise gives it (data, English); %2 a share (&quot;98.5%&quot;)</extracomment>
+        <translation>Os seus casos falhados coincidem com o erro conhecido &quot;%1&quot; do exercício em %2 dos seus píxeis, muito mais do que com a referência</translation>
+    </message>
+    <message>
+        <location line="-73"/>
         <source>The check took too long (%1) and was stopped</source>
         <extracomment>%1 how long it was given</extracomment>
         <translation>A verificação demorou demasiado (%1) e foi interrompida</translation>
@@ -886,12 +955,12 @@
 <context>
     <name>lb::FileLimit</name>
     <message>
-        <location filename="../../render/import/import_process.cpp" line="+56"/>
+        <location filename="../../render/import/import_process.cpp" line="+55"/>
         <source>a texture file</source>
         <translation>um ficheiro de textura</translation>
     </message>
     <message>
-        <location line="+136"/>
+        <location line="+129"/>
         <source>a mesh file</source>
         <translation>um ficheiro de malha</translation>
     </message>
@@ -1164,7 +1233,7 @@
 <context>
     <name>lb::ImportProcess</name>
     <message>
-        <location filename="../../render/import/import_process.cpp" line="-161"/>
+        <location filename="../../render/import/import_process.cpp" line="-156"/>
         <source>the importer crashed with a segmentation fault while reading this file; the workbench is fine</source>
         <translation>o importador terminou abruptamente com uma falha de segmentação ao ler este ficheiro; a bancada de trabalho não foi afetada</translation>
     </message>
@@ -1174,12 +1243,12 @@
         <translation>o importador terminou abruptamente com um abort ao ler este ficheiro; a bancada de trabalho não foi afetada</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>the importer crashed with a bus error while reading this file; the workbench is fine</source>
         <translation>o importador terminou abruptamente com um erro de barramento (bus error) ao ler este ficheiro; a bancada de trabalho não foi afetada</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>the importer crashed with an arithmetic error while reading this file; the workbench is fine</source>
         <translation>o importador terminou abruptamente com um erro aritmético ao ler este ficheiro; a bancada de trabalho não foi afetada</translation>
     </message>
@@ -1210,7 +1279,7 @@
         <translation>%1: não é possível iniciar o processo auxiliar de importação &apos;%2&apos;: %3</translation>
     </message>
     <message>
-        <location line="+69"/>
+        <location line="+62"/>
         <source>%1: not readable (permissions)</source>
         <translation>%1: não pode ser lido (permissões)</translation>
     </message>
@@ -1230,7 +1299,7 @@
         <translation>%1: abandonado após %2 s (o limite de tempo da importação)</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+16"/>
         <source>gave up after %1 s of CPU time (the import time limit)</source>
         <translation>abandonado após %1 s de tempo de CPU (o limite de tempo da importação)</translation>
     </message>
@@ -1240,7 +1309,7 @@
         <translation>o processo auxiliar de importação foi terminado à força (pelo sistema, por falta de memória?)</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>out of memory: reading this file needs more than the import memory limit (%1 MB)</source>
         <translation>sem memória: ler este ficheiro exige mais do que o limite de memória da importação (%1 MB)</translation>
     </message>
@@ -1292,7 +1361,7 @@
     </message>
     <message>
         <location line="+14"/>
-        <location filename="../../app/main.cpp" line="+211"/>
+        <location filename="../../app/main.cpp" line="+224"/>
         <source>Language</source>
         <translation>Idioma</translation>
     </message>
@@ -3679,8 +3748,8 @@
 <context>
     <name>lb::SafeWrite</name>
     <message>
-        <location filename="../../render/model/safe_write.cpp" line="+69"/>
-        <location line="+13"/>
+        <location filename="../../render/model/safe_write.cpp" line="+61"/>
+        <location line="+14"/>
         <source>a loop of symbolic links</source>
         <translation>um ciclo de ligações simbólicas</translation>
     </message>
@@ -3690,7 +3759,7 @@
         <translation>não é um ficheiro regular (é um dispositivo, um pipe ou uma pasta); não foi substituído</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+11"/>
         <source>the folder %1 does not exist</source>
         <translation>a pasta %1 não existe</translation>
     </message>
@@ -3700,12 +3769,12 @@
         <translation>%1 não é uma pasta</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>cannot write in %1: %2</source>
         <translation>não é possível escrever em %1: %2</translation>
     </message>
     <message>
-        <location line="+136"/>
+        <location line="+106"/>
         <source>no image to write</source>
         <translation>nenhuma imagem para escrever</translation>
     </message>
@@ -3978,13 +4047,13 @@
 <context>
     <name>lb::SceneBudget</name>
     <message>
-        <location filename="../../render/model/scene_budget.cpp" line="+63"/>
+        <location filename="../../render/model/scene_budget.cpp" line="+60"/>
         <location line="+2"/>
         <source>%1 million</source>
         <translation>%1 milhões</translation>
     </message>
     <message numerus="yes">
-        <location line="+27"/>
+        <location line="+16"/>
         <source>%n object(s) at tessellation %1 would make %2 triangles (~%3)</source>
         <extracomment>what a scene asks for; %n the objects in the scene</extracomment>
         <translation>
@@ -4024,7 +4093,7 @@
         <translation>%1; %2</translation>
     </message>
     <message>
-        <location line="+109"/>
+        <location line="+105"/>
         <source>%1 GB</source>
         <translation>%1 GB</translation>
     </message>
@@ -4907,7 +4976,7 @@
 <context>
     <name>lb::TrialProcess</name>
     <message>
-        <location filename="../../render/trial/trial_process.cpp" line="+176"/>
+        <location filename="../../render/trial/trial_process.cpp" line="+167"/>
         <source>compiling this program and drawing it on small frames did not finish within %1 (the trial&apos;s helper was replaced): an endless or very long loop, or a program too big for the driver?</source>
         <translation>compilar este programa e desenhá-lo em fotogramas pequenos não terminou em %1 (o processo auxiliar de teste foi substituído): um ciclo infinito ou muito longo, ou um programa grande demais para o controlador?</translation>
     </message>
@@ -5250,7 +5319,7 @@
 <context>
     <name>lb::WorkCheck</name>
     <message>
-        <location filename="../../app/work_check.cpp" line="+36"/>
+        <location filename="../../app/work_check.cpp" line="+35"/>
         <source>killed by signal %1 (%2)</source>
         <extracomment>%2 is the C library&apos;s name of the signal, in English (&quot;Segmentation fault&quot;)</extracomment>
         <translation>terminado pelo sinal %1 (%2)</translation>
