@@ -31,8 +31,10 @@ namespace lb {
 namespace {
 
 // What a child says when the exercise, not the submission, is at fault: the batch stops.
-const QStringList kBatchFailures{"no exercise", "no OpenGL", "exercise files",
-                                 "reference does not build", "reference refused"};
+const QStringList kBatchFailures{"no exercise",       "no OpenGL",
+                                 "exercise files",    "reference does not build",
+                                 "reference refused", "mistake does not build",
+                                 "mistake refused"};
 
 // Names as the report gives them: a submission's own, made unique ("lighting", "lighting-2")
 // so that rows and sheets are told apart.

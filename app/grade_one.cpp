@@ -3,11 +3,13 @@
 // against the reference's, case by case. Whatever happens, one line of JSON on stdout says it.
 #include "grade.h"
 
+#include "grade_mistakes.h"
 #include "grading.h"
 #include "grading_files.h"
 #include "grading_report.h"
 #include "import_process.h"
 #include "message_text.h"
+#include "mistake_match.h"
 #include "offscreen.h"
 #include "process_bounds.h"
 #include "program_guard.h"
@@ -172,6 +174,7 @@ int runGradeOne(const CommandLine &cl)
     int worst = -1;
     CaseResult worstResult;
     QImage worstFrame;
+    std::vector<FailingCase> failing; // the first ones, for the known mistakes
     for (std::size_t k = 0; k < cases.size(); ++k) {
         const QImage frame = offscreen.render(cases[k]);
         // A driver that reset its context drew nothing worth grading (a real GPU stopping a
@@ -183,6 +186,8 @@ int runGradeOne(const CommandLine &cl)
         const CaseResult r =
             measureCase(frame, reference[k], kBackgroundPixel, spec.tolerance, spec.passShare);
         out.cases.push_back(r);
+        if (!r.passed && int(failing.size()) < kMaxMistakeCases)
+            failing.push_back({k, frame, r});
         const bool worse =
             worst < 0 || r.shareWithin < worstResult.shareWithin ||
             (r.shareWithin == worstResult.shareWithin && r.largest > worstResult.largest);
@@ -193,6 +198,15 @@ int runGradeOne(const CommandLine &cl)
         }
     }
     out.worstCase = worst;
+    // Never a hint for a submission that passes: the mistakes are drawn only for failures.
+    const MistakeSearch search = findMistake(
+        offscreen, exercise, cases, failing,
+        [&](const QString &status, const QString &diagnostic) { finish(status, diagnostic); });
+    if (!search.failure.isEmpty()) {
+        out.cases.clear();
+        return finish(search.failure, search.diagnostic);
+    }
+    out.mistake = search.match;
     if (!cl.sheetsDir.isEmpty()) {
         const QString path = gradingSheetPath(cl.sheetsDir, name);
         // A sheet is whole or not there; why not is the submission's diagnostic.

@@ -76,6 +76,15 @@ ExercisePanel::ExercisePanel(QWidget *parent) : QWidget(parent)
     m_stale->setWordWrap(true);
     m_stale->setStyleSheet("color: #b35900; font-weight: bold;");
     m_stale->hide();
+    // Above the cases, where a student looks first: what their picture matches, in words.
+    m_hint = new QLabel(this);
+    m_hint->setWordWrap(true);
+    m_hint->setTextFormat(Qt::PlainText);
+    m_hint->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_hint->setMargin(6);
+    m_hint->setStyleSheet("background-color: #fff4c2; color: #3d3000; border: 1px solid #d9b84a;"
+                          "font-weight: bold;");
+    m_hint->hide();
     m_cases = new QTreeWidget(this);
     m_cases->setColumnCount(4);
     m_cases->setHeaderLabels({tr("Case"), tr("Result"), tr("Largest"), tr("Within")});
@@ -105,6 +114,7 @@ ExercisePanel::ExercisePanel(QWidget *parent) : QWidget(parent)
     layout->addWidget(m_check);
     layout->addWidget(m_summary);
     layout->addWidget(m_stale);
+    layout->addWidget(m_hint);
     layout->addWidget(m_cases, 1);
     layout->addWidget(m_back);
     setExercise(std::nullopt);
@@ -132,6 +142,8 @@ void ExercisePanel::setExercise(const std::optional<Exercise> &exercise)
     m_cases->clear();
     m_summary->clear();
     m_cases->hide();
+    m_hint->hide();
+    m_mistakeHints.clear();
     markShownCase(-1);
     if (!exercise) {
         m_title->setText(tr("No exercise is open"));
@@ -145,6 +157,8 @@ void ExercisePanel::setExercise(const std::optional<Exercise> &exercise)
     m_passShare = exercise->grading.passShare;
     m_tolerance = exercise->grading.tolerance;
     m_size = exercise->grading.size;
+    for (const ExerciseMistake &m : exercise->mistakes)
+        m_mistakeHints.push_back(m.hint);
     m_cases->headerItem()->setToolTip(
         3, tr("The share of the pixels either program draws that are within %1/255 of the "
               "reference, at %2 x %3: the difference view counts a case alike (at its own size)")
@@ -188,6 +202,7 @@ void ExercisePanel::setChecking(bool checking)
                               "reference..."));
         m_cases->clear();
         m_cases->hide();
+        m_hint->hide();
     }
 }
 
@@ -197,6 +212,7 @@ void ExercisePanel::showProblem(const QString &text)
     m_summary->setText(text);
     m_cases->clear();
     m_cases->hide();
+    m_hint->hide();
 }
 
 QString ExercisePanel::problemText(const GradingReport &report)
@@ -217,6 +233,11 @@ QString ExercisePanel::problemText(const GradingReport &report)
     if (report.status == "refused")
         //: %1 why it was refused (a loop that never ends, a frame too slow)
         return said ? tr("Your program was refused:\n%1").arg(why) : tr("Your program was refused");
+    if (report.status == "mistake does not build" || report.status == "mistake refused")
+        //: %1 which of the exercise's known mistakes, and why (the driver's words)
+        return tr("This exercise cannot check your work: one of the known mistakes it lists "
+                  "cannot be drawn. Tell your teacher:\n%1")
+            .arg(why);
     if (report.status == "timed out")
         //: %1 how long it was given
         return tr("The check took too long (%1) and was stopped").arg(why);
@@ -272,7 +293,30 @@ void ExercisePanel::showReport(const GradingReport &report)
                          .arg(r.compared)
                    : tr("%1 pixels drawn").arg(r.compared));
     }
+    showHint(report);
     m_cases->show();
+}
+
+void ExercisePanel::showHint(const GradingReport &report)
+{
+    // Never for a submission that passes (the child gives none then, nor is it shown).
+    if (!report.mistake || report.passedCount() == int(report.cases.size())) {
+        m_hint->hide();
+        return;
+    }
+    const int index = report.mistake->index;
+    // The exercise's own words in the window's language; the report's English when the
+    // exercise shown is not the one checked (its list changed meanwhile).
+    const QString hint = index >= 0 && index < int(m_mistakeHints.size())
+                             ? localized(m_mistakeHints[std::size_t(index)], lessonLanguage())
+                             : report.mistake->hint;
+    m_hint->setText(hint);
+    //: %1 the mistake's name as the exercise gives it (data, English); %2 a share ("98.5%")
+    m_hint->setToolTip(
+        tr("Your failing cases match the exercise's known mistake \"%1\" in %2 "
+           "of their pixels, far more than they match the reference")
+            .arg(escapedName(report.mistake->name), percent(report.mistake->shareWithin)));
+    m_hint->show();
 }
 
 void ExercisePanel::markShownCase(int index)

@@ -10,6 +10,8 @@
 
 #include <QWidget>
 
+#include <vector>
+
 class QLabel;
 class QPushButton;
 class QTreeWidget;
@@ -43,6 +45,9 @@ public:
     QTreeWidget *caseList() const { return m_cases; }
     QLabel *summaryLabel() const { return m_summary; }
     QLabel *titleLabel() const { return m_title; }
+    // The known mistake a failing check's frames match, in the window's language; hidden
+    // when there is none.
+    QLabel *hintLabel() const { return m_hint; }
 
 signals:
     void checkRequested();
@@ -53,6 +58,8 @@ signals:
 private:
     // Why a report lists no cases, in words (its status and diagnostic).
     static QString problemText(const GradingReport &report);
+    // The known mistake the report names, above the cases, or nothing.
+    void showHint(const GradingReport &report);
 
     QLabel *m_title;
     QLabel *m_task;
@@ -60,6 +67,7 @@ private:
     QPushButton *m_check;
     QLabel *m_summary;
     QLabel *m_stale;
+    QLabel *m_hint;
     QTreeWidget *m_cases;
     QPushButton *m_back;
     bool m_checking = false;
@@ -67,6 +75,7 @@ private:
     double m_passShare = 0.99;
     int m_tolerance = 2;
     QSize m_size;
+    std::vector<LocalizedText> m_mistakeHints; // the exercise's, by the report's index
 };
 
 } // namespace lb

@@ -138,7 +138,7 @@ QJsonObject exerciseJson(const Exercise &exercise)
     QJsonArray casePoints;
     for (double p : g.casePoints)
         casePoints.append(p);
-    return QJsonObject{
+    QJsonObject json{
         {"title", exercise.title.isEmpty() ? QJsonValue("") : localizedTextJson(exercise.title)},
         {"task", exercise.task.isEmpty() ? QJsonValue("") : localizedTextJson(exercise.task)},
         {"reference", reference},
@@ -149,6 +149,9 @@ QJsonObject exerciseJson(const Exercise &exercise)
                                 {"vary", vary},
                                 {"points", g.casePoints.empty() ? QJsonValue(g.points)
                                                                 : QJsonValue(casePoints)}}}};
+    if (!exercise.mistakes.empty())
+        json["mistakes"] = exerciseMistakesJson(exercise.mistakes);
+    return json;
 }
 
 ExerciseRead readExercise(const QJsonValue &json, QStringList *ignored)
@@ -186,7 +189,7 @@ ExerciseRead readExerciseSection(const QJsonValue &json, QStringList *ignored)
     e.task = readLocalizedText(o.value("task"), "task", kMaxExerciseTextCharacters, ignore);
     const QJsonObject known = exerciseJson(e);
     for (auto it = o.begin(); it != o.end(); ++it)
-        if (!known.contains(it.key()))
+        if (!known.contains(it.key()) && it.key() != QLatin1String("mistakes"))
             ignore(it.key(), Text::tr("unknown field"));
 
     const QJsonObject ref = o.value("reference").toObject();
@@ -216,6 +219,8 @@ ExerciseRead readExerciseSection(const QJsonValue &json, QStringList *ignored)
                          .arg("exercise");
         return read;
     }
+
+    e.mistakes = readExerciseMistakes(o.value("mistakes"), e.reference.builtIn(), ignore);
 
     const QJsonObject g = o.value("grading").toObject();
     const QJsonObject knownGrading = exerciseJson(e).value("grading").toObject();

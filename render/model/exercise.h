@@ -11,8 +11,10 @@
 //    "grading": {"cases": 20, "size": [320, 240], "tolerance": 2, "passShare": 0.99,
 //                "vary": ["light", "lightW", "lightFrame", "lightColour", "material",
 //                         "camera", "projection", "scale"],
-//                "points": 100}}     (the total in equal shares, or [p0, p1, ...]: one per case)
+//                "points": 100},     (the total in equal shares, or [p0, p1, ...]: one per case)
+//    "mistakes": [...]}                 (known mistakes and their hints: exercise_mistakes.h)
 
+#include "exercise_mistakes.h"
 #include "localized_text.h"
 #include "scene.h"
 
@@ -71,6 +73,7 @@ struct Exercise
     LocalizedText title, task; // shown in the window's language (localized_text.h)
     ExerciseReference reference;
     GradingSpec grading;
+    std::vector<ExerciseMistake> mistakes; // what a failing submission's frames may match
     // A section that cannot be graded against (no reference yet, while the teacher writes
     // it) is kept as it was read and written back so; set only then.
     QJsonValue unread{QJsonValue::Undefined};

@@ -523,7 +523,7 @@
         <translation>%1 Werte für %2 Fälle (einer pro Fall)</translation>
     </message>
     <message>
-        <location line="+78"/>
+        <location line="+81"/>
         <source>%1 (%2)</source>
         <extracomment>a field of an exercise as the file spells it (%1, &quot;exercise.grading.cases&quot;) and why it was not used (%2)</extracomment>
         <translation>%1 (%2)</translation>
@@ -535,18 +535,22 @@
     </message>
     <message>
         <location line="+11"/>
-        <location line="+34"/>
+        <location line="+36"/>
+        <location filename="../../render/model/exercise_mistakes.cpp" line="+55"/>
+        <location line="+11"/>
+        <location line="+20"/>
         <source>unknown field</source>
         <translation>unbekanntes Feld</translation>
     </message>
     <message>
-        <location line="-26"/>
+        <location line="-28"/>
         <source>%1: needs both a vertex and a fragment shader</source>
         <translation>%1: braucht sowohl einen Vertex- als auch einen Fragment-Shader</translation>
     </message>
     <message>
         <location line="+9"/>
         <location line="+5"/>
+        <location filename="../../render/model/exercise_mistakes.cpp" line="-51"/>
         <source>not %1</source>
         <extracomment>%1 the words a file may give, as it spells them (&quot;phong, gouraud, flat&quot;)</extracomment>
         <translation>keiner der Werte %1</translation>
@@ -557,7 +561,7 @@
         <translation>%1: kein Referenzprogramm (&quot;reference&quot;: {&quot;vertex&quot;: ..., &quot;fragment&quot;: ...} oder {&quot;builtIn&quot;: {...}})</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+19"/>
         <source>not a number</source>
         <translation>keine Zahl</translation>
     </message>
@@ -580,6 +584,57 @@
         <location line="+6"/>
         <source>no such parameter &apos;%1&apos;; those are %2</source>
         <translation>unbekannter Parameter &apos;%1&apos;; möglich sind %2</translation>
+    </message>
+    <message>
+        <location filename="../../render/model/exercise_mistakes.cpp" line="+11"/>
+        <source>not true or false</source>
+        <translation>weder true noch false</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <location line="+17"/>
+        <source>not an object</source>
+        <translation>kein Objekt</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>not a name of 1 to %1 characters; the mistake is left out</source>
+        <translation>kein Name mit 1 bis %1 Zeichen; der Fehler wird weggelassen</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>no usable hint; the mistake is left out</source>
+        <translation>kein verwendbarer Hinweis; der Fehler wird weggelassen</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>not a shader&apos;s text of up to 1 MiB; the mistake is left out</source>
+        <translation>kein Shader-Text von bis zu 1 MiB; der Fehler wird weggelassen</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>both a program and a built-in; the mistake is left out</source>
+        <translation>sowohl ein Programm als auch ein eingebautes; der Fehler wird weggelassen</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>needs both a vertex and a fragment shader: the reference is the built-in program; the mistake is left out</source>
+        <translation>braucht einen Vertex- und einen Fragment-Shader: Die Referenz ist das eingebaute Programm; der Fehler wird weggelassen</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>neither a program (&quot;vertex&quot;, &quot;fragment&quot;) nor &quot;builtIn&quot;: {...}; the mistake is left out</source>
+        <translation>weder ein Programm (&quot;vertex&quot;, &quot;fragment&quot;) noch &quot;builtIn&quot;: {...}; der Fehler wird weggelassen</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>not a list</source>
+        <translation>keine Liste</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>more than %1 mistakes; the rest are left out</source>
+        <translation>mehr als %1 Fehler; die übrigen werden weggelassen</translation>
     </message>
 </context>
 <context>
@@ -631,12 +686,12 @@
     </message>
     <message>
         <location line="+30"/>
-        <location line="+122"/>
+        <location line="+136"/>
         <source>Check my work</source>
         <translation>Arbeit prüfen</translation>
     </message>
     <message>
-        <location line="-121"/>
+        <location line="-135"/>
         <source>Draws the exercise&apos;s cases with the program in the editor and with the reference, as the teacher&apos;s grading does, and lists each case (F9)</source>
         <translation>Zeichnet die Fälle der Übung mit dem Programm im Editor und mit der Referenz, wie es die Bewertung der Lehrkraft tut, und listet jeden Fall auf (F9)</translation>
     </message>
@@ -646,7 +701,7 @@
         <translation>Veraltet: Das Programm im Editor wurde seit dieser Prüfung geändert. „Arbeit prüfen“ (F9) prüft es im jetzigen Zustand.</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+17"/>
         <source>Case</source>
         <translation>Fall</translation>
     </message>
@@ -686,7 +741,7 @@
         <translation>Die Szene, wie sie war, bevor ein Fall gezeigt wurde</translation>
     </message>
     <message>
-        <location line="+39"/>
+        <location line="+42"/>
         <source>No exercise is open</source>
         <translation>Keine Übung geöffnet</translation>
     </message>
@@ -696,7 +751,7 @@
         <translation>Eine Übung ist eine Szenendatei mit einer Aufgabe, dem Referenzprogramm der Lehrkraft und der Art der Bewertung. Datei &gt; Beispiele &gt; „Übung: Beleuchtung pro Fragment“ ist eine davon; Datei &gt; Szene öffnen öffnet weitere.</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+13"/>
         <source>The share of the pixels either program draws that are within %1/255 of the reference, at %2 x %3: the difference view counts a case alike (at its own size)</source>
         <translation>Der Anteil der von einem der beiden Programme gezeichneten Pixel, die höchstens %1/255 von der Referenz abweichen, bei %2 x %3: Die Differenzansicht zählt einen Fall genauso (in ihrer eigenen Größe)</translation>
     </message>
@@ -737,7 +792,7 @@
         <translation>Prüfung läuft: Die Fälle werden mit Ihrem Programm und der Referenz gezeichnet...</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+26"/>
         <source>Your program does not compile:
 %1</source>
         <extracomment>%1 the compiler&apos;s messages</extracomment>
@@ -776,7 +831,15 @@
         <translation>Ihr Programm wurde abgelehnt</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+3"/>
+        <source>This exercise cannot check your work: one of the known mistakes it lists cannot be drawn. Tell your teacher:
+%1</source>
+        <extracomment>%1 which of the exercise&apos;s known mistakes, and why (the driver&apos;s words)</extracomment>
+        <translation>Diese Übung kann Ihre Arbeit nicht prüfen: Einer der bekannten Fehler, die sie aufführt, lässt sich nicht zeichnen. Sagen Sie es Ihrer Lehrkraft:
+%1</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>The check could not start:
 %1</source>
         <extracomment>%1 why the checking process did not start</extracomment>
@@ -802,7 +865,13 @@
         <translation>Nicht geprüft: %1</translation>
     </message>
     <message>
-        <location line="-7"/>
+        <location line="+66"/>
+        <source>Your failing cases match the exercise&apos;s known mistake &quot;%1&quot; in %2 of their pixels, far more than they match the reference</source>
+        <extracomment>%1 the mistake&apos;s name as the exercise gives it (data, English); %2 a share (&quot;98.5%&quot;)</extracomment>
+        <translation>Ihre fehlgeschlagenen Fälle stimmen in %2 ihrer Pixel mit dem bekannten Fehler „%1“ der Übung überein, weit mehr als mit der Referenz</translation>
+    </message>
+    <message>
+        <location line="-73"/>
         <source>The check took too long (%1) and was stopped</source>
         <extracomment>%1 how long it was given</extracomment>
         <translation>Die Prüfung dauerte zu lange (%1) und wurde abgebrochen</translation>

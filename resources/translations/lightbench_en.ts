@@ -523,7 +523,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+78"/>
+        <location line="+81"/>
         <source>%1 (%2)</source>
         <extracomment>a field of an exercise as the file spells it (%1, &quot;exercise.grading.cases&quot;) and why it was not used (%2)</extracomment>
         <translation type="unfinished"></translation>
@@ -535,18 +535,22 @@
     </message>
     <message>
         <location line="+11"/>
-        <location line="+34"/>
+        <location line="+36"/>
+        <location filename="../../render/model/exercise_mistakes.cpp" line="+55"/>
+        <location line="+11"/>
+        <location line="+20"/>
         <source>unknown field</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-26"/>
+        <location line="-28"/>
         <source>%1: needs both a vertex and a fragment shader</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location line="+9"/>
         <location line="+5"/>
+        <location filename="../../render/model/exercise_mistakes.cpp" line="-51"/>
         <source>not %1</source>
         <extracomment>%1 the words a file may give, as it spells them (&quot;phong, gouraud, flat&quot;)</extracomment>
         <translation type="unfinished"></translation>
@@ -557,7 +561,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+19"/>
         <source>not a number</source>
         <translation type="unfinished"></translation>
     </message>
@@ -579,6 +583,57 @@
     <message>
         <location line="+6"/>
         <source>no such parameter &apos;%1&apos;; those are %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../render/model/exercise_mistakes.cpp" line="+11"/>
+        <source>not true or false</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <location line="+17"/>
+        <source>not an object</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>not a name of 1 to %1 characters; the mistake is left out</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>no usable hint; the mistake is left out</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>not a shader&apos;s text of up to 1 MiB; the mistake is left out</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>both a program and a built-in; the mistake is left out</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>needs both a vertex and a fragment shader: the reference is the built-in program; the mistake is left out</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>neither a program (&quot;vertex&quot;, &quot;fragment&quot;) nor &quot;builtIn&quot;: {...}; the mistake is left out</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>not a list</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>more than %1 mistakes; the rest are left out</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -631,12 +686,12 @@
     </message>
     <message>
         <location line="+30"/>
-        <location line="+122"/>
+        <location line="+136"/>
         <source>Check my work</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-121"/>
+        <location line="-135"/>
         <source>Draws the exercise&apos;s cases with the program in the editor and with the reference, as the teacher&apos;s grading does, and lists each case (F9)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -646,7 +701,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+17"/>
         <source>Case</source>
         <translation type="unfinished"></translation>
     </message>
@@ -686,7 +741,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+39"/>
+        <location line="+42"/>
         <source>No exercise is open</source>
         <translation type="unfinished"></translation>
     </message>
@@ -696,7 +751,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+13"/>
         <source>The share of the pixels either program draws that are within %1/255 of the reference, at %2 x %3: the difference view counts a case alike (at its own size)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -737,7 +792,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+26"/>
         <source>Your program does not compile:
 %1</source>
         <extracomment>%1 the compiler&apos;s messages</extracomment>
@@ -774,6 +829,13 @@
     </message>
     <message>
         <location line="+3"/>
+        <source>This exercise cannot check your work: one of the known mistakes it lists cannot be drawn. Tell your teacher:
+%1</source>
+        <extracomment>%1 which of the exercise&apos;s known mistakes, and why (the driver&apos;s words)</extracomment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>The check took too long (%1) and was stopped</source>
         <extracomment>%1 how long it was given</extracomment>
         <translation type="unfinished"></translation>
@@ -846,6 +908,12 @@
     <message>
         <location line="+6"/>
         <source>%1 pixels drawn</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>Your failing cases match the exercise&apos;s known mistake &quot;%1&quot; in %2 of their pixels, far more than they match the reference</source>
+        <extracomment>%1 the mistake&apos;s name as the exercise gives it (data, English); %2 a share (&quot;98.5%&quot;)</extracomment>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -523,7 +523,7 @@
         <translation>%1 valores para %2 casos (um por caso)</translation>
     </message>
     <message>
-        <location line="+78"/>
+        <location line="+81"/>
         <source>%1 (%2)</source>
         <extracomment>a field of an exercise as the file spells it (%1, &quot;exercise.grading.cases&quot;) and why it was not used (%2)</extracomment>
         <translation>%1 (%2)</translation>
@@ -535,18 +535,22 @@
     </message>
     <message>
         <location line="+11"/>
-        <location line="+34"/>
+        <location line="+36"/>
+        <location filename="../../render/model/exercise_mistakes.cpp" line="+55"/>
+        <location line="+11"/>
+        <location line="+20"/>
         <source>unknown field</source>
         <translation>campo desconhecido</translation>
     </message>
     <message>
-        <location line="-26"/>
+        <location line="-28"/>
         <source>%1: needs both a vertex and a fragment shader</source>
         <translation>%1: precisa de um vertex shader e de um fragment shader</translation>
     </message>
     <message>
         <location line="+9"/>
         <location line="+5"/>
+        <location filename="../../render/model/exercise_mistakes.cpp" line="-51"/>
         <source>not %1</source>
         <extracomment>%1 the words a file may give, as it spells them (&quot;phong, gouraud, flat&quot;)</extracomment>
         <translation>não é nenhum destes: %1</translation>
@@ -557,7 +561,7 @@
         <translation>%1: sem programa de referência (&quot;reference&quot;: {&quot;vertex&quot;: ..., &quot;fragment&quot;: ...} ou {&quot;builtIn&quot;: {...}})</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+19"/>
         <source>not a number</source>
         <translation>não é um número</translation>
     </message>
@@ -580,6 +584,57 @@
         <location line="+6"/>
         <source>no such parameter &apos;%1&apos;; those are %2</source>
         <translation>o parâmetro &apos;%1&apos; não existe; os parâmetros válidos são %2</translation>
+    </message>
+    <message>
+        <location filename="../../render/model/exercise_mistakes.cpp" line="+11"/>
+        <source>not true or false</source>
+        <translation>não é true nem false</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <location line="+17"/>
+        <source>not an object</source>
+        <translation>não é um objeto</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>not a name of 1 to %1 characters; the mistake is left out</source>
+        <translation>não é um nome de 1 a %1 carateres; o erro é posto de parte</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>no usable hint; the mistake is left out</source>
+        <translation>sem sugestão utilizável; o erro é posto de parte</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>not a shader&apos;s text of up to 1 MiB; the mistake is left out</source>
+        <translation>não é o texto de um shader de até 1 MiB; o erro é posto de parte</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>both a program and a built-in; the mistake is left out</source>
+        <translation>é ao mesmo tempo um programa e um integrado; o erro é posto de parte</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>needs both a vertex and a fragment shader: the reference is the built-in program; the mistake is left out</source>
+        <translation>precisa de um vertex e de um fragment shader: a referência é o programa integrado; o erro é posto de parte</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>neither a program (&quot;vertex&quot;, &quot;fragment&quot;) nor &quot;builtIn&quot;: {...}; the mistake is left out</source>
+        <translation>não é um programa (&quot;vertex&quot;, &quot;fragment&quot;) nem &quot;builtIn&quot;: {...}; o erro é posto de parte</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>not a list</source>
+        <translation>não é uma lista</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>more than %1 mistakes; the rest are left out</source>
+        <translation>mais de %1 erros; os restantes são postos de parte</translation>
     </message>
 </context>
 <context>
@@ -631,12 +686,12 @@
     </message>
     <message>
         <location line="+30"/>
-        <location line="+122"/>
+        <location line="+136"/>
         <source>Check my work</source>
         <translation>Verificar o meu trabalho</translation>
     </message>
     <message>
-        <location line="-121"/>
+        <location line="-135"/>
         <source>Draws the exercise&apos;s cases with the program in the editor and with the reference, as the teacher&apos;s grading does, and lists each case (F9)</source>
         <translation>Desenha os casos do exercício com o programa do editor e com a referência, como faz a avaliação do professor, e lista cada caso (F9)</translation>
     </message>
@@ -646,7 +701,7 @@
         <translation>Desatualizado: o programa no editor mudou desde esta verificação. Verificar o meu trabalho (F9) verifica-o tal como está agora.</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+17"/>
         <source>Case</source>
         <translation>Caso</translation>
     </message>
@@ -686,7 +741,7 @@
         <translation>A cena tal como estava antes de se mostrar um caso</translation>
     </message>
     <message>
-        <location line="+39"/>
+        <location line="+42"/>
         <source>No exercise is open</source>
         <translation>Nenhum exercício aberto</translation>
     </message>
@@ -696,7 +751,7 @@
         <translation>Um exercício é um ficheiro de cena com um enunciado, o programa de referência do professor e a forma como é avaliado. Ficheiro &gt; Exemplos &gt; &quot;Exercício: iluminação por fragmento&quot; é um deles; Ficheiro &gt; Abrir Cena abre outros.</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+13"/>
         <source>The share of the pixels either program draws that are within %1/255 of the reference, at %2 x %3: the difference view counts a case alike (at its own size)</source>
         <translation>A percentagem dos píxeis desenhados por qualquer dos programas que diferem no máximo %1/255 da referência, a %2 x %3: a vista de diferença conta um caso da mesma forma (no seu próprio tamanho)</translation>
     </message>
@@ -737,7 +792,7 @@
         <translation>A verificar: os casos são desenhados com o seu programa e com a referência...</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+26"/>
         <source>Your program does not compile:
 %1</source>
         <extracomment>%1 the compiler&apos;s messages</extracomment>
@@ -776,7 +831,15 @@
         <translation>O seu programa foi recusado</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+3"/>
+        <source>This exercise cannot check your work: one of the known mistakes it lists cannot be drawn. Tell your teacher:
+%1</source>
+        <extracomment>%1 which of the exercise&apos;s known mistakes, and why (the driver&apos;s words)</extracomment>
+        <translation>Este exercício não consegue verificar o seu trabalho: um dos erros conhecidos que indica não pode ser desenhado. Avise o seu professor:
+%1</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>The check could not start:
 %1</source>
         <extracomment>%1 why the checking process did not start</extracomment>
@@ -802,7 +865,13 @@
         <translation>Não verificado: %1</translation>
     </message>
     <message>
-        <location line="-7"/>
+        <location line="+66"/>
+        <source>Your failing cases match the exercise&apos;s known mistake &quot;%1&quot; in %2 of their pixels, far more than they match the reference</source>
+        <extracomment>%1 the mistake&apos;s name as the exercise gives it (data, English); %2 a share (&quot;98.5%&quot;)</extracomment>
+        <translation>Os seus casos falhados coincidem com o erro conhecido &quot;%1&quot; do exercício em %2 dos seus píxeis, muito mais do que com a referência</translation>
+    </message>
+    <message>
+        <location line="-73"/>
         <source>The check took too long (%1) and was stopped</source>
         <extracomment>%1 how long it was given</extracomment>
         <translation>A verificação demorou demasiado (%1) e foi interrompida</translation>

@@ -7,6 +7,7 @@
 
 #include <QDockWidget>
 #include <QElapsedTimer>
+#include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QRegularExpression>
@@ -309,6 +310,33 @@ private slots:
         m_window->document().edit([](Scene &s) { s.compare.mode = CompareMode::Difference; });
         frame();
         QVERIFY(m_window->viewport()->compareText().contains("the exercise's reference"));
+    }
+
+    // Issue 33, part 3: a failing check whose frames match a known mistake says its hint
+    // above the cases (the exercise's own words, from its file); a passing one says none.
+    void checkMyWorkSaysTheKnownMistake()
+    {
+        QVERIFY(m_window->sceneActions()->open(exerciseFile(4)));
+        const QJsonArray mistakes = QJsonDocument::fromJson(readText(kExercise).toUtf8())
+                                        .object()["exercise"]
+                                        .toObject()["mistakes"]
+                                        .toArray();
+        setFragment(readText(LB_TEST_DATA "/grading/reflect_sign.frag"));
+        std::optional<GradingReport> report = check();
+        QVERIFY(report && report->mistake);
+        QCOMPARE(report->mistake->name, QString("reflection sign"));
+        QLabel *hint = m_window->exercisePanel()->hintLabel();
+        QVERIFY(hint->isVisible());
+        const QString expected =
+            mistakes[report->mistake->index]["hint"]["en"].toString(); // the window's English
+        QVERIFY(!expected.isEmpty());
+        QCOMPARE(hint->text(), expected);
+        // Above the list of cases.
+        QVERIFY(hint->geometry().bottom() <= cases()->geometry().top());
+        setFragment(readText(LB_TEST_DATA "/grading/correct/lighting.frag"));
+        report = check();
+        QVERIFY(report && report->passedCount() == 4 && !report->mistake);
+        QVERIFY(!hint->isVisible());
     }
 
     void aCheckRunningGoesWithItsExercise()

@@ -1,0 +1,119 @@
+#include "grade_mistakes.h"
+
+#include "compare.h"
+#include "message_text.h"
+#include "mistake_match.h"
+#include "offscreen.h"
+#include "program_guard.h"
+#include "work_check.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+
+namespace lb {
+
+namespace {
+
+// "mistake 2 (normal matrix) vertex:19: message": the exercise's program, inline in its file.
+QString mistakeText(int index, const ExerciseMistake &m, const Diagnostic &d)
+{
+    const QString who = QString("mistake %1 (%2)").arg(index).arg(escapedName(m.name));
+    const QString where = d.stage == ShaderStage::Link
+                              ? who + " (link)"
+                              : QString("%1 %2").arg(who, stageName(d.stage));
+    return d.line > 0 ? QString("%1:%2: %3").arg(where).arg(d.line).arg(d.message)
+                      : QString("%1: %2").arg(where, d.message);
+}
+
+// The case as the reference draws it: a built-in reference's choices set.
+Scene referenceScene(const Scene &c, const ExerciseReference &ref)
+{
+    Scene s = c;
+    if (ref.builtIn()) {
+        s.shading.shading = ref.shading;
+        s.shading.specular = ref.specular;
+    }
+    return s;
+}
+
+} // namespace
+
+MistakeSearch findMistake(OffscreenRenderer &offscreen, const Exercise &exercise,
+                          const std::vector<Scene> &cases, const std::vector<FailingCase> &failing,
+                          const std::function<void(const QString &, const QString &)> &stop)
+{
+    MistakeSearch out;
+    const GradingSpec &spec = exercise.grading;
+    const ExerciseReference &ref = exercise.reference;
+    if (failing.empty() || exercise.mistakes.empty())
+        return out;
+    double referenceShare = 0.0;
+    for (const FailingCase &f : failing)
+        referenceShare += f.result.shareWithin;
+    referenceShare /= double(failing.size());
+
+    std::vector<double> shares;
+    for (int i = 0; i < int(exercise.mistakes.size()); ++i) {
+        const ExerciseMistake &m = exercise.mistakes[std::size_t(i)];
+        if (m.isBuiltIn()) {
+            offscreen.renderer().clearUserProgram();
+        } else {
+            // A stage the mistake leaves out is the reference's (a mistake in one stage is
+            // written once).
+            const QString vertex = m.vertex.isEmpty() ? ref.vertex : m.vertex;
+            const QString fragment = m.fragment.isEmpty() ? ref.fragment : m.fragment;
+            std::optional<WorkGuard> guard;
+            guard.emplace(
+                programMemoryKB(), kProgramLimitMs, [&](WorkGuard::Limit limit, long limitKB) {
+                    stop("mistake refused",
+                         mistakeText(i, m, guardRefusal(limit, limitKB, vertex, fragment)));
+                    std::fflush(nullptr);
+                    std::_Exit(0);
+                });
+            const ProgramBuild build = offscreen.useProgram(vertex, fragment);
+            if (!build.ok()) {
+                const auto first = std::find_if(
+                    build.diagnostics.begin(), build.diagnostics.end(),
+                    [](const Diagnostic &d) { return d.severity == Diagnostic::Severity::Error; });
+                out.failure = "mistake does not build";
+                out.diagnostic = first == build.diagnostics.end()
+                                     ? QString("mistake %1 (%2): %3")
+                                           .arg(i)
+                                           .arg(escapedName(m.name), build.log())
+                                     : mistakeText(i, m, *first);
+                return out;
+            }
+            const TrialResult trial =
+                offscreen.tryUserProgram(cases.front(), vertex, fragment, spec.size,
+                                         kGradingTrialBudgetMs, kCommandLineTrial);
+            if (trial.refusal) {
+                out.failure = "mistake refused";
+                out.diagnostic = mistakeText(i, m, *trial.refusal);
+                return out;
+            }
+        }
+        double share = 0.0;
+        for (const FailingCase &f : failing) {
+            const QImage frame =
+                offscreen.render(mistakeScene(referenceScene(cases[f.index], ref), m));
+            share += measureCase(f.student, frame, kBackgroundPixel, spec.tolerance, spec.passShare)
+                         .shareWithin;
+        }
+        if (offscreen.wasReset()) {
+            out.failure = "mistake refused";
+            out.diagnostic = QString("mistake %1 (%2): the driver reset the context")
+                                 .arg(i)
+                                 .arg(escapedName(m.name));
+            return out;
+        }
+        shares.push_back(share / double(failing.size()));
+    }
+    if (const int best = bestMistake(referenceShare, shares); best >= 0) {
+        const ExerciseMistake &m = exercise.mistakes[std::size_t(best)];
+        out.match = MistakeMatch{best, m.name, localized(m.hint, "en"), shares[std::size_t(best)]};
+    }
+    return out;
+}
+
+} // namespace lb
