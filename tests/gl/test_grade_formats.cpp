@@ -9,6 +9,8 @@
 // submissions, coderunner with a missing exercise and with two submissions, an exercise whose
 // points list is one short or negative, a sheet list naming "../outside.png", a text file and
 // a symbolic link.
+#include "csv_rows.h"
+
 #include <QDir>
 #include <QFile>
 #include <QJsonArray>
@@ -96,22 +98,26 @@ private slots:
                                       "--report-format", "csv", "--seed", "3"});
         QVERIFY2(r.exitCode == 0, r.err.constData());
         QVERIFY2(!r.err.contains("graded "), r.err.constData()); // no terminal: no progress
-        const QList<QByteArray> lines = readAll(report).trimmed().split('\n');
-        QCOMPARE(lines.size(), 6);
-        const QList<QByteArray> header = lines[0].split(',');
+        const QList<QStringList> rows = csvRows(report);
+        QCOMPARE(rows.size(), 6);
+        const QStringList &header = rows[0];
         QCOMPARE(header.size(), 12);
         const int passedAt = header.indexOf("cases_passed"), pointsAt = header.indexOf("points");
-        for (int i = 1; i < lines.size(); ++i) {
-            // Counted from the end: a quoted diagnostic before may hold commas.
-            const QList<QByteArray> cells = lines[i].split(',');
-            QCOMPARE(cells.last(), kVersion.toUtf8());
-            QCOMPARE(cells[cells.size() - 2], QByteArray("3"));
-            QCOMPARE(cells[cells.size() - 4], QByteArray("100")); // max_points
+        const int hintAt = header.indexOf("hint");
+        for (int i = 1; i < rows.size(); ++i) {
+            QCOMPARE(rows[i].size(), 12);
+            QCOMPARE(rows[i].last(), kVersion);
+            QCOMPARE(rows[i][rows[i].size() - 2], QString("3"));
+            QCOMPARE(rows[i][rows[i].size() - 4], QString("100")); // max_points
         }
         // 20 cases, 5 points each: the points are the passed cases'.
-        const QList<QByteArray> correct = lines[1].split(','), reflect = lines[2].split(',');
-        QCOMPARE(correct[pointsAt], QByteArray("100"));
+        const QStringList &correct = rows[1], &reflect = rows[2];
+        QCOMPARE(correct[pointsAt], QString("100"));
         QCOMPARE(reflect[pointsAt].toDouble(), 5.0 * reflect[passedAt].toInt());
+        // The known mistake's hint, for the failing submission only (a hint may hold commas).
+        QCOMPARE(correct[hintAt], QString());
+        QVERIFY2(reflect[hintAt].contains("reflect"), qPrintable(reflect[hintAt]));
+        const QList<QByteArray> lines = readAll(report).trimmed().split('\n');
         QVERIFY(lines[4].startsWith("syntax,does not compile,"));
         QVERIFY2(r.out.split('\n')[0].startsWith("correct: passed, 20/20 cases passed (100/100 "
                                                  "points)"),

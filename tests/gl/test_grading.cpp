@@ -5,6 +5,8 @@
 // CSV and the sheets; the same seed gives the same report; bad input exits 2 naming it; a
 // faulty exercise stops the batch; children that crash, chatter, cannot start or run past the
 // time limit (a stand-in program and a tiny limit play them) are reported and the batch goes on.
+#include "csv_rows.h"
+
 #include <QDir>
 #include <QElapsedTimer>
 #include <QFile>
@@ -54,35 +56,6 @@ QJsonObject gradeOne(const QString &submission, const QString &exercise = kExerc
 {
     const Run r = run({"--grade-one", submission, "--exercise", exercise});
     return QJsonDocument::fromJson(r.out.trimmed()).object();
-}
-
-// RFC 4180: fields with commas or quotes are quoted, quotes doubled.
-QList<QStringList> csvRows(const QString &path)
-{
-    QFile f(path);
-    QList<QStringList> rows;
-    if (!f.open(QIODevice::ReadOnly))
-        return rows;
-    for (const QByteArray &bytes : f.readAll().split('\n')) {
-        const QString line = QString::fromUtf8(bytes);
-        if (line.isEmpty())
-            continue;
-        QStringList fields{QString()};
-        bool quoted = false;
-        for (int i = 0; i < line.size(); ++i) {
-            const QChar c = line[i];
-            if (quoted && c == '"' && i + 1 < line.size() && line[i + 1] == '"')
-                fields.last() += line[++i];
-            else if (c == '"')
-                quoted = !quoted;
-            else if (c == ',' && !quoted)
-                fields << QString();
-            else
-                fields.last() += c;
-        }
-        rows << fields;
-    }
-    return rows;
 }
 
 bool write(const QString &path, const QByteArray &bytes)
