@@ -45,24 +45,49 @@ QByteArray json(const QJsonObject &object)
     return QJsonDocument(object).toJson(QJsonDocument::Indented);
 }
 
+// GitHub's reporter adds the tests' scores in floating point for the grade it sends: 100/6
+// per case would add up to 100.00000000000001 or 99.99999999999999. Each passed case gets its
+// points in 64ths of a point (exact in binary, so the sum is exact) and the last passed one
+// what is left: the sum is the score, to 1/128 of a point, and full marks are max_score.
+std::vector<double> githubCaseScores(const GradingRun &run, const GradingReport &r)
+{
+    std::vector<double> scores(r.cases.size(), 0.0);
+    const auto in64ths = [](double points) { return std::round(points * 64.0) / 64.0; };
+    const bool allPassed = r.passedCount() == int(r.cases.size());
+    const double target = allPassed ? maxPoints(run) : in64ths(score(run, r));
+    double given = 0.0;
+    int last = -1;
+    for (int k = 0; k < int(r.cases.size()); ++k)
+        if (r.cases[std::size_t(k)].passed) {
+            scores[std::size_t(k)] = in64ths(pointsOfCase(run, k));
+            given += scores[std::size_t(k)];
+            last = k;
+        }
+    if (last >= 0)
+        scores[std::size_t(last)] += target - given;
+    return scores;
+}
+
 } // namespace
 
 QByteArray githubResult(const GradingRun &run, const std::vector<GradedSubmission> &rows)
 {
     // The reporter prints "name - line N" unless line_no is 0, and test_code under each test;
     // it sums the tests' scores against max_score for the grade it sends to the classroom.
+    // It prints `message` only for a test in error: a failed case's text and hint go into
+    // test_code, which it prints under every test.
     const auto test = [&](const QString &name, const QString &status, double points,
                           const QString &message, double seconds) {
-        return QJsonObject{
-            {"name", name},
-            {"status", status},
-            {"score", points},
-            {"message", message},
-            {"test_code",
-             QString("lightbench %1 --seed %2, %3").arg(run.version).arg(run.seed).arg(name)},
-            {"filename", ""},
-            {"line_no", 0},
-            {"execution_time", QString("%1s").arg(seconds, 0, 'f', 3)}};
+        const QString command =
+            QString("lightbench %1 --seed %2, %3").arg(run.version).arg(run.seed).arg(name);
+        return QJsonObject{{"name", name},
+                           {"status", status},
+                           {"score", points},
+                           {"message", message},
+                           {"test_code", status == "fail" ? message + "\n" + command : command},
+                           {"filename", ""},
+                           {"line_no", 0},
+                           {"execution_time", QString("%1s").arg(seconds, 0, 'f', 3)}};
     };
     QJsonObject out{{"version", 1},
                     {"max_score", maxPoints(run)},
@@ -82,13 +107,14 @@ QByteArray githubResult(const GradingRun &run, const std::vector<GradedSubmissio
         } else {
             out["status"] = r.passedCount() == int(r.cases.size()) ? "pass" : "fail";
             const double each = row.seconds / double(std::max<std::size_t>(1, r.cases.size()));
+            const std::vector<double> scores = githubCaseScores(run, r);
             for (int k = 0; k < int(r.cases.size()); ++k) {
                 const bool passed = r.cases[std::size_t(k)].passed;
                 QString message = caseText(run, r, k);
                 if (!passed && r.mistake)
                     message += "; hint: " + hintText(r);
                 tests.append(test(QString("case %1").arg(k), passed ? "pass" : "fail",
-                                  passed ? pointsOfCase(run, k) : 0.0, message, each));
+                                  scores[std::size_t(k)], message, each));
             }
         }
     }
@@ -166,7 +192,9 @@ QByteArray codeRunnerOutcome(const GradingRun &run, const std::vector<GradedSubm
     const double most = maxPoints(run);
     const bool allPassed = r.passedCount() == int(r.cases.size());
     out["fraction"] = most > 0 ? std::clamp(score(run, r) / most, 0.0, 1.0) : allPassed ? 1 : 0;
-    QString prologue = "<p>" + html(summaryLine(run, row)) + "</p>";
+    GradedSubmission withoutHint = row; // the hint has a paragraph of its own below
+    withoutHint.report.mistake.reset();
+    QString prologue = "<p>" + html(summaryLine(run, withoutHint)) + "</p>";
     if (r.mistake)
         prologue += "<p><b>Hint:</b> " + html(hintText(r)) + "</p>";
     out["prologuehtml"] = prologue;

@@ -203,10 +203,36 @@ private slots:
             QVERIFY(t["status"] == "pass" || t["status"] == "fail");
             QVERIFY(t["test_code"].toString().contains("seed 7"));
             sum += t["score"].toDouble();
-            if (t["status"] == "fail")
+            if (t["status"] == "fail") { // the reporter prints test_code, not the message
                 QVERIFY(t["message"].toString().contains(kHint));
+                QVERIFY(t["test_code"].toString().contains(kHint));
+            }
         }
         QCOMPARE(sum, 40.0);
+        // Equal shares that are no binary fractions (100/6, 100/7, ...): the scores, added in
+        // order as the reporter adds them, are exactly full marks when every case passed, and
+        // never more than max_score otherwise.
+        for (int cases : {6, 7, 9, 11, 12, 14, 17, 21, 30}) {
+            GradingSpec spec;
+            spec.cases = cases;
+            GradingRun run;
+            run.casePoints = pointsPerCase(spec);
+            for (int passed : {cases, cases - 1, cases / 2}) {
+                GradedSubmission s = passing();
+                s.report.cases.assign(std::size_t(cases), caseResult(false, 9, 0.5));
+                for (int k = 0; k < passed; ++k)
+                    s.report.cases[std::size_t(k)] = caseResult(true, 0, 1.0);
+                const QJsonObject result = object(githubResult(run, {s}));
+                double total = 0.0;
+                for (const QJsonValue &t : result["tests"].toArray())
+                    total += t["score"].toDouble();
+                const QString where = QString("%1 of %2 cases").arg(passed).arg(cases);
+                if (passed == cases)
+                    QVERIFY2(total == 100.0, qPrintable(where));
+                QVERIFY2(total <= 100.0, qPrintable(where));
+                QVERIFY2(std::abs(total - score(run, s.report)) <= 1.0 / 128, qPrintable(where));
+            }
+        }
         QCOMPARE(object(githubResult(sampleRun(), {passing()}))["status"].toString(),
                  QString("pass"));
         const QJsonObject error = object(githubResult(sampleRun(), {notCompiling()}));
