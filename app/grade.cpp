@@ -164,15 +164,21 @@ int runGrade(const CommandLine &cl)
     // device or a folder in their place, or a folder that cannot take them, ends the batch.
     if (const QString error = outputsUnwritable(cl, names); !error.isEmpty())
         return batchError(error);
-    // The sheet folder holds this run's sheets alone: the last run's (its list) go first. A
-    // list that cannot be written (a full disk) is said and costs the exit code, not the
-    // grading: the sheets say their own failures, and a stale list names only our sheets.
+    // The sheet folder is to hold this run's sheets alone: the list names the last run's and
+    // this run's while it goes on, and only a run that finishes removes the last run's it did
+    // not write again (a faulty exercise found midway leaves them as they were). A list that
+    // cannot be written (a full disk) is said and costs the exit code, not the grading.
     bool sheetListFailed = false;
+    QStringList sheets, lastRunSheets;
     if (!cl.sheetsDir.isEmpty()) {
-        QStringList sheets;
         for (const QString &name : names)
             sheets << QFileInfo(gradingSheetPath(cl.sheetsDir, name)).fileName();
-        if (const QString error = replaceSheetList(cl.sheetsDir, sheets); !error.isEmpty()) {
+        lastRunSheets = readSheetList(cl.sheetsDir);
+        QStringList both = lastRunSheets;
+        for (const QString &s : sheets)
+            if (!both.contains(s))
+                both << s;
+        if (const QString error = writeSheetList(cl.sheetsDir, both); !error.isEmpty()) {
             printLine("lightbench: --sheets: " + error, stderr);
             sheetListFailed = true;
         }
@@ -357,6 +363,17 @@ int runGrade(const CommandLine &cl)
         return batchError(QString("--exercise: %1: %2").arg(cl.exercisePath, batchFailure));
     printFinished(true);
     writeReport(true);
+    if (!cl.sheetsDir.isEmpty() && !sheetListFailed) {
+        QStringList stale;
+        for (const QString &s : lastRunSheets)
+            if (!sheets.contains(s))
+                stale << s;
+        removeSheets(cl.sheetsDir, stale);
+        if (const QString error = writeSheetList(cl.sheetsDir, sheets); !error.isEmpty()) {
+            printLine("lightbench: --sheets: " + error, stderr);
+            sheetListFailed = true;
+        }
+    }
     const bool sheetFailed = std::any_of(rows.begin(), rows.end(), [](const GradedSubmission &g) {
         return g.report.graded() && !g.report.sheetError.isEmpty();
     });

@@ -22,8 +22,9 @@ const char *const kSheetListName = ".lightbench-sheets";
 
 bool isOwnSheetName(const QString &name)
 {
+    // ':' too: on Windows "C:x.png" is relative to a drive and "x:y.png" a file's stream.
     return name.endsWith(QLatin1String(".png")) && name.size() > 4 && !name.contains('/') &&
-           !name.contains('\\') && !name.contains(QChar(0));
+           !name.contains('\\') && !name.contains(':') && !name.contains(QChar(0));
 }
 
 } // namespace
@@ -90,28 +91,38 @@ QString sheetListPath(const QString &dir)
     return QDir(dir).filePath(QLatin1String(kSheetListName));
 }
 
-QString replaceSheetList(const QString &dir, const QStringList &sheetNames)
+QStringList readSheetList(const QString &dir)
 {
+    QStringList names;
     const QString listPath = sheetListPath(dir);
-    if (QFileInfo::exists(listPath)) {
-        // A list that cannot be read (too big, no file) removes nothing.
-        const BoundedRead read =
-            readBounded(listPath, FileLimit{"a sheet list", kMaxSheetListBytes});
-        const QJsonArray previous =
-            QJsonDocument::fromJson(read.bytes).object()["sheets"].toArray();
-        for (const QJsonValue &v : previous) {
-            const QString name = v.toString();
-            if (!isOwnSheetName(name))
-                continue;
-            const QFileInfo sheet(QDir(dir).filePath(name));
-            if (sheet.isFile() && !sheet.isSymLink())
-                QFile::remove(sheet.filePath());
-        }
+    if (!QFileInfo::exists(listPath))
+        return names;
+    // A list that cannot be read (too big, no file) names nothing.
+    const BoundedRead read = readBounded(listPath, FileLimit{"a sheet list", kMaxSheetListBytes});
+    for (const QJsonValue &v : QJsonDocument::fromJson(read.bytes).object()["sheets"].toArray())
+        if (const QString name = v.toString(); isOwnSheetName(name) && !names.contains(name))
+            names << name;
+    return names;
+}
+
+QString writeSheetList(const QString &dir, const QStringList &names)
+{
+    QJsonArray list;
+    for (const QString &name : names)
+        list.append(name);
+    return writeFileSafely(sheetListPath(dir),
+                           QJsonDocument(QJsonObject{{"sheets", list}}).toJson());
+}
+
+void removeSheets(const QString &dir, const QStringList &names)
+{
+    for (const QString &name : names) {
+        if (!isOwnSheetName(name))
+            continue;
+        const QFileInfo sheet(QDir(dir).filePath(name));
+        if (sheet.isFile() && !sheet.isSymLink())
+            QFile::remove(sheet.filePath());
     }
-    QJsonArray names;
-    for (const QString &name : sheetNames)
-        names.append(name);
-    return writeFileSafely(listPath, QJsonDocument(QJsonObject{{"sheets", names}}).toJson());
 }
 
 } // namespace lb

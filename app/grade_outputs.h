@@ -51,14 +51,19 @@ private:
     QElapsedTimer m_clock;
 };
 
-// DIR/.lightbench-sheets: the sheets the last --grade wrote into DIR (a JSON list of file
-// names: any name a submission has fits), so that the next run removes them first and the
-// folder holds this run's sheets alone.
+// DIR/.lightbench-sheets: the sheets --grade wrote into DIR (a JSON list of file names: any
+// name a submission has fits), so that a run that finishes removes the last run's that it did
+// not write again, and the folder holds that run's sheets alone. While a run goes on, the list
+// names the last run's and this one's: a run stopped or failed midway leaves every sheet as it
+// was, and the next run that finishes still knows them.
 QString sheetListPath(const QString &dir);
-// Removes the sheets the folder's list names, each only if it is a plain file name ending in
-// .png (no folder part) and a regular file in `dir` itself (no symbolic link):
-// nothing else is ever deleted. Then lists `sheetNames` (this run's) in its place. Returns
-// "PATH: why" when the list cannot be written.
-QString replaceSheetList(const QString &dir, const QStringList &sheetNames);
+// The names the folder's list gives that are plain file names ending in .png (no folder part,
+// no drive or stream): any other entry is left out.
+QStringList readSheetList(const QString &dir);
+// "" or "PATH: why".
+QString writeSheetList(const QString &dir, const QStringList &names);
+// Removes those of `names` that are such names and regular files in `dir` itself (no symbolic
+// link): nothing else is ever deleted.
+void removeSheets(const QString &dir, const QStringList &names);
 
 } // namespace lb

@@ -343,6 +343,26 @@ private slots:
         QVERIFY(sheets.exists("reflect_sign.png"));
         QVERIFY(sheets.exists("stranger.png") && sheets.exists("notes.txt"));
 
+        // A run that ends in the exercise's fault (its reference does not build, found by the
+        // first child) grades nobody and removes nothing: the last run's sheet stays.
+        const QString broken = m_dir.filePath("broken_reference.json");
+        {
+            QFile in(kExercise), out(broken);
+            QVERIFY(in.open(QIODevice::ReadOnly) && out.open(QIODevice::WriteOnly));
+            QJsonObject root = QJsonDocument::fromJson(in.readAll()).object();
+            QJsonObject exercise = root["exercise"].toObject();
+            exercise["reference"] =
+                QJsonObject{{"vertex", "void main() { gl_Position = vec4(0.0); }"},
+                            {"fragment", "void main() { this does not compile }"}};
+            root["exercise"] = exercise;
+            out.write(QJsonDocument(root).toJson());
+        }
+        const Run faulty =
+            run({"--grade", kData + "/correct", "--exercise", broken, "--sheets", sheets.path()});
+        QCOMPARE(faulty.exitCode, 2);
+        QVERIFY(sheets.exists("reflect_sign.png"));
+        QVERIFY(!sheets.exists("correct.png"));
+
         // A list that names what the batch did not write removes nothing of it.
         QFile outside(m_dir.filePath("outside.png"));
         QVERIFY(outside.open(QIODevice::WriteOnly));
