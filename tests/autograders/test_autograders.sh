@@ -82,19 +82,19 @@ PY
 }
 
 # GitHub Classroom: the student's repository holds lighting.vert and lighting.frag.
-github() { # SAMPLE_VERT SAMPLE_FRAG EXPECT EXIT [EXERCISE]
-    local repo="$tmp/github-$3-$4" out
+github() { # SAMPLE_VERT SAMPLE_FRAG EXPECT EXIT [EXERCISE [PROGRAM]]
+    local repo="$tmp/github-$3-$4-${6:+fallback}" out
     mkdir -p "$repo/.github/lightbench" "$repo/runner"
     cp "$1" "$repo/lighting.vert"
     cp "$2" "$repo/lighting.frag"
     cp "${5:-$exercise}" "$repo/.github/lightbench/exercise.json"
     cp "$autograders/github-classroom/grade.sh" "$repo/.github/lightbench/"
     local status=0
-    (cd "$repo" && GITHUB_OUTPUT="$repo/output" RUNNER_TEMP="$repo/runner" \
+    (cd "$repo" && LIGHTBENCH="${6:-$LIGHTBENCH}" GITHUB_OUTPUT="$repo/output" RUNNER_TEMP="$repo/runner" \
         EXERCISE=.github/lightbench/exercise.json SUBMISSION="lighting.vert lighting.frag" \
         sh .github/lightbench/grade.sh >"$repo/log" 2>&1) || status=$?
     [[ $status -eq $4 ]] || fail "github $1: exit $status, expected $4: $(cat "$repo/log")"
-    out=$(grep '^result=' "$repo/output" | tail -1 | cut -d= -f2-)
+    out=$(grep '^result=' "$repo/output" 2>/dev/null | tail -1 | cut -d= -f2-) || true
     [[ -n $out ]] || { fail "github $1: no result= output"; return; }
     base64 -d <<<"$out" >"$repo/result.json" || { fail "github $1: result is not base64"; return; }
     check_json github "$repo/result.json" "$3" || fail "github $1"
@@ -104,6 +104,8 @@ github "$samples/reflect_sign.vert" "$samples/reflect_sign.frag" fail 3
 github "$samples/syntax.vert" "$samples/syntax.frag" error 3 # not graded: "error"
 echo '{"format": "lightbench-scene"}' >"$tmp/broken.json"
 github "$samples/syntax.vert" "$samples/syntax.frag" error 2 "$tmp/broken.json"
+# No report at all (the program cannot start): grade.sh's own result, status error.
+github "$samples/correct/lighting.vert" "$samples/correct/lighting.frag" error 1 "$exercise" /bin/false
 # The workflow calls that step and hands its output to the reporter under the step's id.
 workflow="$autograders/github-classroom/classroom.yml"
 for needed in 'id: lightbench' 'sh .github/lightbench/grade.sh' \
@@ -113,14 +115,19 @@ for needed in 'id: lightbench' 'sh .github/lightbench/grade.sh' \
 done
 
 # Gradescope: /autograder/source (the zip), /autograder/submission, /autograder/results.
-gradescope() { # SAMPLE_DIR_OR_PAIR EXPECT [EXERCISE]
-    local root="$tmp/gradescope-$2-$(basename "$1")"
-    mkdir -p "$root/source" "$root/submission"
+gradescope() { # SAMPLE_DIR_OR_PAIR EXPECT [EXERCISE [PROGRAM [FOLDER]]]
+    local root="$tmp/gradescope-$2-$(basename "$1")${4:+-fallback}${5:+-nested}"
+    local upload="$root/submission${5:+/$5}"
+    mkdir -p "$root/source" "$upload"
     cp "$autograders/gradescope/setup.sh" "$autograders/gradescope/run_autograder" "$root/source/"
     cp "${3:-$exercise}" "$root/source/exercise.json"
-    if [[ -d $1 ]]; then cp "$1"/* "$root/submission/"; else cp "$1".vert "$1".frag "$root/submission/"; fi
+    if [[ -d $1 ]]; then cp "$1"/* "$upload/"; else cp "$1".vert "$1".frag "$upload/"; fi
     echo "notes the student uploaded too" >"$root/submission/README.txt"
-    AUTOGRADER_ROOT="$root" bash "$root/source/run_autograder" >"$root/log" 2>&1 ||
+    if [[ -n ${5:-} ]]; then # what a Mac's zip adds: a second "fragment shader" that is not one
+        mkdir -p "$root/submission/__MACOSX/$5"
+        printf '\0\5\26\7' >"$root/submission/__MACOSX/$5/._lighting.frag"
+    fi
+    LIGHTBENCH="${4:-$LIGHTBENCH}" AUTOGRADER_ROOT="$root" bash "$root/source/run_autograder" >"$root/log" 2>&1 ||
         fail "gradescope $1: run_autograder exit $?: $(cat "$root/log")"
     [[ -s $root/results/results.json ]] || { fail "gradescope $1: no results.json"; return; }
     check_json gradescope "$root/results/results.json" "$2" || fail "gradescope $1"
@@ -129,6 +136,9 @@ gradescope "$samples/correct" pass
 gradescope "$samples/normal_matrix" fail
 gradescope "$samples/loop" fail
 gradescope "$samples/correct" error "$tmp/broken.json"
+gradescope "$samples/correct" error "$exercise" /bin/false # no report: run_autograder's own
+# A zip of a folder: the pair one level down, macOS's __MACOSX copies beside it.
+gradescope "$samples/correct" pass "$exercise" "" shaders
 
 # CodeRunner: the answer is the fragment shader; the vertex shader and the exercise are
 # support files in Jobe's working folder. Twig's e('py') escapes for a Python string.
@@ -141,7 +151,8 @@ coderunner() { # SAMPLE_VERT SAMPLE_FRAG EXPECT [EXERCISE]
 import json, sys
 template, answer, out = sys.argv[1:4]
 text = open(template, encoding="utf-8").read()
-escaped = json.dumps(open(answer, encoding="utf-8").read())[1:-1]
+# Twig's e('py') (CodeRunner's own escaper): backslashes and double quotes, nothing else.
+escaped = open(answer, encoding="utf-8").read().replace("\\", "\\\\").replace('"', '\\"')
 placeholder = "{{ STUDENT_ANSWER | e('py') }}"
 assert placeholder in text, "the template has no answer placeholder"
 open(out, "w", encoding="utf-8").write(text.replace(placeholder, escaped))
@@ -154,6 +165,7 @@ coderunner "$samples/correct/lighting.vert" "$samples/correct/lighting.frag" pas
 coderunner "$samples/reflect_sign.vert" "$samples/reflect_sign.frag" fail
 coderunner "$samples/syntax.vert" "$samples/syntax.frag" fail
 coderunner "$samples/syntax.vert" "$samples/syntax.frag" error "$tmp/broken.json"
+LIGHTBENCH=/bin/false coderunner "$samples/correct/lighting.vert" "$samples/correct/lighting.frag" error
 
 [[ $failures -eq 0 ]] || { echo "$failures failures" >&2; exit 1; }
 echo "all autograders passed"
