@@ -3,6 +3,8 @@
 // Saving a scene, a shader pair, a PNG, the CSV report and a grading sheet onto it each fail
 // with the system's reason and a non-zero exit, and the old file's bytes are unchanged. (A
 // scene used to become a 0-byte file with exit 0.) The window's settings file stays whole too.
+#include "program_run.h"
+
 #include "lesson.h"
 #include "safe_write.h"
 #include "settings_store.h"
@@ -77,20 +79,11 @@ bool fill()
     return QFile(QDir(g_disk).filePath("fill")).size() > 0;
 }
 
-struct Run
-{
-    int exitCode;
-    QByteArray out, err;
-};
+using Run = ProgramRun;
 
 Run run(const QStringList &args)
 {
-    QProcess p;
-    p.start(LIGHTBENCH_EXE, args);
-    if (!p.waitForFinished(120000))
-        return {-1, {}, "timed out"};
-    return {p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -2, p.readAllStandardOutput(),
-            p.readAllStandardError()};
+    return runProgram(LIGHTBENCH_EXE, args, 120000);
 }
 
 } // namespace

@@ -9,6 +9,8 @@
 // submissions, coderunner with a missing exercise and with two submissions, an exercise whose
 // points list is one short or negative, a sheet list naming "../outside.png", a text file and
 // a symbolic link.
+#include "program_run.h"
+
 #include "csv_rows.h"
 
 #include <QDir>
@@ -27,20 +29,11 @@ const QString kData = QStringLiteral(LB_TEST_DATA "/grading");
 const QString kExercise = QStringLiteral(LB_EXAMPLES_DIR "/exercise_lighting.json");
 const QString kVersion = QStringLiteral(LB_PROJECT_VERSION);
 
-struct Run
-{
-    int exitCode;
-    QByteArray out, err;
-};
+using Run = ProgramRun;
 
 Run run(const QStringList &args)
 {
-    QProcess p;
-    p.start(LIGHTBENCH_EXE, args);
-    if (!p.waitForFinished(300000))
-        return {-1, {}, "timed out"};
-    return {p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -2, p.readAllStandardOutput(),
-            p.readAllStandardError()};
+    return runProgram(LIGHTBENCH_EXE, args, 300000);
 }
 
 QByteArray readAll(const QString &path)

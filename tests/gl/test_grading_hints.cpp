@@ -6,6 +6,8 @@
 // Each listed mistake's own program, submitted, is found as itself. An exercise whose mistake
 // does not build or loops stops the batch with its status; a built-in mistake is drawn by the
 // built-in program with its switches.
+#include "program_run.h"
+
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
@@ -36,20 +38,11 @@ bool write(const QString &path, const QByteArray &bytes)
     return f.open(QIODevice::WriteOnly) && f.write(bytes) == bytes.size();
 }
 
-struct Run
-{
-    int exitCode;
-    QByteArray out, err;
-};
+using Run = ProgramRun;
 
 Run run(const QStringList &args)
 {
-    QProcess p;
-    p.start(LIGHTBENCH_EXE, args);
-    if (!p.waitForFinished(300000))
-        return {-1, {}, "timed out"};
-    return {p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -2, p.readAllStandardOutput(),
-            p.readAllStandardError()};
+    return runProgram(LIGHTBENCH_EXE, args, 300000);
 }
 
 QJsonObject gradeOne(const QString &submission, const QString &exercise = kExercise)
