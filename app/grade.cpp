@@ -142,7 +142,7 @@ int runGrade(const CommandLine &cl)
     report.run().passShare = spec.passShare;
     report.run().tolerance = spec.tolerance;
     // Time for one submission: its process, its trial and its frames; a hang ends here.
-    const int limitMs = gradingTimeLimitMs(spec.cases);
+    const int limitMs = gradingTimeLimitMs(spec, int(e.file.exercise->mistakes.size()));
 
     const QStringList paths = distinctSubmissions(cl.submissions);
     if (describesOneSubmission(format) && paths.size() > 1)

@@ -53,7 +53,7 @@ MistakeSearch findMistake(OffscreenRenderer &offscreen, const Exercise &exercise
         referenceShare += f.result.shareWithin;
     referenceShare /= double(failing.size());
 
-    std::vector<double> shares;
+    std::vector<MistakeShares> shares;
     for (int i = 0; i < int(exercise.mistakes.size()); ++i) {
         const ExerciseMistake &m = exercise.mistakes[std::size_t(i)];
         if (m.isBuiltIn()) {
@@ -94,11 +94,16 @@ MistakeSearch findMistake(OffscreenRenderer &offscreen, const Exercise &exercise
             }
         }
         double share = 0.0;
+        SignatureAgreement signature;
         for (const FailingCase &f : failing) {
             const QImage frame =
                 offscreen.render(mistakeScene(referenceScene(cases[f.index], ref), m));
             share += measureCase(f.student, frame, kBackgroundPixel, spec.tolerance, spec.passShare)
                          .shareWithin;
+            const SignatureAgreement a =
+                signatureAgreement(f.student, f.reference, frame, spec.tolerance);
+            signature.differing += a.differing;
+            signature.agreeing += a.agreeing;
         }
         if (offscreen.wasReset()) {
             out.failure = "mistake refused";
@@ -107,11 +112,15 @@ MistakeSearch findMistake(OffscreenRenderer &offscreen, const Exercise &exercise
                                  .arg(escapedName(m.name));
             return out;
         }
-        shares.push_back(share / double(failing.size()));
+        shares.push_back(
+            {share / double(failing.size()),
+             signature.differing ? double(signature.agreeing) / double(signature.differing) : 0.0,
+             signature.differing});
     }
     if (const int best = bestMistake(referenceShare, shares); best >= 0) {
         const ExerciseMistake &m = exercise.mistakes[std::size_t(best)];
-        out.match = MistakeMatch{best, m.name, localized(m.hint, "en"), shares[std::size_t(best)]};
+        out.match =
+            MistakeMatch{best, m.name, localized(m.hint, "en"), shares[std::size_t(best)].share};
     }
     return out;
 }

@@ -25,6 +25,7 @@ struct FailingCase
 {
     std::size_t index; // in the cases
     QImage student;    // the student's frame
+    QImage reference;  // the reference's
     CaseResult result; // against the reference
 };
 

@@ -187,7 +187,7 @@ int runGradeOne(const CommandLine &cl)
             measureCase(frame, reference[k], kBackgroundPixel, spec.tolerance, spec.passShare);
         out.cases.push_back(r);
         if (!r.passed && int(failing.size()) < kMaxMistakeCases)
-            failing.push_back({k, frame, r});
+            failing.push_back({k, frame, reference[k], r});
         const bool worse =
             worst < 0 || r.shareWithin < worstResult.shareWithin ||
             (r.shareWithin == worstResult.shareWithin && r.largest > worstResult.largest);

@@ -1,5 +1,7 @@
 #include "work_check.h"
 
+#include "mistake_match.h"
+
 #include "safe_write.h"
 #include "scene_file.h"
 #include "signal_names.h"
@@ -10,6 +12,8 @@
 #include <QTemporaryDir>
 #include <QTimer>
 
+#include <algorithm>
+
 namespace lb {
 
 QString gradingChildProgram()
@@ -18,11 +22,14 @@ QString gradingChildProgram()
     return program.isEmpty() ? QCoreApplication::applicationFilePath() : program;
 }
 
-int gradingTimeLimitMs(int cases)
+int gradingTimeLimitMs(const GradingSpec &spec, int mistakes)
 {
     const int asked = qEnvironmentVariableIntValue("LIGHTBENCH_GRADE_TIME_LIMIT_MS");
-    // Two frames a case (reference and student), each within the trial's budget.
-    return asked > 0 ? asked : int(30000 + 2 * kGradingTrialBudgetMs * cases);
+    // Two frames a case (reference and student), each within the trial's budget; for a
+    // failing submission, each known mistake's trial and its frames of the failing cases.
+    const int mistakeFrames = mistakes * (std::min(spec.cases, kMaxMistakeCases) + 1);
+    return asked > 0 ? asked
+                     : int(30000 + kGradingTrialBudgetMs * (2 * spec.cases + mistakeFrames));
 }
 
 QString endedWithoutReport(const QProcess &child)
@@ -95,7 +102,7 @@ QString WorkCheck::start(const Scene &base, const Exercise &exercise, const QStr
 
     m_cases = gradingCases(base, exercise.grading, kSeed);
     m_timedOut = false;
-    m_limitMs = gradingTimeLimitMs(exercise.grading.cases);
+    m_limitMs = gradingTimeLimitMs(exercise.grading, int(exercise.mistakes.size()));
     auto *p = new QProcess(this);
     m_process = p;
     // Queued, and only for this process: an end posted by a check cancelled since must not

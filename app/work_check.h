@@ -26,9 +26,10 @@ namespace lb {
 QString gradingChildProgram();
 // One frame at the grading size, at most: the loop trial's budget in a grading child.
 constexpr double kGradingTrialBudgetMs = 2000.0;
-// How long one submission may take: its process, its trial and its frames.
+// How long one submission may take: its process, its trial and its frames, and the known
+// mistakes drawn for a failing one.
 // $LIGHTBENCH_GRADE_TIME_LIMIT_MS overrides.
-int gradingTimeLimitMs(int cases);
+int gradingTimeLimitMs(const GradingSpec &spec, int mistakes);
 // Why a grading child that printed no report ended: "killed by signal 11 (Segmentation
 // fault)", "exit code 3", or "PROGRAM: why" when it could not start. --grade and Check My
 // Work both say it.

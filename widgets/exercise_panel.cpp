@@ -16,6 +16,15 @@ namespace lb {
 
 namespace {
 
+// The hint's box: yellow and bold, greyed with the cases once the program is edited.
+QString hintStyle(bool outOfDate)
+{
+    return outOfDate ? QStringLiteral("background-color: #f2f2f2; color: #808080; "
+                                      "border: 1px solid #c8c8c8;")
+                     : QStringLiteral("background-color: #fff4c2; color: #3d3000; "
+                                      "border: 1px solid #d9b84a; font-weight: bold;");
+}
+
 // What a case may vary, in the panel's words (exercise.h's Vary, in its order).
 QString variedText(unsigned vary)
 {
@@ -82,8 +91,7 @@ ExercisePanel::ExercisePanel(QWidget *parent) : QWidget(parent)
     m_hint->setTextFormat(Qt::PlainText);
     m_hint->setTextInteractionFlags(Qt::TextSelectableByMouse);
     m_hint->setMargin(6);
-    m_hint->setStyleSheet("background-color: #fff4c2; color: #3d3000; border: 1px solid #d9b84a;"
-                          "font-weight: bold;");
+    m_hint->setStyleSheet(hintStyle(false));
     m_hint->hide();
     m_cases = new QTreeWidget(this);
     m_cases->setColumnCount(4);
@@ -125,6 +133,7 @@ void ExercisePanel::setOutOfDate(bool outOfDate)
     m_outOfDate = outOfDate && m_cases->topLevelItemCount() > 0;
     m_stale->setVisible(m_outOfDate);
     m_summary->setForegroundRole(m_outOfDate ? QPalette::PlaceholderText : QPalette::WindowText);
+    m_hint->setStyleSheet(hintStyle(m_outOfDate)); // the hint was for the program checked
     const QColor text =
         palette().color(m_outOfDate ? QPalette::Disabled : QPalette::Active, QPalette::Text);
     for (int i = 0; i < m_cases->topLevelItemCount(); ++i) {

@@ -130,6 +130,14 @@ std::optional<ExerciseMistake> readMistake(const QJsonValue &json, const QString
                                    "\"builtIn\": {...}; the mistake is left out"));
             return std::nullopt;
         }
+        // The built-in program with a switch changed is "the reference with one mistake" only
+        // when the reference is the built-in program: beside a teacher's program, with its own
+        // uniforms and constants, it would draw something unrelated and match nothing fairly.
+        if (!referenceBuiltIn) {
+            ignore(where, Text::tr("a built-in mistake needs a built-in reference; give the "
+                                   "mistake as a program; the mistake is left out"));
+            return std::nullopt;
+        }
         m.builtIn = readBuiltIn(o.value("builtIn").toObject(), where + ".builtIn", ignore);
     }
     return m;

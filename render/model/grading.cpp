@@ -58,6 +58,23 @@ CaseResult measureCase(const QImage &student, const QImage &reference, QRgb back
     return r;
 }
 
+SignatureAgreement signatureAgreement(const QImage &student, const QImage &reference,
+                                      const QImage &mistake, int tolerance)
+{
+    SignatureAgreement a;
+    if (student.size() != reference.size() || mistake.size() != reference.size())
+        return a;
+    for (int y = 0; y < reference.height(); ++y)
+        for (int x = 0; x < reference.width(); ++x) {
+            const QRgb m = mistake.pixel(x, y);
+            if (channelDifference(m, reference.pixel(x, y)) <= tolerance)
+                continue;
+            ++a.differing;
+            a.agreeing += channelDifference(student.pixel(x, y), m) <= tolerance;
+        }
+    return a;
+}
+
 QImage differenceHeatMap(const QImage &student, const QImage &reference)
 {
     QImage heat(reference.size(), QImage::Format_RGB32);

@@ -23,6 +23,16 @@ struct CaseResult
 CaseResult measureCase(const QImage &student, const QImage &reference, QRgb background,
                        int tolerance, double passShare);
 
+// The pixels where a known mistake's frame differs from the reference's by more than the
+// tolerance (what the mistake changes: its signature), and how many of them the student's
+// frame has within the tolerance of the mistake's.
+struct SignatureAgreement
+{
+    long differing = 0, agreeing = 0;
+};
+SignatureAgreement signatureAgreement(const QImage &student, const QImage &reference,
+                                      const QImage &mistake, int tolerance);
+
 // |student - reference| per pixel, black at 0 to white at 64/255 (the difference view's scale).
 QImage differenceHeatMap(const QImage &student, const QImage &reference);
 

@@ -16,12 +16,26 @@ constexpr double kMistakeMinShare = 0.97;
 // ...and the pixels outside the tolerance are at most this part of those outside it against
 // the reference: "far better than the reference", not merely as good.
 constexpr double kMistakeOutsideRatio = 0.25;
+// ...and where the mistake's frames differ from the reference's (what the mistake changes), at
+// least this share of the student's pixels is the mistake's. Over the whole frame a student
+// whose highlight is merely too small (a shininess of 100 where 10 is asked) looks much like
+// one with no specular term at all, since most pixels have none; on the pixels the missing
+// term changes, it does not. A mistake that draws as the reference does in those cases
+// explains nothing and never matches.
+constexpr double kMistakeSignatureShare = 0.97;
 // The failing cases drawn with each mistake: the first ones, enough to tell, bounded so that
 // 16 mistakes on 200 cases cost what 10 cases do.
 constexpr int kMaxMistakeCases = 10;
 
-// The index in `mistakeShares` of the best mistake that matches, -1 when none does.
+struct MistakeShares
+{
+    double share = 0;          // the student's mean share within the tolerance of its frames
+    double signatureShare = 0; // of the pixels it changes, those the student has as it does
+    long signaturePixels = 0;  // how many it changes, over the cases
+};
+
+// The index in `mistakes` of the best mistake that matches, -1 when none does.
 // `referenceShare`: the student's mean share against the reference over the same cases.
-int bestMistake(double referenceShare, const std::vector<double> &mistakeShares);
+int bestMistake(double referenceShare, const std::vector<MistakeShares> &mistakes);
 
 } // namespace lb

@@ -627,6 +627,11 @@
         <translation>weder ein Programm (&quot;vertex&quot;, &quot;fragment&quot;) noch &quot;builtIn&quot;: {...}; der Fehler wird weggelassen</translation>
     </message>
     <message>
+        <location line="+8"/>
+        <source>a built-in mistake needs a built-in reference; give the mistake as a program; the mistake is left out</source>
+        <translation>ein eingebauter Fehler braucht eine eingebaute Referenz; geben Sie den Fehler als Programm an; der Fehler wird weggelassen</translation>
+    </message>
+    <message>
         <location line="+18"/>
         <source>not a list</source>
         <translation>keine Liste</translation>
@@ -640,7 +645,7 @@
 <context>
     <name>lb::ExercisePanel</name>
     <message>
-        <location filename="../../widgets/exercise_panel.cpp" line="+25"/>
+        <location filename="../../widgets/exercise_panel.cpp" line="+34"/>
         <source>light position</source>
         <translation>Lichtposition</translation>
     </message>
@@ -701,7 +706,7 @@
         <translation>Veraltet: Das Programm im Editor wurde seit dieser Prüfung geändert. „Arbeit prüfen“ (F9) prüft es im jetzigen Zustand.</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+16"/>
         <source>Case</source>
         <translation>Fall</translation>
     </message>
@@ -741,7 +746,7 @@
         <translation>Die Szene, wie sie war, bevor ein Fall gezeigt wurde</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+43"/>
         <source>No exercise is open</source>
         <translation>Keine Übung geöffnet</translation>
     </message>
@@ -1029,7 +1034,7 @@
 <context>
     <name>lb::Grading</name>
     <message>
-        <location filename="../../render/model/grading.cpp" line="+83"/>
+        <location filename="../../render/model/grading.cpp" line="+100"/>
         <source>passed</source>
         <extracomment>the outcome of a case, at the end of a grading sheet&apos;s title</extracomment>
         <translation>bestanden</translation>
@@ -5337,7 +5342,7 @@
 <context>
     <name>lb::WorkCheck</name>
     <message>
-        <location filename="../../app/work_check.cpp" line="+35"/>
+        <location filename="../../app/work_check.cpp" line="+42"/>
         <source>killed by signal %1 (%2)</source>
         <extracomment>%2 is the C library&apos;s name of the signal, in English (&quot;Segmentation fault&quot;)</extracomment>
         <translation>durch Signal %1 beendet (%2)</translation>

@@ -627,6 +627,11 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location line="+8"/>
+        <source>a built-in mistake needs a built-in reference; give the mistake as a program; the mistake is left out</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location line="+18"/>
         <source>not a list</source>
         <translation type="unfinished"></translation>
@@ -640,7 +645,7 @@
 <context>
     <name>lb::ExercisePanel</name>
     <message>
-        <location filename="../../widgets/exercise_panel.cpp" line="+25"/>
+        <location filename="../../widgets/exercise_panel.cpp" line="+34"/>
         <source>light position</source>
         <translation type="unfinished"></translation>
     </message>
@@ -701,7 +706,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+16"/>
         <source>Case</source>
         <translation type="unfinished"></translation>
     </message>
@@ -741,7 +746,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+43"/>
         <source>No exercise is open</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1023,7 +1028,7 @@
 <context>
     <name>lb::Grading</name>
     <message>
-        <location filename="../../render/model/grading.cpp" line="+83"/>
+        <location filename="../../render/model/grading.cpp" line="+100"/>
         <source>passed</source>
         <extracomment>the outcome of a case, at the end of a grading sheet&apos;s title</extracomment>
         <translation type="unfinished"></translation>
@@ -5325,7 +5330,7 @@
 <context>
     <name>lb::WorkCheck</name>
     <message>
-        <location filename="../../app/work_check.cpp" line="+35"/>
+        <location filename="../../app/work_check.cpp" line="+42"/>
         <source>killed by signal %1 (%2)</source>
         <extracomment>%2 is the C library&apos;s name of the signal, in English (&quot;Segmentation fault&quot;)</extracomment>
         <translation type="unfinished"></translation>

@@ -627,6 +627,11 @@
         <translation>não é um programa (&quot;vertex&quot;, &quot;fragment&quot;) nem &quot;builtIn&quot;: {...}; o erro é posto de parte</translation>
     </message>
     <message>
+        <location line="+8"/>
+        <source>a built-in mistake needs a built-in reference; give the mistake as a program; the mistake is left out</source>
+        <translation>um erro incorporado precisa de uma referência incorporada; dê o erro como programa; o erro é posto de parte</translation>
+    </message>
+    <message>
         <location line="+18"/>
         <source>not a list</source>
         <translation>não é uma lista</translation>
@@ -640,7 +645,7 @@
 <context>
     <name>lb::ExercisePanel</name>
     <message>
-        <location filename="../../widgets/exercise_panel.cpp" line="+25"/>
+        <location filename="../../widgets/exercise_panel.cpp" line="+34"/>
         <source>light position</source>
         <translation>posição da luz</translation>
     </message>
@@ -701,7 +706,7 @@
         <translation>Desatualizado: o programa no editor mudou desde esta verificação. Verificar o meu trabalho (F9) verifica-o tal como está agora.</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+16"/>
         <source>Case</source>
         <translation>Caso</translation>
     </message>
@@ -741,7 +746,7 @@
         <translation>A cena tal como estava antes de se mostrar um caso</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+43"/>
         <source>No exercise is open</source>
         <translation>Nenhum exercício aberto</translation>
     </message>
@@ -1029,7 +1034,7 @@
 <context>
     <name>lb::Grading</name>
     <message>
-        <location filename="../../render/model/grading.cpp" line="+83"/>
+        <location filename="../../render/model/grading.cpp" line="+100"/>
         <source>passed</source>
         <extracomment>the outcome of a case, at the end of a grading sheet&apos;s title</extracomment>
         <translation>passou</translation>
@@ -5337,7 +5342,7 @@
 <context>
     <name>lb::WorkCheck</name>
     <message>
-        <location filename="../../app/work_check.cpp" line="+35"/>
+        <location filename="../../app/work_check.cpp" line="+42"/>
         <source>killed by signal %1 (%2)</source>
         <extracomment>%2 is the C library&apos;s name of the signal, in English (&quot;Segmentation fault&quot;)</extracomment>
         <translation>terminado pelo sinal %1 (%2)</translation>

@@ -2,7 +2,8 @@
 // the example exercise's known mistakes. The reflection-sign and normal-matrix samples get
 // their mistake's name, the correct one none; student-written samples of other listed
 // mistakes (tests/data/mistakes) get theirs; samples whose mistake the exercise does not list
-// (a shininess of 30, the light's colour twice, the light direction not normalised) get none.
+// (a shininess of 30, 100 or 200, the light's colour twice, the light direction not
+// normalised) get none.
 // Each listed mistake's own program, submitted, is found as itself. An exercise whose mistake
 // does not build or loops stops the batch with its status; a built-in mistake is drawn by the
 // built-in program with its switches.
@@ -102,9 +103,18 @@ private slots:
                                << "Blinn's H";
         QTest::newRow("light_model_view") << m + "light_model_view.frag"
                                           << "light transformed again";
-        // Not listed: no hint, however they fail.
+        // V's sign wrong draws what R's sign wrong draws, pixel for pixel: the same hint,
+        // which names both.
+        QTest::newRow("view_sign") << m + "view_sign.frag"
+                                   << "reflection sign";
+        // Not listed: no hint, however they fail. A highlight too small is no highlight
+        // missing (the specular term's pixels tell them apart).
         QTest::newRow("shininess (unlisted)") << m + "shininess.frag"
                                               << "";
+        QTest::newRow("shininess 100 (unlisted)") << m + "shininess_100.frag"
+                                                  << "";
+        QTest::newRow("shininess 200 (unlisted)") << m + "shininess_200.frag"
+                                                  << "";
         QTest::newRow("light_colour_twice (unlisted)") << m + "light_colour_twice.frag"
                                                        << "";
         QTest::newRow("unnormalised_light (unlisted)") << m + "unnormalised_light.frag"

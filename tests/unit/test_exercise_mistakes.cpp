@@ -54,8 +54,13 @@ private slots:
                                                 {"terms", QJsonObject{{"ambient", false}}},
                                                 {"normalsByModelView", true},
                                                 {"lightFrame", "world"}}}}};
+        // A built-in reference: its mistakes may be built-in ones, or whole programs.
+        QJsonObject whole = list[0].toObject();
+        whole["fragment"] = "void main() { gl_FragColor = vec4(1.0); }";
+        list[0] = whole;
         QStringList ignored;
-        const ExerciseRead r = read(section(list), &ignored);
+        const ExerciseRead r = read(
+            section(list, QJsonObject{{"builtIn", QJsonObject{{"shading", "phong"}}}}), &ignored);
         QVERIFY2(ignored.isEmpty(), qPrintable(ignored.join("; ")));
         QVERIFY(r.error.isEmpty());
         const std::vector<ExerciseMistake> &m = r.exercise->mistakes;
@@ -63,7 +68,7 @@ private slots:
         QCOMPARE(m[0].name, QString("normal matrix"));
         QCOMPARE(localized(m[0].hint, "de"), QString("Die transponierte Inverse."));
         QVERIFY(!m[0].isBuiltIn());
-        QVERIFY(m[0].fragment.isEmpty()); // the reference's stage, not copied in
+        QVERIFY(!m[0].vertex.isEmpty() && !m[0].fragment.isEmpty());
         QVERIFY(m[1].isBuiltIn());
         QCOMPARE(*m[1].builtIn.shading, Shading::Gouraud);
         QCOMPARE(*m[1].builtIn.ambient, false);
@@ -111,13 +116,17 @@ private slots:
         QJsonObject badWord{
             {"name", "w"}, {"hint", "h"}, {"builtIn", QJsonObject{{"shading", "toon"}}}};
         QTest::newRow("builtIn bad word")
-            << QJsonValue(QJsonArray{badWord}) << ref
+            << QJsonValue(QJsonArray{badWord}) << builtInRef
             << "mistakes[0].builtIn.shading (not gouraud, phong, flat)" << 1;
+        // The built-in program beside a teacher's program draws something unrelated.
+        QTest::newRow("builtIn beside a program reference")
+            << QJsonValue(QJsonArray{badWord}) << ref
+            << "mistakes[0] (a built-in mistake needs a built-in reference" << 0;
         QJsonObject badSwitch{{"name", "w"},
                               {"hint", "h"},
                               {"builtIn", QJsonObject{{"terms", QJsonObject{{"ambient", "no"}}}}}};
         QTest::newRow("builtIn switch not a bool")
-            << QJsonValue(QJsonArray{badSwitch}) << ref
+            << QJsonValue(QJsonArray{badSwitch}) << builtInRef
             << "mistakes[0].builtIn.terms.ambient (not true or false)" << 1;
         QJsonObject noName = goodMistake("a");
         noName.remove("name");
@@ -179,20 +188,33 @@ private slots:
     }
 
     // The rule: at least kMistakeMinShare, and outside the tolerance at most a quarter of
-    // what is outside it against the reference; the best of those that match.
+    // what is outside it against the reference; on the pixels the mistake changes, at least
+    // kMistakeSignatureShare the mistake's; the best of those that match.
     void matchingRule()
     {
+        // A mistake that changes 1000 pixels, all of which the student has as it draws them.
+        const auto clear = [](double share) { return MistakeShares{share, 1.0, 1000}; };
+        using Shares = std::vector<MistakeShares>;
         QCOMPARE(bestMistake(0.70, {}), -1);
-        QCOMPARE(bestMistake(0.70, {0.50, 0.99, 0.98}), 1);
-        QCOMPARE(bestMistake(0.70, {0.96}), -1);            // below the share
-        QCOMPARE(bestMistake(0.70, {kMistakeMinShare}), 0); // at it
+        QCOMPARE(bestMistake(0.70, Shares{clear(0.50), clear(0.99), clear(0.98)}), 1);
+        QCOMPARE(bestMistake(0.70, Shares{clear(0.96)}), -1);            // below the share
+        QCOMPARE(bestMistake(0.70, Shares{clear(kMistakeMinShare)}), 0); // at it
         // Far better than the reference, not merely better: the reference at 95% leaves 5%
         // outside, so the mistake must leave at most 1.25%.
-        QCOMPARE(bestMistake(0.95, {0.985}), -1);
-        QCOMPARE(bestMistake(0.95, {0.99}), 0);
+        QCOMPARE(bestMistake(0.95, Shares{clear(0.985)}), -1);
+        QCOMPARE(bestMistake(0.95, Shares{clear(0.99)}), 0);
         // A submission near the reference gets none unless a mistake is nearer still.
-        QCOMPARE(bestMistake(0.98, {0.99}), -1);
-        QCOMPARE(bestMistake(0.70, {0.99, 0.99}), 0); // the first of equals
+        QCOMPARE(bestMistake(0.98, Shares{clear(0.99)}), -1);
+        QCOMPARE(bestMistake(0.70, Shares{clear(0.99), clear(0.99)}), 0); // the first of equals
+        // Close over the frame, but not where the mistake changes the picture (a highlight
+        // too small is no highlight missing): none.
+        QCOMPARE(bestMistake(0.85, Shares{{0.98, 0.90, 1000}}), -1);
+        QCOMPARE(bestMistake(0.85, Shares{{0.98, kMistakeSignatureShare, 1000}}), 0);
+        // A mistake that changes nothing in these cases explains nothing.
+        QCOMPARE(bestMistake(0.85, Shares{{1.0, 0.0, 0}}), -1);
+        // Cases that failed with nothing outside the tolerance (nothing drawn by either): no
+        // failure to explain.
+        QCOMPARE(bestMistake(1.0, Shares{clear(1.0)}), -1);
     }
 };
 
