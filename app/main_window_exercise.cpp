@@ -43,7 +43,12 @@ const std::pair<const char *, const char *> kNotChecked[] = {
     {"timed out", QT_TRANSLATE_NOOP("lb::MainWindow", "Not checked: timed out")},
     {"could not start", QT_TRANSLATE_NOOP("lb::MainWindow", "Not checked: could not start")},
     {"crashed", QT_TRANSLATE_NOOP("lb::MainWindow", "Not checked: crashed")},
-    {"unreadable", QT_TRANSLATE_NOOP("lb::MainWindow", "Not checked: unreadable")}};
+    {"unreadable", QT_TRANSLATE_NOOP("lb::MainWindow", "Not checked: unreadable")},
+    // The exercise's fault: one of its known mistakes cannot be drawn (exercise_panel.cpp).
+    {"mistake does not build",
+     QT_TRANSLATE_NOOP("lb::MainWindow", "Not checked: the exercise has a broken mistake")},
+    {"mistake refused",
+     QT_TRANSLATE_NOOP("lb::MainWindow", "Not checked: the exercise has a broken mistake")}};
 
 QString notChecked(const QString &status)
 {

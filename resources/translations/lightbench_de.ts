@@ -2199,7 +2199,7 @@
         <translation>Mehr bräuchte mehr Speicher, als die Meshes der Szene auf diesem Rechner belegen dürfen: %1 für alle Objekte zusammen.</translation>
     </message>
     <message>
-        <location filename="../../app/main_window_exercise.cpp" line="+67"/>
+        <location filename="../../app/main_window_exercise.cpp" line="+72"/>
         <source>Check cancelled.</source>
         <translation>Prüfung abgebrochen.</translation>
     </message>
@@ -2215,7 +2215,7 @@
         <translation>Nicht geprüft: %1</translation>
     </message>
     <message>
-        <location line="-24"/>
+        <location line="-29"/>
         <source>Side B</source>
         <translation>Seite B</translation>
     </message>
@@ -2253,6 +2253,12 @@
         <location line="+1"/>
         <source>Not checked: unreadable</source>
         <translation>Nicht geprüft: nicht lesbar</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <location line="+2"/>
+        <source>Not checked: the exercise has a broken mistake</source>
+        <translation>Nicht geprüft: Die Übung enthält einen fehlerhaften bekannten Fehler</translation>
     </message>
     <message>
         <location line="+78"/>

@@ -2233,6 +2233,12 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location line="+3"/>
+        <location line="+2"/>
+        <source>Not checked: the exercise has a broken mistake</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location line="+8"/>
         <source>Not checked: %1</source>
         <extracomment>a check that graded nothing, for a reason this version does not know (%1, in English)</extracomment>

@@ -2199,7 +2199,7 @@
         <translation>Mais do que isto exigiria mais memória do que as malhas da cena podem ocupar nesta máquina: %1 para todos os objetos juntos.</translation>
     </message>
     <message>
-        <location filename="../../app/main_window_exercise.cpp" line="+67"/>
+        <location filename="../../app/main_window_exercise.cpp" line="+72"/>
         <source>Check cancelled.</source>
         <translation>Verificação cancelada.</translation>
     </message>
@@ -2215,7 +2215,7 @@
         <translation>Não verificado: %1</translation>
     </message>
     <message>
-        <location line="-24"/>
+        <location line="-29"/>
         <source>Side B</source>
         <translation>Lado B</translation>
     </message>
@@ -2253,6 +2253,12 @@
         <location line="+1"/>
         <source>Not checked: unreadable</source>
         <translation>Não verificado: programa ilegível</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <location line="+2"/>
+        <source>Not checked: the exercise has a broken mistake</source>
+        <translation>Não verificado: o exercício tem um erro conhecido que não funciona</translation>
     </message>
     <message>
         <location line="+78"/>

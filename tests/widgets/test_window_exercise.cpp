@@ -333,6 +333,14 @@ private slots:
         QCOMPARE(hint->text(), expected);
         // Above the list of cases.
         QVERIFY(hint->geometry().bottom() <= cases()->geometry().top());
+        // The program edited since: the hint was for the program checked, greyed with the
+        // cases (its yellow box goes).
+        const QString yellow = hint->styleSheet();
+        setFragment(readText(LB_TEST_DATA "/grading/reflect_sign.frag") + "\n// edited\n");
+        QTRY_VERIFY(m_window->exercisePanel()->outOfDateLabel()->isVisible());
+        QVERIFY(hint->isVisible());
+        QVERIFY2(hint->styleSheet() != yellow && !hint->styleSheet().contains("#fff4c2"),
+                 qPrintable(hint->styleSheet()));
         setFragment(readText(LB_TEST_DATA "/grading/correct/lighting.frag"));
         report = check();
         QVERIFY(report && report->passedCount() == 4 && !report->mistake);
