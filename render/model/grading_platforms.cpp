@@ -198,9 +198,11 @@ QByteArray codeRunnerOutcome(const GradingRun &run, const std::vector<GradedSubm
     if (r.mistake)
         prologue += "<p><b>Hint:</b> " + html(hintText(r)) + "</p>";
     out["prologuehtml"] = prologue;
-    // "iscorrect": CodeRunner's own column, a tick for 1 and a cross for 0.
-    QJsonArray table{
-        QJsonArray{"iscorrect", "Case", "Pixels within tolerance", "Largest difference", "Points"}};
+    // "iscorrect": CodeRunner's own column, a tick for 1 and a cross for 0. The header is
+    // appended: braces round one QJsonArray copy it with clang (its rows would be the table's).
+    QJsonArray table;
+    table.append(
+        QJsonArray{"iscorrect", "Case", "Pixels within tolerance", "Largest difference", "Points"});
     for (int k = 0; k < int(r.cases.size()); ++k) {
         const CaseResult &c = r.cases[std::size_t(k)];
         const double points = pointsOfCase(run, k);
