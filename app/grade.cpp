@@ -364,12 +364,16 @@ int runGrade(const CommandLine &cl)
     printFinished(true);
     writeReport(true);
     if (!cl.sheetsDir.isEmpty() && !sheetListFailed) {
-        QStringList stale;
-        for (const QString &s : lastRunSheets)
-            if (!sheets.contains(s))
-                stale << s;
-        removeSheets(cl.sheetsDir, stale);
-        if (const QString error = writeSheetList(cl.sheetsDir, sheets); !error.isEmpty()) {
+        // Written this run, or failed to be (the old file stays): by file name.
+        QStringList written, failed;
+        for (const GradedSubmission &g : rows) {
+            if (!g.report.sheet.isEmpty())
+                written << QFileInfo(g.report.sheet).fileName();
+            else if (!g.report.sheetError.isEmpty())
+                failed << QFileInfo(gradingSheetPath(cl.sheetsDir, g.name)).fileName();
+        }
+        if (const QString error = finishSheetList(cl.sheetsDir, lastRunSheets, written, failed);
+            !error.isEmpty()) {
             printLine("lightbench: --sheets: " + error, stderr);
             sheetListFailed = true;
         }

@@ -11,6 +11,8 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 
+#include <algorithm>
+
 namespace lb {
 
 namespace {
@@ -123,6 +125,27 @@ void removeSheets(const QString &dir, const QStringList &names)
         if (sheet.isFile() && !sheet.isSymLink())
             QFile::remove(sheet.filePath());
     }
+}
+
+QString finishSheetList(const QString &dir, const QStringList &lastRun, const QStringList &written,
+                        const QStringList &failed)
+{
+    const auto key = [](const QString &name) {
+        return name.normalized(QString::NormalizationForm_C).toCaseFolded();
+    };
+    const auto among = [&](const QString &name, const QStringList &names) {
+        return std::any_of(names.begin(), names.end(),
+                           [&](const QString &n) { return key(n) == key(name); });
+    };
+    QStringList stale, listed = written;
+    for (const QString &name : lastRun) {
+        if (among(name, failed))
+            listed << name;
+        else if (!among(name, written))
+            stale << name;
+    }
+    removeSheets(dir, stale);
+    return writeSheetList(dir, listed);
 }
 
 } // namespace lb

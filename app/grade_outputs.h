@@ -65,5 +65,13 @@ QString writeSheetList(const QString &dir, const QStringList &names);
 // Removes those of `names` that are such names and regular files in `dir` itself (no symbolic
 // link): nothing else is ever deleted.
 void removeSheets(const QString &dir, const QStringList &names);
+// At the end of a run that finished: removes the last run's sheets (`lastRun`, from the list)
+// that this run did not write again (`written`) nor failed to write (`failed`: the old file
+// stays, as every file a write fails on does), a submission not graded this time among them;
+// then lists what is ours. Names are told apart as a case-insensitive, normalising file system
+// would (macOS, Windows): "Ana.png" is never removed as stale beside this run's "ana.png".
+// "" or "PATH: why".
+QString finishSheetList(const QString &dir, const QStringList &lastRun, const QStringList &written,
+                        const QStringList &failed);
 
 } // namespace lb

@@ -47,24 +47,28 @@ QByteArray json(const QJsonObject &object)
 
 // GitHub's reporter adds the tests' scores in floating point for the grade it sends: 100/6
 // per case would add up to 100.00000000000001 or 99.99999999999999. Each passed case gets its
-// points in 64ths of a point (exact in binary, so the sum is exact) and the last passed one
-// what is left: the sum is the score, to 1/128 of a point, and full marks are max_score.
+// points rounded down to 64ths of a point (exact in binary, so their sum is exact), and the
+// passed case worth most gets what is left up to the score (itself rounded down to 64ths, and
+// never above max_score): no case below 0, the sum the score to 1/64 of a point, full marks
+// exactly max_score.
 std::vector<double> githubCaseScores(const GradingRun &run, const GradingReport &r)
 {
     std::vector<double> scores(r.cases.size(), 0.0);
-    const auto in64ths = [](double points) { return std::round(points * 64.0) / 64.0; };
+    const auto down64ths = [](double points) { return std::floor(points * 64.0) / 64.0; };
     const bool allPassed = r.passedCount() == int(r.cases.size());
-    const double target = allPassed ? maxPoints(run) : in64ths(score(run, r));
+    const double target =
+        allPassed ? maxPoints(run) : std::min(down64ths(score(run, r)), down64ths(maxPoints(run)));
     double given = 0.0;
-    int last = -1;
+    int most = -1;
     for (int k = 0; k < int(r.cases.size()); ++k)
         if (r.cases[std::size_t(k)].passed) {
-            scores[std::size_t(k)] = in64ths(pointsOfCase(run, k));
+            scores[std::size_t(k)] = down64ths(pointsOfCase(run, k));
             given += scores[std::size_t(k)];
-            last = k;
+            if (most < 0 || pointsOfCase(run, k) > pointsOfCase(run, most))
+                most = k;
         }
-    if (last >= 0)
-        scores[std::size_t(last)] += target - given;
+    if (most >= 0)
+        scores[std::size_t(most)] += std::max(0.0, target - given);
     return scores;
 }
 

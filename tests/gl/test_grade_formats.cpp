@@ -356,6 +356,18 @@ private slots:
         QVERIFY(sheets.exists("reflect_sign.png"));
         QVERIFY(!sheets.exists("correct.png"));
 
+        // The same student again, but not graded this time (it does not compile): last run's
+        // sheet of theirs goes too, since this run has none for them.
+        const QDir again(m_dir.filePath("again/reflect_sign"));
+        QVERIFY(again.mkpath("."));
+        QVERIFY(QFile::copy(kData + "/syntax.vert", again.filePath("lighting.vert")));
+        QVERIFY(QFile::copy(kData + "/syntax.frag", again.filePath("lighting.frag")));
+        const Run notGraded =
+            run({"--grade", again.path(), "--exercise", kExercise, "--sheets", sheets.path()});
+        QVERIFY2(notGraded.out.contains("reflect_sign: does not compile"), notGraded.out);
+        QVERIFY(!sheets.exists("reflect_sign.png"));
+        QVERIFY(sheets.exists("stranger.png") && sheets.exists("notes.txt"));
+
         // A list that names what the batch did not write removes nothing of it.
         QFile outside(m_dir.filePath("outside.png"));
         QVERIFY(outside.open(QIODevice::WriteOnly));

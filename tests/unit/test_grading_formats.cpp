@@ -224,14 +224,38 @@ private slots:
                     s.report.cases[std::size_t(k)] = caseResult(true, 0, 1.0);
                 const QJsonObject result = object(githubResult(run, {s}));
                 double total = 0.0;
-                for (const QJsonValue &t : result["tests"].toArray())
+                for (const QJsonValue &t : result["tests"].toArray()) {
+                    QVERIFY(t["score"].toDouble() >= 0.0);
                     total += t["score"].toDouble();
+                }
                 const QString where = QString("%1 of %2 cases").arg(passed).arg(cases);
                 if (passed == cases)
                     QVERIFY2(total == 100.0, qPrintable(where));
                 QVERIFY2(total <= 100.0, qPrintable(where));
-                QVERIFY2(std::abs(total - score(run, s.report)) <= 1.0 / 128, qPrintable(where));
+                QVERIFY2(std::abs(total - score(run, s.report)) <= 1.0 / 64, qPrintable(where));
             }
+        }
+        // Unequal points with cases worth 0 or less than 1/64 (a reviewer's lists): no case
+        // below 0, never more than max_score, within 1/64 of the score.
+        const std::vector<std::pair<std::vector<double>, std::vector<bool>>> lists{
+            {{16.67, 16.67, 16.67, 16.67, 16.67, 16.67, 0}, {1, 1, 1, 1, 1, 0, 1}},
+            {{50.005, 50.005, 0}, {1, 1, 0}},
+            {{0.007, 0.007, 0.007, 0, 0.5}, {0, 0, 0, 1, 1}},
+            {{0.007, 0.007, 0.007, 0, 0.5}, {1, 1, 1, 1, 0}}};
+        for (const auto &[points, passed] : lists) {
+            GradingRun run;
+            run.casePoints = points;
+            GradedSubmission s = passing();
+            s.report.cases.clear();
+            for (bool p : passed)
+                s.report.cases.push_back(caseResult(p, p ? 0 : 9, p ? 1.0 : 0.5));
+            double total = 0.0;
+            for (const QJsonValue &t : object(githubResult(run, {s}))["tests"].toArray()) {
+                QVERIFY(t["score"].toDouble() >= 0.0);
+                total += t["score"].toDouble();
+            }
+            QVERIFY(total <= maxPoints(run));
+            QVERIFY(std::abs(total - score(run, s.report)) <= 1.0 / 64);
         }
         QCOMPARE(object(githubResult(sampleRun(), {passing()}))["status"].toString(),
                  QString("pass"));
