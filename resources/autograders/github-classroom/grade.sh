@@ -5,8 +5,8 @@
 # (lightbench's exit 3) when a case fails, so the commit shows a red cross; the reporter still
 # runs (`if: always()`). $LIGHTBENCH: the program (default: lightbench on the PATH).
 set -u
-: "${EXERCISE:?the exercise file}" "${SUBMISSION:?the student's files}"
-: "${GITHUB_OUTPUT:?set by GitHub Actions: the file the step's outputs go to}"
+: "${EXERCISE:?the exercise file}" "${SUBMISSION:?the files of the student}"
+: "${GITHUB_OUTPUT:?set by GitHub Actions: the file of the step outputs}"
 report="${RUNNER_TEMP:-/tmp}/lightbench-result.json"
 rm -f "$report"
 # shellcheck disable=SC2086 # SUBMISSION is a list of files
