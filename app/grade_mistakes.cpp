@@ -1,6 +1,7 @@
 #include "grade_mistakes.h"
 
 #include "compare.h"
+#include "grading_files.h"
 #include "message_text.h"
 #include "mistake_match.h"
 #include "offscreen.h"
@@ -18,23 +19,7 @@ namespace {
 // "mistake 2 (normal matrix) vertex:19: message": the exercise's program, inline in its file.
 QString mistakeText(int index, const ExerciseMistake &m, const Diagnostic &d)
 {
-    const QString who = QString("mistake %1 (%2)").arg(index).arg(escapedName(m.name));
-    const QString where = d.stage == ShaderStage::Link
-                              ? who + " (link)"
-                              : QString("%1 %2").arg(who, stageName(d.stage));
-    return d.line > 0 ? QString("%1:%2: %3").arg(where).arg(d.line).arg(d.message)
-                      : QString("%1: %2").arg(where, d.message);
-}
-
-// The case as the reference draws it: a built-in reference's choices set.
-Scene referenceScene(const Scene &c, const ExerciseReference &ref)
-{
-    Scene s = c;
-    if (ref.builtIn()) {
-        s.shading.shading = ref.shading;
-        s.shading.specular = ref.specular;
-    }
-    return s;
+    return exerciseProgramText(QString("mistake %1 (%2)").arg(index).arg(escapedName(m.name)), d);
 }
 
 } // namespace
@@ -73,15 +58,12 @@ MistakeSearch findMistake(OffscreenRenderer &offscreen, const Exercise &exercise
                 });
             const ProgramBuild build = offscreen.useProgram(vertex, fragment);
             if (!build.ok()) {
-                const auto first = std::find_if(
-                    build.diagnostics.begin(), build.diagnostics.end(),
-                    [](const Diagnostic &d) { return d.severity == Diagnostic::Severity::Error; });
+                const Diagnostic *first = build.firstError();
                 out.failure = "mistake does not build";
-                out.diagnostic = first == build.diagnostics.end()
-                                     ? QString("mistake %1 (%2): %3")
-                                           .arg(i)
-                                           .arg(escapedName(m.name), build.log())
-                                     : mistakeText(i, m, *first);
+                out.diagnostic = first ? mistakeText(i, m, *first)
+                                       : QString("mistake %1 (%2): %3")
+                                             .arg(i)
+                                             .arg(escapedName(m.name), build.log());
                 return out;
             }
             const TrialResult trial =
@@ -97,7 +79,7 @@ MistakeSearch findMistake(OffscreenRenderer &offscreen, const Exercise &exercise
         SignatureAgreement signature;
         for (const FailingCase &f : failing) {
             const QImage frame =
-                offscreen.render(mistakeScene(referenceScene(cases[f.index], ref), m));
+                offscreen.render(mistakeScene(referenceCase(cases[f.index], ref), m));
             share += measureCase(f.student, frame, kBackgroundPixel, spec.tolerance, spec.passShare)
                          .shareWithin;
             const SignatureAgreement a =

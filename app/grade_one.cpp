@@ -48,16 +48,6 @@ QString diagnosticText(const Diagnostic &d, const Submission &s)
                       : QString("%1: %2").arg(where, d.message);
 }
 
-// "reference fragment:12: message": the exercise's own program, inline in its file.
-QString referenceText(const Diagnostic &d)
-{
-    const QString where = d.stage == ShaderStage::Link
-                              ? QString("reference (link)")
-                              : QString("reference %1").arg(stageName(d.stage));
-    return d.line > 0 ? QString("%1:%2: %3").arg(where).arg(d.line).arg(d.message)
-                      : QString("%1: %2").arg(where, d.message);
-}
-
 // Meshes and images the exercise's scene names, read into `offscreen`; "" or why not.
 QString loadSceneFiles(OffscreenRenderer &offscreen, const Scene &scene)
 {
@@ -115,17 +105,14 @@ int runGradeOne(const CommandLine &cl)
     std::vector<QImage> reference;
     if (exercise.reference.builtIn()) {
         offscreen.renderer().clearUserProgram();
-        for (Scene c : cases) {
-            c.shading.shading = exercise.reference.shading;
-            c.shading.specular = exercise.reference.specular;
-            reference.push_back(offscreen.render(c));
-        }
+        for (const Scene &c : cases)
+            reference.push_back(offscreen.render(referenceCase(c, exercise.reference)));
     } else {
         // The teacher's program is a stranger's too (an exercise handed on): tried as every
         // submission is. One that loops or is over the budget stops the batch, on its line.
         const QString &vertex = exercise.reference.vertex, &fragment = exercise.reference.fragment;
         const auto refused = [&](const Diagnostic &d) {
-            return finish("reference refused", referenceText(d));
+            return finish("reference refused", exerciseProgramText("reference", d));
         };
         std::optional<WorkGuard> guard;
         guard.emplace(programMemoryKB(), kProgramLimitMs,
@@ -156,12 +143,10 @@ int runGradeOne(const CommandLine &cl)
     });
     const ProgramBuild build = offscreen.useProgram(s.vertex, s.fragment);
     if (!build.ok()) {
-        const auto first = std::find_if(
-            build.diagnostics.begin(), build.diagnostics.end(),
-            [](const Diagnostic &d) { return d.severity == Diagnostic::Severity::Error; });
-        const bool compiled = first == build.diagnostics.end() || first->stage == ShaderStage::Link;
+        const Diagnostic *first = build.firstError();
+        const bool compiled = !first || first->stage == ShaderStage::Link;
         return finish(compiled ? "does not link" : "does not compile",
-                      first == build.diagnostics.end() ? build.log() : diagnosticText(*first, s));
+                      first ? diagnosticText(*first, s) : build.log());
     }
     // An endless loop or a program far too slow is refused before its frames are drawn
     // (the batch's time limit ends one that hangs anyway).

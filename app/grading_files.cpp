@@ -27,6 +27,15 @@ ExerciseFile readExerciseFile(const QString &path)
     return e;
 }
 
+QString exerciseProgramText(const QString &who, const Diagnostic &d)
+{
+    const QString where = d.stage == ShaderStage::Link
+                              ? QString("%1 (link)").arg(who)
+                              : QString("%1 %2").arg(who, stageName(d.stage));
+    return d.line > 0 ? QString("%1:%2: %3").arg(where).arg(d.line).arg(d.message)
+                      : QString("%1: %2").arg(where, d.message);
+}
+
 QString gradingSheetPath(const QString &folder, const QString &name)
 {
     return QDir(folder).filePath(name + ".png");

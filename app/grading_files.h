@@ -2,6 +2,7 @@
 // What --grade and its child (--grade-one) both use: the exercise file, checked; where a
 // submission's sheet goes; a line printed and flushed at once.
 
+#include "diagnostics.h"
 #include "scene_file.h"
 
 #include <QString>
@@ -21,6 +22,10 @@ struct ExerciseFile
     QStringList ignored; // the scene's own fields that could not be used
 };
 ExerciseFile readExerciseFile(const QString &path);
+
+// "WHO fragment:12: message", "WHO (link): message": a diagnostic of a program the exercise
+// holds inline (its reference, WHO "reference"; a known mistake, "mistake 2 (normal matrix)").
+QString exerciseProgramText(const QString &who, const Diagnostic &d);
 
 // FOLDER/NAME.png.
 QString gradingSheetPath(const QString &folder, const QString &name);

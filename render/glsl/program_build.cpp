@@ -11,10 +11,15 @@ int ActiveUniform::components() const
 
 bool ProgramBuild::hasErrors() const
 {
+    return firstError() != nullptr;
+}
+
+const Diagnostic *ProgramBuild::firstError() const
+{
     for (const Diagnostic &d : diagnostics)
         if (d.severity == Diagnostic::Severity::Error)
-            return true;
-    return false;
+            return &d;
+    return nullptr;
 }
 
 bool ProgramBuild::reads(Semantic semantic) const

@@ -41,7 +41,8 @@ struct ProgramBuild
     std::vector<ActiveUniform> uniforms; // the linked program's active uniforms
     bool ok() const { return linked; }
     bool hasErrors() const;
-    QString log() const; // the diagnostics as text, one per line
+    const Diagnostic *firstError() const; // the first error, or none
+    QString log() const;                  // the diagnostics as text, one per line
     bool reads(Semantic semantic) const;
     // Whether the program takes the panel's light position (either name); one that does not
     // hard-codes its light, and the window draws no marker where its light is not.

@@ -330,4 +330,14 @@ std::vector<Scene> gradingCases(const Scene &base, const GradingSpec &spec, std:
     return cases;
 }
 
+Scene referenceCase(const Scene &caseScene, const ExerciseReference &reference)
+{
+    Scene s = caseScene;
+    if (reference.builtIn()) {
+        s.shading.shading = reference.shading;
+        s.shading.specular = reference.specular;
+    }
+    return s;
+}
+
 } // namespace lb

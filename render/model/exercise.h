@@ -95,5 +95,8 @@ ExerciseRead readExercise(const QJsonValue &json, QStringList *ignored);
 // `spec.vary` names, drawn from `seed` and its index alone (the same seed gives the same
 // cases, and case 3 is the same whether 5 or 20 are asked for).
 std::vector<Scene> gradingCases(const Scene &base, const GradingSpec &spec, std::uint32_t seed);
+// A case as the reference draws it: a built-in reference's shading and specular choices set
+// (a program reference draws the case as it is).
+Scene referenceCase(const Scene &caseScene, const ExerciseReference &reference);
 
 } // namespace lb
