@@ -170,8 +170,9 @@ QString manPage()
                    "finished keep their lines and report rows.");
 
     page += ".SH EXAMPLES\n";
-    // The headless ones under Xvfb with a 24-bit screen: OpenGL needs it (README).
-    const QString xvfb = "xvfb-run -a -s \"-screen 0 1920x1080x24\" \\\n    ";
+    // The headless ones under Xvfb with a 24-bit screen: OpenGL needs it (README). -noreset:
+    // the server's reset after lightbench exits can make xvfb-run exit 5, not with our status.
+    const QString xvfb = "xvfb-run -a -s \"-screen 0 1920x1080x24 -noreset\" \\\n    ";
     const std::pair<QString, QString> examples[] = {
         {"Open a lesson in the window, at its first step:", "lightbench lecture.lblesson"},
         {"Open a scene with Gouraud shading instead of the scene's own:",

@@ -25,7 +25,9 @@ with open("lighting.frag" if ANSWER_STAGE == "fragment" else "lighting.vert", "w
           encoding="utf-8") as f:
     f.write(answer)
 
-command = ["xvfb-run", "-a", "-s", "-screen 0 1280x1024x24", LIGHTBENCH,
+# -noreset: without it, the reset after lightbench exits can make xvfb-run exit 5 and leave
+# Xvfb running.
+command = ["xvfb-run", "-a", "-s", "-screen 0 1280x1024x24 -noreset", LIGHTBENCH,
            "--grade", "lighting.vert", "lighting.frag", "--exercise", EXERCISE,
            "--report-format", "coderunner", "--report", "-"]
 # Mesa's software renderer starts a thread per core for each program that draws; Jobe counts

@@ -10,7 +10,9 @@ set -u
 report="${RUNNER_TEMP:-/tmp}/lightbench-result.json"
 rm -f "$report"
 # shellcheck disable=SC2086 # SUBMISSION is a list of files
-xvfb-run -a -s "-screen 0 1280x1024x24" "${LIGHTBENCH:-lightbench}" --grade $SUBMISSION \
+# -noreset: without it, the reset after lightbench exits can make xvfb-run exit 5, not with
+# lightbench's status, and leave Xvfb running.
+xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" "${LIGHTBENCH:-lightbench}" --grade $SUBMISSION \
     --exercise "$EXERCISE" --report-format github --report "$report"
 status=$?
 if [ ! -s "$report" ]; then
