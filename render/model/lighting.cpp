@@ -22,10 +22,19 @@ glm::vec3 viewVector(const glm::vec3 &positionEye, Projection projection)
 LightingTerms evaluateLighting(const glm::vec3 &positionEye, const glm::vec3 &normalEye,
                                const LightingInputs &in)
 {
+    const float distance =
+        in.lightEye.w != 0.0f ? glm::length(glm::vec3(in.lightEye) - positionEye) : 0.0f;
+    return lightingTerms(lightVector(in.lightEye, positionEye), glm::normalize(normalEye),
+                         viewVector(positionEye, in.projection), distance, in);
+}
+
+LightingTerms lightingTerms(const glm::vec3 &L, const glm::vec3 &N, const glm::vec3 &V,
+                            float distance, const LightingInputs &in)
+{
     LightingTerms t;
-    t.L = lightVector(in.lightEye, positionEye);
-    t.N = glm::normalize(normalEye);
-    t.V = viewVector(positionEye, in.projection);
+    t.L = L;
+    t.N = N;
+    t.V = V;
     t.H = glm::normalize(t.L + t.V);
     // The slides write reflect(L, N), but GLSL's reflect(I, N) mirrors an *incident* direction
     // I (pointing at the surface). L points away from the surface, so the mirror of the light
@@ -40,13 +49,13 @@ LightingTerms evaluateLighting(const glm::vec3 &positionEye, const glm::vec3 &no
         t.specularFactor = 0.0f;
 
     if (in.lightEye.w != 0.0f)
-        t.distance = glm::length(glm::vec3(in.lightEye) - positionEye);
+        t.distance = distance;
     t.attenuation = attenuationFactor(in.lightEye, t.distance, in.attenuation);
     t.spot = spotFactor(t.L, in.spotDirectionEye, in.spotCosCutoff, in.spotExponent);
     // OpenGL 2.1's fixed-function equation: attenuation and spot scale all three terms.
     const float scale = t.attenuation * t.spot;
     t.ambient = scale * (in.colors.ia * m.ka);
-    t.diffuse = scale * (glm::max(t.nDotL, 0.0f) * (in.colors.id * m.kd)); // none from behind
+    t.diffuse = scale * (diffuseFactor(t.nDotL) * (in.colors.id * m.kd)); // none from behind
     t.specular = scale * (t.specularFactor * (in.colors.is * m.ks));
     return t;
 }

@@ -94,6 +94,16 @@ glm::vec3 viewVector(const glm::vec3 &positionEye, Projection projection);
 // Evaluates the model at a point with the given (not necessarily unit) normal.
 LightingTerms evaluateLighting(const glm::vec3 &positionEye, const glm::vec3 &normalEye,
                                const LightingInputs &in);
+// The same once the vectors are known: unit L (towards the light), N and V (towards the
+// viewer), and the distance to a point light (ignored for a directional one). The plots sweep
+// one of the vectors through it (plots.h).
+LightingTerms lightingTerms(const glm::vec3 &L, const glm::vec3 &N, const glm::vec3 &V,
+                            float distance, const LightingInputs &in);
+// The diffuse factor max(N·L, 0): no light from behind.
+inline float diffuseFactor(float nDotL)
+{
+    return nDotL > 0.0f ? nDotL : 0.0f;
+}
 
 // Lights add up: the sum of the ambient, diffuse and specular terms of each light, of the
 // terms switched on.
