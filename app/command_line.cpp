@@ -3,6 +3,7 @@
 #include "lightbench_version.h"
 
 #include "command_line_grade.h"
+#include "command_line_plot.h"
 #include "lesson.h"
 
 #include "message_text.h"
@@ -220,6 +221,8 @@ void parseInto(const QCommandLineParser &parser, CommandLine &cl)
     }
     cl.check = given("check");
     if (const QString error = parseGradeOptions(parser, cl); !error.isEmpty())
+        throw BadOption{error};
+    if (const QString error = parsePlotOptions(parser, cl); !error.isEmpty())
         throw BadOption{error};
     if (cl.check && !cl.hasUserProgram())
         fail("check", "needs --vertex FILE and --fragment FILE");

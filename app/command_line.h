@@ -4,6 +4,7 @@
 // exit code 2 and one line naming the option; nothing here touches OpenGL.
 
 #include "import_process.h"
+#include "plots.h"
 #include "scene.h"
 #include "scene_file.h"
 
@@ -39,11 +40,15 @@ struct CommandLine
     bool programFromScene = false;
     // Each scene option given, in order; applied on top of the default or the saved scene.
     std::vector<std::function<void(Scene &)>> sceneOverrides;
-    QString renderPath;          // --render FILE.png
+    QString renderPath;          // --render FILE.png (with --plot, .png or .svg)
     std::optional<QPoint> probe; // --probe X,Y
-    QSize size{800, 600};        // --size WxH
-    QString screenshotPath;      // --screenshot FILE.png (window mode: grab and quit)
-    int benchFrames = 0;         // --bench-frames N (headless timing)
+    // --plot KIND [--plot-data FILE.csv]: the model's curve into --render instead of a
+    // frame, its samples into the CSV; --probe marks that pixel's point (plot_output.h).
+    std::optional<PlotKind> plot;
+    QString plotDataPath;
+    QSize size{800, 600};   // --size WxH
+    QString screenshotPath; // --screenshot FILE.png (window mode: grab and quit)
+    int benchFrames = 0;    // --bench-frames N (headless timing)
     // --vertex FILE --fragment FILE: the user's program instead of the built-in pair.
     QString vertexPath, fragmentPath;
     QString vertexSource, fragmentSource;
@@ -73,7 +78,7 @@ struct CommandLine
     bool hasUserProgram() const { return !vertexPath.isEmpty(); }
     bool headless() const
     {
-        return !renderPath.isEmpty() || probe || benchFrames > 0 || check ||
+        return !renderPath.isEmpty() || probe || plot || benchFrames > 0 || check ||
                !saveScenePath.isEmpty() || grade || !gradeOne.isEmpty();
     }
     // The scene options given, on top of `scene`.

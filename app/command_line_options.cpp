@@ -3,6 +3,7 @@
 #include "command_line.h"
 
 #include "grading_formats.h"
+#include "plots.h"
 #include "scene.h"
 
 namespace lb {
@@ -111,9 +112,21 @@ std::vector<OptionInfo> visibleOptions()
              "with --render, --screenshot or --probe, that step's scene. Not with "
              "--scene."),
         value("step", "N", "With --lesson: the step, from 1 (default 1)."),
-        file("render", "FILE.png", {"png"}, "Draw one frame offscreen into FILE.png and exit."),
+        file("render", "FILE.png", {"png", "svg"},
+             "Draw one frame offscreen into FILE.png and exit (with --plot: the plot, as "
+             "PNG, or SVG where FILE ends in .svg)."),
         value("probe", "X,Y", "Print the probe's JSON for pixel X,Y (origin top-left) and exit."),
         value("size", "WxH", "Frame size for --render and --probe (default 800x600)."),
+        words("plot", plotKindNames(),
+              "Draw one of the model's curves for the scene instead of a frame: the specular "
+              "factor (Phong's n, Blinn-Phong's n and 4n) against the angle from R, the "
+              "diffuse factor against the angle of incidence, each point light's attenuation "
+              "against the distance, each spotlight's factor against the angle from its axis, "
+              "or the lobe of the three terms in the plane of incidence; into --render and/or "
+              "--plot-data; with --probe, that pixel's point is marked on the curves."),
+        file("plot-data", "FILE.csv", {"csv"},
+             "With --plot: the curves' samples as CSV (angle_degrees or distance, then one "
+             "column per curve; numbers with a point)."),
         object("Add an object: " + shapeNames().join(", ") +
                " or a mesh file (repeatable; placed side by side and the camera framing "
                "them). The object options (shape, mesh, model, material, texture) apply "

@@ -1,9 +1,12 @@
 #include "headless.h"
 
+#include "plot_output.h"
+
 #include "diagnostics.h"
 #include "heap_warmer.h"
 #include "message_text.h"
 #include "offscreen.h"
+#include "plot_output.h"
 #include "program_guard.h"
 #include "program_trial.h"
 #include "resident_memory.h"
@@ -49,7 +52,8 @@ QJsonArray bytes(const glm::vec3 &v)
 // it, the context) is the system's to free, at once; tearing it all down took about 50 ms of
 // a 1M-triangle --render (issue 14). The sanitizer build tears down as usual, so that its leak
 // check sees the whole run. A helper still running when this process ends is killed by the
-// system (platform::dieWithParent() in import_main.cpp; Linux only), as ~ImportProcess would have done.
+// system (platform::dieWithParent() in import_main.cpp; Linux only), as ~ImportProcess would have
+// done.
 int leave(int code)
 {
 #ifdef LIGHTBENCH_SANITIZE
@@ -332,7 +336,7 @@ int runHeadless(const CommandLine &cl, const Scene &requested)
             printLine("lightbench: " + why.toUtf8(), stderr);
         return 1;
     }
-    if (!cl.renderPath.isEmpty())
+    if (!cl.renderPath.isEmpty() && !cl.plot) // --plot's picture is the plot, written below
         if (const QString error = writeImageSafely(cl.renderPath, frame, kPngQuality);
             !error.isEmpty()) {
             printLine("lightbench: --render: cannot write " + error.toUtf8(), stderr);
@@ -362,6 +366,8 @@ int runHeadless(const CommandLine &cl, const Scene &requested)
         if (scene.compare.mode != CompareMode::Off)
             o["side"] = view.sideB ? "B" : "A";
         printLine(QJsonDocument(o).toJson(QJsonDocument::Compact), stdout);
+        if (cl.plot) // the curves with the probed point marked (in the scene of its side)
+            return leave(writePlotOutputs(cl, sceneOfSide(scene, view.sideB), &probe));
     }
     return leave(0);
 }

@@ -14,6 +14,7 @@
 #include "message_text.h"
 #include "object_loader.h"
 #include "offscreen.h"
+#include "plot_output.h"
 #include "safe_write.h"
 #include "scene_actions.h"
 #include "settings_autosave.h"
@@ -32,6 +33,7 @@
 #include <QTimer>
 
 #include <cstdio>
+#include <memory>
 #include <new>
 
 namespace {
@@ -97,7 +99,11 @@ int main(int argc, char **argv)
                      qPrintable(lb::elidedForMessage(cl.scenePath)),
                      qPrintable(lb::summarisedList(cl.sceneIgnored, "; ")));
     if (cl.headless()) {
-        QGuiApplication app(argc, argv);
+        // A plot's chart is a graphics-view widget: it needs QApplication; a frame does not.
+        std::unique_ptr<QGuiApplication> application =
+            cl.plot ? std::make_unique<QApplication>(argc, argv)
+                    : std::make_unique<QGuiApplication>(argc, argv);
+        QGuiApplication &app = *application;
         if (cl.grade)
             return lb::runGrade(cl);
         if (!cl.gradeOne.isEmpty()) {
@@ -115,9 +121,12 @@ int main(int argc, char **argv)
                 std::fprintf(stderr, "lightbench: --save-scene: %s\n", qPrintable(error));
                 return 1;
             }
-            if (cl.renderPath.isEmpty() && !cl.probe && cl.benchFrames == 0 && !cl.check)
+            if (cl.renderPath.isEmpty() && !cl.probe && !cl.plot && cl.benchFrames == 0 &&
+                !cl.check)
                 return 0;
         }
+        if (cl.plot && !cl.probe) // the curves alone: no mesh, no OpenGL
+            return lb::writePlotOutputs(cl, scene, nullptr);
         try {
             return lb::runHeadless(cl, scene);
         } catch (const std::bad_alloc &e) { // within the scene budget, this is rare

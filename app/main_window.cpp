@@ -12,6 +12,7 @@
 #include "message_text.h"
 #include "object_loader.h"
 #include "object_panel.h"
+#include "plots_panel.h"
 #include "presets.h"
 #include "probe_panel.h"
 #include "scene_actions.h"
@@ -85,6 +86,9 @@ MainWindow::MainWindow(QSettings &settings, QWidget *parent)
     addPanelDock(tr("Object"), "objectDock", m_object);
     addPanelDock(tr("Uniforms"), "uniformDock", m_uniforms);
     QDockWidget *probeDock = addPanelDock(tr("Probe"), "probeDock", m_probe);
+    m_plots = new PlotsPanel(&m_document, m_probe);
+    m_plots->restoreState(m_settings);
+    addPanelDock(tr("Plots"), "plotsDock", m_plots);
     m_exercisePanel = new ExercisePanel;
     m_exerciseDock = addPanelDock(tr("Exercise"), "exerciseDock", m_exercisePanel);
     // A click on an object selects it for the Object and Material panels.
@@ -322,6 +326,7 @@ void MainWindow::writeSettings()
     m_settings.setValue(kScreenKey, m_available.size());
     m_settings.setValue(kLayoutKey, int(m_presentation ? m_normalLayout : m_layout));
     m_editor->saveState(m_settings);
+    m_plots->saveState(m_settings);
     if (m_sessionKeepsOnlySaved)
         writeSavedWork();
 }

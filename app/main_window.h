@@ -31,6 +31,7 @@ class MaterialPanel;
 class MeshActions;
 class ObjectLoader;
 class ObjectPanel;
+class PlotsPanel;
 class ProbePanel;
 class SceneActions;
 class ScreenBlank;
@@ -65,6 +66,7 @@ public:
     SceneActions *sceneActions() const { return m_sceneActions; }
     LessonActions *lessonActions() const { return m_lessons; } // the lesson bar's too
     ProbePanel *probePanel() const { return m_probe; }
+    PlotsPanel *plotsPanel() const { return m_plots; }
     StatusLine *statusLine() const { return m_status; }
     ExercisePanel *exercisePanel() const { return m_exercisePanel; }
     QDockWidget *exerciseDock() const { return m_exerciseDock; }
@@ -74,7 +76,7 @@ public:
     // or the built-in program). Returns an empty string or the message shown.
     QString setSideBFiles(const QString &path);
     SettingsAutosave *autosave() const { return m_autosave; }
-    // The docks of the panels (Light, Material, Shading, Object, Uniforms, Probe, Exercise;
+    // The docks of the panels (Light, Material, Shading, Object, Uniforms, Probe, Plots, Exercise;
     // the Exercise dock is hidden while no exercise is open) and the editor's.
     const std::vector<QDockWidget *> &panelDocks() const { return m_panelDocks; }
     QDockWidget *editorDock() const { return m_editorDock; }
@@ -195,6 +197,7 @@ private:
     SceneActions *m_sceneActions;
     LessonActions *m_lessons = nullptr;
     ProbePanel *m_probe;
+    PlotsPanel *m_plots;
     StatusLine *m_status;
     std::vector<QDockWidget *> m_panelDocks;
     QDockWidget *m_editorDock;

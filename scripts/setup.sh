@@ -11,10 +11,13 @@ XVFB_SCREEN="-screen 0 1920x1080x24 -noreset"
 # qt6-qpa-plugins holds the xcb platform; xvfb + xauth + Mesa give OpenGL without a display.
 # qt6-tools-dev + qt6-l10n-tools: CMake's LinguistTools (lupdate, lrelease) for the window's
 # languages; qt6-translations-l10n and libqscintilla2-qt6-l10n: Qt's and the editor's own words.
+# qt6-charts-dev: the Plots panel and --plot (Qt's own charts, polar ones too); qt6-svg-dev:
+# QSvgGenerator for --plot's SVG.
 PACKAGES=(cmake g++ make qt6-base-dev libqt6opengl6-dev qt6-qpa-plugins libglm-dev
           libqscintilla2-qt6-dev libassimp-dev libmimalloc-dev libpng-dev
           xvfb xauth libgl1-mesa-dri fonts-dejavu-core
-          qt6-tools-dev qt6-l10n-tools qt6-translations-l10n libqscintilla2-qt6-l10n)
+          qt6-tools-dev qt6-l10n-tools qt6-translations-l10n libqscintilla2-qt6-l10n
+          qt6-charts-dev qt6-svg-dev)
 # Only the tests need these: Debian's corpus of ~600 model files, valid and broken; Python for
 # CodeRunner's template (resources/autograders/) and the autograders' checks of their JSON.
 TEST_PACKAGES=(assimp-testmodels python3)

@@ -1,6 +1,7 @@
 #include "probe_panel.h"
 
 #include "choice_labels.h"
+#include "model_colours.h"
 #include "probe_equation.h"
 #include "probe_equation_words.h"
 #include "viewport.h"
@@ -87,6 +88,7 @@ void ProbePanel::clear()
     m_text->setText(tr("Ctrl+click (or Shift+click) the surface to probe a point: the "
                        "vectors, N\u00b7L, the specular angle and the three terms, beside the "
                        "pixel the GPU drew. Esc clears it."));
+    emit resultChanged();
 }
 
 void ProbePanel::setSideBReference(const QString &name)
@@ -155,24 +157,23 @@ void ProbePanel::update()
         labels.push_back({m_result.position, m_result.position + d, m_point->sideB, name,
                           QColor::fromRgbF(colour.r, colour.g, colour.b)});
     };
-    add(m_result.normal, glm::vec3(1.0f, 0.85f, 0.25f), "N"); // yellow, as the normal lines
-    add(viewVector(m_result.position, scene.shading.projection), glm::vec3(0.3f, 0.9f, 1.0f), "V");
+    add(m_result.normal, colours::kNormal, "N");
+    add(viewVector(m_result.position, scene.shading.projection), colours::kView, "V");
     const bool several = m_result.lights.size() > 1;
     for (const ProbeLight &l : m_result.lights) {
         const QString n = several ? QString::number(l.index + 1) : QString();
-        const glm::vec3 id = scene.lights[std::size_t(l.index)].colors.id;
-        const float peak = std::max({id.r, id.g, id.b, 1e-3f});
-        add(l.terms.L, glm::max(id / peak, glm::vec3(0.3f)), "L" + n);
+        add(l.terms.L, colours::lightArrow(scene.lights[std::size_t(l.index)].colors.id), "L" + n);
         if (scene.shading.specular == SpecularModel::Blinn)
-            add(l.terms.H, glm::vec3(1.0f, 0.35f, 1.0f), "H" + n);
+            add(l.terms.H, colours::kMirror, "H" + n);
         else
-            add(l.terms.R, glm::vec3(1.0f, 0.35f, 1.0f), "R" + n);
+            add(l.terms.R, colours::kMirror, "R" + n);
     }
     const QPoint pixel = view.topLeft() + QPoint(int(std::floor(m_result.pixel.x())),
                                                  int(std::floor(m_result.pixel.y())));
     const bool againstProgram =
         !m_point->sideB && !m_sideBReference.isEmpty() && m_viewport->hasSideBProgram();
     m_viewport->setProbe(std::move(arrows), pixel, std::move(labels), againstProgram);
+    emit resultChanged();
 }
 
 void ProbePanel::showText()

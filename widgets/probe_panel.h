@@ -53,6 +53,10 @@ public:
     std::optional<glm::ivec3> referenceColour() const { return m_reference; }
     const QString &referenceName() const { return m_referenceName; }
 
+signals:
+    // The probed point's numbers changed, or it was cleared (the Plots panel marks them).
+    void resultChanged();
+
 private:
     struct Point
     {

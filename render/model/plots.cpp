@@ -105,7 +105,8 @@ Plot specularPlot(const Scene &scene, const PlotSubject &s, int samples)
                             {"blinn", SpecularModel::Blinn, 1.0f, false},
                             {"blinn_4n", SpecularModel::Blinn, 4.0f, true}};
     for (const Curve &c : curves) {
-        PlotSeries series{QString::fromLatin1(c.key), PlotRole::Specular, -1, c.dashed, {}};
+        PlotSeries series{
+            QString::fromLatin1(c.key), PlotRole::Specular, -1, glm::vec3(1.0f), c.dashed, {}};
         LightingInputs swept = in;
         swept.specular = c.model;
         swept.material.shininess = plot.shininess * c.exponent;
@@ -134,7 +135,7 @@ Plot diffusePlot(const Scene &scene, const PlotSubject &s, int samples)
     Plot plot;
     plot.xMax = 180.0f;
     const LightingInputs in = sweepInputs(scene, s);
-    PlotSeries series{QStringLiteral("diffuse"), PlotRole::Diffuse, -1, false, {}};
+    PlotSeries series{QStringLiteral("diffuse"), PlotRole::Diffuse, -1, glm::vec3(1.0f), false, {}};
     for (int i = 0; i < samples; ++i) {
         const float angle = sampleAt(i, samples, plot.xMin, plot.xMax);
         const LightingTerms t = lightingTerms(inPlane(angle), kNormal, kNormal, 0.0f, in);
@@ -170,7 +171,7 @@ Plot attenuationPlot(const Scene &scene, const PlotSubject &s, int samples)
         plot.gap = PlotGap::NoPointLight;
     for (int light : pointLights) {
         const Light &l = scene.lights[std::size_t(light)];
-        PlotSeries series{lightKey(light), PlotRole::Light, light, false, {}};
+        PlotSeries series{lightKey(light), PlotRole::Light, light, l.colors.id, false, {}};
         for (int i = 0; i < samples; ++i) {
             const float d = sampleAt(i, samples, plot.xMin, plot.xMax);
             series.points.push_back({d, attenuationFactor(l.position, d, l.attenuation)});
@@ -199,8 +200,9 @@ Plot spotPlot(const Scene &scene, const PlotSubject &s, int samples)
     // The axis D = -z; L at `angle` from it, seen from the lit point (towards the light).
     const glm::vec3 axis{0.0f, 0.0f, -1.0f};
     for (int light : spots) {
-        const Spot &spot = scene.lights[std::size_t(light)].spot;
-        PlotSeries series{lightKey(light), PlotRole::Light, light, false, {}};
+        const Light &l = scene.lights[std::size_t(light)];
+        const Spot &spot = l.spot;
+        PlotSeries series{lightKey(light), PlotRole::Light, light, l.colors.id, false, {}};
         for (int i = 0; i < samples; ++i) {
             const float angle = sampleAt(i, samples, plot.xMin, plot.xMax);
             const glm::vec3 swept = inPlane(angle);
@@ -243,8 +245,7 @@ Plot lobePlot(const Scene &scene, const PlotSubject &s, int samples)
         distance = p->terms.distance;
     } else {
         in = lightingInputs(scene, s.frames, light);
-        const glm::vec3 centre =
-            glm::vec3(s.frames.modelView * glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+        const glm::vec3 centre = glm::vec3(s.frames.modelView * glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
         L = lightVector(in.lightEye, centre);
         V = viewVector(centre, in.projection);
         N = V;
@@ -261,9 +262,10 @@ Plot lobePlot(const Scene &scene, const PlotSubject &s, int samples)
         const float a = glm::radians(degrees);
         return std::cos(a) * N + std::sin(a) * across;
     };
-    PlotSeries terms[3] = {{QStringLiteral("ambient"), PlotRole::Ambient, light, false, {}},
-                           {QStringLiteral("diffuse"), PlotRole::Diffuse, light, false, {}},
-                           {QStringLiteral("specular"), PlotRole::Specular, light, false, {}}};
+    const glm::vec3 id = in.colors.id;
+    PlotSeries terms[3] = {{QStringLiteral("ambient"), PlotRole::Ambient, light, id, false, {}},
+                           {QStringLiteral("diffuse"), PlotRole::Diffuse, light, id, false, {}},
+                           {QStringLiteral("specular"), PlotRole::Specular, light, id, false, {}}};
     const auto addSample = [&](float degrees, std::vector<glm::vec2> *to[3]) {
         const LightingTerms t = lightingTerms(L, N, viewAt(degrees), distance, in);
         const float values[3] = {mean(t.ambient), mean(t.diffuse), mean(t.specular)};
@@ -288,7 +290,11 @@ Plot lobePlot(const Scene &scene, const PlotSubject &s, int samples)
         {"L", lightAngle}, {"R", -lightAngle}, {"V", viewAngle}};
     for (const auto &[key, angle] : rays)
         if (angle >= plot.xMin && angle <= plot.xMax)
-            plot.series.push_back({QString::fromLatin1(key), PlotRole::Direction, light, false,
+            plot.series.push_back({QString::fromLatin1(key),
+                                   PlotRole::Direction,
+                                   light,
+                                   id,
+                                   false,
                                    {{angle, 0.0f}, {angle, reach}}});
     // The three contributions where V is (its part in the plane), on their curves.
     if (plot.probed && viewAngle >= plot.xMin && viewAngle <= plot.xMax) {
@@ -326,6 +332,14 @@ std::optional<PlotKind> plotKindFromName(const QString &name)
         if (plotKindName(kind) == name)
             return kind;
     return std::nullopt;
+}
+
+QStringList plotKindNames()
+{
+    QStringList names;
+    for (PlotKind kind : kPlotKinds)
+        names << plotKindName(kind);
+    return names;
 }
 
 Plot computePlot(PlotKind kind, const Scene &scene, const ProbeResult *probe, int samples)

@@ -11,6 +11,7 @@
 
 #include <QByteArray>
 #include <QString>
+#include <QStringList>
 
 #include <optional>
 #include <vector>
@@ -23,6 +24,7 @@ constexpr PlotKind kPlotKinds[] = {PlotKind::Specular, PlotKind::Diffuse, PlotKi
 // "specular", "diffuse", "attenuation", "spot", "lobe": the command line's and the settings'.
 QString plotKindName(PlotKind kind);
 std::optional<PlotKind> plotKindFromName(const QString &name);
+QStringList plotKindNames();
 
 // What a series stands for, which gives its colour: a term, a light, or a direction of the
 // lobe's picture.
@@ -34,7 +36,8 @@ struct PlotSeries
     // light1..light4, ambient, specular; L, R, V for the lobe's directions.
     QString key;
     PlotRole role = PlotRole::Specular;
-    int light = -1; // 0 for light 1, where the series is a light's
+    int light = -1;               // 0 for light 1, where the series is a light's
+    glm::vec3 lightDiffuse{1.0f}; // that light's Id: its L arrow's colour over the surface
     bool dashed = false;
     std::vector<glm::vec2> points; // x: degrees or distance; y: the factor or contribution
 };

@@ -52,7 +52,7 @@ struct Comparison
     int compared = 0;
     QString failure;
 };
-template<typename F>
+template <typename F>
 Comparison compareSeries(const Plot &plot, const QString &key, F expected, double tolerance = 2e-5)
 {
     Comparison c;
@@ -78,11 +78,11 @@ Comparison compareSeries(const Plot &plot, const QString &key, F expected, doubl
 }
 
 // Every sample compared (`count` of them) and equal.
-#define COMPARE_SERIES(comparison, count)                                                         \
-    do {                                                                                          \
-        const Comparison c_ = (comparison);                                                       \
-        QVERIFY2(c_.failure.isEmpty(), qPrintable(c_.failure));                                   \
-        QCOMPARE(c_.compared, count);                                                             \
+#define COMPARE_SERIES(comparison, count)                                                          \
+    do {                                                                                           \
+        const Comparison c_ = (comparison);                                                        \
+        QVERIFY2(c_.failure.isEmpty(), qPrintable(c_.failure));                                    \
+        QCOMPARE(c_.compared, count);                                                              \
     } while (false)
 
 Scene spotScene()
@@ -135,18 +135,20 @@ private slots:
         const double n = shininess;
         // pow() magnifies float's error in the cosine (about 1e-7) by the exponent.
         const double tolerance = 2e-5 + 5e-7 * n;
-        COMPARE_SERIES(compareSeries(plot, "phong",
-                               [&](double x) { return std::pow(std::cos(radians(x)), n); },
-                                     tolerance),
-                 kPlotSamples);
-        COMPARE_SERIES(compareSeries(plot, "blinn",
-                               [&](double x) { return std::pow(std::cos(radians(x / 2)), n); },
-                                     tolerance),
-                 kPlotSamples);
-        COMPARE_SERIES(compareSeries(plot, "blinn_4n",
-                               [&](double x) { return std::pow(std::cos(radians(x / 2)), 4 * n); },
-                                     4 * tolerance),
-                 kPlotSamples);
+        COMPARE_SERIES(compareSeries(
+                           plot, "phong",
+                           [&](double x) { return std::pow(std::cos(radians(x)), n); }, tolerance),
+                       kPlotSamples);
+        COMPARE_SERIES(compareSeries(
+                           plot, "blinn",
+                           [&](double x) { return std::pow(std::cos(radians(x / 2)), n); },
+                           tolerance),
+                       kPlotSamples);
+        COMPARE_SERIES(compareSeries(
+                           plot, "blinn_4n",
+                           [&](double x) { return std::pow(std::cos(radians(x / 2)), 4 * n); },
+                           4 * tolerance),
+                       kPlotSamples);
         QVERIFY(seriesNamed(plot, "blinn_4n")->dashed);
         QVERIFY(!seriesNamed(plot, "phong")->dashed);
     }
@@ -156,8 +158,8 @@ private slots:
         const Plot plot = computePlot(PlotKind::Diffuse, Scene{}, nullptr, 361);
         QCOMPARE(plot.xMax, 180.0f);
         COMPARE_SERIES(compareSeries(plot, "diffuse",
-                               [](double x) { return std::max(std::cos(radians(x)), 0.0); }),
-                 361);
+                                     [](double x) { return std::max(std::cos(radians(x)), 0.0); }),
+                       361);
     }
 
     void attenuationCurves_data()
@@ -186,13 +188,11 @@ private slots:
         QVERIFY(!seriesNamed(plot, "light3"));
         QVERIFY(!seriesNamed(plot, "light4"));
         const auto expected = [](glm::vec3 c) {
-            return [c](double d) {
-                return 1.0 / std::max(c.x + c.y * d + c.z * d * d, 1e-6);
-            };
+            return [c](double d) { return 1.0 / std::max(c.x + c.y * d + c.z * d * d, 1e-6); };
         };
         COMPARE_SERIES(compareSeries(plot, "light1", expected(k), 1e-4), kPlotSamples);
         COMPARE_SERIES(compareSeries(plot, "light2", expected(glm::vec3(1, 0, 0.5f)), 1e-4),
-                 kPlotSamples);
+                       kPlotSamples);
         s.lights[0].position.w = 0.0f;
         s.lights[1].enabled = false;
         QCOMPARE(computePlot(PlotKind::Attenuation, s).gap, PlotGap::NoPointLight);
@@ -222,8 +222,9 @@ private slots:
                 return std::nullopt;
             if (x > cutoff)
                 return 0.0;
-            return exponent == 0.0f ? 1.0
-                                    : std::pow(std::max(std::cos(radians(x)), 0.0), double(exponent));
+            return exponent == 0.0f
+                       ? 1.0
+                       : std::pow(std::max(std::cos(radians(x)), 0.0), double(exponent));
         });
         QVERIFY2(c.failure.isEmpty(), qPrintable(c.failure));
         QVERIFY(c.compared >= kPlotSamples - 1);
@@ -294,9 +295,9 @@ private slots:
         QCOMPARE(plot.xMin, -90.0f);
         QCOMPARE(plot.xMax, 90.0f);
         COMPARE_SERIES(compareSeries(plot, "ambient", [&](double) { return mean(t.ambient); }),
-                 kPlotSamples);
+                       kPlotSamples);
         COMPARE_SERIES(compareSeries(plot, "diffuse", [&](double) { return mean(t.diffuse); }),
-                 kPlotSamples);
+                       kPlotSamples);
         const double lightAngle = std::acos(double(t.nDotL)) * 180.0 / M_PI;
         const PlotSeries *L = seriesNamed(plot, "L");
         const PlotSeries *R = seriesNamed(plot, "R");
@@ -307,11 +308,11 @@ private slots:
         const glm::vec3 peak = p.lights[0].inputs.colors.is * p.lights[0].inputs.material.ks;
         const double scale = double(t.attenuation * t.spot) * mean(peak);
         COMPARE_SERIES(compareSeries(plot, "specular",
-                               [&](double phi) {
-                                   const double c = std::cos(radians(phi + lightAngle));
-                                   return scale * std::pow(std::max(c, 0.0), 12.0);
-                               }),
-                 kPlotSamples);
+                                     [&](double phi) {
+                                         const double c = std::cos(radians(phi + lightAngle));
+                                         return scale * std::pow(std::max(c, 0.0), 12.0);
+                                     }),
+                       kPlotSamples);
         // The marks: on the three curves at V's angle, ambient and diffuse the probe's own.
         QCOMPARE(int(plot.markers.size()), 3);
         QVERIFY(std::abs(plot.markers[0].at.y - mean(t.ambient)) < 1e-5);

@@ -1,0 +1,348 @@
+#include "plot_chart.h"
+
+#include "model_colours.h"
+#include "safe_write.h"
+
+#include <QBuffer>
+#include <QCoreApplication>
+#include <QGraphicsScene>
+#include <QPainter>
+#include <QSvgGenerator>
+#include <QtCharts/QCategoryAxis>
+#include <QtCharts/QChart>
+#include <QtCharts/QLegendMarker>
+#include <QtCharts/QLineSeries>
+#include <QtCharts/QPolarChart>
+#include <QtCharts/QScatterSeries>
+#include <QtCharts/QValueAxis>
+
+#include <algorithm>
+#include <cmath>
+
+namespace lb {
+
+namespace {
+
+const QColor kBackground(30, 32, 38);
+const QColor kGrid(80, 84, 96);
+const QColor kText(225, 228, 235);
+const QColor kSurface(150, 150, 150);
+
+QString number(float v)
+{
+    return QString::number(double(v), 'g', 4);
+}
+
+QColor seriesColour(const PlotSeries &s)
+{
+    switch (s.role) {
+    case PlotRole::Ambient:
+        return colours::toQColor(colours::kAmbient);
+    case PlotRole::Diffuse:
+        return colours::toQColor(colours::kDiffuse);
+    case PlotRole::Specular:
+        return colours::toQColor(s.key.startsWith(QLatin1String("blinn")) ? colours::kBlinn
+                                                                          : colours::kSpecular);
+    case PlotRole::Light:
+        return colours::toQColor(colours::lightArrow(s.lightDiffuse));
+    case PlotRole::Direction:
+        if (s.key == QLatin1String("V"))
+            return colours::toQColor(colours::kView);
+        if (s.key == QLatin1String("R"))
+            return colours::toQColor(colours::kMirror);
+        return colours::toQColor(colours::lightArrow(s.lightDiffuse));
+    }
+    return kText;
+}
+
+// The lines' width: a sixth of the text's height, so a projector's larger text gets bolder
+// curves.
+double lineWidth(const QFont &font)
+{
+    return std::max(2.0, QFontMetricsF(font).height() / 6.0);
+}
+
+QPen seriesPen(const PlotSeries &s, const QFont &font)
+{
+    QPen pen(seriesColour(s), lineWidth(font));
+    // Lights of one colour (white by default) still tell apart: each light its own dashes.
+    const Qt::PenStyle byLight[] = {Qt::SolidLine, Qt::DashLine, Qt::DotLine, Qt::DashDotLine};
+    if (s.dashed)
+        pen.setStyle(Qt::DashLine);
+    else if (s.role == PlotRole::Light)
+        pen.setStyle(byLight[std::clamp(s.light, 0, 3)]);
+    if (s.role == PlotRole::Direction)
+        pen.setWidthF(pen.widthF() * 0.75);
+    return pen;
+}
+
+void styleAxis(QAbstractAxis *axis, const QString &title, const QFont &font)
+{
+    axis->setTitleText(title);
+    QFont titleFont = font;
+    titleFont.setBold(false);
+    axis->setTitleFont(titleFont);
+    axis->setLabelsFont(font);
+    axis->setTitleBrush(kText);
+    axis->setLabelsColor(kText);
+    axis->setGridLineColor(kGrid);
+    axis->setLinePenColor(kGrid);
+}
+
+// The polar chart's angle for an angle of V from N: N up (0), towards L clockwise to 90,
+// away from L anticlockwise to 270 (-90).
+qreal polarAngle(float degrees)
+{
+    return degrees < 0.0f ? 360.0 + double(degrees) : double(degrees);
+}
+
+void hideFromLegend(QChart *chart, QAbstractSeries *series)
+{
+    for (QLegendMarker *m : chart->legend()->markers(series))
+        m->setVisible(false);
+}
+
+QScatterSeries *markerSeries(const QColor &colour, const QFont &font)
+{
+    auto *dots = new QScatterSeries;
+    dots->setMarkerShape(QScatterSeries::MarkerShapeCircle);
+    dots->setMarkerSize(QFontMetricsF(font).height() * 0.6);
+    dots->setColor(colour);
+    dots->setBorderColor(Qt::white);
+    return dots;
+}
+
+void addCartesian(QChart *chart, const Plot &plot, const QFont &font)
+{
+    auto *x = new QValueAxis;
+    auto *y = new QValueAxis;
+    x->setRange(plot.xMin, plot.xMax);
+    const bool angle = plot.kind != PlotKind::Attenuation;
+    x->setTickCount(angle ? 7 : 6);
+    x->setLabelFormat("%g");
+    // Factors run 0 to 1; an attenuation with kc under 1 rises above it (up to 10 shown).
+    float top = 1.0f;
+    for (const PlotSeries &s : plot.series)
+        for (const glm::vec2 &p : s.points)
+            top = std::max(top, std::min(p.y, 10.0f));
+    y->setRange(0.0, double(top));
+    y->setTickCount(6);
+    if (top > 1.0f)
+        y->applyNiceNumbers();
+    y->setLabelFormat("%g");
+    chart->addAxis(x, Qt::AlignBottom);
+    chart->addAxis(y, Qt::AlignLeft);
+    const char *xTitle[] = {QT_TRANSLATE_NOOP("lb::PlotChart", "Angle between R and V (°)"),
+                            QT_TRANSLATE_NOOP("lb::PlotChart", "Angle between N and L (°)"),
+                            QT_TRANSLATE_NOOP("lb::PlotChart", "Distance d from the light"),
+                            QT_TRANSLATE_NOOP("lb::PlotChart", "Angle from the spot's axis (°)")};
+    const char *yTitle[] = {QT_TRANSLATE_NOOP("lb::PlotChart", "Specular factor"), "max(N·L, 0)",
+                            "1 / (kc + kl·d + kq·d²)",
+                            QT_TRANSLATE_NOOP("lb::PlotChart", "Spot factor")};
+    const int k = int(plot.kind);
+    styleAxis(x, QCoreApplication::translate("lb::PlotChart", xTitle[k]), font);
+    styleAxis(y, QCoreApplication::translate("lb::PlotChart", yTitle[k]), font);
+    for (const PlotSeries &s : plot.series) {
+        auto *line = new QLineSeries;
+        line->setName(plotSeriesName(plot, s));
+        for (const glm::vec2 &p : s.points)
+            line->append(double(p.x), double(p.y));
+        chart->addSeries(line);
+        line->attachAxis(x);
+        line->attachAxis(y);
+        line->setPen(seriesPen(s, font));
+    }
+    for (const PlotMarker &m : plot.markers) {
+        const PlotSeries &s = plot.series[std::size_t(m.series)];
+        QScatterSeries *dot = markerSeries(seriesColour(s), font);
+        dot->append(double(m.at.x), double(m.at.y));
+        chart->addSeries(dot);
+        dot->attachAxis(x);
+        dot->attachAxis(y);
+        hideFromLegend(chart, dot);
+    }
+}
+
+void addPolar(QPolarChart *chart, const Plot &plot, const QFont &font)
+{
+    auto *angle = new QCategoryAxis;
+    angle->setRange(0, 360);
+    angle->setLabelsPosition(QCategoryAxis::AxisLabelsPositionOnValue);
+    for (int a : {0, 30, 60, 90})
+        angle->append(QString("%1°").arg(a), a);
+    for (int a : {270, 300, 330})
+        angle->append(QString("%1°").arg(a - 360), a);
+    auto *radius = new QValueAxis;
+    float reach = 0.0f;
+    for (const PlotSeries &s : plot.series)
+        for (const glm::vec2 &p : s.points)
+            reach = std::max(reach, p.y);
+    radius->setRange(0.0, double(reach > 0.0f ? reach : 1.0f));
+    radius->setTickCount(5);
+    radius->applyNiceNumbers();
+    radius->setLabelFormat("%g");
+    chart->addAxis(angle, QPolarChart::PolarOrientationAngular);
+    chart->addAxis(radius, QPolarChart::PolarOrientationRadial);
+    styleAxis(angle, {}, font);
+    styleAxis(radius, {}, font);
+    const auto add = [&](QLineSeries *line, const QPen &pen, bool inLegend) {
+        chart->addSeries(line);
+        line->attachAxis(angle);
+        line->attachAxis(radius);
+        line->setPen(pen);
+        if (!inLegend)
+            hideFromLegend(chart, line);
+    };
+    // The surface: the horizontal line through the point.
+    for (qreal a : {90.0, 270.0}) {
+        auto *surface = new QLineSeries;
+        surface->setName(QCoreApplication::translate("lb::PlotChart", "Surface"));
+        surface->append(a, 0.0);
+        surface->append(a, radius->max());
+        add(surface, QPen(kSurface, lineWidth(font) * 1.5), a == 90.0);
+    }
+    for (const PlotSeries &s : plot.series) {
+        // Each curve in two halves that meet at N: a line across 0/360 would go round.
+        auto *towardsL = new QLineSeries;
+        auto *awayFromL = new QLineSeries;
+        towardsL->setName(plotSeriesName(plot, s));
+        for (const glm::vec2 &p : s.points) {
+            if (p.x >= 0.0f)
+                towardsL->append(double(p.x), double(p.y));
+            if (p.x <= 0.0f)
+                awayFromL->append(polarAngle(p.x) == 0.0 ? 360.0 : polarAngle(p.x), double(p.y));
+        }
+        const QPen pen = seriesPen(s, font);
+        add(towardsL, pen, true);
+        add(awayFromL, pen, false);
+    }
+    for (const PlotMarker &m : plot.markers) {
+        QScatterSeries *dot = markerSeries(seriesColour(plot.series[std::size_t(m.series)]), font);
+        dot->append(polarAngle(m.at.x), double(m.at.y));
+        chart->addSeries(dot);
+        dot->attachAxis(angle);
+        dot->attachAxis(radius);
+        hideFromLegend(chart, dot);
+    }
+}
+
+} // namespace
+
+QString plotTitle(PlotKind kind)
+{
+    switch (kind) {
+    case PlotKind::Specular:
+        return QCoreApplication::translate(
+            "lb::PlotChart", "Specular: Phong (R·V)^n, Blinn-Phong (N·H)^n and at 4n");
+    case PlotKind::Diffuse:
+        return QCoreApplication::translate("lb::PlotChart",
+                                           "Diffuse factor against the angle of incidence");
+    case PlotKind::Attenuation:
+        return QCoreApplication::translate("lb::PlotChart", "Attenuation against the distance");
+    case PlotKind::Spot:
+        return QCoreApplication::translate("lb::PlotChart",
+                                           "Spotlight factor against the angle from its axis");
+    case PlotKind::Lobe:
+        return QCoreApplication::translate(
+            "lb::PlotChart", "The three terms as V sweeps the plane of incidence (N up)<br>"
+                             "<small>Radius: the mean of the term's red, green and blue</small>");
+    }
+    return {};
+}
+
+QString plotGapText(PlotGap gap)
+{
+    switch (gap) {
+    case PlotGap::None:
+        return {};
+    case PlotGap::NoPointLight:
+        return QCoreApplication::translate(
+            "lb::PlotChart", "No point light is on: a directional light (w = 0) is not "
+                             "attenuated.");
+    case PlotGap::NoSpotlight:
+        return QCoreApplication::translate(
+            "lb::PlotChart", "No spotlight: every light that is on has a cutoff of 180°. Set "
+                             "a cutoff in the Light panel.");
+    case PlotGap::NoLight:
+        return QCoreApplication::translate("lb::PlotChart", "No light is on.");
+    }
+    return {};
+}
+
+QString plotSeriesName(const Plot &plot, const PlotSeries &s)
+{
+    // Short: the legend of a narrow panel has a row for them all. The title names the models.
+    const QString &k = s.key;
+    if (k == QLatin1String("phong"))
+        return QStringLiteral("(R·V)^") + number(plot.shininess);
+    if (k == QLatin1String("blinn"))
+        return QStringLiteral("(N·H)^") + number(plot.shininess);
+    if (k == QLatin1String("blinn_4n"))
+        return QStringLiteral("(N·H)^") + number(4.0f * plot.shininess);
+    if (k == QLatin1String("ambient"))
+        return QCoreApplication::translate("lb::PlotChart", "Ambient");
+    if (k == QLatin1String("diffuse"))
+        return plot.kind == PlotKind::Lobe ? QCoreApplication::translate("lb::PlotChart", "Diffuse")
+                                           : QStringLiteral("max(N·L, 0)");
+    if (k == QLatin1String("specular"))
+        return QCoreApplication::translate("lb::PlotChart", "Specular");
+    if (s.role == PlotRole::Light)
+        return QCoreApplication::translate("lb::PlotChart", "Light %1").arg(s.light + 1);
+    return k; // L, R, V
+}
+
+QChart *makePlotChart(const Plot &plot, const QFont &font)
+{
+    QChart *chart = plot.polar ? new QPolarChart : new QChart;
+    chart->setAnimationOptions(QChart::NoAnimation);
+    chart->setBackgroundBrush(kBackground);
+    chart->setPlotAreaBackgroundVisible(false);
+    chart->setBackgroundRoundness(0);
+    chart->setMargins(QMargins(4, 4, 4, 4));
+    QFont title = font;
+    title.setBold(true);
+    chart->setTitleFont(title);
+    chart->setTitleBrush(kText);
+    chart->setTitle(plotTitle(plot.kind));
+    chart->legend()->setFont(font);
+    chart->legend()->setLabelColor(kText);
+    chart->legend()->setAlignment(Qt::AlignBottom);
+    if (plot.polar)
+        addPolar(static_cast<QPolarChart *>(chart), plot, font);
+    else
+        addCartesian(chart, plot, font);
+    return chart;
+}
+
+QString writePlotImage(const Plot &plot, QSize size, const QString &path, const QFont &font)
+{
+    QGraphicsScene scene;
+    QChart *chart = makePlotChart(plot, font);
+    scene.addItem(chart); // the scene owns it
+    chart->resize(size);
+    scene.setSceneRect(QRectF(QPointF(0, 0), size));
+    const QRectF area(QPointF(0, 0), size);
+    if (path.endsWith(QLatin1String(".svg"), Qt::CaseInsensitive)) {
+        QBuffer svg;
+        svg.open(QIODevice::WriteOnly);
+        QSvgGenerator generator;
+        generator.setOutputDevice(&svg);
+        generator.setSize(size);
+        generator.setViewBox(area);
+        generator.setTitle(QStringLiteral("lightbench --plot %1").arg(plotKindName(plot.kind)));
+        QPainter painter(&generator);
+        scene.render(&painter, area, area);
+        painter.end();
+        return writeFileSafely(path, svg.data());
+    }
+    QImage image(size, QImage::Format_RGB32);
+    image.fill(kBackground);
+    QPainter painter(&image);
+    painter.setRenderHint(QPainter::Antialiasing);
+    painter.setRenderHint(QPainter::TextAntialiasing);
+    scene.render(&painter, area, area);
+    painter.end();
+    return writeImageSafely(path, image);
+}
+
+} // namespace lb

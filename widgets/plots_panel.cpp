@@ -1,0 +1,170 @@
+#include "plots_panel.h"
+
+#include "plot_chart.h"
+#include "probe_panel.h"
+#include "safe_write.h"
+
+#include <QComboBox>
+#include <QEvent>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QSettings>
+#include <QTimer>
+#include <QVBoxLayout>
+#include <QtCharts/QChart>
+#include <QtCharts/QChartView>
+
+namespace lb {
+
+namespace {
+
+const char *const kKindKey = "plots/kind";
+const char *const kDirKey = "plots/exportDir";
+
+// The size an export has: a slide's 4:3 at 1200 pixels across, whatever the panel's size.
+const QSize kExportSize(1200, 900);
+
+} // namespace
+
+PlotsPanel::PlotsPanel(SceneDocument *document, ProbePanel *probe, QWidget *parent)
+    : QWidget(parent), m_document(document), m_probe(probe)
+{
+    m_kind = new QComboBox;
+    m_kind->addItem(tr("Specular: Phong and Blinn-Phong"), int(PlotKind::Specular));
+    m_kind->addItem(tr("Diffuse: max(N·L, 0)"), int(PlotKind::Diffuse));
+    m_kind->addItem(tr("Attenuation with distance"), int(PlotKind::Attenuation));
+    m_kind->addItem(tr("Spotlight falloff"), int(PlotKind::Spot));
+    m_kind->addItem(tr("Lobe at the probed point"), int(PlotKind::Lobe));
+    m_kind->setToolTip(tr("Which of the model's curves to draw"));
+    m_export = new QPushButton(tr("Export…"));
+    m_export->setToolTip(tr("Write this plot as a PNG or SVG picture, or its samples as CSV"));
+    auto *row = new QHBoxLayout;
+    row->addWidget(m_kind, 1);
+    row->addWidget(m_export);
+
+    m_view = new QChartView;
+    m_view->setRenderHint(QPainter::Antialiasing);
+    m_view->setMinimumHeight(fontMetrics().height() * 16);
+    m_view->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Expanding);
+    m_note = new QLabel;
+    m_note->setWordWrap(true);
+    m_note->setTextFormat(Qt::PlainText);
+
+    auto *layout = new QVBoxLayout(this);
+    layout->addLayout(row);
+    layout->addWidget(m_view, 1);
+    layout->addWidget(m_note);
+
+    connect(m_kind, &QComboBox::currentIndexChanged, this, [this] {
+        m_plot.kind = PlotKind(m_kind->currentData().toInt());
+        m_stale = true;
+        schedule();
+    });
+    connect(m_export, &QPushButton::clicked, this, &PlotsPanel::exportPlot);
+    connect(document, &SceneDocument::changed, this, [this] {
+        m_stale = true;
+        schedule();
+    });
+    connect(probe, &ProbePanel::resultChanged, this, [this] {
+        m_stale = true;
+        schedule();
+    });
+}
+
+void PlotsPanel::setKind(PlotKind kind)
+{
+    m_kind->setCurrentIndex(m_kind->findData(int(kind)));
+}
+
+void PlotsPanel::schedule()
+{
+    if (m_scheduled || !isVisible())
+        return; // a hidden panel catches up when shown
+    m_scheduled = true;
+    QTimer::singleShot(0, this, [this] {
+        m_scheduled = false;
+        if (isVisible())
+            rebuild();
+    });
+}
+
+void PlotsPanel::showEvent(QShowEvent *event)
+{
+    QWidget::showEvent(event);
+    if (m_stale)
+        schedule();
+}
+
+void PlotsPanel::changeEvent(QEvent *event)
+{
+    QWidget::changeEvent(event);
+    if (event->type() == QEvent::FontChange) { // the UI scale: texts and lines follow
+        m_stale = true;
+        schedule();
+    }
+}
+
+void PlotsPanel::rebuild()
+{
+    m_stale = false;
+    const ProbeResult *probed = m_probe->isActive() ? &m_probe->result() : nullptr;
+    m_plot = computePlot(PlotKind(m_kind->currentData().toInt()), m_document->scene(), probed);
+    QChart *old = m_view->chart();
+    m_view->setChart(makePlotChart(m_plot, font()));
+    delete old; // setChart() hands the old one back instead of deleting it
+    QString note = plotGapText(m_plot.gap);
+    if (note.isEmpty() && m_plot.kind == PlotKind::Lobe && !m_plot.probed)
+        note = tr("No point probed: the lobe where N faces the camera at the selected object's "
+                  "centre. Ctrl+click the surface to plot it at a point.");
+    else if (note.isEmpty() && !m_plot.probed)
+        note = tr("Ctrl+click the surface: the probed point's own values appear as dots.");
+    else if (note.isEmpty() && m_plot.kind == PlotKind::Specular)
+        note = tr("Dots: each light's angle at the probed point (for Blinn-Phong, 2·acos(N·H)).");
+    m_note->setText(note);
+}
+
+QString PlotsPanel::exportTo(const QString &path) const
+{
+    if (path.endsWith(QLatin1String(".csv"), Qt::CaseInsensitive))
+        return writeFileSafely(path, plotCsv(m_plot));
+    return writePlotImage(m_plot, kExportSize, path, font());
+}
+
+void PlotsPanel::exportPlot()
+{
+    if (m_stale)
+        rebuild();
+    QSettings settings;
+    const QString png = tr("PNG images (*.png)"), svg = tr("SVG pictures (*.svg)"),
+                  csv = tr("CSV samples (*.csv)");
+    QString filter = png;
+    const QString start = settings.value(kDirKey).toString() + '/' + plotKindName(m_plot.kind);
+    QString path = QFileDialog::getSaveFileName(this, tr("Export the plot"), start,
+                                                png + ";;" + svg + ";;" + csv, &filter);
+    if (path.isEmpty())
+        return;
+    if (QFileInfo(path).suffix().isEmpty())
+        path += filter == svg ? ".svg" : filter == csv ? ".csv" : ".png";
+    settings.setValue(kDirKey, QFileInfo(path).absolutePath());
+    if (const QString error = exportTo(path); !error.isEmpty())
+        QMessageBox::warning(
+            this, tr("Export the plot"),
+            tr("The plot could not be written; nothing was changed.\n%1").arg(error));
+}
+
+void PlotsPanel::saveState(QSettings &settings) const
+{
+    settings.setValue(kKindKey, plotKindName(kind()));
+}
+
+void PlotsPanel::restoreState(const QSettings &settings)
+{
+    if (const auto kind = plotKindFromName(settings.value(kKindKey).toString()))
+        setKind(*kind);
+}
+
+} // namespace lb
