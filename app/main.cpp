@@ -73,7 +73,11 @@ int main(int argc, char **argv)
     }
     const lb::CommandLine &cl = *parsed.commandLine;
     lb::quietStandardErrorForGrade(cl);
-    if (!haveDisplay()) {
+    // A plot without a probed point draws no frame: no OpenGL, so no X server either.
+    const bool plotOnly = cl.plot && !cl.probe;
+    if (plotOnly && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
+        qputenv("QT_QPA_PLATFORM", "offscreen");
+    if (!plotOnly && !haveDisplay()) {
         if (cl.grade)
             return lb::failGrade(cl,
                                  "no display; OpenGL needs an X server (try xvfb-run -a -s "
@@ -125,7 +129,7 @@ int main(int argc, char **argv)
                 !cl.check)
                 return 0;
         }
-        if (cl.plot && !cl.probe) // the curves alone: no mesh, no OpenGL
+        if (plotOnly) // the curves alone: no mesh, no OpenGL
             return lb::writePlotOutputs(cl, scene, nullptr);
         try {
             return lb::runHeadless(cl, scene);

@@ -18,12 +18,14 @@
 #include <QDockWidget>
 #include <QLayout>
 #include <QMenu>
+#include <QMenuBar>
 #include <QSettings>
 #include <QStatusBar>
 #include <QStyle>
 #include <QTabBar>
 #include <QTimer>
 
+#include <algorithm>
 #include <cmath>
 
 namespace lb {
@@ -124,15 +126,36 @@ void MainWindow::setPresentationPanels(bool shown)
 
 QFont MainWindow::presentationTabFont() const
 {
-    QFont font = QApplication::font();
+    const QFont font = QApplication::font();
     const double scale = uiScale();
-    if (scale > 1.4) {
+    const auto scaled = [&](double share) { // `share` of the 100% font
+        QFont f = font;
         if (font.pointSizeF() > 0)
-            font.setPointSizeF(font.pointSizeF() * 1.4 / scale);
+            f.setPointSizeF(font.pointSizeF() * share / scale);
         else
-            font.setPixelSize(int(std::lround(font.pixelSize() * 1.4 / scale)));
+            f.setPixelSize(int(std::lround(font.pixelSize() * share / scale)));
+        return f;
+    };
+    // 140% of the 100% font where the UI is larger; less where the column of names would not
+    // fit the window's height (nine names at 140% are taller than 720 lines), down to 100%.
+    double share = std::min(scale, 1.4);
+    if (share > 1.0) {
+        QStringList names{m_editorDock->windowTitle()};
+        for (QDockWidget *dock : m_panelDocks)
+            if (dock != m_exerciseDock || m_sceneActions->exercise().has_value())
+                names << dock->windowTitle();
+        const auto column = [&](double at) {
+            const QFontMetrics metrics(scaled(at));
+            int length = 0;
+            for (const QString &name : names) // a tab's padding: about 1.25 lines (Fusion)
+                length += metrics.horizontalAdvance(name) + metrics.height() * 5 / 4;
+            return length;
+        };
+        const int room = height() - menuBar()->height() - statusBar()->height() - 16;
+        while (share > 1.0 && column(share) > room)
+            share = std::max(1.0, share - 0.05);
     }
-    return font;
+    return scaled(share);
 }
 
 int MainWindow::presentationTabsWidth() const
@@ -143,8 +166,8 @@ int MainWindow::presentationTabsWidth() const
 void MainWindow::styleDockTabs()
 {
     // Names whole, scrolled when short. In presentation mode the column of tabs down the edge
-    // is written at 140% of the 100% font (not 200%): the eight names then fit 720 lines; they
-    // are the teacher's to click, the view is the class's to read.
+    // is written at 140% of the 100% font (not 200%), less where the names would not fit the
+    // height (presentationTabFont); they are the teacher's to click, the view the class's.
     const QFont font = m_presentation ? presentationTabFont() : QApplication::font();
     for (QTabBar *bar : findChildren<QTabBar *>(Qt::FindDirectChildrenOnly)) {
         bar->setElideMode(Qt::ElideNone);

@@ -40,6 +40,9 @@ PlotsPanel::PlotsPanel(SceneDocument *document, ProbePanel *probe, QWidget *pare
     m_kind->addItem(tr("Spotlight falloff"), int(PlotKind::Spot));
     m_kind->addItem(tr("Lobe at the probed point"), int(PlotKind::Lobe));
     m_kind->setToolTip(tr("Which of the model's curves to draw"));
+    // Its longest name need not widen the panels' column (1024 pixels share it with the view).
+    m_kind->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_kind->setMinimumContentsLength(10);
     m_export = new QPushButton(tr("Export…"));
     m_export->setToolTip(tr("Write this plot as a PNG or SVG picture, or its samples as CSV"));
     auto *row = new QHBoxLayout;
@@ -48,7 +51,7 @@ PlotsPanel::PlotsPanel(SceneDocument *document, ProbePanel *probe, QWidget *pare
 
     m_view = new QChartView;
     m_view->setRenderHint(QPainter::Antialiasing);
-    m_view->setMinimumHeight(fontMetrics().height() * 16);
+    m_view->setMinimumSize(fontMetrics().height() * 12, fontMetrics().height() * 16);
     m_view->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Expanding);
     m_note = new QLabel;
     m_note->setWordWrap(true);
@@ -60,7 +63,6 @@ PlotsPanel::PlotsPanel(SceneDocument *document, ProbePanel *probe, QWidget *pare
     layout->addWidget(m_note);
 
     connect(m_kind, &QComboBox::currentIndexChanged, this, [this] {
-        m_plot.kind = PlotKind(m_kind->currentData().toInt());
         m_stale = true;
         schedule();
     });
@@ -73,6 +75,11 @@ PlotsPanel::PlotsPanel(SceneDocument *document, ProbePanel *probe, QWidget *pare
         m_stale = true;
         schedule();
     });
+}
+
+PlotKind PlotsPanel::kind() const
+{
+    return PlotKind(m_kind->currentData().toInt());
 }
 
 void PlotsPanel::setKind(PlotKind kind)
@@ -112,7 +119,7 @@ void PlotsPanel::rebuild()
 {
     m_stale = false;
     const ProbeResult *probed = m_probe->isActive() ? &m_probe->result() : nullptr;
-    m_plot = computePlot(PlotKind(m_kind->currentData().toInt()), m_document->scene(), probed);
+    m_plot = computePlot(kind(), m_document->scene(), probed);
     QChart *old = m_view->chart();
     m_view->setChart(makePlotChart(m_plot, font()));
     delete old; // setChart() hands the old one back instead of deleting it

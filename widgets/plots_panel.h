@@ -26,7 +26,7 @@ class PlotsPanel : public QWidget
 public:
     PlotsPanel(SceneDocument *document, ProbePanel *probe, QWidget *parent = nullptr);
 
-    PlotKind kind() const { return m_plot.kind; }
+    PlotKind kind() const; // the one chosen (drawn once the event loop has run)
     void setKind(PlotKind kind);
     // What is drawn now (or was last, while the panel is hidden).
     const Plot &plot() const { return m_plot; }

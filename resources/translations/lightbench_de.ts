@@ -1384,7 +1384,7 @@
     </message>
     <message>
         <location line="+14"/>
-        <location filename="../../app/main.cpp" line="+230"/>
+        <location filename="../../app/main.cpp" line="+239"/>
         <source>Language</source>
         <translation>Sprache</translation>
     </message>
@@ -2096,7 +2096,7 @@
 <context>
     <name>lb::MainWindow</name>
     <message>
-        <location filename="../../app/main_window.cpp" line="+82"/>
+        <location filename="../../app/main_window.cpp" line="+83"/>
         <source>Light</source>
         <translation>Licht</translation>
     </message>
@@ -2124,6 +2124,11 @@
         <location line="+1"/>
         <source>Probe</source>
         <translation>Sonde</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Plots</source>
+        <translation>Diagramme</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -3297,6 +3302,190 @@
     </message>
 </context>
 <context>
+    <name>lb::PlotChart</name>
+    <message>
+        <location filename="../../widgets/plot_chart.cpp" line="+135"/>
+        <source>Angle between R and V (°)</source>
+        <translation>Winkel zwischen R und V (°)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Angle between N and L (°)</source>
+        <translation>Winkel zwischen N und L (°)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Distance d from the light</source>
+        <translation>Abstand d vom Licht</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Angle from the spot&apos;s axis (°)</source>
+        <translation>Winkel zur Achse des Spots (°)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Specular factor</source>
+        <translation>Faktor des spiegelnden Anteils</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Spot factor</source>
+        <translation>Spotfaktor</translation>
+    </message>
+    <message>
+        <location line="+58"/>
+        <source>Surface</source>
+        <translation>Oberfläche</translation>
+    </message>
+    <message>
+        <location line="+36"/>
+        <source>Specular: Phong (R·V)^n, Blinn-Phong (N·H)^n and at 4n</source>
+        <translation>Spiegelnd: Phong (R·V)^n, Blinn-Phong (N·H)^n und mit 4n</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Diffuse factor against the angle of incidence</source>
+        <translation>Diffuser Faktor über dem Einfallswinkel</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Attenuation against the distance</source>
+        <translation>Abschwächung über dem Abstand</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Spotlight factor against the angle from its axis</source>
+        <translation>Spotfaktor über dem Winkel zur Achse</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The three terms as V sweeps the plane of incidence (N up)&lt;br&gt;&lt;small&gt;Radius: the mean of the term&apos;s red, green and blue&lt;/small&gt;</source>
+        <translation>Die drei Terme, während V die Einfallsebene überstreicht (N oben)&lt;br&gt;&lt;small&gt;Radius: der Mittelwert aus Rot, Grün und Blau des Terms&lt;/small&gt;</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>No point light is on: a directional light (w = 0) is not attenuated.</source>
+        <translation>Kein Punktlicht ist an: ein gerichtetes Licht (w = 0) wird nicht abgeschwächt.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>No spotlight: every light that is on has a cutoff of 180°. Set a cutoff in the Light panel.</source>
+        <translation>Kein Spotlicht: jedes eingeschaltete Licht hat einen Öffnungswinkel von 180°. Stellen Sie im Bereich „Licht“ einen kleineren ein.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>No light is on.</source>
+        <translation>Kein Licht ist an.</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Ambient</source>
+        <translation>Ambient</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Diffuse</source>
+        <translation>Diffus</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Specular</source>
+        <translation>Spiegelnd</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Light %1</source>
+        <translation>Licht %1</translation>
+    </message>
+</context>
+<context>
+    <name>lb::PlotsPanel</name>
+    <message>
+        <location filename="../../widgets/plots_panel.cpp" line="+37"/>
+        <source>Specular: Phong and Blinn-Phong</source>
+        <translation>Spiegelnd: Phong und Blinn-Phong</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Diffuse: max(N·L, 0)</source>
+        <translation>Diffus: max(N·L, 0)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Attenuation with distance</source>
+        <translation>Abschwächung mit dem Abstand</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Spotlight falloff</source>
+        <translation>Abfall des Spotlichts</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Lobe at the probed point</source>
+        <translation>Keule am gemessenen Punkt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Which of the model&apos;s curves to draw</source>
+        <translation>Welche Kurve des Modells gezeichnet wird</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Export…</source>
+        <translation>Exportieren…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Write this plot as a PNG or SVG picture, or its samples as CSV</source>
+        <translation>Dieses Diagramm als PNG- oder SVG-Bild oder seine Stützstellen als CSV schreiben</translation>
+    </message>
+    <message>
+        <location line="+81"/>
+        <source>No point probed: the lobe where N faces the camera at the selected object&apos;s centre. Ctrl+click the surface to plot it at a point.</source>
+        <translation>Kein Punkt gemessen: die Keule dort, wo N in der Mitte des ausgewählten Objekts zur Kamera zeigt. Strg+Klick auf die Oberfläche zeichnet sie an einem Punkt.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Ctrl+click the surface: the probed point&apos;s own values appear as dots.</source>
+        <translation>Strg+Klick auf die Oberfläche: die Werte des gemessenen Punkts erscheinen als Punkte.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Dots: each light&apos;s angle at the probed point (for Blinn-Phong, 2·acos(N·H)).</source>
+        <translation>Punkte: der Winkel jedes Lichts am gemessenen Punkt (bei Blinn-Phong 2·acos(N·H)).</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>PNG images (*.png)</source>
+        <translation>PNG-Bilder (*.png)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>SVG pictures (*.svg)</source>
+        <translation>SVG-Bilder (*.svg)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CSV samples (*.csv)</source>
+        <translation>CSV-Stützstellen (*.csv)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <location line="+9"/>
+        <source>Export the plot</source>
+        <translation>Diagramm exportieren</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The plot could not be written; nothing was changed.
+%1</source>
+        <translation>Das Diagramm konnte nicht geschrieben werden; nichts wurde geändert.
+%1</translation>
+    </message>
+</context>
+<context>
     <name>lb::PreferencesDialog</name>
     <message>
         <location filename="../../widgets/preferences_dialog.cpp" line="+15"/>
@@ -3447,7 +3636,7 @@
 <context>
     <name>lb::ProbePanel</name>
     <message>
-        <location filename="../../widgets/probe_panel.cpp" line="+62"/>
+        <location filename="../../widgets/probe_panel.cpp" line="+63"/>
         <source>Copy the Equation</source>
         <translation>Gleichung kopieren</translation>
     </message>
@@ -3462,12 +3651,12 @@
         <translation>Strg+Klick (oder Umschalt+Klick) auf die Oberfläche misst einen Punkt mit der Sonde: die Vektoren, N·L, den Winkel des spiegelnden Anteils und die drei Anteile, neben dem Pixel, das die GPU gezeichnet hat. Esc entfernt ihn.</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+38"/>
         <source>No surface at (%1, %2).</source>
         <translation>Keine Oberfläche bei (%1, %2).</translation>
     </message>
     <message>
-        <location line="+70"/>
+        <location line="+69"/>
         <source>pixel (%1, %2), %3, triangle %4</source>
         <extracomment>%1, %2 the pixel; %3 the object&apos;s name; %4 the triangle&apos;s number</extracomment>
         <translation>Pixel (%1, %2), %3, Dreieck %4</translation>

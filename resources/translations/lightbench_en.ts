@@ -1378,7 +1378,7 @@
     </message>
     <message>
         <location line="+14"/>
-        <location filename="../../app/main.cpp" line="+230"/>
+        <location filename="../../app/main.cpp" line="+239"/>
         <source>Language</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2090,7 +2090,7 @@
 <context>
     <name>lb::MainWindow</name>
     <message>
-        <location filename="../../app/main_window.cpp" line="+82"/>
+        <location filename="../../app/main_window.cpp" line="+83"/>
         <source>Light</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2117,6 +2117,11 @@
     <message>
         <location line="+1"/>
         <source>Probe</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Plots</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -3290,6 +3295,189 @@
     </message>
 </context>
 <context>
+    <name>lb::PlotChart</name>
+    <message>
+        <location filename="../../widgets/plot_chart.cpp" line="+135"/>
+        <source>Angle between R and V (°)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Angle between N and L (°)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Distance d from the light</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Angle from the spot&apos;s axis (°)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Specular factor</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Spot factor</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+58"/>
+        <source>Surface</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+36"/>
+        <source>Specular: Phong (R·V)^n, Blinn-Phong (N·H)^n and at 4n</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Diffuse factor against the angle of incidence</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Attenuation against the distance</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Spotlight factor against the angle from its axis</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The three terms as V sweeps the plane of incidence (N up)&lt;br&gt;&lt;small&gt;Radius: the mean of the term&apos;s red, green and blue&lt;/small&gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>No point light is on: a directional light (w = 0) is not attenuated.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>No spotlight: every light that is on has a cutoff of 180°. Set a cutoff in the Light panel.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>No light is on.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Ambient</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Diffuse</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Specular</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Light %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>lb::PlotsPanel</name>
+    <message>
+        <location filename="../../widgets/plots_panel.cpp" line="+37"/>
+        <source>Specular: Phong and Blinn-Phong</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Diffuse: max(N·L, 0)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Attenuation with distance</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Spotlight falloff</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Lobe at the probed point</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Which of the model&apos;s curves to draw</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Export…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Write this plot as a PNG or SVG picture, or its samples as CSV</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+81"/>
+        <source>No point probed: the lobe where N faces the camera at the selected object&apos;s centre. Ctrl+click the surface to plot it at a point.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Ctrl+click the surface: the probed point&apos;s own values appear as dots.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Dots: each light&apos;s angle at the probed point (for Blinn-Phong, 2·acos(N·H)).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>PNG images (*.png)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>SVG pictures (*.svg)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CSV samples (*.csv)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <location line="+9"/>
+        <source>Export the plot</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The plot could not be written; nothing was changed.
+%1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>lb::PreferencesDialog</name>
     <message>
         <location filename="../../widgets/preferences_dialog.cpp" line="+15"/>
@@ -3440,7 +3628,7 @@
 <context>
     <name>lb::ProbePanel</name>
     <message>
-        <location filename="../../widgets/probe_panel.cpp" line="+62"/>
+        <location filename="../../widgets/probe_panel.cpp" line="+63"/>
         <source>Copy the Equation</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3455,12 +3643,12 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+38"/>
         <source>No surface at (%1, %2).</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+70"/>
+        <location line="+69"/>
         <source>pixel (%1, %2), %3, triangle %4</source>
         <extracomment>%1, %2 the pixel; %3 the object&apos;s name; %4 the triangle&apos;s number</extracomment>
         <translation type="unfinished"></translation>

@@ -1384,7 +1384,7 @@
     </message>
     <message>
         <location line="+14"/>
-        <location filename="../../app/main.cpp" line="+230"/>
+        <location filename="../../app/main.cpp" line="+239"/>
         <source>Language</source>
         <translation>Idioma</translation>
     </message>
@@ -2096,7 +2096,7 @@
 <context>
     <name>lb::MainWindow</name>
     <message>
-        <location filename="../../app/main_window.cpp" line="+82"/>
+        <location filename="../../app/main_window.cpp" line="+83"/>
         <source>Light</source>
         <translation>Luz</translation>
     </message>
@@ -2124,6 +2124,11 @@
         <location line="+1"/>
         <source>Probe</source>
         <translation>Sonda</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Plots</source>
+        <translation>Gráficos</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -3297,6 +3302,190 @@
     </message>
 </context>
 <context>
+    <name>lb::PlotChart</name>
+    <message>
+        <location filename="../../widgets/plot_chart.cpp" line="+135"/>
+        <source>Angle between R and V (°)</source>
+        <translation>Ângulo entre R e V (°)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Angle between N and L (°)</source>
+        <translation>Ângulo entre N e L (°)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Distance d from the light</source>
+        <translation>Distância d à luz</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Angle from the spot&apos;s axis (°)</source>
+        <translation>Ângulo ao eixo do foco (°)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Specular factor</source>
+        <translation>Fator especular</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Spot factor</source>
+        <translation>Fator do foco</translation>
+    </message>
+    <message>
+        <location line="+58"/>
+        <source>Surface</source>
+        <translation>Superfície</translation>
+    </message>
+    <message>
+        <location line="+36"/>
+        <source>Specular: Phong (R·V)^n, Blinn-Phong (N·H)^n and at 4n</source>
+        <translation>Especular: Phong (R·V)^n, Blinn-Phong (N·H)^n e com 4n</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Diffuse factor against the angle of incidence</source>
+        <translation>Fator difuso em função do ângulo de incidência</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Attenuation against the distance</source>
+        <translation>Atenuação em função da distância</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Spotlight factor against the angle from its axis</source>
+        <translation>Fator do foco em função do ângulo ao eixo</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The three terms as V sweeps the plane of incidence (N up)&lt;br&gt;&lt;small&gt;Radius: the mean of the term&apos;s red, green and blue&lt;/small&gt;</source>
+        <translation>Os três termos enquanto V percorre o plano de incidência (N para cima)&lt;br&gt;&lt;small&gt;Raio: a média do vermelho, verde e azul do termo&lt;/small&gt;</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>No point light is on: a directional light (w = 0) is not attenuated.</source>
+        <translation>Nenhuma luz pontual está ligada: uma luz direcional (w = 0) não é atenuada.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>No spotlight: every light that is on has a cutoff of 180°. Set a cutoff in the Light panel.</source>
+        <translation>Nenhum foco: todas as luzes ligadas têm um ângulo de corte de 180°. Defina um ângulo de corte no painel Luz.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>No light is on.</source>
+        <translation>Nenhuma luz está ligada.</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Ambient</source>
+        <translation>Ambiente</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Diffuse</source>
+        <translation>Difusa</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Specular</source>
+        <translation>Especular</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Light %1</source>
+        <translation>Luz %1</translation>
+    </message>
+</context>
+<context>
+    <name>lb::PlotsPanel</name>
+    <message>
+        <location filename="../../widgets/plots_panel.cpp" line="+37"/>
+        <source>Specular: Phong and Blinn-Phong</source>
+        <translation>Especular: Phong e Blinn-Phong</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Diffuse: max(N·L, 0)</source>
+        <translation>Difusa: max(N·L, 0)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Attenuation with distance</source>
+        <translation>Atenuação com a distância</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Spotlight falloff</source>
+        <translation>Decaimento do foco</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Lobe at the probed point</source>
+        <translation>Lóbulo no ponto sondado</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Which of the model&apos;s curves to draw</source>
+        <translation>Que curva do modelo desenhar</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Export…</source>
+        <translation>Exportar…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Write this plot as a PNG or SVG picture, or its samples as CSV</source>
+        <translation>Gravar este gráfico como imagem PNG ou SVG, ou as suas amostras como CSV</translation>
+    </message>
+    <message>
+        <location line="+81"/>
+        <source>No point probed: the lobe where N faces the camera at the selected object&apos;s centre. Ctrl+click the surface to plot it at a point.</source>
+        <translation>Nenhum ponto sondado: o lóbulo onde N aponta para a câmara no centro do objeto selecionado. Ctrl+clique na superfície para o desenhar num ponto.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Ctrl+click the surface: the probed point&apos;s own values appear as dots.</source>
+        <translation>Ctrl+clique na superfície: os valores do ponto sondado aparecem como pontos.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Dots: each light&apos;s angle at the probed point (for Blinn-Phong, 2·acos(N·H)).</source>
+        <translation>Pontos: o ângulo de cada luz no ponto sondado (em Blinn-Phong, 2·acos(N·H)).</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>PNG images (*.png)</source>
+        <translation>Imagens PNG (*.png)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>SVG pictures (*.svg)</source>
+        <translation>Imagens SVG (*.svg)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CSV samples (*.csv)</source>
+        <translation>Amostras CSV (*.csv)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <location line="+9"/>
+        <source>Export the plot</source>
+        <translation>Exportar o gráfico</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The plot could not be written; nothing was changed.
+%1</source>
+        <translation>Não foi possível gravar o gráfico; nada foi alterado.
+%1</translation>
+    </message>
+</context>
+<context>
     <name>lb::PreferencesDialog</name>
     <message>
         <location filename="../../widgets/preferences_dialog.cpp" line="+15"/>
@@ -3447,7 +3636,7 @@
 <context>
     <name>lb::ProbePanel</name>
     <message>
-        <location filename="../../widgets/probe_panel.cpp" line="+62"/>
+        <location filename="../../widgets/probe_panel.cpp" line="+63"/>
         <source>Copy the Equation</source>
         <translation>Copiar a Equação</translation>
     </message>
@@ -3462,12 +3651,12 @@
         <translation>Ctrl+clique (ou Shift+clique) na superfície para sondar um ponto: os vetores, N·L, o ângulo especular e os três termos, ao lado do píxel que a GPU desenhou. Esc limpa-o.</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+38"/>
         <source>No surface at (%1, %2).</source>
         <translation>Nenhuma superfície em (%1, %2).</translation>
     </message>
     <message>
-        <location line="+70"/>
+        <location line="+69"/>
         <source>pixel (%1, %2), %3, triangle %4</source>
         <extracomment>%1, %2 the pixel; %3 the object&apos;s name; %4 the triangle&apos;s number</extracomment>
         <translation>píxel (%1, %2), %3, triângulo %4</translation>

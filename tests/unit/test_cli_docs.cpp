@@ -114,7 +114,8 @@ private slots:
             const QStringList with =
                 o.longName() == "report-format"
                     ? QStringList{"--grade", "s.vert", "--exercise", "e.json", "--report", "-"}
-                    : QStringList{};
+                : o.longName() == "plot" ? QStringList{"--plot-data", "plot.csv"}
+                                         : QStringList{};
             for (const QString &word : o.words) {
                 const CommandLineResult r =
                     parseCommandLine(QStringList{"lightbench", "--" + o.longName(), word} + with);
