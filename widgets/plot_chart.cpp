@@ -230,22 +230,25 @@ void addPolar(QPolarChart *chart, const Plot &plot, const QFont &font)
 
 QString plotTitle(PlotKind kind)
 {
+    // A short first line (a narrow panel elides the rest) and the details under it.
     switch (kind) {
     case PlotKind::Specular:
         return QCoreApplication::translate(
-            "lb::PlotChart", "Specular: Phong (R·V)^n, Blinn-Phong (N·H)^n and at 4n");
+            "lb::PlotChart", "Specular factor<br><small>Phong (R·V)^n, Blinn-Phong (N·H)^n; "
+                             "dashed: Blinn-Phong at 4n</small>");
     case PlotKind::Diffuse:
-        return QCoreApplication::translate("lb::PlotChart",
-                                           "Diffuse factor against the angle of incidence");
+        return QCoreApplication::translate(
+            "lb::PlotChart", "Diffuse factor<br><small>against the angle of incidence</small>");
     case PlotKind::Attenuation:
-        return QCoreApplication::translate("lb::PlotChart", "Attenuation against the distance");
+        return QCoreApplication::translate(
+            "lb::PlotChart", "Attenuation<br><small>against the distance from the light</small>");
     case PlotKind::Spot:
-        return QCoreApplication::translate("lb::PlotChart",
-                                           "Spotlight factor against the angle from its axis");
+        return QCoreApplication::translate(
+            "lb::PlotChart", "Spotlight factor<br><small>against the angle from its axis</small>");
     case PlotKind::Lobe:
         return QCoreApplication::translate(
-            "lb::PlotChart", "The three terms as V sweeps the plane of incidence (N up)<br>"
-                             "<small>Radius: the mean of the term's red, green and blue</small>");
+            "lb::PlotChart", "The three terms as V sweeps<br><small>the plane of incidence, N "
+                             "up; radius: the mean of red, green and blue</small>");
     }
     return {};
 }

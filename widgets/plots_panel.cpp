@@ -129,6 +129,9 @@ void PlotsPanel::rebuild()
                   "centre. Ctrl+click the surface to plot it at a point.");
     else if (note.isEmpty() && !m_plot.probed)
         note = tr("Ctrl+click the surface: the probed point's own values appear as dots.");
+    else if (note.isEmpty() && m_plot.markers.empty() && m_plot.kind != PlotKind::Attenuation)
+        note = tr("No dot: at the probed point every light is behind the surface (N·L < 0) "
+                  "or outside the plot.");
     else if (note.isEmpty() && m_plot.kind == PlotKind::Specular)
         note = tr("Dots: each light's angle at the probed point (for Blinn-Phong, 2·acos(N·H)).");
     m_note->setText(note);

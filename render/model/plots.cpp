@@ -88,7 +88,9 @@ LightingInputs sweepInputs(const Scene &scene, const PlotSubject &s)
 Plot specularPlot(const Scene &scene, const PlotSubject &s, int samples)
 {
     Plot plot;
-    plot.xMax = 90.0f;
+    // To 180: Blinn-Phong's highlight does not end 90 degrees from R, and a probed point's
+    // 2·acos(N·H) can lie beyond 90.
+    plot.xMax = 180.0f;
     LightingInputs in = sweepInputs(scene, s);
     plot.shininess = in.material.shininess;
     // L = N, so R = N and the angle of V from the mirror direction is its angle from N; in
@@ -124,8 +126,7 @@ Plot specularPlot(const Scene &scene, const PlotSubject &s, int samples)
         if (const ProbeLight *p = probedLight(s, light); p && p->terms.nDotL >= 0.0f) {
             const float x = blinn ? 2.0f * degreesBetween(p->terms.specularAngle)
                                   : degreesBetween(p->terms.specularAngle);
-            if (x <= plot.xMax)
-                plot.markers.push_back({blinn ? 1 : 0, light, {x, p->terms.specularFactor}});
+            plot.markers.push_back({blinn ? 1 : 0, light, {x, p->terms.specularFactor}});
         }
     return plot;
 }
@@ -196,7 +197,17 @@ Plot spotPlot(const Scene &scene, const PlotSubject &s, int samples)
     float widest = 0.0f;
     for (int light : spots)
         widest = std::max(widest, scene.lights[std::size_t(light)].spot.cutoffDegrees);
-    plot.xMax = widest < 80.0f ? 90.0f : 180.0f;
+    // A cone under 80 degrees on 0 to 90, unless a probed point lies further out.
+    const auto probedAngle = [&](int light) -> std::optional<float> {
+        if (const ProbeLight *p = probedLight(s, light))
+            return degreesBetween(
+                glm::dot(-p->terms.L, glm::normalize(p->inputs.spotDirectionEye)));
+        return std::nullopt;
+    };
+    bool beyond = false;
+    for (int light : spots)
+        beyond = beyond || probedAngle(light).value_or(0.0f) > 90.0f;
+    plot.xMax = widest < 80.0f && !beyond ? 90.0f : 180.0f;
     // The axis D = -z; L at `angle` from it, seen from the lit point (towards the light).
     const glm::vec3 axis{0.0f, 0.0f, -1.0f};
     for (int light : spots) {
@@ -210,12 +221,9 @@ Plot spotPlot(const Scene &scene, const PlotSubject &s, int samples)
             series.points.push_back(
                 {angle, spotFactor(-towardsPoint, axis, spotCosCutoff(spot), spot.exponent)});
         }
-        if (const ProbeLight *p = probedLight(s, light)) {
-            const float x =
-                degreesBetween(glm::dot(-p->terms.L, glm::normalize(p->inputs.spotDirectionEye)));
-            if (x <= plot.xMax)
-                plot.markers.push_back({int(plot.series.size()), light, {x, p->terms.spot}});
-        }
+        if (const std::optional<float> x = probedAngle(light))
+            plot.markers.push_back(
+                {int(plot.series.size()), light, {*x, probedLight(s, light)->terms.spot}});
         plot.series.push_back(std::move(series));
     }
     return plot;

@@ -70,7 +70,7 @@ struct Plot
     bool probed = false;
 };
 
-constexpr int kPlotSamples = 181; // one a degree over 0 to 180, one a half degree over 0 to 90
+constexpr int kPlotSamples = 361; // a half degree apart over 0 to 180, a quarter over 0 to 90
 
 // The plot of `kind` for `scene`: the material and lights of the probed object where `probe`
 // hit one (its values marked), else of the selected object. `samples` at least 2.

@@ -1384,7 +1384,7 @@
     </message>
     <message>
         <location line="+14"/>
-        <location filename="../../app/main.cpp" line="+239"/>
+        <location filename="../../app/main.cpp" line="+243"/>
         <source>Language</source>
         <translation>Sprache</translation>
     </message>
@@ -2647,7 +2647,7 @@
         <translation>&amp;Fenster an den Bildschirm anpassen</translation>
     </message>
     <message>
-        <location filename="../../app/main_window_presentation.cpp" line="+40"/>
+        <location filename="../../app/main_window_presentation.cpp" line="+42"/>
         <source>&amp;Presentation Mode</source>
         <translation>&amp;Präsentationsmodus</translation>
     </message>
@@ -3339,29 +3339,29 @@
         <translation>Oberfläche</translation>
     </message>
     <message>
-        <location line="+36"/>
-        <source>Specular: Phong (R·V)^n, Blinn-Phong (N·H)^n and at 4n</source>
-        <translation>Spiegelnd: Phong (R·V)^n, Blinn-Phong (N·H)^n und mit 4n</translation>
+        <location line="+37"/>
+        <source>Specular factor&lt;br&gt;&lt;small&gt;Phong (R·V)^n, Blinn-Phong (N·H)^n; dashed: Blinn-Phong at 4n&lt;/small&gt;</source>
+        <translation>Faktor des spiegelnden Anteils&lt;br&gt;&lt;small&gt;Phong (R·V)^n, Blinn-Phong (N·H)^n; gestrichelt: Blinn-Phong mit 4n&lt;/small&gt;</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Diffuse factor&lt;br&gt;&lt;small&gt;against the angle of incidence&lt;/small&gt;</source>
+        <translation>Diffuser Faktor&lt;br&gt;&lt;small&gt;über dem Einfallswinkel&lt;/small&gt;</translation>
     </message>
     <message>
         <location line="+3"/>
-        <source>Diffuse factor against the angle of incidence</source>
-        <translation>Diffuser Faktor über dem Einfallswinkel</translation>
+        <source>Attenuation&lt;br&gt;&lt;small&gt;against the distance from the light&lt;/small&gt;</source>
+        <translation>Abschwächung&lt;br&gt;&lt;small&gt;über dem Abstand vom Licht&lt;/small&gt;</translation>
     </message>
     <message>
         <location line="+3"/>
-        <source>Attenuation against the distance</source>
-        <translation>Abschwächung über dem Abstand</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Spotlight factor against the angle from its axis</source>
-        <translation>Spotfaktor über dem Winkel zur Achse</translation>
+        <source>Spotlight factor&lt;br&gt;&lt;small&gt;against the angle from its axis&lt;/small&gt;</source>
+        <translation>Spotfaktor&lt;br&gt;&lt;small&gt;über dem Winkel zur Achse&lt;/small&gt;</translation>
     </message>
     <message>
         <location line="+3"/>
-        <source>The three terms as V sweeps the plane of incidence (N up)&lt;br&gt;&lt;small&gt;Radius: the mean of the term&apos;s red, green and blue&lt;/small&gt;</source>
-        <translation>Die drei Terme, während V die Einfallsebene überstreicht (N oben)&lt;br&gt;&lt;small&gt;Radius: der Mittelwert aus Rot, Grün und Blau des Terms&lt;/small&gt;</translation>
+        <source>The three terms as V sweeps&lt;br&gt;&lt;small&gt;the plane of incidence, N up; radius: the mean of red, green and blue&lt;/small&gt;</source>
+        <translation>Die drei Anteile, während V&lt;br&gt;&lt;small&gt;die Einfallsebene überstreicht, N oben; Radius: Mittelwert aus Rot, Grün und Blau&lt;/small&gt;</translation>
     </message>
     <message>
         <location line="+13"/>
@@ -3432,7 +3432,7 @@
         <translation>Welche Kurve des Modells gezeichnet wird</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+4"/>
         <source>Export…</source>
         <translation>Exportieren…</translation>
     </message>
@@ -3453,6 +3453,11 @@
     </message>
     <message>
         <location line="+2"/>
+        <source>No dot: at the probed point every light is behind the surface (N·L &lt; 0) or outside the plot.</source>
+        <translation>Kein Punkt: am gemessenen Punkt liegt jedes Licht hinter der Oberfläche (N·L &lt; 0) oder außerhalb des Diagramms.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>Dots: each light&apos;s angle at the probed point (for Blinn-Phong, 2·acos(N·H)).</source>
         <translation>Punkte: der Winkel jedes Lichts am gemessenen Punkt (bei Blinn-Phong 2·acos(N·H)).</translation>
     </message>

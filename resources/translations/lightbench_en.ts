@@ -1378,7 +1378,7 @@
     </message>
     <message>
         <location line="+14"/>
-        <location filename="../../app/main.cpp" line="+239"/>
+        <location filename="../../app/main.cpp" line="+243"/>
         <source>Language</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2640,7 +2640,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../app/main_window_presentation.cpp" line="+40"/>
+        <location filename="../../app/main_window_presentation.cpp" line="+42"/>
         <source>&amp;Presentation Mode</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3332,28 +3332,28 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+36"/>
-        <source>Specular: Phong (R·V)^n, Blinn-Phong (N·H)^n and at 4n</source>
+        <location line="+37"/>
+        <source>Specular factor&lt;br&gt;&lt;small&gt;Phong (R·V)^n, Blinn-Phong (N·H)^n; dashed: Blinn-Phong at 4n&lt;/small&gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Diffuse factor&lt;br&gt;&lt;small&gt;against the angle of incidence&lt;/small&gt;</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location line="+3"/>
-        <source>Diffuse factor against the angle of incidence</source>
+        <source>Attenuation&lt;br&gt;&lt;small&gt;against the distance from the light&lt;/small&gt;</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location line="+3"/>
-        <source>Attenuation against the distance</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Spotlight factor against the angle from its axis</source>
+        <source>Spotlight factor&lt;br&gt;&lt;small&gt;against the angle from its axis&lt;/small&gt;</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location line="+3"/>
-        <source>The three terms as V sweeps the plane of incidence (N up)&lt;br&gt;&lt;small&gt;Radius: the mean of the term&apos;s red, green and blue&lt;/small&gt;</source>
+        <source>The three terms as V sweeps&lt;br&gt;&lt;small&gt;the plane of incidence, N up; radius: the mean of red, green and blue&lt;/small&gt;</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -3425,7 +3425,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+4"/>
         <source>Export…</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3446,6 +3446,11 @@
     </message>
     <message>
         <location line="+2"/>
+        <source>No dot: at the probed point every light is behind the surface (N·L &lt; 0) or outside the plot.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>Dots: each light&apos;s angle at the probed point (for Blinn-Phong, 2·acos(N·H)).</source>
         <translation type="unfinished"></translation>
     </message>

@@ -1384,7 +1384,7 @@
     </message>
     <message>
         <location line="+14"/>
-        <location filename="../../app/main.cpp" line="+239"/>
+        <location filename="../../app/main.cpp" line="+243"/>
         <source>Language</source>
         <translation>Idioma</translation>
     </message>
@@ -2647,7 +2647,7 @@
         <translation>Ajustar a &amp;Janela ao Ecrã</translation>
     </message>
     <message>
-        <location filename="../../app/main_window_presentation.cpp" line="+40"/>
+        <location filename="../../app/main_window_presentation.cpp" line="+42"/>
         <source>&amp;Presentation Mode</source>
         <translation>Modo de A&amp;presentação</translation>
     </message>
@@ -3339,29 +3339,29 @@
         <translation>Superfície</translation>
     </message>
     <message>
-        <location line="+36"/>
-        <source>Specular: Phong (R·V)^n, Blinn-Phong (N·H)^n and at 4n</source>
-        <translation>Especular: Phong (R·V)^n, Blinn-Phong (N·H)^n e com 4n</translation>
+        <location line="+37"/>
+        <source>Specular factor&lt;br&gt;&lt;small&gt;Phong (R·V)^n, Blinn-Phong (N·H)^n; dashed: Blinn-Phong at 4n&lt;/small&gt;</source>
+        <translation>Fator especular&lt;br&gt;&lt;small&gt;Phong (R·V)^n, Blinn-Phong (N·H)^n; tracejado: Blinn-Phong com 4n&lt;/small&gt;</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Diffuse factor&lt;br&gt;&lt;small&gt;against the angle of incidence&lt;/small&gt;</source>
+        <translation>Fator difuso&lt;br&gt;&lt;small&gt;em função do ângulo de incidência&lt;/small&gt;</translation>
     </message>
     <message>
         <location line="+3"/>
-        <source>Diffuse factor against the angle of incidence</source>
-        <translation>Fator difuso em função do ângulo de incidência</translation>
+        <source>Attenuation&lt;br&gt;&lt;small&gt;against the distance from the light&lt;/small&gt;</source>
+        <translation>Atenuação&lt;br&gt;&lt;small&gt;em função da distância à luz&lt;/small&gt;</translation>
     </message>
     <message>
         <location line="+3"/>
-        <source>Attenuation against the distance</source>
-        <translation>Atenuação em função da distância</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Spotlight factor against the angle from its axis</source>
-        <translation>Fator do foco em função do ângulo ao eixo</translation>
+        <source>Spotlight factor&lt;br&gt;&lt;small&gt;against the angle from its axis&lt;/small&gt;</source>
+        <translation>Fator do foco&lt;br&gt;&lt;small&gt;em função do ângulo ao eixo&lt;/small&gt;</translation>
     </message>
     <message>
         <location line="+3"/>
-        <source>The three terms as V sweeps the plane of incidence (N up)&lt;br&gt;&lt;small&gt;Radius: the mean of the term&apos;s red, green and blue&lt;/small&gt;</source>
-        <translation>Os três termos enquanto V percorre o plano de incidência (N para cima)&lt;br&gt;&lt;small&gt;Raio: a média do vermelho, verde e azul do termo&lt;/small&gt;</translation>
+        <source>The three terms as V sweeps&lt;br&gt;&lt;small&gt;the plane of incidence, N up; radius: the mean of red, green and blue&lt;/small&gt;</source>
+        <translation>Os três termos enquanto V percorre&lt;br&gt;&lt;small&gt;o plano de incidência, N para cima; raio: média do vermelho, verde e azul&lt;/small&gt;</translation>
     </message>
     <message>
         <location line="+13"/>
@@ -3432,7 +3432,7 @@
         <translation>Que curva do modelo desenhar</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+4"/>
         <source>Export…</source>
         <translation>Exportar…</translation>
     </message>
@@ -3453,6 +3453,11 @@
     </message>
     <message>
         <location line="+2"/>
+        <source>No dot: at the probed point every light is behind the surface (N·L &lt; 0) or outside the plot.</source>
+        <translation>Sem ponto: no ponto sondado todas as luzes estão atrás da superfície (N·L &lt; 0) ou fora do gráfico.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>Dots: each light&apos;s angle at the probed point (for Blinn-Phong, 2·acos(N·H)).</source>
         <translation>Pontos: o ângulo de cada luz no ponto sondado (em Blinn-Phong, 2·acos(N·H)).</translation>
     </message>

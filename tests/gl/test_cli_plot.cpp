@@ -95,8 +95,8 @@ private slots:
         QVERIFY2(r.exitCode == 0, r.err.constData());
         Csv csv = readCsv(path("specular.csv"));
         QCOMPARE(csv.header, QList<QByteArray>({"angle_degrees", "phong", "blinn", "blinn_4n"}));
-        QCOMPARE(csv.rows.size(), std::size_t(181));
-        QCOMPARE(csv.rows.back()[0], 90.0);
+        QCOMPARE(csv.rows.size(), std::size_t(361));
+        QCOMPARE(csv.rows.back()[0], 180.0);
         const auto power = [](double n, double scale) {
             return [n, scale](double x) -> std::optional<double> {
                 return std::pow(std::max(std::cos(radians(x * scale)), 0.0), n);
@@ -219,7 +219,7 @@ private slots:
         QVERIFY(run.waitForFinished(kLimitMs));
         QVERIFY2(run.exitCode() == 0, run.readAllStandardError().constData());
         QCOMPARE(QImage(path("nodisplay.png")).size(), QSize(800, 600));
-        QCOMPARE(readCsv(path("nodisplay.csv")).rows.size(), std::size_t(181));
+        QCOMPARE(readCsv(path("nodisplay.csv")).rows.size(), std::size_t(361));
         // --probe draws a frame: that still needs the X server, and says so.
         run.start(LIGHTBENCH_EXE, {"--plot", "lobe", "--probe", "1,1", "--render", path("x.png")});
         QVERIFY(run.waitForFinished(kLimitMs));

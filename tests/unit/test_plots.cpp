@@ -1,5 +1,5 @@
 // The Plots panel's curves (plots.h) against the formulas written out here, independently of
-// lighting.cpp: cos(θ)^n for Phong, cos(θ/2)^n and cos(θ/2)^(4n) for Blinn-Phong, max(cos α, 0),
+// lighting.cpp: max(cos θ, 0)^n for Phong, cos(θ/2)^n and cos(θ/2)^(4n) for Blinn-Phong, max(cos α, 0),
 // 1 / (kc + kl·d + kq·d²), a spotlight's cos(β)^e inside its cone; at n = 1 and n = 1000,
 // spot exponent 0, kq alone. On a probed sphere each mark carries the probe's own value and
 // lies on its curve. The CSV has one row per sample.
@@ -131,14 +131,16 @@ private slots:
         const Plot plot = computePlot(PlotKind::Specular, s);
         QCOMPARE(plot.shininess, shininess);
         QCOMPARE(plot.xMin, 0.0f);
-        QCOMPARE(plot.xMax, 90.0f);
+        QCOMPARE(plot.xMax, 180.0f);
         const double n = shininess;
         // pow() magnifies float's error in the cosine (about 1e-7) by the exponent.
         const double tolerance = 2e-5 + 5e-7 * n;
-        COMPARE_SERIES(compareSeries(
-                           plot, "phong",
-                           [&](double x) { return std::pow(std::cos(radians(x)), n); }, tolerance),
-                       kPlotSamples);
+        COMPARE_SERIES(
+            compareSeries(
+                plot, "phong",
+                [&](double x) { return std::pow(std::max(std::cos(radians(x)), 0.0), n); },
+                tolerance),
+            kPlotSamples);
         COMPARE_SERIES(compareSeries(
                            plot, "blinn",
                            [&](double x) { return std::pow(std::cos(radians(x / 2)), n); },
