@@ -206,8 +206,8 @@ std::vector<OptionInfo> visibleOptions()
               "UI scale of the window (or of presentation mode with --presentation), 100 "
               "to 250; kept."),
         words("language", commandLineLanguages(),
-              "The window's language for this run (View > Language keeps one; the "
-              "command line's own output is English)."),
+              "The window's language for this run, and --plot's picture's (View > Language "
+              "keeps one; the command line's own output is English)."),
         value("bench-frames", "N", "Draw N frames offscreen and print the frame rate as JSON."),
         value("bench-edits", "N",
               "Open the window, time N shader edits to the screen, print JSON, exit."),

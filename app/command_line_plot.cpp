@@ -16,8 +16,10 @@ QString parsePlotOptions(const QCommandLineParser &parser, CommandLine &cl)
     };
     if (given("plot-data") && !given("plot"))
         return bad("plot-data", "goes with --plot KIND");
+    const bool svg = cl.renderPath.endsWith(QLatin1String(".svg"), Qt::CaseInsensitive);
     if (!given("plot"))
-        return {};
+        return svg ? bad("render", "a frame is written as PNG; an SVG goes with --plot KIND")
+                   : QString();
     const QString word = value("plot");
     cl.plot = plotKindFromName(word);
     if (!cl.plot)

@@ -1,7 +1,5 @@
 #include "headless.h"
 
-#include "plot_output.h"
-
 #include "diagnostics.h"
 #include "heap_warmer.h"
 #include "message_text.h"

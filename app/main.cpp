@@ -129,6 +129,8 @@ int main(int argc, char **argv)
                 !cl.check)
                 return 0;
         }
+        if (cl.plot && cl.language) // a slide's words in the language asked for
+            lb::installCatalogue(app, lb::resolvedLanguage(*cl.language));
         if (plotOnly) // the curves alone: no mesh, no OpenGL
             return lb::writePlotOutputs(cl, scene, nullptr);
         try {

@@ -102,6 +102,16 @@ void hideFromLegend(QChart *chart, QAbstractSeries *series)
         m->setVisible(false);
 }
 
+// A dot's colour: its curve's, or where the probed point has several lights' dots, its
+// light's (the colour of that light's L arrow over the surface).
+QColor markerColour(const Plot &plot, const PlotMarker &m)
+{
+    for (const PlotMarker &other : plot.markers)
+        if (other.light != m.light)
+            return colours::toQColor(colours::lightArrow(m.lightDiffuse));
+    return seriesColour(plot.series[std::size_t(m.series)]);
+}
+
 QScatterSeries *markerSeries(const QColor &colour, const QFont &font)
 {
     auto *dots = new QScatterSeries;
@@ -153,8 +163,7 @@ void addCartesian(QChart *chart, const Plot &plot, const QFont &font)
         line->setPen(seriesPen(s, font));
     }
     for (const PlotMarker &m : plot.markers) {
-        const PlotSeries &s = plot.series[std::size_t(m.series)];
-        QScatterSeries *dot = markerSeries(seriesColour(s), font);
+        QScatterSeries *dot = markerSeries(markerColour(plot, m), font);
         dot->append(double(m.at.x), double(m.at.y));
         chart->addSeries(dot);
         dot->attachAxis(x);
@@ -217,7 +226,7 @@ void addPolar(QPolarChart *chart, const Plot &plot, const QFont &font)
         add(awayFromL, pen, false);
     }
     for (const PlotMarker &m : plot.markers) {
-        QScatterSeries *dot = markerSeries(seriesColour(plot.series[std::size_t(m.series)]), font);
+        QScatterSeries *dot = markerSeries(markerColour(plot, m), font);
         dot->append(polarAngle(m.at.x), double(m.at.y));
         chart->addSeries(dot);
         dot->attachAxis(angle);

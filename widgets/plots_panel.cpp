@@ -1,10 +1,12 @@
 #include "plots_panel.h"
 
+#include "compare.h"
 #include "plot_chart.h"
 #include "probe_panel.h"
 #include "safe_write.h"
 
 #include <QComboBox>
+#include <QDir>
 #include <QEvent>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -110,6 +112,7 @@ void PlotsPanel::changeEvent(QEvent *event)
 {
     QWidget::changeEvent(event);
     if (event->type() == QEvent::FontChange) { // the UI scale: texts and lines follow
+        m_view->setMinimumSize(fontMetrics().height() * 12, fontMetrics().height() * 16);
         m_stale = true;
         schedule();
     }
@@ -119,7 +122,9 @@ void PlotsPanel::rebuild()
 {
     m_stale = false;
     const ProbeResult *probed = m_probe->isActive() ? &m_probe->result() : nullptr;
-    m_plot = computePlot(kind(), m_document->scene(), probed);
+    // A point on side B of a compare view was probed in side B's scene (its shading and
+    // specular choices): the curves are that scene's too.
+    m_plot = computePlot(kind(), sceneOfSide(m_document->scene(), m_probe->onSideB()), probed);
     QChart *old = m_view->chart();
     m_view->setChart(makePlotChart(m_plot, font()));
     delete old; // setChart() hands the old one back instead of deleting it
@@ -129,6 +134,10 @@ void PlotsPanel::rebuild()
                   "centre. Ctrl+click the surface to plot it at a point.");
     else if (note.isEmpty() && !m_plot.probed)
         note = tr("Ctrl+click the surface: the probed point's own values appear as dots.");
+    else if (note.isEmpty() && m_plot.kind == PlotKind::Lobe)
+        note = tr("Light %1's terms at the probed point. The dots are where V's part in the "
+                  "plane of incidence points; the Probe tab has the values at V itself.")
+                   .arg(m_plot.lobeLight + 1);
     else if (note.isEmpty() && m_plot.markers.empty() && m_plot.kind != PlotKind::Attenuation)
         note = tr("No dot: at the probed point every light is behind the surface (N·L < 0) "
                   "or outside the plot.");
@@ -152,7 +161,8 @@ void PlotsPanel::exportPlot()
     const QString png = tr("PNG images (*.png)"), svg = tr("SVG pictures (*.svg)"),
                   csv = tr("CSV samples (*.csv)");
     QString filter = png;
-    const QString start = settings.value(kDirKey).toString() + '/' + plotKindName(m_plot.kind);
+    const QString start =
+        settings.value(kDirKey, QDir::homePath()).toString() + '/' + plotKindName(m_plot.kind);
     QString path = QFileDialog::getSaveFileName(this, tr("Export the plot"), start,
                                                 png + ";;" + svg + ";;" + csv, &filter);
     if (path.isEmpty())

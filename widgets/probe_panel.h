@@ -29,6 +29,8 @@ public:
     void probeAt(QPoint framePixel);
     void clear();
     bool isActive() const { return m_point.has_value(); }
+    // The point lies on side B of a compare view: its numbers are side B's scene's.
+    bool onSideB() const { return m_point && m_point->sideB; }
     const ProbeResult &result() const { return m_result; }
     QLabel *textLabel() const { return m_text; }
     QPushButton *copyEquationButton() const { return m_copyEquation; }

@@ -99,10 +99,11 @@ LightingTerms evaluateLighting(const glm::vec3 &positionEye, const glm::vec3 &no
 // one of the vectors through it (plots.h).
 LightingTerms lightingTerms(const glm::vec3 &L, const glm::vec3 &N, const glm::vec3 &V,
                             float distance, const LightingInputs &in);
-// The diffuse factor max(N·L, 0): no light from behind.
+// The diffuse factor max(N·L, 0): no light from behind. As glm::max(nDotL, 0.0f) is (a NaN
+// passes through), so evaluateLighting gives what it gave before the plots shared it.
 inline float diffuseFactor(float nDotL)
 {
-    return nDotL > 0.0f ? nDotL : 0.0f;
+    return nDotL < 0.0f ? 0.0f : nDotL;
 }
 
 // Lights add up: the sum of the ambient, diffuse and specular terms of each light, of the

@@ -119,15 +119,23 @@ Plot specularPlot(const Scene &scene, const PlotSubject &s, int samples)
         }
         plot.series.push_back(std::move(series));
     }
-    // Each probed light's own angle: from R for Phong; for Blinn-Phong the in-plane angle that
-    // gives its N·H, 2·acos(N·H), so the mark sits on the curve of the model in use.
-    const bool blinn = scene.shading.specular == SpecularModel::Blinn;
-    for (int light : s.lights)
-        if (const ProbeLight *p = probedLight(s, light); p && p->terms.nDotL >= 0.0f) {
-            const float x = blinn ? 2.0f * degreesBetween(p->terms.specularAngle)
-                                  : degreesBetween(p->terms.specularAngle);
-            plot.markers.push_back({blinn ? 1 : 0, light, {x, p->terms.specularFactor}});
-        }
+    // Each probed light's own angle, in the model the probe used (side B's in a compare view):
+    // from R for Phong; for Blinn-Phong the in-plane angle that gives its N·H, 2·acos(N·H),
+    // so the mark sits on that model's curve. None where the light is behind the surface, or
+    // N·H < 0 (beyond 180 degrees; the factor is 0 there).
+    for (int light : s.lights) {
+        const ProbeLight *p = probedLight(s, light);
+        if (!p || p->terms.nDotL < 0.0f)
+            continue;
+        const bool blinn = p->inputs.specular == SpecularModel::Blinn;
+        if (blinn && p->terms.specularAngle < 0.0f)
+            continue;
+        const float angle = degreesBetween(p->terms.specularAngle);
+        plot.markers.push_back({blinn ? 1 : 0,
+                                light,
+                                p->inputs.colors.id,
+                                {blinn ? 2.0f * angle : angle, p->terms.specularFactor}});
+    }
     return plot;
 }
 
@@ -146,7 +154,10 @@ Plot diffusePlot(const Scene &scene, const PlotSubject &s, int samples)
     for (int light : s.lights)
         if (const ProbeLight *p = probedLight(s, light))
             plot.markers.push_back(
-                {0, light, {degreesBetween(p->terms.nDotL), diffuseFactor(p->terms.nDotL)}});
+                {0,
+                 light,
+                 p->inputs.colors.id,
+                 {degreesBetween(p->terms.nDotL), diffuseFactor(p->terms.nDotL)}});
     return plot;
 }
 
@@ -178,8 +189,10 @@ Plot attenuationPlot(const Scene &scene, const PlotSubject &s, int samples)
             series.points.push_back({d, attenuationFactor(l.position, d, l.attenuation)});
         }
         if (const ProbeLight *p = probedLight(s, light))
-            plot.markers.push_back(
-                {int(plot.series.size()), light, {p->terms.distance, p->terms.attenuation}});
+            plot.markers.push_back({int(plot.series.size()),
+                                    light,
+                                    p->inputs.colors.id,
+                                    {p->terms.distance, p->terms.attenuation}});
         plot.series.push_back(std::move(series));
     }
     return plot;
@@ -222,8 +235,10 @@ Plot spotPlot(const Scene &scene, const PlotSubject &s, int samples)
                 {angle, spotFactor(-towardsPoint, axis, spotCosCutoff(spot), spot.exponent)});
         }
         if (const std::optional<float> x = probedAngle(light))
-            plot.markers.push_back(
-                {int(plot.series.size()), light, {*x, probedLight(s, light)->terms.spot}});
+            plot.markers.push_back({int(plot.series.size()),
+                                    light,
+                                    l.colors.id,
+                                    {*x, probedLight(s, light)->terms.spot}});
         plot.series.push_back(std::move(series));
     }
     return plot;
@@ -241,6 +256,7 @@ Plot lobePlot(const Scene &scene, const PlotSubject &s, int samples)
     }
     // The first light on; at the probed point, or where the object's centre faces the camera.
     const int light = s.lights.front();
+    plot.lobeLight = light;
     LightingInputs in;
     glm::vec3 L, N, V;
     float distance = 0.0f;
@@ -310,7 +326,7 @@ Plot lobePlot(const Scene &scene, const PlotSubject &s, int samples)
         std::vector<glm::vec2> *to[3] = {&at[0], &at[1], &at[2]};
         addSample(viewAngle, to);
         for (int k = 0; k < 3; ++k)
-            plot.markers.push_back({k, light, at[k].front()});
+            plot.markers.push_back({k, light, in.colors.id, at[k].front()});
     }
     return plot;
 }

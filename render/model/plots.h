@@ -46,8 +46,9 @@ struct PlotSeries
 // it there (so it lies on the curve).
 struct PlotMarker
 {
-    int series = 0; // index into Plot::series
-    int light = 0;  // whose value it is
+    int series = 0;               // index into Plot::series
+    int light = 0;                // whose value it is
+    glm::vec3 lightDiffuse{1.0f}; // that light's Id (the dot's colour where several are on)
     glm::vec2 at{0.0f};
 };
 
@@ -66,8 +67,11 @@ struct Plot
     std::vector<PlotMarker> markers;
     PlotGap gap = PlotGap::None;
     // The lobe without a probed point is drawn where the selected object's centre faces the
-    // camera (N towards the eye); with one, at that point.
+    // camera (N towards the eye); with one, at that point. It is the first light's that is on
+    // (`lobeLight`); its V marks are where V's part in the plane of incidence points, so the
+    // specular mark is the probe's own value only where V lies in that plane.
     bool probed = false;
+    int lobeLight = 0;
 };
 
 constexpr int kPlotSamples = 361; // a half degree apart over 0 to 180, a quarter over 0 to 90

@@ -1384,7 +1384,7 @@
     </message>
     <message>
         <location line="+14"/>
-        <location filename="../../app/main.cpp" line="+243"/>
+        <location filename="../../app/main.cpp" line="+245"/>
         <source>Language</source>
         <translation>Sprache</translation>
     </message>
@@ -3304,7 +3304,7 @@
 <context>
     <name>lb::PlotChart</name>
     <message>
-        <location filename="../../widgets/plot_chart.cpp" line="+135"/>
+        <location filename="../../widgets/plot_chart.cpp" line="+145"/>
         <source>Angle between R and V (°)</source>
         <translation>Winkel zwischen R und V (°)</translation>
     </message>
@@ -3334,7 +3334,7 @@
         <translation>Spotfaktor</translation>
     </message>
     <message>
-        <location line="+58"/>
+        <location line="+57"/>
         <source>Surface</source>
         <translation>Oberfläche</translation>
     </message>
@@ -3402,7 +3402,7 @@
 <context>
     <name>lb::PlotsPanel</name>
     <message>
-        <location filename="../../widgets/plots_panel.cpp" line="+37"/>
+        <location filename="../../widgets/plots_panel.cpp" line="+39"/>
         <source>Specular: Phong and Blinn-Phong</source>
         <translation>Spiegelnd: Phong und Blinn-Phong</translation>
     </message>
@@ -3442,7 +3442,7 @@
         <translation>Dieses Diagramm als PNG- oder SVG-Bild oder seine Stützstellen als CSV schreiben</translation>
     </message>
     <message>
-        <location line="+81"/>
+        <location line="+84"/>
         <source>No point probed: the lobe where N faces the camera at the selected object&apos;s centre. Ctrl+click the surface to plot it at a point.</source>
         <translation>Kein Punkt gemessen: die Keule dort, wo N in der Mitte des ausgewählten Objekts zur Kamera zeigt. Strg+Klick auf die Oberfläche zeichnet sie an einem Punkt.</translation>
     </message>
@@ -3453,6 +3453,11 @@
     </message>
     <message>
         <location line="+2"/>
+        <source>Light %1&apos;s terms at the probed point. The dots are where V&apos;s part in the plane of incidence points; the Probe tab has the values at V itself.</source>
+        <translation>Die Anteile von Licht %1 am gemessenen Punkt. Die Punkte liegen dort, wohin V innerhalb der Einfallsebene zeigt; die Werte genau bei V stehen im Bereich „Sonde“.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>No dot: at the probed point every light is behind the surface (N·L &lt; 0) or outside the plot.</source>
         <translation>Kein Punkt: am gemessenen Punkt liegt jedes Licht hinter der Oberfläche (N·L &lt; 0) oder außerhalb des Diagramms.</translation>
     </message>
@@ -3477,7 +3482,7 @@
         <translation>CSV-Stützstellen (*.csv)</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <location line="+9"/>
         <source>Export the plot</source>
         <translation>Diagramm exportieren</translation>

@@ -1378,7 +1378,7 @@
     </message>
     <message>
         <location line="+14"/>
-        <location filename="../../app/main.cpp" line="+243"/>
+        <location filename="../../app/main.cpp" line="+245"/>
         <source>Language</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3297,7 +3297,7 @@
 <context>
     <name>lb::PlotChart</name>
     <message>
-        <location filename="../../widgets/plot_chart.cpp" line="+135"/>
+        <location filename="../../widgets/plot_chart.cpp" line="+145"/>
         <source>Angle between R and V (°)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3327,7 +3327,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+58"/>
+        <location line="+57"/>
         <source>Surface</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3395,7 +3395,7 @@
 <context>
     <name>lb::PlotsPanel</name>
     <message>
-        <location filename="../../widgets/plots_panel.cpp" line="+37"/>
+        <location filename="../../widgets/plots_panel.cpp" line="+39"/>
         <source>Specular: Phong and Blinn-Phong</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3435,7 +3435,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+81"/>
+        <location line="+84"/>
         <source>No point probed: the lobe where N faces the camera at the selected object&apos;s centre. Ctrl+click the surface to plot it at a point.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3446,6 +3446,11 @@
     </message>
     <message>
         <location line="+2"/>
+        <source>Light %1&apos;s terms at the probed point. The dots are where V&apos;s part in the plane of incidence points; the Probe tab has the values at V itself.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>No dot: at the probed point every light is behind the surface (N·L &lt; 0) or outside the plot.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3470,7 +3475,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <location line="+9"/>
         <source>Export the plot</source>
         <translation type="unfinished"></translation>

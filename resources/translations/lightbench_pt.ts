@@ -1384,7 +1384,7 @@
     </message>
     <message>
         <location line="+14"/>
-        <location filename="../../app/main.cpp" line="+243"/>
+        <location filename="../../app/main.cpp" line="+245"/>
         <source>Language</source>
         <translation>Idioma</translation>
     </message>
@@ -3304,7 +3304,7 @@
 <context>
     <name>lb::PlotChart</name>
     <message>
-        <location filename="../../widgets/plot_chart.cpp" line="+135"/>
+        <location filename="../../widgets/plot_chart.cpp" line="+145"/>
         <source>Angle between R and V (°)</source>
         <translation>Ângulo entre R e V (°)</translation>
     </message>
@@ -3334,7 +3334,7 @@
         <translation>Fator do foco</translation>
     </message>
     <message>
-        <location line="+58"/>
+        <location line="+57"/>
         <source>Surface</source>
         <translation>Superfície</translation>
     </message>
@@ -3402,7 +3402,7 @@
 <context>
     <name>lb::PlotsPanel</name>
     <message>
-        <location filename="../../widgets/plots_panel.cpp" line="+37"/>
+        <location filename="../../widgets/plots_panel.cpp" line="+39"/>
         <source>Specular: Phong and Blinn-Phong</source>
         <translation>Especular: Phong e Blinn-Phong</translation>
     </message>
@@ -3442,7 +3442,7 @@
         <translation>Gravar este gráfico como imagem PNG ou SVG, ou as suas amostras como CSV</translation>
     </message>
     <message>
-        <location line="+81"/>
+        <location line="+84"/>
         <source>No point probed: the lobe where N faces the camera at the selected object&apos;s centre. Ctrl+click the surface to plot it at a point.</source>
         <translation>Nenhum ponto sondado: o lóbulo onde N aponta para a câmara no centro do objeto selecionado. Ctrl+clique na superfície para o desenhar num ponto.</translation>
     </message>
@@ -3453,6 +3453,11 @@
     </message>
     <message>
         <location line="+2"/>
+        <source>Light %1&apos;s terms at the probed point. The dots are where V&apos;s part in the plane of incidence points; the Probe tab has the values at V itself.</source>
+        <translation>Os termos da luz %1 no ponto sondado. Os pontos estão onde aponta a parte de V no plano de incidência; o painel Sonda tem os valores no próprio V.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>No dot: at the probed point every light is behind the surface (N·L &lt; 0) or outside the plot.</source>
         <translation>Sem ponto: no ponto sondado todas as luzes estão atrás da superfície (N·L &lt; 0) ou fora do gráfico.</translation>
     </message>
@@ -3477,7 +3482,7 @@
         <translation>Amostras CSV (*.csv)</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <location line="+9"/>
         <source>Export the plot</source>
         <translation>Exportar o gráfico</translation>

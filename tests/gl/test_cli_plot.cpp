@@ -203,6 +203,15 @@ private slots:
             }
         QVERIFY2(!xml.hasError(), qPrintable(xml.errorString()));
         QVERIFY(root && lines > 5);
+
+        // --language: a slide for a German class (the SVG's text is searchable).
+        r = plot({"--plot", "diffuse", "--language", "de", "--render", path("de.svg")});
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        QFile de(path("de.svg"));
+        QVERIFY(de.open(QIODevice::ReadOnly));
+        const QByteArray words = de.readAll();
+        QVERIFY(words.contains("Diffuser Faktor"));
+        QVERIFY(!words.contains("Diffuse factor"));
     }
 
     // Without --probe a plot needs no OpenGL: it is drawn where no X server is.
@@ -244,13 +253,14 @@ private slots:
             {{"--plot", "diffuse", "--render", path("missing/c.png")}, "--render:"},
             {{"--plot", "diffuse", "--render", path("d.png"), "--bench-frames", "3"},
              "--bench-frames: does not go with --plot"},
+            {{"--render", path("e.svg")}, "--render: a frame is written as PNG"},
         };
         for (const Bad &b : bad) {
             const ProgramRun r = plot(b.args);
             QVERIFY2(r.exitCode == 2, qPrintable(b.args.join(' ')));
             QVERIFY2(r.err.contains(b.says), r.err.constData());
         }
-        for (const char *never : {"a.csv", "b.csv", "d.png", "missing"})
+        for (const char *never : {"a.csv", "b.csv", "d.png", "e.svg", "missing"})
             QVERIFY2(!QFile::exists(path(never)), never);
         QVERIFY(QFileInfo(fifo).exists() && !QFileInfo(fifo).isFile());
 

@@ -1,12 +1,14 @@
 // The Plots panel's curves (plots.h) against the formulas written out here, independently of
-// lighting.cpp: max(cos θ, 0)^n for Phong, cos(θ/2)^n and cos(θ/2)^(4n) for Blinn-Phong, max(cos α, 0),
-// 1 / (kc + kl·d + kq·d²), a spotlight's cos(β)^e inside its cone; at n = 1 and n = 1000,
-// spot exponent 0, kq alone. On a probed sphere each mark carries the probe's own value and
-// lies on its curve. The CSV has one row per sample.
+// lighting.cpp: max(cos θ, 0)^n for Phong, cos(θ/2)^n and cos(θ/2)^(4n) for Blinn-Phong, max(cos α,
+// 0), 1 / (kc + kl·d + kq·d²), a spotlight's cos(β)^e inside its cone; at n = 1 and n = 1000, spot
+// exponent 0, kq alone. On a probed sphere each mark carries the probe's own value and lies on its
+// curve. The CSV has one row per sample.
 #include "mesh.h"
 #include "plots.h"
 
 #include <QTest>
+
+#include <glm/geometric.hpp>
 
 #include <cmath>
 
@@ -319,9 +321,18 @@ private slots:
         QCOMPARE(int(plot.markers.size()), 3);
         QVERIFY(std::abs(plot.markers[0].at.y - mean(t.ambient)) < 1e-5);
         QVERIFY(std::abs(plot.markers[1].at.y - mean(t.diffuse)) < 1e-5);
-        const Plot dense = computePlot(PlotKind::Lobe, s, &p, 20001);
-        QVERIFY(std::abs(curveAt(dense.series[2], plot.markers[2].at.x) - plot.markers[2].at.y) <
-                1e-3);
+        // V's angle in the plane of incidence, worked out here: atan2 of V along the plane's
+        // direction across N (towards L) and along N; the specular mark is Phong's value there.
+        const glm::dvec3 n(t.N), l(t.L), v(t.V);
+        const glm::dvec3 across = glm::normalize(l - glm::dot(l, n) * n);
+        const double phi = std::atan2(glm::dot(v, across), glm::dot(v, n)) * 180.0 / M_PI;
+        for (const PlotMarker &m : plot.markers)
+            QVERIFY2(std::abs(m.at.x - phi) < 1e-3, qPrintable(QString::number(m.at.x)));
+        const double atV =
+            scale * std::pow(std::max(std::cos(radians(phi + lightAngle)), 0.0), 12.0);
+        QVERIFY2(std::abs(plot.markers[2].at.y - atV) < 1e-5,
+                 qPrintable(QString("%1 for %2").arg(plot.markers[2].at.y).arg(atV)));
+        QCOMPARE(plot.lobeLight, 0);
 
         Scene dark;
         for (Light &l : dark.lights)
@@ -330,6 +341,43 @@ private slots:
         const Plot unprobed = computePlot(PlotKind::Lobe, s);
         QVERIFY(!unprobed.probed && unprobed.markers.empty());
         QCOMPARE(int(unprobed.series.size()), 6); // the terms, L, R and V (along N)
+    }
+
+    // Two lights on, the second behind the sphere: each mark is its own light's, the one behind
+    // has no highlight (no specular mark) and its diffuse mark sits at 0 beyond 90 degrees. The
+    // marks follow the model the probe used (side B's in a compare view), not the scene's.
+    void marksOfSeveralLights()
+    {
+        Scene s;
+        s.lights[1].enabled = true;
+        s.lights[1].position = glm::vec4(0.0f, 0.0f, -6.0f, 1.0f); // world: behind the sphere
+        s.lights[1].frame = LightFrame::World;
+        s.lights[1].colors.id = glm::vec3(0.2f, 0.4f, 1.0f);
+        const ProbeResult p = probe(s);
+        QVERIFY(p.hit);
+        QCOMPARE(int(p.lights.size()), 2);
+        QVERIFY(p.lights[0].terms.nDotL > 0.0f);
+        QVERIFY(p.lights[1].terms.nDotL < 0.0f);
+
+        Plot plot = computePlot(PlotKind::Specular, s, &p);
+        QCOMPARE(int(plot.markers.size()), 1);
+        QCOMPARE(plot.markers[0].light, 0);
+        plot = computePlot(PlotKind::Diffuse, s, &p);
+        QCOMPARE(int(plot.markers.size()), 2);
+        QCOMPARE(plot.markers[1].light, 1);
+        QCOMPARE(plot.markers[1].lightDiffuse, glm::vec3(0.2f, 0.4f, 1.0f));
+        QVERIFY(plot.markers[1].at.x > 90.0f);
+        QCOMPARE(plot.markers[1].at.y, 0.0f);
+        QVERIFY(std::abs(plot.markers[0].at.y - p.lights[0].terms.nDotL) < 1e-6f);
+
+        // Probed with Blinn-Phong, plotted with a scene that says Phong: the mark is on the
+        // Blinn-Phong curve, at 2·acos(N·H).
+        Scene phong = s;
+        phong.shading.specular = SpecularModel::Phong;
+        plot = computePlot(PlotKind::Specular, phong, &p);
+        QCOMPARE(plot.series[std::size_t(plot.markers.at(0).series)].key, QString("blinn"));
+        const double half = std::acos(double(p.lights[0].terms.specularAngle)) * 180.0 / M_PI;
+        QVERIFY(std::abs(plot.markers[0].at.x - 2.0 * half) < 1e-3);
     }
 
     void csvHasARowPerSample()
