@@ -208,7 +208,7 @@ void addPolar(QPolarChart *chart, const Plot &plot, const QFont &font)
         surface->setName(QCoreApplication::translate("lb::PlotChart", "Surface"));
         surface->append(a, 0.0);
         surface->append(a, radius->max());
-        add(surface, QPen(kSurface, lineWidth(font) * 1.5), a == 90.0);
+        add(surface, QPen(kSurface, lineWidth(font) * 1.5), false); // plain to see
     }
     for (const PlotSeries &s : plot.series) {
         // Each curve in two halves that meet at N: a line across 0/360 would go round.
@@ -222,8 +222,29 @@ void addPolar(QPolarChart *chart, const Plot &plot, const QFont &font)
                 awayFromL->append(polarAngle(p.x) == 0.0 ? 360.0 : polarAngle(p.x), double(p.y));
         }
         const QPen pen = seriesPen(s, font);
-        add(towardsL, pen, true);
+        // The legend names the terms; the rays L, R and V carry their names at their tips,
+        // as the arrows over the surface do (a narrow panel's legend has no room for seven).
+        const bool ray = s.role == PlotRole::Direction;
+        add(towardsL, pen, !ray);
         add(awayFromL, pen, false);
+        if (ray) {
+            auto *tip = new QScatterSeries;
+            tip->append(polarAngle(s.points.back().x), double(s.points.back().y));
+            tip->setMarkerSize(1.0);
+            tip->setColor(Qt::transparent);
+            tip->setBorderColor(Qt::transparent);
+            tip->setPointLabelsFormat(plotSeriesName(plot, s));
+            QFont bold = font;
+            bold.setBold(true);
+            tip->setPointLabelsFont(bold);
+            tip->setPointLabelsColor(seriesColour(s));
+            tip->setPointLabelsClipping(false);
+            tip->setPointLabelsVisible(true);
+            chart->addSeries(tip);
+            tip->attachAxis(angle);
+            tip->attachAxis(radius);
+            hideFromLegend(chart, tip);
+        }
     }
     for (const PlotMarker &m : plot.markers) {
         QScatterSeries *dot = markerSeries(markerColour(plot, m), font);
