@@ -148,7 +148,9 @@ private:
     void presentationChanged();          // after setPresentation(): panels, status line, blank
     bool presentationEditorFits() const; // the editor fits beside a view of 60% of the width
     void styleDockTabs(); // the docks' tab bars: names whole, their font in presentation mode
-    QFont presentationTabFont() const; // 140% where the UI is larger: the names fit 720 lines
+    // The docks' tab names in presentation mode at `share` of the 100% font (styleDockTabs()
+    // picks it: 140%, less where the names would not fit the column).
+    QFont presentationTabFont(double share) const;
     int presentationTabsWidth() const; // the column of tabs down the edge in presentation mode
     void updateStatus();
     void updateTitle();
@@ -206,8 +208,9 @@ private:
     DockLayout m_layout = DockLayout::Wide;
     bool m_widthsPending = false; // arranged before shown: the dock widths wait for show
     bool m_presentation = false;
-    double m_scale = 1.0;                       // the normal window's UI scale
-    double m_presentationScale = 1.75;          // presentation mode's
+    double m_tabShare = 1.4;           // the presentation tab font's share of the 100% font
+    double m_scale = 1.0;              // the normal window's UI scale
+    double m_presentationScale = 1.75; // presentation mode's
     QByteArray m_normalGeometry, m_normalState; // the window before presentation mode
     DockLayout m_normalLayout = DockLayout::Wide;
     QRect m_normalRect;

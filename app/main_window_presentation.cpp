@@ -124,58 +124,63 @@ void MainWindow::setPresentationPanels(bool shown)
     QTimer::singleShot(0, this, &MainWindow::styleDockTabs); // the tab bars made for them now
 }
 
-QFont MainWindow::presentationTabFont() const
+QFont MainWindow::presentationTabFont(double share) const
 {
     const QFont font = QApplication::font();
     const double scale = uiScale();
-    const auto scaled = [&](double share) { // `share` of the 100% font
-        QFont f = font;
-        if (font.pointSizeF() > 0)
-            f.setPointSizeF(font.pointSizeF() * share / scale);
-        else
-            f.setPixelSize(int(std::lround(font.pixelSize() * share / scale)));
-        return f;
-    };
-    // 140% of the 100% font where the UI is larger; less where the column of names would not
-    // fit the window's height (nine names at 140% are taller than 720 lines), down to 100%.
-    double share = std::min(scale, 1.4);
-    if (share > 1.0) {
-        QStringList names{m_editorDock->windowTitle()};
-        for (QDockWidget *dock : m_panelDocks)
-            if (dock != m_exerciseDock || m_sceneActions->exercise().has_value())
-                names << dock->windowTitle();
-        const auto column = [&](double at) {
-            const QFontMetrics metrics(scaled(at));
-            int length = 0;
-            for (const QString &name : names) // a tab's padding: about 1.25 lines (Fusion)
-                length += metrics.horizontalAdvance(name) + metrics.height() * 5 / 4;
-            return length;
-        };
-        const int room = height() - menuBar()->height() - statusBar()->height() - 16;
-        while (share > 1.0 && column(share) > room)
-            share = std::max(1.0, share - 0.05);
-    }
-    return scaled(share);
+    QFont f = font;
+    if (font.pointSizeF() > 0)
+        f.setPointSizeF(font.pointSizeF() * share / scale);
+    else
+        f.setPixelSize(int(std::lround(font.pixelSize() * share / scale)));
+    return f;
 }
 
 int MainWindow::presentationTabsWidth() const
 {
-    return QFontMetrics(presentationTabFont()).height() + 14; // a tab's padding and frame
+    return QFontMetrics(presentationTabFont(m_tabShare)).height() + 14; // padding and frame
 }
 
 void MainWindow::styleDockTabs()
 {
     // Names whole, scrolled when short. In presentation mode the column of tabs down the edge
-    // is written at 140% of the 100% font (not 200%), less where the names would not fit the
-    // height (presentationTabFont); they are the teacher's to click, the view the class's.
-    const QFont font = m_presentation ? presentationTabFont() : QApplication::font();
-    for (QTabBar *bar : findChildren<QTabBar *>(Qt::FindDirectChildrenOnly)) {
-        bar->setElideMode(Qt::ElideNone);
-        bar->setUsesScrollButtons(true);
-        bar->setFont(font);
+    // is written at 140% of the 100% font (not 200%), less where the names do not fit its
+    // height (nine names at 140% are taller than 720 lines, Portuguese ones even at 100%),
+    // down to 80%; they are the teacher's to click, the view is the class's to read.
+    const QList<QTabBar *> bars = findChildren<QTabBar *>(Qt::FindDirectChildrenOnly);
+    const auto apply = [&](const QFont &font) {
+        for (QTabBar *bar : bars) {
+            bar->setElideMode(Qt::ElideNone);
+            bar->setUsesScrollButtons(true);
+            bar->setFont(font);
+        }
+    };
+    if (!m_presentation) {
+        apply(QApplication::font());
+        return;
     }
-    if (m_presentation) // the tabs' column is now as wide as it will be
-        applyDockWidths();
+    const auto overflows = [&] {
+        for (QTabBar *bar : bars) {
+            if (!bar->isVisible() || bar->count() < 2)
+                continue;
+            const QTabBar::Shape shape = bar->shape();
+            const bool down = shape == QTabBar::RoundedEast || shape == QTabBar::RoundedWest ||
+                              shape == QTabBar::TriangularEast || shape == QTabBar::TriangularWest;
+            int length = 0;
+            for (int i = 0; i < bar->count(); ++i)
+                length += down ? bar->tabRect(i).height() : bar->tabRect(i).width();
+            if (length > (down ? bar->height() : bar->width()))
+                return true;
+        }
+        return false;
+    };
+    m_tabShare = std::min(uiScale(), 1.4);
+    apply(presentationTabFont(m_tabShare));
+    while (m_tabShare > 0.8 && overflows()) {
+        m_tabShare = std::max(0.8, m_tabShare - 0.05);
+        apply(presentationTabFont(m_tabShare));
+    }
+    applyDockWidths(); // the tabs' column is now as wide as it will be
 }
 
 bool MainWindow::presentationEditorFits() const
