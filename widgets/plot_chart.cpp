@@ -122,6 +122,29 @@ QScatterSeries *markerSeries(const QColor &colour, const QFont &font)
     return dots;
 }
 
+// `series` into `chart` on axes `a` and `b`, left out of the legend unless `inLegend`.
+void attach(QChart *chart, QAbstractSeries *series, QAbstractAxis *a, QAbstractAxis *b,
+            bool inLegend)
+{
+    chart->addSeries(series);
+    series->attachAxis(a);
+    series->attachAxis(b);
+    if (!inLegend)
+        hideFromLegend(chart, series);
+}
+
+// The probed point's dots, at `x(mark's x)` along axis `a`.
+template <typename X>
+void addMarks(QChart *chart, const Plot &plot, const QFont &font, QAbstractAxis *a,
+              QAbstractAxis *b, X x)
+{
+    for (const PlotMarker &m : plot.markers) {
+        QScatterSeries *dot = markerSeries(markerColour(plot, m), font);
+        dot->append(x(m.at.x), double(m.at.y));
+        attach(chart, dot, a, b, false);
+    }
+}
+
 void addCartesian(QChart *chart, const Plot &plot, const QFont &font)
 {
     auto *x = new QValueAxis;
@@ -157,19 +180,10 @@ void addCartesian(QChart *chart, const Plot &plot, const QFont &font)
         line->setName(plotSeriesName(plot, s));
         for (const glm::vec2 &p : s.points)
             line->append(double(p.x), double(p.y));
-        chart->addSeries(line);
-        line->attachAxis(x);
-        line->attachAxis(y);
+        attach(chart, line, x, y, true);
         line->setPen(seriesPen(s, font));
     }
-    for (const PlotMarker &m : plot.markers) {
-        QScatterSeries *dot = markerSeries(markerColour(plot, m), font);
-        dot->append(double(m.at.x), double(m.at.y));
-        chart->addSeries(dot);
-        dot->attachAxis(x);
-        dot->attachAxis(y);
-        hideFromLegend(chart, dot);
-    }
+    addMarks(chart, plot, font, x, y, [](float v) { return double(v); });
 }
 
 void addPolar(QPolarChart *chart, const Plot &plot, const QFont &font)
@@ -195,12 +209,8 @@ void addPolar(QPolarChart *chart, const Plot &plot, const QFont &font)
     styleAxis(angle, {}, font);
     styleAxis(radius, {}, font);
     const auto add = [&](QLineSeries *line, const QPen &pen, bool inLegend) {
-        chart->addSeries(line);
-        line->attachAxis(angle);
-        line->attachAxis(radius);
+        attach(chart, line, angle, radius, inLegend);
         line->setPen(pen);
-        if (!inLegend)
-            hideFromLegend(chart, line);
     };
     // The surface: the horizontal line through the point.
     for (qreal a : {90.0, 270.0}) {
@@ -240,20 +250,10 @@ void addPolar(QPolarChart *chart, const Plot &plot, const QFont &font)
             tip->setPointLabelsColor(seriesColour(s));
             tip->setPointLabelsClipping(false);
             tip->setPointLabelsVisible(true);
-            chart->addSeries(tip);
-            tip->attachAxis(angle);
-            tip->attachAxis(radius);
-            hideFromLegend(chart, tip);
+            attach(chart, tip, angle, radius, false);
         }
     }
-    for (const PlotMarker &m : plot.markers) {
-        QScatterSeries *dot = markerSeries(markerColour(plot, m), font);
-        dot->append(polarAngle(m.at.x), double(m.at.y));
-        chart->addSeries(dot);
-        dot->attachAxis(angle);
-        dot->attachAxis(radius);
-        hideFromLegend(chart, dot);
-    }
+    addMarks(chart, plot, font, angle, radius, polarAngle);
 }
 
 } // namespace
