@@ -116,6 +116,8 @@ void MainWindow::exerciseChanged()
     m_exerciseDock->setVisible(exercise.has_value());
     if (exercise) // the task is the first thing to read (once its tab exists again)
         QTimer::singleShot(0, m_exerciseDock, [dock = m_exerciseDock] { dock->raise(); });
+    if (m_presentation) // a tab more or less: the names' font is measured again
+        QTimer::singleShot(0, this, &MainWindow::styleDockTabs);
     applySideB();
 }
 

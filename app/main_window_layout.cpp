@@ -200,8 +200,11 @@ int MainWindow::panelsNeed() const
 void MainWindow::resizeEvent(QResizeEvent *event)
 {
     QMainWindow::resizeEvent(event);
-    if (m_presentation) // full screen arrives after the request
+    if (m_presentation) { // full screen arrives after the request
         applyDockWidths();
+        // The tab names' font is measured on the bars once they have their new length.
+        QTimer::singleShot(0, this, &MainWindow::styleDockTabs);
+    }
 }
 
 void MainWindow::showEvent(QShowEvent *event)

@@ -13,7 +13,7 @@ namespace lb {
 int writePlotOutputs(const CommandLine &cl, const Scene &scene, const ProbeResult *probe)
 {
     const Plot plot = computePlot(*cl.plot, scene, probe);
-    if (const QString gap = plotGapText(plot.gap); !gap.isEmpty())
+    if (const QString gap = plotGapText(plot.gap, false); !gap.isEmpty()) // stderr: English
         printLine("lightbench: --plot " + plotKindName(plot.kind) + ": " + gap, stderr);
     if (!cl.plotDataPath.isEmpty())
         if (const QString error = writeFileSafely(cl.plotDataPath, plotCsv(plot));

@@ -112,10 +112,15 @@ QColor markerColour(const Plot &plot, const PlotMarker &m)
     return seriesColour(plot.series[std::size_t(m.series)]);
 }
 
-QScatterSeries *markerSeries(const QColor &colour, const QFont &font)
+// A dot of light `light`: each light its own shape, since two lights of one hue (light 1's
+// grey and light 4's) get one colour.
+QScatterSeries *markerSeries(const QColor &colour, const QFont &font, int light)
 {
     auto *dots = new QScatterSeries;
-    dots->setMarkerShape(QScatterSeries::MarkerShapeCircle);
+    const QScatterSeries::MarkerShape shapes[] = {
+        QScatterSeries::MarkerShapeCircle, QScatterSeries::MarkerShapeRectangle,
+        QScatterSeries::MarkerShapeTriangle, QScatterSeries::MarkerShapeRotatedRectangle};
+    dots->setMarkerShape(shapes[std::clamp(light, 0, 3)]);
     dots->setMarkerSize(QFontMetricsF(font).height() * 0.6);
     dots->setColor(colour);
     dots->setBorderColor(Qt::white);
@@ -139,7 +144,7 @@ void addMarks(QChart *chart, const Plot &plot, const QFont &font, QAbstractAxis 
               QAbstractAxis *b, X x)
 {
     for (const PlotMarker &m : plot.markers) {
-        QScatterSeries *dot = markerSeries(markerColour(plot, m), font);
+        QScatterSeries *dot = markerSeries(markerColour(plot, m), font, m.light);
         dot->append(x(m.at.x), double(m.at.y));
         attach(chart, dot, a, b, false);
     }
@@ -283,23 +288,20 @@ QString plotTitle(PlotKind kind)
     return {};
 }
 
-QString plotGapText(PlotGap gap)
+QString plotGapText(PlotGap gap, bool translated)
 {
-    switch (gap) {
-    case PlotGap::None:
+    static const char *const texts[] = {
+        "",
+        QT_TRANSLATE_NOOP("lb::PlotChart", "No point light is on: a directional light (w = 0) "
+                                           "is not attenuated."),
+        QT_TRANSLATE_NOOP("lb::PlotChart", "No spotlight: every light that is on has a cutoff "
+                                           "of 180°. Set a cutoff in the Light panel."),
+        QT_TRANSLATE_NOOP("lb::PlotChart", "No light is on.")};
+    const char *text = texts[int(gap)];
+    if (!*text)
         return {};
-    case PlotGap::NoPointLight:
-        return QCoreApplication::translate(
-            "lb::PlotChart", "No point light is on: a directional light (w = 0) is not "
-                             "attenuated.");
-    case PlotGap::NoSpotlight:
-        return QCoreApplication::translate(
-            "lb::PlotChart", "No spotlight: every light that is on has a cutoff of 180°. Set "
-                             "a cutoff in the Light panel.");
-    case PlotGap::NoLight:
-        return QCoreApplication::translate("lb::PlotChart", "No light is on.");
-    }
-    return {};
+    return translated ? QCoreApplication::translate("lb::PlotChart", text)
+                      : QString::fromUtf8(text);
 }
 
 QString plotSeriesName(const Plot &plot, const PlotSeries &s)

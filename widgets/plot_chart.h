@@ -16,8 +16,8 @@ namespace lb {
 
 // "Specular factor against the angle from the mirror direction" and the like; translated.
 QString plotTitle(PlotKind kind);
-// Why nothing is drawn (PlotGap::None: empty); translated.
-QString plotGapText(PlotGap gap);
+// Why nothing is drawn (PlotGap::None: empty); translated, or English (the command line's).
+QString plotGapText(PlotGap gap, bool translated = true);
 // A series' name in the legend: "Phong (R·V)^6", "Light 2", "Ambient"...
 QString plotSeriesName(const Plot &plot, const PlotSeries &series);
 

@@ -130,8 +130,9 @@ void PlotsPanel::rebuild()
     delete old; // setChart() hands the old one back instead of deleting it
     QString note = plotGapText(m_plot.gap);
     if (note.isEmpty() && m_plot.kind == PlotKind::Lobe && !m_plot.probed)
-        note = tr("No point probed: the lobe where N faces the camera at the selected object's "
-                  "centre. Ctrl+click the surface to plot it at a point.");
+        note = tr("No point probed: light %1's lobe where N faces the camera at the selected "
+                  "object's centre. Ctrl+click the surface to plot it at a point.")
+                   .arg(m_plot.lobeLight + 1);
     else if (note.isEmpty() && !m_plot.probed)
         note = tr("Ctrl+click the surface: the probed point's own values appear as dots.");
     else if (note.isEmpty() && m_plot.kind == PlotKind::Lobe)
@@ -157,19 +158,18 @@ void PlotsPanel::exportPlot()
 {
     if (m_stale)
         rebuild();
-    QSettings settings;
     const QString png = tr("PNG images (*.png)"), svg = tr("SVG pictures (*.svg)"),
                   csv = tr("CSV samples (*.csv)");
     QString filter = png;
     const QString start =
-        settings.value(kDirKey, QDir::homePath()).toString() + '/' + plotKindName(m_plot.kind);
+        (m_exportDir.isEmpty() ? QDir::homePath() : m_exportDir) + '/' + plotKindName(m_plot.kind);
     QString path = QFileDialog::getSaveFileName(this, tr("Export the plot"), start,
                                                 png + ";;" + svg + ";;" + csv, &filter);
     if (path.isEmpty())
         return;
     if (QFileInfo(path).suffix().isEmpty())
         path += filter == svg ? ".svg" : filter == csv ? ".csv" : ".png";
-    settings.setValue(kDirKey, QFileInfo(path).absolutePath());
+    m_exportDir = QFileInfo(path).absolutePath(); // the window's next save keeps it
     if (const QString error = exportTo(path); !error.isEmpty())
         QMessageBox::warning(
             this, tr("Export the plot"),
@@ -179,12 +179,14 @@ void PlotsPanel::exportPlot()
 void PlotsPanel::saveState(QSettings &settings) const
 {
     settings.setValue(kKindKey, plotKindName(kind()));
+    settings.setValue(kDirKey, m_exportDir);
 }
 
 void PlotsPanel::restoreState(const QSettings &settings)
 {
     if (const auto kind = plotKindFromName(settings.value(kKindKey).toString()))
         setKind(*kind);
+    m_exportDir = settings.value(kDirKey).toString();
 }
 
 } // namespace lb

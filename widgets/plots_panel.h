@@ -55,6 +55,7 @@ private:
     QLabel *m_note;
     QPushButton *m_export;
     Plot m_plot;
+    QString m_exportDir; // where the last export went (kept by saveState)
     bool m_scheduled = false, m_stale = true;
 };
 

@@ -2266,7 +2266,7 @@
         <translation>Nicht geprüft: Die Übung enthält einen fehlerhaften bekannten Fehler</translation>
     </message>
     <message>
-        <location line="+78"/>
+        <location line="+80"/>
         <location line="+16"/>
         <location line="+1"/>
         <location line="+1"/>
@@ -3304,7 +3304,7 @@
 <context>
     <name>lb::PlotChart</name>
     <message>
-        <location filename="../../widgets/plot_chart.cpp" line="+145"/>
+        <location filename="../../widgets/plot_chart.cpp" line="+173"/>
         <source>Angle between R and V (°)</source>
         <translation>Winkel zwischen R und V (°)</translation>
     </message>
@@ -3334,12 +3334,12 @@
         <translation>Spotfaktor</translation>
     </message>
     <message>
-        <location line="+57"/>
+        <location line="+44"/>
         <source>Surface</source>
         <translation>Oberfläche</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+48"/>
         <source>Specular factor&lt;br&gt;&lt;small&gt;Phong (R·V)^n, Blinn-Phong (N·H)^n; dashed: Blinn-Phong at 4n&lt;/small&gt;</source>
         <translation>Faktor des spiegelnden Anteils&lt;br&gt;&lt;small&gt;Phong (R·V)^n, Blinn-Phong (N·H)^n; gestrichelt: Blinn-Phong mit 4n&lt;/small&gt;</translation>
     </message>
@@ -3364,22 +3364,22 @@
         <translation>Die drei Anteile, während V&lt;br&gt;&lt;small&gt;die Einfallsebene überstreicht, N oben; Radius: Mittelwert aus Rot, Grün und Blau&lt;/small&gt;</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+11"/>
         <source>No point light is on: a directional light (w = 0) is not attenuated.</source>
         <translation>Kein Punktlicht ist an: ein gerichtetes Licht (w = 0) wird nicht abgeschwächt.</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+2"/>
         <source>No spotlight: every light that is on has a cutoff of 180°. Set a cutoff in the Light panel.</source>
         <translation>Kein Spotlicht: jedes eingeschaltete Licht hat einen Öffnungswinkel von 180°. Stellen Sie im Bereich „Licht“ einen kleineren ein.</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+2"/>
         <source>No light is on.</source>
         <translation>Kein Licht ist an.</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+19"/>
         <source>Ambient</source>
         <translation>Ambient</translation>
     </message>
@@ -3443,11 +3443,11 @@
     </message>
     <message>
         <location line="+84"/>
-        <source>No point probed: the lobe where N faces the camera at the selected object&apos;s centre. Ctrl+click the surface to plot it at a point.</source>
-        <translation>Kein Punkt gemessen: die Keule dort, wo N in der Mitte des ausgewählten Objekts zur Kamera zeigt. Strg+Klick auf die Oberfläche zeichnet sie an einem Punkt.</translation>
+        <source>No point probed: light %1&apos;s lobe where N faces the camera at the selected object&apos;s centre. Ctrl+click the surface to plot it at a point.</source>
+        <translation>Kein Punkt gemessen: die Keule von Licht %1 dort, wo N in der Mitte des ausgewählten Objekts zur Kamera zeigt. Strg+Klick auf die Oberfläche zeichnet sie an einem Punkt.</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>Ctrl+click the surface: the probed point&apos;s own values appear as dots.</source>
         <translation>Strg+Klick auf die Oberfläche: die Werte des gemessenen Punkts erscheinen als Punkte.</translation>
     </message>
@@ -3467,7 +3467,7 @@
         <translation>Punkte: der Winkel jedes Lichts am gemessenen Punkt (bei Blinn-Phong 2·acos(N·H)).</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+15"/>
         <source>PNG images (*.png)</source>
         <translation>PNG-Bilder (*.png)</translation>
     </message>

@@ -2260,7 +2260,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+49"/>
+        <location line="+51"/>
         <location line="+16"/>
         <location line="+1"/>
         <location line="+1"/>
@@ -3297,7 +3297,7 @@
 <context>
     <name>lb::PlotChart</name>
     <message>
-        <location filename="../../widgets/plot_chart.cpp" line="+145"/>
+        <location filename="../../widgets/plot_chart.cpp" line="+173"/>
         <source>Angle between R and V (°)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3327,12 +3327,12 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+57"/>
+        <location line="+44"/>
         <source>Surface</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+48"/>
         <source>Specular factor&lt;br&gt;&lt;small&gt;Phong (R·V)^n, Blinn-Phong (N·H)^n; dashed: Blinn-Phong at 4n&lt;/small&gt;</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3357,22 +3357,22 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+11"/>
         <source>No point light is on: a directional light (w = 0) is not attenuated.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+2"/>
         <source>No spotlight: every light that is on has a cutoff of 180°. Set a cutoff in the Light panel.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+2"/>
         <source>No light is on.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+19"/>
         <source>Ambient</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3436,11 +3436,11 @@
     </message>
     <message>
         <location line="+84"/>
-        <source>No point probed: the lobe where N faces the camera at the selected object&apos;s centre. Ctrl+click the surface to plot it at a point.</source>
+        <source>No point probed: light %1&apos;s lobe where N faces the camera at the selected object&apos;s centre. Ctrl+click the surface to plot it at a point.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>Ctrl+click the surface: the probed point&apos;s own values appear as dots.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3460,7 +3460,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+15"/>
         <source>PNG images (*.png)</source>
         <translation type="unfinished"></translation>
     </message>

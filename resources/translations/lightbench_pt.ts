@@ -2266,7 +2266,7 @@
         <translation>Não verificado: o exercício tem um erro conhecido que não funciona</translation>
     </message>
     <message>
-        <location line="+78"/>
+        <location line="+80"/>
         <location line="+16"/>
         <location line="+1"/>
         <location line="+1"/>
@@ -3304,7 +3304,7 @@
 <context>
     <name>lb::PlotChart</name>
     <message>
-        <location filename="../../widgets/plot_chart.cpp" line="+145"/>
+        <location filename="../../widgets/plot_chart.cpp" line="+173"/>
         <source>Angle between R and V (°)</source>
         <translation>Ângulo entre R e V (°)</translation>
     </message>
@@ -3334,12 +3334,12 @@
         <translation>Fator do foco</translation>
     </message>
     <message>
-        <location line="+57"/>
+        <location line="+44"/>
         <source>Surface</source>
         <translation>Superfície</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+48"/>
         <source>Specular factor&lt;br&gt;&lt;small&gt;Phong (R·V)^n, Blinn-Phong (N·H)^n; dashed: Blinn-Phong at 4n&lt;/small&gt;</source>
         <translation>Fator especular&lt;br&gt;&lt;small&gt;Phong (R·V)^n, Blinn-Phong (N·H)^n; tracejado: Blinn-Phong com 4n&lt;/small&gt;</translation>
     </message>
@@ -3364,22 +3364,22 @@
         <translation>Os três termos enquanto V percorre&lt;br&gt;&lt;small&gt;o plano de incidência, N para cima; raio: média do vermelho, verde e azul&lt;/small&gt;</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+11"/>
         <source>No point light is on: a directional light (w = 0) is not attenuated.</source>
         <translation>Nenhuma luz pontual está ligada: uma luz direcional (w = 0) não é atenuada.</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+2"/>
         <source>No spotlight: every light that is on has a cutoff of 180°. Set a cutoff in the Light panel.</source>
         <translation>Nenhum foco: todas as luzes ligadas têm um ângulo de corte de 180°. Defina um ângulo de corte no painel Luz.</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+2"/>
         <source>No light is on.</source>
         <translation>Nenhuma luz está ligada.</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+19"/>
         <source>Ambient</source>
         <translation>Ambiente</translation>
     </message>
@@ -3443,11 +3443,11 @@
     </message>
     <message>
         <location line="+84"/>
-        <source>No point probed: the lobe where N faces the camera at the selected object&apos;s centre. Ctrl+click the surface to plot it at a point.</source>
-        <translation>Nenhum ponto sondado: o lóbulo onde N aponta para a câmara no centro do objeto selecionado. Ctrl+clique na superfície para o desenhar num ponto.</translation>
+        <source>No point probed: light %1&apos;s lobe where N faces the camera at the selected object&apos;s centre. Ctrl+click the surface to plot it at a point.</source>
+        <translation>Nenhum ponto sondado: o lóbulo da luz %1 onde N aponta para a câmara no centro do objeto selecionado. Ctrl+clique na superfície para o desenhar num ponto.</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>Ctrl+click the surface: the probed point&apos;s own values appear as dots.</source>
         <translation>Ctrl+clique na superfície: os valores do ponto sondado aparecem como pontos.</translation>
     </message>
@@ -3467,7 +3467,7 @@
         <translation>Pontos: o ângulo de cada luz no ponto sondado (em Blinn-Phong, 2·acos(N·H)).</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+15"/>
         <source>PNG images (*.png)</source>
         <translation>Imagens PNG (*.png)</translation>
     </message>

@@ -8,6 +8,7 @@
 
 #include <QTest>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include <cmath>
@@ -378,6 +379,40 @@ private slots:
         QCOMPARE(plot.series[std::size_t(plot.markers.at(0).series)].key, QString("blinn"));
         const double half = std::acos(double(p.lights[0].terms.specularAngle)) * 180.0 / M_PI;
         QVERIFY(std::abs(plot.markers[0].at.x - 2.0 * half) < 1e-3);
+    }
+
+    // N·H < 0 with the light in front (a surface seen from behind): Blinn-Phong's factor is 0
+    // and 2·acos(N·H) would lie beyond 180: no dot. Phong's R·V < 0 is a dot at 0 on its curve.
+    void noDotBeyondTheAxis()
+    {
+        ProbeResult r;
+        r.hit = true;
+        ProbeLight light;
+        light.inputs.specular = SpecularModel::Blinn;
+        light.terms.nDotL = 0.5f;
+        light.terms.specularAngle = -0.2f;
+        light.terms.specularFactor = 0.0f;
+        r.lights.push_back(light);
+        QVERIFY(computePlot(PlotKind::Specular, Scene{}, &r).markers.empty());
+        r.lights[0].inputs.specular = SpecularModel::Phong;
+        const Plot phong = computePlot(PlotKind::Specular, Scene{}, &r);
+        QCOMPARE(int(phong.markers.size()), 1);
+        QVERIFY(phong.markers[0].at.x > 90.0f && phong.markers[0].at.x <= 180.0f);
+        QCOMPARE(phong.markers[0].at.y, 0.0f);
+    }
+
+    // The diffuse factor the plots share with evaluateLighting is glm::max's: a NaN passes
+    // through (a broken normal shows), -0 stays -0.
+    void diffuseFactorIsGlmMax()
+    {
+        for (float v : {-1.0f, -0.0f, 0.0f, 0.25f, 1.0f, std::nanf("")}) {
+            const float ours = diffuseFactor(v), glms = glm::max(v, 0.0f);
+            QCOMPARE(std::isnan(ours), std::isnan(glms));
+            if (!std::isnan(glms)) {
+                QCOMPARE(ours, glms);
+                QCOMPARE(std::signbit(ours), std::signbit(glms));
+            }
+        }
     }
 
     void csvHasARowPerSample()

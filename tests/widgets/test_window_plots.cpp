@@ -116,6 +116,24 @@ private slots:
         QTRY_VERIFY(panel()->plot().markers.empty());
     }
 
+    // Two lights of one hue (light 1's grey, light 4's): their dots differ in shape.
+    void severalLightsDotsDiffer()
+    {
+        m_window->document().edit([](Scene &s) { s.lights[3].enabled = true; });
+        Viewport *v = m_window->viewport();
+        QTest::mouseClick(v, Qt::LeftButton, Qt::ControlModifier, v->rect().center());
+        QVERIFY(m_window->probePanel()->isActive());
+        showPlots();
+        panel()->setKind(PlotKind::Diffuse);
+        QTRY_COMPARE(panel()->plot().markers.size(), std::size_t(2));
+        QList<QScatterSeries::MarkerShape> shapes;
+        for (QAbstractSeries *s : panel()->chartView()->chart()->series())
+            if (auto *scatter = qobject_cast<QScatterSeries *>(s))
+                shapes << scatter->markerShape();
+        QCOMPARE(shapes.size(), 2);
+        QVERIFY(shapes[0] != shapes[1]);
+    }
+
     void lobeAndEmptyPlotsSaySo()
     {
         showPlots();
