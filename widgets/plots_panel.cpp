@@ -53,7 +53,7 @@ PlotsPanel::PlotsPanel(SceneDocument *document, ProbePanel *probe, QWidget *pare
 
     m_view = new QChartView;
     m_view->setRenderHint(QPainter::Antialiasing);
-    m_view->setMinimumSize(fontMetrics().height() * 12, fontMetrics().height() * 16);
+    fitViewToFont();
     m_view->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Expanding);
     m_note = new QLabel;
     m_note->setWordWrap(true);
@@ -112,10 +112,16 @@ void PlotsPanel::changeEvent(QEvent *event)
 {
     QWidget::changeEvent(event);
     if (event->type() == QEvent::FontChange) { // the UI scale: texts and lines follow
-        m_view->setMinimumSize(fontMetrics().height() * 12, fontMetrics().height() * 16);
+        fitViewToFont();
         m_stale = true;
         schedule();
     }
+}
+
+void PlotsPanel::fitViewToFont()
+{
+    // Room for the axes' labels and a legible curve at any UI scale.
+    m_view->setMinimumSize(fontMetrics().height() * 12, fontMetrics().height() * 16);
 }
 
 void PlotsPanel::rebuild()

@@ -46,6 +46,7 @@ protected:
 private:
     void schedule(); // rebuilds once the current event is done, if shown
     void rebuild();
+    void fitViewToFont(); // the chart's minimum size, in lines of the panel's font
     void exportPlot();
 
     SceneDocument *m_document;

@@ -45,6 +45,8 @@ struct PlotSubject
     int object = 0;
     Frames frames;
     std::vector<int> lights; // the enabled ones
+    // The object's origin in eye coordinates: its centre, where no point is probed.
+    glm::vec3 centre() const { return glm::vec3(frames.modelView * glm::vec4(0, 0, 0, 1)); }
 };
 
 PlotSubject subjectOf(const Scene &scene, const ProbeResult *probe)
@@ -167,7 +169,7 @@ Plot attenuationPlot(const Scene &scene, const PlotSubject &s, int samples)
     // Far enough to show the probed distances and the lights' distances to the object's
     // centre half again, and at least 5 units.
     float far = 5.0f;
-    const glm::vec3 centre = glm::vec3(s.frames.modelView * glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+    const glm::vec3 centre = s.centre();
     std::vector<int> pointLights;
     for (int light : s.lights) {
         const LightingInputs in = lightingInputs(scene, s.frames, light);
@@ -269,7 +271,7 @@ Plot lobePlot(const Scene &scene, const PlotSubject &s, int samples)
         distance = p->terms.distance;
     } else {
         in = lightingInputs(scene, s.frames, light);
-        const glm::vec3 centre = glm::vec3(s.frames.modelView * glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+        const glm::vec3 centre = s.centre();
         L = lightVector(in.lightEye, centre);
         V = viewVector(centre, in.projection);
         N = V;
