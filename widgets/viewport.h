@@ -2,13 +2,16 @@
 // The viewport: a QOpenGLWidget around the renderer. It draws the document's scene, moves the
 // camera with the mouse (orbit: left drag; pan: right or middle drag; zoom: wheel) and runs
 // the auto-rotation. GL objects are released when the context goes away (a dock or window
-// change can give the widget a new context; initializeGL runs again then).
+// change can give the widget a new context; initializeGL runs again then). A user's program
+// is the program pipeline's to build, try, adopt or refuse (program_pipeline.h): the viewport
+// is its host (a context to build in, trial frames drawn: viewport_program_host.cpp) and
+// shows what it says (the banner, programBuilt()).
 
 #include "context_loss.h"
 #include "probe_labels.h"
+#include "program_pipeline.h"
 #include "renderer.h"
 #include "scene_document.h"
-#include "trial_process.h"
 
 #include <QElapsedTimer>
 #include <QOpenGLWidget>
@@ -23,7 +26,7 @@ namespace lb {
 
 class DifferenceScaleLabels;
 
-class Viewport : public QOpenGLWidget
+class Viewport : public QOpenGLWidget, private WindowProgramHost
 {
     Q_OBJECT
 public:
@@ -42,9 +45,9 @@ public:
     QImage renderImage(QSize pixels);
     // Why the program on screen may not draw a frame of `pixels` (its trial's estimate is over
     // the budget there); empty when it may. renderImage() draws nothing then.
-    QString tooSlowAt(QSize pixels) const;
+    QString tooSlowAt(QSize pixels) const { return m_pipeline->tooSlowAt(pixels); }
     // What the trial of the program on screen measured (none: not tried, or no loop).
-    const std::optional<TrialResult> &drawingTrial() const { return m_goodTrial; }
+    const std::optional<TrialResult> &drawingTrial() const { return m_pipeline->drawingTrial(); }
     // The mesh to draw for object `index` from now on (ObjectLoader builds it) and its
     // texture (nullptr: the checker).
     void setObject(int index, std::shared_ptr<const Mesh> mesh,
@@ -83,20 +86,19 @@ public:
 
     // Builds the user's program (now, or once the context exists) and reports it through
     // programBuilt(). When it fails, the last good program keeps drawing under a banner.
-    void compileProgram(const QString &vertexSource, const QString &fragmentSource);
+    void compileProgram(const QString &vertexSource, const QString &fragmentSource)
+    {
+        m_pipeline->submit({vertexSource, fragmentSource});
+    }
     // A program that would draw one frame at the view's size slower than this is refused
     // (tried on tiny frames first); Edit > Preferences sets it.
-    void setFrameBudget(double milliseconds) { m_frameBudgetMs = milliseconds; }
-    double frameBudget() const { return m_frameBudgetMs; }
-    // Where a program that is not ours is tried: in the trial helper (compiled and drawn
-    // there first; the window never waits; the default), in this widget's own context (when
-    // there is no helper), or not at all (for the benchmark's comparison only).
-    // $LIGHTBENCH_PROGRAM_TRIAL=helper|window|off.
-    enum class TrialMode { Helper, Window, Off };
-    void setTrialMode(TrialMode mode) { m_trialMode = mode; }
-    TrialProcess *trialProcess() const { return m_trialProcess; }
+    void setFrameBudget(double milliseconds) { m_pipeline->setFrameBudget(milliseconds); }
+    double frameBudget() const { return m_pipeline->frameBudget(); }
+    using TrialMode = ProgramPipeline::TrialMode; // $LIGHTBENCH_PROGRAM_TRIAL
+    void setTrialMode(TrialMode mode) { m_pipeline->setTrialMode(mode); }
+    TrialProcess *trialProcess() const { return m_pipeline->trialProcess(); }
     // A program is being tried in the helper: the one before it draws meanwhile.
-    bool isTrying() const { return m_candidate.has_value(); }
+    bool isTrying() const { return m_pipeline->isTrying(); }
     // For the benchmark: the bare compile and link of these sources in this context (ms).
     double rawBuildMilliseconds(const QString &vertexSource, const QString &fragmentSource,
                                 bool draw = false);
@@ -123,25 +125,36 @@ protected:
 private:
     QPoint m_pressedAt{-1, -1}; // where a plain left press began (a click, if it ends there)
     void releaseGl();           // with the context made current: the renderer's GL objects go
-    // The driver lost the context (context_loss.h): the program that drew is refused, the
-    // one before it is brought back, and the widget gets a new context.
-    void recoverLostContext();
-    // The program on screen is refused for `why`: the good one before it comes back (in this
-    // context, or in a new one when `newContext`), with a banner and programBuilt().
-    void refuseDrawingProgram(const QString &why, bool newContext);
-    double timeFrame(QSize pixels);  // one frame in a framebuffer of its own, waited for (ms)
-    void prepareCandidate();         // Renderer::prepareCandidate in such a framebuffer
-    void candidateBuilt(quint64 id); // the helper built it: built here while it is tried
-    void buildNow(const QString &vertexSource, const QString &fragmentSource, bool tryHere = false);
-    void trialFinished(quint64 id, TrialProcess::Outcome outcome, const TrialResult &result,
-                       const std::vector<Diagnostic> &diagnostics);
-    // `trial`: what the program's trial measured, kept for bigger frames (tooSlowAt).
-    void finishBuild(const ProgramBuild &build, const QString &refused, const QString &vertexSource,
-                     const QString &fragmentSource, const std::optional<TrialResult> &trial);
-    // Side B's program tried in its helper: the failed build when it does not build or is
-    // refused there; nothing when it may be built here.
-    std::optional<ProgramBuild> refusedInHelper(const QString &vertexSource,
-                                                const QString &fragmentSource);
+    // The driver lost the context (context_loss.h): the pipeline refuses the program that
+    // drew, and the widget gets a new context.
+    void recoverLostContext() { m_pipeline->contextLost(); }
+    // The pipeline's word on the program asked for: the banner (viewport_captions.cpp).
+    void showProgramState(bool failed, const QString &why, bool builtInDrawing);
+
+    // WindowProgramHost (viewport_program_host.cpp): each call makes the context current
+    // unless it already is (Current).
+    class Current;
+    ProgramBuild use(const ProgramSources &sources,
+                     const std::function<std::optional<Diagnostic>()> &trial) override;
+    double timeFrame(QSize pixels) override; // in a framebuffer of its own, waited for (ms)
+    double timeBuiltInFrame(QSize pixels) override;
+    bool hasContext() const override { return m_renderer.isInitialized(); }
+    bool hasObject() const override { return m_renderer.objectMesh() != nullptr; }
+    QSize viewPixels() const override { return size() * devicePixelRatio(); }
+    const Scene &scene() const override { return m_document->scene(); }
+    std::shared_ptr<const Mesh> objectMesh() const override
+    {
+        return m_renderer.sharedObjectMesh();
+    }
+    bool drawsUserProgram() const override { return m_renderer.hasUserProgram(); }
+    void useBuiltIn() override;
+    ProgramBuild buildCandidate(const ProgramSources &sources) override;
+    bool hasCandidate() const override { return m_renderer.hasCandidate(); }
+    void prepareCandidate() override;
+    void adoptCandidate() override;
+    void dropCandidate() override;
+    void renewContext() override;
+
     void setBanner(const QString &text);
     // The banner over a program that was refused (`why`) or did not build (`why` empty), with
     // what draws instead; the driver line (`version` 4.5, the driver's `renderer`). Whole
@@ -157,38 +170,15 @@ private:
     Renderer m_renderer;
     QString m_error;
     QString m_programName;
-    double m_frameBudgetMs = 1000.0;
-    bool m_trialWithoutObject = false; // the user program was tried before there was an object
-    TrialMode m_trialMode = TrialMode::Helper;
-    TrialProcess *m_trialProcess;
-    TrialProcess *m_sideBTrial = nullptr; // side B's, started when side B first needs it
-    // The program the helper is trying: built here once the helper built it (build), drawn
-    // once the helper accepted it.
-    struct Candidate
-    {
-        quint64 id;
-        QString vertex, fragment;
-        std::optional<ProgramBuild> build;
-    };
-    std::optional<Candidate> m_candidate;
-    quint64 m_lastTrialId = 0;
+    ProgramPipeline *m_pipeline;
     QLabel *m_banner;
     QLabel *m_compareLabel;
     bool m_draggingWipe = false;
     bool m_probing = false; // a probe click held down: the probe follows the mouse
     ProbeLabels *m_labels;
     DifferenceScaleLabels *m_differenceLabels;
-    // The last sources that linked, built again when the widget gets a new context, and the
-    // ones asked for before there was a context.
-    QString m_goodVertex, m_goodFragment;
     QString m_sideBVertex, m_sideBFragment, m_sideBName; // empty: the built-in program
-    QString m_previousVertex, m_previousFragment; // the good program before (empty: built-in)
-    // What their trials measured (none: not tried, no loop), for a bigger frame later.
-    std::optional<TrialResult> m_goodTrial, m_previousTrial;
-    bool m_recovering = false;
-    ResetStatus m_resetStatus; // the driver's word on this context
-    QString m_pendingVertex, m_pendingFragment;
-    bool m_pending = false;
+    ResetStatus m_resetStatus;                           // the driver's word on this context
     QPoint m_lastMouse;
     QTimer m_animation;
     QElapsedTimer m_clock;

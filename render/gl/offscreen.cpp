@@ -194,10 +194,11 @@ QImage OffscreenRenderer::readFrame()
 }
 
 ProgramBuild OffscreenRenderer::useProgram(const QString &vertexSource,
-                                           const QString &fragmentSource)
+                                           const QString &fragmentSource,
+                                           const std::function<std::optional<Diagnostic>()> &trial)
 {
     m_context.makeCurrent(&m_surface);
-    return m_renderer.setUserProgram(vertexSource, fragmentSource);
+    return m_renderer.setUserProgram(vertexSource, fragmentSource, trial);
 }
 
 void OffscreenRenderer::renderFrames(const Scene &scene, int frames)
@@ -233,10 +234,10 @@ TrialResult OffscreenRenderer::tryUserProgram(const Scene &scene, const QString 
                                               const QString &fragment, QSize target,
                                               double budgetMs, const TrialSizes &sizes)
 {
-    const auto time = [&](QSize size) { return timeFrame(scene, size); };
-    return tryProgram(vertex, fragment, target, budgetMs, sizes, time, [&](QSize size) {
-        return m_renderer.withBuiltIn([&] { return time(size); });
-    });
+    OffscreenProgramHost host(*this, scene);
+    return tryProgram(
+        vertex, fragment, target, budgetMs, sizes, [&](QSize size) { return host.timeFrame(size); },
+        [&](QSize size) { return host.timeBuiltInFrame(size); });
 }
 
 } // namespace lb

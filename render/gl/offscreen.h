@@ -6,6 +6,7 @@
 #include "context_loss.h"
 #include "mesh_file.h"
 #include "object_mesh.h"
+#include "program_host.h"
 #include "program_trial.h"
 #include "renderer.h"
 
@@ -32,8 +33,10 @@ public:
     // Returns an empty string on success, or why there is no OpenGL.
     QString initialize(QSize size);
     QImage render(const Scene &scene);
-    // Draws the object with the user's program from now on, if it links (Renderer).
-    ProgramBuild useProgram(const QString &vertexSource, const QString &fragmentSource);
+    // Draws the object with the user's program from now on, if it links and `trial` (when
+    // given) does not refuse it (Renderer::setUserProgram).
+    ProgramBuild useProgram(const QString &vertexSource, const QString &fragmentSource,
+                            const std::function<std::optional<Diagnostic>()> &trial = {});
     // Draws `frames` frames and waits for the GPU; for the benchmarks.
     void renderFrames(const Scene &scene, int frames);
     // Milliseconds to draw one frame of `scene` at `size` and wait for it, in a framebuffer of
@@ -86,6 +89,31 @@ private:
     // The bound framebuffer's pixels, top row first, in one image.
     QImage readFrame();
     ResetStatus m_resetStatus;
+};
+
+// An offscreen renderer as the host of a program's route (program_route.h): built there, its
+// trial frames drawn of `scene`.
+class OffscreenProgramHost : public ProgramHost
+{
+public:
+    OffscreenProgramHost(OffscreenRenderer &offscreen, const Scene &scene)
+        : m_offscreen(offscreen), m_scene(scene)
+    {
+    }
+    ProgramBuild use(const ProgramSources &sources,
+                     const std::function<std::optional<Diagnostic>()> &trial = {}) override
+    {
+        return m_offscreen.useProgram(sources.vertex, sources.fragment, trial);
+    }
+    double timeFrame(QSize pixels) override { return m_offscreen.timeFrame(m_scene, pixels); }
+    double timeBuiltInFrame(QSize pixels) override
+    {
+        return m_offscreen.renderer().withBuiltIn([&] { return timeFrame(pixels); });
+    }
+
+private:
+    OffscreenRenderer &m_offscreen;
+    const Scene &m_scene;
 };
 
 } // namespace lb

@@ -1,7 +1,7 @@
 #pragma once
 // A file this process makes new (never someone else's: the creation fails when the name is
 // taken, even by a link), writes whole, flushes to the disk and then puts in another file's
-// place in one step, or removes: what the writer (render/model/safe_write.h) makes its
+// place in one step, or removes: what the writer (render/model/io/safe_write.h) makes its
 // temporary files with. Linux: open(O_EXCL), write, fchmod, fsync, close, rename, unlink, as
 // the writer did itself. The portable layer: QFile with QIODevice::NewOnly and
 // std::filesystem::rename; it cannot flush to the disk (portable/exclusive_file.cpp).

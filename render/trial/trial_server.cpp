@@ -1,7 +1,7 @@
 #include "trial_server.h"
 
 #include "offscreen.h"
-#include "program_trial.h"
+#include "program_route.h"
 #include "trial_wire.h"
 #include "work_guard.h"
 
@@ -50,17 +50,20 @@ trialwire::TryReply tryRequest(OffscreenRenderer &offscreen, const trialwire::Tr
         std::fflush(stderr);
         std::_Exit(trialwire::kExitOutOfMemory);
     });
-    const ProgramBuild build = offscreen.useProgram(r.vertex, r.fragment);
-    reply.diagnostics = build.diagnostics;
-    if (!build.ok()) {
-        reply.built = false;
-        return reply;
-    }
-    // Built within bounds: the window may build it too while the frames are drawn here.
-    send(out, trialwire::encodeBuilt(reply));
     // The command line's sizes: this process may take its time, the window does not wait.
-    reply.result = offscreen.tryUserProgram(Scene::fromJson(r.scene), r.vertex, r.fragment,
-                                            r.target, r.budgetMs, kCommandLineTrial);
+    const Scene scene = Scene::fromJson(r.scene);
+    OffscreenProgramHost host(offscreen, scene);
+    const ProgramVerdict verdict = buildAndTry(host, {r.vertex, r.fragment}, {r.target, r.budgetMs},
+                                               [&](const ProgramBuild &build) {
+                                                   // Built within bounds: the window may build it
+                                                   // too while the frames are drawn here.
+                                                   reply.diagnostics = build.diagnostics;
+                                                   send(out, trialwire::encodeBuilt(reply));
+                                               });
+    reply.diagnostics = verdict.build.diagnostics;
+    reply.built = verdict.build.ok();
+    if (verdict.trial)
+        reply.result = *verdict.trial;
     return reply;
 }
 

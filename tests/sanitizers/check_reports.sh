@@ -8,7 +8,7 @@
 # than pass for want of them. Then one kind is expected and only counted: the import helper's
 # memory limit at work. AddressSanitizer refuses an absurd size with a report of its own
 # (allocation-size-too-big, out-of-memory), after which the helper ends with its
-# "out of memory" exit code (app/import_main.cpp), which the tests ask for. A file with no
+# "out of memory" exit code (app/cli/import_main.cpp), which the tests ask for. A file with no
 # finding in it (LeakSanitizer's "Unable to get registers from thread": a process killed by
 # its parent while its leak check ran; "Tracer caught signal", its tracer's own crash, after
 # which scripts/test runs the failed tests once more) is shown and not counted.

@@ -5,6 +5,7 @@
 #include "window_fixture.h"
 
 #include "language.h"
+#include "language_menu.h"
 #include "lesson.h"
 #include "presets.h"
 

@@ -3,7 +3,7 @@
 // shape its reader takes: CSV for a teacher's spreadsheet, JUnit XML for GitLab and Jenkins,
 // and the result files of GitHub Classroom, Gradescope and Moodle CodeRunner, which grade one
 // student per run. Pure functions from the graded rows to bytes, so that every format gives
-// the same score and a test can feed them any report; the batch (app/grade.cpp) writes them.
+// the same score and a test can feed them any report; the batch (app/cli/grade.cpp) writes them.
 //
 // Everything a student controls (a submission's name, the compiler's message quoting their
 // line, a known mistake's hint) is written with its controls escaped (message_text.h), and

@@ -1,5 +1,5 @@
 #pragma once
-// The line a grading batch keeps up to date on a terminal while it runs (app/grade.cpp shows
+// The line a grading batch keeps up to date on a terminal while it runs (app/cli/grade.cpp shows
 // it only where stderr is a terminal): how far it is, how long it took, how long is left.
 
 #include <QString>

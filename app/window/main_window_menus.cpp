@@ -2,7 +2,7 @@
 // docks) and help.
 #include "main_window.h"
 
-#include "language.h"
+#include "language_menu.h"
 
 #include "editor_panel.h"
 #include "help.h"

@@ -1,7 +1,8 @@
 #pragma once
-// The command line's and the grading child's bounds on a user's program: its compile, link
-// and trial frames run under a WorkGuard (work_guard.h) with these limits, and a program that
-// passes one is refused with this message, on its first loop's line.
+// The bounds on a user's program where the driver runs in this process (the command line, the
+// grading child: program_route.h): its compile, link and trial frames run under a WorkGuard
+// (work_guard.h) with these limits, and a program that passes one is refused with this
+// message, on its first loop's line.
 
 #include "diagnostics.h"
 #include "work_guard.h"

@@ -10,9 +10,6 @@
 
 class QCoreApplication;
 class QLocale;
-class QMenu;
-class QSettings;
-class QWidget;
 
 namespace lb {
 
@@ -34,17 +31,11 @@ QString resolvedLanguage(const QString &setting);
 // window is built: the window reads its strings once (a change asks for a restart).
 QStringList installTranslators(QCoreApplication &app, const QString &language);
 // The window's language as a QLocale, for counts written in its sentences ("9.216 Dreiecke",
-// "9 216 triângulos"). Numbers with decimals keep the point in every language (main.cpp).
+// "9 216 triângulos"). Numbers with decimals keep the point in every language (window/run_window.cpp).
 QLocale interfaceLocale();
+// The language installTranslators() installed last ("en" before).
+QString installedLanguage();
 // Takes them off again (English from then on, for what is built after).
 void removeTranslators(QCoreApplication &app);
-
-// View > Language: the four choices, the current one checked. Choosing another keeps it in
-// the settings and offers to restart; when accepted, `window` is closed (asking about
-// unsaved work as always) and restartRequested() turns true, for main() to start a new one.
-void addLanguageMenu(QMenu *view, QSettings &settings, QWidget *window);
-bool restartRequested();
-// Starts lightbench again, detached, with no arguments: the new one restores the session.
-bool restartApplication();
 
 } // namespace lb

@@ -12,7 +12,7 @@
 #include "mistake_match.h"
 #include "offscreen.h"
 #include "process_bounds.h"
-#include "program_guard.h"
+#include "program_route.h"
 #include "safe_write.h"
 #include "scene_budget.h"
 #include "submission.h"
@@ -114,47 +114,33 @@ int runGradeOne(const CommandLine &cl)
         const auto refused = [&](const Diagnostic &d) {
             return finish("reference refused", exerciseProgramText("reference", d));
         };
-        std::optional<WorkGuard> guard;
-        guard.emplace(programMemoryKB(), kProgramLimitMs,
-                      [&](WorkGuard::Limit limit, long limitKB) {
-                          refused(guardRefusal(limit, limitKB, vertex, fragment));
-                          std::fflush(nullptr);
-                          std::_Exit(0);
-                      });
-        const ProgramBuild build = offscreen.useProgram(vertex, fragment);
-        if (!build.ok())
-            return finish("reference does not build", build.log());
-        const TrialResult trial = offscreen.tryUserProgram(
-            cases.front(), vertex, fragment, spec.size, kGradingTrialBudgetMs, kCommandLineTrial);
-        if (trial.refusal)
-            return refused(*trial.refusal);
-        guard.reset();
+        OffscreenProgramHost host(offscreen, cases.front());
+        const ProgramVerdict verdict = buildAndTryWithin(
+            host, {vertex, fragment}, {spec.size, kGradingTrialBudgetMs}, refused, 0);
+        if (const Diagnostic *refusal = verdict.refusal())
+            return refused(*refusal);
+        if (!verdict.build.ok())
+            return finish("reference does not build", verdict.build.log());
         for (const Scene &c : cases)
             reference.push_back(offscreen.render(c));
     }
 
     // The driver compiles and tries the student's program within bounds: past one, the
-    // report says so and this process ends (the driver never returns to this thread).
-    std::optional<WorkGuard> guard;
-    guard.emplace(programMemoryKB(), kProgramLimitMs, [&](WorkGuard::Limit limit, long limitKB) {
-        finish("refused", diagnosticText(guardRefusal(limit, limitKB, s.vertex, s.fragment), s));
-        std::fflush(nullptr);
-        std::_Exit(0);
-    });
-    const ProgramBuild build = offscreen.useProgram(s.vertex, s.fragment);
-    if (!build.ok()) {
-        const Diagnostic *first = build.firstError();
+    // report says so and this process ends (the driver never returns to this thread). An
+    // endless loop or a program far too slow is refused before its frames are drawn (the
+    // batch's time limit ends one that hangs anyway); the frames below are that limit's.
+    OffscreenProgramHost host(offscreen, cases.front());
+    const ProgramVerdict verdict = buildAndTryWithin(
+        host, {s.vertex, s.fragment}, {spec.size, kGradingTrialBudgetMs},
+        [&](const Diagnostic &d) { finish("refused", diagnosticText(d, s)); }, 0);
+    if (const Diagnostic *refusal = verdict.refusal())
+        return finish("refused", diagnosticText(*refusal, s));
+    if (!verdict.build.ok()) {
+        const Diagnostic *first = verdict.build.firstError();
         const bool compiled = !first || first->stage == ShaderStage::Link;
         return finish(compiled ? "does not link" : "does not compile",
-                      first ? diagnosticText(*first, s) : build.log());
+                      first ? diagnosticText(*first, s) : verdict.build.log());
     }
-    // An endless loop or a program far too slow is refused before its frames are drawn
-    // (the batch's time limit ends one that hangs anyway).
-    const TrialResult trial = offscreen.tryUserProgram(
-        cases.front(), s.vertex, s.fragment, spec.size, kGradingTrialBudgetMs, kCommandLineTrial);
-    if (trial.refusal)
-        return finish("refused", diagnosticText(*trial.refusal, s));
-    guard.reset(); // the frames below are the batch's time limit's
 
     int worst = -1;
     CaseResult worstResult;

@@ -1,6 +1,6 @@
 // lightbench.1, written from the options the parser knows (cli_docs.h). The prose around
-// them says what the code does: the exit codes of main.cpp, headless.cpp and grade.cpp, the
-// settings of main.cpp, the variables the code reads that a user would set.
+// them says what the code does: the exit codes of main.cpp, run_command_line.cpp, headless.cpp and
+// grade.cpp, the settings of run_window.cpp, the variables the code reads that a user would set.
 #include "cli_docs.h"
 
 #include "command_line.h"

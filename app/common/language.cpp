@@ -3,17 +3,10 @@
 #include "catalogue.h"
 #include "lesson.h"
 
-#include <QActionGroup>
 #include <QCoreApplication>
 #include <QLibraryInfo>
 #include <QLocale>
-#include <QMenu>
-#include <QMessageBox>
-#include <QProcess>
-#include <QPushButton>
-#include <QSettings>
 #include <QTranslator>
-#include <QWidget>
 
 namespace lb {
 
@@ -21,7 +14,6 @@ const char *const kInterfaceLanguageKey = "interface/language";
 
 namespace {
 
-bool g_restartRequested = false;
 QString g_language = "en"; // the one installTranslators() installed
 
 // The locale a language's catalogues are looked up by: Portuguese as Portugal writes it, the
@@ -103,6 +95,11 @@ QLocale interfaceLocale()
     return catalogueLocale(g_language);
 }
 
+QString installedLanguage()
+{
+    return g_language;
+}
+
 void removeTranslators(QCoreApplication &app)
 {
     g_language = "en";
@@ -112,56 +109,6 @@ void removeTranslators(QCoreApplication &app)
         delete translator;
     }
     setDefaultLessonLanguage(QString());
-}
-
-void addLanguageMenu(QMenu *view, QSettings &settings, QWidget *window)
-{
-    QMenu *menu = view->addMenu(QCoreApplication::translate("lb::Language", "&Language"));
-    auto *group = new QActionGroup(menu);
-    const QString current = settings.value(kInterfaceLanguageKey).toString();
-    for (const InterfaceLanguage &language : interfaceLanguages()) {
-        QAction *a = menu->addAction(language.name);
-        a->setCheckable(true);
-        a->setChecked(language.code == current);
-        a->setData(language.code);
-        group->addAction(a);
-        QObject::connect(a, &QAction::triggered, window, [&settings, window, code = language.code] {
-            settings.setValue(kInterfaceLanguageKey, code);
-            if (resolvedLanguage(code) == g_language)
-                return; // the one the window speaks now ("System" when LANG gives it)
-            QMessageBox box(QMessageBox::Question,
-                            QCoreApplication::translate("lb::Language", "Language"),
-                            QCoreApplication::translate(
-                                "lb::Language", "The window changes its language when lightbench "
-                                                "starts again. Restart now?"),
-                            QMessageBox::NoButton, window);
-            box.setInformativeText(QCoreApplication::translate(
-                "lb::Language", "lightbench closes as it does on Quit, asking about unsaved "
-                                "work, and opens again where you were."));
-            QPushButton *now =
-                box.addButton(QCoreApplication::translate("lb::Language", "Restart &Now"),
-                              QMessageBox::AcceptRole);
-            box.addButton(QCoreApplication::translate("lb::Language", "&Later"),
-                          QMessageBox::RejectRole);
-            box.setDefaultButton(now);
-            box.exec();
-            if (box.clickedButton() != now)
-                return;
-            g_restartRequested = true;
-            if (!window->close()) // unsaved work kept, on the user's word
-                g_restartRequested = false;
-        });
-    }
-}
-
-bool restartRequested()
-{
-    return g_restartRequested;
-}
-
-bool restartApplication()
-{
-    return QProcess::startDetached(QCoreApplication::applicationFilePath(), {});
 }
 
 } // namespace lb

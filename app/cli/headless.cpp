@@ -5,8 +5,7 @@
 #include "message_text.h"
 #include "offscreen.h"
 #include "plot_output.h"
-#include "program_guard.h"
-#include "program_trial.h"
+#include "program_route.h"
 #include "resident_memory.h"
 #include "safe_write.h"
 #include "scene_budget.h"
@@ -260,32 +259,21 @@ int runHeadless(const CommandLine &cl, const Scene &requested)
     }
     if (cl.hasUserProgram()) {
         FILE *out = cl.check ? stdout : stderr;
-        // The driver compiles, links and draws a stranger's program within bounds: one that
-        // makes it take too much memory or time ends the process with a message on its line
-        // (a driver stuck in a draw or a compile never returns to this thread).
-        const WorkGuard guard(
-            programMemoryKB(), kProgramLimitMs, [&](WorkGuard::Limit limit, long limitKB) {
-                printLine(formatDiagnostic(
-                              guardRefusal(limit, limitKB, cl.vertexSource, cl.fragmentSource), cl)
-                              .toUtf8(),
-                          out);
-                std::fflush(nullptr);
-                std::_Exit(1);
-            });
-        const ProgramBuild build = offscreen.useProgram(cl.vertexSource, cl.fragmentSource);
-        for (const Diagnostic &d : build.diagnostics)
+        // The driver compiles, links and tries a stranger's program within bounds (one that
+        // makes it take too much memory or time ends the process with a message on its line:
+        // a driver stuck in a draw or a compile never returns to this thread), on small
+        // frames before a frame at --size: a program that would take longer than the budget,
+        // or hangs, exits 1 with a message on its loop's line.
+        OffscreenProgramHost host(offscreen, scene);
+        const ProgramVerdict verdict = buildAndTryWithin(
+            host, {cl.vertexSource, cl.fragmentSource}, {cl.size, cl.frameBudgetSeconds * 1000.0},
+            [&](const Diagnostic &d) { printLine(formatDiagnostic(d, cl).toUtf8(), out); }, 1);
+        for (const Diagnostic &d : verdict.build.diagnostics)
             printLine(formatDiagnostic(d, cl).toUtf8(), out);
-        if (!build.ok())
+        if (const Diagnostic *refusal = verdict.refusal())
+            printLine(formatDiagnostic(*refusal, cl).toUtf8(), out);
+        if (!verdict.accepted())
             return 1;
-        // Tried at a small size before a frame at --size: a program that would take longer
-        // than the budget, or hangs, exits 1 with a message on its loop's line.
-        const TrialResult trial =
-            offscreen.tryUserProgram(scene, cl.vertexSource, cl.fragmentSource, cl.size,
-                                     cl.frameBudgetSeconds * 1000.0, kCommandLineTrial);
-        if (trial.refusal) {
-            printLine(formatDiagnostic(*trial.refusal, cl).toUtf8(), out);
-            return 1;
-        }
         if (cl.check)
             return 0;
     }

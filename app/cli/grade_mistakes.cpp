@@ -5,7 +5,7 @@
 #include "message_text.h"
 #include "mistake_match.h"
 #include "offscreen.h"
-#include "program_guard.h"
+#include "program_route.h"
 #include "work_check.h"
 
 #include <algorithm>
@@ -48,30 +48,22 @@ MistakeSearch findMistake(OffscreenRenderer &offscreen, const Exercise &exercise
             // written once).
             const QString vertex = m.vertex.isEmpty() ? ref.vertex : m.vertex;
             const QString fragment = m.fragment.isEmpty() ? ref.fragment : m.fragment;
-            std::optional<WorkGuard> guard;
-            guard.emplace(
-                programMemoryKB(), kProgramLimitMs, [&](WorkGuard::Limit limit, long limitKB) {
-                    stop("mistake refused",
-                         mistakeText(i, m, guardRefusal(limit, limitKB, vertex, fragment)));
-                    std::fflush(nullptr);
-                    std::_Exit(0);
-                });
-            const ProgramBuild build = offscreen.useProgram(vertex, fragment);
-            if (!build.ok()) {
-                const Diagnostic *first = build.firstError();
+            OffscreenProgramHost host(offscreen, cases.front());
+            const ProgramVerdict verdict = buildAndTryWithin(
+                host, {vertex, fragment}, {spec.size, kGradingTrialBudgetMs},
+                [&](const Diagnostic &d) { stop("mistake refused", mistakeText(i, m, d)); }, 0);
+            if (const Diagnostic *refusal = verdict.refusal()) {
+                out.failure = "mistake refused";
+                out.diagnostic = mistakeText(i, m, *refusal);
+                return out;
+            }
+            if (!verdict.build.ok()) {
+                const Diagnostic *first = verdict.build.firstError();
                 out.failure = "mistake does not build";
                 out.diagnostic = first ? mistakeText(i, m, *first)
                                        : QString("mistake %1 (%2): %3")
                                              .arg(i)
-                                             .arg(escapedName(m.name), build.log());
-                return out;
-            }
-            const TrialResult trial =
-                offscreen.tryUserProgram(cases.front(), vertex, fragment, spec.size,
-                                         kGradingTrialBudgetMs, kCommandLineTrial);
-            if (trial.refusal) {
-                out.failure = "mistake refused";
-                out.diagnostic = mistakeText(i, m, *trial.refusal);
+                                             .arg(escapedName(m.name), verdict.build.log());
                 return out;
             }
         }
