@@ -4,7 +4,7 @@
 <context>
     <name>QPlatformTheme</name>
     <message>
-        <location filename="../../app/qt_standard_words.cpp" line="+12"/>
+        <location filename="../../app/common/qt_standard_words.cpp" line="+12"/>
         <source>OK</source>
         <translation type="unfinished"></translation>
     </message>
@@ -97,7 +97,7 @@
 <context>
     <name>lb::BoundedRead</name>
     <message>
-        <location filename="../../render/model/bounded_read.cpp" line="+40"/>
+        <location filename="../../render/model/io/bounded_read.cpp" line="+40"/>
         <location line="+6"/>
         <source>no such file</source>
         <translation type="unfinished"></translation>
@@ -506,7 +506,7 @@
 <context>
     <name>lb::Exercise</name>
     <message>
-        <location filename="../../render/model/exercise.cpp" line="+81"/>
+        <location filename="../../render/model/scene/exercise.cpp" line="+81"/>
         <source>not a number of points from 0 to %1, nor a list of one per case</source>
         <extracomment>%1 the largest number of points (&quot;1000000&quot;)</extracomment>
         <translation type="unfinished"></translation>
@@ -536,7 +536,7 @@
     <message>
         <location line="+11"/>
         <location line="+36"/>
-        <location filename="../../render/model/exercise_mistakes.cpp" line="+55"/>
+        <location filename="../../render/model/scene/exercise_mistakes.cpp" line="+55"/>
         <location line="+11"/>
         <location line="+20"/>
         <source>unknown field</source>
@@ -550,7 +550,7 @@
     <message>
         <location line="+9"/>
         <location line="+5"/>
-        <location filename="../../render/model/exercise_mistakes.cpp" line="-51"/>
+        <location filename="../../render/model/scene/exercise_mistakes.cpp" line="-51"/>
         <source>not %1</source>
         <extracomment>%1 the words a file may give, as it spells them (&quot;phong, gouraud, flat&quot;)</extracomment>
         <translation type="unfinished"></translation>
@@ -586,7 +586,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../render/model/exercise_mistakes.cpp" line="+11"/>
+        <location filename="../../render/model/scene/exercise_mistakes.cpp" line="+11"/>
         <source>not true or false</source>
         <translation type="unfinished"></translation>
     </message>
@@ -959,7 +959,7 @@
 <context>
     <name>lb::FileArguments</name>
     <message>
-        <location filename="../../app/file_arguments.cpp" line="+52"/>
+        <location filename="../../app/window/file_arguments.cpp" line="+52"/>
         <source>Files not opened</source>
         <translation type="unfinished"></translation>
     </message>
@@ -972,7 +972,7 @@
 <context>
     <name>lb::FileLimit</name>
     <message>
-        <location filename="../../app/settings_store.cpp" line="+32"/>
+        <location filename="../../app/window/settings_store.cpp" line="+32"/>
         <location line="+20"/>
         <source>a settings file</source>
         <translation type="unfinished"></translation>
@@ -993,7 +993,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../render/model/lesson.cpp" line="+200"/>
+        <location filename="../../render/model/scene/lesson.cpp" line="+200"/>
         <location line="+42"/>
         <source>a lesson file</source>
         <translation type="unfinished"></translation>
@@ -1004,7 +1004,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../render/model/scene_file.cpp" line="+160"/>
+        <location filename="../../render/model/scene/scene_file.cpp" line="+160"/>
         <location line="+15"/>
         <source>a scene file</source>
         <translation type="unfinished"></translation>
@@ -1015,12 +1015,12 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../render/model/shader_document.cpp" line="+19"/>
+        <location filename="../../render/model/scene/shader_document.cpp" line="+19"/>
         <source>a shader</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../render/model/texture_file.cpp" line="+31"/>
+        <location filename="../../render/model/scene/texture_file.cpp" line="+31"/>
         <source>an image</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1028,7 +1028,7 @@
 <context>
     <name>lb::Grading</name>
     <message>
-        <location filename="../../render/model/grading.cpp" line="+100"/>
+        <location filename="../../render/model/grading/grading.cpp" line="+100"/>
         <source>passed</source>
         <extracomment>the outcome of a case, at the end of a grading sheet&apos;s title</extracomment>
         <translation type="unfinished"></translation>
@@ -1069,7 +1069,7 @@
 <context>
     <name>lb::Help</name>
     <message>
-        <location filename="../../app/help.cpp" line="+52"/>
+        <location filename="../../app/window/help.cpp" line="+52"/>
         <source>%1, %2</source>
         <extracomment>shortcuts that do the same: all but the last two, &quot;Ctrl++, Ctrl+= or ...&quot;</extracomment>
         <translation type="unfinished"></translation>
@@ -1227,7 +1227,7 @@
 <context>
     <name>lb::ImageTruncation</name>
     <message>
-        <location filename="../../render/model/image_truncation.cpp" line="+33"/>
+        <location filename="../../render/model/io/image_truncation.cpp" line="+33"/>
         <source>no image data (no scan)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1366,19 +1366,19 @@
 <context>
     <name>lb::Language</name>
     <message>
-        <location filename="../../app/language.cpp" line="+56"/>
+        <location filename="../../app/common/language.cpp" line="+48"/>
         <source>&amp;System</source>
         <extracomment>View &gt; Language: follow the system&apos;s language (LANG)</extracomment>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+63"/>
+        <location filename="../../app/window/language_menu.cpp" line="+21"/>
         <source>&amp;Language</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location line="+14"/>
-        <location filename="../../app/main.cpp" line="+245"/>
+        <location filename="../../app/window/run_window.cpp" line="+131"/>
         <source>Language</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1403,7 +1403,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../app/main.cpp" line="+1"/>
+        <location filename="../../app/window/run_window.cpp" line="+1"/>
         <source>lightbench could not start again. Start it yourself to see the new language.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1411,7 +1411,7 @@
 <context>
     <name>lb::Lesson</name>
     <message>
-        <location filename="../../render/model/lesson.cpp" line="-210"/>
+        <location filename="../../render/model/scene/lesson.cpp" line="-210"/>
         <source>%1 (%2)</source>
         <extracomment>a field of a lesson file (%1, &quot;step 2: caption.de&quot;) and why it was not used (%2)</extracomment>
         <translation type="unfinished"></translation>
@@ -1489,7 +1489,7 @@
 <context>
     <name>lb::LessonActions</name>
     <message>
-        <location filename="../../app/lesson_actions.cpp" line="+44"/>
+        <location filename="../../app/window/lesson_actions.cpp" line="+44"/>
         <source>Open Recent &amp;Lesson</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1637,7 +1637,7 @@
     </message>
     <message>
         <location line="+116"/>
-        <location filename="../../app/lesson_authoring.cpp" line="+39"/>
+        <location filename="../../app/window/lesson_authoring.cpp" line="+39"/>
         <location line="+24"/>
         <source>Step %1</source>
         <extracomment>a new step&apos;s title, until the teacher renames it (saved in the lesson file)</extracomment>
@@ -1655,13 +1655,13 @@
     </message>
     <message>
         <location line="+9"/>
-        <location filename="../../app/lesson_authoring.cpp" line="-27"/>
+        <location filename="../../app/window/lesson_authoring.cpp" line="-27"/>
         <source>Lesson</source>
         <extracomment>a new lesson&apos;s title, until the teacher renames it (saved in the lesson file)</extracomment>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../app/lesson_authoring.cpp" line="+56"/>
+        <location filename="../../app/window/lesson_authoring.cpp" line="+56"/>
         <source>The step keeps its title.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1974,7 +1974,7 @@
 <context>
     <name>lb::LocalizedText</name>
     <message>
-        <location filename="../../render/model/localized_text.cpp" line="+29"/>
+        <location filename="../../render/model/scene/localized_text.cpp" line="+29"/>
         <source>not text</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2090,7 +2090,7 @@
 <context>
     <name>lb::MainWindow</name>
     <message>
-        <location filename="../../app/main_window.cpp" line="+83"/>
+        <location filename="../../app/window/main_window.cpp" line="+83"/>
         <source>Light</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2136,8 +2136,8 @@
     </message>
     <message>
         <location line="+39"/>
-        <location filename="../../app/main_window_menus.cpp" line="+53"/>
-        <location filename="../../app/main_window_unsaved.cpp" line="+92"/>
+        <location filename="../../app/window/main_window_menus.cpp" line="+53"/>
+        <location filename="../../app/window/main_window_unsaved.cpp" line="+92"/>
         <location line="+13"/>
         <source>Shader files</source>
         <translation type="unfinished"></translation>
@@ -2193,12 +2193,12 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../app/main_window_budget.cpp" line="+44"/>
+        <location filename="../../app/window/main_window_budget.cpp" line="+44"/>
         <source>More would take more memory than the scene&apos;s meshes may take on this machine: %1 for all objects together.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../app/main_window_exercise.cpp" line="+30"/>
+        <location filename="../../app/window/main_window_exercise.cpp" line="+30"/>
         <source>Side B</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2343,7 +2343,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../app/main_window_menus.cpp" line="-13"/>
+        <location filename="../../app/window/main_window_menus.cpp" line="-13"/>
         <source>&amp;File</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2364,7 +2364,7 @@
     </message>
     <message>
         <location line="+2"/>
-        <location filename="../../app/main_window_unsaved.cpp" line="-5"/>
+        <location filename="../../app/window/main_window_unsaved.cpp" line="-5"/>
         <source>Shader pairs (*.vert *.frag);;All files (*)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2640,7 +2640,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../app/main_window_presentation.cpp" line="+42"/>
+        <location filename="../../app/window/main_window_presentation.cpp" line="+42"/>
         <source>&amp;Presentation Mode</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2712,7 +2712,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../app/main_window_unsaved.cpp" line="-1"/>
+        <location filename="../../app/window/main_window_unsaved.cpp" line="-1"/>
         <source>Save the shader pair as NAME.vert and NAME.frag</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2759,7 +2759,7 @@
 <context>
     <name>lb::MeshActions</name>
     <message>
-        <location filename="../../app/mesh_actions.cpp" line="+67"/>
+        <location filename="../../app/window/mesh_actions.cpp" line="+67"/>
         <source>Open &amp;Recent Mesh</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2894,7 +2894,7 @@
 <context>
     <name>lb::MeshFile</name>
     <message>
-        <location filename="../../render/model/mesh_file.cpp" line="+41"/>
+        <location filename="../../render/model/mesh/mesh_file.cpp" line="+41"/>
         <source>%1 points, lines or broken faces skipped</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2938,7 +2938,7 @@
 <context>
     <name>lb::MessageText</name>
     <message>
-        <location filename="../../render/model/message_text.cpp" line="+80"/>
+        <location filename="../../render/model/io/message_text.cpp" line="+80"/>
         <source>... and %1 more</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2983,7 +2983,7 @@
 <context>
     <name>lb::ObjectLoader</name>
     <message>
-        <location filename="../../app/mesh_actions.cpp" line="-25"/>
+        <location filename="../../app/window/mesh_actions.cpp" line="-25"/>
         <location filename="../../render/import/object_loader.cpp" line="+285"/>
         <location line="+184"/>
         <source>Loading cancelled</source>
@@ -3018,7 +3018,7 @@
 <context>
     <name>lb::ObjectMesh</name>
     <message>
-        <location filename="../../render/model/object_mesh.cpp" line="+32"/>
+        <location filename="../../render/model/mesh/object_mesh.cpp" line="+32"/>
         <source>out of memory building %1&apos;s normals (%2 triangles)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3435,7 +3435,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+84"/>
+        <location line="+90"/>
         <source>No point probed: light %1&apos;s lobe where N faces the camera at the selected object&apos;s centre. Ctrl+click the surface to plot it at a point.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3914,7 +3914,7 @@
 <context>
     <name>lb::ProgramGuard</name>
     <message>
-        <location filename="../../app/program_guard.cpp" line="+16"/>
+        <location filename="../../render/pipeline/program_guard.cpp" line="+16"/>
         <source>the driver ran out of memory compiling or drawing this program (limit %1): a macro that doubles itself, or a program too big for it?</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3927,7 +3927,7 @@
 <context>
     <name>lb::ProgramTrial</name>
     <message>
-        <location filename="../../render/model/program_trial.cpp" line="+32"/>
+        <location filename="../../render/pipeline/program_trial.cpp" line="+32"/>
         <source>drawing one frame with this program would take about %1 at %2x%3 (measured %4 at %5x%6; the budget is %7): an endless or very long loop?</source>
         <extracomment>%1 the estimate at %2x%3 pixels, %4 the time measured at %5x%6, %7 the budget</extracomment>
         <translation type="unfinished"></translation>
@@ -3966,7 +3966,7 @@
 <context>
     <name>lb::SafeWrite</name>
     <message>
-        <location filename="../../render/model/safe_write.cpp" line="+61"/>
+        <location filename="../../render/model/io/safe_write.cpp" line="+61"/>
         <location line="+14"/>
         <source>a loop of symbolic links</source>
         <translation type="unfinished"></translation>
@@ -4005,7 +4005,7 @@
 <context>
     <name>lb::Scene</name>
     <message>
-        <location filename="../../render/model/scene.cpp" line="+412"/>
+        <location filename="../../render/model/scene/scene.cpp" line="+412"/>
         <source>cube</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4028,7 +4028,7 @@
 <context>
     <name>lb::SceneActions</name>
     <message>
-        <location filename="../../app/scene_actions.cpp" line="+34"/>
+        <location filename="../../app/window/scene_actions.cpp" line="+34"/>
         <source>Scenes (*.lbscene *.json);;All files (*)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4265,7 +4265,7 @@
 <context>
     <name>lb::SceneBudget</name>
     <message>
-        <location filename="../../render/model/scene_budget.cpp" line="+60"/>
+        <location filename="../../render/model/mesh/scene_budget.cpp" line="+60"/>
         <location line="+2"/>
         <source>%1 million</source>
         <translation type="unfinished"></translation>
@@ -4324,7 +4324,7 @@
 <context>
     <name>lb::SceneFile</name>
     <message>
-        <location filename="../../render/model/scene_file.cpp" line="-136"/>
+        <location filename="../../render/model/scene/scene_file.cpp" line="-136"/>
         <source>not true or false; read as false</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4374,7 +4374,7 @@
 <context>
     <name>lb::SceneJson</name>
     <message>
-        <location filename="../../render/model/scene_json.cpp" line="+109"/>
+        <location filename="../../render/model/scene/scene_json.cpp" line="+109"/>
         <source>w must be 0 or 1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4402,7 +4402,7 @@
     </message>
     <message>
         <location line="+2"/>
-        <location filename="../../render/model/scene_json_reader.cpp" line="+19"/>
+        <location filename="../../render/model/scene/scene_json_reader.cpp" line="+19"/>
         <source>not an object</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4442,7 +4442,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../render/model/scene_json_reader.cpp" line="-9"/>
+        <location filename="../../render/model/scene/scene_json_reader.cpp" line="-9"/>
         <source>%1 (%2)</source>
         <extracomment>a field of a scene file as the file spells it (%1, &quot;lights[2].frame&quot;, never translated) and why it was not used (%2)</extracomment>
         <translation type="unfinished"></translation>
@@ -4454,7 +4454,7 @@
     </message>
     <message>
         <location line="+14"/>
-        <location filename="../../render/model/scene_json_reader.h" line="+47"/>
+        <location filename="../../render/model/scene/scene_json_reader.h" line="+47"/>
         <source>not a number</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4465,7 +4465,7 @@
     </message>
     <message>
         <location line="+11"/>
-        <location filename="../../render/model/scene_json_reader.h" line="+9"/>
+        <location filename="../../render/model/scene/scene_json_reader.h" line="+9"/>
         <source>out of range, clamped</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4480,7 +4480,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../render/model/scene_json_reader.h" line="+0"/>
+        <location filename="../../render/model/scene/scene_json_reader.h" line="+0"/>
         <source>not a whole number</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4509,7 +4509,7 @@
 <context>
     <name>lb::ScenePhrases</name>
     <message>
-        <location filename="../../app/scene_phrases.cpp" line="+29"/>
+        <location filename="../../app/window/scene_phrases.cpp" line="+29"/>
         <source>showing normal</source>
         <comment>show</comment>
         <extracomment>status line: the built-in program draws N as a colour</extracomment>
@@ -4653,7 +4653,7 @@
 <context>
     <name>lb::SettingsAutosave</name>
     <message>
-        <location filename="../../app/settings_autosave.cpp" line="+20"/>
+        <location filename="../../app/window/settings_autosave.cpp" line="+20"/>
         <source>%1 is not a settings file</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4676,7 +4676,7 @@
 <context>
     <name>lb::SettingsStore</name>
     <message>
-        <location filename="../../app/settings_store.cpp" line="-24"/>
+        <location filename="../../app/window/settings_store.cpp" line="-24"/>
         <source>no temporary folder for the settings (%1): they are written directly</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4694,7 +4694,7 @@
 <context>
     <name>lb::ShaderDocument</name>
     <message>
-        <location filename="../../render/model/shader_document.cpp" line="+201"/>
+        <location filename="../../render/model/scene/shader_document.cpp" line="+201"/>
         <source>Cannot open %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5049,7 +5049,7 @@
 <context>
     <name>lb::Submission</name>
     <message>
-        <location filename="../../app/submission.cpp" line="+69"/>
+        <location filename="../../app/common/submission.cpp" line="+69"/>
         <source>%1: a folder needs one NAME.vert and one NAME.frag (it has %2 and %3)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5152,7 +5152,7 @@
 <context>
     <name>lb::TextureFile</name>
     <message>
-        <location filename="../../render/model/texture_file.cpp" line="+4"/>
+        <location filename="../../render/model/scene/texture_file.cpp" line="+4"/>
         <source>%1: an empty file, not an image</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5234,7 +5234,7 @@
 <context>
     <name>lb::UnsavedWork</name>
     <message>
-        <location filename="../../app/unsaved_work.cpp" line="+17"/>
+        <location filename="../../app/window/unsaved_work.cpp" line="+17"/>
         <source>the shader file %1</source>
         <extracomment>goes into &quot;Save the changes to %1 before ...?&quot;</extracomment>
         <translation type="unfinished"></translation>
@@ -5317,23 +5317,23 @@
 <context>
     <name>lb::Viewport</name>
     <message>
-        <location filename="../../widgets/viewport.cpp" line="+39"/>
+        <location filename="../../widgets/viewport.cpp" line="+33"/>
         <source>Left drag: orbit - right or middle drag: pan - wheel: zoom - R: reset view</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+84"/>
+        <location filename="../../render/pipeline/program_pipeline.cpp" line="+52"/>
         <source>the OpenGL context was lost while this program drew (the driver reset the GPU: an endless or very long loop?)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+45"/>
+        <location line="+58"/>
         <source>drawing one frame with this program would take about %1 at %2x%3 (the budget is %4): an endless or very long loop?</source>
         <extracomment>%1 a duration (0.8 s); %2x%3 the view&apos;s size in pixels; %4 the frame budget</extracomment>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location filename="../../widgets/viewport.cpp" line="+78"/>
         <source>The renderer could not start:
 %1</source>
         <translation type="unfinished"></translation>
@@ -5534,7 +5534,7 @@
 <context>
     <name>lb::WorkCheck</name>
     <message>
-        <location filename="../../app/work_check.cpp" line="+42"/>
+        <location filename="../../app/common/work_check.cpp" line="+42"/>
         <source>killed by signal %1 (%2)</source>
         <extracomment>%2 is the C library&apos;s name of the signal, in English (&quot;Segmentation fault&quot;)</extracomment>
         <translation type="unfinished"></translation>

@@ -4,7 +4,7 @@
 <context>
     <name>QPlatformTheme</name>
     <message>
-        <location filename="../../app/qt_standard_words.cpp" line="+12"/>
+        <location filename="../../app/common/qt_standard_words.cpp" line="+12"/>
         <source>OK</source>
         <translation>OK</translation>
     </message>
@@ -97,7 +97,7 @@
 <context>
     <name>lb::BoundedRead</name>
     <message>
-        <location filename="../../render/model/bounded_read.cpp" line="+40"/>
+        <location filename="../../render/model/io/bounded_read.cpp" line="+40"/>
         <location line="+6"/>
         <source>no such file</source>
         <translation>ficheiro inexistente</translation>
@@ -506,7 +506,7 @@
 <context>
     <name>lb::Exercise</name>
     <message>
-        <location filename="../../render/model/exercise.cpp" line="+81"/>
+        <location filename="../../render/model/scene/exercise.cpp" line="+81"/>
         <source>not a number of points from 0 to %1, nor a list of one per case</source>
         <extracomment>%1 the largest number of points (&quot;1000000&quot;)</extracomment>
         <translation>nem um número de pontos de 0 a %1, nem uma lista com um por caso</translation>
@@ -536,7 +536,7 @@
     <message>
         <location line="+11"/>
         <location line="+36"/>
-        <location filename="../../render/model/exercise_mistakes.cpp" line="+55"/>
+        <location filename="../../render/model/scene/exercise_mistakes.cpp" line="+55"/>
         <location line="+11"/>
         <location line="+20"/>
         <source>unknown field</source>
@@ -550,7 +550,7 @@
     <message>
         <location line="+9"/>
         <location line="+5"/>
-        <location filename="../../render/model/exercise_mistakes.cpp" line="-51"/>
+        <location filename="../../render/model/scene/exercise_mistakes.cpp" line="-51"/>
         <source>not %1</source>
         <extracomment>%1 the words a file may give, as it spells them (&quot;phong, gouraud, flat&quot;)</extracomment>
         <translation>não é nenhum destes: %1</translation>
@@ -586,7 +586,7 @@
         <translation>o parâmetro &apos;%1&apos; não existe; os parâmetros válidos são %2</translation>
     </message>
     <message>
-        <location filename="../../render/model/exercise_mistakes.cpp" line="+11"/>
+        <location filename="../../render/model/scene/exercise_mistakes.cpp" line="+11"/>
         <source>not true or false</source>
         <translation>não é true nem false</translation>
     </message>
@@ -965,7 +965,7 @@
 <context>
     <name>lb::FileArguments</name>
     <message>
-        <location filename="../../app/file_arguments.cpp" line="+52"/>
+        <location filename="../../app/window/file_arguments.cpp" line="+52"/>
         <source>Files not opened</source>
         <translation>Ficheiros não abertos</translation>
     </message>
@@ -993,7 +993,7 @@
         <translation>o limite de memória da importação</translation>
     </message>
     <message>
-        <location filename="../../render/model/lesson.cpp" line="+200"/>
+        <location filename="../../render/model/scene/lesson.cpp" line="+200"/>
         <location line="+42"/>
         <source>a lesson file</source>
         <translation>um ficheiro de lição</translation>
@@ -1004,7 +1004,7 @@
         <translation>a lição</translation>
     </message>
     <message>
-        <location filename="../../render/model/scene_file.cpp" line="+160"/>
+        <location filename="../../render/model/scene/scene_file.cpp" line="+160"/>
         <location line="+15"/>
         <source>a scene file</source>
         <translation>um ficheiro de cena</translation>
@@ -1015,17 +1015,17 @@
         <translation>a cena</translation>
     </message>
     <message>
-        <location filename="../../render/model/shader_document.cpp" line="+19"/>
+        <location filename="../../render/model/scene/shader_document.cpp" line="+19"/>
         <source>a shader</source>
         <translation>um shader</translation>
     </message>
     <message>
-        <location filename="../../render/model/texture_file.cpp" line="+31"/>
+        <location filename="../../render/model/scene/texture_file.cpp" line="+31"/>
         <source>an image</source>
         <translation>uma imagem</translation>
     </message>
     <message>
-        <location filename="../../app/settings_store.cpp" line="+32"/>
+        <location filename="../../app/window/settings_store.cpp" line="+32"/>
         <location line="+20"/>
         <source>a settings file</source>
         <translation>um ficheiro de definições</translation>
@@ -1034,7 +1034,7 @@
 <context>
     <name>lb::Grading</name>
     <message>
-        <location filename="../../render/model/grading.cpp" line="+100"/>
+        <location filename="../../render/model/grading/grading.cpp" line="+100"/>
         <source>passed</source>
         <extracomment>the outcome of a case, at the end of a grading sheet&apos;s title</extracomment>
         <translation>passou</translation>
@@ -1075,7 +1075,7 @@
 <context>
     <name>lb::Help</name>
     <message>
-        <location filename="../../app/help.cpp" line="+52"/>
+        <location filename="../../app/window/help.cpp" line="+52"/>
         <source>%1, %2</source>
         <extracomment>shortcuts that do the same: all but the last two, &quot;Ctrl++, Ctrl+= or ...&quot;</extracomment>
         <translation>%1, %2</translation>
@@ -1233,7 +1233,7 @@
 <context>
     <name>lb::ImageTruncation</name>
     <message>
-        <location filename="../../render/model/image_truncation.cpp" line="+33"/>
+        <location filename="../../render/model/io/image_truncation.cpp" line="+33"/>
         <source>no image data (no scan)</source>
         <translation>sem dados de imagem (nenhum scan)</translation>
     </message>
@@ -1372,19 +1372,19 @@
 <context>
     <name>lb::Language</name>
     <message>
-        <location filename="../../app/language.cpp" line="+56"/>
+        <location filename="../../app/common/language.cpp" line="+48"/>
         <source>&amp;System</source>
         <extracomment>View &gt; Language: follow the system&apos;s language (LANG)</extracomment>
         <translation>&amp;Sistema</translation>
     </message>
     <message>
-        <location line="+63"/>
+        <location filename="../../app/window/language_menu.cpp" line="+21"/>
         <source>&amp;Language</source>
         <translation>&amp;Idioma</translation>
     </message>
     <message>
         <location line="+14"/>
-        <location filename="../../app/main.cpp" line="+245"/>
+        <location filename="../../app/window/run_window.cpp" line="+131"/>
         <source>Language</source>
         <translation>Idioma</translation>
     </message>
@@ -1409,7 +1409,7 @@
         <translation>&amp;Mais Tarde</translation>
     </message>
     <message>
-        <location filename="../../app/main.cpp" line="+1"/>
+        <location filename="../../app/window/run_window.cpp" line="+1"/>
         <source>lightbench could not start again. Start it yourself to see the new language.</source>
         <translation>O lightbench não conseguiu voltar a arrancar. Inicie-o para ver o novo idioma.</translation>
     </message>
@@ -1417,7 +1417,7 @@
 <context>
     <name>lb::Lesson</name>
     <message>
-        <location filename="../../render/model/lesson.cpp" line="-210"/>
+        <location filename="../../render/model/scene/lesson.cpp" line="-210"/>
         <source>%1 (%2)</source>
         <extracomment>a field of a lesson file (%1, &quot;step 2: caption.de&quot;) and why it was not used (%2)</extracomment>
         <translation>%1 (%2)</translation>
@@ -1495,7 +1495,7 @@
 <context>
     <name>lb::LessonActions</name>
     <message>
-        <location filename="../../app/lesson_actions.cpp" line="+44"/>
+        <location filename="../../app/window/lesson_actions.cpp" line="+44"/>
         <source>Open Recent &amp;Lesson</source>
         <translation>Abrir Lição Recen&amp;te</translation>
     </message>
@@ -1643,7 +1643,7 @@
     </message>
     <message>
         <location line="+116"/>
-        <location filename="../../app/lesson_authoring.cpp" line="+39"/>
+        <location filename="../../app/window/lesson_authoring.cpp" line="+39"/>
         <location line="+24"/>
         <source>Step %1</source>
         <extracomment>a new step&apos;s title, until the teacher renames it (saved in the lesson file)</extracomment>
@@ -1661,13 +1661,13 @@
     </message>
     <message>
         <location line="+9"/>
-        <location filename="../../app/lesson_authoring.cpp" line="-27"/>
+        <location filename="../../app/window/lesson_authoring.cpp" line="-27"/>
         <source>Lesson</source>
         <extracomment>a new lesson&apos;s title, until the teacher renames it (saved in the lesson file)</extracomment>
         <translation>Lição</translation>
     </message>
     <message>
-        <location filename="../../app/lesson_authoring.cpp" line="+56"/>
+        <location filename="../../app/window/lesson_authoring.cpp" line="+56"/>
         <source>The step keeps its title.</source>
         <translation>O passo mantém o seu título.</translation>
     </message>
@@ -1980,7 +1980,7 @@
 <context>
     <name>lb::LocalizedText</name>
     <message>
-        <location filename="../../render/model/localized_text.cpp" line="+29"/>
+        <location filename="../../render/model/scene/localized_text.cpp" line="+29"/>
         <source>not text</source>
         <translation>não é texto</translation>
     </message>
@@ -2096,7 +2096,7 @@
 <context>
     <name>lb::MainWindow</name>
     <message>
-        <location filename="../../app/main_window.cpp" line="+83"/>
+        <location filename="../../app/window/main_window.cpp" line="+83"/>
         <source>Light</source>
         <translation>Luz</translation>
     </message>
@@ -2142,8 +2142,8 @@
     </message>
     <message>
         <location line="+39"/>
-        <location filename="../../app/main_window_menus.cpp" line="+53"/>
-        <location filename="../../app/main_window_unsaved.cpp" line="+92"/>
+        <location filename="../../app/window/main_window_menus.cpp" line="+53"/>
+        <location filename="../../app/window/main_window_unsaved.cpp" line="+92"/>
         <location line="+13"/>
         <source>Shader files</source>
         <translation>Ficheiros de shader</translation>
@@ -2199,12 +2199,12 @@
         <translation>%1[*] - lightbench</translation>
     </message>
     <message>
-        <location filename="../../app/main_window_budget.cpp" line="+44"/>
+        <location filename="../../app/window/main_window_budget.cpp" line="+44"/>
         <source>More would take more memory than the scene&apos;s meshes may take on this machine: %1 for all objects together.</source>
         <translation>Mais do que isto exigiria mais memória do que as malhas da cena podem ocupar nesta máquina: %1 para todos os objetos juntos.</translation>
     </message>
     <message>
-        <location filename="../../app/main_window_exercise.cpp" line="+72"/>
+        <location filename="../../app/window/main_window_exercise.cpp" line="+72"/>
         <source>Check cancelled.</source>
         <translation>Verificação cancelada.</translation>
     </message>
@@ -2350,7 +2350,7 @@
         <translation>Caso %1 na vista de diferença (tecla C: as outras vistas de comparação; &quot;Voltar à minha cena&quot; no painel Exercício)</translation>
     </message>
     <message>
-        <location filename="../../app/main_window_menus.cpp" line="-13"/>
+        <location filename="../../app/window/main_window_menus.cpp" line="-13"/>
         <source>&amp;File</source>
         <translation>&amp;Ficheiro</translation>
     </message>
@@ -2371,7 +2371,7 @@
     </message>
     <message>
         <location line="+2"/>
-        <location filename="../../app/main_window_unsaved.cpp" line="-5"/>
+        <location filename="../../app/window/main_window_unsaved.cpp" line="-5"/>
         <source>Shader pairs (*.vert *.frag);;All files (*)</source>
         <translation>Pares de shaders (*.vert *.frag);;Todos os ficheiros (*)</translation>
     </message>
@@ -2647,7 +2647,7 @@
         <translation>Ajustar a &amp;Janela ao Ecrã</translation>
     </message>
     <message>
-        <location filename="../../app/main_window_presentation.cpp" line="+42"/>
+        <location filename="../../app/window/main_window_presentation.cpp" line="+42"/>
         <source>&amp;Presentation Mode</source>
         <translation>Modo de A&amp;presentação</translation>
     </message>
@@ -2719,7 +2719,7 @@
         <translation>O editor precisa de %1 px nesta escala: Ver &gt; Editor de shaders mostra-o</translation>
     </message>
     <message>
-        <location filename="../../app/main_window_unsaved.cpp" line="-1"/>
+        <location filename="../../app/window/main_window_unsaved.cpp" line="-1"/>
         <source>Save the shader pair as NAME.vert and NAME.frag</source>
         <translation>Guardar o par de shaders como NAME.vert e NAME.frag</translation>
     </message>
@@ -2766,7 +2766,7 @@
 <context>
     <name>lb::MeshActions</name>
     <message>
-        <location filename="../../app/mesh_actions.cpp" line="+67"/>
+        <location filename="../../app/window/mesh_actions.cpp" line="+67"/>
         <source>Open &amp;Recent Mesh</source>
         <translation>Abrir Malha Rece&amp;nte</translation>
     </message>
@@ -2901,7 +2901,7 @@
 <context>
     <name>lb::MeshFile</name>
     <message>
-        <location filename="../../render/model/mesh_file.cpp" line="+41"/>
+        <location filename="../../render/model/mesh/mesh_file.cpp" line="+41"/>
         <source>%1 points, lines or broken faces skipped</source>
         <translation>%1 pontos, linhas ou faces defeituosas ignorados</translation>
     </message>
@@ -2945,7 +2945,7 @@
 <context>
     <name>lb::MessageText</name>
     <message>
-        <location filename="../../render/model/message_text.cpp" line="+80"/>
+        <location filename="../../render/model/io/message_text.cpp" line="+80"/>
         <source>... and %1 more</source>
         <translation>... e mais %1</translation>
     </message>
@@ -3010,7 +3010,7 @@
         <translation>%1: não carregado: o seu objeto foi removido</translation>
     </message>
     <message>
-        <location filename="../../app/mesh_actions.cpp" line="-25"/>
+        <location filename="../../app/window/mesh_actions.cpp" line="-25"/>
         <location filename="../../render/import/object_loader.cpp" line="+2"/>
         <location line="+184"/>
         <source>Loading cancelled</source>
@@ -3025,7 +3025,7 @@
 <context>
     <name>lb::ObjectMesh</name>
     <message>
-        <location filename="../../render/model/object_mesh.cpp" line="+32"/>
+        <location filename="../../render/model/mesh/object_mesh.cpp" line="+32"/>
         <source>out of memory building %1&apos;s normals (%2 triangles)</source>
         <translation>sem memória para construir as normais de %1 (%2 triângulos)</translation>
     </message>
@@ -3442,7 +3442,7 @@
         <translation>Gravar este gráfico como imagem PNG ou SVG, ou as suas amostras como CSV</translation>
     </message>
     <message>
-        <location line="+84"/>
+        <location line="+90"/>
         <source>No point probed: light %1&apos;s lobe where N faces the camera at the selected object&apos;s centre. Ctrl+click the surface to plot it at a point.</source>
         <translation>Nenhum ponto sondado: o lóbulo da luz %1 onde N aponta para a câmara no centro do objeto selecionado. Ctrl+clique na superfície para o desenhar num ponto.</translation>
     </message>
@@ -3924,7 +3924,7 @@
 <context>
     <name>lb::ProgramGuard</name>
     <message>
-        <location filename="../../app/program_guard.cpp" line="+16"/>
+        <location filename="../../render/pipeline/program_guard.cpp" line="+16"/>
         <source>the driver ran out of memory compiling or drawing this program (limit %1): a macro that doubles itself, or a program too big for it?</source>
         <translation>o controlador ficou sem memória ao compilar ou desenhar este programa (limite %1): uma macro que se duplica a si própria, ou um programa grande demais para ele?</translation>
     </message>
@@ -3937,7 +3937,7 @@
 <context>
     <name>lb::ProgramTrial</name>
     <message>
-        <location filename="../../render/model/program_trial.cpp" line="+32"/>
+        <location filename="../../render/pipeline/program_trial.cpp" line="+32"/>
         <source>drawing one frame with this program would take about %1 at %2x%3 (measured %4 at %5x%6; the budget is %7): an endless or very long loop?</source>
         <extracomment>%1 the estimate at %2x%3 pixels, %4 the time measured at %5x%6, %7 the budget</extracomment>
         <translation>desenhar um fotograma com este programa demoraria cerca de %1 a %2x%3 (medido: %4 a %5x%6; o orçamento é %7): um ciclo infinito ou muito longo?</translation>
@@ -3976,7 +3976,7 @@
 <context>
     <name>lb::SafeWrite</name>
     <message>
-        <location filename="../../render/model/safe_write.cpp" line="+61"/>
+        <location filename="../../render/model/io/safe_write.cpp" line="+61"/>
         <location line="+14"/>
         <source>a loop of symbolic links</source>
         <translation>um ciclo de ligações simbólicas</translation>
@@ -4015,7 +4015,7 @@
 <context>
     <name>lb::Scene</name>
     <message>
-        <location filename="../../render/model/scene.cpp" line="+412"/>
+        <location filename="../../render/model/scene/scene.cpp" line="+412"/>
         <source>cube</source>
         <translation>cubo</translation>
     </message>
@@ -4038,7 +4038,7 @@
 <context>
     <name>lb::SceneActions</name>
     <message>
-        <location filename="../../app/scene_actions.cpp" line="+34"/>
+        <location filename="../../app/window/scene_actions.cpp" line="+34"/>
         <source>Scenes (*.lbscene *.json);;All files (*)</source>
         <translation>Cenas (*.lbscene *.json);;Todos os ficheiros (*)</translation>
     </message>
@@ -4275,7 +4275,7 @@
 <context>
     <name>lb::SceneBudget</name>
     <message>
-        <location filename="../../render/model/scene_budget.cpp" line="+60"/>
+        <location filename="../../render/model/mesh/scene_budget.cpp" line="+60"/>
         <location line="+2"/>
         <source>%1 million</source>
         <translation>%1 milhões</translation>
@@ -4334,7 +4334,7 @@
 <context>
     <name>lb::SceneFile</name>
     <message>
-        <location filename="../../render/model/scene_file.cpp" line="-136"/>
+        <location filename="../../render/model/scene/scene_file.cpp" line="-136"/>
         <source>not true or false; read as false</source>
         <translation>não é true nem false; lido como false</translation>
     </message>
@@ -4384,7 +4384,7 @@
 <context>
     <name>lb::SceneJson</name>
     <message>
-        <location filename="../../render/model/scene_json.cpp" line="+109"/>
+        <location filename="../../render/model/scene/scene_json.cpp" line="+109"/>
         <source>w must be 0 or 1</source>
         <translation>w tem de ser 0 ou 1</translation>
     </message>
@@ -4412,7 +4412,7 @@
     </message>
     <message>
         <location line="+2"/>
-        <location filename="../../render/model/scene_json_reader.cpp" line="+19"/>
+        <location filename="../../render/model/scene/scene_json_reader.cpp" line="+19"/>
         <source>not an object</source>
         <translation>não é um objeto</translation>
     </message>
@@ -4452,7 +4452,7 @@
         <translation>não são 1 a 4 números</translation>
     </message>
     <message>
-        <location filename="../../render/model/scene_json_reader.cpp" line="-9"/>
+        <location filename="../../render/model/scene/scene_json_reader.cpp" line="-9"/>
         <source>%1 (%2)</source>
         <extracomment>a field of a scene file as the file spells it (%1, &quot;lights[2].frame&quot;, never translated) and why it was not used (%2)</extracomment>
         <translation>%1 (%2)</translation>
@@ -4464,7 +4464,7 @@
     </message>
     <message>
         <location line="+14"/>
-        <location filename="../../render/model/scene_json_reader.h" line="+47"/>
+        <location filename="../../render/model/scene/scene_json_reader.h" line="+47"/>
         <source>not a number</source>
         <translation>não é um número</translation>
     </message>
@@ -4475,7 +4475,7 @@
     </message>
     <message>
         <location line="+11"/>
-        <location filename="../../render/model/scene_json_reader.h" line="+9"/>
+        <location filename="../../render/model/scene/scene_json_reader.h" line="+9"/>
         <source>out of range, clamped</source>
         <translation>fora do intervalo, ajustado ao limite</translation>
     </message>
@@ -4490,7 +4490,7 @@
         <translation>não é uma string</translation>
     </message>
     <message>
-        <location filename="../../render/model/scene_json_reader.h" line="+0"/>
+        <location filename="../../render/model/scene/scene_json_reader.h" line="+0"/>
         <source>not a whole number</source>
         <translation>não é um número inteiro</translation>
     </message>
@@ -4521,7 +4521,7 @@
 <context>
     <name>lb::ScenePhrases</name>
     <message>
-        <location filename="../../app/scene_phrases.cpp" line="+29"/>
+        <location filename="../../app/window/scene_phrases.cpp" line="+29"/>
         <source>showing normal</source>
         <comment>show</comment>
         <extracomment>status line: the built-in program draws N as a colour</extracomment>
@@ -4665,7 +4665,7 @@
 <context>
     <name>lb::SettingsAutosave</name>
     <message>
-        <location filename="../../app/settings_autosave.cpp" line="+20"/>
+        <location filename="../../app/window/settings_autosave.cpp" line="+20"/>
         <source>%1 is not a settings file</source>
         <translation>%1 não é um ficheiro de definições</translation>
     </message>
@@ -4688,7 +4688,7 @@
 <context>
     <name>lb::SettingsStore</name>
     <message>
-        <location filename="../../app/settings_store.cpp" line="-24"/>
+        <location filename="../../app/window/settings_store.cpp" line="-24"/>
         <source>no temporary folder for the settings (%1): they are written directly</source>
         <translation>sem pasta temporária para as definições (%1): são escritas diretamente</translation>
     </message>
@@ -4706,7 +4706,7 @@
 <context>
     <name>lb::ShaderDocument</name>
     <message>
-        <location filename="../../render/model/shader_document.cpp" line="+201"/>
+        <location filename="../../render/model/scene/shader_document.cpp" line="+201"/>
         <source>Cannot open %1</source>
         <translation>Não é possível abrir %1</translation>
     </message>
@@ -5061,7 +5061,7 @@
 <context>
     <name>lb::Submission</name>
     <message>
-        <location filename="../../app/submission.cpp" line="+69"/>
+        <location filename="../../app/common/submission.cpp" line="+69"/>
         <source>%1: a folder needs one NAME.vert and one NAME.frag (it has %2 and %3)</source>
         <translation>%1: uma pasta precisa de um NAME.vert e de um NAME.frag (tem %2 e %3)</translation>
     </message>
@@ -5164,7 +5164,7 @@
 <context>
     <name>lb::TextureFile</name>
     <message>
-        <location filename="../../render/model/texture_file.cpp" line="+4"/>
+        <location filename="../../render/model/scene/texture_file.cpp" line="+4"/>
         <source>%1: an empty file, not an image</source>
         <translation>%1: um ficheiro vazio, não uma imagem</translation>
     </message>
@@ -5246,7 +5246,7 @@
 <context>
     <name>lb::UnsavedWork</name>
     <message>
-        <location filename="../../app/unsaved_work.cpp" line="+17"/>
+        <location filename="../../app/window/unsaved_work.cpp" line="+17"/>
         <source>the shader file %1</source>
         <extracomment>goes into &quot;Save the changes to %1 before ...?&quot;</extracomment>
         <translation>o ficheiro de shader %1</translation>
@@ -5329,23 +5329,23 @@
 <context>
     <name>lb::Viewport</name>
     <message>
-        <location filename="../../widgets/viewport.cpp" line="+39"/>
+        <location filename="../../widgets/viewport.cpp" line="+33"/>
         <source>Left drag: orbit - right or middle drag: pan - wheel: zoom - R: reset view</source>
         <translation>Arrastar com o botão esquerdo: orbitar - arrastar com o direito ou o do meio: deslocar - roda: zoom - R: repor a vista</translation>
     </message>
     <message>
-        <location line="+84"/>
+        <location filename="../../render/pipeline/program_pipeline.cpp" line="+52"/>
         <source>the OpenGL context was lost while this program drew (the driver reset the GPU: an endless or very long loop?)</source>
         <translation>o contexto OpenGL perdeu-se enquanto este programa desenhava (o controlador reiniciou a GPU: um ciclo infinito ou muito longo?)</translation>
     </message>
     <message>
-        <location line="+45"/>
+        <location line="+58"/>
         <source>drawing one frame with this program would take about %1 at %2x%3 (the budget is %4): an endless or very long loop?</source>
         <extracomment>%1 a duration (0.8 s); %2x%3 the view&apos;s size in pixels; %4 the frame budget</extracomment>
         <translation>desenhar um fotograma com este programa demoraria cerca de %1 a %2x%3 (o orçamento é %4): um ciclo infinito ou muito longo?</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location filename="../../widgets/viewport.cpp" line="+78"/>
         <source>The renderer could not start:
 %1</source>
         <translation>Não foi possível iniciar o renderizador:
@@ -5547,7 +5547,7 @@
 <context>
     <name>lb::WorkCheck</name>
     <message>
-        <location filename="../../app/work_check.cpp" line="+42"/>
+        <location filename="../../app/common/work_check.cpp" line="+42"/>
         <source>killed by signal %1 (%2)</source>
         <extracomment>%2 is the C library&apos;s name of the signal, in English (&quot;Segmentation fault&quot;)</extracomment>
         <translation>terminado pelo sinal %1 (%2)</translation>
