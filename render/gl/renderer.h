@@ -129,6 +129,8 @@ public:
     void setMaxPerDraw(std::uint64_t most);
 
 private:
+    // GL counts rows from the bottom; `rect` has its origin top-left in a frame `height` high.
+    void setViewportRect(QRect rect, int height);
     const BuiltProgram &objectProgram(const Scene &scene);
     const BuiltProgram &sideBProgram(const Scene &sceneB);
     // The built-in program of the scene's shading, compiled for the lights the scene uses

@@ -21,6 +21,33 @@
 
 namespace lb {
 
+// Where a loop starts (for, while, do).
+struct SourcePlace
+{
+    int line = 0; // 1-based
+    int column = 0;
+};
+
+// What the loop reader finds in one stage's text, all from one macro expansion of it: the
+// build's warnings, the trial's refusals and places and the window's short-loop test below
+// are each answered from this. The last few readings are kept (per thread), so a program's
+// text is read once on its way however many of them ask.
+struct LoopReading
+{
+    struct Endless
+    {
+        Diagnostic warning;
+        QString refusal; // the program's, for a loop certain never to end (no condition,
+                         // always true, or as good as endless); empty for the others
+    };
+    std::vector<Endless> endless;
+    std::vector<SourcePlace> places; // every loop, in order
+    // Every loop a counted `for` (no while, no do), the longest of this many steps.
+    bool onlyCounted = true;
+    double longestCounted = 0.0;
+};
+LoopReading readLoops(const QString &source, ShaderStage stage = ShaderStage::Fragment);
+
 std::vector<Diagnostic> endlessLoopWarnings(const QString &source, ShaderStage stage);
 // Only the loops that are certain never to end once reached: no condition or an always-true
 // one, and no way out (not those whose condition might be false the first time). As warnings
@@ -31,16 +58,12 @@ std::vector<Diagnostic> certainEndlessLoops(const QString &source, ShaderStage s
 
 // Where the source's loops start (for, while, do), in order: where a program that draws too
 // slowly most likely spends its time.
-struct SourcePlace
-{
-    int line = 0; // 1-based
-    int column = 0;
-};
-std::vector<SourcePlace> loopPlaces(const QString &source);
+std::vector<SourcePlace> loopPlaces(const QString &source,
+                                    ShaderStage stage = ShaderStage::Fragment);
 
 // Whether every loop of the source is a counted one of at most `maxSteps` steps (a literal or
 // a #define'd bound: `for (int i = 0; i < MAX_LIGHTS; ++i)`); true without loops.
 // (A source whose macros pass the expansion's bound is read as far as the bound.)
-bool onlyShortLoops(const QString &source, int maxSteps);
+bool onlyShortLoops(const QString &source, int maxSteps, ShaderStage stage = ShaderStage::Fragment);
 
 } // namespace lb

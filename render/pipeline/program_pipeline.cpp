@@ -182,7 +182,8 @@ void ProgramPipeline::candidateBuilt(quint64 id)
     // frame with nothing rasterized), so the first frame after the answer does not; only when
     // the vertex stage, which does run, has no loop to be slow in (or only short counted ones).
     m_candidate->build = m_host->buildCandidate(m_candidate->sources);
-    if (m_candidate->build->ok() && onlyShortLoops(m_candidate->sources.vertex, kShortLoopSteps))
+    if (m_candidate->build->ok() &&
+        onlyShortLoops(m_candidate->sources.vertex, kShortLoopSteps, ShaderStage::Vertex))
         m_host->prepareCandidate();
 }
 

@@ -55,7 +55,7 @@ Diagnostic refusalAt(const QString &vertex, const QString &fragment, const QStri
     d.message = message;
     for (const auto &[stage, text] :
          {std::pair{ShaderStage::Fragment, fragment}, std::pair{ShaderStage::Vertex, vertex}}) {
-        const std::vector<SourcePlace> loops = loopPlaces(text);
+        const std::vector<SourcePlace> loops = loopPlaces(text, stage);
         if (!loops.empty()) {
             d.stage = stage;
             d.line = loops.front().line;
@@ -169,10 +169,11 @@ TrialResult tryProgram(const QString &vertex, const QString &fragment, QSize tar
         }
     }
     if (r.estimatedMs > budgetMs)
-        r.refusal = refusalAt(
-            vertex, fragment,
-            slowFrameMessage(r.estimatedMs, target, confirmed, confirm, budgetMs,
-                             !loopPlaces(vertex).empty() || !loopPlaces(fragment).empty()));
+        r.refusal =
+            refusalAt(vertex, fragment,
+                      slowFrameMessage(r.estimatedMs, target, confirmed, confirm, budgetMs,
+                                       !loopPlaces(vertex, ShaderStage::Vertex).empty() ||
+                                           !loopPlaces(fragment, ShaderStage::Fragment).empty()));
     return r;
 }
 
