@@ -265,11 +265,18 @@ int runHeadless(const CommandLine &cl, const Scene &requested)
         // frames before a frame at --size: a program that would take longer than the budget,
         // or hangs, exits 1 with a message on its loop's line.
         OffscreenProgramHost host(offscreen, scene);
+        bool said = false; // the build's diagnostics, said once it linked (before the trial)
+        const auto sayBuild = [&](const ProgramBuild &build) {
+            for (const Diagnostic &d : build.diagnostics)
+                printLine(formatDiagnostic(d, cl).toUtf8(), out);
+            said = true;
+        };
         const ProgramVerdict verdict = buildAndTryWithin(
             host, {cl.vertexSource, cl.fragmentSource}, {cl.size, cl.frameBudgetSeconds * 1000.0},
-            [&](const Diagnostic &d) { printLine(formatDiagnostic(d, cl).toUtf8(), out); }, 1);
-        for (const Diagnostic &d : verdict.build.diagnostics)
-            printLine(formatDiagnostic(d, cl).toUtf8(), out);
+            [&](const Diagnostic &d) { printLine(formatDiagnostic(d, cl).toUtf8(), out); }, 1,
+            sayBuild);
+        if (!said)
+            sayBuild(verdict.build);
         if (const Diagnostic *refusal = verdict.refusal())
             printLine(formatDiagnostic(*refusal, cl).toUtf8(), out);
         if (!verdict.accepted())

@@ -81,7 +81,7 @@ GlShader compile(QOpenGLExtraFunctions &gl, ShaderStage stage, const QString &so
                        .arg(kMaxSourceCharacters / 1024));
         return {};
     }
-    if (std::optional<Diagnostic> refusal = macroExpansionRefusal(source, stage)) {
+    if (std::optional<Diagnostic> refusal = readLoops(source, stage).expansionRefusal) {
         // Mesa's preprocessor expands macros without a bound (issue 29: 946 bytes, 24 GB):
         // every route to the driver (the window, --check, --render, --grade) comes here.
         build.diagnostics.push_back(*refusal);

@@ -148,6 +148,11 @@ LoopReading readNow(const QString &source, ShaderStage stage)
 {
     const MacroExpansion tokens = expandMacros(source, stage);
     LoopReading reading;
+    if (tokens.refusal) {
+        reading.expansionRefusal = tokens.refusal;
+        reading.onlyCounted = false;
+        return reading;
+    }
     reading.endless = endlessLoops(tokens, stage);
     readPlaces(tokens.tokens, reading);
     return reading;
@@ -158,21 +163,25 @@ LoopReading readNow(const QString &source, ShaderStage stage)
 LoopReading readLoops(const QString &source, ShaderStage stage)
 {
     // The last few texts read, newest first: one program's two stages, and the one before.
+    // A reading holds its messages in the language installed when it was read: one of them,
+    // as the catalogue says it now, is part of the key, so a new catalogue reads again.
     struct Kept
     {
         QString source;
         ShaderStage stage;
+        QString language;
         LoopReading reading;
     };
     constexpr std::size_t kKept = 4;
     thread_local std::vector<Kept> kept;
+    const QString language = unconditionalLoopTexts(true).warning;
     for (std::size_t i = 0; i < kept.size(); ++i)
-        if (kept[i].stage == stage && kept[i].source == source) {
+        if (kept[i].stage == stage && kept[i].language == language && kept[i].source == source) {
             std::rotate(kept.begin(), kept.begin() + std::ptrdiff_t(i),
                         kept.begin() + std::ptrdiff_t(i) + 1);
             return kept.front().reading;
         }
-    kept.insert(kept.begin(), Kept{source, stage, readNow(source, stage)});
+    kept.insert(kept.begin(), Kept{source, stage, language, readNow(source, stage)});
     if (kept.size() > kKept)
         kept.pop_back();
     return kept.front().reading;

@@ -17,6 +17,7 @@
 
 #include "diagnostics.h"
 
+#include <optional>
 #include <vector>
 
 namespace lb {
@@ -45,6 +46,9 @@ struct LoopReading
     // Every loop a counted `for` (no while, no do), the longest of this many steps.
     bool onlyCounted = true;
     double longestCounted = 0.0;
+    // The macros grew past the expansion's bound (macro_expansion.h): the text is refused
+    // before anything reads it, and nothing above is read (no loops, not only counted ones).
+    std::optional<Diagnostic> expansionRefusal;
 };
 LoopReading readLoops(const QString &source, ShaderStage stage = ShaderStage::Fragment);
 

@@ -28,7 +28,8 @@ ProgramVerdict buildAndTry(ProgramHost &host, const ProgramSources &sources,
 ProgramVerdict buildAndTryWithin(ProgramHost &host, const ProgramSources &sources,
                                  const ProgramTarget &target,
                                  const std::function<void(const Diagnostic &)> &pastLimit,
-                                 int exitCode)
+                                 int exitCode,
+                                 const std::function<void(const ProgramBuild &)> &linked)
 {
     const WorkGuard guard(
         programMemoryKB(), kProgramLimitMs, [&](WorkGuard::Limit limit, long limitKB) {
@@ -36,7 +37,7 @@ ProgramVerdict buildAndTryWithin(ProgramHost &host, const ProgramSources &source
             std::fflush(nullptr);
             std::_Exit(exitCode);
         });
-    return buildAndTry(host, sources, target);
+    return buildAndTry(host, sources, target, linked);
 }
 
 } // namespace lb

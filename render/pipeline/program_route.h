@@ -40,10 +40,12 @@ ProgramVerdict buildAndTry(ProgramHost &host, const ProgramSources &sources,
 
 // The same under a bound on the driver's memory and time (work_guard.h; kProgramLimitMs): a
 // program that passes one ends the process, after `pastLimit` is given the refusal on its
-// first loop's line, with `exitCode` (the driver never returns to this thread).
+// first loop's line, with `exitCode` (the driver never returns to this thread). `linked` says
+// the build's warnings before the trial, which is where the bound is most often passed.
 ProgramVerdict buildAndTryWithin(ProgramHost &host, const ProgramSources &sources,
                                  const ProgramTarget &target,
                                  const std::function<void(const Diagnostic &)> &pastLimit,
-                                 int exitCode);
+                                 int exitCode,
+                                 const std::function<void(const ProgramBuild &)> &linked = {});
 
 } // namespace lb

@@ -78,7 +78,7 @@ std::optional<Diagnostic> refusalWithoutFrames(const QString &vertex, const QStr
     // without one (issue 29): refused before anything else reads them.
     for (const auto &[stage, text] :
          {std::pair{ShaderStage::Vertex, vertex}, std::pair{ShaderStage::Fragment, fragment}})
-        if (std::optional<Diagnostic> refusal = macroExpansionRefusal(text, stage))
+        if (std::optional<Diagnostic> refusal = readLoops(text, stage).expansionRefusal)
             return refusal;
     // A loop with no way out never finishes a frame: a GPU driver hangs on it, Mesa drops it
     // and draws garbage. No need to draw to know.
