@@ -2,12 +2,14 @@
 // trials run in the host, as when there is no helper): what draws, what is refused and why,
 // what comes back, and what the window is told, for a program asked for before the context,
 // one that does not build, one too slow, a view that grows, a lost context, an object that
-// arrives after the trial.
+// arrives after the trial. And the loop reading they share: read once, in the language of the
+// moment.
+#include "loops.h"
 #include "program_pipeline.h"
 #include "scene.h"
 
-#include <QSignalSpy>
 #include <QTest>
+#include <QTranslator>
 
 using namespace lb;
 
@@ -75,6 +77,17 @@ public:
     void adoptCandidate() override {}
     void dropCandidate() override {}
     void renewContext() override { ++renewed; }
+};
+
+// Every message in brackets: a catalogue that says something else than English.
+class BracketTranslator : public QTranslator
+{
+public:
+    bool isEmpty() const override { return false; }
+    QString translate(const char *, const char *source, const char *, int) const override
+    {
+        return QString("[%1]").arg(QString::fromUtf8(source));
+    }
 };
 
 struct Told
@@ -226,6 +239,29 @@ private slots:
         QCOMPARE(host.builds, builds + 1);
         pipeline.objectArrived(); // tried on it now: not again
         QCOMPARE(host.builds, builds + 1);
+    }
+
+    // A reading is kept (the build, the trial and the window ask of the same text), but
+    // its messages are the catalogue's of the moment: a new catalogue reads again.
+    void theSharedLoopReadingFollowsTheCatalogue()
+    {
+        const QString endless = "void main() { for (;;) { } }\n";
+        const auto english = endlessLoopWarnings(endless, ShaderStage::Fragment);
+        QCOMPARE(english.size(), std::size_t(1));
+        QVERIFY(!english.front().message.startsWith('['));
+        QCOMPARE(endlessLoopWarnings(endless, ShaderStage::Fragment).front().message,
+                 english.front().message);
+        BracketTranslator brackets;
+        QCoreApplication::installTranslator(&brackets);
+        const auto translated = endlessLoopWarnings(endless, ShaderStage::Fragment);
+        QCoreApplication::removeTranslator(&brackets);
+        QVERIFY2(translated.front().message.startsWith('['),
+                 qPrintable(translated.front().message));
+        QCOMPARE(endlessLoopWarnings(endless, ShaderStage::Fragment).front().message,
+                 english.front().message);
+        // The stage is part of what is kept: the vertex stage's reading is its own.
+        QCOMPARE(endlessLoopWarnings(endless, ShaderStage::Vertex).front().stage,
+                 ShaderStage::Vertex);
     }
 
     void withTrialsOffAProgramIsDrawnUntried()
