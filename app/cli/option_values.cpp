@@ -1,7 +1,7 @@
 #include "option_values.h"
 
-#include "message_text.h"
 #include "command_line.h"
+#include "message_text.h"
 #include "scene.h"
 #include "shader_document.h"
 

@@ -31,7 +31,8 @@ QString resolvedLanguage(const QString &setting);
 // window is built: the window reads its strings once (a change asks for a restart).
 QStringList installTranslators(QCoreApplication &app, const QString &language);
 // The window's language as a QLocale, for counts written in its sentences ("9.216 Dreiecke",
-// "9 216 triângulos"). Numbers with decimals keep the point in every language (window/run_window.cpp).
+// "9 216 triângulos"). Numbers with decimals keep the point in every language
+// (window/run_window.cpp).
 QLocale interfaceLocale();
 // The language installTranslators() installed last ("en" before).
 QString installedLanguage();

@@ -54,7 +54,6 @@ void ObjectLoader::textureDecoded(const QString &path, const TextureFileRead &re
                     s.objects[std::size_t(index)].textureFile = path;
                     s.objects[std::size_t(index)].texture = true;
                 }
-
         });
     }
 
