@@ -1,5 +1,6 @@
 #include "offscreen.h"
 
+#include "program_route.h"
 #include "texture_file.h"
 
 #include <QCoreApplication>
@@ -235,9 +236,7 @@ TrialResult OffscreenRenderer::tryUserProgram(const Scene &scene, const QString 
                                               double budgetMs, const TrialSizes &sizes)
 {
     OffscreenProgramHost host(*this, scene);
-    return tryProgram(
-        vertex, fragment, target, budgetMs, sizes, [&](QSize size) { return host.timeFrame(size); },
-        [&](QSize size) { return host.timeBuiltInFrame(size); });
+    return tryIn(host, {vertex, fragment}, {target, budgetMs, sizes});
 }
 
 } // namespace lb

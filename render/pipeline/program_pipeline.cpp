@@ -2,6 +2,7 @@
 
 #include "loops.h"
 #include "presets.h"
+#include "program_route.h"
 #include "scene.h"
 
 #include <QCoreApplication>
@@ -158,10 +159,7 @@ void ProgramPipeline::buildNow(const ProgramSources &sources, bool tryHere)
     QString refused;
     std::optional<TrialResult> measured; // none: nothing was drawn to time it
     const auto trial = [&]() -> std::optional<Diagnostic> {
-        const TrialResult result = tryProgram(
-            sources.vertex, sources.fragment, target, m_frameBudgetMs, kWindowTrial,
-            [this](QSize pixels) { return m_host->timeFrame(pixels); },
-            [this](QSize pixels) { return m_host->timeBuiltInFrame(pixels); });
+        const TrialResult result = tryIn(*m_host, sources, {target, m_frameBudgetMs, kWindowTrial});
         if (result.refusal)
             refused = result.refusal->message;
         else

@@ -8,6 +8,14 @@
 
 namespace lb {
 
+TrialResult tryIn(ProgramHost &host, const ProgramSources &sources, const ProgramTarget &target)
+{
+    return tryProgram(
+        sources.vertex, sources.fragment, target.size, target.budgetMs, target.sizes,
+        [&](QSize pixels) { return host.timeFrame(pixels); },
+        [&](QSize pixels) { return host.timeBuiltInFrame(pixels); });
+}
+
 ProgramVerdict buildAndTry(ProgramHost &host, const ProgramSources &sources,
                            const ProgramTarget &target,
                            const std::function<void(const ProgramBuild &)> &linked)
@@ -18,10 +26,7 @@ ProgramVerdict buildAndTry(ProgramHost &host, const ProgramSources &sources,
         return verdict;
     if (linked)
         linked(verdict.build);
-    verdict.trial = tryProgram(
-        sources.vertex, sources.fragment, target.size, target.budgetMs, target.sizes,
-        [&](QSize pixels) { return host.timeFrame(pixels); },
-        [&](QSize pixels) { return host.timeBuiltInFrame(pixels); });
+    verdict.trial = tryIn(host, sources, target);
     return verdict;
 }
 

@@ -31,6 +31,10 @@ struct ProgramTarget
     TrialSizes sizes = kCommandLineTrial;
 };
 
+// The trial of `sources` (program_trial.h) on frames `host` draws, the built-in program's as
+// the reference: the one way every route times a program.
+TrialResult tryIn(ProgramHost &host, const ProgramSources &sources, const ProgramTarget &target);
+
 // Builds `sources` in `host` and, when they link, calls `linked` (the helper tells the window
 // it may build them too) and tries them for `target`. The host draws with them from then on,
 // refused or not: the caller stops at a refusal.
