@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Frames per second at 1280x720 under Xvfb (Mesa llvmpipe here), for the default scene, a
-# generated 1M-triangle torus, 16 objects of 1,024 triangles beside one sphere of as many, and
+# generated 1M-triangle torus, 16 and 32 objects of 1,024 triangles each beside the same
+# spheres as one mesh (the same triangles on the same pixels: what each object costs), and
 # the default scene textured (the checker, an image, an image with mipmaps). Each figure is the
 # median of RUNS processes; each process
 # draws FRAMES frames offscreen through the same renderer as the window (--bench-frames).
@@ -37,11 +38,18 @@ measure "default (sphere, Phong shading)"
 measure "default, Gouraud" --shading gouraud
 measure "torus 1M triangles, Phong shading" --shape torus --tessellation 500
 measure "torus 1M triangles, Gouraud" --shape torus --tessellation 500 --shading gouraud
-sixteen=$(mktemp --suffix=.json)
-trap 'rm -f "$sixteen"' EXIT
-python3 "$(dirname "${BASH_SOURCE[0]}")/sixteen_objects.py" "$sixteen"
-measure "16 spheres of 1,024 triangles, 16 materials (4x4 grid)" --scene "$sixteen"
+grid=$(mktemp -d)
+trap 'rm -rf "$grid"' EXIT
+for n in 16 32; do
+    python3 "$(dirname "${BASH_SOURCE[0]}")/grid_objects.py" "$grid/$n.json" $n
+    python3 "$(dirname "${BASH_SOURCE[0]}")/grid_objects.py" "$grid/$n-merged.json" $n \
+        --merged "$grid/$n.obj"
+done
+measure "16 spheres of 1,024 triangles, 16 materials (4x4 grid)" --scene "$grid/16.json"
+measure "the same 16 spheres as one mesh (one draw)" --scene "$grid/16-merged.json"
 measure "one sphere of as many triangles" --tessellation 128
+measure "32 spheres of 1,024 triangles, 32 materials (8x4 grid)" --scene "$grid/32.json"
+measure "the same 32 spheres as one mesh (one draw)" --scene "$grid/32-merged.json"
 examples="$(dirname "${BASH_SOURCE[0]}")/../resources/examples"
 measure "default, texture on (the checker, linear)" --texture on
 measure "default, 512x512 image, linear" --texture-file "$examples/bricks.png"
