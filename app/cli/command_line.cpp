@@ -177,6 +177,13 @@ CommandLineResult parseCommandLine(const QStringList &arguments)
     QCommandLineOption gradeName("grade-name", "Its name in the report.", "NAME");
     gradeName.setFlags(QCommandLineOption::HiddenFromHelp);
     parser.addOption(gradeName);
+    // The batch's frames, drawn once by a child of their own and read by the others.
+    QCommandLineOption gradePrepare("grade-prepare", "Draws the batch's frames into DIR.", "DIR");
+    gradePrepare.setFlags(QCommandLineOption::HiddenFromHelp);
+    parser.addOption(gradePrepare);
+    QCommandLineOption gradeFrames("grade-frames", "The batch's frames, from DIR.", "DIR");
+    gradeFrames.setFlags(QCommandLineOption::HiddenFromHelp);
+    parser.addOption(gradeFrames);
     parser.setApplicationDescription(
         "lightbench: a lighting workbench for the Phong and Blinn-Phong models.\n"
         "Without --render, --probe or --bench-frames it opens the window.");

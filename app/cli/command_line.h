@@ -64,10 +64,12 @@ struct CommandLine
     // the defaults (headless).
     // --grade SUBMISSION... --exercise FILE [--report FILE|- [--report-format WORD]]
     // [--sheets DIR] [--seed N] (grade.h); --grade-one SUBMISSION is one submission, in the
-    // batch's child process.
+    // batch's child process; --grade-prepare DIR draws the frames the batch hands its
+    // children in DIR (--grade-frames DIR), in a child of its own (grade_frames.h).
     bool grade = false;
     QStringList submissions;
     QString gradeOne, gradeName; // --grade-name: the name the batch gives it (unique)
+    QString gradePrepare, gradeFrames;
     QString exercisePath, reportPath, sheetsDir; // reportPath "-": standard output
     int reportFormat = 0; // a ReportFormat (grading_formats.h): csv unless --report-format
     std::uint32_t seed = 1;
@@ -79,7 +81,7 @@ struct CommandLine
     bool headless() const
     {
         return !renderPath.isEmpty() || probe || plot || benchFrames > 0 || check ||
-               !saveScenePath.isEmpty() || grade || !gradeOne.isEmpty();
+               !saveScenePath.isEmpty() || grade || !gradeOne.isEmpty() || !gradePrepare.isEmpty();
     }
     // The scene options given, on top of `scene`.
     void applyTo(Scene &scene) const;

@@ -18,16 +18,20 @@ QString parseGradeOptions(const QCommandLineParser &parser, CommandLine &cl)
     if (given("grade-one")) {
         cl.gradeOne = value("grade-one");
         cl.gradeName = value("grade-name");
+        cl.gradeFrames = value("grade-frames");
     }
+    cl.gradePrepare = value("grade-prepare");
+    const bool child = !cl.gradeOne.isEmpty() || !cl.gradePrepare.isEmpty();
     for (const char *option : {"exercise", "report", "report-format", "sheets", "seed"})
-        if (given(option) && !cl.grade && cl.gradeOne.isEmpty())
+        if (given(option) && !cl.grade && !child)
             return bad(option, "goes with --grade");
-    if (!cl.grade && cl.gradeOne.isEmpty())
+    if (!cl.grade && !child)
         return {};
     // The exercise's scene and each submission's program are what is graded: any other
     // option would be ignored without a word.
-    const QStringList allowed{"grade",  "grade-one",     "grade-name", "exercise",
-                              "report", "report-format", "sheets",     "seed"};
+    const QStringList allowed{"grade",        "grade-one", "grade-name", "grade-prepare",
+                              "grade-frames", "exercise",  "report",     "report-format",
+                              "sheets",       "seed"};
     for (const QString &name : parser.optionNames())
         if (!allowed.contains(name))
             return QString("--%1: does nothing with --grade (the exercise's scene and each "

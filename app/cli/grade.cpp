@@ -2,6 +2,7 @@
 
 #include "lightbench_version.h"
 
+#include "grade_frames.h"
 #include "grade_outputs.h"
 #include "grading_files.h"
 #include "grading_formats.h"
@@ -12,12 +13,16 @@
 #include "submission.h"
 #include "work_check.h"
 
+#include <QCoreApplication>
 #include <QDir>
 #include <QElapsedTimer>
 #include <QEventLoop>
 #include <QFileInfo>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QProcess>
 #include <QSet>
+#include <QTemporaryDir>
 #include <QThread>
 #include <QTimer>
 
@@ -251,6 +256,41 @@ int runGrade(const CommandLine &cl)
     });
     ticks.start(1000);
     std::function<void()> startMore;
+    // The reference's and the mistakes' frames, drawn once for the batch by a child of their
+    // own before the submissions' (grade_frames.h); without them each child draws its own.
+    QTemporaryDir framesDir;
+    QString frames;
+    bool preparing = toRun.size() > 1 && framesDir.isValid();
+    const auto prepare = [&] {
+        auto *p = new QProcess(&children);
+        auto *timer = new QTimer(p);
+        timer->setSingleShot(true);
+        QObject::connect(timer, &QTimer::timeout, p, [p] { p->kill(); });
+        QObject::connect(
+            p, &QProcess::finished, &loop,
+            [&, p](int exitCode, QProcess::ExitStatus status) {
+                const QJsonObject said =
+                    QJsonDocument::fromJson(p->readAllStandardOutput().trimmed()).object();
+                if (status == QProcess::NormalExit && exitCode == 0 &&
+                    said["status"].toString() == "prepared")
+                    frames = framesDir.path();
+                p->deleteLater();
+                preparing = false;
+                startMore();
+            },
+            Qt::QueuedConnection);
+        QObject::connect(p, &QProcess::errorOccurred, p, [p](QProcess::ProcessError error) {
+            if (error == QProcess::FailedToStart) // no finished() follows: say it ended
+                emit p->finished(-1, QProcess::CrashExit);
+        });
+        p->setStandardErrorFile(QProcess::nullDevice());
+        // This program, never LIGHTBENCH_GRADE_PROGRAM's stand-in (the tests' children): the
+        // frames are the real program's whatever plays the children.
+        p->start(QCoreApplication::applicationFilePath(),
+                 {"--grade-prepare", framesDir.path(), "--exercise", cl.exercisePath, "--seed",
+                  QString::number(cl.seed)});
+        timer->start(preparationTimeLimitMs(spec, int(e.file.exercise->mistakes.size())));
+    };
     const auto ended = [&](int i, QProcess *p) {
         GradedSubmission &row = rows[std::size_t(i)];
         row.seconds = double(clock.elapsed() - startedAt[std::size_t(i)]) / 1000.0;
@@ -289,6 +329,8 @@ int runGrade(const CommandLine &cl)
         startMore(); // or the end, when nothing is left to start and nothing runs
     };
     startMore = [&] {
+        if (preparing)
+            return; // its end starts the submissions
         while (running < parallel && next < toRun.size() && batchFailure.isEmpty() &&
                !StopSignals::received()) {
             const int i = toRun[next++];
@@ -298,6 +340,8 @@ int runGrade(const CommandLine &cl)
                 "--exercise",  cl.exercisePath, "--seed",       QString::number(cl.seed)};
             if (!cl.sheetsDir.isEmpty())
                 args << "--sheets" << cl.sheetsDir;
+            if (!frames.isEmpty())
+                args << "--grade-frames" << frames;
             auto *timer = new QTimer(p);
             timer->setSingleShot(true);
             QObject::connect(timer, &QTimer::timeout, p, [&rows, i, p] {
@@ -332,7 +376,8 @@ int runGrade(const CommandLine &cl)
         loop.quit();
     });
     if (!toRun.empty()) {
-        QTimer::singleShot(0, &loop, startMore); // from inside the loop, so its quit counts
+        QTimer::singleShot(0, &loop, preparing ? std::function<void()>(prepare) : startMore);
+        // (from inside the loop, so that its quit counts)
         loop.exec();
     }
     ticks.stop();

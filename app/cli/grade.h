@@ -26,5 +26,7 @@ void quietStandardErrorForGrade(const CommandLine &commandLine);
 int failGrade(const CommandLine &commandLine, const QString &error, int exitCode = 2);
 // One submission, in the process the batch starts: its result as one line of JSON.
 int runGradeOne(const CommandLine &commandLine);
+// The frames the batch hands its children, drawn once (grade_frames.h).
+int runGradePrepare(const CommandLine &commandLine);
 
 } // namespace lb

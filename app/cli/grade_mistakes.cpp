@@ -24,67 +24,92 @@ QString mistakeText(int index, const ExerciseMistake &m, const Diagnostic &d)
 
 } // namespace
 
+MistakeSearch useMistakeProgram(OffscreenRenderer &offscreen, const Exercise &exercise, int index,
+                                const Scene &firstCase, const GradeStop &stop)
+{
+    MistakeSearch out;
+    const ExerciseMistake &m = exercise.mistakes[std::size_t(index)];
+    const ExerciseReference &ref = exercise.reference;
+    if (m.isBuiltIn()) {
+        offscreen.renderer().clearUserProgram();
+        return out;
+    }
+    // A stage the mistake leaves out is the reference's (a mistake in one stage is written
+    // once).
+    const QString vertex = m.vertex.isEmpty() ? ref.vertex : m.vertex;
+    const QString fragment = m.fragment.isEmpty() ? ref.fragment : m.fragment;
+    OffscreenProgramHost host(offscreen, firstCase);
+    const ProgramVerdict verdict = buildAndTryWithin(
+        host, {vertex, fragment}, {exercise.grading.size, kGradingTrialBudgetMs},
+        [&](const Diagnostic &d) { stop("mistake refused", mistakeText(index, m, d)); }, 0);
+    if (const Diagnostic *refusal = verdict.refusal()) {
+        out.failure = "mistake refused";
+        out.diagnostic = mistakeText(index, m, *refusal);
+    } else if (!verdict.build.ok()) {
+        const Diagnostic *first = verdict.build.firstError();
+        out.failure = "mistake does not build";
+        out.diagnostic = first ? mistakeText(index, m, *first)
+                               : QString("mistake %1 (%2): %3")
+                                     .arg(index)
+                                     .arg(escapedName(m.name), verdict.build.log());
+    }
+    return out;
+}
+
+QImage drawMistake(OffscreenRenderer &offscreen, const Exercise &exercise, int index,
+                   const Scene &gradingCase)
+{
+    return offscreen.render(mistakeScene(referenceCase(gradingCase, exercise.reference),
+                                         exercise.mistakes[std::size_t(index)]));
+}
+
 MistakeSearch findMistake(OffscreenRenderer &offscreen, const Exercise &exercise,
                           const std::vector<Scene> &cases, const std::vector<FailingCase> &failing,
-                          const std::function<void(const QString &, const QString &)> &stop)
+                          const GradeStop &stop, const PreparedMistakeFrames &prepared)
 {
     MistakeSearch out;
     const GradingSpec &spec = exercise.grading;
-    const ExerciseReference &ref = exercise.reference;
     if (failing.empty() || exercise.mistakes.empty())
         return out;
     double referenceShare = 0.0;
-    for (const FailingCase &f : failing)
+    std::vector<std::size_t> failingCases;
+    for (const FailingCase &f : failing) {
         referenceShare += f.result.shareWithin;
+        failingCases.push_back(f.index);
+    }
     referenceShare /= double(failing.size());
 
     std::vector<MistakeShares> shares;
     for (int i = 0; i < int(exercise.mistakes.size()); ++i) {
-        const ExerciseMistake &m = exercise.mistakes[std::size_t(i)];
-        if (m.isBuiltIn()) {
-            offscreen.renderer().clearUserProgram();
-        } else {
-            // A stage the mistake leaves out is the reference's (a mistake in one stage is
-            // written once).
-            const QString vertex = m.vertex.isEmpty() ? ref.vertex : m.vertex;
-            const QString fragment = m.fragment.isEmpty() ? ref.fragment : m.fragment;
-            OffscreenProgramHost host(offscreen, cases.front());
-            const ProgramVerdict verdict = buildAndTryWithin(
-                host, {vertex, fragment}, {spec.size, kGradingTrialBudgetMs},
-                [&](const Diagnostic &d) { stop("mistake refused", mistakeText(i, m, d)); }, 0);
-            if (const Diagnostic *refusal = verdict.refusal()) {
+        std::optional<std::vector<QImage>> frames =
+            prepared ? prepared(i, failingCases) : std::nullopt;
+        if (!frames) {
+            const MistakeSearch use =
+                useMistakeProgram(offscreen, exercise, i, cases.front(), stop);
+            if (!use.failure.isEmpty())
+                return use;
+            frames.emplace();
+            for (const FailingCase &f : failing)
+                frames->push_back(drawMistake(offscreen, exercise, i, cases[f.index]));
+            if (offscreen.wasReset()) {
                 out.failure = "mistake refused";
-                out.diagnostic = mistakeText(i, m, *refusal);
-                return out;
-            }
-            if (!verdict.build.ok()) {
-                const Diagnostic *first = verdict.build.firstError();
-                out.failure = "mistake does not build";
-                out.diagnostic = first ? mistakeText(i, m, *first)
-                                       : QString("mistake %1 (%2): %3")
-                                             .arg(i)
-                                             .arg(escapedName(m.name), verdict.build.log());
+                out.diagnostic = QString("mistake %1 (%2): the driver reset the context")
+                                     .arg(i)
+                                     .arg(escapedName(exercise.mistakes[std::size_t(i)].name));
                 return out;
             }
         }
         double share = 0.0;
         SignatureAgreement signature;
-        for (const FailingCase &f : failing) {
-            const QImage frame =
-                offscreen.render(mistakeScene(referenceCase(cases[f.index], ref), m));
+        for (std::size_t k = 0; k < failing.size(); ++k) {
+            const FailingCase &f = failing[k];
+            const QImage &frame = (*frames)[k];
             share += measureCase(f.student, frame, kBackgroundPixel, spec.tolerance, spec.passShare)
                          .shareWithin;
             const SignatureAgreement a =
                 signatureAgreement(f.student, f.reference, frame, spec.tolerance);
             signature.differing += a.differing;
             signature.agreeing += a.agreeing;
-        }
-        if (offscreen.wasReset()) {
-            out.failure = "mistake refused";
-            out.diagnostic = QString("mistake %1 (%2): the driver reset the context")
-                                 .arg(i)
-                                 .arg(escapedName(m.name));
-            return out;
         }
         shares.push_back(
             {share / double(failing.size()),

@@ -38,10 +38,27 @@ struct MistakeSearch
 };
 
 // `stop` says a report with this status and diagnostic and ends the process: a program past
-// its bounds never returns from the driver. Draws with other programs than the student's from
-// then on.
+// its bounds never returns from the driver.
+using GradeStop = std::function<void(const QString &, const QString &)>;
+
+// Mistake `index`'s program made the one `offscreen` draws with (built and tried within the
+// grading bounds; the built-in program for a built-in mistake): empty, or the status and
+// diagnostic of a mistake that cannot be drawn (MistakeSearch's failure and diagnostic).
+MistakeSearch useMistakeProgram(OffscreenRenderer &offscreen, const Exercise &exercise, int index,
+                                const Scene &firstCase, const GradeStop &stop);
+// Mistake `index`'s frame of `gradingCase`, with its program in use.
+QImage drawMistake(OffscreenRenderer &offscreen, const Exercise &exercise, int index,
+                   const Scene &gradingCase);
+
+// Frames the batch drew once (grade_frames.h): mistake `index`'s frame of each case asked
+// for, or nothing when one of them is not there to read.
+using PreparedMistakeFrames = std::function<std::optional<std::vector<QImage>>(
+    int index, const std::vector<std::size_t> &cases)>;
+
+// Draws with other programs than the student's from then on, unless `prepared` has every
+// frame asked for.
 MistakeSearch findMistake(OffscreenRenderer &offscreen, const Exercise &exercise,
                           const std::vector<Scene> &cases, const std::vector<FailingCase> &failing,
-                          const std::function<void(const QString &, const QString &)> &stop);
+                          const GradeStop &stop, const PreparedMistakeFrames &prepared = {});
 
 } // namespace lb

@@ -3,18 +3,17 @@
 // against the reference's, case by case. Whatever happens, one line of JSON on stdout says it.
 #include "grade.h"
 
+#include "grade_frames.h"
 #include "grade_mistakes.h"
 #include "grading.h"
 #include "grading_files.h"
 #include "grading_report.h"
-#include "import_process.h"
 #include "message_text.h"
 #include "mistake_match.h"
 #include "offscreen.h"
 #include "process_bounds.h"
 #include "program_route.h"
 #include "safe_write.h"
-#include "scene_budget.h"
 #include "submission.h"
 #include "work_check.h"
 
@@ -48,22 +47,6 @@ QString diagnosticText(const Diagnostic &d, const Submission &s)
                       : QString("%1: %2").arg(where, d.message);
 }
 
-// Meshes and images the exercise's scene names, read into `offscreen`; "" or why not.
-QString loadSceneFiles(OffscreenRenderer &offscreen, const Scene &scene)
-{
-    QStringList done;
-    for (const ObjectSettings &o : scene.objects) {
-        if (!o.meshPath.isEmpty() && !done.contains(o.meshPath)) {
-            const ImportResult r = ImportProcess::import(o.meshPath);
-            if (!r.ok())
-                return r.error;
-            offscreen.addMeshFile(r.file);
-            done << o.meshPath;
-        }
-    }
-    return offscreen.readTextureFiles(scene);
-}
-
 } // namespace
 
 int runGradeOne(const CommandLine &cl)
@@ -84,45 +67,27 @@ int runGradeOne(const CommandLine &cl)
     out.submission = name;
     if (!s.error.isEmpty())
         return finish("unreadable", s.error);
-    const ExerciseFile e = readExerciseFile(cl.exercisePath);
-    if (!e.error.isEmpty())
-        return finish("no exercise", e.error);
-    const Exercise &exercise = *e.file.exercise;
-    const GradingSpec &spec = exercise.grading;
-
     OffscreenRenderer offscreen;
-    if (const QString error = offscreen.initialize(spec.size); !error.isEmpty())
-        return finish("no OpenGL", error);
-    if (const QString error = loadSceneFiles(offscreen, e.file.scene); !error.isEmpty())
-        return finish("exercise files", error);
-    // An exercise is a scene someone handed out: held to the scene budget as the window and
-    // --render hold it (the same lowered scene for the reference and the student's program).
-    Scene base = e.file.scene;
-    fitToBudget(base, {}, meshBudget());
-    const std::vector<Scene> cases = gradingCases(base, spec, cl.seed);
+    const GradingStart start = startGrading(cl, offscreen);
+    if (!start.status.isEmpty())
+        return finish(start.status, start.diagnostic);
+    const Exercise &exercise = *start.exercise.file.exercise;
+    const GradingSpec &spec = exercise.grading;
+    const std::vector<Scene> &cases = start.cases;
+    const GradeStop stop = [&](const QString &status, const QString &diagnostic) {
+        finish(status, diagnostic);
+    };
 
-    // The reference's frames first, then the student's: one program build each.
+    // The reference's frames first, then the student's: one program build each. The batch's
+    // frames, when it drew them (grade_frames.h), are the same frames, drawn once for all.
+    const PreparedFrames prepared(cl.gradeFrames, cl, spec.size);
     std::vector<QImage> reference;
-    if (exercise.reference.builtIn()) {
-        offscreen.renderer().clearUserProgram();
-        for (const Scene &c : cases)
-            reference.push_back(offscreen.render(referenceCase(c, exercise.reference)));
+    if (std::optional<std::vector<QImage>> read = prepared.reference(cases.size())) {
+        reference = std::move(*read);
     } else {
-        // The teacher's program is a stranger's too (an exercise handed on): tried as every
-        // submission is. One that loops or is over the budget stops the batch, on its line.
-        const QString &vertex = exercise.reference.vertex, &fragment = exercise.reference.fragment;
-        const auto refused = [&](const Diagnostic &d) {
-            return finish("reference refused", exerciseProgramText("reference", d));
-        };
-        OffscreenProgramHost host(offscreen, cases.front());
-        const ProgramVerdict verdict = buildAndTryWithin(
-            host, {vertex, fragment}, {spec.size, kGradingTrialBudgetMs}, refused, 0);
-        if (const Diagnostic *refusal = verdict.refusal())
-            return refused(*refusal);
-        if (!verdict.build.ok())
-            return finish("reference does not build", verdict.build.log());
-        for (const Scene &c : cases)
-            reference.push_back(offscreen.render(c));
+        const MistakeSearch drawn = drawReference(offscreen, exercise, cases, stop, reference);
+        if (!drawn.failure.isEmpty())
+            return finish(drawn.failure, drawn.diagnostic);
     }
 
     // The driver compiles and tries the student's program within bounds: past one, the
@@ -170,9 +135,11 @@ int runGradeOne(const CommandLine &cl)
     }
     out.worstCase = worst;
     // Never a hint for a submission that passes: the mistakes are drawn only for failures.
-    const MistakeSearch search = findMistake(
-        offscreen, exercise, cases, failing,
-        [&](const QString &status, const QString &diagnostic) { finish(status, diagnostic); });
+    const MistakeSearch search =
+        findMistake(offscreen, exercise, cases, failing, stop,
+                    [&](int index, const std::vector<std::size_t> &failingCases) {
+                        return prepared.mistake(index, failingCases);
+                    });
     if (!search.failure.isEmpty()) {
         out.cases.clear();
         return finish(search.failure, search.diagnostic);

@@ -29,6 +29,8 @@ int runCommandLine(int &argc, char **argv, const CommandLine &cl)
     QGuiApplication &app = *application;
     if (cl.grade)
         return runGrade(cl);
+    if (!cl.gradePrepare.isEmpty())
+        return runGradePrepare(cl);
     if (!cl.gradeOne.isEmpty()) {
         installCatalogueFromWindow(app); // Check My Work's reasons in its language
         return runGradeOne(cl);

@@ -175,6 +175,89 @@ private slots:
         QVERIFY(largest > 50);
     }
 
+    // Issue 36: the batch draws the reference's and the mistakes' frames once (--grade-prepare)
+    // and each child reads them (--grade-frames): the child's report is the same bytes as
+    // when it draws its own. Frames made for another seed, a frame cut short, or no key are
+    // not read (the child draws its own); frames with the right key are (painted black, they
+    // change the report: this test would see a child that ignored them).
+    void theBatchsFramesGradeAsTheChildAlone()
+    {
+        const QString frames = m_dir.filePath("frames");
+        QVERIFY(QDir().mkpath(frames));
+        const Run prepared =
+            run({"--grade-prepare", frames, "--exercise", kExercise, "--seed", "3"});
+        QVERIFY2(prepared.exitCode == 0, prepared.err.constData());
+        QCOMPARE(prepared.out.trimmed(), QByteArray(R"({"status":"prepared"})"));
+        // Every case's reference frame and every mistake's (7 in the example), and the key.
+        QCOMPARE(QDir(frames).entryList(QDir::Files).size(), 20 + 7 * 20 + 1);
+
+        const auto child = [&](const QString &submission, const char *seed,
+                               const QString &framesDir) {
+            QStringList args{"--grade-one", submission, "--exercise", kExercise, "--seed", seed};
+            if (!framesDir.isEmpty())
+                args << "--grade-frames" << framesDir;
+            const Run r = run(args);
+            return r.exitCode == 0 ? r.out : QByteArray("exit ") + QByteArray::number(r.exitCode);
+        };
+        for (const QString &submission :
+             {kData + "/correct", kData + "/reflect_sign.vert", kData + "/normal_matrix.vert"}) {
+            const QByteArray alone = child(submission, "3", {});
+            QVERIFY2(alone.contains(R"("status":"graded")"), alone.constData());
+            QCOMPARE(child(submission, "3", frames), alone);
+            QVERIFY(child(submission, "4", frames) != alone); // drawn for seed 4: other cases
+            QCOMPARE(child(submission, "4", frames), child(submission, "4", {}));
+        }
+
+        // Painted black with the key kept: read, and the correct program no longer passes.
+        for (const QString &name : QDir(frames).entryList({"reference-*"}, QDir::Files)) {
+            QFile f(QDir(frames).filePath(name));
+            QVERIFY(f.open(QIODevice::ReadWrite));
+            QVERIFY(f.write(QByteArray(int(f.size()), '\0')) == f.size());
+        }
+        const QByteArray black = child(kData + "/correct", "3", frames);
+        QVERIFY2(!black.contains(R"("passed":true)"), black.constData());
+        // One frame cut short, or no key: not read.
+        QVERIFY(QFile::resize(QDir(frames).filePath("reference-5.rgb32"), 100));
+        const QByteArray alone = child(kData + "/correct", "3", {});
+        QCOMPARE(child(kData + "/correct", "3", frames), alone);
+        QVERIFY(QFile::remove(QDir(frames).filePath("key")));
+        QVERIFY(QFile::resize(QDir(frames).filePath("reference-5.rgb32"), 320 * 240 * 4));
+        QCOMPARE(child(kData + "/correct", "3", frames), alone);
+    }
+
+    // The batch hands its children the frames it drew when there are two submissions or more
+    // to grade (a stand-in child writes down its arguments); one submission draws its own.
+    void childrenGetTheBatchsFrames()
+    {
+        QTemporaryDir tmp;
+        const QDir dir(tmp.path());
+        const QString arguments = dir.filePath("arguments"), child = dir.filePath("child.sh");
+        QVERIFY(write(child, QString("#!/bin/sh\necho \"$*\" >> '%1'\n"
+                                     "echo '{\"status\":\"graded\",\"submission\":\"x\",\"cases\":"
+                                     "[{\"passed\":true,\"largest\":1,\"shareWithin\":1}]}'\n")
+                                 .arg(arguments)
+                                 .toUtf8()));
+        QVERIFY(QFile::setPermissions(child, QFile::ReadOwner | QFile::ExeOwner));
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.insert("LIGHTBENCH_GRADE_PROGRAM", child);
+        const auto childArguments = [&](const QStringList &submissions) {
+            QFile::remove(arguments);
+            const Run r = run(
+                QStringList{"--grade"} + submissions + QStringList{"--exercise", kExercise}, env);
+            QFile f(arguments);
+            return r.exitCode == 0 && f.open(QIODevice::ReadOnly)
+                       ? QString::fromUtf8(f.readAll()).trimmed().split('\n')
+                       : QStringList{QString("exit %1").arg(r.exitCode)};
+        };
+        const QStringList two = childArguments({correctCopy(dir, "amy"), correctCopy(dir, "ben")});
+        QCOMPARE(two.size(), 2);
+        for (const QString &line : two)
+            QVERIFY2(line.contains("--grade-frames "), qPrintable(line));
+        const QStringList one = childArguments({correctCopy(dir, "cat")});
+        QCOMPARE(one.size(), 1);
+        QVERIFY2(!one[0].contains("--grade-frames"), qPrintable(one[0]));
+    }
+
     void theSameSeedGivesTheSameReport()
     {
         QStringList reports;

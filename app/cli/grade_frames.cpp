@@ -1,0 +1,263 @@
+#include "grade_frames.h"
+
+#include "grade.h"
+#include "grading.h"
+#include "import_process.h"
+#include "message_text.h"
+#include "offscreen.h"
+#include "process_bounds.h"
+#include "program_route.h"
+#include "scene_budget.h"
+#include "work_check.h"
+
+#include <QCryptographicHash>
+#include <QDir>
+#include <QFile>
+#include <QJsonDocument>
+#include <QJsonObject>
+
+#include <algorithm>
+
+namespace lb {
+
+namespace {
+
+// Meshes and images the exercise's scene names, read into `offscreen`; "" or why not.
+QString loadSceneFiles(OffscreenRenderer &offscreen, const Scene &scene)
+{
+    QStringList done;
+    for (const ObjectSettings &o : scene.objects) {
+        if (!o.meshPath.isEmpty() && !done.contains(o.meshPath)) {
+            const ImportResult r = ImportProcess::import(o.meshPath);
+            if (!r.ok())
+                return r.error;
+            offscreen.addMeshFile(r.file);
+            done << o.meshPath;
+        }
+    }
+    return offscreen.readTextureFiles(scene);
+}
+
+QString referenceName(std::size_t gradingCase)
+{
+    return QString("reference-%1.rgb32").arg(gradingCase);
+}
+
+QString mistakeName(int index, std::size_t gradingCase)
+{
+    return QString("mistake-%1-%2.rgb32").arg(index).arg(gradingCase);
+}
+
+const char *const kKeyName = "key";
+
+// What the frames were drawn from: the exercise file's bytes, the seed and the size. An
+// exercise file changed while the batch runs makes another key, and its children draw their
+// own frames.
+QByteArray framesKey(const CommandLine &cl, QSize size)
+{
+    QFile file(cl.exercisePath);
+    if (!file.open(QIODevice::ReadOnly))
+        return {};
+    QCryptographicHash hash(QCryptographicHash::Sha256);
+    // readExerciseFile read it already, within its bound: this reads no more than that.
+    if (!hash.addData(&file))
+        return {};
+    hash.addData(
+        QString("seed %1 size %2x%3").arg(cl.seed).arg(size.width()).arg(size.height()).toUtf8());
+    return hash.result().toHex();
+}
+
+// The frame's pixels as they are in memory (QImage's RGB32 rows, 4 bytes a pixel, no
+// padding): read back by PreparedFrames::read on this machine only.
+bool writeFrame(const QString &path, const QImage &frame)
+{
+    QFile file(path);
+    if (frame.format() != QImage::Format_RGB32 || !file.open(QIODevice::WriteOnly))
+        return false;
+    for (int y = 0; y < frame.height(); ++y) {
+        const qint64 bytes = qint64(frame.width()) * 4;
+        if (file.write(reinterpret_cast<const char *>(frame.constScanLine(y)), bytes) != bytes)
+            return false;
+    }
+    return file.flush() && file.error() == QFileDevice::NoError;
+}
+
+bool writeBytes(const QString &path, const QByteArray &bytes)
+{
+    QFile file(path);
+    return file.open(QIODevice::WriteOnly) && file.write(bytes) == bytes.size() && file.flush();
+}
+
+} // namespace
+
+GradingStart startGrading(const CommandLine &cl, OffscreenRenderer &offscreen)
+{
+    GradingStart start;
+    start.exercise = readExerciseFile(cl.exercisePath);
+    if (!start.exercise.error.isEmpty()) {
+        start.status = "no exercise";
+        start.diagnostic = start.exercise.error;
+        return start;
+    }
+    const GradingSpec &spec = start.exercise.file.exercise->grading;
+    if (const QString error = offscreen.initialize(spec.size); !error.isEmpty()) {
+        start.status = "no OpenGL";
+        start.diagnostic = error;
+        return start;
+    }
+    if (const QString error = loadSceneFiles(offscreen, start.exercise.file.scene);
+        !error.isEmpty()) {
+        start.status = "exercise files";
+        start.diagnostic = error;
+        return start;
+    }
+    // An exercise is a scene someone handed out: held to the scene budget as the window and
+    // --render hold it (the same lowered scene for the reference and the student's program).
+    Scene base = start.exercise.file.scene;
+    fitToBudget(base, {}, meshBudget());
+    start.cases = gradingCases(base, spec, cl.seed);
+    return start;
+}
+
+MistakeSearch drawReference(OffscreenRenderer &offscreen, const Exercise &exercise,
+                            const std::vector<Scene> &cases, const GradeStop &stop,
+                            std::vector<QImage> &frames)
+{
+    MistakeSearch out;
+    frames.clear();
+    if (exercise.reference.builtIn()) {
+        offscreen.renderer().clearUserProgram();
+        for (const Scene &c : cases)
+            frames.push_back(offscreen.render(referenceCase(c, exercise.reference)));
+        return out;
+    }
+    // The teacher's program is a stranger's too (an exercise handed on): tried as every
+    // submission is. One that loops or is over the budget stops the batch, on its line.
+    const QString &vertex = exercise.reference.vertex, &fragment = exercise.reference.fragment;
+    OffscreenProgramHost host(offscreen, cases.front());
+    const ProgramVerdict verdict = buildAndTryWithin(
+        host, {vertex, fragment}, {exercise.grading.size, kGradingTrialBudgetMs},
+        [&](const Diagnostic &d) {
+            stop("reference refused", exerciseProgramText("reference", d));
+        },
+        0);
+    if (const Diagnostic *refusal = verdict.refusal()) {
+        out.failure = "reference refused";
+        out.diagnostic = exerciseProgramText("reference", *refusal);
+        return out;
+    }
+    if (!verdict.build.ok()) {
+        out.failure = "reference does not build";
+        out.diagnostic = verdict.build.log();
+        return out;
+    }
+    for (const Scene &c : cases)
+        frames.push_back(offscreen.render(c));
+    return out;
+}
+
+PreparedFrames::PreparedFrames(const QString &dir, const CommandLine &cl, QSize size)
+    : m_dir(dir), m_size(size)
+{
+    if (dir.isEmpty())
+        return;
+    QFile key(QDir(dir).filePath(kKeyName));
+    const QByteArray expected = framesKey(cl, size);
+    m_usable = !expected.isEmpty() && key.open(QIODevice::ReadOnly) &&
+               key.read(expected.size() + 1) == expected;
+}
+
+std::optional<QImage> PreparedFrames::read(const QString &name) const
+{
+    QFile file(QDir(m_dir).filePath(name));
+    const qint64 rowBytes = qint64(m_size.width()) * 4;
+    if (!m_usable || !file.open(QIODevice::ReadOnly) || file.size() != rowBytes * m_size.height())
+        return std::nullopt;
+    QImage frame(m_size, QImage::Format_RGB32);
+    for (int y = 0; y < frame.height(); ++y)
+        if (file.read(reinterpret_cast<char *>(frame.scanLine(y)), rowBytes) != rowBytes)
+            return std::nullopt;
+    return frame;
+}
+
+std::optional<std::vector<QImage>> PreparedFrames::reference(std::size_t cases) const
+{
+    std::vector<QImage> frames;
+    for (std::size_t k = 0; k < cases; ++k) {
+        std::optional<QImage> frame = read(referenceName(k));
+        if (!frame)
+            return std::nullopt;
+        frames.push_back(std::move(*frame));
+    }
+    return frames;
+}
+
+std::optional<std::vector<QImage>>
+PreparedFrames::mistake(int index, const std::vector<std::size_t> &cases) const
+{
+    std::vector<QImage> frames;
+    for (std::size_t k : cases) {
+        std::optional<QImage> frame = read(mistakeName(index, k));
+        if (!frame)
+            return std::nullopt;
+        frames.push_back(std::move(*frame));
+    }
+    return frames;
+}
+
+int preparationTimeLimitMs(const GradingSpec &spec, int mistakes)
+{
+    const int asked = qEnvironmentVariableIntValue("LIGHTBENCH_GRADE_TIME_LIMIT_MS");
+    // A trial and a frame of every case for the reference and for each mistake.
+    const double frames = double(1 + mistakes) * double(spec.cases + 1);
+    return asked > 0 ? asked : int(std::min(30000 + kGradingTrialBudgetMs * frames, 3600000.0));
+}
+
+int runGradePrepare(const CommandLine &cl)
+{
+    // Goes with the batch that started it, even one killed with SIGKILL.
+    platform::dieWithParent();
+    const auto finish = [](const QString &status, const QString &diagnostic = {}) {
+        QJsonObject o{{"status", status}};
+        if (!diagnostic.isEmpty())
+            o["diagnostic"] = diagnostic;
+        printLine(QString::fromUtf8(QJsonDocument(o).toJson(QJsonDocument::Compact)), stdout);
+        return 0;
+    };
+    OffscreenRenderer offscreen;
+    const GradingStart start = startGrading(cl, offscreen);
+    if (!start.status.isEmpty())
+        return finish(start.status, start.diagnostic);
+    const Exercise &exercise = *start.exercise.file.exercise;
+    const QDir dir(cl.gradePrepare);
+    const auto written = [&](const QString &name, const QImage &frame) {
+        return writeFrame(dir.filePath(name), frame);
+    };
+    const GradeStop stop = [&](const QString &status, const QString &diagnostic) {
+        finish(status, diagnostic);
+    };
+
+    std::vector<QImage> frames;
+    const MistakeSearch reference = drawReference(offscreen, exercise, start.cases, stop, frames);
+    if (!reference.failure.isEmpty())
+        return finish(reference.failure, reference.diagnostic);
+    for (std::size_t k = 0; k < frames.size(); ++k)
+        if (!written(referenceName(k), frames[k]))
+            return finish("not written", dir.filePath(referenceName(k)));
+    for (int i = 0; i < int(exercise.mistakes.size()); ++i) {
+        const MistakeSearch use =
+            useMistakeProgram(offscreen, exercise, i, start.cases.front(), stop);
+        if (!use.failure.isEmpty())
+            return finish(use.failure, use.diagnostic);
+        for (std::size_t k = 0; k < start.cases.size(); ++k)
+            if (!written(mistakeName(i, k), drawMistake(offscreen, exercise, i, start.cases[k])))
+                return finish("not written", dir.filePath(mistakeName(i, k)));
+    }
+    if (offscreen.wasReset())
+        return finish("GPU reset", "the driver reset the context");
+    if (!writeBytes(dir.filePath(kKeyName), framesKey(cl, exercise.grading.size)))
+        return finish("not written", dir.filePath(kKeyName));
+    return finish("prepared");
+}
+
+} // namespace lb
