@@ -200,12 +200,14 @@ struct VertexKeyHash
 // in withGeneratedNormals (its faces lie within half the crease of their mean). Then each
 // vertex keeps its place and gets the sum of its corners, added in the same order as the
 // general loop adds them: the same mesh, bit for bit, without grouping the corners (positions
-// of over 64 corners get the exact sum, where the general loop bins them). Returns
-// nothing for any other mesh.
-std::optional<Mesh> withoutSplits(const Mesh &mesh, const std::vector<std::uint32_t> &position,
-                                  const std::vector<glm::vec3> &faceNormal,
-                                  const std::vector<float> &angle, float threshold,
-                                  float halfThreshold, std::size_t parts)
+// of over 64 corners get the exact sum, where the general loop bins them). Returns the
+// normals, one a vertex, or nothing for any other mesh.
+std::optional<std::vector<glm::vec3>> withoutSplits(const Mesh &mesh,
+                                                    const std::vector<std::uint32_t> &position,
+                                                    const std::vector<glm::vec3> &faceNormal,
+                                                    const std::vector<float> &angle,
+                                                    float threshold, float halfThreshold,
+                                                    std::size_t parts)
 {
     const std::size_t vertexCount = mesh.vertexCount();
     const std::size_t cornerCount = angle.size();
@@ -245,12 +247,18 @@ std::optional<Mesh> withoutSplits(const Mesh &mesh, const std::vector<std::uint3
         });
     if (!fits)
         return std::nullopt;
+    return normals;
+}
+
+// The mesh again with these normals.
+Mesh withNormals(const Mesh &mesh, std::vector<glm::vec3> normals, std::size_t cornerCount)
+{
     Mesh out;
     out.positions = mesh.positions;
     out.normals = std::move(normals);
-    if (mesh.colors.size() == vertexCount)
+    if (mesh.colors.size() == mesh.vertexCount())
         out.colors = mesh.colors;
-    if (mesh.uvs.size() == vertexCount)
+    if (mesh.uvs.size() == mesh.vertexCount())
         out.uvs = mesh.uvs;
     out.indices.assign(mesh.indices.begin(), mesh.indices.begin() + std::ptrdiff_t(cornerCount));
     return out;
@@ -299,10 +307,18 @@ std::optional<Mesh> withGeneratedNormals(const Mesh &mesh, float creaseDegrees,
     // A small tolerance keeps coplanar triangles together at 0 degrees despite rounding.
     const float threshold = std::cos(glm::radians(std::clamp(creaseDegrees, 0.0f, 180.0f))) - 1e-5f;
     const float halfThreshold = halfCreaseCosine(creaseDegrees);
-    const std::vector<std::uint32_t> position = weldPositions(mesh.positions);
-    if (std::optional<Mesh> smooth =
-            withoutSplits(mesh, position, faceNormal, angle, threshold, halfThreshold, parts))
-        return cancelled() ? std::nullopt : std::move(smooth);
+    std::vector<std::uint32_t> position = weldPositions(mesh.positions);
+    if (std::optional<std::vector<glm::vec3>> smooth =
+            withoutSplits(mesh, position, faceNormal, angle, threshold, halfThreshold, parts)) {
+        if (cancelled())
+            return std::nullopt;
+        // The face normals, the angles and the welding (a third of a big mesh's peak) go
+        // before the mesh is copied with its normals.
+        std::vector<glm::vec3>().swap(faceNormal);
+        std::vector<float>().swap(angle);
+        std::vector<std::uint32_t>().swap(position);
+        return withNormals(mesh, std::move(*smooth), cornerCount);
+    }
     if (cancelled())
         return std::nullopt;
 
