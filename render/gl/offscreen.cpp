@@ -151,9 +151,12 @@ void OffscreenRenderer::prepareObjects(const Scene &scene)
 void OffscreenRenderer::dropCpuMeshes(const Scene &scene)
 {
     prepareObjects(scene);
+    // The files' meshes go before the upload: the objects' meshes are built from them by now
+    // (or are them, sharing them), and the driver's copies of a 10M-triangle scan would
+    // otherwise be made while its file's mesh (180 MB) is still held.
+    m_files.clear();
     m_context.makeCurrent(&m_surface);
     m_renderer.uploadObjectsAndDropMeshes();
-    m_files.clear();
     m_gpuOnly = true;
 }
 
