@@ -174,11 +174,20 @@ namespace {
 // triangles: the stream's mesh, normal generation's arrays, the driver's copies; measured
 // against two and three times, bench/README.md); never more than an eighth of the machine's
 // memory. A text format's file is bigger than its mesh: more is warmed than used.
+// Files of more than kMostWarmedFileBytes get none. The heap is warmed while the helper
+// reads, which is when the helper is at its own peak (Assimp's whole scene, about 3.4 times a
+// binary PLY): a 10M-triangle scan (190 MB) warmed 508 MB, and the two processes peaked
+// together at 1.26 GB instead of 0.85, for a gain lost in the noise of 5 runs (4.5-8.7 s
+// either way; 0.3 s in the best runs); warming it less kept the allocator's tuning and
+// peaked at 0.92 GB (bench/README.md, issue 36).
+constexpr qint64 kMostWarmedFileBytes = 128ll << 20;
 std::size_t warmingBytes(const QStringList &paths)
 {
     qint64 bytes = 0;
     for (const QString &path : paths)
         bytes += QFileInfo(path).size();
+    if (bytes > kMostWarmedFileBytes)
+        return 0;
     const qint64 cap = ImportLimits::machineMemoryMB() << 17; // MB / 8, in bytes
     return std::size_t(std::clamp<qint64>(4 * bytes, 0, cap));
 }
