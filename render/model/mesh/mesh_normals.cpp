@@ -202,12 +202,10 @@ struct VertexKeyHash
 // general loop adds them: the same mesh, bit for bit, without grouping the corners (positions
 // of over 64 corners get the exact sum, where the general loop bins them). Returns the
 // normals, one a vertex, or nothing for any other mesh.
-std::optional<std::vector<glm::vec3>> withoutSplits(const Mesh &mesh,
-                                                    const std::vector<std::uint32_t> &position,
-                                                    const std::vector<glm::vec3> &faceNormal,
-                                                    const std::vector<float> &angle,
-                                                    float threshold, float halfThreshold,
-                                                    std::size_t parts)
+std::optional<std::vector<glm::vec3>>
+withoutSplits(const Mesh &mesh, const std::vector<std::uint32_t> &position,
+              const std::vector<glm::vec3> &faceNormal, const std::vector<float> &angle,
+              float threshold, float halfThreshold, std::size_t parts)
 {
     const std::size_t vertexCount = mesh.vertexCount();
     const std::size_t cornerCount = angle.size();
