@@ -2,7 +2,9 @@
 # Mesh files: load plus first frame of a generated 1M-triangle binary PLY at 1920x1080,
 # lightbench against f3d (Debian's f3d package), alternating runs inside one Xvfb, wall time
 # and peak memory (GNU time's maximum resident set: the process or its largest child); then
-# a 5M-triangle file: its load and the frame rate at 1280x720. The tori are closed, so
+# a 5M-triangle file: its load and the frame rate at 1280x720; then a 10M-triangle file (a big
+# scan): load and first frame at 1920x1080, and the memory of the workbench and of its import
+# helper (the tree: both at their peaks, summed). The tori are closed, so
 # lightbench culls back faces (--cull-back-faces on: the same picture); f3d runs as it comes.
 # Then lightbench's own breakdown (LIGHTBENCH_PHASES): milliseconds since its run began when
 # each part ended, medians over the runs.
@@ -19,6 +21,7 @@ if [[ -z "${LIGHTBENCH_IN_XVFB:-}" ]]; then
     gen torus-1m.ply 1000000
     gen torus-1m-normals.ply 1000000 --normals
     gen torus-5m.ply 5000000
+    gen torus-10m.ply 10000000
     LIGHTBENCH_IN_XVFB=1 exec xvfb-run -a -s "$XVFB_SCREEN" bash "$0" "$RUNS"
 fi
 exe="$BUILD_DIR/app/lightbench"
@@ -83,3 +86,31 @@ for cull in off on; do
             "$(sed -E "s/.*\"$key\":([0-9.e+-]+).*/\1/" "$out/5m-$cull" | xargs printf '%.2f ')"
     done
 done
+
+echo
+echo "10M triangles (a big scan), $RUNS runs: --render at 1920x1080 (wall, GNU time's peak: the"
+echo "largest process), then --bench-frames 1 at 1920x1080 (load, the workbench's and the helper's"
+echo "peaks; the tree is their sum) and lightbench's phases:"
+for ((i = 0; i < RUNS; i++)); do
+    LIGHTBENCH_PHASES=1 timed lb-10m "$exe" --mesh "$DATA/torus-10m.ply" --render "$out/lb.png" \
+        --size 1920x1080 --cull-back-faces on
+    "$exe" --mesh "$DATA/torus-10m.ply" --size 1920x1080 --bench-frames 1 \
+        --cull-back-faces on >>"$out/10m-frames"
+done
+printf 'render: wall median %s s (runs: %s), largest process median %.0f MB\n' \
+    "$(awk '{print $1}' "$out/lb-10m" | median)" "$(awk '{printf "%s ", $1}' "$out/lb-10m")" \
+    "$(echo "$(awk '{print $2}' "$out/lb-10m" | median) / 1024" | bc -l)"
+for key in loadSeconds peakMB helperPeakMB; do
+    printf '%s median %s (runs: %s)\n' "$key" \
+        "$(sed -E "s/.*\"$key\":([0-9.e+-]+).*/\1/" "$out/10m-frames" | median)" \
+        "$(sed -E "s/.*\"$key\":([0-9.e+-]+).*/\1/" "$out/10m-frames" | xargs printf '%.2f ')"
+done
+printf 'tree (workbench + helper) median %.0f MB\n' "$(awk '{
+    match($0, /"peakMB":[0-9.e+-]+/); p = substr($0, RSTART + 9, RLENGTH - 9)
+    match($0, /"helperPeakMB":[0-9.e+-]+/); h = substr($0, RSTART + 15, RLENGTH - 15)
+    print p + h }' "$out/10m-frames" | median)"
+line="phases:"
+for key in openGl import meshToGpu frame png; do
+    line+=" $key $(sed -E "s/.*\"$key\":([0-9.]+).*/\1/" "$out/lb-10m.phases" | median)"
+done
+echo "$line"
