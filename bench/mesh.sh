@@ -88,27 +88,25 @@ for cull in off on; do
 done
 
 echo
-echo "10M triangles (a big scan), $RUNS runs: --render at 1920x1080 (wall, GNU time's peak: the"
-echo "largest process), then --bench-frames 1 at 1920x1080 (load, the workbench's and the helper's"
-echo "peaks; the tree is their sum) and lightbench's phases:"
+echo "10M triangles (a big scan), $RUNS runs: --render at 1920x1080 (wall and GNU time's peak: the"
+echo "largest process), the same under bench/tree_peak.py (the workbench and its helper sampled"
+echo "together: the pair's peak), --bench-frames 1 at 1920x1080 (load), lightbench's phases:"
 for ((i = 0; i < RUNS; i++)); do
     LIGHTBENCH_PHASES=1 timed lb-10m "$exe" --mesh "$DATA/torus-10m.ply" --render "$out/lb.png" \
         --size 1920x1080 --cull-back-faces on
+    python3 "$ROOT/bench/tree_peak.py" "$exe" --mesh "$DATA/torus-10m.ply" --render "$out/lb.png" \
+        --size 1920x1080 --cull-back-faces on 2>&1 >/dev/null |
+        sed -n 's/^tree_peak_mb=\([0-9]*\).*/\1/p' >>"$out/10m-tree"
     "$exe" --mesh "$DATA/torus-10m.ply" --size 1920x1080 --bench-frames 1 \
         --cull-back-faces on >>"$out/10m-frames"
 done
 printf 'render: wall median %s s (runs: %s), largest process median %.0f MB\n' \
     "$(awk '{print $1}' "$out/lb-10m" | median)" "$(awk '{printf "%s ", $1}' "$out/lb-10m")" \
     "$(echo "$(awk '{print $2}' "$out/lb-10m" | median) / 1024" | bc -l)"
-for key in loadSeconds peakMB helperPeakMB; do
-    printf '%s median %s (runs: %s)\n' "$key" \
-        "$(sed -E "s/.*\"$key\":([0-9.e+-]+).*/\1/" "$out/10m-frames" | median)" \
-        "$(sed -E "s/.*\"$key\":([0-9.e+-]+).*/\1/" "$out/10m-frames" | xargs printf '%.2f ')"
-done
-printf 'tree (workbench + helper) median %.0f MB\n' "$(awk '{
-    match($0, /"peakMB":[0-9.e+-]+/); p = substr($0, RSTART + 9, RLENGTH - 9)
-    match($0, /"helperPeakMB":[0-9.e+-]+/); h = substr($0, RSTART + 15, RLENGTH - 15)
-    print p + h }' "$out/10m-frames" | median)"
+printf 'the pair (workbench + helper) at its peak: median %s MB (runs: %s)\n' \
+    "$(median <"$out/10m-tree")" "$(xargs <"$out/10m-tree")"
+v=$(sed -E 's/.*"loadSeconds":([0-9.e+-]+).*/\1/' "$out/10m-frames")
+printf 'loadSeconds median %s (runs: %s)\n' "$(median <<<"$v")" "$(xargs printf '%.2f ' <<<"$v")"
 line="phases:"
 for key in openGl import meshToGpu frame png; do
     line+=" $key $(sed -E "s/.*\"$key\":([0-9.]+).*/\1/" "$out/lb-10m.phases" | median)"
