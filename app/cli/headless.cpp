@@ -297,8 +297,8 @@ int runHeadless(const CommandLine &cl, const Scene &requested)
     // Past here only pixels are needed, except by the probe: a big mesh's frame holds one
     // copy of it (the driver's) instead of three.
     if (!cl.probe) {
+        imported.file.reset(); // the offscreen renderer's hold is the last: it lets go first
         offscreen.dropCpuMeshes(scene);
-        imported.file.reset();
     }
     phases.mark("meshToGpu");
 
