@@ -84,6 +84,59 @@ private slots:
         }
     }
 
+    // Issue 36: grading reads frames by the row; what it counts is what QImage::pixel gives,
+    // in every format a frame may come in (translucent pixels included), counted here pixel by
+    // pixel as grading counted before.
+    void gradingReadsEveryFormatAsPixelDoes_data()
+    {
+        QTest::addColumn<int>("format");
+        for (QImage::Format f :
+             {QImage::Format_RGB32, QImage::Format_ARGB32, QImage::Format_ARGB32_Premultiplied,
+              QImage::Format_RGBA8888, QImage::Format_RGBA8888_Premultiplied,
+              QImage::Format_RGBX8888, QImage::Format_RGB888, QImage::Format_RGBA64_Premultiplied})
+            QTest::newRow(qPrintable(QString::number(int(f)))) << int(f);
+    }
+
+    void gradingReadsEveryFormatAsPixelDoes()
+    {
+        QFETCH(int, format);
+        QRandomGenerator random(36);
+        const auto frame = [&] {
+            QImage image(37, 23, QImage::Format_ARGB32);
+            for (int y = 0; y < image.height(); ++y)
+                for (int x = 0; x < image.width(); ++x)
+                    image.setPixel(x, y, (x + y) % 5 ? random.generate() : kBackgroundPixel);
+            return image.convertToFormat(QImage::Format(format));
+        };
+        const QImage student = frame(), reference = frame(), mistake = frame();
+        const auto difference = [](QRgb a, QRgb b) {
+            return std::max({std::abs(qRed(a) - qRed(b)), std::abs(qGreen(a) - qGreen(b)),
+                             std::abs(qBlue(a) - qBlue(b))});
+        };
+        const int tolerance = 60;
+        int compared = 0, within = 0, differing = 0, agreeing = 0;
+        for (int y = 0; y < reference.height(); ++y)
+            for (int x = 0; x < reference.width(); ++x) {
+                const QRgb s = student.pixel(x, y), r = reference.pixel(x, y),
+                           m = mistake.pixel(x, y);
+                if (difference(s, kBackgroundPixel) > 1 || difference(r, kBackgroundPixel) > 1) {
+                    ++compared;
+                    within += difference(s, r) <= tolerance;
+                }
+                if (difference(m, r) > tolerance) {
+                    ++differing;
+                    agreeing += difference(s, m) <= tolerance;
+                }
+            }
+        const CaseResult graded = measureCase(student, reference, kBackgroundPixel, tolerance, 0.5);
+        QCOMPARE(graded.compared, compared);
+        QCOMPARE(graded.shareWithin, double(within) / double(compared));
+        const SignatureAgreement a = signatureAgreement(student, reference, mistake, tolerance);
+        QCOMPARE(a.differing, long(differing));
+        QCOMPARE(a.agreeing, long(agreeing));
+        QVERIFY(differing > 100 && agreeing > 10); // the frames differ, and not everywhere
+    }
+
     void emptyFrame()
     {
         const DifferenceStats d = measureDifference(nullptr, nullptr, QSize(0, 0));

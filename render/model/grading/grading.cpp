@@ -30,9 +30,11 @@ bool isBackground(QRgb p, QRgb background)
     return channelDifference(p, background) <= 1;
 }
 
-// The image with 32-bit words a pixel, each what QImage::pixel gives: read by the row, as
-// QImage::pixel (a call and a format switch for every pixel) took over half of a failing
-// submission's grading (its frames against the reference's and every known mistake's).
+// The image with 32-bit words a pixel, each what QImage::pixel gives (its colour channels:
+// the alpha is not compared): read by the row, as QImage::pixel (a call and a format switch
+// for every pixel) took over half of a failing submission's grading (its frames against the
+// reference's and every known mistake's). QImage::pixel gives the RGBA8888 formats' words
+// swizzled as they are (premultiplied or not), and any other format premultiplied.
 QImage wordsPerPixel(const QImage &image)
 {
     switch (image.format()) {
@@ -40,8 +42,11 @@ QImage wordsPerPixel(const QImage &image)
     case QImage::Format_ARGB32:
     case QImage::Format_ARGB32_Premultiplied:
         return image; // shared, not copied
-    default:
+    case QImage::Format_RGBX8888:
+    case QImage::Format_RGBA8888:
         return image.convertToFormat(QImage::Format_ARGB32);
+    default:
+        return image.convertToFormat(QImage::Format_ARGB32_Premultiplied);
     }
 }
 
