@@ -4,7 +4,7 @@
 # and peak memory (GNU time's maximum resident set: the process or its largest child); then
 # a 5M-triangle file: its load and the frame rate at 1280x720; then a 10M-triangle file (a big
 # scan): load and first frame at 1920x1080, and the memory of the workbench and of its import
-# helper (the tree: both at their peaks, summed). The tori are closed, so
+# helper together (bench/tree_peak.py samples both). The tori are closed, so
 # lightbench culls back faces (--cull-back-faces on: the same picture); f3d runs as it comes.
 # Then lightbench's own breakdown (LIGHTBENCH_PHASES): milliseconds since its run began when
 # each part ended, medians over the runs.

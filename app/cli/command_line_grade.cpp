@@ -1,5 +1,6 @@
-// The options of --grade and of its child (--grade-one), read apart from the scene options of
-// command_line.cpp: the batch's own rules (which options go with it, its report's format).
+// The options of --grade and of its children (--grade-one, --grade-prepare), read apart from
+// the scene options of command_line.cpp: the batch's own rules (which options go with it, its
+// report's format).
 #include "command_line_grade.h"
 
 #include "grading_formats.h"

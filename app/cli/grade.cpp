@@ -13,13 +13,10 @@
 #include "submission.h"
 #include "work_check.h"
 
-#include <QCoreApplication>
 #include <QDir>
 #include <QElapsedTimer>
 #include <QEventLoop>
 #include <QFileInfo>
-#include <QJsonDocument>
-#include <QJsonObject>
 #include <QProcess>
 #include <QSet>
 #include <QTemporaryDir>
@@ -30,6 +27,7 @@
 #include <csignal>
 #include <cstdio>
 #include <functional>
+#include <memory>
 
 namespace lb {
 
@@ -258,38 +256,26 @@ int runGrade(const CommandLine &cl)
     std::function<void()> startMore;
     // The reference's and the mistakes' frames, drawn once for the batch by a child of their
     // own before the submissions' (grade_frames.h); without them each child draws its own.
-    QTemporaryDir framesDir;
+    const int mistakes = int(e.file.exercise->mistakes.size());
+    std::unique_ptr<QTemporaryDir> framesDir;
+    if (preparationWorthIt(spec, mistakes, toRun.size(), parallel))
+        framesDir = std::make_unique<QTemporaryDir>();
     QString frames;
-    bool preparing = toRun.size() > 1 && framesDir.isValid();
+    bool preparing = framesDir && framesDir->isValid();
     const auto prepare = [&] {
-        auto *p = new QProcess(&children);
-        auto *timer = new QTimer(p);
-        timer->setSingleShot(true);
-        QObject::connect(timer, &QTimer::timeout, p, [p] { p->kill(); });
+        QProcess *p = startPreparation(&children, cl, framesDir->path(), spec, mistakes);
         QObject::connect(
             p, &QProcess::finished, &loop,
             [&, p](int exitCode, QProcess::ExitStatus status) {
-                const QJsonObject said =
-                    QJsonDocument::fromJson(p->readAllStandardOutput().trimmed()).object();
-                if (status == QProcess::NormalExit && exitCode == 0 &&
-                    said["status"].toString() == "prepared")
-                    frames = framesDir.path();
+                if (preparedFrames(*p, exitCode, status))
+                    frames = framesDir->path();
+                else
+                    framesDir->remove(); // what it wrote goes now, not at the batch's end
                 p->deleteLater();
                 preparing = false;
                 startMore();
             },
             Qt::QueuedConnection);
-        QObject::connect(p, &QProcess::errorOccurred, p, [p](QProcess::ProcessError error) {
-            if (error == QProcess::FailedToStart) // no finished() follows: say it ended
-                emit p->finished(-1, QProcess::CrashExit);
-        });
-        p->setStandardErrorFile(QProcess::nullDevice());
-        // This program, never LIGHTBENCH_GRADE_PROGRAM's stand-in (the tests' children): the
-        // frames are the real program's whatever plays the children.
-        p->start(QCoreApplication::applicationFilePath(),
-                 {"--grade-prepare", framesDir.path(), "--exercise", cl.exercisePath, "--seed",
-                  QString::number(cl.seed)});
-        timer->start(preparationTimeLimitMs(spec, int(e.file.exercise->mistakes.size())));
     };
     const auto ended = [&](int i, QProcess *p) {
         GradedSubmission &row = rows[std::size_t(i)];

@@ -8,13 +8,17 @@
 #include "process_bounds.h"
 #include "program_route.h"
 #include "scene_budget.h"
+#include "scene_file.h"
 #include "work_check.h"
 
+#include <QCoreApplication>
 #include <QCryptographicHash>
 #include <QDir>
 #include <QFile>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QStorageInfo>
+#include <QTimer>
 
 #include <algorithm>
 
@@ -50,20 +54,16 @@ QString mistakeName(int index, std::size_t gradingCase)
 
 const char *const kKeyName = "key";
 
-// What the frames were drawn from: the exercise file's bytes, the seed and the size. An
-// exercise file changed while the batch runs makes another key, and its children draw their
-// own frames.
-QByteArray framesKey(const CommandLine &cl, QSize size)
+// What the frames were drawn from: the exercise as this process parsed it (written out again:
+// the same text for the same exercise), the seed and the size. An exercise file changed
+// while the batch runs parses into another key, and its children draw their own frames. (The
+// meshes and images it names are keyed by their names only.)
+QByteArray framesKey(const SceneFile &exercise, std::uint32_t seed, QSize size)
 {
-    QFile file(cl.exercisePath);
-    if (!file.open(QIODevice::ReadOnly))
-        return {};
     QCryptographicHash hash(QCryptographicHash::Sha256);
-    // readExerciseFile read it already, within its bound: this reads no more than that.
-    if (!hash.addData(&file))
-        return {};
+    hash.addData(sceneFileBytes(exercise, QDir::root()));
     hash.addData(
-        QString("seed %1 size %2x%3").arg(cl.seed).arg(size.width()).arg(size.height()).toUtf8());
+        QString("seed %1 size %2x%3").arg(seed).arg(size.width()).arg(size.height()).toUtf8());
     return hash.result().toHex();
 }
 
@@ -156,15 +156,14 @@ MistakeSearch drawReference(OffscreenRenderer &offscreen, const Exercise &exerci
     return out;
 }
 
-PreparedFrames::PreparedFrames(const QString &dir, const CommandLine &cl, QSize size)
-    : m_dir(dir), m_size(size)
+PreparedFrames::PreparedFrames(const QString &dir, const GradingStart &start, std::uint32_t seed)
+    : m_dir(dir), m_size(start.exercise.file.exercise->grading.size)
 {
     if (dir.isEmpty())
         return;
     QFile key(QDir(dir).filePath(kKeyName));
-    const QByteArray expected = framesKey(cl, size);
-    m_usable = !expected.isEmpty() && key.open(QIODevice::ReadOnly) &&
-               key.read(expected.size() + 1) == expected;
+    const QByteArray expected = framesKey(start.exercise.file, seed, m_size);
+    m_usable = key.open(QIODevice::ReadOnly) && key.read(expected.size() + 1) == expected;
 }
 
 std::optional<QImage> PreparedFrames::read(const QString &name) const
@@ -213,6 +212,44 @@ int preparationTimeLimitMs(const GradingSpec &spec, int mistakes)
     return asked > 0 ? asked : int(std::min(30000 + kGradingTrialBudgetMs * frames, 3600000.0));
 }
 
+bool preparationWorthIt(const GradingSpec &spec, int mistakes, std::size_t submissions,
+                        int parallel)
+{
+    const qint64 bytes = qint64(1 + mistakes) * qint64(spec.cases) * qint64(spec.size.width()) *
+                         qint64(spec.size.height()) * 4;
+    return submissions > std::size_t(std::max(parallel, 1)) && bytes <= kMostPreparedBytes &&
+           bytes <= QStorageInfo(QDir::tempPath()).bytesAvailable() / 2;
+}
+
+QProcess *startPreparation(QObject *parent, const CommandLine &cl, const QString &dir,
+                           const GradingSpec &spec, int mistakes)
+{
+    auto *p = new QProcess(parent);
+    auto *timer = new QTimer(p);
+    timer->setSingleShot(true);
+    QObject::connect(timer, &QTimer::timeout, p, [p] { p->kill(); });
+    QObject::connect(p, &QProcess::errorOccurred, p, [p](QProcess::ProcessError error) {
+        if (error == QProcess::FailedToStart) // no finished() follows: say it ended
+            emit p->finished(-1, QProcess::CrashExit);
+    });
+    p->setStandardErrorFile(QProcess::nullDevice());
+    // This program, never LIGHTBENCH_GRADE_PROGRAM's stand-in (the tests' children): the
+    // frames are the real program's whatever plays the children.
+    p->start(QCoreApplication::applicationFilePath(),
+             {"--grade-prepare", dir, "--exercise", cl.exercisePath, "--seed",
+              QString::number(cl.seed)});
+    timer->start(preparationTimeLimitMs(spec, mistakes));
+    return p;
+}
+
+bool preparedFrames(QProcess &preparation, int exitCode, QProcess::ExitStatus status)
+{
+    const QJsonObject said =
+        QJsonDocument::fromJson(preparation.readAllStandardOutput().trimmed()).object();
+    return status == QProcess::NormalExit && exitCode == 0 &&
+           said["status"].toString() == "prepared";
+}
+
 int runGradePrepare(const CommandLine &cl)
 {
     // Goes with the batch that started it, even one killed with SIGKILL.
@@ -255,7 +292,8 @@ int runGradePrepare(const CommandLine &cl)
     }
     if (offscreen.wasReset())
         return finish("GPU reset", "the driver reset the context");
-    if (!writeBytes(dir.filePath(kKeyName), framesKey(cl, exercise.grading.size)))
+    if (!writeBytes(dir.filePath(kKeyName),
+                    framesKey(start.exercise.file, cl.seed, exercise.grading.size)))
         return finish("not written", dir.filePath(kKeyName));
     return finish("prepared");
 }

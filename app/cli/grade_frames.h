@@ -15,9 +15,11 @@
 #include "grading_files.h"
 
 #include <QImage>
+#include <QProcess>
 #include <QSize>
 #include <QString>
 
+#include <cstdint>
 #include <optional>
 #include <vector>
 
@@ -47,9 +49,9 @@ MistakeSearch drawReference(OffscreenRenderer &offscreen, const Exercise &exerci
 class PreparedFrames
 {
 public:
-    // Usable when `dir` is not empty and holds the key of this exercise file and seed.
-    PreparedFrames(const QString &dir, const CommandLine &commandLine, QSize size);
-    bool usable() const { return m_usable; }
+    // Read from when `dir` is not empty and holds the key of this exercise (as `start`
+    // parsed it), seed and size.
+    PreparedFrames(const QString &dir, const GradingStart &start, std::uint32_t seed);
     // Each case's reference frame, or nothing when one cannot be read whole.
     std::optional<std::vector<QImage>> reference(std::size_t cases) const;
     // Mistake `index`'s frames of the cases asked for, or nothing.
@@ -64,9 +66,22 @@ private:
     bool m_usable = false;
 };
 
-// runGradePrepare (grade.h), --grade-prepare DIR: the reference's and every mistake's frame
-// of every case, into DIR, then the key. One line of JSON on stdout: {"status":"prepared"}
-// or the failure.
+// (runGradePrepare, grade.h: --grade-prepare DIR draws the reference's and every mistake's
+// frame of every case into DIR, then the key, and prints one line of JSON on stdout:
+// {"status":"prepared"} or the failure.)
+
+// Whether drawing the batch's frames first pays: more submissions than run at once (the
+// first ones would have drawn them anyway), and room for the (1 + mistakes) x cases frames in
+// the temporary folder: at most kMostPreparedBytes, and half the space free there.
+bool preparationWorthIt(const GradingSpec &spec, int mistakes, std::size_t submissions,
+                        int parallel);
+constexpr qint64 kMostPreparedBytes = 1ll << 30;
+// Starts --grade-prepare DIR, a child of `parent` (this program, never the tests' stand-in
+// for the children), killed after preparationTimeLimitMs: its finished() always comes, then
+// preparedFrames says whether the frames are there.
+QProcess *startPreparation(QObject *parent, const CommandLine &commandLine, const QString &dir,
+                           const GradingSpec &spec, int mistakes);
+bool preparedFrames(QProcess &preparation, int exitCode, QProcess::ExitStatus status);
 // How long the preparation may take: a trial and the frames of every case for the reference
 // and each mistake ($LIGHTBENCH_GRADE_TIME_LIMIT_MS overrides, as for a submission).
 int preparationTimeLimitMs(const GradingSpec &spec, int mistakes);

@@ -80,7 +80,7 @@ int runGradeOne(const CommandLine &cl)
 
     // The reference's frames first, then the student's: one program build each. The batch's
     // frames, when it drew them (grade_frames.h), are the same frames, drawn once for all.
-    const PreparedFrames prepared(cl.gradeFrames, cl, spec.size);
+    const PreparedFrames prepared(cl.gradeFrames, start, cl.seed);
     std::vector<QImage> reference;
     if (std::optional<std::vector<QImage>> read = prepared.reference(cases.size())) {
         reference = std::move(*read);

@@ -204,16 +204,29 @@ private slots:
             const QByteArray alone = child(submission, "3", {});
             QVERIFY2(alone.contains(R"("status":"graded")"), alone.constData());
             QCOMPARE(child(submission, "3", frames), alone);
-            QVERIFY(child(submission, "4", frames) != alone); // drawn for seed 4: other cases
+            // Drawn for seed 3: a child of seed 4 draws its own.
             QCOMPARE(child(submission, "4", frames), child(submission, "4", {}));
         }
 
-        // Painted black with the key kept: read, and the correct program no longer passes.
-        for (const QString &name : QDir(frames).entryList({"reference-*"}, QDir::Files)) {
-            QFile f(QDir(frames).filePath(name));
-            QVERIFY(f.open(QIODevice::ReadWrite));
-            QVERIFY(f.write(QByteArray(int(f.size()), '\0')) == f.size());
-        }
+        // The mistakes' frames painted black with the key kept: read, and the reflection's
+        // mistake is no longer found.
+        const QByteArray reflect = child(kData + "/reflect_sign.vert", "3", {});
+        QVERIFY2(reflect.contains(R"("mistake")"), reflect.constData());
+        const auto paintBlack = [&](const QString &pattern) {
+            for (const QString &name : QDir(frames).entryList({pattern}, QDir::Files)) {
+                QFile f(QDir(frames).filePath(name));
+                if (!f.open(QIODevice::ReadWrite) ||
+                    f.write(QByteArray(int(f.size()), '\0')) != f.size())
+                    return false;
+            }
+            return true;
+        };
+        QVERIFY(paintBlack("mistake-*"));
+        const QByteArray blackMistakes = child(kData + "/reflect_sign.vert", "3", frames);
+        QVERIFY2(!blackMistakes.contains(R"("mistake")"), blackMistakes.constData());
+
+        // The reference's painted black: read, and the correct program no longer passes.
+        QVERIFY(paintBlack("reference-*"));
         const QByteArray black = child(kData + "/correct", "3", frames);
         QVERIFY2(!black.contains(R"("passed":true)"), black.constData());
         // One frame cut short, or no key: not read.
@@ -225,8 +238,9 @@ private slots:
         QCOMPARE(child(kData + "/correct", "3", frames), alone);
     }
 
-    // The batch hands its children the frames it drew when there are two submissions or more
-    // to grade (a stand-in child writes down its arguments); one submission draws its own.
+    // The batch hands its children the frames it drew when there are more submissions to grade
+    // than processes at once (a stand-in child writes down its arguments); with no more, each
+    // draws its own.
     void childrenGetTheBatchsFrames()
     {
         QTemporaryDir tmp;
@@ -240,6 +254,7 @@ private slots:
         QVERIFY(QFile::setPermissions(child, QFile::ReadOwner | QFile::ExeOwner));
         QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
         env.insert("LIGHTBENCH_GRADE_PROGRAM", child);
+        env.insert("LIGHTBENCH_GRADE_PROCESSES", "1"); // two submissions are more than run at once
         const auto childArguments = [&](const QStringList &submissions) {
             QFile::remove(arguments);
             const Run r = run(
