@@ -170,20 +170,17 @@ std::optional<ProgramText> CommandLine::program() const
 CommandLineResult parseCommandLine(const QStringList &arguments)
 {
     QCommandLineParser parser;
-    // The batch's child process: one submission (grade.h); not for people.
-    QCommandLineOption gradeOne("grade-one", "One submission of --grade.", "SUBMISSION");
-    gradeOne.setFlags(QCommandLineOption::HiddenFromHelp);
-    parser.addOption(gradeOne);
-    QCommandLineOption gradeName("grade-name", "Its name in the report.", "NAME");
-    gradeName.setFlags(QCommandLineOption::HiddenFromHelp);
-    parser.addOption(gradeName);
-    // The batch's frames, drawn once by a child of their own and read by the others.
-    QCommandLineOption gradePrepare("grade-prepare", "Draws the batch's frames into DIR.", "DIR");
-    gradePrepare.setFlags(QCommandLineOption::HiddenFromHelp);
-    parser.addOption(gradePrepare);
-    QCommandLineOption gradeFrames("grade-frames", "The batch's frames, from DIR.", "DIR");
-    gradeFrames.setFlags(QCommandLineOption::HiddenFromHelp);
-    parser.addOption(gradeFrames);
+    // The batch's child processes (grade.h), not for people: one submission, its name in the
+    // report; the batch's frames, drawn once by a child of their own and read by the others.
+    const QList<QCommandLineOption> children{
+        {"grade-one", "One submission of --grade.", "SUBMISSION"},
+        {"grade-name", "Its name in the report.", "NAME"},
+        {"grade-prepare", "Draws the batch's frames into DIR.", "DIR"},
+        {"grade-frames", "The batch's frames, from DIR.", "DIR"}};
+    for (QCommandLineOption child : children) {
+        child.setFlags(QCommandLineOption::HiddenFromHelp);
+        parser.addOption(child);
+    }
     parser.setApplicationDescription(
         "lightbench: a lighting workbench for the Phong and Blinn-Phong models.\n"
         "Without --render, --probe or --bench-frames it opens the window.");
