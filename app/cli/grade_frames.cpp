@@ -15,6 +15,7 @@
 #include <QCryptographicHash>
 #include <QDir>
 #include <QFile>
+#include <QFileInfo>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QStorageInfo>
@@ -161,16 +162,20 @@ PreparedFrames::PreparedFrames(const QString &dir, const GradingStart &start, st
 {
     if (dir.isEmpty())
         return;
+    // Regular files only: a FIFO in their place would block the read (the batch's own
+    // folder holds none; the option is hidden, not guarded).
     QFile key(QDir(dir).filePath(kKeyName));
     const QByteArray expected = framesKey(start.exercise.file, seed, m_size);
-    m_usable = key.open(QIODevice::ReadOnly) && key.read(expected.size() + 1) == expected;
+    m_usable = QFileInfo(key).isFile() && key.open(QIODevice::ReadOnly) &&
+               key.read(expected.size() + 1) == expected;
 }
 
 std::optional<QImage> PreparedFrames::read(const QString &name) const
 {
     QFile file(QDir(m_dir).filePath(name));
     const qint64 rowBytes = qint64(m_size.width()) * 4;
-    if (!m_usable || !file.open(QIODevice::ReadOnly) || file.size() != rowBytes * m_size.height())
+    if (!m_usable || !QFileInfo(file).isFile() || !file.open(QIODevice::ReadOnly) ||
+        file.size() != rowBytes * m_size.height())
         return std::nullopt;
     QImage frame(m_size, QImage::Format_RGB32);
     for (int y = 0; y < frame.height(); ++y)
