@@ -93,7 +93,9 @@ private slots:
         for (QImage::Format f :
              {QImage::Format_RGB32, QImage::Format_ARGB32, QImage::Format_ARGB32_Premultiplied,
               QImage::Format_RGBA8888, QImage::Format_RGBA8888_Premultiplied,
-              QImage::Format_RGBX8888, QImage::Format_RGB888, QImage::Format_RGBA64_Premultiplied})
+              QImage::Format_RGBX8888, QImage::Format_RGB888, QImage::Format_RGBA64,
+              QImage::Format_RGBA64_Premultiplied, QImage::Format_Indexed8, QImage::Format_RGB16,
+              QImage::Format_ARGB8565_Premultiplied, QImage::Format_A2BGR30_Premultiplied})
             QTest::newRow(qPrintable(QString::number(int(f)))) << int(f);
     }
 

@@ -33,8 +33,9 @@ bool isBackground(QRgb p, QRgb background)
 // The image with 32-bit words a pixel, each what QImage::pixel gives (its colour channels:
 // the alpha is not compared): read by the row, as QImage::pixel (a call and a format switch
 // for every pixel) took over half of a failing submission's grading (its frames against the
-// reference's and every known mistake's). QImage::pixel gives the RGBA8888 formats' words
-// swizzled as they are (premultiplied or not), and any other format premultiplied.
+// reference's and every known mistake's). QImage::pixel gives a format's values as they are
+// stored, premultiplied or not (a colour table's entries for the indexed formats), except for
+// the formats it has no case for, which it premultiplies: all of them premultiplied or opaque.
 QImage wordsPerPixel(const QImage &image)
 {
     switch (image.format()) {
@@ -42,11 +43,11 @@ QImage wordsPerPixel(const QImage &image)
     case QImage::Format_ARGB32:
     case QImage::Format_ARGB32_Premultiplied:
         return image; // shared, not copied
-    case QImage::Format_RGBX8888:
-    case QImage::Format_RGBA8888:
-        return image.convertToFormat(QImage::Format_ARGB32);
     default:
-        return image.convertToFormat(QImage::Format_ARGB32_Premultiplied);
+        return image.convertToFormat(image.pixelFormat().premultiplied() ==
+                                             QPixelFormat::Premultiplied
+                                         ? QImage::Format_ARGB32_Premultiplied
+                                         : QImage::Format_ARGB32);
     }
 }
 
