@@ -237,6 +237,11 @@ int runGrade(const CommandLine &cl)
     const int processes = qEnvironmentVariableIntValue("LIGHTBENCH_GRADE_PROCESSES");
     const int parallel = processes > 0 ? std::min(processes, 16)
                                        : std::max(1, std::min(QThread::idealThreadCount(), 4));
+    // The batch's frames (below): the folder outlives every child, declared before them.
+    const int mistakes = int(e.file.exercise->mistakes.size());
+    std::unique_ptr<QTemporaryDir> framesDir;
+    if (preparationWorthIt(spec, mistakes, toRun.size(), parallel))
+        framesDir = std::make_unique<QTemporaryDir>();
     QEventLoop loop;
     QObject children; // owns the processes: each goes with it, whatever the loop left undone
     StopSignals stop;
@@ -256,10 +261,6 @@ int runGrade(const CommandLine &cl)
     std::function<void()> startMore;
     // The reference's and the mistakes' frames, drawn once for the batch by a child of their
     // own before the submissions' (grade_frames.h); without them each child draws its own.
-    const int mistakes = int(e.file.exercise->mistakes.size());
-    std::unique_ptr<QTemporaryDir> framesDir;
-    if (preparationWorthIt(spec, mistakes, toRun.size(), parallel))
-        framesDir = std::make_unique<QTemporaryDir>();
     QString frames;
     bool preparing = framesDir && framesDir->isValid();
     const auto prepare = [&] {

@@ -245,16 +245,23 @@ private slots:
     {
         QTemporaryDir tmp;
         const QDir dir(tmp.path());
+        // The stand-in writes down its arguments, and whether the folder it was given (the
+        // last argument) holds the key when it runs.
         const QString arguments = dir.filePath("arguments"), child = dir.filePath("child.sh");
         QVERIFY(write(child, QString("#!/bin/sh\necho \"$*\" >> '%1'\n"
+                                     "for last; do :; done\n"
+                                     "[ -f \"$last/key\" ] && echo 'the key is there' >> '%1'\n"
                                      "echo '{\"status\":\"graded\",\"submission\":\"x\",\"cases\":"
                                      "[{\"passed\":true,\"largest\":1,\"shareWithin\":1}]}'\n")
                                  .arg(arguments)
                                  .toUtf8()));
         QVERIFY(QFile::setPermissions(child, QFile::ReadOwner | QFile::ExeOwner));
+        const QString temporary = dir.filePath("tmp"); // where the batch's folder goes
+        QVERIFY(dir.mkpath("tmp"));
         QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
         env.insert("LIGHTBENCH_GRADE_PROGRAM", child);
         env.insert("LIGHTBENCH_GRADE_PROCESSES", "1"); // two submissions are more than run at once
+        env.insert("TMPDIR", temporary);
         const auto childArguments = [&](const QStringList &submissions) {
             QFile::remove(arguments);
             const Run r = run(
@@ -265,9 +272,13 @@ private slots:
                        : QStringList{QString("exit %1").arg(r.exitCode)};
         };
         const QStringList two = childArguments({correctCopy(dir, "amy"), correctCopy(dir, "ben")});
-        QCOMPARE(two.size(), 2);
-        for (const QString &line : two)
-            QVERIFY2(line.contains("--grade-frames "), qPrintable(line));
+        QCOMPARE(two.size(), 4);
+        for (int i : {0, 2}) {
+            QVERIFY2(two[i].contains("--grade-frames " + temporary), qPrintable(two[i]));
+            QCOMPARE(two[i + 1], QString("the key is there"));
+        }
+        // The folder goes with the batch.
+        QCOMPARE(QDir(temporary).entryList(QDir::NoDotAndDotDot | QDir::AllEntries), QStringList());
         const QStringList one = childArguments({correctCopy(dir, "cat")});
         QCOMPARE(one.size(), 1);
         QVERIFY2(!one[0].contains("--grade-frames"), qPrintable(one[0]));
