@@ -96,20 +96,17 @@ GradingStart startGrading(const CommandLine &cl, OffscreenRenderer &offscreen)
     GradingStart start;
     start.exercise = readExerciseFile(cl.exercisePath);
     if (!start.exercise.error.isEmpty()) {
-        start.status = "no exercise";
-        start.diagnostic = start.exercise.error;
+        start.failure = {"no exercise", start.exercise.error};
         return start;
     }
     const GradingSpec &spec = start.exercise.file.exercise->grading;
     if (const QString error = offscreen.initialize(spec.size); !error.isEmpty()) {
-        start.status = "no OpenGL";
-        start.diagnostic = error;
+        start.failure = {"no OpenGL", error};
         return start;
     }
     if (const QString error = loadSceneFiles(offscreen, start.exercise.file.scene);
         !error.isEmpty()) {
-        start.status = "exercise files";
-        start.diagnostic = error;
+        start.failure = {"exercise files", error};
         return start;
     }
     // An exercise is a scene someone handed out: held to the scene budget as the window and
@@ -120,17 +117,16 @@ GradingStart startGrading(const CommandLine &cl, OffscreenRenderer &offscreen)
     return start;
 }
 
-MistakeSearch drawReference(OffscreenRenderer &offscreen, const Exercise &exercise,
-                            const std::vector<Scene> &cases, const GradeStop &stop,
-                            std::vector<QImage> &frames)
+GradeFailure drawReference(OffscreenRenderer &offscreen, const Exercise &exercise,
+                           const std::vector<Scene> &cases, const GradeStop &stop,
+                           std::vector<QImage> &frames)
 {
-    MistakeSearch out;
     frames.clear();
     if (exercise.reference.builtIn()) {
         offscreen.renderer().clearUserProgram();
         for (const Scene &c : cases)
             frames.push_back(offscreen.render(referenceCase(c, exercise.reference)));
-        return out;
+        return {};
     }
     // The teacher's program is a stranger's too (an exercise handed on): tried as every
     // submission is. One that loops or is over the budget stops the batch, on its line.
@@ -142,19 +138,13 @@ MistakeSearch drawReference(OffscreenRenderer &offscreen, const Exercise &exerci
             stop("reference refused", exerciseProgramText("reference", d));
         },
         0);
-    if (const Diagnostic *refusal = verdict.refusal()) {
-        out.failure = "reference refused";
-        out.diagnostic = exerciseProgramText("reference", *refusal);
-        return out;
-    }
-    if (!verdict.build.ok()) {
-        out.failure = "reference does not build";
-        out.diagnostic = verdict.build.log();
-        return out;
-    }
+    if (const Diagnostic *refusal = verdict.refusal())
+        return {"reference refused", exerciseProgramText("reference", *refusal)};
+    if (!verdict.build.ok())
+        return {"reference does not build", verdict.build.log()};
     for (const Scene &c : cases)
         frames.push_back(offscreen.render(c));
-    return out;
+    return {};
 }
 
 PreparedFrames::PreparedFrames(const QString &dir, const GradingStart &start, std::uint32_t seed)
@@ -268,8 +258,8 @@ int runGradePrepare(const CommandLine &cl)
     };
     OffscreenRenderer offscreen;
     const GradingStart start = startGrading(cl, offscreen);
-    if (!start.status.isEmpty())
-        return finish(start.status, start.diagnostic);
+    if (start.failure)
+        return finish(start.failure.status, start.failure.diagnostic);
     const Exercise &exercise = *start.exercise.file.exercise;
     const QDir dir(cl.gradePrepare);
     const auto written = [&](const QString &name, const QImage &frame) {
@@ -280,17 +270,15 @@ int runGradePrepare(const CommandLine &cl)
     };
 
     std::vector<QImage> frames;
-    const MistakeSearch reference = drawReference(offscreen, exercise, start.cases, stop, frames);
-    if (!reference.failure.isEmpty())
-        return finish(reference.failure, reference.diagnostic);
+    if (const GradeFailure f = drawReference(offscreen, exercise, start.cases, stop, frames))
+        return finish(f.status, f.diagnostic);
     for (std::size_t k = 0; k < frames.size(); ++k)
         if (!written(referenceName(k), frames[k]))
             return finish("not written", dir.filePath(referenceName(k)));
     for (int i = 0; i < int(exercise.mistakes.size()); ++i) {
-        const MistakeSearch use =
-            useMistakeProgram(offscreen, exercise, i, start.cases.front(), stop);
-        if (!use.failure.isEmpty())
-            return finish(use.failure, use.diagnostic);
+        if (const GradeFailure f =
+                useMistakeProgram(offscreen, exercise, i, start.cases.front(), stop))
+            return finish(f.status, f.diagnostic);
         for (std::size_t k = 0; k < start.cases.size(); ++k)
             if (!written(mistakeName(i, k), drawMistake(offscreen, exercise, i, start.cases[k])))
                 return finish("not written", dir.filePath(mistakeName(i, k)));

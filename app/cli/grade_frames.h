@@ -34,16 +34,16 @@ struct GradingStart
 {
     ExerciseFile exercise;
     std::vector<Scene> cases;
-    QString status, diagnostic;
+    GradeFailure failure;
 };
 GradingStart startGrading(const CommandLine &commandLine, OffscreenRenderer &offscreen);
 
 // The reference's frame of each case into `frames`, drawn by the built-in program or by the
-// teacher's, built and tried as every submission is. Empty, or the failure ("reference
-// refused", "reference does not build") as MistakeSearch's failure and diagnostic.
-MistakeSearch drawReference(OffscreenRenderer &offscreen, const Exercise &exercise,
-                            const std::vector<Scene> &cases, const GradeStop &stop,
-                            std::vector<QImage> &frames);
+// teacher's, built and tried as every submission is. No failure, or "reference refused" or
+// "reference does not build" and why.
+GradeFailure drawReference(OffscreenRenderer &offscreen, const Exercise &exercise,
+                           const std::vector<Scene> &cases, const GradeStop &stop,
+                           std::vector<QImage> &frames);
 
 // A folder of frames drawn by --grade-prepare, read by --grade-one.
 class PreparedFrames

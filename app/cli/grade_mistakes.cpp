@@ -24,10 +24,10 @@ QString mistakeText(int index, const ExerciseMistake &m, const Diagnostic &d)
 
 } // namespace
 
-MistakeSearch useMistakeProgram(OffscreenRenderer &offscreen, const Exercise &exercise, int index,
-                                const Scene &firstCase, const GradeStop &stop)
+GradeFailure useMistakeProgram(OffscreenRenderer &offscreen, const Exercise &exercise, int index,
+                               const Scene &firstCase, const GradeStop &stop)
 {
-    MistakeSearch out;
+    GradeFailure out;
     const ExerciseMistake &m = exercise.mistakes[std::size_t(index)];
     const ExerciseReference &ref = exercise.reference;
     if (m.isBuiltIn()) {
@@ -43,11 +43,11 @@ MistakeSearch useMistakeProgram(OffscreenRenderer &offscreen, const Exercise &ex
         host, {vertex, fragment}, {exercise.grading.size, kGradingTrialBudgetMs},
         [&](const Diagnostic &d) { stop("mistake refused", mistakeText(index, m, d)); }, 0);
     if (const Diagnostic *refusal = verdict.refusal()) {
-        out.failure = "mistake refused";
+        out.status = "mistake refused";
         out.diagnostic = mistakeText(index, m, *refusal);
     } else if (!verdict.build.ok()) {
         const Diagnostic *first = verdict.build.firstError();
-        out.failure = "mistake does not build";
+        out.status = "mistake does not build";
         out.diagnostic = first ? mistakeText(index, m, *first)
                                : QString("mistake %1 (%2): %3")
                                      .arg(index)
@@ -84,18 +84,18 @@ MistakeSearch findMistake(OffscreenRenderer &offscreen, const Exercise &exercise
         std::optional<std::vector<QImage>> frames =
             prepared ? prepared(i, failingCases) : std::nullopt;
         if (!frames) {
-            const MistakeSearch use =
-                useMistakeProgram(offscreen, exercise, i, cases.front(), stop);
-            if (!use.failure.isEmpty())
-                return use;
+            out.failure = useMistakeProgram(offscreen, exercise, i, cases.front(), stop);
+            if (out.failure)
+                return out;
             frames.emplace();
             for (const FailingCase &f : failing)
                 frames->push_back(drawMistake(offscreen, exercise, i, cases[f.index]));
             if (offscreen.wasReset()) {
-                out.failure = "mistake refused";
-                out.diagnostic = QString("mistake %1 (%2): the driver reset the context")
-                                     .arg(i)
-                                     .arg(escapedName(exercise.mistakes[std::size_t(i)].name));
+                out.failure.status = "mistake refused";
+                out.failure.diagnostic =
+                    QString("mistake %1 (%2): the driver reset the context")
+                        .arg(i)
+                        .arg(escapedName(exercise.mistakes[std::size_t(i)].name));
                 return out;
             }
         }

@@ -29,12 +29,20 @@ struct FailingCase
     CaseResult result; // against the reference
 };
 
+// What ends a grading child before its report is whole: its status and diagnostic (none when
+// `status` is empty).
+struct GradeFailure
+{
+    QString status, diagnostic;
+    explicit operator bool() const { return !status.isEmpty(); }
+};
+
 struct MistakeSearch
 {
     std::optional<MistakeMatch> match;
     // Set when a mistake cannot be drawn: "mistake does not build" or "mistake refused", and
     // which mistake and why.
-    QString failure, diagnostic;
+    GradeFailure failure;
 };
 
 // `stop` says a report with this status and diagnostic and ends the process: a program past
@@ -42,10 +50,10 @@ struct MistakeSearch
 using GradeStop = std::function<void(const QString &, const QString &)>;
 
 // Mistake `index`'s program made the one `offscreen` draws with (built and tried within the
-// grading bounds; the built-in program for a built-in mistake): empty, or the status and
-// diagnostic of a mistake that cannot be drawn (MistakeSearch's failure and diagnostic).
-MistakeSearch useMistakeProgram(OffscreenRenderer &offscreen, const Exercise &exercise, int index,
-                                const Scene &firstCase, const GradeStop &stop);
+// grading bounds; the built-in program for a built-in mistake): no failure, or why the
+// mistake cannot be drawn.
+GradeFailure useMistakeProgram(OffscreenRenderer &offscreen, const Exercise &exercise, int index,
+                               const Scene &firstCase, const GradeStop &stop);
 // Mistake `index`'s frame of `gradingCase`, with its program in use.
 QImage drawMistake(OffscreenRenderer &offscreen, const Exercise &exercise, int index,
                    const Scene &gradingCase);

@@ -69,8 +69,8 @@ int runGradeOne(const CommandLine &cl)
         return finish("unreadable", s.error);
     OffscreenRenderer offscreen;
     const GradingStart start = startGrading(cl, offscreen);
-    if (!start.status.isEmpty())
-        return finish(start.status, start.diagnostic);
+    if (start.failure)
+        return finish(start.failure.status, start.failure.diagnostic);
     const Exercise &exercise = *start.exercise.file.exercise;
     const GradingSpec &spec = exercise.grading;
     const std::vector<Scene> &cases = start.cases;
@@ -85,9 +85,8 @@ int runGradeOne(const CommandLine &cl)
     if (std::optional<std::vector<QImage>> read = prepared.reference(cases.size())) {
         reference = std::move(*read);
     } else {
-        const MistakeSearch drawn = drawReference(offscreen, exercise, cases, stop, reference);
-        if (!drawn.failure.isEmpty())
-            return finish(drawn.failure, drawn.diagnostic);
+        if (const GradeFailure f = drawReference(offscreen, exercise, cases, stop, reference))
+            return finish(f.status, f.diagnostic);
     }
 
     // The driver compiles and tries the student's program within bounds: past one, the
@@ -140,9 +139,9 @@ int runGradeOne(const CommandLine &cl)
                     [&](int index, const std::vector<std::size_t> &failingCases) {
                         return prepared.mistake(index, failingCases);
                     });
-    if (!search.failure.isEmpty()) {
+    if (search.failure) {
         out.cases.clear();
-        return finish(search.failure, search.diagnostic);
+        return finish(search.failure.status, search.failure.diagnostic);
     }
     out.mistake = search.match;
     if (!cl.sheetsDir.isEmpty()) {
