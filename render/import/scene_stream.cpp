@@ -244,6 +244,15 @@ void sendMaterial(const aiScene &scene, const aiMesh &mesh, wire::Writer &out)
     }
 }
 
+// Values (floats or indices) sent a chunk at a time: 1 MiB, the wire writer's buffer.
+constexpr std::size_t kChunkValues = (1u << 20) / 4;
+template <typename T> void sendChunk(std::vector<T> &chunk, wire::Writer &out)
+{
+    static_assert(sizeof(T) == 4);
+    out.write(chunk.data(), chunk.size() * sizeof(T));
+    chunk.clear();
+}
+
 int fail(wire::Writer &out, const std::string &message)
 {
     out.text(Record::Error, message);
@@ -308,76 +317,75 @@ int writeScene(const aiScene &scene, wire::Writer &out, const ImportProgress &pr
     out.begin(Record::Mesh, sizeof header + vertexCount * perVertex + header.indexCount * 4);
     out.write(&header, sizeof header);
 
-    // One pass per array, so nothing is gathered in memory before it goes out.
+    // One pass per array, each sent a chunk at a time, so that no array is gathered in memory
+    // before it goes out (a 1M-triangle file's indices alone are 12 MB, every page of it a
+    // fault on the helper's path). A chunk is as big as the writer's buffer: it goes out
+    // directly, not copied into the buffer.
     std::vector<float> chunk;
-    auto emit = [&](auto &&perVertexValue, int components) {
+    chunk.reserve(kChunkValues + 3);
+    auto emit = [&](auto &&perVertexValue) {
         for (const Instance &in : list) {
             if (!in.used())
                 continue;
-            chunk.clear();
-            chunk.reserve(std::size_t(in.keptVertices) * std::size_t(components));
-            for (unsigned v = 0; v < in.mesh->mNumVertices; ++v)
+            for (unsigned v = 0; v < in.mesh->mNumVertices; ++v) {
                 if (in.kept(v))
                     perVertexValue(in, v, chunk);
-            out.write(chunk.data(), chunk.size() * sizeof(float));
+                if (chunk.size() >= kChunkValues)
+                    sendChunk(chunk, out);
+            }
         }
+        sendChunk(chunk, out);
     };
-    emit(
-        [&](const Instance &in, unsigned v, std::vector<float> &c) {
-            const glm::vec3 t((glm::dvec3(position(in, v)) - centre) * scale);
-            c.insert(c.end(), {t.x, t.y, t.z});
-        },
-        3);
+    emit([&](const Instance &in, unsigned v, std::vector<float> &c) {
+        const glm::vec3 t((glm::dvec3(position(in, v)) - centre) * scale);
+        c.insert(c.end(), {t.x, t.y, t.z});
+    });
     if (normals)
-        emit(
-            [&](const Instance &in, unsigned v, std::vector<float> &c) {
-                const aiVector3D &n = in.mesh->mNormals[v];
-                glm::vec3 t = in.normalTransform * glm::vec3(n.x, n.y, n.z);
-                const float length = glm::length(t);
-                t = length > 0.0f && std::isfinite(length) ? t / length : glm::vec3(0, 0, 1);
-                c.insert(c.end(), {t.x, t.y, t.z});
-            },
-            3);
+        emit([&](const Instance &in, unsigned v, std::vector<float> &c) {
+            const aiVector3D &n = in.mesh->mNormals[v];
+            glm::vec3 t = in.normalTransform * glm::vec3(n.x, n.y, n.z);
+            const float length = glm::length(t);
+            t = length > 0.0f && std::isfinite(length) ? t / length : glm::vec3(0, 0, 1);
+            c.insert(c.end(), {t.x, t.y, t.z});
+        });
     if (colors)
-        emit(
-            [&](const Instance &in, unsigned v, std::vector<float> &c) {
-                glm::vec3 t(1.0f);
-                if (const aiColor4D *col = in.mesh->mColors[0])
-                    t = glm::clamp(glm::vec3(col[v].r, col[v].g, col[v].b), 0.0f, 1.0f);
-                if (!finite(t))
-                    t = glm::vec3(1.0f);
-                c.insert(c.end(), {t.x, t.y, t.z});
-            },
-            3);
+        emit([&](const Instance &in, unsigned v, std::vector<float> &c) {
+            glm::vec3 t(1.0f);
+            if (const aiColor4D *col = in.mesh->mColors[0])
+                t = glm::clamp(glm::vec3(col[v].r, col[v].g, col[v].b), 0.0f, 1.0f);
+            if (!finite(t))
+                t = glm::vec3(1.0f);
+            c.insert(c.end(), {t.x, t.y, t.z});
+        });
     if (uvs)
-        emit(
-            [&](const Instance &in, unsigned v, std::vector<float> &c) {
-                float s = 0.0f, t = 0.0f;
-                if (const aiVector3D *uv = in.mesh->mTextureCoords[0]) {
-                    s = std::isfinite(uv[v].x) ? uv[v].x : 0.0f;
-                    t = std::isfinite(uv[v].y) ? uv[v].y : 0.0f;
-                }
-                c.insert(c.end(), {s, t});
-            },
-            2);
+        emit([&](const Instance &in, unsigned v, std::vector<float> &c) {
+            float s = 0.0f, t = 0.0f;
+            if (const aiVector3D *uv = in.mesh->mTextureCoords[0]) {
+                s = std::isfinite(uv[v].x) ? uv[v].x : 0.0f;
+                t = std::isfinite(uv[v].y) ? uv[v].y : 0.0f;
+            }
+            c.insert(c.end(), {s, t});
+        });
     std::vector<std::uint32_t> indices;
+    indices.reserve(kChunkValues + 3);
     std::uint32_t base = 0;
     for (const Instance &in : list) {
         if (!in.used())
             continue;
         const aiMesh &m = *in.mesh;
         auto index = [&](unsigned i) { return base + (in.remap.empty() ? i : in.remap[i]); };
-        indices.clear();
         for (unsigned f = 0; f < m.mNumFaces; ++f) {
             const aiFace &face = m.mFaces[f];
             if (isTriangle(face, m.mNumVertices) && in.kept(face.mIndices[0]) &&
                 in.kept(face.mIndices[1]) && in.kept(face.mIndices[2]))
                 indices.insert(indices.end(), {index(face.mIndices[0]), index(face.mIndices[1]),
                                                index(face.mIndices[2])});
+            if (indices.size() >= kChunkValues)
+                sendChunk(indices, out);
         }
-        out.write(indices.data(), indices.size() * sizeof(std::uint32_t));
         base += in.keptVertices;
     }
+    sendChunk(indices, out);
 
     if (largest)
         sendMaterial(scene, *largest->mesh, out);
