@@ -2,6 +2,7 @@
 
 #include "lightbench_version.h"
 
+#include "bounded_child.h"
 #include "grade_frames.h"
 #include "grade_outputs.h"
 #include "grading_files.h"
@@ -264,7 +265,7 @@ int runGrade(const CommandLine &cl)
     QString frames;
     bool preparing = framesDir && framesDir->isValid();
     const auto prepare = [&] {
-        QProcess *p = startPreparation(&children, cl, framesDir->path(), spec, mistakes);
+        QProcess *p = boundedChild(&children, preparationTimeLimitMs(spec, mistakes));
         QObject::connect(
             p, &QProcess::finished, &loop,
             [&, p](int exitCode, QProcess::ExitStatus status) {
@@ -277,6 +278,7 @@ int runGrade(const CommandLine &cl)
                 startMore();
             },
             Qt::QueuedConnection);
+        startPreparation(*p, cl, framesDir->path());
     };
     const auto ended = [&](int i, QProcess *p) {
         GradedSubmission &row = rows[std::size_t(i)];
@@ -321,7 +323,9 @@ int runGrade(const CommandLine &cl)
         while (running < parallel && next < toRun.size() && batchFailure.isEmpty() &&
                !StopSignals::received()) {
             const int i = toRun[next++];
-            auto *p = new QProcess(&children);
+            QProcess *p = boundedChild(&children, limitMs, [&rows, i](QProcess *) {
+                rows[std::size_t(i)].report.status = "timed out";
+            });
             QStringList args{
                 "--grade-one", paths[i],        "--grade-name", names[i],
                 "--exercise",  cl.exercisePath, "--seed",       QString::number(cl.seed)};
@@ -329,31 +333,15 @@ int runGrade(const CommandLine &cl)
                 args << "--sheets" << cl.sheetsDir;
             if (!frames.isEmpty())
                 args << "--grade-frames" << frames;
-            auto *timer = new QTimer(p);
-            timer->setSingleShot(true);
-            QObject::connect(timer, &QTimer::timeout, p, [&rows, i, p] {
-                rows[std::size_t(i)].report.status = "timed out";
-                p->kill();
-            });
             // Queued: a process that fails to start says so from inside start(), before
             // the loop runs.
             QObject::connect(
-                p, &QProcess::finished, &loop,
-                [&, i, p, timer] {
-                    timer->stop();
-                    ended(i, p);
-                },
-                Qt::QueuedConnection);
-            QObject::connect(p, &QProcess::errorOccurred, p, [p](QProcess::ProcessError error) {
-                if (error == QProcess::FailedToStart) // no finished() follows: say it ended
-                    emit p->finished(-1, QProcess::CrashExit);
-            });
+                p, &QProcess::finished, &loop, [&, i, p] { ended(i, p); }, Qt::QueuedConnection);
             ++running;
             startedAt[std::size_t(i)] = clock.elapsed();
             // LIGHTBENCH_GRADE_PROGRAM stands in for this program in the children (the tests
             // give one that crashes, chatters or is not there).
             p->start(gradingChildProgram(), args);
-            timer->start(limitMs);
         }
         if (running == 0) // a batch failure or a stop with nothing left running
             loop.quit();

@@ -19,7 +19,6 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QStorageInfo>
-#include <QTimer>
 
 #include <algorithm>
 
@@ -216,25 +215,14 @@ bool preparationWorthIt(const GradingSpec &spec, int mistakes, std::size_t submi
            bytes <= QStorageInfo(QDir::tempPath()).bytesAvailable() / 2;
 }
 
-QProcess *startPreparation(QObject *parent, const CommandLine &cl, const QString &dir,
-                           const GradingSpec &spec, int mistakes)
+void startPreparation(QProcess &preparation, const CommandLine &cl, const QString &dir)
 {
-    auto *p = new QProcess(parent);
-    auto *timer = new QTimer(p);
-    timer->setSingleShot(true);
-    QObject::connect(timer, &QTimer::timeout, p, [p] { p->kill(); });
-    QObject::connect(p, &QProcess::errorOccurred, p, [p](QProcess::ProcessError error) {
-        if (error == QProcess::FailedToStart) // no finished() follows: say it ended
-            emit p->finished(-1, QProcess::CrashExit);
-    });
-    p->setStandardErrorFile(QProcess::nullDevice());
+    preparation.setStandardErrorFile(QProcess::nullDevice());
     // This program, never LIGHTBENCH_GRADE_PROGRAM's stand-in (the tests' children): the
     // frames are the real program's whatever plays the children.
-    p->start(QCoreApplication::applicationFilePath(),
-             {"--grade-prepare", dir, "--exercise", cl.exercisePath, "--seed",
-              QString::number(cl.seed)});
-    timer->start(preparationTimeLimitMs(spec, mistakes));
-    return p;
+    preparation.start(QCoreApplication::applicationFilePath(),
+                      {"--grade-prepare", dir, "--exercise", cl.exercisePath, "--seed",
+                       QString::number(cl.seed)});
 }
 
 bool preparedFrames(QProcess &preparation, int exitCode, QProcess::ExitStatus status)

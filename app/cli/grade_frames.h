@@ -76,11 +76,10 @@ private:
 bool preparationWorthIt(const GradingSpec &spec, int mistakes, std::size_t submissions,
                         int parallel);
 constexpr qint64 kMostPreparedBytes = 1ll << 30;
-// Starts --grade-prepare DIR, a child of `parent` (this program, never the tests' stand-in
-// for the children), killed after preparationTimeLimitMs: its finished() always comes, then
-// preparedFrames says whether the frames are there.
-QProcess *startPreparation(QObject *parent, const CommandLine &commandLine, const QString &dir,
-                           const GradingSpec &spec, int mistakes);
+// Starts --grade-prepare DIR in `preparation` (this program, never the tests' stand-in for
+// the children): a boundedChild (bounded_child.h) killed after preparationTimeLimitMs, whose
+// finished() always comes; then preparedFrames says whether the frames are there.
+void startPreparation(QProcess &preparation, const CommandLine &commandLine, const QString &dir);
 bool preparedFrames(QProcess &preparation, int exitCode, QProcess::ExitStatus status);
 // How long the preparation may take: a trial and the frames of every case for the reference
 // and each mistake ($LIGHTBENCH_GRADE_TIME_LIMIT_MS overrides, as for a submission).

@@ -1,5 +1,6 @@
 #include "work_check.h"
 
+#include "bounded_child.h"
 #include "mistake_match.h"
 
 #include "safe_write.h"
@@ -10,7 +11,6 @@
 #include <QDir>
 #include <QProcess>
 #include <QTemporaryDir>
-#include <QTimer>
 
 #include <algorithm>
 
@@ -45,15 +45,7 @@ QString endedWithoutReport(const QProcess &child)
     return WorkCheck::tr("exit code %1").arg(child.exitCode());
 }
 
-WorkCheck::WorkCheck(QObject *parent) : QObject(parent), m_timer(new QTimer(this))
-{
-    m_timer->setSingleShot(true);
-    connect(m_timer, &QTimer::timeout, this, [this] {
-        m_timedOut = true;
-        if (m_process)
-            m_process->kill(); // finished() follows
-    });
-}
+WorkCheck::WorkCheck(QObject *parent) : QObject(parent) {}
 
 WorkCheck::~WorkCheck()
 {
@@ -62,7 +54,6 @@ WorkCheck::~WorkCheck()
 
 void WorkCheck::cancel()
 {
-    m_timer->stop();
     if (!m_process)
         return;
     QProcess *p = m_process;
@@ -103,23 +94,23 @@ QString WorkCheck::start(const Scene &base, const Exercise &exercise, const QStr
     m_cases = gradingCases(base, exercise.grading, kSeed);
     m_timedOut = false;
     m_limitMs = gradingTimeLimitMs(exercise.grading, int(exercise.mistakes.size()));
-    auto *p = new QProcess(this);
-    m_process = p;
-    // Queued, and only for this process: an end posted by a check cancelled since must not
-    // end the one started after it.
-    const auto ended = [this, p] {
-        if (p == m_process)
-            this->ended();
-    };
-    connect(p, &QProcess::finished, this, ended, Qt::QueuedConnection);
-    connect(p, &QProcess::errorOccurred, this, [ended, this](QProcess::ProcessError error) {
-        if (error == QProcess::FailedToStart) // no finished() follows: say it ended
-            QTimer::singleShot(0, this, ended);
+    // Only for this process: a check cancelled since (killed, let go) must not touch the one
+    // started after it.
+    QProcess *p = boundedChild(this, m_limitMs, [this](QProcess *timedOut) {
+        if (timedOut == m_process)
+            m_timedOut = true;
     });
-    m_process->start(gradingChildProgram(),
-                     {"--grade-one", submission, "--grade-name", tr("your program"), "--exercise",
-                      exercisePath, "--seed", QString::number(kSeed)});
-    m_timer->start(m_limitMs);
+    m_process = p;
+    // Queued: a failure to start ends it from inside start().
+    connect(
+        p, &QProcess::finished, this,
+        [this, p] {
+            if (p == m_process)
+                ended();
+        },
+        Qt::QueuedConnection);
+    p->start(gradingChildProgram(), {"--grade-one", submission, "--grade-name", tr("your program"),
+                                     "--exercise", exercisePath, "--seed", QString::number(kSeed)});
     return {};
 }
 
@@ -129,7 +120,6 @@ void WorkCheck::ended()
     if (!p)
         return; // cancelled meanwhile
     m_process = nullptr;
-    m_timer->stop();
     GradingReport report;
     if (m_timedOut) {
         report.status = "timed out";

@@ -17,7 +17,6 @@
 
 class QProcess;
 class QTemporaryDir;
-class QTimer;
 
 namespace lb {
 
@@ -61,7 +60,6 @@ signals:
 private:
     void ended();
     QProcess *m_process = nullptr;
-    QTimer *m_timer;
     std::unique_ptr<QTemporaryDir> m_dir;
     std::vector<Scene> m_cases;
     bool m_timedOut = false;

@@ -206,6 +206,15 @@ private slots:
         QCOMPARE(report->status, QString("could not start"));
         QVERIFY2(m_window->exercisePanel()->summaryLabel()->text().contains("could not start"),
                  qPrintable(m_window->exercisePanel()->summaryLabel()->text()));
+        // A child past its time is killed, and said to be (the limit is a test's knob here:
+        // no child starts, sets up OpenGL and grades in 50 ms).
+        qputenv("LIGHTBENCH_GRADE_TIME_LIMIT_MS", "50");
+        report = check();
+        qunsetenv("LIGHTBENCH_GRADE_TIME_LIMIT_MS");
+        QVERIFY(report);
+        QCOMPARE(report->status, QString("timed out"));
+        QVERIFY2(m_window->exercisePanel()->summaryLabel()->text().contains("took too long"),
+                 qPrintable(m_window->exercisePanel()->summaryLabel()->text()));
     }
 
     void aBuiltInReferenceSetsSideB()
