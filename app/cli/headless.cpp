@@ -69,15 +69,18 @@ void printLine(const QByteArray &line, FILE *stream)
 }
 
 // With LIGHTBENCH_PHASES set, a run's parts as one JSON line on stderr: for each, the
-// milliseconds since the run began when it ended (bench/mesh.sh's breakdown).
+// milliseconds since the run began when it ended, and as PHASE + "MB" this process's resident
+// memory then (bench/mesh.sh's breakdown).
 class PhaseLog
 {
 public:
     PhaseLog() { m_clock.start(); }
     void mark(const char *phase)
     {
-        if (m_on)
+        if (m_on) {
             m_marks[phase] = std::round(double(m_clock.nsecsElapsed()) * 1e-5) / 10.0;
+            m_marks[QString(phase) + "MB"] = qint64(residentKB() / 1024); // resident then
+        }
     }
     void print() const
     {
@@ -169,11 +172,14 @@ QString formatDiagnostic(const Diagnostic &d, const CommandLine &cl)
 
 namespace {
 
-// How much of the heap to warm for these mesh files (heap_warmer.h): four times their size,
-// about what a binary mesh's arrays take in this process at once (a 19 MB PLY of 1M
-// triangles: the stream's mesh, normal generation's arrays, the driver's copies; measured
-// against two and three times, bench/README.md); never more than an eighth of the machine's
-// memory. A text format's file is bigger than its mesh: more is warmed than used.
+// How much of the heap to warm for these mesh files (heap_warmer.h): two and a half times
+// their size, what a binary mesh's arrays take in this process at once (a 19 MB PLY of 1M
+// triangles without normals: the received mesh 19 MB, then normal generation's arrays and the
+// driver's copies 24 MB more, LIGHTBENCH_PHASES' resident memory); never more than an eighth
+// of the machine's memory. Four times (until issue 36) ended the same phases no sooner and
+// peaked 22 MB higher (196 against 174 MB): what is warmed and not used stays resident; twice
+// fell short and peaked at 178 MB. A text format's file is bigger than its mesh: more is
+// warmed than used.
 // Files of more than kMostWarmedFileBytes get none. The heap is warmed while the helper
 // reads, which is when the helper is at its own peak (Assimp's whole scene, about 3.4 times a
 // binary PLY): a 10M-triangle scan (190 MB) warmed 508 MB, and the two processes peaked
@@ -189,7 +195,7 @@ std::size_t warmingBytes(const QStringList &paths)
     if (bytes > kMostWarmedFileBytes)
         return 0;
     const qint64 cap = ImportLimits::machineMemoryMB() << 17; // MB / 8, in bytes
-    return std::size_t(std::clamp<qint64>(4 * bytes, 0, cap));
+    return std::size_t(std::clamp<qint64>(5 * bytes / 2, 0, cap));
 }
 
 } // namespace
@@ -299,6 +305,7 @@ int runHeadless(const CommandLine &cl, const Scene &requested)
     if (!cl.probe) {
         imported.file.reset(); // the offscreen renderer's hold is the last: it lets go first
         offscreen.dropCpuMeshes(scene);
+        heap.giveBack();
     }
     phases.mark("meshToGpu");
 

@@ -22,6 +22,7 @@ HeapWarmer::HeapWarmer(std::size_t bytes)
     if (bytes == 0)
         return; // no mesh file: the allocator as it comes
     platform::keepFreedMemoryInHeap(kMmapThreshold);
+    m_tuned = true;
     bytes = std::min(bytes, std::size_t(kMmapThreshold) - kStepBytes);
     // Taken whole at once (no page is touched yet), so that allocations made between the
     // steps (the stream's buffers, Qt's events) land beside it, not inside it.
@@ -56,6 +57,13 @@ void HeapWarmer::stop()
     std::free(m_block); // to the heap, which keeps it (M_TRIM_THRESHOLD)
     m_block = nullptr;
     m_size = 0;
+}
+
+void HeapWarmer::giveBack()
+{
+    stop();
+    if (m_tuned)
+        platform::giveFreedMemoryBack();
 }
 
 } // namespace lb

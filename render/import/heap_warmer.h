@@ -28,6 +28,10 @@ public:
 
     // Stops and frees what was touched, which the next allocations reuse.
     void stop();
+    // Stops, and gives what is free in the heap back to the system: for when the arrays it
+    // was warmed for are freed and what comes next needs less (a headless run's frame, once
+    // the mesh is in the driver's buffers). Nothing when nothing was warmed.
+    void giveBack();
     std::size_t warmedBytes() const { return m_warmed; }
 
 private:
@@ -36,6 +40,7 @@ private:
     char *m_block = nullptr; // one block, so that what it frees is one piece of the heap
     std::size_t m_size = 0;
     std::size_t m_warmed = 0;
+    bool m_tuned = false; // the allocator keeps freed memory (keepFreedMemoryInHeap)
     QTimer m_timer;
 };
 

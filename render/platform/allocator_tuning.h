@@ -13,6 +13,11 @@ bool canTuneAllocator();
 // Allocations up to `bigBlockBytes` come from the heap, and freed memory stays in it.
 void keepFreedMemoryInHeap(std::size_t bigBlockBytes);
 
+// Gives the pages of what is free in the heap back to the system (Linux: malloc_trim), for a
+// run whose big arrays are freed and whose next stage needs less: they would otherwise stay
+// resident with keepFreedMemoryInHeap().
+void giveFreedMemoryBack();
+
 // The size of a memory page: touching one byte in each makes a block resident.
 std::size_t pageSize();
 

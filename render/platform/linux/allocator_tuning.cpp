@@ -17,6 +17,11 @@ void keepFreedMemoryInHeap(std::size_t bigBlockBytes)
     mallopt(M_TOP_PAD, 64 << 20);                  // the heap grows in few steps
 }
 
+void giveFreedMemoryBack()
+{
+    malloc_trim(0);
+}
+
 std::size_t pageSize()
 {
     const long size = sysconf(_SC_PAGESIZE);
