@@ -4,6 +4,7 @@
 
 #include "bounded_child.h"
 #include "grade_frames.h"
+#include "grade_frames_folder.h"
 #include "grade_outputs.h"
 #include "grading_files.h"
 #include "grading_formats.h"
@@ -20,7 +21,6 @@
 #include <QFileInfo>
 #include <QProcess>
 #include <QSet>
-#include <QTemporaryDir>
 #include <QThread>
 #include <QTimer>
 
@@ -240,9 +240,10 @@ int runGrade(const CommandLine &cl)
                                        : std::max(1, std::min(QThread::idealThreadCount(), 4));
     // The batch's frames (below): the folder outlives every child, declared before them.
     const int mistakes = int(e.file.exercise->mistakes.size());
-    std::unique_ptr<QTemporaryDir> framesDir;
+    removeAbandonedFramesFolders(); // batches killed before they could, first: their space counts
+    std::unique_ptr<FramesFolder> framesDir;
     if (preparationWorthIt(spec, mistakes, toRun.size(), parallel))
-        framesDir = std::make_unique<QTemporaryDir>();
+        framesDir = std::make_unique<FramesFolder>();
     QEventLoop loop;
     QObject children; // owns the processes: each goes with it, whatever the loop left undone
     StopSignals stop;

@@ -287,6 +287,64 @@ private slots:
         QVERIFY2(!one[0].contains("--grade-frames"), qPrintable(one[0]));
     }
 
+    // A batch killed with SIGKILL cannot remove its frames' folder; the next batch does, and
+    // leaves a live batch's alone.
+    void aKilledBatchsFramesAreRemovedByTheNext()
+    {
+        QTemporaryDir tmp;
+        const QDir dir(tmp.path());
+        // A stand-in child that waits as long as its batch lives, and one that passes at once.
+        const QString waiting = dir.filePath("waiting.sh"), passing = dir.filePath("passing.sh");
+        QVERIFY(write(waiting, "#!/bin/sh\nwhile kill -0 $PPID 2>/dev/null; do sleep 0.1; done\n"));
+        QVERIFY(write(passing,
+                      "#!/bin/sh\necho '{\"status\":\"graded\",\"submission\":\"x\","
+                      "\"cases\":[{\"passed\":true,\"largest\":1,\"shareWithin\":1}]}'\n"));
+        for (const QString &f : {waiting, passing})
+            QVERIFY(QFile::setPermissions(f, QFile::ReadOwner | QFile::ExeOwner));
+        const QString temporary = dir.filePath("tmp");
+        QVERIFY(dir.mkpath("tmp"));
+        const auto environment = [&](const QString &child) {
+            QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+            env.insert("LIGHTBENCH_GRADE_PROGRAM", child);
+            env.insert("LIGHTBENCH_GRADE_PROCESSES", "1");
+            env.insert("TMPDIR", temporary);
+            return env;
+        };
+        const QStringList batch{"--grade", correctCopy(dir, "amy"), correctCopy(dir, "ben"),
+                                "--exercise", kExercise};
+        const auto folders = [&] {
+            return QDir(temporary).entryList({"lightbench-frames-*"},
+                                             QDir::Dirs | QDir::NoDotAndDotDot);
+        };
+        // Two batches whose children wait: their frames are drawn, then one is killed.
+        std::vector<std::unique_ptr<QProcess>> batches;
+        for (int i = 0; i < 2; ++i) {
+            batches.push_back(std::make_unique<QProcess>());
+            batches.back()->setProcessEnvironment(environment(waiting));
+            batches.back()->start(LIGHTBENCH_EXE, batch);
+            QTRY_COMPARE_WITH_TIMEOUT(folders().size(), i + 1, 60000);
+        }
+        const auto drawn = [&] { // every folder has its key: the frames are drawn
+            const QStringList all = folders();
+            return std::all_of(all.begin(), all.end(), [&](const QString &f) {
+                return QFile::exists(QDir(temporary).filePath(f + "/key"));
+            });
+        };
+        QTRY_VERIFY_WITH_TIMEOUT(drawn(), 120000);
+        batches[0]->kill(); // SIGKILL: no clean-up
+        QVERIFY(batches[0]->waitForFinished(10000));
+        QCOMPARE(folders().size(), 2);
+        // The next batch removes the killed one's folder (and its own), not the live one's.
+        const Run next = run(batch, environment(passing));
+        QVERIFY2(next.exitCode == 0, next.err.constData());
+        QCOMPARE(folders().size(), 1);
+        batches[1]->kill();
+        QVERIFY(batches[1]->waitForFinished(10000));
+        const Run last = run(batch, environment(passing));
+        QVERIFY2(last.exitCode == 0, last.err.constData());
+        QCOMPARE(folders(), QStringList());
+    }
+
     void theSameSeedGivesTheSameReport()
     {
         QStringList reports;
