@@ -277,8 +277,8 @@ private slots:
             QVERIFY2(two[i].contains("--grade-frames " + temporary), qPrintable(two[i]));
             QCOMPARE(two[i + 1], QString("the key is there"));
         }
-        // The folder (QTemporaryDir's "lightbench-XXXXXX") goes with the batch. (Qt may put
-        // its runtime folder there too, without XDG_RUNTIME_DIR.)
+        // The folder ("lightbench-frames-XXXXXX") goes with the batch. (Qt may put its runtime
+        // folder there too, without XDG_RUNTIME_DIR.)
         QCOMPARE(
             QDir(temporary).entryList({"lightbench-*"}, QDir::NoDotAndDotDot | QDir::AllEntries),
             QStringList());
