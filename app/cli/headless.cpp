@@ -178,8 +178,10 @@ namespace {
 // driver's copies 24 MB more, LIGHTBENCH_PHASES' resident memory); never more than an eighth
 // of the machine's memory. Four times (until issue 36) ended the same phases no sooner and
 // peaked 22 MB higher (196 against 174 MB): what is warmed and not used stays resident; twice
-// fell short and peaked at 178 MB. A text format's file is bigger than its mesh: more is
-// warmed than used.
+// was as fast and peaked at 178 MB (the heap's layout decides the last few MB). A text
+// format's file is bigger than its mesh: more is warmed than used. Once the mesh is in the
+// driver's buffers the freed heap is given back (HeapWarmer::giveBack): 174 -> 164 MB, for
+// ~20 ms of the frame faulting its own pages in.
 // Files of more than kMostWarmedFileBytes get none. The heap is warmed while the helper
 // reads, which is when the helper is at its own peak (Assimp's whole scene, about 3.4 times a
 // binary PLY): a 10M-triangle scan (190 MB) warmed 508 MB, and the two processes peaked

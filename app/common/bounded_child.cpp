@@ -10,8 +10,12 @@ QProcess *boundedChild(QObject *parent, int limitMs, std::function<void(QProcess
     auto *timer = new QTimer(p);
     timer->setSingleShot(true);
     timer->setInterval(limitMs);
-    // The clock runs from the child's start: a start that fails has no time to bound.
-    QObject::connect(p, &QProcess::started, timer, qOverload<>(&QTimer::start));
+    // The clock runs from start() (the Starting state comes inside it), not from started(),
+    // which a child stuck before its program runs would never send.
+    QObject::connect(p, &QProcess::stateChanged, timer, [timer](QProcess::ProcessState state) {
+        if (state == QProcess::Starting)
+            timer->start();
+    });
     QObject::connect(p, &QProcess::finished, timer, &QTimer::stop);
     QObject::connect(timer, &QTimer::timeout, p, [p, timedOut = std::move(timedOut)] {
         if (timedOut)

@@ -10,7 +10,7 @@
 namespace lb {
 
 // A QProcess, child of `parent`, not started: connect to its finished(), then start() it.
-// Once started it is killed past `limitMs` (`timedOut` is told first, with the process), and
+// From start() on it is killed past `limitMs` (`timedOut` is told first, with the process), and
 // a failure to start emits finished(-1, CrashExit), which QProcess does not do (its
 // error() is then FailedToStart).
 QProcess *boundedChild(QObject *parent, int limitMs, std::function<void(QProcess *)> timedOut = {});

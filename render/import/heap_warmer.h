@@ -6,7 +6,8 @@
 // 1M-triangle mesh (40.5 k in all against 14.7 k for the default sphere). This spends the
 // idle time touching the heap those arrays will be put in, in steps between the helper's
 // messages, and hands it back to the allocator (not to the system) when Assimp is done reading
-// (the helper's "converting" stage) or the import ends.
+// (the helper's "converting" stage) or the import ends; giveBack() returns what is free then
+// to the system, once the arrays it was warmed for are freed.
 
 #include <QTimer>
 

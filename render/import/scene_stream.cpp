@@ -244,8 +244,9 @@ void sendMaterial(const aiScene &scene, const aiMesh &mesh, wire::Writer &out)
     }
 }
 
-// Values (floats or indices) sent a chunk at a time: 1 MiB, the wire writer's buffer.
-constexpr std::size_t kChunkValues = (1u << 20) / 4;
+// Values (floats or indices) sent a chunk at a time: the wire writer's buffer, so that a
+// whole chunk goes out directly.
+constexpr std::size_t kChunkValues = wire::kBufferBytes / 4;
 template <typename T> void sendChunk(std::vector<T> &chunk, wire::Writer &out)
 {
     static_assert(sizeof(T) == 4);

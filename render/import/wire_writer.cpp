@@ -4,10 +4,6 @@
 
 namespace lb::wire {
 
-namespace {
-constexpr std::size_t kBufferBytes = 1 << 20;
-}
-
 Writer::Writer(platform::StreamOutput &out) : m_out(out)
 {
     m_buffer.reserve(kBufferBytes);

@@ -14,6 +14,9 @@ class StreamOutput;
 
 namespace lb::wire {
 
+// The writer's buffer: a write() of at least this many bytes goes out directly, not copied.
+constexpr std::size_t kBufferBytes = 1 << 20;
+
 class Writer
 {
 public:

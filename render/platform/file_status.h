@@ -38,6 +38,9 @@ struct FileStatus
     FileError error;
     std::uint64_t size = 0;   // a regular file's bytes
     unsigned permissions = 0; // the 07777 bits, numbered as POSIX does (0644: rw-r--r--)
+    // Owned by this process's (effective) user; false where it cannot be told (the portable
+    // layer: the standard has no owners), so that a check that needs it refuses.
+    bool ownedByThisUser = false;
 };
 
 enum class Links { Follow, Keep };
@@ -52,6 +55,9 @@ std::filesystem::path linkTarget(const std::filesystem::path &link, FileError &e
 // `path` with every link, "." and ".." resolved, for a file that exists; empty with `error`
 // set when there is none (Missing, Loop, or the system's reason).
 std::filesystem::path resolvedPath(const std::filesystem::path &path, FileError &error);
+
+// Whether FileStatus::ownedByThisUser is told here (false in the portable layer).
+bool canTellOwners();
 
 // Why this process may not create files in the folder `folder` (None when it may).
 FileError creatingFilesRefused(const std::filesystem::path &folder);

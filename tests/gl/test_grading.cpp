@@ -6,6 +6,7 @@
 // faulty exercise stops the batch; children that crash, chatter, cannot start or run past the
 // time limit (a stand-in program and a tiny limit play them) are reported and the batch goes on.
 #include "csv_rows.h"
+#include "file_status.h"
 
 #include <QDir>
 #include <QElapsedTimer>
@@ -20,6 +21,7 @@
 #include <QTest>
 
 #include <algorithm>
+#include <memory>
 
 #include <csignal>
 #include <sys/stat.h>
@@ -291,6 +293,8 @@ private slots:
     // leaves a live batch's alone.
     void aKilledBatchsFramesAreRemovedByTheNext()
     {
+        if (!lb::platform::canTellOwners())
+            QSKIP("this platform layer cannot tell a folder's owner: it removes no frames folder");
         QTemporaryDir tmp;
         const QDir dir(tmp.path());
         // A stand-in child that waits as long as its batch lives, and one that passes at once.
@@ -330,7 +334,7 @@ private slots:
                 return QFile::exists(QDir(temporary).filePath(f + "/key"));
             });
         };
-        QTRY_VERIFY_WITH_TIMEOUT(drawn(), 120000);
+        QTRY_VERIFY_WITH_TIMEOUT(folders().size() == 2 && drawn(), 120000);
         batches[0]->kill(); // SIGKILL: no clean-up
         QVERIFY(batches[0]->waitForFinished(10000));
         QCOMPARE(folders().size(), 2);

@@ -128,6 +128,11 @@ private slots:
         const FileStatus st = fileStatus(native(at("link")), Links::Follow);
         QCOMPARE(st.size, std::uint64_t(10));
         QCOMPARE(st.permissions, 0644u);
+        // The owner: this user's own file, and "/" only for root; never "ours" where the
+        // layer cannot tell.
+        QCOMPARE(fileStatus(native(at("file")), Links::Keep).ownedByThisUser, canTellOwners());
+        QCOMPARE(fileStatus(native("/"), Links::Keep).ownedByThisUser,
+                 canTellOwners() && QFileInfo("/").ownerId() == QFileInfo(at("file")).ownerId());
     }
 
     void linksAreReadAndResolved()

@@ -11,6 +11,11 @@ namespace lb::platform {
 
 using posix::errorFrom;
 
+bool canTellOwners()
+{
+    return true;
+}
+
 FileStatus fileStatus(const std::filesystem::path &path, Links links)
 {
     struct stat st;

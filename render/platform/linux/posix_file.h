@@ -7,6 +7,7 @@
 #include <cstring>
 
 #include <sys/stat.h>
+#include <unistd.h>
 
 namespace lb::platform::posix {
 
@@ -44,6 +45,7 @@ inline FileStatus statusOf(const struct stat &st)
     s.kind = kindOf(st.st_mode);
     s.size = std::uint64_t(st.st_size);
     s.permissions = unsigned(st.st_mode & 07777);
+    s.ownedByThisUser = st.st_uid == ::geteuid();
     return s;
 }
 

@@ -49,6 +49,13 @@ FileKind kindOf(fs::file_type type)
 
 } // namespace
 
+// The standard has no owners, and QFileInfo's are numbers this layer cannot compare with
+// the process's user.
+bool canTellOwners()
+{
+    return false;
+}
+
 FileStatus fileStatus(const fs::path &path, Links links)
 {
     FileStatus s;
