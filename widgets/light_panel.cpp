@@ -17,8 +17,8 @@
 namespace lb {
 
 namespace {
-glm::vec3 LightColors::*const kColourMembers[3] = {&LightColors::ia, &LightColors::id,
-                                                   &LightColors::is};
+glm::vec3 LightColors::*const kLightColours[3] = {&LightColors::ia, &LightColors::id,
+                                                  &LightColors::is};
 }
 
 LightPanel::LightPanel(SceneDocument *document, QWidget *parent)
@@ -116,7 +116,7 @@ LightPanel::LightPanel(SceneDocument *document, QWidget *parent)
         auto *colour = new ColorEdit(symbols[i], this);
         colour->setToolTip(tips[i].arg(symbols[i], namesOf({semantics[i]})));
         connect(colour, &ColorEdit::colorChanged, this, [this, i](const glm::vec3 &c) {
-            edit([&](Scene &s) { current(s).colors.*kColourMembers[i] = c; });
+            edit([&](Scene &s) { current(s).colors.*kLightColours[i] = c; });
         });
         m_colors[std::size_t(i)] = colour;
         feeds(colour, {semantics[i]});
@@ -241,7 +241,7 @@ void LightPanel::refresh(const Scene &scene)
     for (int i = 0; i < 3; ++i) {
         const QSignalBlocker block(m_xyz[std::size_t(i)]);
         m_xyz[std::size_t(i)]->setValue(double(light.position[i]));
-        m_colors[std::size_t(i)]->setColor(light.colors.*kColourMembers[i]);
+        m_colors[std::size_t(i)]->setColor(light.colors.*kLightColours[i]);
     }
     for (int i = 0; i < 3; ++i) {
         const QSignalBlocker block(m_attenuation[std::size_t(i)]),

@@ -13,7 +13,7 @@
 namespace lb {
 
 namespace {
-glm::vec3 Material::*const kColourMembers[3] = {&Material::ka, &Material::kd, &Material::ks};
+glm::vec3 Material::*const kMaterialColours[3] = {&Material::ka, &Material::kd, &Material::ks};
 const double kLogRange = std::log(double(limits::kMaxShininess) / limits::kMinShininess);
 } // namespace
 
@@ -45,7 +45,7 @@ MaterialPanel::MaterialPanel(SceneDocument *document, QWidget *parent)
         auto *colour = new ColorEdit(symbols[i], this);
         colour->setToolTip(tips[i].arg(symbols[i], namesOf({semantics[i]})));
         connect(colour, &ColorEdit::colorChanged, this, [this, i](const glm::vec3 &c) {
-            edit([&](Scene &s) { s.selectedObject().material.*kColourMembers[i] = c; });
+            edit([&](Scene &s) { s.selectedObject().material.*kMaterialColours[i] = c; });
         });
         m_colors[std::size_t(i)] = colour;
         feeds(colour, {semantics[i]});
@@ -81,7 +81,7 @@ MaterialPanel::MaterialPanel(SceneDocument *document, QWidget *parent)
 void MaterialPanel::refresh(const Scene &scene)
 {
     for (int i = 0; i < 3; ++i)
-        m_colors[std::size_t(i)]->setColor(scene.selectedObject().material.*kColourMembers[i]);
+        m_colors[std::size_t(i)]->setColor(scene.selectedObject().material.*kMaterialColours[i]);
     const QSignalBlocker b1(m_slider), b2(m_box);
     m_slider->setValue(sliderPosition(scene.selectedObject().material.shininess));
     m_box->setValue(double(scene.selectedObject().material.shininess));

@@ -30,18 +30,17 @@
 namespace lb {
 
 namespace {
-const char *kRecentKey = "recentLessons";
-const char *kDirKey = "lessons/lastDirectory";
-const char *kCurrentKey = "lessons/current";   // the lesson open at the end of the session
-const char *kStepKey = "lessons/step";         // its step, from 1
-const char *kLanguageKey = "lessons/language"; // captions' language; empty: the system's
+const char *kRecentLessonsKey = "recentLessons";
+const char *kCurrentLessonKey = "lessons/current"; // the lesson open at the end of the session
+const char *kStepKey = "lessons/step";             // its step, from 1
+const char *kLanguageKey = "lessons/language";     // captions' language; empty: the system's
 } // namespace
 
 LessonActions::LessonActions(MainWindow *window, LessonBar *bar, QSettings &settings)
     : QObject(window), m_window(window), m_bar(bar), m_settings(settings)
 {
     m_motion = new LessonMotion(&window->document(), this);
-    m_recent = new RecentFiles(tr("Open Recent &Lesson"), settings, kRecentKey, window);
+    m_recent = new RecentFiles(tr("Open Recent &Lesson"), settings, kRecentLessonsKey, window);
     connect(m_recent, &RecentFiles::fileChosen, this,
             [this](const QString &path) { openAsking(path); });
     buildLessonMenu();
@@ -65,18 +64,18 @@ LessonActions::LessonActions(MainWindow *window, LessonBar *bar, QSettings &sett
 void LessonActions::remember()
 {
     // A new lesson not yet saved has no file to come back from.
-    m_settings.setValue(kCurrentKey, m_open ? m_path : QString());
+    m_settings.setValue(kCurrentLessonKey, m_open ? m_path : QString());
     m_settings.setValue(kStepKey, m_current + 1);
 }
 
 void LessonActions::restoreSession()
 {
-    const QString path = m_settings.value(kCurrentKey).toString();
+    const QString path = m_settings.value(kCurrentLessonKey).toString();
     if (path.isEmpty())
         return;
     const LessonRead read = readLessonFile(path);
     if (!read.lesson) {
-        m_settings.remove(kCurrentKey);
+        m_settings.remove(kCurrentLessonKey);
         showStatusMessage(m_window,
                           tr("The last lesson could not be opened again: %1").arg(read.error));
         return;

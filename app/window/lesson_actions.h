@@ -107,6 +107,9 @@ signals:
     void changed(); // opened, closed, stepped or edited: the title follows
 
 private:
+    // Where Open Lesson and Save Lesson As start (lesson_actions.cpp, lesson_authoring.cpp).
+    static constexpr const char *kDirKey = "lessons/lastDirectory";
+
     void buildLessonMenu();
     void addLanguageMenu(); // Lesson > Caption Language, kept in the settings
     void showOpenDialog();

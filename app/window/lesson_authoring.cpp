@@ -20,10 +20,6 @@
 
 namespace lb {
 
-namespace {
-const char *kDirKey = "lessons/lastDirectory";
-} // namespace
-
 void LessonActions::newLesson()
 {
     if (m_open && m_modified && m_maySetAside && !m_maySetAside(SetAsideFor::NewLesson, {}))

@@ -32,7 +32,7 @@ namespace {
 const char *kMemoryKey = "import/memoryLimitMB";
 const char *kTimeKey = "import/timeLimitSeconds";
 const char *kBudgetKey = "editor/frameBudgetSeconds";
-const char *kRecentKey = "recentMeshes";
+const char *kRecentMeshesKey = "recentMeshes";
 const char *kDialogDirKey = "import/lastDirectory";
 const char *kImageDirKey = "texture/lastDirectory";
 
@@ -64,7 +64,7 @@ MeshActions::MeshActions(QMainWindow *window, SceneDocument *document, ObjectLoa
     m_progress = new LoadProgress(window);
     m_summary = status->meshLabel();
     status->setProgressWidget(m_progress);
-    m_recent = new RecentFiles(tr("Open &Recent Mesh"), settings, kRecentKey, window);
+    m_recent = new RecentFiles(tr("Open &Recent Mesh"), settings, kRecentMeshesKey, window);
     connect(m_recent, &RecentFiles::fileChosen, this, &MeshActions::open);
 
     connect(m_progress, &LoadProgress::cancelRequested, loader, &ObjectLoader::cancel);

@@ -23,10 +23,10 @@
 namespace lb {
 
 namespace {
-const char *kRecentKey = "recentScenes";
-const char *kDirKey = "scenes/lastDirectory";
+const char *kRecentScenesKey = "recentScenes";
+const char *kSceneDirKey = "scenes/lastDirectory";
 const char *kExportSizeKey = "export/size";
-const char *kCurrentKey = "scenes/current"; // the file the session's scene came from
+const char *kCurrentSceneKey = "scenes/current"; // the file the session's scene came from
 // Translated when a dialog opens (a constant would be made before any translator is in).
 // Scene files end in .lbscene (the desktop's type for them) or .json (the course's).
 QString sceneOpenFilter()
@@ -60,12 +60,12 @@ SceneActions::SceneActions(QMainWindow *window, SceneDocument *document, ShaderD
     : QObject(window), m_window(window), m_document(document), m_shaders(shaders),
       m_viewport(viewport), m_settings(settings)
 {
-    m_recent = new RecentFiles(tr("Open Recent S&cene"), settings, kRecentKey, window);
+    m_recent = new RecentFiles(tr("Open Recent S&cene"), settings, kRecentScenesKey, window);
     connect(m_recent, &RecentFiles::fileChosen, this,
             [this](const QString &path) { openAsking(path); });
     // The session's scene came from this file: it is still the document (with the session's
     // changes unsaved, as the title's * says), as long as the file can be read.
-    const QString current = m_settings.value(kCurrentKey).toString();
+    const QString current = m_settings.value(kCurrentSceneKey).toString();
     if (!current.isEmpty()) {
         const SceneFileRead read = readSceneFile(current);
         if (read.file) {
@@ -260,10 +260,10 @@ void SceneActions::copyImage()
 void SceneActions::showOpenDialog()
 {
     const QString path = QFileDialog::getOpenFileName(
-        m_window, tr("Open a scene"), m_settings.value(kDirKey).toString(), sceneOpenFilter());
+        m_window, tr("Open a scene"), m_settings.value(kSceneDirKey).toString(), sceneOpenFilter());
     if (path.isEmpty())
         return;
-    m_settings.setValue(kDirKey, QFileInfo(path).absolutePath());
+    m_settings.setValue(kSceneDirKey, QFileInfo(path).absolutePath());
     openAsking(path);
 }
 
@@ -274,13 +274,13 @@ bool SceneActions::showSaveDialog()
         m_path.endsWith(".lbscene", Qt::CaseInsensitive) ? lbsceneFilter() : jsonSceneFilter();
     QString path = QFileDialog::getSaveFileName(
         m_window, tr("Save the scene"),
-        m_path.isEmpty() ? m_settings.value(kDirKey).toString() : m_path,
+        m_path.isEmpty() ? m_settings.value(kSceneDirKey).toString() : m_path,
         jsonSceneFilter() + ";;" + lbsceneFilter() + ";;" + tr("All files (*)"), &chosenFilter);
     if (path.isEmpty())
         return false;
     if (QFileInfo(path).suffix().isEmpty())
         path += chosenFilter == lbsceneFilter() ? ".lbscene" : ".json";
-    m_settings.setValue(kDirKey, QFileInfo(path).absolutePath());
+    m_settings.setValue(kSceneDirKey, QFileInfo(path).absolutePath());
     return save(path).isEmpty();
 }
 
@@ -292,7 +292,7 @@ void SceneActions::showExportDialog()
         return;
     m_settings.setValue(kExportSizeKey, sizes.size());
     QString path = QFileDialog::getSaveFileName(m_window, tr("Export the view"),
-                                                m_settings.value(kDirKey).toString(),
+                                                m_settings.value(kSceneDirKey).toString(),
                                                 tr("PNG images (*.png);;All files (*)"));
     if (path.isEmpty())
         return;
@@ -313,7 +313,7 @@ void SceneActions::setDocument(const QString &origin)
     const bool example = origin.startsWith(":/");
     m_path = example ? QString() : origin;
     m_name = example ? origin.section('/', -1) : QFileInfo(origin).fileName();
-    m_settings.setValue(kCurrentKey, origin);
+    m_settings.setValue(kCurrentSceneKey, origin);
 }
 
 void SceneActions::forgetFile()

@@ -32,7 +32,7 @@ OffscreenRenderer::~OffscreenRenderer()
 
 namespace {
 // The translation context of this file's messages.
-struct Text
+struct OffscreenMessages
 {
     Q_DECLARE_TR_FUNCTIONS(lb::Offscreen)
 };
@@ -45,13 +45,14 @@ QString OffscreenRenderer::initialize(QSize size)
     m_surface.create();
     m_context.setFormat(QSurfaceFormat::defaultFormat());
     if (!m_context.create())
-        return Text::tr("cannot create an OpenGL context (is there an X server with OpenGL?)");
+        return OffscreenMessages::tr(
+            "cannot create an OpenGL context (is there an X server with OpenGL?)");
     if (!m_context.makeCurrent(&m_surface))
-        return Text::tr("cannot make the OpenGL context current");
+        return OffscreenMessages::tr("cannot make the OpenGL context current");
     m_resetStatus.attach(&m_context);
     const QSurfaceFormat f = m_context.format();
     if (f.majorVersion() * 10 + f.minorVersion() < 33)
-        return Text::tr("OpenGL 3.3 is needed, the driver gives %1.%2")
+        return OffscreenMessages::tr("OpenGL 3.3 is needed, the driver gives %1.%2")
             .arg(f.majorVersion())
             .arg(f.minorVersion());
     QOpenGLFramebufferObjectFormat format;
@@ -59,7 +60,9 @@ QString OffscreenRenderer::initialize(QSize size)
     format.setInternalTextureFormat(GL_RGBA8);
     m_fbo = std::make_unique<QOpenGLFramebufferObject>(size, format);
     if (!m_fbo->isValid())
-        return Text::tr("cannot create a %1x%2 framebuffer").arg(size.width()).arg(size.height());
+        return OffscreenMessages::tr("cannot create a %1x%2 framebuffer")
+            .arg(size.width())
+            .arg(size.height());
     return m_renderer.initialize();
 }
 

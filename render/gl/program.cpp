@@ -20,7 +20,7 @@ namespace {
 
 // The translation context of this file's messages. A sentence naming a stage is written out
 // for each stage: the word's case and gender change the sentence around it.
-struct Text
+struct ProgramMessages
 {
     Q_DECLARE_TR_FUNCTIONS(lb::Program)
 };
@@ -66,19 +66,21 @@ GlShader compile(QOpenGLExtraFunctions &gl, ShaderStage stage, const QString &so
     const bool vertex = stage == ShaderStage::Vertex; // compiled: vertex or fragment
     if (source.trimmed().isEmpty()) {
         addMessage(build, stage,
-                   vertex ? Text::tr("the vertex shader is empty")
-                          : Text::tr("the fragment shader is empty"));
+                   vertex ? ProgramMessages::tr("the vertex shader is empty")
+                          : ProgramMessages::tr("the fragment shader is empty"));
         return {};
     }
     if (source.size() > kMaxSourceCharacters) {
         // Mesa needs many seconds for megabytes of GLSL; a live editor would freeze.
-        addMessage(build, stage,
-                   (vertex ? Text::tr("the vertex shader is %1 KiB; lightbench compiles sources "
-                                      "up to %2 KiB")
-                           : Text::tr("the fragment shader is %1 KiB; lightbench compiles "
-                                      "sources up to %2 KiB"))
-                       .arg(source.size() / 1024)
-                       .arg(kMaxSourceCharacters / 1024));
+        addMessage(
+            build, stage,
+            (vertex
+                 ? ProgramMessages::tr("the vertex shader is %1 KiB; lightbench compiles sources "
+                                       "up to %2 KiB")
+                 : ProgramMessages::tr("the fragment shader is %1 KiB; lightbench compiles "
+                                       "sources up to %2 KiB"))
+                .arg(source.size() / 1024)
+                .arg(kMaxSourceCharacters / 1024));
         return {};
     }
     if (std::optional<Diagnostic> refusal = readLoops(source, stage).expansionRefusal) {
@@ -103,11 +105,13 @@ GlShader compile(QOpenGLExtraFunctions &gl, ShaderStage stage, const QString &so
     if (status != GL_TRUE) {
         // Some drivers fail without a word; the user still needs one.
         if (!build.hasErrors())
-            addMessage(build, stage,
-                       vertex ? Text::tr("the vertex shader does not compile (the driver gave no "
-                                         "reason)")
-                              : Text::tr("the fragment shader does not compile (the driver gave "
-                                         "no reason)"));
+            addMessage(
+                build, stage,
+                vertex
+                    ? ProgramMessages::tr("the vertex shader does not compile (the driver gave no "
+                                          "reason)")
+                    : ProgramMessages::tr("the fragment shader does not compile (the driver gave "
+                                          "no reason)"));
         return {};
     }
     // Before the driver's silent optimisation draws garbage (or a GPU resets): endless
@@ -273,7 +277,7 @@ BuiltProgram buildProgram(QOpenGLExtraFunctions &gl, const QString &vertexSource
     if (status != GL_TRUE) {
         if (!build.hasErrors())
             addMessage(build, ShaderStage::Link,
-                       Text::tr("the program does not link (no reason given)"));
+                       ProgramMessages::tr("the program does not link (no reason given)"));
         return result;
     }
     // Two programs link but cannot draw the object; they are refused like a failed link, so
@@ -284,13 +288,15 @@ BuiltProgram buildProgram(QOpenGLExtraFunctions &gl, const QString &vertexSource
                                           gl.glGetAttribLocation(program.id(), b.name) >= 0);
     if (!readsPosition)
         addMessage(build, ShaderStage::Vertex,
-                   Text::tr("no position input: the mesh reaches the shader through an "
-                            "attribute named vPosition, aVertexPosition, position or aPosition"));
+                   ProgramMessages::tr(
+                       "no position input: the mesh reaches the shader through an "
+                       "attribute named vPosition, aVertexPosition, position or aPosition"));
     if (!writesFragmentColour(fragmentSource))
-        addMessage(build, ShaderStage::Fragment,
-                   Text::tr("the fragment shader writes no colour: assign gl_FragColor (no "
-                            "#version, #version 100) or declare an out vec4 (#version 300 es, "
-                            "330 and later)"));
+        addMessage(
+            build, ShaderStage::Fragment,
+            ProgramMessages::tr("the fragment shader writes no colour: assign gl_FragColor (no "
+                                "#version, #version 100) or declare an out vec4 (#version 300 es, "
+                                "330 and later)"));
     if (build.hasErrors())
         return result;
     build.linked = true;
@@ -307,7 +313,8 @@ BuiltProgram buildBuiltIn(QOpenGLExtraFunctions &gl, const QString &name, QStrin
     BuiltProgram built = buildProgram(gl, pair.vertexSource(), fragmentPair.fragmentSource());
     if (!built.build.ok())
         //: %1 a built-in program's name, %2 its build log
-        error += Text::tr("built-in shader '%1' failed:\n%2").arg(name, built.build.log());
+        error +=
+            ProgramMessages::tr("built-in shader '%1' failed:\n%2").arg(name, built.build.log());
     return built;
 }
 
@@ -387,14 +394,16 @@ BuiltProgram buildSpecialisedBuiltIn(QOpenGLExtraFunctions &gl, const BuiltInVar
     const QString v = specialise(preset.vertexSource(), vertexSet);
     const QString f = specialise(preset.fragmentSource(), fragmentSet);
     if (std::max(vertexSet, fragmentSet) < 3) {
-        error += Text::tr("built-in shader '%1' lacks a '#define MAX_LIGHTS', 'LIGHT_FACTORS' or "
-                          "'SHOW_CHOICES' line\n")
+        error += ProgramMessages::tr(
+                     "built-in shader '%1' lacks a '#define MAX_LIGHTS', 'LIGHT_FACTORS' or "
+                     "'SHOW_CHOICES' line\n")
                      .arg(preset.name);
         return {};
     }
     BuiltProgram built = buildProgram(gl, v, f);
     if (!built.build.ok())
-        error += Text::tr("built-in shader '%1' failed:\n%2").arg(preset.name, built.build.log());
+        error += ProgramMessages::tr("built-in shader '%1' failed:\n%2")
+                     .arg(preset.name, built.build.log());
     return built;
 }
 

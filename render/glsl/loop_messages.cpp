@@ -7,7 +7,7 @@ namespace lb {
 namespace {
 
 // The translation context of these messages.
-struct Text
+struct LoopMessages
 {
     Q_DECLARE_TR_FUNCTIONS(lb::Loops)
 };
@@ -66,31 +66,35 @@ LoopTexts countedLoopTexts(const QString &steps, ShaderStage stage, bool wraps)
 
 LoopTexts unconditionalLoopTexts(bool noCondition)
 {
-    return {noCondition ? Text::tr("this loop never ends: it has no condition and nothing in it "
+    return {noCondition
+                ? LoopMessages::tr("this loop never ends: it has no condition and nothing in it "
                                    "breaks, returns or discards (the driver may drop it and draw "
                                    "garbage, or hang)")
-                        : Text::tr("this loop never ends: its condition is always true and "
+                : LoopMessages::tr("this loop never ends: its condition is always true and "
                                    "nothing in it breaks, returns or discards (the driver may "
                                    "drop it and draw garbage, or hang)"),
-            Text::tr("this program never finishes a frame: the loop here has no condition (or an "
-                     "always-true one) and no break, return or discard")};
+            LoopMessages::tr(
+                "this program never finishes a frame: the loop here has no condition (or an "
+                "always-true one) and no break, return or discard")};
 }
 
 QString unchangedConditionWarning(const QStringList &names)
 {
     //: %1 the names the loop's condition reads, as the shader spells them ("i, n")
-    return names.size() == 1 ? Text::tr("this loop never ends once it starts: its condition reads "
-                                        "%1, and nothing in the loop changes it")
-                                   .arg(names.front())
-                             : Text::tr("this loop never ends once it starts: its condition reads "
-                                        "%1, and nothing in the loop changes them")
-                                   .arg(names.join(", "));
+    return names.size() == 1
+               ? LoopMessages::tr("this loop never ends once it starts: its condition reads "
+                                  "%1, and nothing in the loop changes it")
+                     .arg(names.front())
+               : LoopMessages::tr("this loop never ends once it starts: its condition reads "
+                                  "%1, and nothing in the loop changes them")
+                     .arg(names.join(", "));
 }
 
 QString withMacroNote(const QString &text, const QString &macro)
 {
     //: %1 a message about a loop, %2 the name of the macro that writes the loop
-    return Text::tr("%1 (the loop comes from macro %2, used on this line)").arg(text, macro);
+    return LoopMessages::tr("%1 (the loop comes from macro %2, used on this line)")
+        .arg(text, macro);
 }
 
 } // namespace lb

@@ -1,5 +1,7 @@
 #include "webgl1_translation.h"
 
+#include "glsl_lexer.h"
+
 #include <QHash>
 
 #include <atomic>
@@ -10,11 +12,6 @@ namespace {
 
 std::atomic<int> g_forced{-1}; // -1: not set, read the environment
 std::atomic<bool> g_driverRefuses{false};
-
-bool startsIdentifier(QChar c)
-{
-    return c.isLetter() || c == '_';
-}
 
 const QHash<QString, QString> &commonNames()
 {

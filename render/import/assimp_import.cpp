@@ -51,13 +51,6 @@ private:
     float m_last = -1.0f;
 };
 
-int fail(wire::Writer &out, const std::string &message, int code = wire::kExitFailed)
-{
-    out.text(Record::Error, message);
-    out.flush();
-    return code;
-}
-
 std::string outOfMemory(long long limitMB)
 {
     std::ostringstream s;
@@ -108,17 +101,17 @@ int importToStream(const std::string &path, wire::Writer &out, long long memoryL
         if (!scene) {
             std::string error = importer.GetErrorString();
             if (error.find("bad_alloc") != std::string::npos)
-                return fail(out, outOfMemory(memoryLimitMB), wire::kExitOutOfMemory);
+                return out.fail(outOfMemory(memoryLimitMB), wire::kExitOutOfMemory);
             if (error.empty())
                 error = "Assimp could not read the file";
             // The first file refused is the likely reason (the others are mostly Assimp's
             // retries of the same name in other spellings); Assimp's own words follow.
             if (!files->problems().empty())
                 error = files->problems().front() + "; Assimp: " + error;
-            return fail(out, error);
+            return out.fail(error);
         }
         if (!scene->mMeshes || scene->mNumMeshes == 0)
-            return fail(out, "the file holds no meshes");
+            return out.fail("the file holds no meshes");
         // Assimp did without them (a material library: the default material instead).
         for (const std::string &problem : files->problems())
             out.text(Record::Warning, problem);
@@ -127,9 +120,9 @@ int importToStream(const std::string &path, wire::Writer &out, long long memoryL
             [progress](float fraction, const char *stage) { progress->send(fraction, stage); },
             seconds);
     } catch (const std::bad_alloc &) {
-        return fail(out, outOfMemory(memoryLimitMB), wire::kExitOutOfMemory);
+        return out.fail(outOfMemory(memoryLimitMB), wire::kExitOutOfMemory);
     } catch (const std::exception &e) {
-        return fail(out, std::string("import failed: ") + e.what());
+        return out.fail(std::string("import failed: ") + e.what());
     }
 }
 

@@ -254,13 +254,6 @@ template <typename T> void sendChunk(std::vector<T> &chunk, wire::Writer &out)
     chunk.clear();
 }
 
-int fail(wire::Writer &out, const std::string &message)
-{
-    out.text(Record::Error, message);
-    out.flush();
-    return wire::kExitFailed;
-}
-
 } // namespace
 
 int writeScene(const aiScene &scene, wire::Writer &out, const ImportProgress &progress,
@@ -293,10 +286,10 @@ int writeScene(const aiScene &scene, wire::Writer &out, const ImportProgress &pr
               << " vertices with non-finite coordinates)";
         else if (counts.skippedFaces)
             s << " (" << counts.skippedFaces << " points, lines or broken faces)";
-        return fail(out, s.str());
+        return out.fail(s.str());
     }
     if (vertexCount > wire::kMaxVertices)
-        return fail(out, "too many vertices for 32-bit indices");
+        return out.fail("too many vertices for 32-bit indices");
     progress(0.85f, "converting");
 
     std::uint64_t nonFiniteNormals = 0;

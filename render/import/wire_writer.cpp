@@ -48,6 +48,13 @@ void Writer::flush()
     m_buffer.clear();
 }
 
+int Writer::fail(const std::string &message, int exitCode)
+{
+    text(Record::Error, message);
+    flush();
+    return exitCode;
+}
+
 void Writer::writeAll(const char *p, std::size_t size)
 {
     if (m_ok && size > 0 && !m_out.writeAll(p, size))

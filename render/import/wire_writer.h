@@ -32,6 +32,9 @@ public:
     void begin(Record type, std::uint64_t size);
     void write(const void *data, std::size_t size);
     void flush();
+    // The helper's last word: an Error record saying `message`, sent at once; gives back
+    // `exitCode`, the exit code that goes with it.
+    int fail(const std::string &message, int exitCode = kExitFailed);
     // False once a write failed (the reader went away); later writes are dropped.
     bool ok() const { return m_ok; }
 

@@ -12,7 +12,7 @@ namespace lb {
 
 namespace {
 // The translation context of this file's messages.
-struct Text
+struct ProgramTrialMessages
 {
     Q_DECLARE_TR_FUNCTIONS(lb::ProgramTrial)
 };
@@ -29,12 +29,14 @@ QString slowFrameMessage(double estimatedMs, QSize target, double measuredMs, QS
                             QString::number(measured.height()),
                             durationText(budgetMs)};
     //: %1 the estimate at %2x%3 pixels, %4 the time measured at %5x%6, %7 the budget
-    return (loops ? Text::tr("drawing one frame with this program would take about %1 at %2x%3 "
-                             "(measured %4 at %5x%6; the budget is %7): an endless or very long "
-                             "loop?")
-                  : Text::tr("drawing one frame with this program would take about %1 at %2x%3 "
-                             "(measured %4 at %5x%6; the budget is %7): too much work for every "
-                             "pixel?"))
+    return (loops ? ProgramTrialMessages::tr(
+                        "drawing one frame with this program would take about %1 at %2x%3 "
+                        "(measured %4 at %5x%6; the budget is %7): an endless or very long "
+                        "loop?")
+                  : ProgramTrialMessages::tr(
+                        "drawing one frame with this program would take about %1 at %2x%3 "
+                        "(measured %4 at %5x%6; the budget is %7): too much work for every "
+                        "pixel?"))
         .arg(args[0], args[1], args[2], args[3], args[4], args[5], args[6]);
 }
 } // namespace
@@ -42,9 +44,10 @@ QString slowFrameMessage(double estimatedMs, QSize target, double measuredMs, QS
 QString durationText(double ms)
 {
     //: a duration in seconds
-    return ms >= 1000.0 ? Text::tr("%1 s").arg(ms / 1000.0, 0, 'f', ms >= 10000.0 ? 0 : 1)
-                        //: a duration in milliseconds
-                        : Text::tr("%1 ms").arg(ms, 0, 'f', 0);
+    return ms >= 1000.0
+               ? ProgramTrialMessages::tr("%1 s").arg(ms / 1000.0, 0, 'f', ms >= 10000.0 ? 0 : 1)
+               //: a duration in milliseconds
+               : ProgramTrialMessages::tr("%1 ms").arg(ms, 0, 'f', 0);
 }
 
 Diagnostic refusalAt(const QString &vertex, const QString &fragment, const QString &message)

@@ -14,7 +14,7 @@ namespace lb {
 namespace {
 
 // The translation context of the sheet's text.
-struct Text
+struct GradingMessages
 {
     Q_DECLARE_TR_FUNCTIONS(lb::Grading)
 };
@@ -132,14 +132,17 @@ QString gradingSheetTitle(const QString &title, const CaseResult &result, int ca
     const QString share = QString::number(100.0 * result.shareWithin, 'f', 1);
     const QString compared = QString::number(result.compared);
     //: the outcome of a case, at the end of a grading sheet's title
-    const QString outcome = result.passed ? Text::tr("passed") : Text::tr("failed");
+    const QString outcome =
+        result.passed ? GradingMessages::tr("passed") : GradingMessages::tr("failed");
     if (result.at.x() < 0) // nothing differs
-        return Text::tr("%1 - case %2: largest difference %3/255, %4% of %5 pixels within "
-                        "tolerance, %6")
+        return GradingMessages::tr(
+                   "%1 - case %2: largest difference %3/255, %4% of %5 pixels within "
+                   "tolerance, %6")
             .arg(name, index, largest, share, compared, outcome);
     //: %4, %5: the pixel that differs most
-    return Text::tr("%1 - case %2: largest difference %3/255 at (%4, %5), %6% of %7 pixels "
-                    "within tolerance, %8")
+    return GradingMessages::tr(
+               "%1 - case %2: largest difference %3/255 at (%4, %5), %6% of %7 pixels "
+               "within tolerance, %8")
         .arg(name, index, largest, QString::number(result.at.x()), QString::number(result.at.y()),
              share, compared, outcome);
 }
@@ -162,8 +165,8 @@ QImage gradingSheet(const QString &title, const QImage &student, const QImage &r
                Qt::AlignLeft | Qt::AlignVCenter, gradingSheetTitle(title, result, caseIndex));
     const QImage frames[3] = {student, reference, differenceHeatMap(student, reference)};
     //: the captions under a grading sheet's three frames
-    const QString captions[3] = {Text::tr("student"), Text::tr("reference"),
-                                 Text::tr("|student - reference| (white: 64/255)")};
+    const QString captions[3] = {GradingMessages::tr("student"), GradingMessages::tr("reference"),
+                                 GradingMessages::tr("|student - reference| (white: 64/255)")};
     for (int i = 0; i < 3; ++i) {
         const QPoint at(margin + i * (w + margin), margin + titleHeight);
         p.drawImage(at, frames[i]);

@@ -8,7 +8,7 @@ namespace lb {
 namespace {
 
 // The translation context of this file's messages.
-struct Text
+struct ImageTruncationMessages
 {
     Q_DECLARE_TR_FUNCTIONS(lb::ImageTruncation)
 };
@@ -30,9 +30,10 @@ QString truncatedJpeg(const QByteArray &bytes)
 {
     const qsizetype scan = bytes.lastIndexOf(QByteArrayLiteral("\xFF\xDA"));
     if (scan < 0)
-        return Text::tr("no image data (no scan)");
+        return ImageTruncationMessages::tr("no image data (no scan)");
     if (bytes.indexOf(QByteArrayLiteral("\xFF\xD9"), scan) < 0)
-        return Text::tr("the file ends inside the image data (no end-of-image marker): cut short?");
+        return ImageTruncationMessages::tr(
+            "the file ends inside the image data (no end-of-image marker): cut short?");
     return {};
 }
 
@@ -40,7 +41,7 @@ QString truncatedJpeg(const QByteArray &bytes)
 QString truncatedBmp(const QByteArray &bytes)
 {
     if (bytes.size() < 26)
-        return Text::tr("the file ends inside its header");
+        return ImageTruncationMessages::tr("the file ends inside its header");
     const quint32 offset = le32(bytes, 10), header = le32(bytes, 14);
     qint64 width = 0, height = 0, bits = 0, compression = 0;
     if (header == 12) { // OS/2's BITMAPCOREHEADER
@@ -63,7 +64,8 @@ QString truncatedBmp(const QByteArray &bytes)
         needed = qint64(offset) + le32(bytes, 34);
     }
     if (needed > bytes.size())
-        return Text::tr("the file ends inside the image data (%1 of %2 bytes): cut short?")
+        return ImageTruncationMessages::tr(
+                   "the file ends inside the image data (%1 of %2 bytes): cut short?")
             .arg(bytes.size())
             .arg(needed);
     return {};

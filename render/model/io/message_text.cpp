@@ -25,6 +25,11 @@ QString echoedValue(const QString &text, int max)
     return line;
 }
 
+QString echoedPath(const QString &path)
+{
+    return echoedValue(path, 300);
+}
+
 namespace {
 
 // The Unicode controls that break a line or reorder the text after them (bidi embeddings,

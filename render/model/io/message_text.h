@@ -12,6 +12,8 @@ QString elidedForMessage(const QString &text, int max = 200);
 // A value the user typed or a file named (a path, an argument), as one line of a message:
 // elided as above, and line breaks and other control characters shown as U+FFFD.
 QString echoedValue(const QString &text, int max = 200);
+// A file's path as a message names it: echoedValue with room for a deep folder (300).
+QString echoedPath(const QString &path);
 // A name shown as it is spelt, on one line that a terminal, a CSV cell or a label cannot
 // misread (issue 29: a submission named "x\nalice: passed, 20/20 ..." printed a fake result
 // line; ESC sequences recoloured the terminal): line breaks, tabs, ESC, every other C0 and C1

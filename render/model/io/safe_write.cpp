@@ -22,16 +22,10 @@ namespace lb {
 namespace {
 
 // The translation context of this file's messages.
-struct Text
+struct SafeWriteMessages
 {
     Q_DECLARE_TR_FUNCTIONS(lb::SafeWrite)
 };
-
-// A path as a message shows it: a 60 MB name is cut short.
-QString shown(const QString &path)
-{
-    return echoedValue(path, 300);
-}
 
 // Where the bytes go: the file at the end of the target's symbolic links (the links stay
 // links), or why there is none that may be replaced.
@@ -50,7 +44,7 @@ Target resolveTarget(const QString &given)
     Target t;
     QString path = given;
     const auto fail = [&](const QString &why) {
-        t.error = QString("%1: %2").arg(shown(given), why);
+        t.error = QString("%1: %2").arg(echoedPath(given), why);
         return t;
     };
     // As the kernel counts: more links than this in a row is a loop.
@@ -58,7 +52,7 @@ Target resolveTarget(const QString &given)
         const platform::FileStatus st =
             platform::fileStatus(platform::nativePath(path), platform::Links::Keep);
         if (st.error.code == FileError::Loop)
-            return fail(Text::tr("a loop of symbolic links"));
+            return fail(SafeWriteMessages::tr("a loop of symbolic links"));
         if (st.error.code == FileError::Missing)
             break; // a new file
         if (st.error)
@@ -72,12 +66,12 @@ Target resolveTarget(const QString &given)
             path = QDir(QFileInfo(path).absolutePath())
                        .absoluteFilePath(platform::fromNativePath(link));
             if (links == 40)
-                return fail(Text::tr("a loop of symbolic links"));
+                return fail(SafeWriteMessages::tr("a loop of symbolic links"));
             continue;
         }
         if (st.kind != FileKind::Regular)
-            return fail(
-                Text::tr("not a regular file (a device, a pipe or a folder); not replaced"));
+            return fail(SafeWriteMessages::tr(
+                "not a regular file (a device, a pipe or a folder); not replaced"));
         t.exists = true;
         t.permissions = st.permissions;
         break;
@@ -87,14 +81,15 @@ Target resolveTarget(const QString &given)
     const platform::FileStatus st =
         platform::fileStatus(platform::nativePath(folder), platform::Links::Follow);
     if (st.error)
-        return fail(st.error.code == FileError::Missing
-                        ? Text::tr("the folder %1 does not exist").arg(shown(folder))
-                        : QString("%1: %2").arg(shown(folder), platform::errorText(st.error)));
-    if (st.kind != FileKind::Folder)
-        return fail(Text::tr("%1 is not a folder").arg(shown(folder)));
-    if (const FileError refused = platform::creatingFilesRefused(platform::nativePath(folder)))
         return fail(
-            Text::tr("cannot write in %1: %2").arg(shown(folder), platform::errorText(refused)));
+            st.error.code == FileError::Missing
+                ? SafeWriteMessages::tr("the folder %1 does not exist").arg(echoedPath(folder))
+                : QString("%1: %2").arg(echoedPath(folder), platform::errorText(st.error)));
+    if (st.kind != FileKind::Folder)
+        return fail(SafeWriteMessages::tr("%1 is not a folder").arg(echoedPath(folder)));
+    if (const FileError refused = platform::creatingFilesRefused(platform::nativePath(folder)))
+        return fail(SafeWriteMessages::tr("cannot write in %1: %2")
+                        .arg(echoedPath(folder), platform::errorText(refused)));
     t.path = path;
     return t;
 }
@@ -149,7 +144,7 @@ private:
     QString failed(const platform::FileError &error)
     {
         m_file.discard();
-        return QString("%1: %2").arg(shown(m_target.path), platform::errorText(error));
+        return QString("%1: %2").arg(echoedPath(m_target.path), platform::errorText(error));
     }
 
     Target m_target;
@@ -199,9 +194,10 @@ QString writeImageSafely(const QString &path, const QImage &image, int quality)
     if (suffix.isEmpty() || suffix == "png") {
         const QByteArray bytes = encodePng(image, pngLevelForQuality(quality));
         if (bytes.isEmpty())
-            return QString("%1: %2").arg(shown(path),
-                                         image.isNull() ? Text::tr("no image to write")
-                                                        : Text::tr("the PNG could not be encoded"));
+            return QString("%1: %2").arg(
+                echoedPath(path), image.isNull()
+                                      ? SafeWriteMessages::tr("no image to write")
+                                      : SafeWriteMessages::tr("the PNG could not be encoded"));
         return writeFileSafely(path, bytes);
     }
     QByteArray bytes;
@@ -210,7 +206,7 @@ QString writeImageSafely(const QString &path, const QImage &image, int quality)
     QImageWriter writer(&buffer, suffix.toLatin1());
     writer.setQuality(quality);
     if (!writer.write(image))
-        return QString("%1: %2").arg(shown(path), writer.errorString());
+        return QString("%1: %2").arg(echoedPath(path), writer.errorString());
     return writeFileSafely(path, bytes);
 }
 

@@ -13,7 +13,7 @@ namespace lb {
 
 namespace {
 // The translation context of this file's messages.
-struct Text
+struct MeshFileMessages
 {
     Q_DECLARE_TR_FUNCTIONS(lb::MeshFile)
 };
@@ -38,14 +38,16 @@ QStringList MeshFile::remarks() const
 {
     QStringList r;
     if (skippedFaces > 0)
-        r << Text::tr("%1 points, lines or broken faces skipped").arg(skippedFaces);
+        r << MeshFileMessages::tr("%1 points, lines or broken faces skipped").arg(skippedFaces);
     if (nonFiniteVertices > 0)
-        r << Text::tr("%1 vertices with non-finite coordinates dropped, with the %2 triangles "
-                      "using them")
+        r << MeshFileMessages::tr(
+                 "%1 vertices with non-finite coordinates dropped, with the %2 triangles "
+                 "using them")
                  .arg(nonFiniteVertices)
                  .arg(droppedTriangles);
     if (nonFiniteNormals > 0)
-        r << Text::tr("%1 normals with non-finite coordinates: the file's normals not used")
+        r << MeshFileMessages::tr(
+                 "%1 normals with non-finite coordinates: the file's normals not used")
                  .arg(nonFiniteNormals);
     r << sideFileProblems;
     if (!textureProblem.isEmpty())
@@ -59,21 +61,23 @@ QString meshSummary(const QString &name, qulonglong vertices, qulonglong triangl
     const QLocale locale;
     const QString v = locale.toString(vertices), t = locale.toString(triangles);
     if (!loaded)
-        return Text::tr("%1: %2 vertices, %3 triangles").arg(name, v, t);
+        return MeshFileMessages::tr("%1: %2 vertices, %3 triangles").arg(name, v, t);
     const QString seconds = QString::number(loaded->seconds, 'f', 2);
     QString s;
     if (loaded->hasNormals())
-        s = Text::tr("%1: %2 vertices, %3 triangles, loaded in %4 s").arg(name, v, t, seconds);
+        s = MeshFileMessages::tr("%1: %2 vertices, %3 triangles, loaded in %4 s")
+                .arg(name, v, t, seconds);
     else if (loaded->nonFiniteNormals > 0) // a remark says why
-        s = Text::tr("%1: %2 vertices, %3 triangles, loaded in %4 s, normals generated")
+        s = MeshFileMessages::tr("%1: %2 vertices, %3 triangles, loaded in %4 s, normals generated")
                 .arg(name, v, t, seconds);
     else
-        s = Text::tr("%1: %2 vertices, %3 triangles, loaded in %4 s, normals generated (the "
-                     "file has none)")
+        s = MeshFileMessages::tr(
+                "%1: %2 vertices, %3 triangles, loaded in %4 s, normals generated (the "
+                "file has none)")
                 .arg(name, v, t, seconds);
     if (const QStringList remarks = loaded->remarks(); !remarks.isEmpty())
         //: a mesh's summary (%1) and what was skipped or not used in its file (%2, a list)
-        s = Text::tr("%1 (%2)").arg(s, remarks.join("; "));
+        s = MeshFileMessages::tr("%1 (%2)").arg(s, remarks.join("; "));
     return s;
 }
 

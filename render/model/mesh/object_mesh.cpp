@@ -18,7 +18,7 @@ float creaseOf(const ObjectSettings &object)
 }
 
 // The translation context of this file's messages.
-struct Text
+struct ObjectMeshMessages
 {
     Q_DECLARE_TR_FUNCTIONS(lb::ObjectMesh)
 };
@@ -29,20 +29,23 @@ QString outOfMemory(const ObjectSettings &object, const MeshFile *file)
 {
     const QString tessellation = QString::number(object.tessellation);
     if (file)
-        return Text::tr("out of memory building %1's normals (%2 triangles)")
+        return ObjectMeshMessages::tr("out of memory building %1's normals (%2 triangles)")
             .arg(escapedName(QFileInfo(file->path).fileName()),
                  QString::number(file->mesh ? qulonglong(file->mesh->triangleCount()) : 0));
     switch (object.shape) {
     case Shape::Cube:
-        return Text::tr("out of memory building the cube");
+        return ObjectMeshMessages::tr("out of memory building the cube");
     case Shape::Sphere:
-        return Text::tr("out of memory building the sphere at tessellation %1").arg(tessellation);
+        return ObjectMeshMessages::tr("out of memory building the sphere at tessellation %1")
+            .arg(tessellation);
     case Shape::Torus:
-        return Text::tr("out of memory building the torus at tessellation %1").arg(tessellation);
+        return ObjectMeshMessages::tr("out of memory building the torus at tessellation %1")
+            .arg(tessellation);
     case Shape::Plane:
-        return Text::tr("out of memory building the plane at tessellation %1").arg(tessellation);
+        return ObjectMeshMessages::tr("out of memory building the plane at tessellation %1")
+            .arg(tessellation);
     }
-    return Text::tr("out of memory building a mesh");
+    return ObjectMeshMessages::tr("out of memory building a mesh");
 }
 } // namespace
 
@@ -111,7 +114,7 @@ ObjectMeshBuild tryBuildObjectMesh(const ObjectSettings &object, const MeshFile 
     } catch (...) {
     }
     try {
-        return {nullptr, Text::tr("out of memory building a mesh")};
+        return {nullptr, ObjectMeshMessages::tr("out of memory building a mesh")};
     } catch (...) { // not even that fits: the QString is made of a literal (no allocation)
     }
     return {nullptr, QStringLiteral("out of memory building a mesh")};

@@ -14,7 +14,7 @@ namespace lb {
 namespace {
 
 // The translation context of this file's messages.
-struct Text
+struct SceneBudgetMessages
 {
     Q_DECLARE_TR_FUNCTIONS(lb::SceneBudget)
 };
@@ -57,9 +57,9 @@ QString countText(std::uint64_t n)
 {
     const QLocale english(QLocale::English);
     if (n >= 10'000'000)
-        return Text::tr("%1 million").arg(english.toString(double(n) / 1e6, 'f', 0));
+        return SceneBudgetMessages::tr("%1 million").arg(english.toString(double(n) / 1e6, 'f', 0));
     if (n >= 1'000'000)
-        return Text::tr("%1 million").arg(english.toString(double(n) / 1e6, 'f', 1));
+        return SceneBudgetMessages::tr("%1 million").arg(english.toString(double(n) / 1e6, 'f', 1));
     return english.toString(qulonglong(n));
 }
 
@@ -102,7 +102,7 @@ QString fitMessage(const Scene &scene, const BudgetFit &fit, const MeshBudget &b
                  byteSizeText(budget.bytes), byteSizeText(budget.machineBytes),
                  fit.fits ? countText(fit.fitted.triangles) : byteSizeText(fit.fitted.bytes));
     //: what a scene asked for (%1) and what was lowered to fit it in memory (%2)
-    return Text::tr("%1; %2").arg(asked, lowered);
+    return SceneBudgetMessages::tr("%1; %2").arg(asked, lowered);
 }
 
 } // namespace
@@ -207,8 +207,8 @@ QString byteSizeText(std::uint64_t bytes)
     const QLocale english(QLocale::English);
     const double mb = double(bytes) / double(1 << 20);
     if (mb >= 1024.0)
-        return Text::tr("%1 GB").arg(english.toString(mb / 1024.0, 'f', 1));
-    return Text::tr("%1 MB").arg(english.toString(mb, 'f', 0));
+        return SceneBudgetMessages::tr("%1 GB").arg(english.toString(mb / 1024.0, 'f', 1));
+    return SceneBudgetMessages::tr("%1 MB").arg(english.toString(mb, 'f', 0));
 }
 
 } // namespace lb

@@ -15,7 +15,7 @@ namespace lb {
 namespace {
 
 // The translation context of this file's messages.
-struct Text
+struct ExerciseMessages
 {
     Q_DECLARE_TR_FUNCTIONS(lb::Exercise)
 };
@@ -78,9 +78,10 @@ void readPoints(const QJsonValue &json, GradingSpec &spec, const Ignore &ignore)
             spec.points = json.toDouble();
         else
             //: %1 the largest number of points ("1000000")
-            ignore("grading.points", Text::tr("not a number of points from 0 to %1, nor a list "
-                                              "of one per case")
-                                         .arg(kMaxPoints, 0, 'f', 0));
+            ignore("grading.points",
+                   ExerciseMessages::tr("not a number of points from 0 to %1, nor a list "
+                                        "of one per case")
+                       .arg(kMaxPoints, 0, 'f', 0));
         return;
     }
     const QJsonArray list = json.toArray();
@@ -89,12 +90,14 @@ void readPoints(const QJsonValue &json, GradingSpec &spec, const Ignore &ignore)
         if (usable(v))
             each.push_back(v.toDouble());
     if (each.size() != std::size_t(list.size()))
-        ignore("grading.points", Text::tr("each case's points must be a number from 0 to %1")
-                                     .arg(kMaxPoints, 0, 'f', 0));
+        ignore("grading.points",
+               ExerciseMessages::tr("each case's points must be a number from 0 to %1")
+                   .arg(kMaxPoints, 0, 'f', 0));
     else if (list.size() != spec.cases)
         //: %1 how many points the list gives, %2 how many cases the exercise has
-        ignore("grading.points",
-               Text::tr("%1 values for %2 cases (one per case)").arg(list.size()).arg(spec.cases));
+        ignore("grading.points", ExerciseMessages::tr("%1 values for %2 cases (one per case)")
+                                     .arg(list.size())
+                                     .arg(spec.cases));
     else
         spec.casePoints = each;
 }
@@ -175,11 +178,11 @@ ExerciseRead readExerciseSection(const QJsonValue &json, QStringList *ignored)
         if (ignored)
             //: a field of an exercise as the file spells it (%1, "exercise.grading.cases") and
             //: why it was not used (%2)
-            ignored->append(Text::tr("%1 (%2)").arg("exercise." + path, why));
+            ignored->append(ExerciseMessages::tr("%1 (%2)").arg("exercise." + path, why));
     };
     // The sections' names in the errors are the file's words: arguments, never translated.
     if (!json.isObject()) {
-        read.error = Text::tr("%1: not an object").arg("exercise");
+        read.error = ExerciseMessages::tr("%1: not an object").arg("exercise");
         return read;
     }
     const QJsonObject o = json.toObject();
@@ -190,15 +193,15 @@ ExerciseRead readExerciseSection(const QJsonValue &json, QStringList *ignored)
     const QJsonObject known = exerciseJson(e);
     for (auto it = o.begin(); it != o.end(); ++it)
         if (!known.contains(it.key()) && it.key() != QLatin1String("mistakes"))
-            ignore(it.key(), Text::tr("unknown field"));
+            ignore(it.key(), ExerciseMessages::tr("unknown field"));
 
     const QJsonObject ref = o.value("reference").toObject();
     if (ref.contains("vertex") || ref.contains("fragment")) {
         e.reference.vertex = text(ref, "vertex");
         e.reference.fragment = text(ref, "fragment");
         if (e.reference.vertex.trimmed().isEmpty() || e.reference.fragment.trimmed().isEmpty()) {
-            read.error =
-                Text::tr("%1: needs both a vertex and a fragment shader").arg("exercise.reference");
+            read.error = ExerciseMessages::tr("%1: needs both a vertex and a fragment shader")
+                             .arg("exercise.reference");
             return read;
         }
     } else if (ref.contains("builtIn")) {
@@ -207,16 +210,18 @@ ExerciseRead readExerciseSection(const QJsonValue &json, QStringList *ignored)
             e.reference.shading = *s;
         else if (b.contains("shading"))
             //: %1 the words a file may give, as it spells them ("phong, gouraud, flat")
-            ignore("reference.builtIn.shading", Text::tr("not %1").arg(shadingNames().join(", ")));
+            ignore("reference.builtIn.shading",
+                   ExerciseMessages::tr("not %1").arg(shadingNames().join(", ")));
         if (const auto s = parseSpecularModel(text(b, "specular")))
             e.reference.specular = *s;
         else if (b.contains("specular"))
             ignore("reference.builtIn.specular",
-                   Text::tr("not %1").arg(specularModelNames().join(", ")));
+                   ExerciseMessages::tr("not %1").arg(specularModelNames().join(", ")));
     } else {
-        read.error = Text::tr("%1: no reference program (\"reference\": {\"vertex\": ..., "
-                              "\"fragment\": ...} or {\"builtIn\": {...}})")
-                         .arg("exercise");
+        read.error =
+            ExerciseMessages::tr("%1: no reference program (\"reference\": {\"vertex\": ..., "
+                                 "\"fragment\": ...} or {\"builtIn\": {...}})")
+                .arg("exercise");
         return read;
     }
 
@@ -226,19 +231,19 @@ ExerciseRead readExerciseSection(const QJsonValue &json, QStringList *ignored)
     const QJsonObject knownGrading = exerciseJson(e).value("grading").toObject();
     for (auto it = g.begin(); it != g.end(); ++it)
         if (!knownGrading.contains(it.key()))
-            ignore("grading." + it.key(), Text::tr("unknown field"));
+            ignore("grading." + it.key(), ExerciseMessages::tr("unknown field"));
     GradingSpec &spec = e.grading;
     const auto number = [&](const char *key, double lo, double hi, auto &value) {
         const QJsonValue v = g.value(QLatin1String(key));
         if (v.isUndefined())
             return;
         if (!v.isDouble() || !std::isfinite(v.toDouble())) {
-            ignore(QString("grading.%1").arg(key), Text::tr("not a number"));
+            ignore(QString("grading.%1").arg(key), ExerciseMessages::tr("not a number"));
             return;
         }
         const double d = v.toDouble();
         if (d < lo || d > hi)
-            ignore(QString("grading.%1").arg(key), Text::tr("out of range, clamped"));
+            ignore(QString("grading.%1").arg(key), ExerciseMessages::tr("out of range, clamped"));
         value = std::remove_reference_t<decltype(value)>(std::clamp(d, lo, hi));
     };
     number("cases", 1, kMaxCases, spec.cases);
@@ -254,16 +259,17 @@ ExerciseRead readExerciseSection(const QJsonValue &json, QStringList *ignored)
                               std::clamp(a[1].toInt(), 16, kMaxSide));
         else
             ignore("grading.size",
-                   Text::tr("not [width, height] in whole pixels, 16 to %1").arg(kMaxSide));
+                   ExerciseMessages::tr("not [width, height] in whole pixels, 16 to %1")
+                       .arg(kMaxSide));
     }
     if (g.contains("vary") && (!g.value("vary").isArray() || g.value("vary").toArray().isEmpty())) {
-        ignore("grading.vary", Text::tr("not a list of parameters; all of them vary"));
+        ignore("grading.vary", ExerciseMessages::tr("not a list of parameters; all of them vary"));
     } else if (g.contains("vary")) {
         spec.vary = 0;
         for (const QJsonValue &v : g.value("vary").toArray()) {
             const int i = varyNames().indexOf(v.toString());
             if (i < 0)
-                ignore("grading.vary", Text::tr("no such parameter '%1'; those are %2")
+                ignore("grading.vary", ExerciseMessages::tr("no such parameter '%1'; those are %2")
                                            .arg(v.toString().left(40), varyNames().join(", ")));
             else
                 spec.vary |= 1u << i;

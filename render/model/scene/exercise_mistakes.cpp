@@ -11,7 +11,7 @@ namespace lb {
 namespace {
 
 // The exercise's own translation context: a translator finds these beside its other fields'.
-struct Text
+struct ExerciseMistakesMessages
 {
     Q_DECLARE_TR_FUNCTIONS(lb::Exercise)
 };
@@ -32,7 +32,7 @@ void readWord(const QJsonObject &o, const char *key, const QString &where,
         value = *v;
     else
         //: %1 the words a file may give, as it spells them ("phong, gouraud, flat")
-        ignore(where + "." + key, Text::tr("not %1").arg(names.join(", ")));
+        ignore(where + "." + key, ExerciseMistakesMessages::tr("not %1").arg(names.join(", ")));
 }
 
 void readSwitch(const QJsonObject &o, const char *key, const QString &where,
@@ -43,7 +43,7 @@ void readSwitch(const QJsonObject &o, const char *key, const QString &where,
     if (o.value(QLatin1String(key)).isBool())
         value = o.value(QLatin1String(key)).toBool();
     else
-        ignore(where + "." + key, Text::tr("not true or false"));
+        ignore(where + "." + key, ExerciseMistakesMessages::tr("not true or false"));
 }
 
 BuiltInMistake readBuiltIn(const QJsonObject &b, const QString &where, const Ignore &ignore)
@@ -52,18 +52,18 @@ BuiltInMistake readBuiltIn(const QJsonObject &b, const QString &where, const Ign
     const QStringList known{"shading", "specular", "terms", "normalsByModelView", "lightFrame"};
     for (auto it = b.begin(); it != b.end(); ++it)
         if (!known.contains(it.key()))
-            ignore(where + "." + it.key(), Text::tr("unknown field"));
+            ignore(where + "." + it.key(), ExerciseMistakesMessages::tr("unknown field"));
     readWord(b, "shading", where, &parseShading, shadingNames(), m.shading, ignore);
     readWord(b, "specular", where, &parseSpecularModel, specularModelNames(), m.specular, ignore);
     readWord(b, "lightFrame", where, &parseLightFrame, lightFrameNames(), m.lightFrame, ignore);
     readSwitch(b, "normalsByModelView", where, m.normalsByModelView, ignore);
     if (b.contains("terms")) {
         if (!b.value("terms").isObject())
-            ignore(where + ".terms", Text::tr("not an object"));
+            ignore(where + ".terms", ExerciseMistakesMessages::tr("not an object"));
         const QJsonObject t = b.value("terms").toObject();
         for (auto it = t.begin(); it != t.end(); ++it)
             if (!QStringList{"ambient", "diffuse", "specular"}.contains(it.key()))
-                ignore(where + ".terms." + it.key(), Text::tr("unknown field"));
+                ignore(where + ".terms." + it.key(), ExerciseMistakesMessages::tr("unknown field"));
         readSwitch(t, "ambient", where + ".terms", m.ambient, ignore);
         readSwitch(t, "diffuse", where + ".terms", m.diffuse, ignore);
         readSwitch(t, "specular", where + ".terms", m.specularTerm, ignore);
@@ -76,28 +76,29 @@ std::optional<ExerciseMistake> readMistake(const QJsonValue &json, const QString
                                            bool referenceBuiltIn, const Ignore &ignore)
 {
     if (!json.isObject()) {
-        ignore(where, Text::tr("not an object"));
+        ignore(where, ExerciseMistakesMessages::tr("not an object"));
         return std::nullopt;
     }
     const QJsonObject o = json.toObject();
     const QStringList known{"name", "hint", "vertex", "fragment", "builtIn"};
     for (auto it = o.begin(); it != o.end(); ++it)
         if (!known.contains(it.key()))
-            ignore(where + "." + it.key(), Text::tr("unknown field"));
+            ignore(where + "." + it.key(), ExerciseMistakesMessages::tr("unknown field"));
     ExerciseMistake m;
     const QJsonValue name = o.value("name");
     if (!name.isString() || name.toString().trimmed().isEmpty() ||
         name.toString().size() > kMaxMistakeNameCharacters) {
-        ignore(where + ".name",
-               Text::tr("not a name of 1 to %1 characters; the mistake is left out")
-                   .arg(kMaxMistakeNameCharacters));
+        ignore(where + ".name", ExerciseMistakesMessages::tr(
+                                    "not a name of 1 to %1 characters; the mistake is left out")
+                                    .arg(kMaxMistakeNameCharacters));
         return std::nullopt;
     }
     m.name = name.toString();
     m.hint = readLocalizedText(o.value("hint"), where + ".hint", kMaxHintCharacters, ignore);
     if (m.hint.isEmpty()) {
         // A mistake without words would be found and then not said: no use to a student.
-        ignore(where + ".hint", Text::tr("no usable hint; the mistake is left out"));
+        ignore(where + ".hint",
+               ExerciseMistakesMessages::tr("no usable hint; the mistake is left out"));
         return std::nullopt;
     }
     for (const char *stage : {"vertex", "fragment"}) {
@@ -109,33 +110,38 @@ std::optional<ExerciseMistake> readMistake(const QJsonValue &json, const QString
         if (!v.isString() || v.toString().trimmed().isEmpty() ||
             v.toString().size() > kMaxSourceCharacters) {
             ignore(where + "." + stage,
-                   Text::tr("not a shader's text of up to 1 MiB; the mistake is left out"));
+                   ExerciseMistakesMessages::tr(
+                       "not a shader's text of up to 1 MiB; the mistake is left out"));
             return std::nullopt;
         }
         (QLatin1String(stage) == QLatin1String("vertex") ? m.vertex : m.fragment) = v.toString();
     }
     const bool program = !m.isBuiltIn();
     if (program && o.contains("builtIn")) {
-        ignore(where, Text::tr("both a program and a built-in; the mistake is left out"));
+        ignore(where, ExerciseMistakesMessages::tr(
+                          "both a program and a built-in; the mistake is left out"));
         return std::nullopt;
     }
     if (program && referenceBuiltIn && (m.vertex.isEmpty() || m.fragment.isEmpty())) {
-        ignore(where, Text::tr("needs both a vertex and a fragment shader: the reference is the "
-                               "built-in program; the mistake is left out"));
+        ignore(where, ExerciseMistakesMessages::tr(
+                          "needs both a vertex and a fragment shader: the reference is the "
+                          "built-in program; the mistake is left out"));
         return std::nullopt;
     }
     if (!program) {
         if (!o.value("builtIn").isObject()) {
-            ignore(where, Text::tr("neither a program (\"vertex\", \"fragment\") nor "
-                                   "\"builtIn\": {...}; the mistake is left out"));
+            ignore(where,
+                   ExerciseMistakesMessages::tr("neither a program (\"vertex\", \"fragment\") nor "
+                                                "\"builtIn\": {...}; the mistake is left out"));
             return std::nullopt;
         }
         // The built-in program with a switch changed is "the reference with one mistake" only
         // when the reference is the built-in program: beside a teacher's program, with its own
         // uniforms and constants, it would draw something unrelated and match nothing fairly.
         if (!referenceBuiltIn) {
-            ignore(where, Text::tr("a built-in mistake needs a built-in reference; give the "
-                                   "mistake as a program; the mistake is left out"));
+            ignore(where, ExerciseMistakesMessages::tr(
+                              "a built-in mistake needs a built-in reference; give the "
+                              "mistake as a program; the mistake is left out"));
             return std::nullopt;
         }
         m.builtIn = readBuiltIn(o.value("builtIn").toObject(), where + ".builtIn", ignore);
@@ -152,7 +158,7 @@ std::vector<ExerciseMistake> readExerciseMistakes(const QJsonValue &json, bool r
     if (json.isUndefined())
         return mistakes;
     if (!json.isArray()) {
-        ignore("mistakes", Text::tr("not a list"));
+        ignore("mistakes", ExerciseMistakesMessages::tr("not a list"));
         return mistakes;
     }
     const QJsonArray list = json.toArray();
@@ -160,9 +166,9 @@ std::vector<ExerciseMistake> readExerciseMistakes(const QJsonValue &json, bool r
         const QString where = QString("mistakes[%1]").arg(i);
         if (i >= kMaxExerciseMistakes) {
             // Each mistake costs a program build and a frame per failing case: bounded.
-            ignore(
-                where,
-                Text::tr("more than %1 mistakes; the rest are left out").arg(kMaxExerciseMistakes));
+            ignore(where,
+                   ExerciseMistakesMessages::tr("more than %1 mistakes; the rest are left out")
+                       .arg(kMaxExerciseMistakes));
             break;
         }
         if (auto m = readMistake(list[i], where, referenceBuiltIn, ignore))

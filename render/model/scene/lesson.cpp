@@ -16,19 +16,19 @@ namespace lb {
 namespace {
 
 // The translation context of this file's messages.
-struct Text
+struct LessonMessages
 {
     Q_DECLARE_TR_FUNCTIONS(lb::Lesson)
 };
 
-const char *kFormat = "lightbench-lesson";
+const char *kLessonFormat = "lightbench-lesson";
 
 // One entry of `ignored`: where, as the file spells it ("step 2: caption.de"; data, never
 // translated but for "step"), and why it was not used.
 void note(QStringList &ignored, const QString &where, const QString &why)
 {
     //: a field of a lesson file (%1, "step 2: caption.de") and why it was not used (%2)
-    ignored << Text::tr("%1 (%2)").arg(where, why);
+    ignored << LessonMessages::tr("%1 (%2)").arg(where, why);
 }
 
 // "a title", "a caption", in one language or several (localized_text.h).
@@ -49,10 +49,10 @@ QString readChoice(const QJsonValue &value, const QStringList &allowed, const QS
         return value.toString();
     //: %1 a word the file gave, %2 the words allowed (as files spell them)
     note(ignored, where,
-         value.isString()
-             ? Text::tr("\"%1\" is not one of %2")
-                   .arg(echoedValue(value.toString(), 60), allowed.join(", "))
-             : Text::tr("a value that is not text is not one of %1").arg(allowed.join(", ")));
+         value.isString() ? LessonMessages::tr("\"%1\" is not one of %2")
+                                .arg(echoedValue(value.toString(), 60), allowed.join(", "))
+                          : LessonMessages::tr("a value that is not text is not one of %1")
+                                .arg(allowed.join(", ")));
     return {};
 }
 
@@ -82,18 +82,20 @@ void readStepScene(const QJsonValue &scene, LessonStep &step, const QString &whe
         const qint64 size = QFileInfo(path).size();
         if (size > context.budget) {
             //: %1 the step ("step 3"), %2 a path, %3 its size, %4 the limit
-            step.error = Text::tr("%1: the scene file %2 (%3) is past what is left of the "
-                                  "lesson's limit (%4 for the lesson and its scene files)")
-                             .arg(where, echoedValue(scene.toString(), 200), sizeForMessage(size),
-                                  sizeForMessage(kMaxLessonBytes));
+            step.error =
+                LessonMessages::tr("%1: the scene file %2 (%3) is past what is left of the "
+                                   "lesson's limit (%4 for the lesson and its scene files)")
+                    .arg(where, echoedValue(scene.toString(), 200), sizeForMessage(size),
+                         sizeForMessage(kMaxLessonBytes));
             return;
         }
         sceneRead = readSceneFile(path);
         context.budget -= std::max<qint64>(size, 0);
     } else {
-        step.error = Text::tr("%1: no scene (\"scene\" must be a scene object or the name of a "
-                              "scene file)")
-                         .arg(where);
+        step.error =
+            LessonMessages::tr("%1: no scene (\"scene\" must be a scene object or the name of a "
+                               "scene file)")
+                .arg(where);
         return;
     }
     if (!sceneRead.file) {
@@ -131,37 +133,40 @@ LessonRead parseLesson(const QByteArray &bytes, const QDir &dir, const QString &
     const QJsonDocument document = QJsonDocument::fromJson(bytes, &parseError);
     if (parseError.error != QJsonParseError::NoError) {
         //: %1 a path, %2 Qt's JSON parser's reason
-        read.error = Text::tr("%1: not a lesson file: %2 at byte %3")
+        read.error = LessonMessages::tr("%1: not a lesson file: %2 at byte %3")
                          .arg(name, parseError.errorString())
                          .arg(parseError.offset);
         return read;
     }
     const QJsonObject root = document.object();
-    if (!document.isObject() || root["format"] != QJsonValue(kFormat)) {
+    if (!document.isObject() || root["format"] != QJsonValue(kLessonFormat)) {
         // A scene file is the likeliest mistake: say so rather than "no steps".
-        read.error =
-            root["format"] == QJsonValue("lightbench-scene")
-                ? Text::tr("%1: a scene file, not a lesson (open it with File > Open Scene)")
-                      .arg(name)
-                : Text::tr("%1: not a lesson file (\"format\" is not \"%2\")").arg(name, kFormat);
+        read.error = root["format"] == QJsonValue("lightbench-scene")
+                         ? LessonMessages::tr(
+                               "%1: a scene file, not a lesson (open it with File > Open Scene)")
+                               .arg(name)
+                         : LessonMessages::tr("%1: not a lesson file (\"format\" is not \"%2\")")
+                               .arg(name, kLessonFormat);
         return read;
     }
     const QJsonValue version = root["version"];
     if (!version.isDouble() || version.toDouble() < 1)
         note(read.ignored, "version",
-             Text::tr("missing or not a number; read as %1").arg(kLessonFileVersion));
+             LessonMessages::tr("missing or not a number; read as %1").arg(kLessonFileVersion));
     else if (version.toDouble() > kLessonFileVersion)
-        note(read.ignored, QString("version %1").arg(version.toDouble()),
-             Text::tr("newer than this lightbench's %1: what it does not know is left out")
-                 .arg(kLessonFileVersion));
+        note(
+            read.ignored, QString("version %1").arg(version.toDouble()),
+            LessonMessages::tr("newer than this lightbench's %1: what it does not know is left out")
+                .arg(kLessonFileVersion));
     const QJsonValue steps = root["steps"];
     if (!steps.isArray() || steps.toArray().isEmpty()) {
         read.error =
-            Text::tr("%1: the lesson has no steps (\"steps\" must be a list of steps)").arg(name);
+            LessonMessages::tr("%1: the lesson has no steps (\"steps\" must be a list of steps)")
+                .arg(name);
         return read;
     }
     if (steps.toArray().size() > kMaxLessonSteps) {
-        read.error = Text::tr("%1: %2 steps; a lesson may have at most %3")
+        read.error = LessonMessages::tr("%1: %2 steps; a lesson may have at most %3")
                          .arg(name)
                          .arg(steps.toArray().size())
                          .arg(kMaxLessonSteps);
@@ -173,10 +178,10 @@ LessonRead parseLesson(const QByteArray &bytes, const QDir &dir, const QString &
     const QJsonArray list = steps.toArray();
     for (int i = 0; i < int(list.size()); ++i) {
         //: where in a lesson file a message is about: "step 3: title (not text)"
-        const QString where = Text::tr("step %1").arg(i + 1);
+        const QString where = LessonMessages::tr("step %1").arg(i + 1);
         LessonStep step;
         if (!list[i].isObject()) {
-            step.error = Text::tr("%1: not an object").arg(where);
+            step.error = LessonMessages::tr("%1: not an object").arg(where);
         } else {
             const QJsonObject s = list[i].toObject();
             step.title = readText(s["title"], where + ": title", read.ignored);
@@ -203,13 +208,13 @@ LessonRead readLessonFile(const QString &path)
         read.error = bytes.error;
         return read;
     }
-    return parseLesson(bytes.bytes, QFileInfo(path).absoluteDir(), echoedValue(path, 300),
+    return parseLesson(bytes.bytes, QFileInfo(path).absoluteDir(), echoedPath(path),
                        kMaxLessonBytes - bytes.bytes.size());
 }
 
 QByteArray lessonFileBytes(const Lesson &lesson, const QDir &dir)
 {
-    QJsonObject root{{"format", kFormat}, {"version", kLessonFileVersion}};
+    QJsonObject root{{"format", kLessonFormat}, {"version", kLessonFileVersion}};
     if (!lesson.title.isEmpty())
         root["title"] = localizedTextJson(lesson.title);
     QJsonArray steps;

@@ -12,7 +12,7 @@ namespace lb {
 namespace {
 
 // The translation context of this file's messages.
-struct Text
+struct LocalizedTextMessages
 {
     Q_DECLARE_TR_FUNCTIONS(lb::LocalizedText)
 };
@@ -26,11 +26,11 @@ LocalizedText readLocalizedText(const QJsonValue &value, const QString &where, i
     const auto take = [&](const QString &language, const QJsonValue &v) {
         const QString at = language.isEmpty() ? where : QString("%1.%2").arg(where, language);
         if (!v.isString())
-            ignore(at, Text::tr("not text"));
+            ignore(at, LocalizedTextMessages::tr("not text"));
         else if (v.toString().size() > maxCharacters)
-            ignore(
-                at,
-                Text::tr("%1 characters; at most %2").arg(v.toString().size()).arg(maxCharacters));
+            ignore(at, LocalizedTextMessages::tr("%1 characters; at most %2")
+                           .arg(v.toString().size())
+                           .arg(maxCharacters));
         else
             text[language.isEmpty() ? QString("en") : language] = v.toString();
     };
@@ -45,7 +45,7 @@ LocalizedText readLocalizedText(const QJsonValue &value, const QString &where, i
         // A language code, as QLocale names it: "pt", "de", "pt_BR".
         if (it.key().size() < 2 || it.key().size() > 8)
             ignore(QString("%1.%2").arg(where, echoedValue(it.key(), 40)),
-                   Text::tr("not a language code"));
+                   LocalizedTextMessages::tr("not a language code"));
         else
             take(it.key(), it.value());
     }

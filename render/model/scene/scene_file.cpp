@@ -16,12 +16,12 @@ namespace lb {
 namespace {
 
 // The translation context of this file's messages.
-struct Text
+struct SceneFileMessages
 {
     Q_DECLARE_TR_FUNCTIONS(lb::SceneFile)
 };
 
-const char *kFormat = "lightbench-scene";
+const char *kSceneFormat = "lightbench-scene";
 // How files written before the "edited" field marked an edited program: an English suffix on
 // its name, never translated.
 const QLatin1String kLegacyEditedSuffix(" (edited)");
@@ -35,7 +35,7 @@ ProgramText programText(const QJsonObject &p, QStringList &ignored)
         text.edited = edited.toBool();
     } else if (!edited.isUndefined()) {
         SceneJsonReader(&ignored).ignore("program.edited",
-                                         Text::tr("not true or false; read as false"));
+                                         SceneFileMessages::tr("not true or false; read as false"));
     } else if (text.name.endsWith(kLegacyEditedSuffix)) {
         text.name.chop(kLegacyEditedSuffix.size());
         text.edited = true;
@@ -70,7 +70,7 @@ QJsonObject sceneFileJson(const SceneFile &file, const QDir &dir)
         objects[i] = object;
     }
     root["objects"] = objects;
-    root["format"] = kFormat;
+    root["format"] = kSceneFormat;
     root["version"] = kSceneFileVersion;
     if (file.exercise)
         root["exercise"] = file.exercise->unread.isUndefined()
@@ -91,13 +91,14 @@ SceneFileRead parseSceneFile(const QByteArray &bytes, const QDir &dir, const QSt
     const QJsonDocument document = QJsonDocument::fromJson(bytes, &parseError);
     if (parseError.error != QJsonParseError::NoError) {
         //: %1 a path, %2 Qt's JSON parser's reason
-        read.error = Text::tr("%1: not a scene file: %2 at byte %3")
+        read.error = SceneFileMessages::tr("%1: not a scene file: %2 at byte %3")
                          .arg(name, parseError.errorString())
                          .arg(parseError.offset);
         return read;
     }
     if (!document.isObject()) {
-        read.error = Text::tr("%1: not a scene file: the JSON is not an object").arg(name);
+        read.error =
+            SceneFileMessages::tr("%1: not a scene file: the JSON is not an object").arg(name);
         return read;
     }
     return parseSceneObject(document.object(), dir);
@@ -110,15 +111,17 @@ SceneFileRead parseSceneObject(QJsonObject root, const QDir &dir)
 
     // A file from a newer lightbench is read for what this one knows.
     const QJsonValue format = root.take("format");
-    if (!format.isUndefined() && format != QJsonValue(kFormat))
-        fields.ignore("format", Text::tr("expected \"%1\"").arg(kFormat));
+    if (!format.isUndefined() && format != QJsonValue(kSceneFormat))
+        fields.ignore("format", SceneFileMessages::tr("expected \"%1\"").arg(kSceneFormat));
     const QJsonValue version = root.take("version");
     if (!version.isDouble() || version.toDouble() < 1)
-        fields.ignore("version",
-                      Text::tr("missing or not a number; read as %1").arg(kSceneFileVersion));
+        fields.ignore(
+            "version",
+            SceneFileMessages::tr("missing or not a number; read as %1").arg(kSceneFileVersion));
     else if (version.toDouble() > kSceneFileVersion)
         fields.ignore(QString("version %1").arg(version.toDouble()),
-                      Text::tr("newer than this lightbench's %1: what it does not know is left out")
+                      SceneFileMessages::tr(
+                          "newer than this lightbench's %1: what it does not know is left out")
                           .arg(kSceneFileVersion));
 
     SceneFile file;
@@ -131,9 +134,10 @@ SceneFileRead parseSceneObject(QJsonObject root, const QDir &dir)
             fragment.toString().size() <= kMaxSourceCharacters)
             file.program = programText(p, read.ignored);
         else
-            fields.ignore("program", Text::tr("needs vertex and fragment sources as strings"));
+            fields.ignore("program",
+                          SceneFileMessages::tr("needs vertex and fragment sources as strings"));
     } else if (!program.isUndefined() && !program.isNull()) {
-        fields.ignore("program", Text::tr("not an object"));
+        fields.ignore("program", SceneFileMessages::tr("not an object"));
     }
 
     const QJsonValue exercise = root.take("exercise");
@@ -143,7 +147,7 @@ SceneFileRead parseSceneObject(QJsonObject root, const QDir &dir)
         read.exerciseError = e.error;
         if (!e.error.isEmpty())
             //: %1 why an exercise section cannot be graded against
-            read.ignored << Text::tr("%1 (the section is kept as it is)").arg(e.error);
+            read.ignored << SceneFileMessages::tr("%1 (the section is kept as it is)").arg(e.error);
     }
     file.scene = Scene::fromJson(root, &read.ignored);
     for (ObjectSettings &object : file.scene.objects)
@@ -163,7 +167,7 @@ SceneFileRead readSceneFile(const QString &path)
         read.error = bytes.error;
         return read;
     }
-    return parseSceneFile(bytes.bytes, QFileInfo(path).absoluteDir(), echoedValue(path, 300));
+    return parseSceneFile(bytes.bytes, QFileInfo(path).absoluteDir(), echoedPath(path));
 }
 
 QString writeSceneFile(const QString &path, const SceneFile &file)

@@ -93,7 +93,7 @@ QJsonObject termsJson(const TermSwitches &terms)
 }
 
 // The translation context of the reasons named in `ignored` (scene_json_reader.h).
-struct Text
+struct SceneJsonMessages
 {
     Q_DECLARE_TR_FUNCTIONS(lb::SceneJson)
 };
@@ -106,10 +106,12 @@ void readLight(SceneJsonReader &r, const QJsonObject &l, const QString &path, Li
     const Light before = light;
     r.numbers(l, "position", path, &light.position.x, 4, -c, c);
     if (light.position.w != 0.0f && light.position.w != 1.0f) {
-        r.ignore(SceneJsonReader::join(path, "position"), Text::tr("w must be 0 or 1"));
+        r.ignore(SceneJsonReader::join(path, "position"),
+                 SceneJsonMessages::tr("w must be 0 or 1"));
         light.position = before.position;
     } else if (light.position == glm::vec4(0.0f)) {
-        r.ignore(SceneJsonReader::join(path, "position"), Text::tr("a direction of length 0"));
+        r.ignore(SceneJsonReader::join(path, "position"),
+                 SceneJsonMessages::tr("a direction of length 0"));
         light.position = before.position;
     }
     r.word(l, "frame", path, parseLightFrame, light.frame);
@@ -118,7 +120,8 @@ void readLight(SceneJsonReader &r, const QJsonObject &l, const QString &path, Li
     r.numbers(l, "is", path, &light.colors.is.x, 3, 0.0f, 1.0f);
     r.numbers(l, "attenuation", path, &light.attenuation.x, 3, 0.0f, limits::kMaxAttenuation);
     if (light.attenuation == glm::vec3(0.0f)) {
-        r.ignore(SceneJsonReader::join(path, "attenuation"), Text::tr("kc, kl and kq all 0"));
+        r.ignore(SceneJsonReader::join(path, "attenuation"),
+                 SceneJsonMessages::tr("kc, kl and kq all 0"));
         light.attenuation = before.attenuation;
     }
     const QString spotPath = SceneJsonReader::join(path, "spot");
@@ -126,7 +129,8 @@ void readLight(SceneJsonReader &r, const QJsonObject &l, const QString &path, Li
     r.unknownKeys(spot, lightJson(light)["spot"].toObject(), spotPath);
     r.numbers(spot, "direction", spotPath, &light.spot.direction.x, 3, -c, c);
     if (glm::length(light.spot.direction) < limits::kMinDirectionLength) {
-        r.ignore(SceneJsonReader::join(spotPath, "direction"), Text::tr("a direction of length 0"));
+        r.ignore(SceneJsonReader::join(spotPath, "direction"),
+                 SceneJsonMessages::tr("a direction of length 0"));
         light.spot.direction = before.spot.direction;
     }
     r.number(spot, "cutoff", spotPath, light.spot.cutoffDegrees, 0.0f, limits::kMaxSpotCutoff);
@@ -243,13 +247,13 @@ Scene Scene::fromJson(const QJsonObject &json, QStringList *ignored)
         const QJsonValue v = json.value("lights");
         const QJsonArray ls = v.toArray();
         if (!v.isArray())
-            r.ignore("lights", Text::tr("not an array"));
+            r.ignore("lights", SceneJsonMessages::tr("not an array"));
         for (int i = 0; i < int(ls.size()); ++i) {
             const QString path = QString("lights[%1]").arg(i);
             if (i >= kMaxLights)
-                r.ignore(path, Text::tr("at most 4 lights"));
+                r.ignore(path, SceneJsonMessages::tr("at most 4 lights"));
             else if (!ls[i].isObject())
-                r.ignore(path, Text::tr("not an object"));
+                r.ignore(path, SceneJsonMessages::tr("not an object"));
             else
                 readLight(r, ls[i].toObject(), path, sc.lights[std::size_t(i)]);
         }
@@ -276,19 +280,19 @@ Scene Scene::fromJson(const QJsonObject &json, QStringList *ignored)
         const QJsonValue v = json.value("objects");
         const QJsonArray obs = v.toArray();
         if (!v.isArray())
-            r.ignore("objects", Text::tr("not an array"));
+            r.ignore("objects", SceneJsonMessages::tr("not an array"));
         else if (obs.isEmpty())
-            r.ignore("objects", Text::tr("empty: one object drawn instead"));
+            r.ignore("objects", SceneJsonMessages::tr("empty: one object drawn instead"));
         std::vector<ObjectSettings> read;
         for (int i = 0; i < int(obs.size()); ++i) {
             const QString path = QString("objects[%1]").arg(i);
             if (int(read.size()) >= kMaxObjects) {
-                r.ignore(path, Text::tr("at most 32 objects; the rest left out"));
+                r.ignore(path, SceneJsonMessages::tr("at most 32 objects; the rest left out"));
                 break;
             }
             read.emplace_back(); // in its place, so that the indices after it stay right
             if (!obs[i].isObject()) {
-                r.ignore(path, Text::tr("not an object; a sphere in its place"));
+                r.ignore(path, SceneJsonMessages::tr("not an object; a sphere in its place"));
                 continue;
             }
             readObject(r, obs[i].toObject(), path, read.back());
@@ -310,7 +314,7 @@ Scene Scene::fromJson(const QJsonObject &json, QStringList *ignored)
         Light &light = sc.lights[std::size_t(i)];
         if (light.object > last) {
             r.ignore(QString("lights[%1].object").arg(i),
-                     Text::tr("no such object; the first one"));
+                     SceneJsonMessages::tr("no such object; the first one"));
             light.object = 0;
         }
     }
@@ -338,13 +342,14 @@ Scene Scene::fromJson(const QJsonObject &json, QStringList *ignored)
     int kept = 0;
     for (auto it = values.begin(); it != values.end(); ++it) {
         if (kept == limits::kMaxShaderValues) {
-            r.ignore("shaderValues", Text::tr("too many: %1 more than the %2 kept")
+            r.ignore("shaderValues", SceneJsonMessages::tr("too many: %1 more than the %2 kept")
                                          .arg(values.size() - kept)
                                          .arg(limits::kMaxShaderValues));
             break;
         }
         if (it.key().isEmpty() || it.key().size() > limits::kMaxShaderValueName) {
-            r.ignore("shaderValues." + it.key().left(40), Text::tr("not a uniform's name"));
+            r.ignore("shaderValues." + it.key().left(40),
+                     SceneJsonMessages::tr("not a uniform's name"));
             continue;
         }
         const QJsonArray a = it.value().toArray();
@@ -358,7 +363,7 @@ Scene Scene::fromJson(const QJsonObject &json, QStringList *ignored)
             sc.shaderValues[it.key()] = v;
             ++kept;
         } else
-            r.ignore("shaderValues." + it.key(), Text::tr("not 1 to 4 numbers"));
+            r.ignore("shaderValues." + it.key(), SceneJsonMessages::tr("not 1 to 4 numbers"));
     }
     return sc;
 }

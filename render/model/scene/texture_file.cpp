@@ -16,7 +16,7 @@ namespace lb {
 
 namespace {
 // The translation context of this file's messages.
-struct Text
+struct TextureFileMessages
 {
     Q_DECLARE_TR_FUNCTIONS(lb::TextureFile)
 };
@@ -26,21 +26,21 @@ TextureFileRead readTextureFile(const QString &path)
 {
     TextureFileRead read;
     // Messages name the path as the user gave it, like those of unreadableFile().
-    const QString name = echoedValue(path, 300);
+    const QString name = echoedPath(path);
     read.error = unreadableFile(
         path, {QT_TRANSLATE_NOOP("lb::FileLimit", "an image"), kMaxTextureFileBytes});
     if (!read.error.isEmpty())
         return read;
     if (QFileInfo(path).size() == 0) {
-        read.error = Text::tr("%1: an empty file, not an image").arg(name);
+        read.error = TextureFileMessages::tr("%1: an empty file, not an image").arg(name);
         return read;
     }
     QImageReader reader(path);
     reader.setAutoTransform(true); // a photo's EXIF orientation, as viewers show it
     if (!reader.canRead()) {
-        read.error = Text::tr("%1: not an image (%2)")
+        read.error = TextureFileMessages::tr("%1: not an image (%2)")
                          .arg(name, reader.error() == QImageReader::UnsupportedFormatError
-                                        ? Text::tr("the formats read are %1")
+                                        ? TextureFileMessages::tr("the formats read are %1")
                                               .arg(QString::fromLatin1(
                                                   QImageReader::supportedImageFormats().join(", ")))
                                         : reader.errorString());
@@ -48,11 +48,12 @@ TextureFileRead readTextureFile(const QString &path)
     }
     const QSize size = reader.size(); // from the header, before anything is decoded
     if (size.width() > kMaxTextureFileSide || size.height() > kMaxTextureFileSide) {
-        read.error = Text::tr("%1: %2 x %3 texels is more than a texture may have (%4 x %4)")
-                         .arg(name)
-                         .arg(size.width())
-                         .arg(size.height())
-                         .arg(kMaxTextureFileSide);
+        read.error =
+            TextureFileMessages::tr("%1: %2 x %3 texels is more than a texture may have (%4 x %4)")
+                .arg(name)
+                .arg(size.width())
+                .arg(size.height())
+                .arg(kMaxTextureFileSide);
         return read;
     }
     // The largest image allowed decodes to 1 GiB of RGBA; Qt refuses more than 256 MiB unless
@@ -79,14 +80,15 @@ TextureFileRead readTextureFile(const QString &path)
                                              qsizetype(file.size()))
                    : QByteArray();
         if (const QString why = truncatedImage(bytes, reader.format()); mapped && !why.isEmpty()) {
-            read.error = Text::tr("%1: could not be read as an image: %2").arg(name, why);
+            read.error =
+                TextureFileMessages::tr("%1: could not be read as an image: %2").arg(name, why);
             return read;
         }
     }
     const QImage image = reader.read();
     if (image.isNull()) {
-        read.error =
-            Text::tr("%1: could not be read as an image: %2").arg(name, reader.errorString());
+        read.error = TextureFileMessages::tr("%1: could not be read as an image: %2")
+                         .arg(name, reader.errorString());
         return read;
     }
     auto texture = std::make_shared<Texture>(Texture::fromImage(image));
@@ -94,15 +96,17 @@ TextureFileRead readTextureFile(const QString &path)
     const QString fileName = QFileInfo(path).fileName();
     if (shown.isValid() && shown != drawn.size())
         //: %1 a file's name, %2 x %3 the texels drawn, %4 x %5 the image's own size
-        read.summary = Text::tr("%1: %2 x %3 texels (scaled from %4 x %5)")
+        read.summary = TextureFileMessages::tr("%1: %2 x %3 texels (scaled from %4 x %5)")
                            .arg(fileName)
                            .arg(drawn.width())
                            .arg(drawn.height())
                            .arg(shown.width())
                            .arg(shown.height());
     else
-        read.summary =
-            Text::tr("%1: %2 x %3 texels").arg(fileName).arg(drawn.width()).arg(drawn.height());
+        read.summary = TextureFileMessages::tr("%1: %2 x %3 texels")
+                           .arg(fileName)
+                           .arg(drawn.width())
+                           .arg(drawn.height());
     read.texture = std::move(texture);
     return read;
 }
