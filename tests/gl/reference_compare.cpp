@@ -84,6 +84,7 @@ bool byATextureStep(const ProbeResult &p, const ObjectSettings &object, const Te
 Comparison compareWithReference(OffscreenRenderer &offscreen, const Scene &scene,
                                 const QImage &frame, int step)
 {
+    step *= kGridCoarsening;
     const ProbedObjects objects = offscreen.probedObjects(scene);
     const QSize size = frame.size();
     // A compared frame may show two sides; the divider between them is no surface.
@@ -152,9 +153,9 @@ QString checkAgainstReference(OffscreenRenderer &offscreen, const Scene &scene, 
     const Comparison c = compareWithReference(offscreen, scene, frame);
     qInfo("%s: %d pixels compared (%d with a highlight), worst %d/255", qPrintable(name),
           c.compared, c.withSpecular, c.worst);
-    if (c.compared < minCompared)
+    if (c.compared < ofThisGrid(minCompared))
         return QString("only %1 pixels compared").arg(c.compared);
-    if (c.withSpecular < minSpecular)
+    if (c.withSpecular < ofThisGrid(minSpecular))
         return QString("only %1 pixels with a highlight").arg(c.withSpecular);
     if (c.worst <= tolerance)
         return {};

@@ -30,7 +30,24 @@ QPoint brightestGreen(const QImage &frame);
 // The largest channel difference between two frames of one size, in 1/255.
 int largestDifference(const QImage &a, const QImage &b);
 
-// Compares a grid of pixels. Pixels on a silhouette or a crease (a neighbour two pixels away
+// Under the sanitizers (CI's last pass) the grids below are this many times coarser each way:
+// the sanitizers watch the code paths, which a row's pixels all take alike, and comparing every
+// fifth pixel of every row is the first pass's work. Under AddressSanitizer the full grids
+// took 2 of the pass's 7 minutes (bench/README.md, "Build and CI").
+#ifdef LIGHTBENCH_SANITIZE
+inline constexpr int kGridCoarsening = 2;
+#else
+inline constexpr int kGridCoarsening = 1;
+#endif
+// A count of pixels that a test asks of a full grid (compared, with a highlight), for the
+// grid this build compares.
+inline int ofThisGrid(int fullGridCount)
+{
+    constexpr int share = kGridCoarsening * kGridCoarsening;
+    return (fullGridCount + share - 1) / share;
+}
+
+// Compares a grid of pixels (every `step`th each way, times kGridCoarsening). Pixels on a silhouette or a crease (a neighbour two pixels away
 // misses the object or sees a surface turned by more than ~11 degrees) are skipped: there
 // the rasteriser and the ray may rightly pick different triangles; so are pixels by the edge
 // of a spotlight's cone (a neighbour on its other side), and by a nearest-filtered texture's

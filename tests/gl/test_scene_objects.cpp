@@ -134,7 +134,7 @@ private slots:
                                 .arg(c.worstAt.y())
                                 .arg(c.worst)
                                 .arg(c.worstText, saveForInspection(frame, name))));
-        QVERIFY2(c.compared >= 300, qPrintable(QString::number(c.compared)));
+        QVERIFY2(c.compared >= ofThisGrid(300), qPrintable(QString::number(c.compared)));
         // Every object is drawn where the probe finds it, with its own colour.
         const ProbedObjects objects = m_offscreen.probedObjects(s);
         for (int i = 0; i < 3; ++i) {
@@ -190,7 +190,7 @@ private slots:
             const QImage frame = m_offscreen.render(*scene);
             const Comparison c = compareWithReference(m_offscreen, *scene, frame, 3);
             QVERIFY2(c.worst <= kTolerance, qPrintable(c.worstText));
-            QVERIFY(c.compared >= 300);
+            QVERIFY(c.compared >= ofThisGrid(300));
         }
     }
 };

@@ -137,7 +137,7 @@ private slots:
                                 .arg(c.worstAt.y())
                                 .arg(c.worst)
                                 .arg(c.worstText, saveForInspection(frame, "texture " + name))));
-        QVERIFY2(c.compared >= 1200, qPrintable(QString::number(c.compared)));
+        QVERIFY2(c.compared >= ofThisGrid(1200), qPrintable(QString::number(c.compared)));
     }
 
     // The scene covers what it tests: the level of detail changes by more than a level across
