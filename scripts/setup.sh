@@ -17,7 +17,10 @@ PACKAGES=(cmake g++ make qt6-base-dev libqt6opengl6-dev qt6-qpa-plugins libglm-d
           libqscintilla2-qt6-dev libassimp-dev libmimalloc-dev libpng-dev
           xvfb xauth libgl1-mesa-dri fonts-dejavu-core
           qt6-tools-dev qt6-l10n-tools qt6-translations-l10n libqscintilla2-qt6-l10n
-          qt6-charts-dev qt6-svg-dev)
+          qt6-charts-dev qt6-svg-dev
+          ccache)
+# ccache: a second build of what was built before (a clean build folder, another branch and
+# back, CI on a machine that built) compiles from the cache (cmake/build_speed.cmake).
 # Only the tests need these: Debian's corpus of ~600 model files, valid and broken; Python for
 # CodeRunner's template (resources/autograders/) and the autograders' checks of their JSON.
 TEST_PACKAGES=(assimp-testmodels python3)
@@ -38,19 +41,25 @@ ensure_packages() {
         command -v sudo >/dev/null || { echo "lightbench: need root or sudo to install ${missing[*]}" >&2; exit 1; }
         sudo=(sudo)
     fi
+    local start=$SECONDS
     "${sudo[@]}" apt-get update -qq
     DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -qq --no-install-recommends \
         "${missing[@]}" >&2
+    echo "lightbench: installed in $((SECONDS - start)) s" >&2
 }
 
 # What build() gives CMake besides the build type and the tests (scripts/test --sanitize adds).
 CMAKE_OPTIONS=()
 
-# build [TARGET]: configures once (tests included) and builds TARGET, or everything.
+# build [TARGET...]: configures once (tests included) and builds the TARGETs, or everything;
+# says how long it took (CI's log, bench/README.md's "Build and CI").
 build() {
+    local start=$SECONDS
     cmake -S "$ROOT" -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=ON \
         "${CMAKE_OPTIONS[@]}" >/dev/null
-    cmake --build "$BUILD_DIR" -j"$(nproc)" ${1:+--target "$1"}
+    cmake --build "$BUILD_DIR" -j"$(nproc)" ${1:+--target "$@"}
+    echo "lightbench: configured and built $(basename "$BUILD_DIR") in $((SECONDS - start)) s" \
+        "(load average $(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null))" >&2
 }
 
 # Qt warns on every start without a runtime directory (containers, CI); give it a private one.
