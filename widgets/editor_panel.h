@@ -66,6 +66,8 @@ public:
     double fontPointSize() const;
     // Whether restoreState() brought back edits that were never saved (a crash, a kill).
     bool restoredUnsavedEdits() const { return m_restoredUnsaved; }
+    // Typed text waiting for the live compile's pause to end.
+    bool isCompilePending() const { return m_pause.isActive(); }
 
     // The live switch and its pause, the zoom, and the document's state
     // (ShaderDocument::saveState), in the settings' "editor" group.

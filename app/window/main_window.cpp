@@ -383,7 +383,7 @@ void MainWindow::selectObjectAt(QPoint framePixel)
 bool MainWindow::isSettled() const
 {
     return !m_loader->isLoading() && !m_loader->isBuilding() && !m_loader->isDecodingTexture() &&
-           !m_viewport->isTrying();
+           !m_editor->isCompilePending() && !m_viewport->isTrying();
 }
 
 } // namespace lb

@@ -59,8 +59,9 @@ public:
     EditorPanel *editorPanel() const { return m_editor; }
     UniformPanel *uniformPanel() const { return m_uniforms; }
     ObjectLoader *objectLoader() const { return m_loader; }
-    // Nothing on its way to the picture: every object and texture is in and no program is
-    // being tried (what is drawn now stays drawn; --screenshot waits for it).
+    // Nothing on its way to the picture: every object and texture is in, no typed text waits
+    // for the live compile and no program is being tried (what is drawn now stays drawn;
+    // --screenshot waits for it).
     bool isSettled() const;
     MeshActions *meshActions() const { return m_meshActions; }
     SceneActions *sceneActions() const { return m_sceneActions; }

@@ -10,6 +10,7 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QPushButton>
 #include <QRegularExpression>
 #include <QToolButton>
 #include <QTreeWidget>
@@ -57,9 +58,18 @@ class TestWindowExercise : public WindowTest
     std::optional<GradingReport> check()
     {
         QSignalSpy done(m_window->workCheck(), &WorkCheck::finished);
-        QTest::mouseClick(m_window->exercisePanel()->checkButton(), Qt::LeftButton);
-        if (!m_window->workCheck()->isRunning() || !done.wait(120000))
+        QPushButton *button = m_window->exercisePanel()->checkButton();
+        QTest::mouseClick(button, Qt::LeftButton);
+        if (!m_window->workCheck()->isRunning()) {
+            qWarning("the check did not start: the button '%s' is %s, the panel says '%s'",
+                     qPrintable(button->text()), button->isEnabled() ? "enabled" : "disabled",
+                     qPrintable(m_window->exercisePanel()->summaryLabel()->text()));
             return std::nullopt;
+        }
+        if (!done.wait(120000)) {
+            qWarning("the check did not finish in 120 s");
+            return std::nullopt;
+        }
         return done.first().first().value<GradingReport>();
     }
     QTreeWidget *cases() const { return m_window->exercisePanel()->caseList(); }
@@ -68,7 +78,7 @@ class TestWindowExercise : public WindowTest
         const std::optional<ProgramBuild> built = buildAfter(
             [&] { m_window->editorPanel()->editor(ShaderStage::Fragment)->setText(text); });
         QVERIFY(built);
-        QVERIFY(m_window->isSettled());
+        QVERIFY2(m_window->isSettled(), qPrintable("still " + unsettledParts(*m_window)));
     }
 
 private slots:
@@ -421,7 +431,7 @@ private slots:
             // What failed first, then the panel: its text is long.
             QTRY_VERIFY2_WITH_TIMEOUT(
                 difference() <= 2,
-                qPrintable(QString("GPU %1 %2 %3, reference %4 %5 %6, settled %7, side B "
+                qPrintable(QString("GPU %1 %2 %3, reference %4 %5 %6, still '%7', side B "
                                    "program %8, banner '%9'; ")
                                .arg(probe->gpuColour()->r)
                                .arg(probe->gpuColour()->g)
@@ -429,7 +439,7 @@ private slots:
                                .arg(probe->referenceColour()->r)
                                .arg(probe->referenceColour()->g)
                                .arg(probe->referenceColour()->b)
-                               .arg(m_window->isSettled())
+                               .arg(unsettledParts(*m_window))
                                .arg(v->hasSideBProgram())
                                .arg(v->banner()) +
                            probe->textLabel()->text()),

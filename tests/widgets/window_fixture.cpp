@@ -41,6 +41,11 @@ std::pair<bool, QString> WindowTest::openMesh(const QString &path)
 
 std::optional<ProgramBuild> WindowTest::buildAfter(const std::function<void()> &action)
 {
+    // What was on its way before (a program opened with a scene, being tried) has arrived
+    // first: its answer is not taken for the action's (CI's sanitizer pass took an exercise's
+    // own program's answer for the next one's, typed meanwhile and still in the live compile's
+    // pause).
+    (void)QTest::qWaitFor([&] { return m_window->isSettled(); }, 30000);
     std::optional<ProgramBuild> built;
     const QMetaObject::Connection c = connect(m_window->viewport(), &Viewport::programBuilt, this,
                                               [&](const ProgramBuild &b) { built = b; });
@@ -95,6 +100,23 @@ QString docksNeedingSideways(MainWindow &window)
                         .arg(scroll->widget()->minimumSizeHint().width());
     }
     return wide.join(", ");
+}
+
+QString unsettledParts(const MainWindow &window)
+{
+    const ObjectLoader &loader = *window.objectLoader();
+    QStringList parts;
+    if (loader.isLoading())
+        parts << "loading a file";
+    if (loader.isBuilding())
+        parts << "building an object";
+    if (loader.isDecodingTexture())
+        parts << "decoding a texture";
+    if (window.editorPanel()->isCompilePending())
+        parts << "waiting for the live compile's pause";
+    if (window.viewport()->isTrying())
+        parts << "trying a program";
+    return parts.join(", ");
 }
 
 int runWindowTest(WindowTest &test, int argc, char **argv)

@@ -95,6 +95,10 @@ QString writeSlowImportHelper(const QTemporaryDir &dir);
 // horizontal scrollbar), "Light (230 px for 260)", or empty.
 QString docksNeedingSideways(MainWindow &window);
 
+// What keeps the window from being settled (MainWindow::isSettled): "loading a file, trying a
+// program", or empty; for a failed check's message.
+QString unsettledParts(const MainWindow &window);
+
 class WindowTest : public QObject
 {
     Q_OBJECT
@@ -115,8 +119,9 @@ protected:
     }
     // Opens a mesh as File > Open Mesh does; returns what the loader said.
     std::pair<bool, QString> openMesh(const QString &path);
-    // Runs `action` and waits for the viewport's next programBuilt() signal (10 s at most);
-    // returns that build, or nothing when none came.
+    // Waits for the window to settle, runs `action` and waits for the viewport's next
+    // programBuilt() signal (10 s at most), then for the window to settle again; returns that
+    // build, or nothing when none came.
     std::optional<ProgramBuild> buildAfter(const std::function<void()> &action);
 
 protected slots:
