@@ -7,6 +7,7 @@
 #   -DLIGHTBENCH_UNITY_BATCH_SIZE=N  sources per unity file (default 8)
 #   -DLIGHTBENCH_PCH=OFF     no precompiled headers
 #   -DLIGHTBENCH_CCACHE=OFF  no ccache, even where it is installed
+#   -DLIGHTBENCH_LLD=OFF     the compiler's default linker, even where lld is installed
 #
 # Where the time went (bench/README.md, "Build and CI"): Qt's headers parsed again for every
 # translation unit, and the tests' own code optimised like the product's. So a library is
@@ -19,6 +20,7 @@ option(LIGHTBENCH_PCH "Precompile each library's Qt, GLM and standard headers" O
 option(LIGHTBENCH_UNITY "Compile each library's sources in batches (CMake's unity build)" ON)
 set(LIGHTBENCH_UNITY_BATCH_SIZE 8 CACHE STRING "Source files in one unity batch")
 option(LIGHTBENCH_CCACHE "Compile through ccache where it is installed" ON)
+option(LIGHTBENCH_LLD "Link with lld where it is installed" ON)
 
 # Every target made after this line takes these as its defaults.
 set(CMAKE_UNITY_BUILD ${LIGHTBENCH_UNITY})
@@ -46,6 +48,16 @@ if(LIGHTBENCH_CCACHE AND NOT CMAKE_CXX_COMPILER_LAUNCHER)
         CCACHE_DEPEND=1 CCACHE_BASEDIR=${PROJECT_SOURCE_DIR}
         ${LB_CCACHE})
     message(STATUS "lightbench: compiling through ${LB_CCACHE}")
+  endif()
+endif()
+if(LIGHTBENCH_LLD)
+  # Some 80 executables (the tests, the helpers) link the same static libraries: GNU ld took
+  # 1.4-1.8 s for each under the sanitizers, lld 0.25-0.33 (bench/README.md, "Build and CI").
+  include(CheckLinkerFlag)
+  check_linker_flag(CXX -fuse-ld=lld LB_HAS_LLD)
+  if(LB_HAS_LLD)
+    add_link_options(-fuse-ld=lld)
+    message(STATUS "lightbench: linking with lld")
   endif()
 endif()
 if(LIGHTBENCH_PCH AND CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
