@@ -380,10 +380,25 @@ void MainWindow::selectObjectAt(QPoint framePixel)
         m_document.edit([&](Scene &s) { s.selected = hit.object; });
 }
 
+QStringList MainWindow::unsettledParts() const
+{
+    QStringList parts;
+    if (m_loader->isLoading())
+        parts << QStringLiteral("loading a file");
+    if (m_loader->isBuilding())
+        parts << QStringLiteral("building an object");
+    if (m_loader->isDecodingTexture())
+        parts << QStringLiteral("decoding a texture");
+    if (m_editor->isCompilePending())
+        parts << QStringLiteral("waiting for the live compile's pause");
+    if (m_viewport->isTrying())
+        parts << QStringLiteral("trying a program");
+    return parts;
+}
+
 bool MainWindow::isSettled() const
 {
-    return !m_loader->isLoading() && !m_loader->isBuilding() && !m_loader->isDecodingTexture() &&
-           !m_editor->isCompilePending() && !m_viewport->isTrying();
+    return unsettledParts().isEmpty();
 }
 
 } // namespace lb

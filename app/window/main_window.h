@@ -13,6 +13,7 @@
 #include "window_layout.h"
 
 #include <QMainWindow>
+#include <QStringList>
 
 #include <optional>
 #include <vector>
@@ -63,6 +64,9 @@ public:
     // for the live compile and no program is being tried (what is drawn now stays drawn;
     // --screenshot waits for it).
     bool isSettled() const;
+    // What keeps it from being settled, in words for a message ("loading a file", "trying a
+    // program"); empty when settled.
+    QStringList unsettledParts() const;
     MeshActions *meshActions() const { return m_meshActions; }
     SceneActions *sceneActions() const { return m_sceneActions; }
     LessonActions *lessonActions() const { return m_lessons; } // the lesson bar's too

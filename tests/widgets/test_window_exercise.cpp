@@ -78,7 +78,8 @@ class TestWindowExercise : public WindowTest
         const std::optional<ProgramBuild> built = buildAfter(
             [&] { m_window->editorPanel()->editor(ShaderStage::Fragment)->setText(text); });
         QVERIFY(built);
-        QVERIFY2(m_window->isSettled(), qPrintable("still " + unsettledParts(*m_window)));
+        QVERIFY2(m_window->isSettled(),
+                 qPrintable("still " + m_window->unsettledParts().join(", ")));
     }
 
 private slots:
@@ -439,7 +440,7 @@ private slots:
                                .arg(probe->referenceColour()->r)
                                .arg(probe->referenceColour()->g)
                                .arg(probe->referenceColour()->b)
-                               .arg(unsettledParts(*m_window))
+                               .arg(m_window->unsettledParts().join(", "))
                                .arg(v->hasSideBProgram())
                                .arg(v->banner()) +
                            probe->textLabel()->text()),

@@ -102,23 +102,6 @@ QString docksNeedingSideways(MainWindow &window)
     return wide.join(", ");
 }
 
-QString unsettledParts(const MainWindow &window)
-{
-    const ObjectLoader &loader = *window.objectLoader();
-    QStringList parts;
-    if (loader.isLoading())
-        parts << "loading a file";
-    if (loader.isBuilding())
-        parts << "building an object";
-    if (loader.isDecodingTexture())
-        parts << "decoding a texture";
-    if (window.editorPanel()->isCompilePending())
-        parts << "waiting for the live compile's pause";
-    if (window.viewport()->isTrying())
-        parts << "trying a program";
-    return parts.join(", ");
-}
-
 int runWindowTest(WindowTest &test, int argc, char **argv)
 {
     setDefaultGlFormat();

@@ -95,10 +95,6 @@ QString writeSlowImportHelper(const QTemporaryDir &dir);
 // horizontal scrollbar), "Light (230 px for 260)", or empty.
 QString docksNeedingSideways(MainWindow &window);
 
-// What keeps the window from being settled (MainWindow::isSettled): "loading a file, trying a
-// program", or empty; for a failed check's message.
-QString unsettledParts(const MainWindow &window);
-
 class WindowTest : public QObject
 {
     Q_OBJECT
