@@ -1,7 +1,8 @@
 # How fast the tree builds, not what it builds (issue 45): unity batches, precompiled headers
 # and ccache. Each can be switched off on its own; the code compiles the same without them (CI's
-# sanitizer pass builds with both switched off, so that a missing #include cannot hide behind a
-# header that a precompiled one or a neighbour in the batch brought along).
+# first pass builds with both switched off, so that a missing #include cannot hide behind a
+# header that a precompiled one or a neighbour in the batch brought along; the platform layer,
+# whose portable half only the other pass builds, is compiled file by file in every build).
 #
 #   -DLIGHTBENCH_UNITY=OFF   every source file a translation unit of its own
 #   -DLIGHTBENCH_UNITY_BATCH_SIZE=N  sources per unity file (default 8)
@@ -152,8 +153,9 @@ function(lb_precompile_library_headers)
     get_target_property(type ${target} TYPE)
     get_target_property(reused ${target} PRECOMPILE_HEADERS_REUSE_FROM)
     get_target_property(unity ${target} UNITY_BUILD)
+    get_target_property(disabled ${target} DISABLE_PRECOMPILE_HEADERS)
     if(NOT type MATCHES "^(STATIC_LIBRARY|SHARED_LIBRARY|OBJECT_LIBRARY|EXECUTABLE)$" OR reused
-       OR unity)
+       OR unity OR disabled)
       continue()
     endif()
     lb_translation_units(units ${target})
