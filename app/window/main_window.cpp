@@ -281,7 +281,8 @@ void MainWindow::showProgramUsage(const ProgramBuild &build)
     std::set<Semantic> read;
     for (const ActiveUniform &u : build.uniforms)
         if (u.semantic)
-            read.insert(*u.semantic);
+            for (Semantic s : controlledBy(*u.semantic))
+                read.insert(s);
     for (ScenePanel *panel :
          {static_cast<ScenePanel *>(m_light), static_cast<ScenePanel *>(m_material),
           static_cast<ScenePanel *>(m_shading)})

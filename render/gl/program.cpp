@@ -4,6 +4,7 @@
 #include "loops.h"
 #include "macro_expansion.h"
 #include "presets.h"
+#include "unfed_inputs.h"
 #include "webgl1_translation.h"
 
 #include <QByteArray>
@@ -61,7 +62,7 @@ void addMessage(ProgramBuild &build, ShaderStage stage, const QString &message,
 
 // Returns the shader, or none; the driver's messages go into `build` on the user's lines.
 GlShader compile(QOpenGLExtraFunctions &gl, ShaderStage stage, const QString &source,
-                 ProgramBuild &build)
+                 bool translate, ProgramBuild &build)
 {
     const bool vertex = stage == ShaderStage::Vertex; // compiled: vertex or fragment
     if (source.trimmed().isEmpty()) {
@@ -89,7 +90,7 @@ GlShader compile(QOpenGLExtraFunctions &gl, ShaderStage stage, const QString &so
         build.diagnostics.push_back(*refusal);
         return {};
     }
-    const PreparedSource prepared = prepareSource(source, stage, translatesWebGl1());
+    const PreparedSource prepared = prepareSource(source, stage, translate);
     GlShader shader(
         gl.glCreateShader(stage == ShaderStage::Vertex ? GL_VERTEX_SHADER : GL_FRAGMENT_SHADER));
     const QByteArray utf8 = prepared.text.toUtf8();
@@ -165,6 +166,63 @@ void describeType(GLenum type, ActiveUniform &u)
         }
 }
 
+struct ActiveAttribute
+{
+    QString name;
+    GLint location = -1;
+};
+
+std::vector<ActiveAttribute> activeAttributes(QOpenGLExtraFunctions &gl, GLuint program)
+{
+    GLint count = 0, maxLength = 0;
+    gl.glGetProgramiv(program, GL_ACTIVE_ATTRIBUTES, &count);
+    gl.glGetProgramiv(program, GL_ACTIVE_ATTRIBUTE_MAX_LENGTH, &maxLength);
+    std::vector<ActiveAttribute> attributes;
+    QByteArray name(std::max(maxLength, 1), '\0');
+    for (GLint i = 0; i < count; ++i) {
+        GLsizei length = 0;
+        GLint size = 1;
+        GLenum type = 0;
+        gl.glGetActiveAttrib(program, GLuint(i), GLsizei(name.size()), &length, &size, &type,
+                             name.data());
+        if (length <= 0 || name.startsWith("gl_"))
+            continue;
+        attributes.push_back({QString::fromUtf8(name.constData(), length),
+                              gl.glGetAttribLocation(program, name.constData())});
+    }
+    return attributes;
+}
+
+// Binds each active attribute of a name in no table to the slot its name says, where that
+// slot is free and it is not there yet; whether any was (the program must link again).
+bool bindByNameParts(QOpenGLExtraFunctions &gl, GLuint program)
+{
+    const std::vector<ActiveAttribute> attributes = activeAttributes(gl, program);
+    const auto known = [](const QString &name) {
+        const auto &table = attributeBindings();
+        return std::any_of(table.begin(), table.end(), [&](const AttributeBinding &b) {
+            return name == QLatin1String(b.name);
+        });
+    };
+    std::vector<GLint> taken; // by a known name, or by one bound here
+    for (const ActiveAttribute &a : attributes)
+        if (known(a.name))
+            taken.push_back(a.location);
+    bool bound = false;
+    for (const ActiveAttribute &a : attributes) {
+        if (known(a.name))
+            continue;
+        const std::optional<AttributeSlot> slot = slotByNameParts(a.name);
+        if (!slot || a.location == GLint(*slot) ||
+            std::find(taken.begin(), taken.end(), GLint(*slot)) != taken.end())
+            continue;
+        gl.glBindAttribLocation(program, *slot, a.name.toUtf8().constData());
+        taken.push_back(GLint(*slot));
+        bound = true;
+    }
+    return bound;
+}
+
 std::vector<ActiveUniform> activeUniforms(QOpenGLExtraFunctions &gl, GLuint program)
 {
     GLint count = 0, maxLength = 0;
@@ -187,7 +245,10 @@ std::vector<ActiveUniform> activeUniforms(QOpenGLExtraFunctions &gl, GLuint prog
         u.location = gl.glGetUniformLocation(program, name.constData());
         if (u.name.endsWith("[0]"))
             u.name.chop(3);
-        u.semantic = semanticOf(u.name);
+        u.semantic = semanticOf(u.name, u.kind == UniformKind::Matrix    ? UniformShape::Matrix
+                                        : u.kind == UniformKind::Sampler ? UniformShape::Sampler
+                                        : u.kind == UniformKind::Other   ? UniformShape::Any
+                                                                         : UniformShape::Number);
         if (const int n = u.components(); n > 0) {
             if (u.isInteger()) {
                 GLint v[4] = {};
@@ -208,18 +269,64 @@ std::vector<ActiveUniform> activeUniforms(QOpenGLExtraFunctions &gl, GLuint prog
 
 const std::vector<AttributeBinding> &attributeBindings()
 {
+    // The course's (vPosition, aVertexPosition...), LearnOpenGL's (aPos, aNormal,
+    // aTexCoords), webglfundamentals' and glslViewer's (a_position, a_normal, a_texcoord),
+    // MDN's (aVertexPosition, aTextureCoord), Angel's and three.js's (vPosition, position,
+    // uv), the GLSL Cookbook's (VertexPosition, VertexNormal, VertexTexCoord).
     static const std::vector<AttributeBinding> bindings{
-        {"vPosition", kPositionSlot}, {"aVertexPosition", kPositionSlot},
-        {"position", kPositionSlot},  {"aPosition", kPositionSlot},
-        {"vNormal", kNormalSlot},     {"aVertexNormal", kNormalSlot},
-        {"normal", kNormalSlot},      {"aNormal", kNormalSlot},
-        {"vColor", kColorSlot},       {"aVertexColor", kColorSlot},
-        {"color", kColorSlot},        {"aColor", kColorSlot},
-        {"vTexCoord", kTexCoordSlot}, {"aVertexTextureCoord", kTexCoordSlot},
-        {"texcoord", kTexCoordSlot},  {"uv", kTexCoordSlot},
+        {"vPosition", kPositionSlot},
+        {"aVertexPosition", kPositionSlot},
+        {"position", kPositionSlot},
+        {"aPosition", kPositionSlot},
+        {"aPos", kPositionSlot},
+        {"a_position", kPositionSlot},
+        {"VertexPosition", kPositionSlot},
+        {"a_Position", kPositionSlot},
+        {"vNormal", kNormalSlot},
+        {"aVertexNormal", kNormalSlot},
+        {"normal", kNormalSlot},
+        {"aNormal", kNormalSlot},
+        {"a_normal", kNormalSlot},
+        {"VertexNormal", kNormalSlot},
+        {"a_Normal", kNormalSlot},
+        {"vColor", kColorSlot},
+        {"aVertexColor", kColorSlot},
+        {"color", kColorSlot},
+        {"aColor", kColorSlot},
+        {"a_color", kColorSlot},
+        {"VertexColor", kColorSlot},
+        {"a_Color", kColorSlot},
+        {"vTexCoord", kTexCoordSlot},
+        {"aVertexTextureCoord", kTexCoordSlot},
+        {"texcoord", kTexCoordSlot},
+        {"uv", kTexCoordSlot},
         {"aTexCoord", kTexCoordSlot},
+        {"aTexCoords", kTexCoordSlot},
+        {"aTextureCoord", kTexCoordSlot},
+        {"a_texcoord", kTexCoordSlot},
+        {"a_texCoord", kTexCoordSlot},
+        {"VertexTexCoord", kTexCoordSlot},
+        {"a_TexCoord", kTexCoordSlot},
     };
     return bindings;
+}
+
+std::optional<AttributeSlot> slotByNameParts(const QString &name)
+{
+    // "Vertex" says which stage, not what: inVertexNormal is a normal, inVertexTexCoord
+    // texture coordinates (and "vertex" holds "tex"); alone (aVertex) it is the position.
+    QString n = name.toLower();
+    const bool vertex = n.contains("vert");
+    n.remove("vertex");
+    if (n.contains("norm"))
+        return kNormalSlot;
+    if (n.contains("tex") || n.contains("uv"))
+        return kTexCoordSlot;
+    if (n.contains("col"))
+        return kColorSlot;
+    if (n.contains("pos") || vertex)
+        return kPositionSlot;
+    return std::nullopt;
 }
 
 double rawBuildMilliseconds(QOpenGLExtraFunctions &gl, const QString &vertexSource,
@@ -252,13 +359,16 @@ double rawBuildMilliseconds(QOpenGLExtraFunctions &gl, const QString &vertexSour
     return double(timer.nsecsElapsed()) * 1e-6; // the objects go after the clock stops
 }
 
-BuiltProgram buildProgram(QOpenGLExtraFunctions &gl, const QString &vertexSource,
-                          const QString &fragmentSource)
+namespace {
+
+// buildProgram(), with WebGL 1 sources translated to GLSL 3.30 or not.
+BuiltProgram buildTranslatedOrNot(QOpenGLExtraFunctions &gl, const QString &vertexSource,
+                                  const QString &fragmentSource, bool translate)
 {
     BuiltProgram result;
     ProgramBuild &build = result.build;
-    const GlShader vs = compile(gl, ShaderStage::Vertex, vertexSource, build);
-    const GlShader fs = compile(gl, ShaderStage::Fragment, fragmentSource, build);
+    const GlShader vs = compile(gl, ShaderStage::Vertex, vertexSource, translate, build);
+    const GlShader fs = compile(gl, ShaderStage::Fragment, fragmentSource, translate, build);
     if (!vs || !fs)
         return result;
     GlProgram program = GlProgram::create();
@@ -267,11 +377,17 @@ BuiltProgram buildProgram(QOpenGLExtraFunctions &gl, const QString &vertexSource
     for (const AttributeBinding &b : attributeBindings())
         gl.glBindAttribLocation(program.id(), b.slot, b.name);
     gl.glLinkProgram(program.id());
+    GLint status = GL_FALSE;
+    gl.glGetProgramiv(program.id(), GL_LINK_STATUS, &status);
+    // Names in no table are bound by what they say (inPos, vertex_normal) and the program
+    // linked once more; a layout(location = N) the shader gives keeps its N either way.
+    if (status == GL_TRUE && bindByNameParts(gl, program.id())) {
+        gl.glLinkProgram(program.id());
+        gl.glGetProgramiv(program.id(), GL_LINK_STATUS, &status);
+    }
     gl.glDetachShader(program.id(), vs.id());
     gl.glDetachShader(program.id(), fs.id());
 
-    GLint status = GL_FALSE;
-    gl.glGetProgramiv(program.id(), GL_LINK_STATUS, &status);
     for (const Diagnostic &d : parseDriverLog(programLog(gl, program.id()), ShaderStage::Link))
         build.diagnostics.push_back(d);
     if (status != GL_TRUE) {
@@ -282,15 +398,16 @@ BuiltProgram buildProgram(QOpenGLExtraFunctions &gl, const QString &vertexSource
     }
     // Two programs link but cannot draw the object; they are refused like a failed link, so
     // that the last good program keeps drawing.
-    bool readsPosition = false;
-    for (const AttributeBinding &b : attributeBindings())
-        readsPosition = readsPosition || (b.slot == kPositionSlot &&
-                                          gl.glGetAttribLocation(program.id(), b.name) >= 0);
+    const std::vector<ActiveAttribute> attributes = activeAttributes(gl, program.id());
+    const bool readsPosition =
+        std::any_of(attributes.begin(), attributes.end(),
+                    [](const ActiveAttribute &a) { return a.location == GLint(kPositionSlot); });
     if (!readsPosition)
         addMessage(build, ShaderStage::Vertex,
                    ProgramMessages::tr(
-                       "no position input: the mesh reaches the shader through an "
-                       "attribute named vPosition, aVertexPosition, position or aPosition"));
+                       "no position input: the mesh reaches the shader through the attribute "
+                       "at layout(location = 0), or one named aPos, a_position, vPosition, "
+                       "aVertexPosition or position, or with pos or vert in its name"));
     if (!writesFragmentColour(fragmentSource))
         addMessage(
             build, ShaderStage::Fragment,
@@ -301,8 +418,56 @@ BuiltProgram buildProgram(QOpenGLExtraFunctions &gl, const QString &vertexSource
         return result;
     build.linked = true;
     build.uniforms = activeUniforms(gl, program.id());
+    for (const Diagnostic &d : unfedInputWarnings(build.uniforms, vertexSource, fragmentSource))
+        build.diagnostics.push_back(d);
     result.program = std::move(program);
     return result;
+}
+
+// The errors a driver gives a global initialised from something that is not a constant
+// (Mesa: "initializer of global variable `x' must be a constant expression"), which GLSL ES
+// 1.00 forbids and browsers accept: ANGLE moves the initialisation into main with a warning.
+std::vector<const Diagnostic *> globalInitialiserErrors(const ProgramBuild &build)
+{
+    static const QRegularExpression initialiser("initiali[sz]",
+                                                QRegularExpression::CaseInsensitiveOption);
+    std::vector<const Diagnostic *> found;
+    for (const Diagnostic &d : build.diagnostics)
+        if (d.severity == Diagnostic::Severity::Error && d.message.contains(initialiser))
+            found.push_back(&d);
+    return found;
+}
+
+} // namespace
+
+BuiltProgram buildProgram(QOpenGLExtraFunctions &gl, const QString &vertexSource,
+                          const QString &fragmentSource)
+{
+    const bool translate = translatesWebGl1();
+    BuiltProgram built = buildTranslatedOrNot(gl, vertexSource, fragmentSource, translate);
+    const std::vector<const Diagnostic *> initialisers = globalInitialiserErrors(built.build);
+    if (built.build.ok() || translate || initialisers.empty() ||
+        prepareSource(vertexSource).version != "100" ||
+        prepareSource(fragmentSource).version != "100")
+        return built;
+    // WebGL 1 as browsers run it: GLSL 3.30 takes any global initialiser, so the program runs
+    // translated (both stages: an ES 1.00 stage does not link with a 3.30 one), and each line
+    // the driver refused gets a warning instead.
+    BuiltProgram translated = buildTranslatedOrNot(gl, vertexSource, fragmentSource, true);
+    if (!translated.build.ok())
+        return built;
+    for (const Diagnostic *refused : initialisers) {
+        Diagnostic d = *refused;
+        d.severity = Diagnostic::Severity::Warning;
+        d.message =
+            ProgramMessages::tr(
+                "a global variable initialised from a uniform or another variable: GLSL ES 1.00 "
+                "asks for a constant, browsers run it (WebGL warns); lightbench runs this program "
+                "translated to GLSL 3.30 (the driver said: %1)")
+                .arg(refused->message);
+        translated.build.diagnostics.insert(translated.build.diagnostics.begin(), d);
+    }
+    return translated;
 }
 
 BuiltProgram buildBuiltIn(QOpenGLExtraFunctions &gl, const QString &name, QString &error,

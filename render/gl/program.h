@@ -18,11 +18,13 @@ namespace lb {
 
 // Fixed attribute slots, bound by name before linking so every program reads the renderer's
 // buffers the same way.
+// The order is the one tutorials give with layout(location = N): LearnOpenGL and the GLSL
+// Cookbook put the position at 0, the normal at 1 and the texture coordinates at 2.
 enum AttributeSlot : GLuint {
     kPositionSlot = 0,
     kNormalSlot = 1,
-    kColorSlot = 2,
-    kTexCoordSlot = 3
+    kTexCoordSlot = 2,
+    kColorSlot = 3
 };
 
 // A build that linked holds the one owner of its program; one that did not holds none.
@@ -37,13 +39,17 @@ struct BuiltProgram
     std::optional<bool> shippedBuiltIn;
 };
 
-// The names bound to each slot: the slides', the exercise's and common generic ones.
+// The names bound to each slot: the slides', the exercise's, the tutorials' and books'
+// (semantics.h's conventions) and common generic ones.
 struct AttributeBinding
 {
     const char *name;
     AttributeSlot slot;
 };
 const std::vector<AttributeBinding> &attributeBindings();
+// The slot for an attribute of a name in no table, from what the name says ("inPos",
+// "vertex_normal", "myUV"); nullopt when it says nothing the mesh has.
+std::optional<AttributeSlot> slotByNameParts(const QString &name);
 
 // The bare cost of building: glShaderSource, glCompileShader (both stages), glLinkProgram,
 // nothing else; for the editor's benchmark (bench/edit.sh). Milliseconds.

@@ -44,11 +44,13 @@ struct ProgramBuild
     const Diagnostic *firstError() const; // the first error, or none
     QString log() const;                  // the diagnostics as text, one per line
     bool reads(Semantic semantic) const;
-    // Whether the program takes the panel's light position (either name); one that does not
+    // Whether the program takes the panel's light position (in any frame); one that does not
     // hard-codes its light, and the window draws no marker where its light is not.
     bool readsLightPosition() const
     {
-        return reads(Semantic::LightPosition) || reads(Semantic::LightPositionEye);
+        return reads(Semantic::LightPosition) || reads(Semantic::LightPositionEye) ||
+               reads(Semantic::LightPositionWorld) || reads(Semantic::LightDirectionWorld) ||
+               reads(Semantic::ReverseLightDirection);
     }
 };
 

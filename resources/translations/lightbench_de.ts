@@ -97,7 +97,7 @@
 <context>
     <name>lb::BoundedRead</name>
     <message>
-        <location filename="../../render/model/io/bounded_read.cpp" line="+40"/>
+        <location filename="../../render/model/io/bounded_read.cpp" line="+35"/>
         <location line="+6"/>
         <source>no such file</source>
         <translation>Datei nicht vorhanden</translation>
@@ -123,7 +123,7 @@
         <translation>%1 KiB</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>%1, %2</source>
         <extracomment>a file&apos;s size limit (%1, &quot;64 MB&quot;) and where it comes from (%2, &quot;the import memory limit&quot;)</extracomment>
         <translation>%1, %2</translation>
@@ -134,7 +134,7 @@
         <translation>%1: keine reguläre Datei (ein Ordner, ein Gerät oder eine Pipe)</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>%1: %2 is more than %3 may be (%4)</source>
         <extracomment>%1 a path, %2 its size, %3 a kind of file (&quot;a scene file&quot;), %4 the limit (&quot;64 MB&quot;)</extracomment>
         <translation>%1: %2 sind mehr, als %3 haben darf (%4)</translation>
@@ -506,24 +506,24 @@
 <context>
     <name>lb::Exercise</name>
     <message>
-        <location filename="../../render/model/scene/exercise.cpp" line="+81"/>
+        <location filename="../../render/model/scene/exercise.cpp" line="+82"/>
         <source>not a number of points from 0 to %1, nor a list of one per case</source>
         <extracomment>%1 the largest number of points (&quot;1000000&quot;)</extracomment>
         <translation>weder eine Punktzahl von 0 bis %1 noch eine Liste mit einer pro Fall</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source>each case&apos;s points must be a number from 0 to %1</source>
         <translation>die Punkte jedes Falls müssen eine Zahl von 0 bis %1 sein</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+4"/>
         <source>%1 values for %2 cases (one per case)</source>
         <extracomment>%1 how many points the list gives, %2 how many cases the exercise has</extracomment>
         <translation>%1 Werte für %2 Fälle (einer pro Fall)</translation>
     </message>
     <message>
-        <location line="+81"/>
+        <location line="+83"/>
         <source>%1 (%2)</source>
         <extracomment>a field of an exercise as the file spells it (%1, &quot;exercise.grading.cases&quot;) and why it was not used (%2)</extracomment>
         <translation>%1 (%2)</translation>
@@ -535,7 +535,7 @@
     </message>
     <message>
         <location line="+11"/>
-        <location line="+36"/>
+        <location line="+38"/>
         <location filename="../../render/model/scene/exercise_mistakes.cpp" line="+55"/>
         <location line="+11"/>
         <location line="+20"/>
@@ -543,12 +543,12 @@
         <translation>unbekanntes Feld</translation>
     </message>
     <message>
-        <location line="-28"/>
+        <location line="-31"/>
         <source>%1: needs both a vertex and a fragment shader</source>
         <translation>%1: braucht sowohl einen Vertex- als auch einen Fragment-Shader</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+11"/>
         <location line="+5"/>
         <location filename="../../render/model/scene/exercise_mistakes.cpp" line="-51"/>
         <source>not %1</source>
@@ -556,7 +556,7 @@
         <translation>keiner der Werte %1</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>%1: no reference program (&quot;reference&quot;: {&quot;vertex&quot;: ..., &quot;fragment&quot;: ...} or {&quot;builtIn&quot;: {...}})</source>
         <translation>%1: kein Referenzprogramm (&quot;reference&quot;: {&quot;vertex&quot;: ..., &quot;fragment&quot;: ...} oder {&quot;builtIn&quot;: {...}})</translation>
     </message>
@@ -576,7 +576,7 @@
         <translation>nicht [Breite, Höhe] in ganzen Pixeln, 16 bis %1</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>not a list of parameters; all of them vary</source>
         <translation>keine Liste von Parametern; alle werden variiert</translation>
     </message>
@@ -597,12 +597,12 @@
         <translation>kein Objekt</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+12"/>
         <source>not a name of 1 to %1 characters; the mistake is left out</source>
         <translation>kein Name mit 1 bis %1 Zeichen; der Fehler wird weggelassen</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+10"/>
         <source>no usable hint; the mistake is left out</source>
         <translation>kein verwendbarer Hinweis; der Fehler wird weggelassen</translation>
     </message>
@@ -612,17 +612,17 @@
         <translation>kein Shader-Text von bis zu 1 MiB; der Fehler wird weggelassen</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>both a program and a built-in; the mistake is left out</source>
         <translation>sowohl ein Programm als auch ein eingebautes; der Fehler wird weggelassen</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>needs both a vertex and a fragment shader: the reference is the built-in program; the mistake is left out</source>
         <translation>braucht einen Vertex- und einen Fragment-Shader: Die Referenz ist das eingebaute Programm; der Fehler wird weggelassen</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+8"/>
         <source>neither a program (&quot;vertex&quot;, &quot;fragment&quot;) nor &quot;builtIn&quot;: {...}; the mistake is left out</source>
         <translation>weder ein Programm (&quot;vertex&quot;, &quot;fragment&quot;) noch &quot;builtIn&quot;: {...}; der Fehler wird weggelassen</translation>
     </message>
@@ -632,12 +632,12 @@
         <translation>ein eingebauter Fehler braucht eine eingebaute Referenz; geben Sie den Fehler als Programm an; der Fehler wird weggelassen</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+19"/>
         <source>not a list</source>
         <translation>keine Liste</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+9"/>
         <source>more than %1 mistakes; the rest are left out</source>
         <translation>mehr als %1 Fehler; die übrigen werden weggelassen</translation>
     </message>
@@ -993,7 +993,7 @@
         <translation>die Speichergrenze für den Import</translation>
     </message>
     <message>
-        <location filename="../../render/model/scene/lesson.cpp" line="+200"/>
+        <location filename="../../render/model/scene/lesson.cpp" line="+205"/>
         <location line="+42"/>
         <source>a lesson file</source>
         <translation>eine Lektionsdatei</translation>
@@ -1004,7 +1004,7 @@
         <translation>die Lektion</translation>
     </message>
     <message>
-        <location filename="../../render/model/scene/scene_file.cpp" line="+160"/>
+        <location filename="../../render/model/scene/scene_file.cpp" line="+164"/>
         <location line="+15"/>
         <source>a scene file</source>
         <translation>eine Szenendatei</translation>
@@ -1034,7 +1034,7 @@
 <context>
     <name>lb::Grading</name>
     <message>
-        <location filename="../../render/model/grading/grading.cpp" line="+100"/>
+        <location filename="../../render/model/grading/grading.cpp" line="+136"/>
         <source>passed</source>
         <extracomment>the outcome of a case, at the end of a grading sheet&apos;s title</extracomment>
         <translation>bestanden</translation>
@@ -1050,13 +1050,13 @@
         <translation>%1 - Fall %2: größte Differenz %3/255, %4% von %5 Pixeln innerhalb der Toleranz, %6</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>%1 - case %2: largest difference %3/255 at (%4, %5), %6% of %7 pixels within tolerance, %8</source>
         <extracomment>%4, %5: the pixel that differs most</extracomment>
         <translation>%1 - Fall %2: größte Differenz %3/255 bei (%4, %5), %6% von %7 Pixeln innerhalb der Toleranz, %8</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+25"/>
         <source>student</source>
         <extracomment>the captions under a grading sheet&apos;s three frames</extracomment>
         <translation>Abgabe</translation>
@@ -1243,7 +1243,7 @@
         <translation>die Datei endet mitten in den Bilddaten (keine End-of-Image-Markierung): abgeschnitten?</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>the file ends inside its header</source>
         <translation>die Datei endet mitten im Dateikopf</translation>
     </message>
@@ -1417,13 +1417,13 @@
 <context>
     <name>lb::Lesson</name>
     <message>
-        <location filename="../../render/model/scene/lesson.cpp" line="-210"/>
+        <location filename="../../render/model/scene/lesson.cpp" line="-215"/>
         <source>%1 (%2)</source>
         <extracomment>a field of a lesson file (%1, &quot;step 2: caption.de&quot;) and why it was not used (%2)</extracomment>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+21"/>
         <source>&quot;%1&quot; is not one of %2</source>
         <extracomment>%1 a word the file gave, %2 the words allowed (as files spell them)</extracomment>
         <translation>&quot;%1&quot; ist keiner der Werte %2</translation>
@@ -1434,13 +1434,13 @@
         <translation>kein Text und damit keiner der Werte %1</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+32"/>
         <source>%1: the scene file %2 (%3) is past what is left of the lesson&apos;s limit (%4 for the lesson and its scene files)</source>
         <extracomment>%1 the step (&quot;step 3&quot;), %2 a path, %3 its size, %4 the limit</extracomment>
         <translation>%1: Die Szenendatei %2 (%3) übersteigt, was von der Größengrenze der Lektion noch übrig ist (%4 für die Lektion und ihre Szenendateien)</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+10"/>
         <source>%1: no scene (&quot;scene&quot; must be a scene object or the name of a scene file)</source>
         <translation>%1: keine Szene (&quot;scene&quot; muss ein Szenenobjekt oder der Name einer Szenendatei sein)</translation>
     </message>
@@ -1451,22 +1451,22 @@
         <translation>%1: keine Lektionsdatei: %2 bei Byte %3</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+9"/>
         <source>%1: a scene file, not a lesson (open it with File &gt; Open Scene)</source>
         <translation>%1: eine Szenendatei, keine Lektion (öffnen Sie sie mit Datei &gt; Szene öffnen)</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>%1: not a lesson file (&quot;format&quot; is not &quot;%2&quot;)</source>
         <translation>%1: keine Lektionsdatei (&quot;format&quot; ist nicht &quot;%2&quot;)</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>missing or not a number; read as %1</source>
         <translation>fehlt oder ist keine Zahl; gelesen als %1</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>newer than this lightbench&apos;s %1: what it does not know is left out</source>
         <translation>neuer als Version %1, die dieses lightbench kennt: Unbekanntes wird ausgelassen</translation>
     </message>
@@ -1476,7 +1476,7 @@
         <translation>%1: Die Lektion hat keine Schritte (&quot;steps&quot; muss eine Liste von Schritten sein)</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>%1: %2 steps; a lesson may have at most %3</source>
         <translation>%1: %2 Schritte; eine Lektion darf höchstens %3 haben</translation>
     </message>
@@ -1495,7 +1495,7 @@
 <context>
     <name>lb::LessonActions</name>
     <message>
-        <location filename="../../app/window/lesson_actions.cpp" line="+44"/>
+        <location filename="../../app/window/lesson_actions.cpp" line="+43"/>
         <source>Open Recent &amp;Lesson</source>
         <translation>Zuletzt geöffnete Lekt&amp;ion</translation>
     </message>
@@ -1643,7 +1643,7 @@
     </message>
     <message>
         <location line="+116"/>
-        <location filename="../../app/window/lesson_authoring.cpp" line="+39"/>
+        <location filename="../../app/window/lesson_authoring.cpp" line="+35"/>
         <location line="+24"/>
         <source>Step %1</source>
         <extracomment>a new step&apos;s title, until the teacher renames it (saved in the lesson file)</extracomment>
@@ -1985,12 +1985,12 @@
         <translation>kein Text</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+2"/>
         <source>%1 characters; at most %2</source>
         <translation>%1 Zeichen; höchstens %2</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+17"/>
         <source>not a language code</source>
         <translation>kein Sprachcode</translation>
     </message>
@@ -2038,7 +2038,7 @@
         <translation>dieses Programm stellt nie ein Bild fertig: Die Schleife hier läuft für jeden Vertex %1-mal (ihr Zähler entfernt sich von seiner Grenze: nur ein Zahlenüberlauf beendet sie): Ein Bild würde auf jeder GPU Sekunden oder länger dauern (llvmpipe bricht sie nach 65.535 Schritten ab und zeichnet ein falsches Bild)</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+21"/>
         <source>this loop never ends: it has no condition and nothing in it breaks, returns or discards (the driver may drop it and draw garbage, or hang)</source>
         <translation>diese Schleife endet nie: Sie hat keine Bedingung, und nichts in ihr führt break, return oder discard aus (der Treiber kann sie verwerfen und Unsinn zeichnen oder hängen bleiben)</translation>
     </message>
@@ -2053,7 +2053,7 @@
         <translation>dieses Programm stellt nie ein Bild fertig: Die Schleife hier hat keine Bedingung (oder eine immer wahre) und kein break, return oder discard</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+9"/>
         <source>this loop never ends once it starts: its condition reads %1, and nothing in the loop changes it</source>
         <extracomment>%1 the names the loop&apos;s condition reads, as the shader spells them (&quot;i, n&quot;)</extracomment>
         <translation>diese Schleife endet nie, sobald sie einmal läuft: Ihre Bedingung liest %1, und nichts in der Schleife ändert diesen Wert</translation>
@@ -2184,7 +2184,7 @@
         <translation>Das Programm im Editor (%1) schattiert nach Phong (pro Fragment), egal was hier steht. Laden Sie eine Vorlage oder wählen Sie „Alles zurücksetzen“, um die Schattierung umzuschalten.</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+36"/>
         <source>%1, step %2</source>
         <translation>%1, Schritt %2</translation>
     </message>
@@ -2911,12 +2911,12 @@
         <translation>%1 Vertices mit nicht endlichen Koordinaten entfernt, samt der %2 Dreiecke, die sie verwenden</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>%1 normals with non-finite coordinates: the file&apos;s normals not used</source>
         <translation>%1 Normalen mit nicht endlichen Koordinaten: Die Normalen der Datei werden nicht verwendet</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+15"/>
         <source>%1: %2 vertices, %3 triangles</source>
         <translation>%1: %2 Vertices, %3 Dreiecke</translation>
     </message>
@@ -2926,7 +2926,7 @@
         <translation>%1: %2 Vertices, %3 Dreiecke, geladen in %4 s</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>%1: %2 vertices, %3 triangles, loaded in %4 s, normals generated</source>
         <translation>%1: %2 Vertices, %3 Dreiecke, geladen in %4 s, Normalen erzeugt</translation>
     </message>
@@ -2936,7 +2936,7 @@
         <translation>%1: %2 Vertices, %3 Dreiecke, geladen in %4 s, Normalen erzeugt (die Datei hat keine)</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>%1 (%2)</source>
         <extracomment>a mesh&apos;s summary (%1) and what was skipped or not used in its file (%2, a list)</extracomment>
         <translation>%1 (%2)</translation>
@@ -2945,7 +2945,7 @@
 <context>
     <name>lb::MessageText</name>
     <message>
-        <location filename="../../render/model/io/message_text.cpp" line="+80"/>
+        <location filename="../../render/model/io/message_text.cpp" line="+85"/>
         <source>... and %1 more</source>
         <translation>... und %1 weitere</translation>
     </message>
@@ -2990,12 +2990,12 @@
 <context>
     <name>lb::ObjectLoader</name>
     <message>
-        <location filename="../../render/import/object_loader.cpp" line="+160"/>
+        <location filename="../../render/import/object_loader_textures.cpp" line="+67"/>
         <source>%1 (the objects naming it show the mesh file&apos;s texture or the checker, and keep its name for when the file is back)</source>
         <translation>%1 (die Objekte, die diese Datei nennen, zeigen die Textur der Mesh-Datei oder das Schachbrettmuster und behalten den Dateinamen für den Fall, dass die Datei wieder da ist)</translation>
     </message>
     <message>
-        <location line="+68"/>
+        <location filename="../../render/import/object_loader.cpp" line="+163"/>
         <source>%1: not used: its object was removed</source>
         <translation>%1: nicht verwendet: sein Objekt wurde entfernt</translation>
     </message>
@@ -3040,17 +3040,17 @@
         <translation>nicht genug Speicher zum Erstellen der Kugel mit Tessellierung %1</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>out of memory building the torus at tessellation %1</source>
         <translation>nicht genug Speicher zum Erstellen des Torus mit Tessellierung %1</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>out of memory building the plane at tessellation %1</source>
         <translation>nicht genug Speicher zum Erstellen der Ebene mit Tessellierung %1</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <location line="+69"/>
         <source>out of memory building a mesh</source>
         <translation>nicht genug Speicher zum Erstellen eines Meshes</translation>
@@ -3281,12 +3281,12 @@
 <context>
     <name>lb::Offscreen</name>
     <message>
-        <location filename="../../render/gl/offscreen.cpp" line="+47"/>
+        <location filename="../../render/gl/offscreen.cpp" line="+48"/>
         <source>cannot create an OpenGL context (is there an X server with OpenGL?)</source>
         <translation>OpenGL-Kontext kann nicht erstellt werden (gibt es einen X-Server mit OpenGL?)</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>cannot make the OpenGL context current</source>
         <translation>OpenGL-Kontext kann nicht aktiviert werden</translation>
     </message>
@@ -3860,7 +3860,7 @@
 <context>
     <name>lb::Program</name>
     <message>
-        <location filename="../../render/gl/program.cpp" line="+69"/>
+        <location filename="../../render/gl/program.cpp" line="+70"/>
         <source>the vertex shader is empty</source>
         <translation>der Vertex-Shader ist leer</translation>
     </message>
@@ -3870,7 +3870,7 @@
         <translation>der Fragment-Shader ist leer</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+8"/>
         <source>the vertex shader is %1 KiB; lightbench compiles sources up to %2 KiB</source>
         <translation>der Vertex-Shader ist %1 KiB groß; lightbench kompiliert Quelltexte bis %2 KiB</translation>
     </message>
@@ -3880,7 +3880,7 @@
         <translation>der Fragment-Shader ist %1 KiB groß; lightbench kompiliert Quelltexte bis %2 KiB</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+31"/>
         <source>the vertex shader does not compile (the driver gave no reason)</source>
         <translation>der Vertex-Shader lässt sich nicht kompilieren (der Treiber nennt keinen Grund)</translation>
     </message>
@@ -3890,23 +3890,28 @@
         <translation>der Fragment-Shader lässt sich nicht kompilieren (der Treiber nennt keinen Grund)</translation>
     </message>
     <message>
-        <location line="+167"/>
+        <location line="+282"/>
         <source>the program does not link (no reason given)</source>
         <translation>das Programm lässt sich nicht linken (kein Grund angegeben)</translation>
     </message>
     <message>
         <location line="+11"/>
-        <source>no position input: the mesh reaches the shader through an attribute named vPosition, aVertexPosition, position or aPosition</source>
-        <translation>keine Positionseingabe: Das Mesh gelangt über ein Attribut namens vPosition, aVertexPosition, position oder aPosition in den Shader</translation>
+        <source>no position input: the mesh reaches the shader through the attribute at layout(location = 0), or one named aPos, a_position, vPosition, aVertexPosition or position, or with pos or vert in its name</source>
+        <translation>keine Positionseingabe: Das Mesh gelangt über das Attribut an layout(location = 0) in den Shader, oder über eines namens aPos, a_position, vPosition, aVertexPosition oder position, oder mit pos oder vert im Namen</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+7"/>
         <source>the fragment shader writes no colour: assign gl_FragColor (no #version, #version 100) or declare an out vec4 (#version 300 es, 330 and later)</source>
         <translation>der Fragment-Shader schreibt keine Farbe: Weisen Sie gl_FragColor zu (ohne #version, #version 100) oder deklarieren Sie ein out vec4 (#version 300 es, 330 und neuer)</translation>
     </message>
     <message>
+        <location line="+49"/>
+        <source>a global variable initialised from a uniform or another variable: GLSL ES 1.00 asks for a constant, browsers run it (WebGL warns); lightbench runs this program translated to GLSL 3.30 (the driver said: %1)</source>
+        <translation>eine globale Variable, die aus einer Uniform oder einer anderen Variable initialisiert wird: GLSL ES 1.00 verlangt eine Konstante, Browser führen es aus (WebGL warnt); lightbench führt dieses Programm nach GLSL 3.30 übersetzt aus (der Treiber sagte: %1)</translation>
+    </message>
+    <message>
         <location line="+19"/>
-        <location line="+87"/>
+        <location line="+88"/>
         <source>built-in shader &apos;%1&apos; failed:
 %2</source>
         <extracomment>%1 a built-in program&apos;s name, %2 its build log</extracomment>
@@ -3914,7 +3919,7 @@
 %2</translation>
     </message>
     <message>
-        <location line="-7"/>
+        <location line="-8"/>
         <source>built-in shader &apos;%1&apos; lacks a &apos;#define MAX_LIGHTS&apos;, &apos;LIGHT_FACTORS&apos; or &apos;SHOW_CHOICES&apos; line
 </source>
         <translation>dem eingebauten Shader &apos;%1&apos; fehlt eine Zeile &apos;#define MAX_LIGHTS&apos;, &apos;LIGHT_FACTORS&apos; oder &apos;SHOW_CHOICES&apos;
@@ -3943,12 +3948,12 @@
         <translation>ein Bild mit diesem Programm zu zeichnen würde bei %2x%3 etwa %1 dauern (gemessen %4 bei %5x%6; das Budget beträgt %7): eine Endlosschleife oder sehr lange Schleife?</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>drawing one frame with this program would take about %1 at %2x%3 (measured %4 at %5x%6; the budget is %7): too much work for every pixel?</source>
         <translation>ein Bild mit diesem Programm zu zeichnen würde bei %2x%3 etwa %1 dauern (gemessen %4 bei %5x%6; das Budget beträgt %7): zu viel Rechenarbeit pro Pixel?</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+12"/>
         <source>%1 s</source>
         <extracomment>a duration in seconds</extracomment>
         <translation>%1 s</translation>
@@ -3976,18 +3981,18 @@
 <context>
     <name>lb::SafeWrite</name>
     <message>
-        <location filename="../../render/model/io/safe_write.cpp" line="+61"/>
+        <location filename="../../render/model/io/safe_write.cpp" line="+55"/>
         <location line="+14"/>
         <source>a loop of symbolic links</source>
         <translation>eine Schleife symbolischer Links</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+4"/>
         <source>not a regular file (a device, a pipe or a folder); not replaced</source>
         <translation>keine reguläre Datei (ein Gerät, eine Pipe oder ein Ordner); nicht ersetzt</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+13"/>
         <source>the folder %1 does not exist</source>
         <translation>der Ordner %1 existiert nicht</translation>
     </message>
@@ -3997,12 +4002,12 @@
         <translation>%1 ist kein Ordner</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+2"/>
         <source>cannot write in %1: %2</source>
         <translation>in %1 kann nicht geschrieben werden: %2</translation>
     </message>
     <message>
-        <location line="+106"/>
+        <location line="+108"/>
         <source>no image to write</source>
         <translation>kein Bild zum Schreiben</translation>
     </message>
@@ -4334,7 +4339,7 @@
 <context>
     <name>lb::SceneFile</name>
     <message>
-        <location filename="../../render/model/scene/scene_file.cpp" line="-136"/>
+        <location filename="../../render/model/scene/scene_file.cpp" line="-140"/>
         <source>not true or false; read as false</source>
         <translation>nicht true oder false; als false gelesen</translation>
     </message>
@@ -4345,7 +4350,7 @@
         <translation>%1: keine Szenendatei: %2 bei Byte %3</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>%1: not a scene file: the JSON is not an object</source>
         <translation>%1: keine Szenendatei: Das JSON ist kein Objekt</translation>
     </message>
@@ -4355,7 +4360,7 @@
         <translation>erwartet: &quot;%1&quot;</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>missing or not a number; read as %1</source>
         <translation>fehlt oder ist keine Zahl; gelesen als %1</translation>
     </message>
@@ -4365,7 +4370,7 @@
         <translation>neuer als Version %1, die dieses lightbench kennt: Unbekanntes wird ausgelassen</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+15"/>
         <source>needs vertex and fragment sources as strings</source>
         <translation>braucht Vertex- und Fragment-Quelltext als Zeichenketten</translation>
     </message>
@@ -4384,23 +4389,23 @@
 <context>
     <name>lb::SceneJson</name>
     <message>
-        <location filename="../../render/model/scene/scene_json.cpp" line="+109"/>
+        <location filename="../../render/model/scene/scene_json.cpp" line="+110"/>
         <source>w must be 0 or 1</source>
         <translation>w muss 0 oder 1 sein</translation>
     </message>
     <message>
-        <location line="+3"/>
-        <location line="+17"/>
+        <location line="+4"/>
+        <location line="+19"/>
         <source>a direction of length 0</source>
         <translation>eine Richtung der Länge 0</translation>
     </message>
     <message>
-        <location line="-8"/>
+        <location line="-9"/>
         <source>kc, kl and kq all 0</source>
         <translation>kc, kl und kq alle 0</translation>
     </message>
     <message>
-        <location line="+125"/>
+        <location line="+126"/>
         <location line="+33"/>
         <source>not an array</source>
         <translation>kein Array</translation>
@@ -4442,7 +4447,7 @@
         <translation>zu viele: %1 mehr als die %2 übernommenen</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>not a uniform&apos;s name</source>
         <translation>kein gültiger Uniform-Name</translation>
     </message>
@@ -5179,24 +5184,24 @@
         <translation>lesbare Formate sind %1</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>%1: %2 x %3 texels is more than a texture may have (%4 x %4)</source>
         <translation>%1: %2 x %3 Texel sind mehr, als eine Textur haben darf (%4 x %4)</translation>
     </message>
     <message>
-        <location line="+31"/>
-        <location line="+7"/>
+        <location line="+32"/>
+        <location line="+6"/>
         <source>%1: could not be read as an image: %2</source>
         <translation>%1: konnte nicht als Bild gelesen werden: %2</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>%1: %2 x %3 texels (scaled from %4 x %5)</source>
         <extracomment>%1 a file&apos;s name, %2 x %3 the texels drawn, %4 x %5 the image&apos;s own size</extracomment>
         <translation>%1: %2 x %3 Texel (skaliert von %4 x %5)</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+7"/>
         <source>%1: %2 x %3 texels</source>
         <translation>%1: %2 x %3 Texel</translation>
     </message>
@@ -5222,6 +5227,15 @@
         <location line="+2"/>
         <source>the trial&apos;s helper ended while it drew this program (exit code %1; it was replaced)</source>
         <translation>der Hilfsprozess für die Erprobung wurde beim Zeichnen dieses Programms beendet (Exit-Code %1; er wurde ersetzt)</translation>
+    </message>
+</context>
+<context>
+    <name>lb::UnfedInputs</name>
+    <message>
+        <location filename="../../render/glsl/unfed_inputs.cpp" line="+68"/>
+        <source>the scene feeds nothing to the matrix %1: it stays all zeros, and whatever it multiplies collapses to nothing on screen; the matrices fed have these names: %2</source>
+        <extracomment>%1 the uniform&apos;s name; %2 the names of the matrices the workbench feeds</extracomment>
+        <translation>die Szene speist nichts in die Matrix %1: Sie bleibt ganz null, und alles, was sie multipliziert, schrumpft auf dem Bildschirm zu nichts; gespeist werden die Matrizen mit diesen Namen: %2</translation>
     </message>
 </context>
 <context>
@@ -5334,7 +5348,7 @@
         <translation>Linke Maustaste ziehen: kreisen - rechte oder mittlere Maustaste ziehen: verschieben - Mausrad: zoomen - R: Ansicht zurücksetzen</translation>
     </message>
     <message>
-        <location filename="../../render/pipeline/program_pipeline.cpp" line="+52"/>
+        <location filename="../../render/pipeline/program_pipeline.cpp" line="+53"/>
         <source>the OpenGL context was lost while this program drew (the driver reset the GPU: an endless or very long loop?)</source>
         <translation>der OpenGL-Kontext ging verloren, während dieses Programm zeichnete (der Treiber hat die GPU zurückgesetzt: eine Endlosschleife oder sehr lange Schleife?)</translation>
     </message>
@@ -5558,17 +5572,17 @@
         <translation>Exit-Code %1</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+35"/>
         <source>no temporary folder for the check: %1</source>
         <translation>kein temporärer Ordner für die Prüfung: %1</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+32"/>
         <source>your program</source>
         <translation>Ihr Programm</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+14"/>
         <source>more than %1 s</source>
         <translation>mehr als %1 s</translation>
     </message>

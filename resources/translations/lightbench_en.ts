@@ -97,7 +97,7 @@
 <context>
     <name>lb::BoundedRead</name>
     <message>
-        <location filename="../../render/model/io/bounded_read.cpp" line="+40"/>
+        <location filename="../../render/model/io/bounded_read.cpp" line="+35"/>
         <location line="+6"/>
         <source>no such file</source>
         <translation type="unfinished"></translation>
@@ -123,7 +123,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>%1, %2</source>
         <extracomment>a file&apos;s size limit (%1, &quot;64 MB&quot;) and where it comes from (%2, &quot;the import memory limit&quot;)</extracomment>
         <translation type="unfinished"></translation>
@@ -134,7 +134,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>%1: %2 is more than %3 may be (%4)</source>
         <extracomment>%1 a path, %2 its size, %3 a kind of file (&quot;a scene file&quot;), %4 the limit (&quot;64 MB&quot;)</extracomment>
         <translation type="unfinished"></translation>
@@ -506,24 +506,24 @@
 <context>
     <name>lb::Exercise</name>
     <message>
-        <location filename="../../render/model/scene/exercise.cpp" line="+81"/>
+        <location filename="../../render/model/scene/exercise.cpp" line="+82"/>
         <source>not a number of points from 0 to %1, nor a list of one per case</source>
         <extracomment>%1 the largest number of points (&quot;1000000&quot;)</extracomment>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source>each case&apos;s points must be a number from 0 to %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+4"/>
         <source>%1 values for %2 cases (one per case)</source>
         <extracomment>%1 how many points the list gives, %2 how many cases the exercise has</extracomment>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+81"/>
+        <location line="+83"/>
         <source>%1 (%2)</source>
         <extracomment>a field of an exercise as the file spells it (%1, &quot;exercise.grading.cases&quot;) and why it was not used (%2)</extracomment>
         <translation type="unfinished"></translation>
@@ -535,7 +535,7 @@
     </message>
     <message>
         <location line="+11"/>
-        <location line="+36"/>
+        <location line="+38"/>
         <location filename="../../render/model/scene/exercise_mistakes.cpp" line="+55"/>
         <location line="+11"/>
         <location line="+20"/>
@@ -543,12 +543,12 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-28"/>
+        <location line="-31"/>
         <source>%1: needs both a vertex and a fragment shader</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+11"/>
         <location line="+5"/>
         <location filename="../../render/model/scene/exercise_mistakes.cpp" line="-51"/>
         <source>not %1</source>
@@ -556,7 +556,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>%1: no reference program (&quot;reference&quot;: {&quot;vertex&quot;: ..., &quot;fragment&quot;: ...} or {&quot;builtIn&quot;: {...}})</source>
         <translation type="unfinished"></translation>
     </message>
@@ -576,7 +576,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>not a list of parameters; all of them vary</source>
         <translation type="unfinished"></translation>
     </message>
@@ -597,12 +597,12 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+12"/>
         <source>not a name of 1 to %1 characters; the mistake is left out</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+10"/>
         <source>no usable hint; the mistake is left out</source>
         <translation type="unfinished"></translation>
     </message>
@@ -612,17 +612,17 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>both a program and a built-in; the mistake is left out</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>needs both a vertex and a fragment shader: the reference is the built-in program; the mistake is left out</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+8"/>
         <source>neither a program (&quot;vertex&quot;, &quot;fragment&quot;) nor &quot;builtIn&quot;: {...}; the mistake is left out</source>
         <translation type="unfinished"></translation>
     </message>
@@ -632,12 +632,12 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+19"/>
         <source>not a list</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+9"/>
         <source>more than %1 mistakes; the rest are left out</source>
         <translation type="unfinished"></translation>
     </message>
@@ -993,7 +993,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../render/model/scene/lesson.cpp" line="+200"/>
+        <location filename="../../render/model/scene/lesson.cpp" line="+205"/>
         <location line="+42"/>
         <source>a lesson file</source>
         <translation type="unfinished"></translation>
@@ -1004,7 +1004,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../render/model/scene/scene_file.cpp" line="+160"/>
+        <location filename="../../render/model/scene/scene_file.cpp" line="+164"/>
         <location line="+15"/>
         <source>a scene file</source>
         <translation type="unfinished"></translation>
@@ -1028,7 +1028,7 @@
 <context>
     <name>lb::Grading</name>
     <message>
-        <location filename="../../render/model/grading/grading.cpp" line="+100"/>
+        <location filename="../../render/model/grading/grading.cpp" line="+136"/>
         <source>passed</source>
         <extracomment>the outcome of a case, at the end of a grading sheet&apos;s title</extracomment>
         <translation type="unfinished"></translation>
@@ -1044,13 +1044,13 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>%1 - case %2: largest difference %3/255 at (%4, %5), %6% of %7 pixels within tolerance, %8</source>
         <extracomment>%4, %5: the pixel that differs most</extracomment>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+25"/>
         <source>student</source>
         <extracomment>the captions under a grading sheet&apos;s three frames</extracomment>
         <translation type="unfinished"></translation>
@@ -1237,7 +1237,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>the file ends inside its header</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1411,13 +1411,13 @@
 <context>
     <name>lb::Lesson</name>
     <message>
-        <location filename="../../render/model/scene/lesson.cpp" line="-210"/>
+        <location filename="../../render/model/scene/lesson.cpp" line="-215"/>
         <source>%1 (%2)</source>
         <extracomment>a field of a lesson file (%1, &quot;step 2: caption.de&quot;) and why it was not used (%2)</extracomment>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+21"/>
         <source>&quot;%1&quot; is not one of %2</source>
         <extracomment>%1 a word the file gave, %2 the words allowed (as files spell them)</extracomment>
         <translation type="unfinished"></translation>
@@ -1428,13 +1428,13 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+32"/>
         <source>%1: the scene file %2 (%3) is past what is left of the lesson&apos;s limit (%4 for the lesson and its scene files)</source>
         <extracomment>%1 the step (&quot;step 3&quot;), %2 a path, %3 its size, %4 the limit</extracomment>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+10"/>
         <source>%1: no scene (&quot;scene&quot; must be a scene object or the name of a scene file)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1445,22 +1445,22 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+9"/>
         <source>%1: a scene file, not a lesson (open it with File &gt; Open Scene)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>%1: not a lesson file (&quot;format&quot; is not &quot;%2&quot;)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>missing or not a number; read as %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>newer than this lightbench&apos;s %1: what it does not know is left out</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1470,7 +1470,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>%1: %2 steps; a lesson may have at most %3</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1489,7 +1489,7 @@
 <context>
     <name>lb::LessonActions</name>
     <message>
-        <location filename="../../app/window/lesson_actions.cpp" line="+44"/>
+        <location filename="../../app/window/lesson_actions.cpp" line="+43"/>
         <source>Open Recent &amp;Lesson</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1637,7 +1637,7 @@
     </message>
     <message>
         <location line="+116"/>
-        <location filename="../../app/window/lesson_authoring.cpp" line="+39"/>
+        <location filename="../../app/window/lesson_authoring.cpp" line="+35"/>
         <location line="+24"/>
         <source>Step %1</source>
         <extracomment>a new step&apos;s title, until the teacher renames it (saved in the lesson file)</extracomment>
@@ -1979,12 +1979,12 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+2"/>
         <source>%1 characters; at most %2</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+17"/>
         <source>not a language code</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2032,7 +2032,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+21"/>
         <source>this loop never ends: it has no condition and nothing in it breaks, returns or discards (the driver may drop it and draw garbage, or hang)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2047,7 +2047,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+9"/>
         <source>this loop never ends once it starts: its condition reads %1, and nothing in the loop changes it</source>
         <extracomment>%1 the names the loop&apos;s condition reads, as the shader spells them (&quot;i, n&quot;)</extracomment>
         <translation type="unfinished"></translation>
@@ -2178,7 +2178,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+36"/>
         <source>%1, step %2</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2904,12 +2904,12 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>%1 normals with non-finite coordinates: the file&apos;s normals not used</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+15"/>
         <source>%1: %2 vertices, %3 triangles</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2919,7 +2919,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>%1: %2 vertices, %3 triangles, loaded in %4 s, normals generated</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2929,7 +2929,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>%1 (%2)</source>
         <extracomment>a mesh&apos;s summary (%1) and what was skipped or not used in its file (%2, a list)</extracomment>
         <translation type="unfinished"></translation>
@@ -2938,7 +2938,7 @@
 <context>
     <name>lb::MessageText</name>
     <message>
-        <location filename="../../render/model/io/message_text.cpp" line="+80"/>
+        <location filename="../../render/model/io/message_text.cpp" line="+85"/>
         <source>... and %1 more</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2984,18 +2984,18 @@
     <name>lb::ObjectLoader</name>
     <message>
         <location filename="../../app/window/mesh_actions.cpp" line="-25"/>
-        <location filename="../../render/import/object_loader.cpp" line="+285"/>
+        <location filename="../../render/import/object_loader.cpp" line="+220"/>
         <location line="+184"/>
         <source>Loading cancelled</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../render/import/object_loader.cpp" line="-309"/>
+        <location filename="../../render/import/object_loader_textures.cpp" line="+67"/>
         <source>%1 (the objects naming it show the mesh file&apos;s texture or the checker, and keep its name for when the file is back)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+68"/>
+        <location filename="../../render/import/object_loader.cpp" line="-241"/>
         <source>%1: not used: its object was removed</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3033,17 +3033,17 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>out of memory building the torus at tessellation %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>out of memory building the plane at tessellation %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <location line="+69"/>
         <source>out of memory building a mesh</source>
         <translation type="unfinished"></translation>
@@ -3274,12 +3274,12 @@
 <context>
     <name>lb::Offscreen</name>
     <message>
-        <location filename="../../render/gl/offscreen.cpp" line="+47"/>
+        <location filename="../../render/gl/offscreen.cpp" line="+48"/>
         <source>cannot create an OpenGL context (is there an X server with OpenGL?)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>cannot make the OpenGL context current</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3852,7 +3852,7 @@
 <context>
     <name>lb::Program</name>
     <message>
-        <location filename="../../render/gl/program.cpp" line="+69"/>
+        <location filename="../../render/gl/program.cpp" line="+70"/>
         <source>the vertex shader is empty</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3862,7 +3862,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+8"/>
         <source>the vertex shader is %1 KiB; lightbench compiles sources up to %2 KiB</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3872,7 +3872,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+31"/>
         <source>the vertex shader does not compile (the driver gave no reason)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3882,30 +3882,35 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+167"/>
+        <location line="+282"/>
         <source>the program does not link (no reason given)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location line="+11"/>
-        <source>no position input: the mesh reaches the shader through an attribute named vPosition, aVertexPosition, position or aPosition</source>
+        <source>no position input: the mesh reaches the shader through the attribute at layout(location = 0), or one named aPos, a_position, vPosition, aVertexPosition or position, or with pos or vert in its name</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+7"/>
         <source>the fragment shader writes no colour: assign gl_FragColor (no #version, #version 100) or declare an out vec4 (#version 300 es, 330 and later)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location line="+49"/>
+        <source>a global variable initialised from a uniform or another variable: GLSL ES 1.00 asks for a constant, browsers run it (WebGL warns); lightbench runs this program translated to GLSL 3.30 (the driver said: %1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location line="+19"/>
-        <location line="+87"/>
+        <location line="+88"/>
         <source>built-in shader &apos;%1&apos; failed:
 %2</source>
         <extracomment>%1 a built-in program&apos;s name, %2 its build log</extracomment>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-7"/>
+        <location line="-8"/>
         <source>built-in shader &apos;%1&apos; lacks a &apos;#define MAX_LIGHTS&apos;, &apos;LIGHT_FACTORS&apos; or &apos;SHOW_CHOICES&apos; line
 </source>
         <translation type="unfinished"></translation>
@@ -3933,12 +3938,12 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>drawing one frame with this program would take about %1 at %2x%3 (measured %4 at %5x%6; the budget is %7): too much work for every pixel?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+12"/>
         <source>%1 s</source>
         <extracomment>a duration in seconds</extracomment>
         <translation type="unfinished"></translation>
@@ -3966,18 +3971,18 @@
 <context>
     <name>lb::SafeWrite</name>
     <message>
-        <location filename="../../render/model/io/safe_write.cpp" line="+61"/>
+        <location filename="../../render/model/io/safe_write.cpp" line="+55"/>
         <location line="+14"/>
         <source>a loop of symbolic links</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+4"/>
         <source>not a regular file (a device, a pipe or a folder); not replaced</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+13"/>
         <source>the folder %1 does not exist</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3987,12 +3992,12 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+2"/>
         <source>cannot write in %1: %2</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+106"/>
+        <location line="+108"/>
         <source>no image to write</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4324,7 +4329,7 @@
 <context>
     <name>lb::SceneFile</name>
     <message>
-        <location filename="../../render/model/scene/scene_file.cpp" line="-136"/>
+        <location filename="../../render/model/scene/scene_file.cpp" line="-140"/>
         <source>not true or false; read as false</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4335,7 +4340,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>%1: not a scene file: the JSON is not an object</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4345,7 +4350,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>missing or not a number; read as %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4355,7 +4360,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+15"/>
         <source>needs vertex and fragment sources as strings</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4374,23 +4379,23 @@
 <context>
     <name>lb::SceneJson</name>
     <message>
-        <location filename="../../render/model/scene/scene_json.cpp" line="+109"/>
+        <location filename="../../render/model/scene/scene_json.cpp" line="+110"/>
         <source>w must be 0 or 1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+3"/>
-        <location line="+17"/>
+        <location line="+4"/>
+        <location line="+19"/>
         <source>a direction of length 0</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-8"/>
+        <location line="-9"/>
         <source>kc, kl and kq all 0</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+125"/>
+        <location line="+126"/>
         <location line="+33"/>
         <source>not an array</source>
         <translation type="unfinished"></translation>
@@ -4432,7 +4437,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>not a uniform&apos;s name</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5167,24 +5172,24 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>%1: %2 x %3 texels is more than a texture may have (%4 x %4)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+31"/>
-        <location line="+7"/>
+        <location line="+32"/>
+        <location line="+6"/>
         <source>%1: could not be read as an image: %2</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>%1: %2 x %3 texels (scaled from %4 x %5)</source>
         <extracomment>%1 a file&apos;s name, %2 x %3 the texels drawn, %4 x %5 the image&apos;s own size</extracomment>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+7"/>
         <source>%1: %2 x %3 texels</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5209,6 +5214,15 @@
     <message>
         <location line="+2"/>
         <source>the trial&apos;s helper ended while it drew this program (exit code %1; it was replaced)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>lb::UnfedInputs</name>
+    <message>
+        <location filename="../../render/glsl/unfed_inputs.cpp" line="+68"/>
+        <source>the scene feeds nothing to the matrix %1: it stays all zeros, and whatever it multiplies collapses to nothing on screen; the matrices fed have these names: %2</source>
+        <extracomment>%1 the uniform&apos;s name; %2 the names of the matrices the workbench feeds</extracomment>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -5322,7 +5336,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../render/pipeline/program_pipeline.cpp" line="+52"/>
+        <location filename="../../render/pipeline/program_pipeline.cpp" line="+53"/>
         <source>the OpenGL context was lost while this program drew (the driver reset the GPU: an endless or very long loop?)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5545,17 +5559,17 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+35"/>
         <source>no temporary folder for the check: %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+32"/>
         <source>your program</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+14"/>
         <source>more than %1 s</source>
         <translation type="unfinished"></translation>
     </message>

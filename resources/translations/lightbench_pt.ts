@@ -97,7 +97,7 @@
 <context>
     <name>lb::BoundedRead</name>
     <message>
-        <location filename="../../render/model/io/bounded_read.cpp" line="+40"/>
+        <location filename="../../render/model/io/bounded_read.cpp" line="+35"/>
         <location line="+6"/>
         <source>no such file</source>
         <translation>ficheiro inexistente</translation>
@@ -123,7 +123,7 @@
         <translation>%1 KiB</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>%1, %2</source>
         <extracomment>a file&apos;s size limit (%1, &quot;64 MB&quot;) and where it comes from (%2, &quot;the import memory limit&quot;)</extracomment>
         <translation>%1, %2</translation>
@@ -134,7 +134,7 @@
         <translation>%1: não é um ficheiro regular (é uma pasta, um dispositivo ou um pipe)</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>%1: %2 is more than %3 may be (%4)</source>
         <extracomment>%1 a path, %2 its size, %3 a kind of file (&quot;a scene file&quot;), %4 the limit (&quot;64 MB&quot;)</extracomment>
         <translation>%1: %2 é mais do que %3 pode ter (%4)</translation>
@@ -506,24 +506,24 @@
 <context>
     <name>lb::Exercise</name>
     <message>
-        <location filename="../../render/model/scene/exercise.cpp" line="+81"/>
+        <location filename="../../render/model/scene/exercise.cpp" line="+82"/>
         <source>not a number of points from 0 to %1, nor a list of one per case</source>
         <extracomment>%1 the largest number of points (&quot;1000000&quot;)</extracomment>
         <translation>nem um número de pontos de 0 a %1, nem uma lista com um por caso</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source>each case&apos;s points must be a number from 0 to %1</source>
         <translation>os pontos de cada caso devem ser um número de 0 a %1</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+4"/>
         <source>%1 values for %2 cases (one per case)</source>
         <extracomment>%1 how many points the list gives, %2 how many cases the exercise has</extracomment>
         <translation>%1 valores para %2 casos (um por caso)</translation>
     </message>
     <message>
-        <location line="+81"/>
+        <location line="+83"/>
         <source>%1 (%2)</source>
         <extracomment>a field of an exercise as the file spells it (%1, &quot;exercise.grading.cases&quot;) and why it was not used (%2)</extracomment>
         <translation>%1 (%2)</translation>
@@ -535,7 +535,7 @@
     </message>
     <message>
         <location line="+11"/>
-        <location line="+36"/>
+        <location line="+38"/>
         <location filename="../../render/model/scene/exercise_mistakes.cpp" line="+55"/>
         <location line="+11"/>
         <location line="+20"/>
@@ -543,12 +543,12 @@
         <translation>campo desconhecido</translation>
     </message>
     <message>
-        <location line="-28"/>
+        <location line="-31"/>
         <source>%1: needs both a vertex and a fragment shader</source>
         <translation>%1: precisa de um vertex shader e de um fragment shader</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+11"/>
         <location line="+5"/>
         <location filename="../../render/model/scene/exercise_mistakes.cpp" line="-51"/>
         <source>not %1</source>
@@ -556,7 +556,7 @@
         <translation>não é nenhum destes: %1</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>%1: no reference program (&quot;reference&quot;: {&quot;vertex&quot;: ..., &quot;fragment&quot;: ...} or {&quot;builtIn&quot;: {...}})</source>
         <translation>%1: sem programa de referência (&quot;reference&quot;: {&quot;vertex&quot;: ..., &quot;fragment&quot;: ...} ou {&quot;builtIn&quot;: {...}})</translation>
     </message>
@@ -576,7 +576,7 @@
         <translation>não é [largura, altura] em píxeis inteiros, de 16 a %1</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>not a list of parameters; all of them vary</source>
         <translation>não é uma lista de parâmetros; todos variam</translation>
     </message>
@@ -597,12 +597,12 @@
         <translation>não é um objeto</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+12"/>
         <source>not a name of 1 to %1 characters; the mistake is left out</source>
         <translation>não é um nome de 1 a %1 carateres; o erro é posto de parte</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+10"/>
         <source>no usable hint; the mistake is left out</source>
         <translation>sem sugestão utilizável; o erro é posto de parte</translation>
     </message>
@@ -612,17 +612,17 @@
         <translation>não é o texto de um shader de até 1 MiB; o erro é posto de parte</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>both a program and a built-in; the mistake is left out</source>
         <translation>é ao mesmo tempo um programa e um integrado; o erro é posto de parte</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>needs both a vertex and a fragment shader: the reference is the built-in program; the mistake is left out</source>
         <translation>precisa de um vertex e de um fragment shader: a referência é o programa integrado; o erro é posto de parte</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+8"/>
         <source>neither a program (&quot;vertex&quot;, &quot;fragment&quot;) nor &quot;builtIn&quot;: {...}; the mistake is left out</source>
         <translation>não é um programa (&quot;vertex&quot;, &quot;fragment&quot;) nem &quot;builtIn&quot;: {...}; o erro é posto de parte</translation>
     </message>
@@ -632,12 +632,12 @@
         <translation>um erro incorporado precisa de uma referência incorporada; dê o erro como programa; o erro é posto de parte</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+19"/>
         <source>not a list</source>
         <translation>não é uma lista</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+9"/>
         <source>more than %1 mistakes; the rest are left out</source>
         <translation>mais de %1 erros; os restantes são postos de parte</translation>
     </message>
@@ -993,7 +993,7 @@
         <translation>o limite de memória da importação</translation>
     </message>
     <message>
-        <location filename="../../render/model/scene/lesson.cpp" line="+200"/>
+        <location filename="../../render/model/scene/lesson.cpp" line="+205"/>
         <location line="+42"/>
         <source>a lesson file</source>
         <translation>um ficheiro de lição</translation>
@@ -1004,7 +1004,7 @@
         <translation>a lição</translation>
     </message>
     <message>
-        <location filename="../../render/model/scene/scene_file.cpp" line="+160"/>
+        <location filename="../../render/model/scene/scene_file.cpp" line="+164"/>
         <location line="+15"/>
         <source>a scene file</source>
         <translation>um ficheiro de cena</translation>
@@ -1034,7 +1034,7 @@
 <context>
     <name>lb::Grading</name>
     <message>
-        <location filename="../../render/model/grading/grading.cpp" line="+100"/>
+        <location filename="../../render/model/grading/grading.cpp" line="+136"/>
         <source>passed</source>
         <extracomment>the outcome of a case, at the end of a grading sheet&apos;s title</extracomment>
         <translation>passou</translation>
@@ -1050,13 +1050,13 @@
         <translation>%1 - caso %2: maior diferença %3/255, %4% de %5 píxeis dentro da tolerância, %6</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>%1 - case %2: largest difference %3/255 at (%4, %5), %6% of %7 pixels within tolerance, %8</source>
         <extracomment>%4, %5: the pixel that differs most</extracomment>
         <translation>%1 - caso %2: maior diferença %3/255 em (%4, %5), %6% de %7 píxeis dentro da tolerância, %8</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+25"/>
         <source>student</source>
         <extracomment>the captions under a grading sheet&apos;s three frames</extracomment>
         <translation>estudante</translation>
@@ -1243,7 +1243,7 @@
         <translation>o ficheiro termina a meio dos dados da imagem (sem marcador de fim de imagem): truncado?</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>the file ends inside its header</source>
         <translation>o ficheiro termina a meio do cabeçalho</translation>
     </message>
@@ -1417,13 +1417,13 @@
 <context>
     <name>lb::Lesson</name>
     <message>
-        <location filename="../../render/model/scene/lesson.cpp" line="-210"/>
+        <location filename="../../render/model/scene/lesson.cpp" line="-215"/>
         <source>%1 (%2)</source>
         <extracomment>a field of a lesson file (%1, &quot;step 2: caption.de&quot;) and why it was not used (%2)</extracomment>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+21"/>
         <source>&quot;%1&quot; is not one of %2</source>
         <extracomment>%1 a word the file gave, %2 the words allowed (as files spell them)</extracomment>
         <translation>&quot;%1&quot; não é nenhum destes: %2</translation>
@@ -1434,13 +1434,13 @@
         <translation>um valor que não é texto não é nenhum destes: %1</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+32"/>
         <source>%1: the scene file %2 (%3) is past what is left of the lesson&apos;s limit (%4 for the lesson and its scene files)</source>
         <extracomment>%1 the step (&quot;step 3&quot;), %2 a path, %3 its size, %4 the limit</extracomment>
         <translation>%1: o ficheiro de cena %2 (%3) excede o que resta do limite da lição (%4 para a lição e os seus ficheiros de cena)</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+10"/>
         <source>%1: no scene (&quot;scene&quot; must be a scene object or the name of a scene file)</source>
         <translation>%1: sem cena (&quot;scene&quot; tem de ser um objeto de cena ou o nome de um ficheiro de cena)</translation>
     </message>
@@ -1451,22 +1451,22 @@
         <translation>%1: não é um ficheiro de lição: %2 no byte %3</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+9"/>
         <source>%1: a scene file, not a lesson (open it with File &gt; Open Scene)</source>
         <translation>%1: é um ficheiro de cena, não uma lição (abra-o com Ficheiro &gt; Abrir Cena)</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>%1: not a lesson file (&quot;format&quot; is not &quot;%2&quot;)</source>
         <translation>%1: não é um ficheiro de lição (&quot;format&quot; não é &quot;%2&quot;)</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>missing or not a number; read as %1</source>
         <translation>em falta ou não é um número; lido como %1</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>newer than this lightbench&apos;s %1: what it does not know is left out</source>
         <translation>mais recente do que a versão %1 deste lightbench: o que este não conhece fica de fora</translation>
     </message>
@@ -1476,7 +1476,7 @@
         <translation>%1: a lição não tem passos (&quot;steps&quot; tem de ser uma lista de passos)</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>%1: %2 steps; a lesson may have at most %3</source>
         <translation>%1: %2 passos; uma lição pode ter no máximo %3</translation>
     </message>
@@ -1495,7 +1495,7 @@
 <context>
     <name>lb::LessonActions</name>
     <message>
-        <location filename="../../app/window/lesson_actions.cpp" line="+44"/>
+        <location filename="../../app/window/lesson_actions.cpp" line="+43"/>
         <source>Open Recent &amp;Lesson</source>
         <translation>Abrir Lição Recen&amp;te</translation>
     </message>
@@ -1643,7 +1643,7 @@
     </message>
     <message>
         <location line="+116"/>
-        <location filename="../../app/window/lesson_authoring.cpp" line="+39"/>
+        <location filename="../../app/window/lesson_authoring.cpp" line="+35"/>
         <location line="+24"/>
         <source>Step %1</source>
         <extracomment>a new step&apos;s title, until the teacher renames it (saved in the lesson file)</extracomment>
@@ -1985,12 +1985,12 @@
         <translation>não é texto</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+2"/>
         <source>%1 characters; at most %2</source>
         <translation>%1 carateres; no máximo %2</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+17"/>
         <source>not a language code</source>
         <translation>não é um código de idioma</translation>
     </message>
@@ -2038,7 +2038,7 @@
         <translation>este programa nunca termina um fotograma: o ciclo aqui é executado %1 vezes por cada vértice (o seu contador afasta-se do limite: só termina quando o contador dá a volta): um fotograma demoraria segundos ou mais em qualquer GPU (o llvmpipe interrompe-o ao fim de 65 535 iterações e desenha uma imagem errada)</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+21"/>
         <source>this loop never ends: it has no condition and nothing in it breaks, returns or discards (the driver may drop it and draw garbage, or hang)</source>
         <translation>este ciclo nunca termina: não tem condição e nada nele faz break, return ou discard (o controlador pode descartá-lo e desenhar lixo, ou bloquear)</translation>
     </message>
@@ -2053,7 +2053,7 @@
         <translation>este programa nunca termina um fotograma: o ciclo aqui não tem condição (ou tem uma sempre verdadeira) nem break, return ou discard</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+9"/>
         <source>this loop never ends once it starts: its condition reads %1, and nothing in the loop changes it</source>
         <extracomment>%1 the names the loop&apos;s condition reads, as the shader spells them (&quot;i, n&quot;)</extracomment>
         <translation>este ciclo, uma vez iniciado, nunca termina: a sua condição lê %1, e nada no ciclo altera essa variável</translation>
@@ -2184,7 +2184,7 @@
         <translation>O programa no editor (%1) usa sombreamento de Phong (por fragmento), seja qual for a escolha aqui. Carregue uma predefinição ou use Repor Tudo para mudar o sombreamento.</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+36"/>
         <source>%1, step %2</source>
         <translation>%1, passo %2</translation>
     </message>
@@ -2911,12 +2911,12 @@
         <translation>%1 vértices com coordenadas não finitas descartados, com os %2 triângulos que os usam</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>%1 normals with non-finite coordinates: the file&apos;s normals not used</source>
         <translation>%1 normais com coordenadas não finitas: as normais do ficheiro não foram usadas</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+15"/>
         <source>%1: %2 vertices, %3 triangles</source>
         <translation>%1: %2 vértices, %3 triângulos</translation>
     </message>
@@ -2926,7 +2926,7 @@
         <translation>%1: %2 vértices, %3 triângulos, carregado em %4 s</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>%1: %2 vertices, %3 triangles, loaded in %4 s, normals generated</source>
         <translation>%1: %2 vértices, %3 triângulos, carregado em %4 s, normais geradas</translation>
     </message>
@@ -2936,7 +2936,7 @@
         <translation>%1: %2 vértices, %3 triângulos, carregado em %4 s, normais geradas (o ficheiro não tem nenhuma)</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>%1 (%2)</source>
         <extracomment>a mesh&apos;s summary (%1) and what was skipped or not used in its file (%2, a list)</extracomment>
         <translation>%1 (%2)</translation>
@@ -2945,7 +2945,7 @@
 <context>
     <name>lb::MessageText</name>
     <message>
-        <location filename="../../render/model/io/message_text.cpp" line="+80"/>
+        <location filename="../../render/model/io/message_text.cpp" line="+85"/>
         <source>... and %1 more</source>
         <translation>... e mais %1</translation>
     </message>
@@ -2990,12 +2990,12 @@
 <context>
     <name>lb::ObjectLoader</name>
     <message>
-        <location filename="../../render/import/object_loader.cpp" line="+160"/>
+        <location filename="../../render/import/object_loader_textures.cpp" line="+67"/>
         <source>%1 (the objects naming it show the mesh file&apos;s texture or the checker, and keep its name for when the file is back)</source>
         <translation>%1 (os objetos que o referem mostram a textura do ficheiro da malha ou o xadrez, e guardam o seu nome para quando o ficheiro voltar)</translation>
     </message>
     <message>
-        <location line="+68"/>
+        <location filename="../../render/import/object_loader.cpp" line="+163"/>
         <source>%1: not used: its object was removed</source>
         <translation>%1: não usado: o seu objeto foi removido</translation>
     </message>
@@ -3040,17 +3040,17 @@
         <translation>sem memória para construir a esfera com tesselação %1</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>out of memory building the torus at tessellation %1</source>
         <translation>sem memória para construir o toro com tesselação %1</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>out of memory building the plane at tessellation %1</source>
         <translation>sem memória para construir o plano com tesselação %1</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <location line="+69"/>
         <source>out of memory building a mesh</source>
         <translation>sem memória para construir uma malha</translation>
@@ -3281,12 +3281,12 @@
 <context>
     <name>lb::Offscreen</name>
     <message>
-        <location filename="../../render/gl/offscreen.cpp" line="+47"/>
+        <location filename="../../render/gl/offscreen.cpp" line="+48"/>
         <source>cannot create an OpenGL context (is there an X server with OpenGL?)</source>
         <translation>não é possível criar um contexto OpenGL (existe um servidor X com OpenGL?)</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>cannot make the OpenGL context current</source>
         <translation>não é possível tornar atual o contexto OpenGL</translation>
     </message>
@@ -3860,7 +3860,7 @@
 <context>
     <name>lb::Program</name>
     <message>
-        <location filename="../../render/gl/program.cpp" line="+69"/>
+        <location filename="../../render/gl/program.cpp" line="+70"/>
         <source>the vertex shader is empty</source>
         <translation>o vertex shader está vazio</translation>
     </message>
@@ -3870,7 +3870,7 @@
         <translation>o fragment shader está vazio</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+8"/>
         <source>the vertex shader is %1 KiB; lightbench compiles sources up to %2 KiB</source>
         <translation>o vertex shader tem %1 KiB; o lightbench compila código-fonte até %2 KiB</translation>
     </message>
@@ -3880,7 +3880,7 @@
         <translation>o fragment shader tem %1 KiB; o lightbench compila código-fonte até %2 KiB</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+31"/>
         <source>the vertex shader does not compile (the driver gave no reason)</source>
         <translation>o vertex shader não compila (o controlador não indicou o motivo)</translation>
     </message>
@@ -3890,23 +3890,28 @@
         <translation>o fragment shader não compila (o controlador não indicou o motivo)</translation>
     </message>
     <message>
-        <location line="+167"/>
+        <location line="+282"/>
         <source>the program does not link (no reason given)</source>
         <translation>a ligação (link) do programa falhou (sem motivo indicado)</translation>
     </message>
     <message>
         <location line="+11"/>
-        <source>no position input: the mesh reaches the shader through an attribute named vPosition, aVertexPosition, position or aPosition</source>
-        <translation>sem entrada de posição: a malha chega ao shader através de um atributo chamado vPosition, aVertexPosition, position ou aPosition</translation>
+        <source>no position input: the mesh reaches the shader through the attribute at layout(location = 0), or one named aPos, a_position, vPosition, aVertexPosition or position, or with pos or vert in its name</source>
+        <translation>sem entrada de posição: a malha chega ao shader através do atributo em layout(location = 0), ou de um chamado aPos, a_position, vPosition, aVertexPosition ou position, ou com pos ou vert no nome</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+7"/>
         <source>the fragment shader writes no colour: assign gl_FragColor (no #version, #version 100) or declare an out vec4 (#version 300 es, 330 and later)</source>
         <translation>o fragment shader não escreve nenhuma cor: atribua gl_FragColor (sem #version, #version 100) ou declare um out vec4 (#version 300 es, 330 e posteriores)</translation>
     </message>
     <message>
+        <location line="+49"/>
+        <source>a global variable initialised from a uniform or another variable: GLSL ES 1.00 asks for a constant, browsers run it (WebGL warns); lightbench runs this program translated to GLSL 3.30 (the driver said: %1)</source>
+        <translation>uma variável global inicializada a partir de um uniform ou de outra variável: o GLSL ES 1.00 exige uma constante, os browsers executam-na (o WebGL avisa); o lightbench executa este programa traduzido para GLSL 3.30 (o driver disse: %1)</translation>
+    </message>
+    <message>
         <location line="+19"/>
-        <location line="+87"/>
+        <location line="+88"/>
         <source>built-in shader &apos;%1&apos; failed:
 %2</source>
         <extracomment>%1 a built-in program&apos;s name, %2 its build log</extracomment>
@@ -3914,7 +3919,7 @@
 %2</translation>
     </message>
     <message>
-        <location line="-7"/>
+        <location line="-8"/>
         <source>built-in shader &apos;%1&apos; lacks a &apos;#define MAX_LIGHTS&apos;, &apos;LIGHT_FACTORS&apos; or &apos;SHOW_CHOICES&apos; line
 </source>
         <translation>falta ao shader integrado &apos;%1&apos; uma linha &apos;#define MAX_LIGHTS&apos;, &apos;LIGHT_FACTORS&apos; ou &apos;SHOW_CHOICES&apos;
@@ -3943,12 +3948,12 @@
         <translation>desenhar um fotograma com este programa demoraria cerca de %1 a %2x%3 (medido: %4 a %5x%6; o orçamento é %7): um ciclo infinito ou muito longo?</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>drawing one frame with this program would take about %1 at %2x%3 (measured %4 at %5x%6; the budget is %7): too much work for every pixel?</source>
         <translation>desenhar um fotograma com este programa demoraria cerca de %1 a %2x%3 (medido: %4 a %5x%6; o orçamento é %7): demasiado trabalho por píxel?</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+12"/>
         <source>%1 s</source>
         <extracomment>a duration in seconds</extracomment>
         <translation>%1 s</translation>
@@ -3976,18 +3981,18 @@
 <context>
     <name>lb::SafeWrite</name>
     <message>
-        <location filename="../../render/model/io/safe_write.cpp" line="+61"/>
+        <location filename="../../render/model/io/safe_write.cpp" line="+55"/>
         <location line="+14"/>
         <source>a loop of symbolic links</source>
         <translation>um ciclo de ligações simbólicas</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+4"/>
         <source>not a regular file (a device, a pipe or a folder); not replaced</source>
         <translation>não é um ficheiro regular (é um dispositivo, um pipe ou uma pasta); não foi substituído</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+13"/>
         <source>the folder %1 does not exist</source>
         <translation>a pasta %1 não existe</translation>
     </message>
@@ -3997,12 +4002,12 @@
         <translation>%1 não é uma pasta</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+2"/>
         <source>cannot write in %1: %2</source>
         <translation>não é possível escrever em %1: %2</translation>
     </message>
     <message>
-        <location line="+106"/>
+        <location line="+108"/>
         <source>no image to write</source>
         <translation>nenhuma imagem para escrever</translation>
     </message>
@@ -4334,7 +4339,7 @@
 <context>
     <name>lb::SceneFile</name>
     <message>
-        <location filename="../../render/model/scene/scene_file.cpp" line="-136"/>
+        <location filename="../../render/model/scene/scene_file.cpp" line="-140"/>
         <source>not true or false; read as false</source>
         <translation>não é true nem false; lido como false</translation>
     </message>
@@ -4345,7 +4350,7 @@
         <translation>%1: não é um ficheiro de cena: %2 no byte %3</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>%1: not a scene file: the JSON is not an object</source>
         <translation>%1: não é um ficheiro de cena: o JSON não é um objeto</translation>
     </message>
@@ -4355,7 +4360,7 @@
         <translation>era esperado &quot;%1&quot;</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>missing or not a number; read as %1</source>
         <translation>em falta ou não é um número; lido como %1</translation>
     </message>
@@ -4365,7 +4370,7 @@
         <translation>mais recente do que a versão %1 deste lightbench: o que este não conhece fica de fora</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+15"/>
         <source>needs vertex and fragment sources as strings</source>
         <translation>precisa do código-fonte do vertex shader e do fragment shader como strings</translation>
     </message>
@@ -4384,23 +4389,23 @@
 <context>
     <name>lb::SceneJson</name>
     <message>
-        <location filename="../../render/model/scene/scene_json.cpp" line="+109"/>
+        <location filename="../../render/model/scene/scene_json.cpp" line="+110"/>
         <source>w must be 0 or 1</source>
         <translation>w tem de ser 0 ou 1</translation>
     </message>
     <message>
-        <location line="+3"/>
-        <location line="+17"/>
+        <location line="+4"/>
+        <location line="+19"/>
         <source>a direction of length 0</source>
         <translation>uma direção de comprimento 0</translation>
     </message>
     <message>
-        <location line="-8"/>
+        <location line="-9"/>
         <source>kc, kl and kq all 0</source>
         <translation>kc, kl e kq todos a 0</translation>
     </message>
     <message>
-        <location line="+125"/>
+        <location line="+126"/>
         <location line="+33"/>
         <source>not an array</source>
         <translation>não é um array</translation>
@@ -4442,7 +4447,7 @@
         <translation>demasiados: %1 além dos %2 mantidos</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>not a uniform&apos;s name</source>
         <translation>não é o nome de um uniform</translation>
     </message>
@@ -5179,24 +5184,24 @@
         <translation>os formatos lidos são %1</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>%1: %2 x %3 texels is more than a texture may have (%4 x %4)</source>
         <translation>%1: %2 x %3 texels é mais do que uma textura pode ter (%4 x %4)</translation>
     </message>
     <message>
-        <location line="+31"/>
-        <location line="+7"/>
+        <location line="+32"/>
+        <location line="+6"/>
         <source>%1: could not be read as an image: %2</source>
         <translation>%1: não foi possível ler como imagem: %2</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>%1: %2 x %3 texels (scaled from %4 x %5)</source>
         <extracomment>%1 a file&apos;s name, %2 x %3 the texels drawn, %4 x %5 the image&apos;s own size</extracomment>
         <translation>%1: %2 x %3 texels (redimensionado a partir de %4 x %5)</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+7"/>
         <source>%1: %2 x %3 texels</source>
         <translation>%1: %2 x %3 texels</translation>
     </message>
@@ -5222,6 +5227,15 @@
         <location line="+2"/>
         <source>the trial&apos;s helper ended while it drew this program (exit code %1; it was replaced)</source>
         <translation>o processo auxiliar de teste terminou enquanto desenhava este programa (código de saída %1; foi substituído)</translation>
+    </message>
+</context>
+<context>
+    <name>lb::UnfedInputs</name>
+    <message>
+        <location filename="../../render/glsl/unfed_inputs.cpp" line="+68"/>
+        <source>the scene feeds nothing to the matrix %1: it stays all zeros, and whatever it multiplies collapses to nothing on screen; the matrices fed have these names: %2</source>
+        <extracomment>%1 the uniform&apos;s name; %2 the names of the matrices the workbench feeds</extracomment>
+        <translation>a cena não alimenta a matriz %1: fica toda a zeros, e tudo o que ela multiplica reduz-se a nada no ecrã; as matrizes alimentadas têm estes nomes: %2</translation>
     </message>
 </context>
 <context>
@@ -5334,7 +5348,7 @@
         <translation>Arrastar com o botão esquerdo: orbitar - arrastar com o direito ou o do meio: deslocar - roda: zoom - R: repor a vista</translation>
     </message>
     <message>
-        <location filename="../../render/pipeline/program_pipeline.cpp" line="+52"/>
+        <location filename="../../render/pipeline/program_pipeline.cpp" line="+53"/>
         <source>the OpenGL context was lost while this program drew (the driver reset the GPU: an endless or very long loop?)</source>
         <translation>o contexto OpenGL perdeu-se enquanto este programa desenhava (o controlador reiniciou a GPU: um ciclo infinito ou muito longo?)</translation>
     </message>
@@ -5558,17 +5572,17 @@
         <translation>código de saída %1</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+35"/>
         <source>no temporary folder for the check: %1</source>
         <translation>sem pasta temporária para a verificação: %1</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+32"/>
         <source>your program</source>
         <translation>o seu programa</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+14"/>
         <source>more than %1 s</source>
         <translation>mais de %1 s</translation>
     </message>

@@ -62,9 +62,10 @@ private slots:
                    .arg(kMaxSourceCharacters / 1024);
         QTest::newRow("no position")
             << QString("void main() { gl_Position = vec4(0.0); }\n") << QString(kFragment)
-            << marked("lb::Program", "no position input: the mesh reaches the shader through an "
-                                     "attribute named vPosition, aVertexPosition, position or "
-                                     "aPosition");
+            << marked("lb::Program",
+                      "no position input: the mesh reaches the shader through the attribute at "
+                      "layout(location = 0), or one named aPos, a_position, vPosition, "
+                      "aVertexPosition or position, or with pos or vert in its name");
         QTest::newRow("no colour")
             << QString(kVertex) << QString("precision mediump float;\nvoid main() {}\n")
             << marked("lb::Program", "the fragment shader writes no colour: assign gl_FragColor "

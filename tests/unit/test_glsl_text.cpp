@@ -4,6 +4,7 @@
 #include "dialect.h"
 #include "loops.h"
 #include "presets.h"
+#include "unfed_inputs.h"
 #include "webgl1_translation.h"
 
 #include <QTest>
@@ -280,6 +281,47 @@ private slots:
         QVERIFY(writesFragmentColour("layout(location = 0) out vec4 c;\nvoid main() {}"));
         QVERIFY(!writesFragmentColour("precision mediump float;\nvoid main() { }"));
         QVERIFY(!writesFragmentColour("void main() { /* gl_FragColor = vec4(1.0); */ }"));
+    }
+
+    // A matrix nothing feeds is named on its declaration's line, in the stage that declares
+    // it, with the names the scene feeds; a fed one, or a vector (it gets a control), is not.
+    void unfedMatricesAreNamedOnTheirLine()
+    {
+        const auto uniform = [](const QString &name, UniformKind kind, int width) {
+            ActiveUniform u;
+            u.name = name;
+            u.kind = kind;
+            u.width = width;
+            u.semantic = semanticOf(name, kind == UniformKind::Matrix ? UniformShape::Matrix
+                                                                      : UniformShape::Number);
+            return u;
+        };
+        const QString vertex = "attribute vec4 p;\n"
+                               "// uniform mat4 uWorldToClip; (a comment is no declaration)\n"
+                               "uniform mat4 model;\n"
+                               "uniform   mat4 uWorldToClip;\n"
+                               "void main() { gl_Position = uWorldToClip * model * p; }\n";
+        const QString fragment = "precision mediump float;\nuniform vec3 tint;\n"
+                                 "uniform mat3 uColourMix;\n"
+                                 "void main() { gl_FragColor = vec4(uColourMix * tint, 1.0); }\n";
+        const std::vector<ActiveUniform> uniforms = {
+            uniform("model", UniformKind::Matrix, 4),
+            uniform("uWorldToClip", UniformKind::Matrix, 4),
+            uniform("tint", UniformKind::Float, 3),
+            uniform("uColourMix", UniformKind::Matrix, 3),
+        };
+        QVERIFY(uniforms[0].semantic); // LearnOpenGL's
+        const std::vector<Diagnostic> warnings = unfedInputWarnings(uniforms, vertex, fragment);
+        QCOMPARE(warnings.size(), std::size_t(2));
+        QCOMPARE(warnings[0].severity, Diagnostic::Severity::Warning);
+        QCOMPARE(warnings[0].stage, ShaderStage::Vertex);
+        QCOMPARE(warnings[0].line, 4);
+        QVERIFY(warnings[0].message.contains("uWorldToClip"));
+        for (const char *fed : {"mModelView", "model", "projection", "u_worldViewProjection"})
+            QVERIFY2(warnings[0].message.contains(fed), qPrintable(warnings[0].message));
+        QCOMPARE(warnings[1].stage, ShaderStage::Fragment);
+        QCOMPARE(warnings[1].line, 3);
+        QVERIFY(warnings[1].message.contains("uColourMix"));
     }
 };
 

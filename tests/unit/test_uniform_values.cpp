@@ -13,6 +13,7 @@
 #include <glm/gtc/matrix_inverse.hpp>
 #include <glm/trigonometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace lb;
@@ -85,14 +86,173 @@ class TestUniformValues : public QObject
 private slots:
     void everySemanticHasANameAndEveryNameItsSemantic()
     {
-        for (int i = 0; i <= int(Semantic::Show); ++i) { // the last one
-            const QStringList names = uniformNames(Semantic(i));
+        for (int i = 0; i <= int(kLastSemantic); ++i) {
+            const QStringList names = allUniformNames(Semantic(i));
             QVERIFY2(!names.isEmpty(), qPrintable(QString("semantic %1 has no name").arg(i)));
-            for (const QString &name : names)
-                QCOMPARE(semanticOf(name), std::optional<Semantic>(Semantic(i)));
+            // A name of two meanings (uProjection) has each for its own declared shape.
+            for (const QString &name : names) {
+                const std::optional<Semantic> s{Semantic(i)};
+                QVERIFY2(semanticOf(name, UniformShape::Matrix) == s ||
+                             semanticOf(name, UniformShape::Number) == s ||
+                             semanticOf(name, UniformShape::Sampler) == s,
+                         qPrintable(name));
+            }
         }
         QCOMPARE(semanticOf("uColor"), std::nullopt); // the overlays' own, a user's own
         QCOMPARE(uniformNames(Semantic::LightDiffuse), QStringList({"lightDif", "uLightColor"}));
+        // Every semantic of the course has a course name (the panels' tooltips give them).
+        for (int i = 0; i <= int(Semantic::Show); ++i)
+            QVERIFY(!uniformNames(Semantic(i)).isEmpty());
+        QVERIFY(allUniformNames(Semantic::LightDiffuse).contains("lightColor"));
+        QCOMPARE(conventionOf("lightPos"), std::optional<Convention>(Convention::LearnOpenGL));
+        QCOMPARE(conventionOf("mModelView"), std::optional<Convention>(Convention::Course));
+        QCOMPARE(conventionOf("myOwnUniform"), std::nullopt);
+    }
+
+    // A name that means two things by its type: the course's uProjection switch (an int) and
+    // the matrix of that name; LearnOpenGL's material.diffuse, a colour in the materials
+    // chapter and a sampler in the lighting maps'.
+    void theDeclaredTypeChoosesBetweenMeanings()
+    {
+        QCOMPARE(semanticOf("uProjection", UniformShape::Number),
+                 std::optional<Semantic>(Semantic::ProjectionKind));
+        QCOMPARE(semanticOf("uProjection", UniformShape::Matrix),
+                 std::optional<Semantic>(Semantic::Projection));
+        QCOMPARE(semanticOf("material.diffuse", UniformShape::Number),
+                 std::optional<Semantic>(Semantic::MaterialDiffuse));
+        QCOMPARE(semanticOf("material.diffuse", UniformShape::Sampler),
+                 std::optional<Semantic>(Semantic::Sampler));
+        // A name declared with a shape it never has feeds nothing rather than garbage.
+        QCOMPARE(semanticOf("lightPos", UniformShape::Matrix), std::nullopt);
+        QCOMPARE(semanticOf("model", UniformShape::Number), std::nullopt);
+    }
+
+    // The tutorials' matrices: model (world from object), its inverse transpose, the products.
+    void tutorialMatrices_data()
+    {
+        QTest::addColumn<QString>("name");
+        QTest::addColumn<int>("which"); // 0 model, 1 its normals, 2 P*V, 3 P*MV, 4 MV, 5 V, 6 P
+        QTest::newRow("LearnOpenGL model") << "model" << 0;
+        QTest::newRow("LearnOpenGL view") << "view" << 5;
+        QTest::newRow("LearnOpenGL projection") << "projection" << 6;
+        QTest::newRow("webglfundamentals u_world") << "u_world" << 0;
+        QTest::newRow("webglfundamentals u_worldInverseTranspose")
+            << "u_worldInverseTranspose" << 1;
+        QTest::newRow("webglfundamentals u_viewProjection") << "u_viewProjection" << 2;
+        QTest::newRow("webglfundamentals u_worldViewProjection") << "u_worldViewProjection" << 3;
+        QTest::newRow("Angel modelViewMatrix") << "modelViewMatrix" << 4;
+        QTest::newRow("three.js modelMatrix") << "modelMatrix" << 0;
+        QTest::newRow("three.js viewMatrix") << "viewMatrix" << 5;
+        QTest::newRow("Cookbook MVP") << "MVP" << 3;
+        QTest::newRow("Cookbook ModelViewMatrix") << "ModelViewMatrix" << 4;
+        QTest::newRow("glslViewer u_modelViewProjectionMatrix")
+            << "u_modelViewProjectionMatrix" << 3;
+    }
+    void tutorialMatrices()
+    {
+        QFETCH(QString, name);
+        QFETCH(int, which);
+        const Scene scene = busyScene();
+        const Frames f = computeFrames(scene, 1.5f);
+        const glm::mat4 model = modelMatrix(scene.objects[0]);
+        const glm::mat4 expected[7] = {model,
+                                       glm::inverseTranspose(model),
+                                       f.projection * f.view,
+                                       f.projection * f.view * model,
+                                       f.view * model,
+                                       f.view,
+                                       f.projection};
+        QVERIFY2(near(matrix(name, scene, f), expected[which]),
+                 glmText(matrix(name, scene, f)).constData());
+    }
+
+    // World-space light and camera positions (LearnOpenGL, webglfundamentals, glslViewer),
+    // from a light given in each frame: the eye-space light of uLightPosition brought back
+    // through the view, and the eye at the view's origin.
+    void worldPositionsFromEveryFrame_data() { lightPositionInEachFrame_data(); }
+    void worldPositionsFromEveryFrame()
+    {
+        QFETCH(LightFrame, frame);
+        QFETCH(float, w);
+        Scene scene = busyScene();
+        for (Light &l : scene.lights) {
+            l.frame = frame;
+            l.position.w = w;
+        }
+        const Frames f = computeFrames(scene, 1.0f);
+        const glm::mat4 world = glm::inverse(f.view);
+        for (int i = 0; i < kMaxLights; ++i) {
+            const glm::vec4 eye = value("uLightPosition", scene, f, i);
+            glm::vec4 expected = (w == 1.0f ? world : glm::inverseTranspose(world)) * eye;
+            expected.w = w;
+            for (const char *name : {"lightPos", "light.position", "u_lightWorldPosition"})
+                QVERIFY2(near(value(name, scene, f, i), expected),
+                         (glmText(value(name, scene, f, i)) + " expected " + glmText(expected))
+                             .constData());
+            const glm::vec3 towards = glm::normalize(glm::vec3(expected));
+            QVERIFY(near(value("u_reverseLightDirection", scene, f, i), glm::vec4(towards, 0)));
+            if (w == 0.0f) // a directional light shines away from where it is
+                QVERIFY(near(value("light.direction", scene, f, i), glm::vec4(-towards, 0)));
+            if (frame == LightFrame::World)
+                QVERIFY(
+                    near(value("lightPos", scene, f, i), scene.lights[std::size_t(i)].position));
+        }
+        const glm::vec4 camera = world * glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+        for (const char *name : {"viewPos", "u_viewWorldPosition", "cameraPosition", "u_camera"})
+            QVERIFY(near(value(name, scene, f), camera));
+        QVERIFY(near(camera, glm::vec4(scene.camera.eye(), 1.0f))); // the orbit camera's eye
+    }
+
+    // Angel's products, LearnOpenGL's and the Cookbook's structs, webglfundamentals' colours.
+    void tutorialColours()
+    {
+        Scene scene = busyScene();
+        scene.lights[1].enabled = false;
+        for (int i = 0; i < kMaxLights; ++i)
+            scene.lights[std::size_t(i)].attenuation = {1.0f, 0.1f * float(i), 0.02f * float(i)};
+        const Frames f = computeFrames(scene, 1.0f);
+        const Material &m = scene.objects[0].material;
+        for (int i = 0; i < kMaxLights; ++i) {
+            const Light &l = scene.lights[std::size_t(i)];
+            const glm::vec3 on = l.enabled ? glm::vec3(1.0f) : glm::vec3(0.0f);
+            QCOMPARE(value("ambientProduct", scene, f, i), glm::vec4(l.colors.ia * m.ka * on, 1));
+            QCOMPARE(value("diffuseProduct", scene, f, i), glm::vec4(l.colors.id * m.kd * on, 1));
+            QCOMPARE(value("specularProduct", scene, f, i), glm::vec4(l.colors.is * m.ks * on, 1));
+            for (const char *name : {"light.ambient", "Light.La"})
+                QCOMPARE(value(name, scene, f, i), glm::vec4(l.colors.ia * on, 1));
+            for (const char *name :
+                 {"lightColor", "light.diffuse", "u_lightColor", "Light.Ld", "Light.L"})
+                QCOMPARE(value(name, scene, f, i), glm::vec4(l.colors.id * on, 1));
+            for (const char *name : {"light.specular", "u_specularColor", "Light.Ls"})
+                QCOMPARE(value(name, scene, f, i), glm::vec4(l.colors.is * on, 1));
+            QCOMPARE(value("light.constant", scene, f, i).x, l.attenuation.x);
+            QCOMPARE(value("light.linear", scene, f, i).x, l.attenuation.y);
+            QCOMPARE(value("light.quadratic", scene, f, i).x, l.attenuation.z);
+            QVERIFY(isPerLight(*semanticOf("ambientProduct")));
+        }
+        for (const char *name : {"objectColor", "u_color", "material.diffuse", "Material.Kd"})
+            QCOMPARE(value(name, scene, f), glm::vec4(m.kd, 1.0f));
+        for (const char *name : {"material.ambient", "Material.Ka"})
+            QCOMPARE(value(name, scene, f), glm::vec4(m.ka, 1.0f));
+        for (const char *name : {"material.specular", "Material.Ks"})
+            QCOMPARE(value(name, scene, f), glm::vec4(m.ks, 1.0f));
+        for (const char *name : {"material.shininess", "u_shininess", "Material.Shininess"})
+            QCOMPARE(value(name, scene, f).x, m.shininess);
+    }
+
+    // What a control a tutorial's name reads is shown as used for.
+    void tutorialNamesCountAsReadingThePanels()
+    {
+        const auto has = [](Semantic derived, Semantic control) {
+            const std::vector<Semantic> c = controlledBy(derived);
+            return std::find(c.begin(), c.end(), control) != c.end();
+        };
+        QVERIFY(has(Semantic::AmbientProduct, Semantic::LightAmbient));
+        QVERIFY(has(Semantic::AmbientProduct, Semantic::MaterialAmbient));
+        QVERIFY(has(Semantic::LightPositionWorld, Semantic::LightPositionEye));
+        QVERIFY(has(Semantic::AttenuationLinear, Semantic::LightAttenuation));
+        QVERIFY(has(Semantic::ModelViewProjection, Semantic::Projection));
+        QVERIFY(has(Semantic::Shininess, Semantic::Shininess));
     }
 
     void matricesInBothConventions_data()

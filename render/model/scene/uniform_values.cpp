@@ -1,5 +1,8 @@
 #include "uniform_values.h"
 
+#include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
+
 #include <algorithm>
 
 namespace lb {
@@ -9,6 +12,18 @@ namespace {
 UniformValue colour(const Light &l, const glm::vec3 &c)
 {
     return UniformValue::ofVector(glm::vec4(l.enabled ? c : glm::vec3(0.0f), 1.0f));
+}
+
+// Light `index`'s position or direction (by its w) in world coordinates.
+glm::vec4 lightInWorld(const Frames &frames, int index, const glm::vec4 &light, LightFrame frame)
+{
+    return eyeToFrame(frames, index, lightInEye(frames, index, light, frame), LightFrame::World);
+}
+
+glm::vec3 unit(const glm::vec3 &v)
+{
+    const float length = glm::length(v);
+    return length > 0.0f ? v / length : glm::vec3(0.0f, 0.0f, 1.0f);
 }
 
 } // namespace
@@ -84,6 +99,45 @@ UniformValue uniformValue(Semantic semantic, const Scene &scene, const Frames &f
         return UniformValue::ofNumber(s.terms.specular ? 1.0f : 0.0f);
     case Semantic::Show:
         return UniformValue::ofNumber(float(int(s.show)));
+    case Semantic::Model:
+        return UniformValue::ofMatrix(frames.model);
+    case Semantic::ModelNormals:
+        return UniformValue::ofMatrix(normalMatrix(frames.model));
+    case Semantic::ViewProjection:
+        return UniformValue::ofMatrix(frames.projection * frames.view);
+    case Semantic::ModelViewProjection:
+        return UniformValue::ofMatrix(frames.projection * frames.modelView);
+    case Semantic::LightPositionWorld:
+        return UniformValue::ofVector(lightInWorld(frames, light, l.position, l.frame));
+    case Semantic::LightDirectionWorld: {
+        // Where the light shines: a directional light away from where it is (-L), any other
+        // along its spot's axis (a light that is no spot shines along it too, uncut).
+        if (l.position.w == 0.0f)
+            return UniformValue::ofVector(
+                glm::vec4(-unit(glm::vec3(lightInWorld(frames, light, l.position, l.frame))), 0));
+        const glm::vec4 axis(l.spot.direction, 0.0f);
+        return UniformValue::ofVector(
+            glm::vec4(unit(glm::vec3(lightInWorld(frames, light, axis, l.frame))), 0.0f));
+    }
+    case Semantic::ReverseLightDirection: {
+        // Towards the light from the world's origin: a directional light's L.
+        const glm::vec4 world = lightInWorld(frames, light, l.position, l.frame);
+        return UniformValue::ofVector(glm::vec4(unit(glm::vec3(world)), 0.0f));
+    }
+    case Semantic::CameraPositionWorld:
+        return UniformValue::ofVector(glm::inverse(frames.view)[3]);
+    case Semantic::AmbientProduct:
+        return colour(l, l.colors.ia * m.ka);
+    case Semantic::DiffuseProduct:
+        return colour(l, l.colors.id * m.kd);
+    case Semantic::SpecularProduct:
+        return colour(l, l.colors.is * m.ks);
+    case Semantic::AttenuationConstant:
+        return UniformValue::ofNumber(l.attenuation.x);
+    case Semantic::AttenuationLinear:
+        return UniformValue::ofNumber(l.attenuation.y);
+    case Semantic::AttenuationQuadratic:
+        return UniformValue::ofNumber(l.attenuation.z);
     }
     return {};
 }
