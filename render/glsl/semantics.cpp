@@ -144,8 +144,8 @@ const Entry kTable[] = {
     {"u_light", S::LightPositionWorld, Sh::Number, C::GlslViewer},
     {"u_camera", S::CameraPositionWorld, Sh::Number, C::GlslViewer},
 
-    // What the course's own matrices are called by the same courses' other years: the
-    // uProjection above is the int switch, as a mat4 it is the matrix.
+    // The course's uProjection above is the int switch; declared as a mat4 (a name many
+    // students give the projection matrix) it is the matrix.
     {"uProjection", S::Projection, Sh::Matrix, C::Course},
 };
 
@@ -184,25 +184,6 @@ std::optional<Convention> conventionOf(const QString &uniformName)
         if (uniformName == QLatin1String(e.name))
             return e.convention;
     return std::nullopt;
-}
-
-QString conventionName(Convention convention)
-{
-    switch (convention) {
-    case C::Course:
-        return QStringLiteral("the course");
-    case C::LearnOpenGL:
-        return QStringLiteral("LearnOpenGL");
-    case C::WebGLFundamentals:
-        return QStringLiteral("webglfundamentals");
-    case C::AngelThreeJs:
-        return QStringLiteral("Angel / three.js");
-    case C::Cookbook:
-        return QStringLiteral("the GLSL Cookbook");
-    case C::GlslViewer:
-        return QStringLiteral("glslViewer");
-    }
-    return {};
 }
 
 std::vector<Semantic> controlledBy(Semantic semantic)

@@ -92,7 +92,6 @@ QStringList uniformNames(Semantic semantic);
 QStringList allUniformNames(Semantic semantic);
 // The convention a uniform name comes from (the first entry of it); nullopt for none.
 std::optional<Convention> conventionOf(const QString &uniformName);
-QString conventionName(Convention convention); // "LearnOpenGL", "webglfundamentals"...
 // The course's semantics whose panel controls decide `semantic`'s value: itself for the
 // course's own, the inputs for the others (AmbientProduct: LightAmbient and MaterialAmbient;
 // LightPositionWorld: LightPosition and LightPositionEye, the position and its frame), so
