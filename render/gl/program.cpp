@@ -245,10 +245,7 @@ std::vector<ActiveUniform> activeUniforms(QOpenGLExtraFunctions &gl, GLuint prog
         u.location = gl.glGetUniformLocation(program, name.constData());
         if (u.name.endsWith("[0]"))
             u.name.chop(3);
-        u.semantic = semanticOf(u.name, u.kind == UniformKind::Matrix    ? UniformShape::Matrix
-                                        : u.kind == UniformKind::Sampler ? UniformShape::Sampler
-                                        : u.kind == UniformKind::Other   ? UniformShape::Any
-                                                                         : UniformShape::Number);
+        u.semantic = semanticOf(u.name, shapeOf(u.kind));
         if (const int n = u.components(); n > 0) {
             if (u.isInteger()) {
                 GLint v[4] = {};

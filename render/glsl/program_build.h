@@ -16,6 +16,21 @@ namespace lb {
 // A uniform's declared type in GLSL terms: the scalar kind and how wide it is.
 enum class UniformKind { Float, Int, Bool, Matrix, Sampler, Other };
 
+// The shape the semantic table matches a uniform of `kind` by (semantics.h).
+inline UniformShape shapeOf(UniformKind kind)
+{
+    switch (kind) {
+    case UniformKind::Matrix:
+        return UniformShape::Matrix;
+    case UniformKind::Sampler:
+        return UniformShape::Sampler;
+    case UniformKind::Other:
+        return UniformShape::Any;
+    default:
+        return UniformShape::Number;
+    }
+}
+
 struct ActiveUniform
 {
     QString name; // without "[0]"

@@ -292,8 +292,7 @@ private slots:
             u.name = name;
             u.kind = kind;
             u.width = width;
-            u.semantic = semanticOf(name, kind == UniformKind::Matrix ? UniformShape::Matrix
-                                                                      : UniformShape::Number);
+            u.semantic = semanticOf(name, shapeOf(kind));
             return u;
         };
         const QString vertex = "attribute vec4 p;\n"

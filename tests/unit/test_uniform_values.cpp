@@ -57,6 +57,17 @@ Scene busyScene()
     return s;
 }
 
+// busyScene() with every light given in `frame`, as a point (w = 1) or a direction (w = 0).
+Scene lightsIn(LightFrame frame, float w)
+{
+    Scene s = busyScene();
+    for (Light &l : s.lights) {
+        l.frame = frame;
+        l.position.w = w;
+    }
+    return s;
+}
+
 glm::vec4 value(const QString &name, const Scene &scene, const Frames &frames, int light = 0)
 {
     const std::optional<Semantic> s = semanticOf(name);
@@ -174,11 +185,7 @@ private slots:
     {
         QFETCH(LightFrame, frame);
         QFETCH(float, w);
-        Scene scene = busyScene();
-        for (Light &l : scene.lights) {
-            l.frame = frame;
-            l.position.w = w;
-        }
+        const Scene scene = lightsIn(frame, w);
         const Frames f = computeFrames(scene, 1.0f);
         const glm::mat4 world = glm::inverse(f.view);
         for (int i = 0; i < kMaxLights; ++i) {
@@ -302,11 +309,7 @@ private slots:
     {
         QFETCH(LightFrame, frame);
         QFETCH(float, w);
-        Scene scene = busyScene();
-        for (Light &l : scene.lights) {
-            l.frame = frame;
-            l.position.w = w;
-        }
+        const Scene scene = lightsIn(frame, w);
         const Frames f = computeFrames(scene, 1.0f);
         // Points by the frame's matrix, directions by its inverse transpose.
         const glm::mat4 toEye = frame == LightFrame::Camera  ? glm::mat4(1.0f)
