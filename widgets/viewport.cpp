@@ -31,7 +31,9 @@ Viewport::Viewport(SceneDocument *document, QWidget *parent)
     setFocusPolicy(Qt::StrongFocus);
     setMouseTracking(true); // the cursor changes over the wipe's line
     setToolTip(tr("Left drag: orbit - right or middle drag: pan - wheel: zoom - R: reset view"));
-    connect(document, &SceneDocument::changed, this, [this] {
+    connect(document, &SceneDocument::changed, this, [this](SceneParts parts) {
+        if (parts.testFlag(ScenePart::Bindings) && !m_submitted.isEmpty())
+            compileProgram(m_submitted.vertex, m_submitted.fragment);
         syncAnimation();
         update();
     });
@@ -50,10 +52,24 @@ Viewport::Viewport(SceneDocument *document, QWidget *parent)
     m_differenceLabels = new DifferenceScaleLabels(this);
     m_pipeline = new ProgramPipeline(this, this);
     connect(m_pipeline, &ProgramPipeline::stateChanged, this, &Viewport::showProgramState);
-    connect(m_pipeline, &ProgramPipeline::built, this, &Viewport::programBuilt);
+    connect(m_pipeline, &ProgramPipeline::built, this, [this](const ProgramBuild &build) {
+        m_lastBuild = build;
+        ++m_builds;
+        // The first frame the new program draws is looked at: one that shows nothing adds a
+        // warning to what the build said (showFrameLook).
+        if (build.ok() && m_renderer.hasUserProgram())
+            m_renderer.lookAtNextFrame();
+        emit programBuilt(build);
+    });
     m_animation.setInterval(16);
     connect(&m_animation, &QTimer::timeout, this, &Viewport::advanceAnimation);
     syncAnimation();
+}
+
+void Viewport::compileProgram(const QString &vertexSource, const QString &fragmentSource)
+{
+    m_submitted = {vertexSource, fragmentSource, m_document->scene().bindings};
+    m_pipeline->submit(m_submitted);
 }
 
 Viewport::~Viewport()
@@ -119,6 +135,24 @@ void Viewport::paintGL()
     updateCompareLabel();
     if (m_labels->isVisible())
         m_labels->update(); // the names follow the camera and the light
+    if (const std::optional<FrameLook> look = m_renderer.takeFrameLook())
+        showFrameLook(*look);
+}
+
+void Viewport::showFrameLook(FrameLook look)
+{
+    if (look == FrameLook::Drawn || !m_lastBuild.ok())
+        return;
+    Diagnostic d;
+    d.severity = Diagnostic::Severity::Warning;
+    d.stage = ShaderStage::Link;
+    d.message = frameLookWarning(look);
+    m_lastBuild.diagnostics.push_back(d);
+    // Out of paintGL: the listeners may ask for another frame.
+    QTimer::singleShot(0, this, [this, builds = m_builds] {
+        if (builds == m_builds) // no newer build has been said meanwhile
+            emit programBuilt(m_lastBuild);
+    });
 }
 
 void Viewport::setProbe(std::vector<Renderer::Arrow> arrows, QPoint pixel,

@@ -84,12 +84,10 @@ public:
         update();
     }
 
-    // Builds the user's program (now, or once the context exists) and reports it through
-    // programBuilt(). When it fails, the last good program keeps drawing under a banner.
-    void compileProgram(const QString &vertexSource, const QString &fragmentSource)
-    {
-        m_pipeline->submit({vertexSource, fragmentSource});
-    }
+    // Builds the user's program (now, or once the context exists) with the scene's bindings
+    // and reports it through programBuilt(). When it fails, the last good program keeps
+    // drawing under a banner. A change of the bindings builds it again.
+    void compileProgram(const QString &vertexSource, const QString &fragmentSource);
     // A program that would draw one frame at the view's size slower than this is refused
     // (tried on tiny frames first); Edit > Preferences sets it.
     void setFrameBudget(double milliseconds) { m_pipeline->setFrameBudget(milliseconds); }
@@ -156,6 +154,7 @@ private:
     void renewContext() override;
 
     void setBanner(const QString &text);
+    void showFrameLook(FrameLook look);
     // The banner over a program that was refused (`why`) or did not build (`why` empty), with
     // what draws instead; the driver line (`version` 4.5, the driver's `renderer`). Whole
     // sentences, translatable as such (viewport_captions.cpp).
@@ -177,6 +176,9 @@ private:
     bool m_probing = false; // a probe click held down: the probe follows the mouse
     ProbeLabels *m_labels;
     DifferenceScaleLabels *m_differenceLabels;
+    ProgramSources m_submitted; // the last sources compileProgram() was given
+    ProgramBuild m_lastBuild;   // what the pipeline last said, with the frame's look added
+    int m_builds = 0;           // how many builds the pipeline has said
     QString m_sideBVertex, m_sideBFragment, m_sideBName; // empty: the built-in program
     ResetStatus m_resetStatus;                           // the driver's word on this context
     QPoint m_lastMouse;

@@ -53,7 +53,7 @@ ProgramBuild Viewport::use(const ProgramSources &sources,
                            const std::function<std::optional<Diagnostic>()> &trial)
 {
     const Current current(this);
-    return m_renderer.setUserProgram(sources.vertex, sources.fragment, trial);
+    return m_renderer.setUserProgram(sources.vertex, sources.fragment, sources.bindings, trial);
 }
 
 double Viewport::timeFrame(QSize pixels)
@@ -86,7 +86,7 @@ void Viewport::useBuiltIn()
 ProgramBuild Viewport::buildCandidate(const ProgramSources &sources)
 {
     const Current current(this);
-    return m_renderer.buildCandidate(sources.vertex, sources.fragment);
+    return m_renderer.buildCandidate(sources.vertex, sources.fragment, sources.bindings);
 }
 
 void Viewport::prepareCandidate()

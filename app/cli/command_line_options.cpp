@@ -217,6 +217,10 @@ std::vector<OptionInfo> visibleOptions()
         value("frame-budget", "SECONDS",
               "Refuse your program when one frame at --size would take longer (default "
               "1; 0.01 to 60)."),
+        value("bind", "NAME=KEY",
+              "Feed the uniform NAME with KEY, one of what the scene gives (model-view, "
+              "projection, light-position-world, material-diffuse...; a KEY it does not know "
+              "lists them all), or none: its own value; repeatable; saved with --save-scene."),
         flag("translate-webgl1",
              "Run WebGL 1 shaders (no #version) translated to GLSL 3.30 core instead of "
              "under \"#version 100\" (automatic where the driver refuses #version 100)."),

@@ -173,6 +173,32 @@ void parseSceneOptions(const QCommandLineParser &parser, CommandLine &cl)
         checkRange("shininess", v, limits::kMinShininess, limits::kMaxShininess);
         add([v](Scene &s) { s.selectedObject().material.shininess = v; });
     }
+    if (given("bind")) {
+        UniformBindings bindings;
+        for (const QString &pair : parser.values("bind")) {
+            const QString name = pair.section('=', 0, 0).trimmed();
+            const QString key = pair.section('=', 1).trimmed();
+            if (name.isEmpty() || !pair.contains('='))
+                fail("bind",
+                     QString("needs NAME=KEY, a uniform's name and what feeds it, not \"%1\"")
+                         .arg(echoed(pair)));
+            if (name.size() > limits::kMaxShaderValueName)
+                fail("bind", QString("a uniform's name is at most %1 characters")
+                                 .arg(limits::kMaxShaderValueName));
+            bool unbound = false;
+            const std::optional<Semantic> semantic = semanticFromKey(key, &unbound);
+            if (!semantic && !unbound)
+                fail("bind", QString("\"%1\" is not what the scene gives; KEY is one of: %2")
+                                 .arg(echoed(key), QStringList(semanticKeys() << kUnboundKey).join(", ")));
+            bindings[name] = semantic;
+        }
+        if (int(bindings.size()) > limits::kMaxBindings)
+            fail("bind", QString("at most %1 bindings").arg(limits::kMaxBindings));
+        add([bindings](Scene &s) {
+            for (const auto &[name, semantic] : bindings)
+                s.bindings[name] = semantic;
+        });
+    }
     if (given("projection")) {
         const Projection v =
             word("projection", value("projection"), parseProjection, projectionNames());

@@ -132,7 +132,8 @@ GradeFailure drawReference(OffscreenRenderer &offscreen, const Exercise &exercis
     const QString &vertex = exercise.reference.vertex, &fragment = exercise.reference.fragment;
     OffscreenProgramHost host(offscreen, cases.front());
     const ProgramVerdict verdict = buildAndTryWithin(
-        host, {vertex, fragment}, {exercise.grading.size, kGradingTrialBudgetMs},
+        host, {vertex, fragment, cases.front().bindings},
+        {exercise.grading.size, kGradingTrialBudgetMs},
         [&](const Diagnostic &d) {
             stop("reference refused", exerciseProgramText("reference", d));
         },

@@ -40,7 +40,8 @@ GradeFailure useMistakeProgram(OffscreenRenderer &offscreen, const Exercise &exe
     const QString fragment = m.fragment.isEmpty() ? ref.fragment : m.fragment;
     OffscreenProgramHost host(offscreen, firstCase);
     const ProgramVerdict verdict = buildAndTryWithin(
-        host, {vertex, fragment}, {exercise.grading.size, kGradingTrialBudgetMs},
+        host, {vertex, fragment, firstCase.bindings},
+        {exercise.grading.size, kGradingTrialBudgetMs},
         [&](const Diagnostic &d) { stop("mistake refused", mistakeText(index, m, d)); }, 0);
     if (const Diagnostic *refusal = verdict.refusal()) {
         out.status = "mistake refused";

@@ -289,7 +289,8 @@ int runHeadless(const CommandLine &cl, const Scene &requested)
             said = true;
         };
         const ProgramVerdict verdict = buildAndTryWithin(
-            host, {cl.vertexSource, cl.fragmentSource}, {cl.size, cl.frameBudgetSeconds * 1000.0},
+            host, {cl.vertexSource, cl.fragmentSource, scene.bindings},
+            {cl.size, cl.frameBudgetSeconds * 1000.0},
             [&](const Diagnostic &d) { printLine(formatDiagnostic(d, cl).toUtf8(), out); }, 1,
             sayBuild);
         if (!said)
@@ -333,8 +334,13 @@ int runHeadless(const CommandLine &cl, const Scene &requested)
 
     if (cl.probe) // its pixel is read as the frame is drawn, before the light's marker
         offscreen.renderer().setProbe({}, *cl.probe);
+    if (cl.hasUserProgram()) // a frame that shows nothing is said, not only saved
+        offscreen.renderer().lookAtNextFrame();
     const QImage frame = offscreen.render(scene);
     phases.mark("frame");
+    if (const std::optional<FrameLook> look = offscreen.renderer().takeFrameLook();
+        look && *look != FrameLook::Drawn)
+        printLine(("lightbench: warning: " + frameLookWarning(*look)).toUtf8(), stderr);
     if (offscreen.wasReset()) { // a GPU's recovery: the frame is no picture
         const QString why = "the driver reset the OpenGL context while it drew this frame";
         if (cl.hasUserProgram())

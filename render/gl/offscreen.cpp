@@ -202,10 +202,11 @@ QImage OffscreenRenderer::readFrame()
 
 ProgramBuild OffscreenRenderer::useProgram(const QString &vertexSource,
                                            const QString &fragmentSource,
-                                           const std::function<std::optional<Diagnostic>()> &trial)
+                                           const std::function<std::optional<Diagnostic>()> &trial,
+                                           const UniformBindings &bindings)
 {
     m_context.makeCurrent(&m_surface);
-    return m_renderer.setUserProgram(vertexSource, fragmentSource, trial);
+    return m_renderer.setUserProgram(vertexSource, fragmentSource, bindings, trial);
 }
 
 void OffscreenRenderer::renderFrames(const Scene &scene, int frames)
@@ -242,7 +243,7 @@ TrialResult OffscreenRenderer::tryUserProgram(const Scene &scene, const QString 
                                               double budgetMs, const TrialSizes &sizes)
 {
     OffscreenProgramHost host(*this, scene);
-    return tryIn(host, {vertex, fragment}, {target, budgetMs, sizes});
+    return tryIn(host, {vertex, fragment, scene.bindings}, {target, budgetMs, sizes});
 }
 
 } // namespace lb

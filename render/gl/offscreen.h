@@ -36,7 +36,8 @@ public:
     // Draws the object with the user's program from now on, if it links and `trial` (when
     // given) does not refuse it (Renderer::setUserProgram).
     ProgramBuild useProgram(const QString &vertexSource, const QString &fragmentSource,
-                            const std::function<std::optional<Diagnostic>()> &trial = {});
+                            const std::function<std::optional<Diagnostic>()> &trial = {},
+                            const UniformBindings &bindings = {});
     // Draws `frames` frames and waits for the GPU; for the benchmarks.
     void renderFrames(const Scene &scene, int frames);
     // Milliseconds to draw one frame of `scene` at `size` and wait for it, in a framebuffer of
@@ -103,7 +104,7 @@ public:
     ProgramBuild use(const ProgramSources &sources,
                      const std::function<std::optional<Diagnostic>()> &trial = {}) override
     {
-        return m_offscreen.useProgram(sources.vertex, sources.fragment, trial);
+        return m_offscreen.useProgram(sources.vertex, sources.fragment, trial, sources.bindings);
     }
     double timeFrame(QSize pixels) override { return m_offscreen.timeFrame(m_scene, pixels); }
     double timeBuiltInFrame(QSize pixels) override

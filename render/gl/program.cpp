@@ -360,7 +360,8 @@ namespace {
 
 // buildProgram(), with WebGL 1 sources translated to GLSL 3.30 or not.
 BuiltProgram buildTranslatedOrNot(QOpenGLExtraFunctions &gl, const QString &vertexSource,
-                                  const QString &fragmentSource, bool translate)
+                                  const QString &fragmentSource, bool translate,
+                                  const UniformBindings &bindings)
 {
     BuiltProgram result;
     ProgramBuild &build = result.build;
@@ -415,6 +416,8 @@ BuiltProgram buildTranslatedOrNot(QOpenGLExtraFunctions &gl, const QString &vert
         return result;
     build.linked = true;
     build.uniforms = activeUniforms(gl, program.id());
+    for (const Diagnostic &d : applyBindings(build.uniforms, bindings))
+        build.diagnostics.push_back(d);
     for (const Diagnostic &d : unfedInputWarnings(build.uniforms, vertexSource, fragmentSource))
         build.diagnostics.push_back(d);
     result.program = std::move(program);
@@ -438,10 +441,11 @@ std::vector<const Diagnostic *> globalInitialiserErrors(const ProgramBuild &buil
 } // namespace
 
 BuiltProgram buildProgram(QOpenGLExtraFunctions &gl, const QString &vertexSource,
-                          const QString &fragmentSource)
+                          const QString &fragmentSource, const UniformBindings &bindings)
 {
     const bool translate = translatesWebGl1();
-    BuiltProgram built = buildTranslatedOrNot(gl, vertexSource, fragmentSource, translate);
+    BuiltProgram built =
+        buildTranslatedOrNot(gl, vertexSource, fragmentSource, translate, bindings);
     const std::vector<const Diagnostic *> initialisers = globalInitialiserErrors(built.build);
     if (built.build.ok() || translate || initialisers.empty() ||
         prepareSource(vertexSource).version != "100" ||
@@ -450,7 +454,8 @@ BuiltProgram buildProgram(QOpenGLExtraFunctions &gl, const QString &vertexSource
     // WebGL 1 as browsers run it: GLSL 3.30 takes any global initialiser, so the program runs
     // translated (both stages: an ES 1.00 stage does not link with a 3.30 one), and each line
     // the driver refused gets a warning instead.
-    BuiltProgram translated = buildTranslatedOrNot(gl, vertexSource, fragmentSource, true);
+    BuiltProgram translated =
+        buildTranslatedOrNot(gl, vertexSource, fragmentSource, true, bindings);
     if (!translated.build.ok())
         return built;
     for (const Diagnostic *refused : initialisers) {

@@ -3,6 +3,7 @@
 // (design.md), so user and built-in shaders alike go to glShaderSource as prepareSource()
 // leaves them (dialect.h), and the driver's messages come back on the user's lines.
 
+#include "bindings.h"
 #include "gl_object.h"
 #include "program_build.h"
 #include "scene.h"
@@ -103,8 +104,9 @@ std::optional<bool> shippedBuiltIn(const QString &vertexSource, const QString &f
 // The source with its "#define NAME N" line set to `value`; empty if it has no such line.
 QString withDefine(const QString &source, const QString &name, int value);
 
-// Compiles both stages and links them.
+// Compiles both stages and links them; `bindings` (the user's, by uniform name) override what
+// the uniforms' names give.
 BuiltProgram buildProgram(QOpenGLExtraFunctions &gl, const QString &vertexSource,
-                          const QString &fragmentSource);
+                          const QString &fragmentSource, const UniformBindings &bindings = {});
 
 } // namespace lb

@@ -60,9 +60,10 @@ void Renderer::cleanup()
 }
 
 ProgramBuild Renderer::setUserProgram(const QString &vertexSource, const QString &fragmentSource,
+                                      const UniformBindings &bindings,
                                       const std::function<std::optional<Diagnostic>()> &trial)
 {
-    BuiltProgram built = buildProgram(*this, vertexSource, fragmentSource);
+    BuiltProgram built = buildProgram(*this, vertexSource, fragmentSource, bindings);
     ProgramBuild report = built.build;
     if (!report.ok())
         return report;
@@ -77,9 +78,10 @@ ProgramBuild Renderer::setUserProgram(const QString &vertexSource, const QString
     return report;
 }
 
-ProgramBuild Renderer::buildCandidate(const QString &vertexSource, const QString &fragmentSource)
+ProgramBuild Renderer::buildCandidate(const QString &vertexSource, const QString &fragmentSource,
+                                      const UniformBindings &bindings)
 {
-    m_candidate = buildProgram(*this, vertexSource, fragmentSource);
+    m_candidate = buildProgram(*this, vertexSource, fragmentSource, bindings);
     m_candidate.shippedBuiltIn = shippedBuiltIn(vertexSource, fragmentSource);
     if (!m_candidate.build.ok()) {
         const ProgramBuild report = m_candidate.build;
@@ -307,6 +309,15 @@ void Renderer::drawView(const Scene &scene, const BuiltProgram &program, QRect v
 
     const float aspect = float(view.width()) / float(view.height());
     drawObjects(scene, program, aspect);
+    if (m_lookPending && &program == &m_user && view == clip &&
+        scene.compare.mode == CompareMode::Off) {
+        std::vector<std::uint8_t> rgba(std::size_t(view.width()) * std::size_t(view.height()) * 4);
+        glPixelStorei(GL_PACK_ALIGNMENT, 1);
+        glReadPixels(view.x(), frameHeight - view.y() - view.height(), view.width(), view.height(),
+                     GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+        m_frameLook = lb::frameLook(rgba.data(), rgba.size() / 4);
+        m_lookPending = false;
+    }
     if (m_readingProbe && clip.contains(m_probePixel))
         m_probedColour = readPixel(m_probePixel, frameHeight);
     drawNormalLines(scene, aspect);

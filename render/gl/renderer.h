@@ -5,6 +5,7 @@
 // context current before the context goes away.
 
 #include "compare.h"
+#include "frame_look.h"
 #include "gpu_mesh.h"
 #include "overlays.h"
 #include "probe.h"
@@ -21,6 +22,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -57,6 +59,11 @@ public:
     void setProbeAgainstSideB(bool on) { m_probeAgainstSideB = on; }
     std::optional<glm::ivec3> probedSideBColour() const { return m_probedSideB; }
 
+    // The next render() that draws the user's program alone (no compare view) looks at its
+    // frame before any overlay, once: frameLook() then says whether it shows anything.
+    void lookAtNextFrame() { m_lookPending = true; }
+    std::optional<FrameLook> takeFrameLook() { return std::exchange(m_frameLook, std::nullopt); }
+
     // What the last difference view measured (valid only after one was drawn), with this
     // tolerance for its share within (an open exercise's, as Check My Work counts).
     const DifferenceStats &difference() const { return m_difference; }
@@ -74,12 +81,15 @@ public:
     // `trial`, when given, runs once the new program links and draws in its place (render()
     // uses it); a diagnostic it returns refuses the program: the previous one comes back and
     // the build reports the diagnostic as not linked.
+    // `bindings`: the user's choice of what feeds which uniform (bindings.h).
     ProgramBuild setUserProgram(const QString &vertexSource, const QString &fragmentSource,
+                                const UniformBindings &bindings = {},
                                 const std::function<std::optional<Diagnostic>()> &trial = {});
     bool hasUserProgram() const { return bool(m_user.program); }
     // A program built aside, not drawn until it is adopted (while it is tried elsewhere); a
     // new candidate replaces the one before.
-    ProgramBuild buildCandidate(const QString &vertexSource, const QString &fragmentSource);
+    ProgramBuild buildCandidate(const QString &vertexSource, const QString &fragmentSource,
+                                const UniformBindings &bindings = {});
     bool hasCandidate() const { return bool(m_candidate.program); }
     void adoptCandidate();
     void dropCandidate() { m_candidate = {}; }
@@ -183,6 +193,8 @@ private:
     std::vector<Arrow> m_probeArrows;
     QPoint m_probePixel{-1, -1};
     bool m_readingProbe = false; // while render() draws the views the user sees
+    bool m_lookPending = false;
+    std::optional<FrameLook> m_frameLook;
     bool m_probeAgainstSideB = false;
     std::optional<glm::ivec3> m_probedColour, m_probedSideB;
     std::unique_ptr<QOpenGLFramebufferObject> m_probeFbo; // side B at the probe's pixel

@@ -38,7 +38,11 @@ struct ActiveUniform
     int width = 1; // 1 to 4 for scalars and vectors (vec3: 3); 2 to 4 for square matrices
     int size = 1;  // array length
     int location = -1;
-    std::optional<Semantic> semantic;
+    std::optional<Semantic> semantic; // what the scene feeds it (none: its own value)
+    // What its name alone gives (the semantic table's), and whether `semantic` is the user's
+    // choice instead (bindings.h).
+    std::optional<Semantic> byName;
+    bool bound = false;
     // The value right after linking (its initializer, or 0), for the generated controls.
     std::vector<float> initial;
 

@@ -1,10 +1,13 @@
 #include "unfed_inputs.h"
 
+#include "bindings.h"
 #include "dialect.h"
 
 #include <QCoreApplication>
 #include <QRegularExpression>
 #include <QStringList>
+
+#include <algorithm>
 
 namespace lb {
 
@@ -28,17 +31,41 @@ int declarationLine(const QString &source, const QString &name)
     return int(text.left(m.capturedEnd()).count('\n')) + 1;
 }
 
-// The matrices the scene feeds, as a reader would look for one: the course's, then those of
-// the conventions.
-QString fedMatrixNames()
+// The keys a uniform of `u`'s shape could be bound to, those its name suggests first, then
+// (for a matrix, where the rest are few) the others; at most `most`, with "..." for more.
+QString candidateKeys(const ActiveUniform &u, int most)
 {
-    QStringList names;
-    for (Semantic s : {Semantic::Model, Semantic::View, Semantic::Projection, Semantic::ModelView,
-                       Semantic::Normals, Semantic::ModelViewProjection})
-        for (const QString &name : allUniformNames(s))
-            if (!names.contains(name))
-                names << name;
-    return names.join(", ");
+    std::vector<Semantic> order = suggestedSemantics(u.name, shapeOf(u.kind));
+    if (u.kind == UniformKind::Matrix || order.empty())
+        for (const QString &key : semanticKeys()) {
+            const Semantic s = *semanticFromKey(key);
+            if (fits(s, u) && std::find(order.begin(), order.end(), s) == order.end())
+                order.push_back(s);
+        }
+    QStringList keys;
+    for (std::size_t i = 0; i < order.size() && int(i) < most; ++i)
+        keys << semanticKey(order[i]);
+    if (int(order.size()) > most)
+        keys << "...";
+    return keys.join(", ");
+}
+
+bool allZero(const std::vector<float> &values)
+{
+    return std::all_of(values.begin(), values.end(), [](float v) { return v == 0.0f; });
+}
+
+// Whether `u` is one the scene feeds nothing that decides the picture.
+bool isUnfed(const ActiveUniform &u)
+{
+    if (u.semantic || u.bound)
+        return false;
+    if (u.kind == UniformKind::Matrix)
+        return true;
+    // A number of the program's own (bands, time) is no concern; one whose name says light,
+    // colour, camera or material and that starts at 0 is.
+    return u.kind == UniformKind::Float && allZero(u.initial) &&
+           !suggestedSemantics(u.name, UniformShape::Number).empty();
 }
 
 } // namespace
@@ -49,7 +76,7 @@ std::vector<Diagnostic> unfedInputWarnings(const std::vector<ActiveUniform> &uni
 {
     std::vector<Diagnostic> warnings;
     for (const ActiveUniform &u : uniforms) {
-        if (u.semantic || u.kind != UniformKind::Matrix)
+        if (!isUnfed(u))
             continue;
         // A member of a struct is declared by its struct's name (light.model: light).
         const QString declared = u.name.section('.', 0, 0).section('[', 0, 0);
@@ -64,11 +91,20 @@ std::vector<Diagnostic> unfedInputWarnings(const std::vector<ActiveUniform> &uni
                 d.line = line;
             }
         }
-        //: %1 the uniform's name; %2 the names of the matrices the workbench feeds
-        d.message = UnfedMessages::tr("the scene feeds nothing to the matrix %1: it stays all "
-                                      "zeros, and whatever it multiplies collapses to nothing on "
-                                      "screen; the matrices fed have these names: %2")
-                        .arg(u.name, fedMatrixNames());
+        if (u.kind == UniformKind::Matrix)
+            //: %1 the uniform's name; %2 the keys it could be bound to (model-view, projection)
+            d.message = UnfedMessages::tr(
+                            "the scene feeds nothing to the matrix %1: it stays all zeros, and "
+                            "whatever it multiplies collapses to nothing on screen; bind it to "
+                            "one of %2 (the Bindings tab, or --bind %1=KEY)")
+                            .arg(u.name, candidateKeys(u, 10));
+        else
+            //: %1 the uniform's name; %2 the keys it could be bound to (light-position-world)
+            d.message = UnfedMessages::tr(
+                            "the scene feeds nothing to %1: it stays 0 unless you set it in the "
+                            "Uniforms panel; bind it to one of %2 (the Bindings tab, or --bind "
+                            "%1=KEY)")
+                            .arg(u.name, candidateKeys(u, 4));
         warnings.push_back(d);
     }
     return warnings;

@@ -1,8 +1,13 @@
 #pragma once
-// What a linked program reads that nothing feeds and that decides the picture: a matrix no
-// name of the semantic table (semantics.h) matches stays all zeros, and a position multiplied
-// by it draws nothing, with no error from the driver. Named on its declaration's line with
-// the names the scene would feed, so that a pasted shader is not a silent black.
+// What a linked program reads that nothing feeds and that decides the picture, named on its
+// declaration's line with what it could be bound to (bindings.h), so that a pasted shader is
+// not a silent black:
+// - a matrix no name of the semantic table (semantics.h) matches stays all zeros, and a
+//   position multiplied by it draws nothing, with no error from the driver;
+// - a vector or number whose name says it is one of the scene's values (uLightPos, u_eyePos,
+//   objectColour) but is none of the table's names stays 0 unless its generated control in
+//   the Uniforms panel is set: a light at the origin, a black colour.
+// The user's "none" for a uniform (a binding) says it is meant to keep its own value.
 
 #include "diagnostics.h"
 #include "program_build.h"

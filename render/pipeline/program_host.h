@@ -3,6 +3,7 @@
 // context (the window's, an offscreen one), seen through this GL-free interface. The host
 // makes its context current for each call; the pipeline decides, the host does.
 
+#include "bindings.h"
 #include "program_build.h"
 
 #include <QSize>
@@ -10,17 +11,26 @@
 
 #include <functional>
 #include <optional>
+#include <utility>
 
 namespace lb {
 
-// A program's two stages as the user gave them (WebGL 1 or GLSL 3.30; translated by the host).
+// A program's two stages as the user gave them (WebGL 1 or GLSL 3.30; translated by the host)
+// and what the user chose to feed its uniforms (a new choice is a new program to build).
 struct ProgramSources
 {
+    ProgramSources() = default;
+    ProgramSources(QString vertexSource, QString fragmentSource, UniformBindings given = {})
+        : vertex(std::move(vertexSource)), fragment(std::move(fragmentSource)),
+          bindings(std::move(given))
+    {
+    }
     QString vertex, fragment;
+    UniformBindings bindings;
     bool isEmpty() const { return vertex.isEmpty(); } // empty: the built-in programs
     bool operator==(const ProgramSources &o) const
     {
-        return vertex == o.vertex && fragment == o.fragment;
+        return vertex == o.vertex && fragment == o.fragment && bindings == o.bindings;
     }
     bool operator!=(const ProgramSources &o) const { return !(*this == o); }
 };

@@ -53,13 +53,14 @@ trialwire::TryReply tryRequest(OffscreenRenderer &offscreen, const trialwire::Tr
     // The command line's sizes: this process may take its time, the window does not wait.
     const Scene scene = Scene::fromJson(r.scene);
     OffscreenProgramHost host(offscreen, scene);
-    const ProgramVerdict verdict = buildAndTry(host, {r.vertex, r.fragment}, {r.target, r.budgetMs},
-                                               [&](const ProgramBuild &build) {
-                                                   // Built within bounds: the window may build it
-                                                   // too while the frames are drawn here.
-                                                   reply.diagnostics = build.diagnostics;
-                                                   send(out, trialwire::encodeBuilt(reply));
-                                               });
+    const ProgramVerdict verdict =
+        buildAndTry(host, {r.vertex, r.fragment, scene.bindings}, {r.target, r.budgetMs},
+                    [&](const ProgramBuild &build) {
+                        // Built within bounds: the window may build it
+                        // too while the frames are drawn here.
+                        reply.diagnostics = build.diagnostics;
+                        send(out, trialwire::encodeBuilt(reply));
+                    });
     reply.diagnostics = verdict.build.diagnostics;
     reply.built = verdict.build.ok();
     if (verdict.trial)

@@ -5,6 +5,7 @@
 
 #include <QDir>
 #include <QElapsedTimer>
+#include <QFile>
 #include <QFileInfo>
 #include <QImage>
 #include <QJsonArray>
@@ -14,6 +15,8 @@
 #include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QTest>
+
+#include <cstdlib>
 
 #include <sys/stat.h>
 
@@ -209,6 +212,58 @@ private slots:
         QVERIFY(QImage(other) != b);
     }
 
+    // A program of names no convention has draws nothing, and says so on stderr, with each
+    // matrix named; --bind feeds them, --save-scene keeps the bindings, and the scene file
+    // draws the same lit frame.
+    void bindingsFeedAnyNameAndAreSaved()
+    {
+        QFile v(m_dir.filePath("mine.vert")), f(m_dir.filePath("mine.frag"));
+        QVERIFY(v.open(QIODevice::WriteOnly) && f.open(QIODevice::WriteOnly));
+        v.write("attribute vec3 inPos;\nattribute vec3 inNormal;\nvarying vec3 n;\n"
+                "uniform mat4 uToClip;\nuniform mat3 uTurnNormals;\n"
+                "void main() { n = uTurnNormals * inNormal; gl_Position = uToClip * "
+                "vec4(inPos, 1.0); }\n");
+        f.write("precision mediump float;\nvarying vec3 n;\nuniform vec3 uSunDir;\n"
+                "uniform vec3 uTint;\nvoid main() {\n"
+                "  gl_FragColor = vec4(uTint * max(dot(normalize(n), uSunDir), 0.0), 1.0);\n}\n");
+        v.close();
+        f.close();
+        const QStringList program{"--vertex",   v.fileName(), "--fragment",
+                                  f.fileName(), "--size",     "160x120"};
+        const QString blank = m_dir.filePath("blank.png");
+        const Run unbound = run(QStringList{"--render", blank} + program);
+        QCOMPARE(unbound.exitCode, 0);
+        for (const char *said :
+             {"mine.vert:4:0: warning", "uToClip", "mine.vert:5:0: warning", "draws nothing"})
+            QVERIFY2(unbound.err.contains(said), unbound.err.constData());
+
+        const QStringList bindings{"--bind",       "uToClip=model-view-projection",
+                                   "--bind",       "uTurnNormals=normal-matrix",
+                                   "--bind",       "uSunDir=light-position",
+                                   "--bind",       "uTint=material-diffuse",
+                                   "--light",      "0,0,1,0",
+                                   "--frame",      "camera",
+                                   "--kd",         "1,0.5,0.25",
+                                   "--show-light", "off"};
+        const QString scene = m_dir.filePath("bound.json"), lit = m_dir.filePath("lit.png"),
+                      fromFile = m_dir.filePath("lit-file.png");
+        const Run bound = run(QStringList{"--render", lit} + program + bindings);
+        QVERIFY2(bound.exitCode == 0 && bound.err.isEmpty(), bound.err.constData());
+        const QImage image(lit);
+        // Head-on light on the sphere's middle: Kd itself.
+        const QRgb centre = image.pixel(80, 60);
+        QVERIFY2(qRed(centre) > 240 && std::abs(qGreen(centre) - 128) < 8 &&
+                     std::abs(qBlue(centre) - 64) < 8,
+                 qPrintable(QString::number(centre, 16)));
+        QCOMPARE(run(QStringList{"--save-scene", scene} + program + bindings).exitCode, 0);
+        QFile saved(scene);
+        QVERIFY(saved.open(QIODevice::ReadOnly));
+        QVERIFY(saved.readAll().contains("\"uToClip\": \"model-view-projection\""));
+        const Run again = run({"--scene", scene, "--render", fromFile, "--size", "160x120"});
+        QVERIFY2(again.exitCode == 0 && again.err.isEmpty(), again.err.constData());
+        QVERIFY(lb::test::largestDifference(image, QImage(fromFile)) <= 1);
+    }
+
     void badSceneFilesAreRefusedOrReadInPart()
     {
         const QString notJson = m_dir.filePath("notes.json");
@@ -278,6 +333,9 @@ private slots:
             << QStringList{"--mesh", "a.obj", "--shape", "cube"} << "--shape";
         QTest::newRow("memory 0") << QStringList{"--import-memory-limit", "0"}
                                   << "--import-memory-limit";
+        QTest::newRow("bind without =") << QStringList{"--bind", "uLamp"} << "--bind";
+        QTest::newRow("bind to a typo") << QStringList{"--bind", "uLamp=light-postion"} << "--bind";
+        QTest::newRow("bind no name") << QStringList{"--bind", "=model"} << "--bind";
     }
 
     // Every program is timed before its frame, loops or not: 25,000 lines of sin() without a

@@ -9,6 +9,7 @@
 #include "webgl1_translation.h"
 
 #include <QGuiApplication>
+#include <QRegularExpression>
 #include <QTest>
 
 using namespace lb;
@@ -523,6 +524,82 @@ private slots:
         QVERIFY2(failure.isEmpty(), qPrintable(failure));
     }
 
+    // Names of no convention, bound by the user (the Bindings view, --bind, the scene file):
+    // unbound they draw nothing and the build names each matrix and what it could be; bound
+    // they draw as LearnOpenGL's own names do. A convention's name bound to none keeps its own
+    // value.
+    void userBindingsFeedAnyName()
+    {
+        const std::pair<const char *, Semantic> renamed[] = {
+            {"model", Semantic::Model},
+            {"view", Semantic::View},
+            {"projection", Semantic::Projection},
+            {"lightPos", Semantic::LightPositionWorld},
+            {"viewPos", Semantic::CameraPositionWorld},
+            {"lightColor", Semantic::LightDiffuse},
+            {"objectColor", Semantic::MaterialDiffuse},
+        };
+        const QStringList ours{"uObjToWorld", "uWorldToView", "uViewToClip", "uLamp",
+                               "uEye",        "uLampColour",  "uAlbedo"};
+        QString vertex = kLearnOpenGlVertex, fragment = kLearnOpenGlBasicFragment;
+        UniformBindings bindings;
+        for (std::size_t i = 0; i < std::size(renamed); ++i) {
+            const QRegularExpression word(QString("\\b%1\\b").arg(renamed[i].first));
+            vertex.replace(word, ours[int(i)]);
+            fragment.replace(word, ours[int(i)]);
+            bindings[ours[int(i)]] = renamed[i].second;
+        }
+        const ProgramBuild unbound = m_offscreen.useProgram(vertex, fragment);
+        QVERIFY2(unbound.ok(), qPrintable(unbound.log()));
+        for (const char *named :
+             {"uObjToWorld", "uWorldToView", "uViewToClip", "uEye=KEY", "uLampColour=KEY"})
+            QVERIFY2(unbound.log().contains(named), qPrintable(unbound.log()));
+        QCOMPARE(unbound.diagnostics.size(), std::size_t(5));
+        const Scene scene = basicLightingScene(lightIn(testScene(), LightFrame::World));
+        // The frame, collapsed by the zero matrices, is said to show nothing.
+        m_offscreen.renderer().lookAtNextFrame();
+        m_offscreen.render(scene);
+        QCOMPARE(m_offscreen.renderer().takeFrameLook(),
+                 std::optional<FrameLook>(FrameLook::AllBackground));
+
+        const ProgramBuild bound = m_offscreen.useProgram(vertex, fragment, {}, bindings);
+        QVERIFY2(bound.ok() && bound.diagnostics.empty(), qPrintable(bound.log()));
+        for (const ActiveUniform &u : bound.uniforms)
+            QVERIFY2(u.semantic && u.bound && !u.byName, qPrintable(u.name));
+        m_offscreen.renderer().lookAtNextFrame();
+        m_offscreen.render(scene);
+        QCOMPARE(m_offscreen.renderer().takeFrameLook(),
+                 std::optional<FrameLook>(FrameLook::Drawn));
+        const QString failure =
+            checkAgainstReference(m_offscreen, scene, "bound by the user", 100, 5, kTolerance);
+        QVERIFY2(failure.isEmpty(), qPrintable(failure));
+
+        // A colour that comes out 0 (as one fed nothing does): the object is drawn all black.
+        QString black = fragment;
+        black.replace("vec3 result = (ambient + diffuse + specular) * uAlbedo;",
+                      "vec3 result = (ambient + diffuse + specular) * uAlbedo * 0.0;");
+        QVERIFY(black != fragment);
+        QVERIFY(m_offscreen.useProgram(vertex, black, {}, bindings).ok());
+        m_offscreen.renderer().lookAtNextFrame();
+        m_offscreen.render(scene);
+        QCOMPARE(m_offscreen.renderer().takeFrameLook(),
+                 std::optional<FrameLook>(FrameLook::AllBlack));
+        QVERIFY(!frameLookWarning(FrameLook::AllBlack).isEmpty());
+        // Looked at once: the next frame is not.
+        m_offscreen.render(scene);
+        QVERIFY(!m_offscreen.renderer().takeFrameLook());
+
+        const ProgramBuild own = m_offscreen.useProgram(
+            kLearnOpenGlVertex, kLearnOpenGlBasicFragment, {}, {{"objectColor", std::nullopt}});
+        QVERIFY2(own.ok() && own.diagnostics.empty(), qPrintable(own.log()));
+        const auto objectColor =
+            std::find_if(own.uniforms.begin(), own.uniforms.end(),
+                         [](const ActiveUniform &u) { return u.name == "objectColor"; });
+        QVERIFY(objectColor != own.uniforms.end());
+        QVERIFY(!objectColor->semantic && objectColor->bound);
+        QCOMPARE(objectColor->byName, std::optional<Semantic>(Semantic::MaterialDiffuse));
+    }
+
     // What a name in no table says about its slot ("vertex" names the stage, not the input).
     void attributeNamesSayTheirSlot()
     {
@@ -591,7 +668,8 @@ private slots:
         QCOMPARE(d.severity, Diagnostic::Severity::Warning);
         QCOMPARE(d.stage, ShaderStage::Vertex);
         QCOMPARE(d.line, 2);
-        QVERIFY2(d.message.contains("uMyMvp") && d.message.contains("u_worldViewProjection"),
+        QVERIFY2(d.message.contains("uMyMvp") &&
+                     d.message.contains("one of model-view-projection, "),
                  qPrintable(d.message));
     }
 

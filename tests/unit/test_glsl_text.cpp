@@ -1,5 +1,6 @@
 // GLSL handled as text: dialect detection and driver logs mapped to the user's lines.
 // The Mesa lines are real llvmpipe output; the others are the documented forms.
+#include "bindings.h"
 #include "diagnostics.h"
 #include "dialect.h"
 #include "loops.h"
@@ -302,25 +303,84 @@ private slots:
                                "void main() { gl_Position = uWorldToClip * model * p; }\n";
         const QString fragment = "precision mediump float;\nuniform vec3 tint;\n"
                                  "uniform mat3 uColourMix;\n"
+                                 "uniform vec3 uLightPos, uEyePos, uMine;\n"
+                                 "uniform float bands;\n"
+                                 "uniform vec3 uSunColour;\n"
                                  "void main() { gl_FragColor = vec4(uColourMix * tint, 1.0); }\n";
-        const std::vector<ActiveUniform> uniforms = {
+        std::vector<ActiveUniform> uniforms = {
             uniform("model", UniformKind::Matrix, 4),
             uniform("uWorldToClip", UniformKind::Matrix, 4),
             uniform("tint", UniformKind::Float, 3),
             uniform("uColourMix", UniformKind::Matrix, 3),
+            uniform("uLightPos", UniformKind::Float, 3),
+            uniform("uEyePos", UniformKind::Float, 3),
+            uniform("uMine", UniformKind::Float, 3), // bound to none below: its own value
+            uniform("bands", UniformKind::Float, 1),
+            uniform("uSunColour", UniformKind::Float, 3), // initialised to white below
         };
+        for (ActiveUniform &u : uniforms)
+            u.initial.assign(std::size_t(u.width), 0.0f);
+        uniforms.back().initial = {1.0f, 1.0f, 1.0f};
+        const std::vector<Diagnostic> notApplied =
+            applyBindings(uniforms, {{"uMine", std::nullopt}, {"tint", Semantic::Projection}});
+        QCOMPARE(notApplied.size(), std::size_t(1)); // a vec3 takes no matrix
+        QVERIFY2(notApplied[0].message.contains("tint=projection"),
+                 qPrintable(notApplied[0].message));
         QVERIFY(uniforms[0].semantic); // LearnOpenGL's
         const std::vector<Diagnostic> warnings = unfedInputWarnings(uniforms, vertex, fragment);
-        QCOMPARE(warnings.size(), std::size_t(2));
+        QCOMPARE(warnings.size(), std::size_t(4));
         QCOMPARE(warnings[0].severity, Diagnostic::Severity::Warning);
         QCOMPARE(warnings[0].stage, ShaderStage::Vertex);
         QCOMPARE(warnings[0].line, 4);
         QVERIFY(warnings[0].message.contains("uWorldToClip"));
-        for (const char *fed : {"mModelView", "model", "projection", "u_worldViewProjection"})
+        // Nothing in its name says which: every matrix the scene gives.
+        for (const char *fed : {"model-view,", "model,", "projection,", "model-view-projection"})
             QVERIFY2(warnings[0].message.contains(fed), qPrintable(warnings[0].message));
         QCOMPARE(warnings[1].stage, ShaderStage::Fragment);
         QCOMPARE(warnings[1].line, 3);
         QVERIFY(warnings[1].message.contains("uColourMix"));
+        // What the names say comes first.
+        QCOMPARE(warnings[2].line, 4);
+        QVERIFY2(warnings[2].message.contains("uLightPos") &&
+                     warnings[2].message.contains(
+                         "one of light-position, light-position-camera, light-position-world"),
+                 qPrintable(warnings[2].message));
+        QVERIFY2(warnings[3].message.contains("--bind uEyePos=KEY") &&
+                     warnings[3].message.contains("one of camera-position-world"),
+                 qPrintable(warnings[3].message));
+    }
+
+    // Each semantic has one key and one label; keys read back; the names' words find them.
+    void bindingKeys()
+    {
+        QStringList keys = semanticKeys();
+        QCOMPARE(keys.size(), int(kLastSemantic) + 1);
+        for (int i = 0; i <= int(kLastSemantic); ++i) {
+            const Semantic s = Semantic(i);
+            QCOMPARE(semanticFromKey(semanticKey(s)), std::optional<Semantic>(s));
+            QVERIFY(!semanticLabel(s).isEmpty());
+        }
+        keys.removeDuplicates();
+        QCOMPARE(keys.size(), int(kLastSemantic) + 1);
+        bool unbound = false;
+        QVERIFY(!semanticFromKey("none", &unbound) && unbound);
+        QVERIFY(!semanticFromKey("model-veiw", &unbound) && !unbound);
+        const auto suggested = [](const char *name, UniformShape shape) {
+            QStringList found;
+            for (Semantic s : suggestedSemantics(name, shape))
+                found << semanticKey(s);
+            return found.join(' ');
+        };
+        QCOMPARE(suggested("uMVP", UniformShape::Matrix), QString("model-view-projection"));
+        QCOMPARE(suggested("u_objectColor", UniformShape::Number), QString("material-diffuse"));
+        QCOMPARE(suggested("uColor", UniformShape::Number),
+                 QString("light-diffuse material-diffuse diffuse-product"));
+        QCOMPARE(suggested("uEnableSpecularTerm", UniformShape::Number),
+                 QString("enable-specular"));
+        QCOMPARE(suggested("materialKd", UniformShape::Number), QString("material-diffuse"));
+        QCOMPARE(suggested("u_lightDir", UniformShape::Number),
+                 QString("light-direction-world reverse-light-direction"));
+        QCOMPARE(suggested("bands", UniformShape::Number), QString());
     }
 };
 

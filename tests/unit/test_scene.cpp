@@ -37,6 +37,8 @@ private slots:
         s.camera.orbit(10, 10);
         s.shaderValues["bands"] = {6.0f};
         s.shaderValues["tint"] = {0.1f, 0.2f, 0.3f, 1.0f};
+        s.bindings["uWorldToClip"] = Semantic::ModelViewProjection;
+        s.bindings["objectColor"] = std::nullopt; // its own value, not Kd
         const Scene back = Scene::fromJson(s.toJson());
         QVERIFY(back == s);
         QVERIFY(back != Scene{});
@@ -117,6 +119,8 @@ private slots:
         row("side B specular", P::Compare,
             [](Scene &s) { s.compare.specular = SpecularModel::Phong; });
         row("uniform value", P::Program, [](Scene &s) { s.shaderValues["k"] = {2.0f}; });
+        row("binding", P::Bindings, [](Scene &s) { s.bindings["k"] = Semantic::Shininess; });
+        row("binding to none", P::Bindings, [](Scene &s) { s.bindings["k"] = std::nullopt; });
     }
     void everyFieldRoundTripsAndIsCompared()
     {
@@ -199,6 +203,10 @@ private slots:
         json["shaderValues"] = QJsonObject{{"five", QJsonArray{1, 2, 3, 4, 5}},
                                            {"word", QJsonArray{"x"}},
                                            {"ok", QJsonArray{2.5}}};
+        json["bindings"] = QJsonObject{{"uMine", "model-veiw"},
+                                       {"uNumber", 3},
+                                       {"uOk", "light-position-world"},
+                                       {"uOwn", "none"}};
 
         QStringList ignored;
         const Scene s = Scene::fromJson(json, &ignored);
@@ -215,6 +223,8 @@ private slots:
         QCOMPARE(s.camera.distance, defaults.camera.distance);
         QCOMPARE(int(s.shaderValues.size()), 1);
         QCOMPARE(s.shaderValues.at("ok"), std::vector<float>{2.5f});
+        QVERIFY(s.bindings ==
+                (UniformBindings{{"uOk", Semantic::LightPositionWorld}, {"uOwn", std::nullopt}}));
         QVERIFY(Scene::fromJson(QJsonObject{}) == defaults);
 
         const QString all = ignored.join('\n');
@@ -225,9 +235,10 @@ private slots:
               "lights[0].spot.cutoff (out of range, clamped)", "lights[1] (not an object)",
               "lights[4]", "material.shininess", "object.tessellation", "object.scale",
               "camera (not an object)", "future (unknown field)", "shaderValues.five",
-              "shaderValues.word"})
+              "shaderValues.word", "bindings.uMine (not one of the values the scene feeds",
+              "bindings.uNumber"})
             QVERIFY2(all.contains(QLatin1String(path)), path);
-        QCOMPARE(ignored.size(), 16);
+        QCOMPARE(ignored.size(), 18);
     }
 
     // Version 3's list: bad entries are named and left out, the rest opens.

@@ -312,6 +312,7 @@ SceneParts differingParts(const Scene &a, const Scene &b)
     parts.setFlag(ScenePart::Camera, !(a.camera == b.camera));
     parts.setFlag(ScenePart::Compare, !(a.compare == b.compare));
     parts.setFlag(ScenePart::Program, a.shaderValues != b.shaderValues);
+    parts.setFlag(ScenePart::Bindings, a.bindings != b.bindings);
     return parts;
 }
 

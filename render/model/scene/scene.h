@@ -2,6 +2,7 @@
 // The scene model: everything the panels, the command line and the renderer agree on.
 // Plain data; SceneDocument (scene_document.h) wraps it with a "changed" signal.
 
+#include "bindings.h"
 #include "camera.h"
 #include "lighting.h"
 #include "texture_sampling.h"
@@ -125,6 +126,9 @@ struct Scene
     // Values of the user shader's own uniforms (those no panel feeds), by name; they outlive
     // recompiles and restarts. 1 to 4 numbers each.
     std::map<QString, std::vector<float>> shaderValues;
+    // What the user chose to feed the program's uniforms, by name (the Bindings view,
+    // --bind): they override what the names give (bindings.h).
+    UniformBindings bindings;
 
     ObjectSettings &selectedObject() { return objects[std::size_t(selected)]; }
     const ObjectSettings &selectedObject() const { return objects[std::size_t(selected)]; }
@@ -145,10 +149,11 @@ enum class ScenePart : unsigned {
     Object = 1u << 3, // the object list, the selection, and every object's settings
     Camera = 1u << 4,
     Compare = 1u << 5,
-    Program = 1u << 6, // the values of the program's own uniforms (shaderValues)
+    Program = 1u << 6,  // the values of the program's own uniforms (shaderValues)
+    Bindings = 1u << 7, // what feeds the program's uniforms: the program is built again
 };
 Q_DECLARE_FLAGS(SceneParts, ScenePart)
-constexpr SceneParts kAllSceneParts = SceneParts(0x7f);
+constexpr SceneParts kAllSceneParts = SceneParts(0xff);
 
 // Object list edits that keep the lights' attachments and the selection pointing at the
 // same objects. Each returns false and changes nothing where the list would leave 1 to
@@ -206,6 +211,7 @@ constexpr float kMinDirectionLength = 1e-6f; // shorter spot axes are refused (n
 // (kMaxSceneFileBytes), so what is saved can be opened again.
 constexpr int kMaxShaderValues = 16384;
 constexpr int kMaxShaderValueName = 1024; // GLSL ES's longest identifier
+constexpr int kMaxBindings = 1024;        // far more than a program has uniforms
 } // namespace limits
 
 // Names used on the command line, in JSON and in the panels' combo boxes.

@@ -180,6 +180,32 @@ void readObject(SceneJsonReader &r, const QJsonObject &ob, const QString &path,
     r.boolean(ob, "textureMipmaps", path, object.sampling.mipmaps);
 }
 
+// "bindings": {"uniform name": "semantic key" or "none"}, at most limits::kMaxBindings.
+void readBindings(SceneJsonReader &r, const QJsonObject &json, UniformBindings &bindings)
+{
+    for (auto it = json.begin(); it != json.end(); ++it) {
+        if (int(bindings.size()) == limits::kMaxBindings) {
+            r.ignore("bindings", SceneJsonMessages::tr("too many: %1 more than the %2 kept")
+                                     .arg(json.size() - limits::kMaxBindings)
+                                     .arg(limits::kMaxBindings));
+            return;
+        }
+        if (it.key().isEmpty() || it.key().size() > limits::kMaxShaderValueName) {
+            r.ignore("bindings." + it.key().left(40),
+                     SceneJsonMessages::tr("not a uniform's name"));
+            continue;
+        }
+        bool unbound = false;
+        const std::optional<Semantic> semantic = semanticFromKey(it.value().toString(), &unbound);
+        if (semantic || unbound)
+            bindings[it.key()] = semantic;
+        else
+            r.ignore("bindings." + it.key(),
+                     SceneJsonMessages::tr("not one of the values the scene feeds (%1)")
+                         .arg(QStringList(semanticKeys() << kUnboundKey).join(", ")));
+    }
+}
+
 } // namespace
 
 QJsonObject Scene::toJson() const
@@ -226,6 +252,10 @@ QJsonObject Scene::toJson() const
     for (const auto &[name, v] : shaderValues)
         values[name] = toArray(v.data(), int(v.size()));
     root["shaderValues"] = values;
+    QJsonObject bound;
+    for (const auto &[name, semantic] : bindings)
+        bound[name] = semantic ? semanticKey(*semantic) : QString(kUnboundKey);
+    root["bindings"] = bound;
     return root;
 }
 
@@ -365,6 +395,7 @@ Scene Scene::fromJson(const QJsonObject &json, QStringList *ignored)
         } else
             r.ignore("shaderValues." + it.key(), SceneJsonMessages::tr("not 1 to 4 numbers"));
     }
+    readBindings(r, r.object(json, "bindings", "bindings"), sc.bindings);
     return sc;
 }
 
