@@ -15,16 +15,6 @@ namespace lb {
 
 namespace {
 
-QString typeName(const ActiveUniform &u)
-{
-    const int n = u.components();
-    if (u.isBool())
-        return n == 1 ? "bool" : QString("bvec%1").arg(n);
-    if (u.isInteger())
-        return n == 1 ? "int" : QString("ivec%1").arg(n);
-    return n == 1 ? "float" : QString("vec%1").arg(n);
-}
-
 bool namesAColour(const QString &name)
 {
     return name.contains("colo", Qt::CaseInsensitive); // color, colour, Color...
@@ -95,7 +85,7 @@ void UniformPanel::addControl(const ActiveUniform &u)
     auto *row = new QHBoxLayout(field);
     row->setContentsMargins(0, 0, 0, 0);
     // Its declaration in GLSL, which stays as the shader has it (not words to translate).
-    field->setToolTip(QString("uniform %1 %2").arg(typeName(u), name));
+    field->setToolTip(QString("uniform %1 %2").arg(u.glslType(), name));
 
     if (!u.isInteger() && n >= 3 && namesAColour(name)) {
         auto *colour = new ColorEdit(name, field);
@@ -179,7 +169,7 @@ void UniformPanel::addControl(const ActiveUniform &u)
             }
         });
     }
-    m_form->addRow(QString("%1 (%2)").arg(name, typeName(u)), field);
+    m_form->addRow(QString("%1 (%2)").arg(name, u.glslType()), field);
     m_rows.push_back(field);
     m_refreshers.back()();
 }

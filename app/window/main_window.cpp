@@ -1,5 +1,6 @@
 #include "main_window.h"
 
+#include "binding_panel.h"
 #include "editor_panel.h"
 #include "exercise_panel.h"
 #include "file_arguments.h"
@@ -79,12 +80,14 @@ MainWindow::MainWindow(QSettings &settings, QWidget *parent)
     m_shading = new ShadingPanel(&m_document);
     m_object = new ObjectPanel(&m_document);
     m_uniforms = new UniformPanel(&m_document);
+    m_bindings = new BindingPanel(&m_document);
     m_probe = new ProbePanel(&m_document, m_viewport);
     addPanelDock(tr("Light"), "lightDock", m_light);
     addPanelDock(tr("Material"), "materialDock", m_material);
     addPanelDock(tr("Shading"), "shadingDock", m_shading);
     addPanelDock(tr("Object"), "objectDock", m_object);
     addPanelDock(tr("Uniforms"), "uniformDock", m_uniforms);
+    addPanelDock(tr("Bindings"), "bindingDock", m_bindings);
     QDockWidget *probeDock = addPanelDock(tr("Probe"), "probeDock", m_probe);
     m_plots = new PlotsPanel(&m_document, m_probe);
     m_plots->restoreState(m_settings);
@@ -288,6 +291,7 @@ void MainWindow::showProgramUsage(const ProgramBuild &build)
           static_cast<ScenePanel *>(m_shading)})
         panel->showUsage(read);
     m_uniforms->setUniforms(build.uniforms);
+    m_bindings->setProgram(build, !m_shaders.showsBuiltIn());
     m_programReadsLight = build.readsLightPosition();
     updateStatus();
 }

@@ -40,6 +40,7 @@ class SettingsAutosave;
 class ShadingPanel;
 class StatusLine;
 class UniformPanel;
+class BindingPanel;
 class Viewport;
 class WorkCheck;
 
@@ -59,6 +60,7 @@ public:
     ObjectPanel *objectPanel() const { return m_object; }
     EditorPanel *editorPanel() const { return m_editor; }
     UniformPanel *uniformPanel() const { return m_uniforms; }
+    BindingPanel *bindingPanel() const { return m_bindings; }
     ObjectLoader *objectLoader() const { return m_loader; }
     // Nothing on its way to the picture: every object and texture is in, no typed text waits
     // for the live compile and no program is being tried (what is drawn now stays drawn;
@@ -199,6 +201,7 @@ private:
     ObjectPanel *m_object;
     EditorPanel *m_editor;
     UniformPanel *m_uniforms;
+    BindingPanel *m_bindings;
     ObjectLoader *m_loader = nullptr; // the scene budget asks it for files before it exists
     MeshActions *m_meshActions;
     SceneActions *m_sceneActions;

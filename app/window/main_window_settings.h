@@ -4,8 +4,9 @@
 
 namespace lb::window_settings {
 
-// 2: the editor dock, 3: the probe dock, 4: the layouts fitted to the screen
-inline constexpr int kStateVersion = 4;
+// 2: the editor dock, 3: the probe dock, 4: the layouts fitted to the screen, 5: the Bindings
+// dock
+inline constexpr int kStateVersion = 5;
 inline constexpr const char *kSceneKey = "scene";
 inline constexpr const char *kGeometryKey = "window/geometry";
 inline constexpr const char *kStateKey = "window/state";

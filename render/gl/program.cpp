@@ -415,6 +415,8 @@ BuiltProgram buildTranslatedOrNot(QOpenGLExtraFunctions &gl, const QString &vert
     if (build.hasErrors())
         return result;
     build.linked = true;
+    for (const ActiveAttribute &a : attributes)
+        build.attributes.push_back({a.name, int(a.location)});
     build.uniforms = activeUniforms(gl, program.id());
     for (const Diagnostic &d : applyBindings(build.uniforms, bindings))
         build.diagnostics.push_back(d);

@@ -9,6 +9,25 @@ int ActiveUniform::components() const
     return numbers && size == 1 && location >= 0 ? width : 0;
 }
 
+QString ActiveUniform::glslType() const
+{
+    switch (kind) {
+    case UniformKind::Matrix:
+        return QString("mat%1").arg(width);
+    case UniformKind::Sampler:
+        return "sampler2D";
+    case UniformKind::Int:
+        return width == 1 ? "int" : QString("ivec%1").arg(width);
+    case UniformKind::Bool:
+        return width == 1 ? "bool" : QString("bvec%1").arg(width);
+    case UniformKind::Float:
+        return width == 1 ? "float" : QString("vec%1").arg(width);
+    case UniformKind::Other:
+        break;
+    }
+    return "?";
+}
+
 bool ProgramBuild::hasErrors() const
 {
     return firstError() != nullptr;

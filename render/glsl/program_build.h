@@ -51,6 +51,16 @@ struct ActiveUniform
     int components() const;
     bool isInteger() const { return kind == UniformKind::Int || kind == UniformKind::Bool; }
     bool isBool() const { return kind == UniformKind::Bool; }
+    // Its type as GLSL writes it: float, ivec3, mat4, sampler2D ("?" for another).
+    QString glslType() const;
+};
+
+// An active vertex input and the location it was linked at (program.h's slots: 0 positions,
+// 1 normals, 2 texture coordinates, 3 vertex colours; another location is fed nothing).
+struct ActiveInput
+{
+    QString name;
+    int location = -1;
 };
 
 struct ProgramBuild
@@ -58,6 +68,7 @@ struct ProgramBuild
     bool linked = false; // compiled, linked and able to draw the object
     std::vector<Diagnostic> diagnostics;
     std::vector<ActiveUniform> uniforms; // the linked program's active uniforms
+    std::vector<ActiveInput> attributes; // and its active vertex inputs
     bool ok() const { return linked; }
     bool hasErrors() const;
     const Diagnostic *firstError() const; // the first error, or none

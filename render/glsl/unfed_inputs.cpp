@@ -55,7 +55,8 @@ bool allZero(const std::vector<float> &values)
     return std::all_of(values.begin(), values.end(), [](float v) { return v == 0.0f; });
 }
 
-// Whether `u` is one the scene feeds nothing that decides the picture.
+} // namespace
+
 bool isUnfed(const ActiveUniform &u)
 {
     if (u.semantic || u.bound)
@@ -67,8 +68,6 @@ bool isUnfed(const ActiveUniform &u)
     return u.kind == UniformKind::Float && allZero(u.initial) &&
            !suggestedSemantics(u.name, UniformShape::Number).empty();
 }
-
-} // namespace
 
 std::vector<Diagnostic> unfedInputWarnings(const std::vector<ActiveUniform> &uniforms,
                                            const QString &vertexSource,

@@ -18,6 +18,9 @@
 
 namespace lb {
 
+// Whether `u` is an input the scene feeds nothing that decides the picture (above).
+bool isUnfed(const ActiveUniform &u);
+
 std::vector<Diagnostic> unfedInputWarnings(const std::vector<ActiveUniform> &uniforms,
                                            const QString &vertexSource,
                                            const QString &fragmentSource);

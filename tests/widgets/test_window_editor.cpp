@@ -1,11 +1,15 @@
 // The shader editor: live compiles, errors on the line, presets, the program's own uniforms,
 // shader files and the session's unsaved edits.
+#include "binding_panel.h"
 #include "context_loss.h"
 #include "platform_skips.h"
 #include "window_fixture.h"
 
+#include <QComboBox>
 #include <QElapsedTimer>
 #include <QFile>
+#include <QLabel>
+#include <QListWidget>
 #include <QOpenGLContext>
 #include <QRegularExpression>
 #include <QTimer>
@@ -510,6 +514,65 @@ private slots:
         QVERIFY(e->statusLabel()->text().contains("linked"));
         QCOMPARE(imageDifference(frame(), six), 0);
         QCOMPARE(scene().shaderValues.at("bands"), std::vector<float>{6.0f});
+    }
+
+    // A program of names no convention has: its first frame is said to show nothing, the
+    // Bindings view marks what nothing feeds, and choosing there builds it again, fed, until
+    // it draws lit; the choices are the scene's.
+    void bindingsViewFeedsAnyName()
+    {
+        EditorPanel *e = m_window->editorPanel();
+        const QString vertex =
+            "attribute vec3 inPos;\nattribute vec3 inNormal;\nvarying vec3 n;\n"
+            "uniform mat4 uToClip;\nuniform mat3 uTurnNormals;\n"
+            "void main() { n = uTurnNormals * inNormal; gl_Position = uToClip * vec4(inPos, "
+            "1.0); }\n";
+        const QString fragment = "precision mediump float;\nvarying vec3 n;\nuniform vec3 uTint;\n"
+                                 "void main() { gl_FragColor = vec4(uTint * (0.2 + "
+                                 "max(normalize(n).z, 0.0)), 1.0); }\n";
+        const auto listed = [e](const char *words) {
+            for (int i = 0; i < e->diagnosticsList()->count(); ++i)
+                if (e->diagnosticsList()->item(i)->text().contains(words))
+                    return true;
+            return false;
+        };
+        QVERIFY(buildAfter([&] { m_window->shaderDocument().setSources(vertex, fragment); }));
+        QVERIFY(listed("uToClip") && listed("uTurnNormals"));
+        QTRY_VERIFY_WITH_TIMEOUT(listed("draws nothing"), 10000);
+        BindingPanel *b = m_window->bindingPanel();
+        QCOMPARE(b->unfedCount(), 2);
+        QVERIFY(b->findChild<QLabel *>()->text().contains("2"));
+        const auto choose = [b](const char *name, const char *key) {
+            QComboBox *list = b->choiceFor(name);
+            QVERIFY2(list, name);
+            const int i = list->findText(QString("(%1)").arg(key), Qt::MatchEndsWith);
+            QVERIFY2(i > 1, key);
+            list->setCurrentIndex(i);
+            emit list->activated(i);
+        };
+        QVERIFY(buildAfter([&] { choose("uToClip", "model-view-projection"); }));
+        QVERIFY(buildAfter([&] { choose("uTurnNormals", "normal-matrix"); }));
+        // Fed matrices, no colour yet: the object is there, all black, and said so.
+        QTRY_VERIFY_WITH_TIMEOUT(listed("all black"), 10000);
+        QVERIFY(buildAfter([&] { choose("uTint", "material-diffuse"); }));
+        QCOMPARE(b->unfedCount(), 0);
+        QCOMPARE(e->diagnosticsList()->count(), 0);
+        QCOMPARE(scene().bindings.at("uToClip"),
+                 std::optional<Semantic>(Semantic::ModelViewProjection));
+        QCOMPARE(scene().bindings.at("uTint"), std::optional<Semantic>(Semantic::MaterialDiffuse));
+        const QImage lit = frame();
+        const QRgb centre = lit.pixel(lit.width() / 2, lit.height() / 2);
+        const glm::vec3 kd = scene().selectedObject().material.kd;
+        QVERIFY2(std::abs(qRed(centre) - int(std::round(255 * std::min(1.2f * kd.r, 1.0f)))) <= 3,
+                 qPrintable(QString::number(centre, 16)));
+        // Back to what the name says (nothing): the scene forgets the choice.
+        QVERIFY(buildAfter([&] {
+            QComboBox *list = b->choiceFor("uTint");
+            list->setCurrentIndex(0);
+            emit list->activated(0);
+        }));
+        QCOMPARE(scene().bindings.count("uTint"), std::size_t(0));
+        QTRY_VERIFY_WITH_TIMEOUT(listed("all black"), 10000);
     }
 
     void controlsTheProgramDoesNotReadAreMarkedUnused()

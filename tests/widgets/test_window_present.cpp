@@ -358,7 +358,8 @@ private slots:
         settle();
         QVERIFY(viewShare() >= 0.6);
         key(Qt::Key_F6);
-        QDockWidget *probeDock = m_window->panelDocks()[5];
+        QDockWidget *probeDock = m_window->findChild<QDockWidget *>("probeDock");
+        QVERIFY(probeDock);
         QVERIFY(probeDock->isVisible());
         qInfo("panels shown: view %.3f (%d px), panels %d px, editor %s", viewShare(),
               m_window->viewport()->width(), probeDock->width(),
