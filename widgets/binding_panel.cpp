@@ -64,6 +64,9 @@ QComboBox *BindingPanel::choiceFor(const QString &uniform) const
 
 void BindingPanel::setProgram(const ProgramBuild &build, bool choosable)
 {
+    // Each list under its declaration, the dock's whole width: the declarations are long and so
+    // are the entries (the value, its frame and its key).
+    m_form->setRowWrapPolicy(QFormLayout::WrapAllRows);
     for (QWidget *row : m_rows)
         m_form->removeRow(row);
     m_rows.clear();

@@ -95,6 +95,329 @@
     </message>
 </context>
 <context>
+    <name>lb::BindingPanel</name>
+    <message>
+        <location filename="../../widgets/binding_panel.cpp" line="+24"/>
+        <source>Vertex positions (location 0)</source>
+        <translation>Vertex-Positionen (location 0)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Vertex normals (location 1)</source>
+        <translation>Vertex-Normalen (location 1)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Texture coordinates (location 2)</source>
+        <translation>Texturkoordinaten (location 2)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Vertex colours (location 3)</source>
+        <translation>Vertex-Farben (location 3)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Nothing: the mesh has no array at location %1</source>
+        <extracomment>%1 the location number a vertex input was linked at</extracomment>
+        <translation>Nichts: das Mesh hat kein Array an location %1</translation>
+    </message>
+    <message>
+        <location line="+44"/>
+        <source>A vertex input is fed by its location: layout(location = N), or the slot its name gives (aPos, a_normal, inTexCoord...).</source>
+        <translation>Ein Vertex-Eingang wird über seine location gespeist: layout(location = N) oder der Platz, den sein Name sagt (aPos, a_normal, inTexCoord...).</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>The built-in program draws: its inputs are the panels&apos;. A program of your own shows each input here with what feeds it, and you can choose what does.</source>
+        <translation>Das eingebaute Programm zeichnet: seine Eingänge sind die der Panels. Ein eigenes Programm zeigt hier jeden Eingang mit dem, was ihn speist, und Sie können es wählen.</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+5"/>
+        <source>%n uniform(s) fed nothing: choose what feeds them; the choice is saved with the scene.</source>
+        <extracomment>%n how many uniforms nothing feeds</extracomment>
+        <translation>
+            <numerusform>%n Uniform speist nichts: wählen Sie, was es speist; die Wahl wird mit der Szene gespeichert.</numerusform>
+            <numerusform>%n Uniforms speist nichts: wählen Sie, was sie speist; die Wahl wird mit der Szene gespeichert.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>What feeds each input of the program, chosen by its name; change a choice to feed another value. The choice is saved with the scene.</source>
+        <translation>Was jeden Eingang des Programms speist, nach seinem Namen gewählt; ändern Sie eine Wahl, um einen anderen Wert zu speisen. Die Wahl wird mit der Szene gespeichert.</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>By its name: %1</source>
+        <extracomment>the entry that lets the uniform&apos;s name decide what feeds it; %1 what that is</extracomment>
+        <translation>Nach seinem Namen: %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>By its name: nothing (the name is no convention&apos;s)</source>
+        <translation>Nach seinem Namen: nichts (der Name gehört zu keiner Konvention)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Not fed: its own value (the Uniforms panel)</source>
+        <translation>Nicht gespeist: sein eigener Wert (das Uniforms-Panel)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Not fed</source>
+        <translation>Nicht gespeist</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>Fed with: %1</source>
+        <translation>Gespeist mit: %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Fed nothing: it stays 0 and decides the picture. Choose what the scene gives.</source>
+        <translation>Nichts speist es: es bleibt 0 und bestimmt das Bild. Wählen Sie, was die Szene gibt.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Fed nothing by the scene: its own value (the Uniforms panel&apos;s control, or its initialiser).</source>
+        <translation>Die Szene speist es nicht: sein eigener Wert (das Steuerelement im Uniforms-Panel oder sein Initialisierer).</translation>
+    </message>
+</context>
+<context>
+    <name>lb::Bindings</name>
+    <message>
+        <location filename="../../render/glsl/bindings.cpp" line="+26"/>
+        <source>Model-view matrix (camera from object)</source>
+        <translation>Modelview-Matrix (Kamera aus Objekt)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Normal matrix (inverse transpose of model-view)</source>
+        <translation>Normalenmatrix (inverse Transponierte der Modelview)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>View matrix (camera from world)</source>
+        <translation>View-Matrix (Kamera aus Welt)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>View&apos;s normal matrix (inverse transpose of view)</source>
+        <translation>Normalenmatrix der View (inverse Transponierte der View)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Projection matrix</source>
+        <translation>Projektionsmatrix</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Light position, in the Light panel&apos;s frame (x, y, z, w)</source>
+        <translation>Lichtposition, in den Koordinaten des Licht-Panels (x, y, z, w)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Light position (camera coordinates)</source>
+        <translation>Lichtposition (Kamerakoordinaten)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Light&apos;s ambient colour Ia</source>
+        <translation>Ambiente Farbe des Lichts Ia</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Light&apos;s diffuse colour Id</source>
+        <translation>Diffuse Farbe des Lichts Id</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Light&apos;s specular colour Is</source>
+        <translation>Spekulare Farbe des Lichts Is</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Material&apos;s ambient colour Ka</source>
+        <translation>Ambiente Farbe des Materials Ka</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Material&apos;s diffuse colour Kd</source>
+        <translation>Diffuse Farbe des Materials Kd</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Material&apos;s specular colour Ks</source>
+        <translation>Spekulare Farbe des Materials Ks</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Shininess</source>
+        <translation>Glanzexponent</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Light&apos;s frame (0 camera, 1 world, 2 object)</source>
+        <translation>Koordinaten des Lichts (0 Kamera, 1 Welt, 2 Objekt)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Light on (1) or off (0)</source>
+        <translation>Licht an (1) oder aus (0)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Specular model (0 Phong, 1 Blinn-Phong)</source>
+        <translation>Spekulares Modell (0 Phong, 1 Blinn-Phong)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Projection (0 perspective, 1 parallel)</source>
+        <translation>Projektion (0 perspektivisch, 1 parallel)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Lighting on (1) or off (0)</source>
+        <translation>Beleuchtung an (1) oder aus (0)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Vertex colours on (1) or off (0)</source>
+        <translation>Vertex-Farben an (1) oder aus (0)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Texture on (1) or off (0)</source>
+        <translation>Textur an (1) oder aus (0)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The object&apos;s texture (unit 0)</source>
+        <translation>Die Textur des Objekts (Einheit 0)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Attenuation (kc, kl, kq)</source>
+        <translation>Abschwächung (kc, kl, kq)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Spot&apos;s axis, in the light&apos;s frame</source>
+        <translation>Achse des Spots, in den Koordinaten des Lichts</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Spot&apos;s cut-off angle (degrees)</source>
+        <translation>Öffnungswinkel des Spots (Grad)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Cosine of the spot&apos;s cut-off angle</source>
+        <translation>Kosinus des Öffnungswinkels des Spots</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Spot&apos;s exponent</source>
+        <translation>Exponent des Spots</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Ambient term on (1) or off (0)</source>
+        <translation>Ambienter Term an (1) oder aus (0)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Diffuse term on (1) or off (0)</source>
+        <translation>Diffuser Term an (1) oder aus (0)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Specular term on (1) or off (0)</source>
+        <translation>Spekularer Term an (1) oder aus (0)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Show choice (0 the colour, 1 N, 2 L...)</source>
+        <translation>Anzeige-Wahl (0 die Farbe, 1 N, 2 L...)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Model matrix (world from object)</source>
+        <translation>Modellmatrix (Welt aus Objekt)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Model&apos;s normal matrix (inverse transpose of model)</source>
+        <translation>Normalenmatrix des Modells (inverse Transponierte des Modells)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Projection times view</source>
+        <translation>Projektion mal View</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Projection times model-view (MVP)</source>
+        <translation>Projektion mal Modelview (MVP)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Light position (world coordinates)</source>
+        <translation>Lichtposition (Weltkoordinaten)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Direction the light shines (world)</source>
+        <translation>Richtung, in die das Licht scheint (Welt)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Direction towards the light (world, unit)</source>
+        <translation>Richtung zum Licht (Welt, Einheitsvektor)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Camera position (world coordinates)</source>
+        <translation>Kameraposition (Weltkoordinaten)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Ia times Ka</source>
+        <translation>Ia mal Ka</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Id times Kd</source>
+        <translation>Id mal Kd</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Is times Ks</source>
+        <translation>Is mal Ks</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Attenuation&apos;s constant factor kc</source>
+        <translation>Konstanter Faktor der Abschwächung kc</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Attenuation&apos;s linear factor kl</source>
+        <translation>Linearer Faktor der Abschwächung kl</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Attenuation&apos;s quadratic factor kq</source>
+        <translation>Quadratischer Faktor der Abschwächung kq</translation>
+    </message>
+    <message>
+        <location line="+125"/>
+        <source>the binding %1=%2 is not used: %1 is not of the type that %2 gives (a matrix, numbers, a texture)</source>
+        <extracomment>%1 the uniform&apos;s name, %2 the key chosen for it (model-view, light-diffuse)</extracomment>
+        <translation>die Bindung %1=%2 wird nicht verwendet: %1 hat nicht den Typ, den %2 gibt (eine Matrix, Zahlen, eine Textur)</translation>
+    </message>
+</context>
+<context>
     <name>lb::BoundedRead</name>
     <message>
         <location filename="../../render/model/io/bounded_read.cpp" line="+35"/>
@@ -1029,6 +1352,19 @@
         <location line="+20"/>
         <source>a settings file</source>
         <translation>eine Einstellungsdatei</translation>
+    </message>
+</context>
+<context>
+    <name>lb::FrameLook</name>
+    <message>
+        <location filename="../../render/model/measure/frame_look.cpp" line="+50"/>
+        <source>your program draws nothing: every pixel of the frame is the background (the object is outside the view, or a matrix fed nothing collapses it; the Bindings tab shows what feeds each input)</source>
+        <translation>Ihr Programm zeichnet nichts: jedes Pixel des Bildes ist der Hintergrund (das Objekt liegt außerhalb der Ansicht, oder eine Matrix, die nichts speist, lässt es zusammenfallen; der Tab Bindungen zeigt, was jeden Eingang speist)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>your program draws the object all black: if it is not meant to be, a light or colour input it reads may be fed nothing (the Bindings tab shows what feeds each input)</source>
+        <translation>Ihr Programm zeichnet das Objekt ganz schwarz: wenn es nicht so sein soll, speist vielleicht nichts einen Licht- oder Farbeingang, den es liest (der Tab Bindungen zeigt, was jeden Eingang speist)</translation>
     </message>
 </context>
 <context>
@@ -2096,7 +2432,7 @@
 <context>
     <name>lb::MainWindow</name>
     <message>
-        <location filename="../../app/window/main_window.cpp" line="+83"/>
+        <location filename="../../app/window/main_window.cpp" line="+85"/>
         <source>Light</source>
         <translation>Licht</translation>
     </message>
@@ -2119,6 +2455,11 @@
         <location line="+1"/>
         <source>Uniforms</source>
         <translation>Uniforms</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Bindings</source>
+        <translation>Bindungen</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -2184,7 +2525,7 @@
         <translation>Das Programm im Editor (%1) schattiert nach Phong (pro Fragment), egal was hier steht. Laden Sie eine Vorlage oder wählen Sie „Alles zurücksetzen“, um die Schattierung umzuschalten.</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+37"/>
         <source>%1, step %2</source>
         <translation>%1, Schritt %2</translation>
     </message>
@@ -3890,7 +4231,7 @@
         <translation>der Fragment-Shader lässt sich nicht kompilieren (der Treiber nennt keinen Grund)</translation>
     </message>
     <message>
-        <location line="+282"/>
+        <location line="+280"/>
         <source>the program does not link (no reason given)</source>
         <translation>das Programm lässt sich nicht linken (kein Grund angegeben)</translation>
     </message>
@@ -3905,7 +4246,7 @@
         <translation>der Fragment-Shader schreibt keine Farbe: Weisen Sie gl_FragColor zu (ohne #version, #version 100) oder deklarieren Sie ein out vec4 (#version 300 es, 330 und neuer)</translation>
     </message>
     <message>
-        <location line="+49"/>
+        <location line="+55"/>
         <source>a global variable initialised from a uniform or another variable: GLSL ES 1.00 asks for a constant, browsers run it (WebGL warns); lightbench runs this program translated to GLSL 3.30 (the driver said: %1)</source>
         <translation>eine globale Variable, die aus einer Uniform oder einer anderen Variable initialisiert wird: GLSL ES 1.00 verlangt eine Konstante, Browser führen es aus (WebGL warnt); lightbench führt dieses Programm nach GLSL 3.30 übersetzt aus (der Treiber sagte: %1)</translation>
     </message>
@@ -4020,7 +4361,7 @@
 <context>
     <name>lb::Scene</name>
     <message>
-        <location filename="../../render/model/scene/scene.cpp" line="+412"/>
+        <location filename="../../render/model/scene/scene.cpp" line="+413"/>
         <source>cube</source>
         <translation>Würfel</translation>
     </message>
@@ -4405,7 +4746,12 @@
         <translation>kc, kl und kq alle 0</translation>
     </message>
     <message>
-        <location line="+126"/>
+        <location line="+80"/>
+        <source>not one of the values the scene feeds (%1)</source>
+        <translation>keiner der Werte, die die Szene speist (%1)</translation>
+    </message>
+    <message>
+        <location line="+76"/>
         <location line="+33"/>
         <source>not an array</source>
         <translation>kein Array</translation>
@@ -4442,12 +4788,14 @@
         <translation>dieses Objekt gibt es nicht; stattdessen das erste</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="-159"/>
+        <location line="+187"/>
         <source>too many: %1 more than the %2 kept</source>
         <translation>zu viele: %1 mehr als die %2 übernommenen</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="-180"/>
+        <location line="+187"/>
         <source>not a uniform&apos;s name</source>
         <translation>kein gültiger Uniform-Name</translation>
     </message>
@@ -5232,16 +5580,22 @@
 <context>
     <name>lb::UnfedInputs</name>
     <message>
-        <location filename="../../render/glsl/unfed_inputs.cpp" line="+68"/>
-        <source>the scene feeds nothing to the matrix %1: it stays all zeros, and whatever it multiplies collapses to nothing on screen; the matrices fed have these names: %2</source>
-        <extracomment>%1 the uniform&apos;s name; %2 the names of the matrices the workbench feeds</extracomment>
-        <translation>die Szene speist nichts in die Matrix %1: Sie bleibt ganz null, und alles, was sie multipliziert, schrumpft auf dem Bildschirm zu nichts; gespeist werden die Matrizen mit diesen Namen: %2</translation>
+        <location filename="../../render/glsl/unfed_inputs.cpp" line="+95"/>
+        <source>the scene feeds nothing to the matrix %1: it stays all zeros, and whatever it multiplies collapses to nothing on screen; bind it to one of %2 (the Bindings tab, or --bind %1=KEY)</source>
+        <extracomment>%1 the uniform&apos;s name; %2 the keys it could be bound to (model-view, projection)</extracomment>
+        <translation>die Szene speist nichts in die Matrix %1: sie bleibt ganz null, und was sie multipliziert, fällt auf dem Bildschirm zu nichts zusammen; binden Sie sie an eines von %2 (der Tab Bindungen oder --bind %1=KEY)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>the scene feeds nothing to %1: it stays 0 unless you set it in the Uniforms panel; bind it to one of %2 (the Bindings tab, or --bind %1=KEY)</source>
+        <extracomment>%1 the uniform&apos;s name; %2 the keys it could be bound to (light-position-world)</extracomment>
+        <translation>die Szene speist nichts in %1: es bleibt 0, außer Sie setzen es im Uniforms-Panel; binden Sie es an eines von %2 (der Tab Bindungen oder --bind %1=KEY)</translation>
     </message>
 </context>
 <context>
     <name>lb::UniformPanel</name>
     <message>
-        <location filename="../../widgets/uniform_panel.cpp" line="+80"/>
+        <location filename="../../widgets/uniform_panel.cpp" line="+70"/>
         <source>The program has no uniforms of its own. A uniform that no panel feeds gets a control here.</source>
         <translation>Das Programm hat keine eigenen Uniforms. Ein Uniform, das kein Bereich versorgt, erhält hier ein Steuerelement.</translation>
     </message>
@@ -5359,7 +5713,7 @@
         <translation>ein Bild mit diesem Programm zu zeichnen würde bei %2x%3 etwa %1 dauern (das Budget beträgt %4): eine Endlosschleife oder sehr lange Schleife?</translation>
     </message>
     <message>
-        <location filename="../../widgets/viewport.cpp" line="+78"/>
+        <location filename="../../widgets/viewport.cpp" line="+94"/>
         <source>The renderer could not start:
 %1</source>
         <translation>Der Renderer konnte nicht starten:

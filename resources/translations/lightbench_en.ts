@@ -95,6 +95,329 @@
     </message>
 </context>
 <context>
+    <name>lb::BindingPanel</name>
+    <message>
+        <location filename="../../widgets/binding_panel.cpp" line="+24"/>
+        <source>Vertex positions (location 0)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Vertex normals (location 1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Texture coordinates (location 2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Vertex colours (location 3)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Nothing: the mesh has no array at location %1</source>
+        <extracomment>%1 the location number a vertex input was linked at</extracomment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+44"/>
+        <source>A vertex input is fed by its location: layout(location = N), or the slot its name gives (aPos, a_normal, inTexCoord...).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>The built-in program draws: its inputs are the panels&apos;. A program of your own shows each input here with what feeds it, and you can choose what does.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <location line="+5"/>
+        <source>%n uniform(s) fed nothing: choose what feeds them; the choice is saved with the scene.</source>
+        <extracomment>%n how many uniforms nothing feeds</extracomment>
+        <translation>
+            <numerusform>%n uniform fed nothing: choose what feeds it; the choice is saved with the scene.</numerusform>
+            <numerusform>%n uniforms fed nothing: choose what feeds them; the choice is saved with the scene.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>What feeds each input of the program, chosen by its name; change a choice to feed another value. The choice is saved with the scene.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>By its name: %1</source>
+        <extracomment>the entry that lets the uniform&apos;s name decide what feeds it; %1 what that is</extracomment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>By its name: nothing (the name is no convention&apos;s)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Not fed: its own value (the Uniforms panel)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Not fed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>Fed with: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Fed nothing: it stays 0 and decides the picture. Choose what the scene gives.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Fed nothing by the scene: its own value (the Uniforms panel&apos;s control, or its initialiser).</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>lb::Bindings</name>
+    <message>
+        <location filename="../../render/glsl/bindings.cpp" line="+26"/>
+        <source>Model-view matrix (camera from object)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Normal matrix (inverse transpose of model-view)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>View matrix (camera from world)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>View&apos;s normal matrix (inverse transpose of view)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Projection matrix</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Light position, in the Light panel&apos;s frame (x, y, z, w)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Light position (camera coordinates)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Light&apos;s ambient colour Ia</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Light&apos;s diffuse colour Id</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Light&apos;s specular colour Is</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Material&apos;s ambient colour Ka</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Material&apos;s diffuse colour Kd</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Material&apos;s specular colour Ks</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Shininess</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Light&apos;s frame (0 camera, 1 world, 2 object)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Light on (1) or off (0)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Specular model (0 Phong, 1 Blinn-Phong)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Projection (0 perspective, 1 parallel)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Lighting on (1) or off (0)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Vertex colours on (1) or off (0)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Texture on (1) or off (0)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The object&apos;s texture (unit 0)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Attenuation (kc, kl, kq)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Spot&apos;s axis, in the light&apos;s frame</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Spot&apos;s cut-off angle (degrees)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Cosine of the spot&apos;s cut-off angle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Spot&apos;s exponent</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Ambient term on (1) or off (0)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Diffuse term on (1) or off (0)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Specular term on (1) or off (0)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Show choice (0 the colour, 1 N, 2 L...)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Model matrix (world from object)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Model&apos;s normal matrix (inverse transpose of model)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Projection times view</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Projection times model-view (MVP)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Light position (world coordinates)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Direction the light shines (world)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Direction towards the light (world, unit)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Camera position (world coordinates)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Ia times Ka</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Id times Kd</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Is times Ks</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Attenuation&apos;s constant factor kc</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Attenuation&apos;s linear factor kl</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Attenuation&apos;s quadratic factor kq</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+125"/>
+        <source>the binding %1=%2 is not used: %1 is not of the type that %2 gives (a matrix, numbers, a texture)</source>
+        <extracomment>%1 the uniform&apos;s name, %2 the key chosen for it (model-view, light-diffuse)</extracomment>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>lb::BoundedRead</name>
     <message>
         <location filename="../../render/model/io/bounded_read.cpp" line="+35"/>
@@ -1022,6 +1345,19 @@
     <message>
         <location filename="../../render/model/scene/texture_file.cpp" line="+31"/>
         <source>an image</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>lb::FrameLook</name>
+    <message>
+        <location filename="../../render/model/measure/frame_look.cpp" line="+50"/>
+        <source>your program draws nothing: every pixel of the frame is the background (the object is outside the view, or a matrix fed nothing collapses it; the Bindings tab shows what feeds each input)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>your program draws the object all black: if it is not meant to be, a light or colour input it reads may be fed nothing (the Bindings tab shows what feeds each input)</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -2090,7 +2426,7 @@
 <context>
     <name>lb::MainWindow</name>
     <message>
-        <location filename="../../app/window/main_window.cpp" line="+83"/>
+        <location filename="../../app/window/main_window.cpp" line="+85"/>
         <source>Light</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2112,6 +2448,11 @@
     <message>
         <location line="+1"/>
         <source>Uniforms</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Bindings</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -2178,7 +2519,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+37"/>
         <source>%1, step %2</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3882,7 +4223,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+282"/>
+        <location line="+280"/>
         <source>the program does not link (no reason given)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3897,7 +4238,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+49"/>
+        <location line="+55"/>
         <source>a global variable initialised from a uniform or another variable: GLSL ES 1.00 asks for a constant, browsers run it (WebGL warns); lightbench runs this program translated to GLSL 3.30 (the driver said: %1)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4010,7 +4351,7 @@
 <context>
     <name>lb::Scene</name>
     <message>
-        <location filename="../../render/model/scene/scene.cpp" line="+412"/>
+        <location filename="../../render/model/scene/scene.cpp" line="+413"/>
         <source>cube</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4395,7 +4736,12 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+126"/>
+        <location line="+80"/>
+        <source>not one of the values the scene feeds (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+76"/>
         <location line="+33"/>
         <source>not an array</source>
         <translation type="unfinished"></translation>
@@ -4432,12 +4778,14 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="-159"/>
+        <location line="+187"/>
         <source>too many: %1 more than the %2 kept</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="-180"/>
+        <location line="+187"/>
         <source>not a uniform&apos;s name</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5220,16 +5568,22 @@
 <context>
     <name>lb::UnfedInputs</name>
     <message>
-        <location filename="../../render/glsl/unfed_inputs.cpp" line="+68"/>
-        <source>the scene feeds nothing to the matrix %1: it stays all zeros, and whatever it multiplies collapses to nothing on screen; the matrices fed have these names: %2</source>
-        <extracomment>%1 the uniform&apos;s name; %2 the names of the matrices the workbench feeds</extracomment>
+        <location filename="../../render/glsl/unfed_inputs.cpp" line="+95"/>
+        <source>the scene feeds nothing to the matrix %1: it stays all zeros, and whatever it multiplies collapses to nothing on screen; bind it to one of %2 (the Bindings tab, or --bind %1=KEY)</source>
+        <extracomment>%1 the uniform&apos;s name; %2 the keys it could be bound to (model-view, projection)</extracomment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>the scene feeds nothing to %1: it stays 0 unless you set it in the Uniforms panel; bind it to one of %2 (the Bindings tab, or --bind %1=KEY)</source>
+        <extracomment>%1 the uniform&apos;s name; %2 the keys it could be bound to (light-position-world)</extracomment>
         <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
     <name>lb::UniformPanel</name>
     <message>
-        <location filename="../../widgets/uniform_panel.cpp" line="+80"/>
+        <location filename="../../widgets/uniform_panel.cpp" line="+70"/>
         <source>The program has no uniforms of its own. A uniform that no panel feeds gets a control here.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5347,7 +5701,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../widgets/viewport.cpp" line="+78"/>
+        <location filename="../../widgets/viewport.cpp" line="+94"/>
         <source>The renderer could not start:
 %1</source>
         <translation type="unfinished"></translation>

@@ -95,6 +95,329 @@
     </message>
 </context>
 <context>
+    <name>lb::BindingPanel</name>
+    <message>
+        <location filename="../../widgets/binding_panel.cpp" line="+24"/>
+        <source>Vertex positions (location 0)</source>
+        <translation>Posições dos vértices (location 0)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Vertex normals (location 1)</source>
+        <translation>Normais dos vértices (location 1)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Texture coordinates (location 2)</source>
+        <translation>Coordenadas de textura (location 2)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Vertex colours (location 3)</source>
+        <translation>Cores dos vértices (location 3)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Nothing: the mesh has no array at location %1</source>
+        <extracomment>%1 the location number a vertex input was linked at</extracomment>
+        <translation>Nada: a malha não tem array na location %1</translation>
+    </message>
+    <message>
+        <location line="+44"/>
+        <source>A vertex input is fed by its location: layout(location = N), or the slot its name gives (aPos, a_normal, inTexCoord...).</source>
+        <translation>Uma entrada de vértice é alimentada pela sua location: layout(location = N), ou o lugar que o seu nome indica (aPos, a_normal, inTexCoord...).</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>The built-in program draws: its inputs are the panels&apos;. A program of your own shows each input here with what feeds it, and you can choose what does.</source>
+        <translation>O programa incluído desenha: as suas entradas são as dos painéis. Um programa seu mostra aqui cada entrada com o que a alimenta, e pode escolher o que a alimenta.</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+5"/>
+        <source>%n uniform(s) fed nothing: choose what feeds them; the choice is saved with the scene.</source>
+        <extracomment>%n how many uniforms nothing feeds</extracomment>
+        <translation>
+            <numerusform>%n uniform não é alimentado: escolha o que o alimenta; a escolha é guardada com a cena.</numerusform>
+            <numerusform>%n uniforms não são alimentados: escolha o que os alimenta; a escolha é guardada com a cena.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>What feeds each input of the program, chosen by its name; change a choice to feed another value. The choice is saved with the scene.</source>
+        <translation>O que alimenta cada entrada do programa, escolhido pelo seu nome; mude uma escolha para alimentar outro valor. A escolha é guardada com a cena.</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>By its name: %1</source>
+        <extracomment>the entry that lets the uniform&apos;s name decide what feeds it; %1 what that is</extracomment>
+        <translation>Pelo nome: %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>By its name: nothing (the name is no convention&apos;s)</source>
+        <translation>Pelo nome: nada (o nome não é de nenhuma convenção)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Not fed: its own value (the Uniforms panel)</source>
+        <translation>Não alimentado: o seu próprio valor (o painel Uniforms)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Not fed</source>
+        <translation>Não alimentado</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>Fed with: %1</source>
+        <translation>Alimentado com: %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Fed nothing: it stays 0 and decides the picture. Choose what the scene gives.</source>
+        <translation>Nada o alimenta: fica a 0 e decide a imagem. Escolha o que a cena dá.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Fed nothing by the scene: its own value (the Uniforms panel&apos;s control, or its initialiser).</source>
+        <translation>A cena não o alimenta: o seu próprio valor (o controlo do painel Uniforms, ou o seu inicializador).</translation>
+    </message>
+</context>
+<context>
+    <name>lb::Bindings</name>
+    <message>
+        <location filename="../../render/glsl/bindings.cpp" line="+26"/>
+        <source>Model-view matrix (camera from object)</source>
+        <translation>Matriz modelview (câmara a partir do objeto)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Normal matrix (inverse transpose of model-view)</source>
+        <translation>Matriz das normais (inversa transposta da modelview)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>View matrix (camera from world)</source>
+        <translation>Matriz de vista (câmara a partir do mundo)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>View&apos;s normal matrix (inverse transpose of view)</source>
+        <translation>Matriz das normais da vista (inversa transposta da vista)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Projection matrix</source>
+        <translation>Matriz de projeção</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Light position, in the Light panel&apos;s frame (x, y, z, w)</source>
+        <translation>Posição da luz, no referencial do painel Luz (x, y, z, w)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Light position (camera coordinates)</source>
+        <translation>Posição da luz (coordenadas da câmara)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Light&apos;s ambient colour Ia</source>
+        <translation>Cor ambiente da luz Ia</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Light&apos;s diffuse colour Id</source>
+        <translation>Cor difusa da luz Id</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Light&apos;s specular colour Is</source>
+        <translation>Cor especular da luz Is</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Material&apos;s ambient colour Ka</source>
+        <translation>Cor ambiente do material Ka</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Material&apos;s diffuse colour Kd</source>
+        <translation>Cor difusa do material Kd</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Material&apos;s specular colour Ks</source>
+        <translation>Cor especular do material Ks</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Shininess</source>
+        <translation>Brilho</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Light&apos;s frame (0 camera, 1 world, 2 object)</source>
+        <translation>Referencial da luz (0 câmara, 1 mundo, 2 objeto)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Light on (1) or off (0)</source>
+        <translation>Luz ligada (1) ou desligada (0)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Specular model (0 Phong, 1 Blinn-Phong)</source>
+        <translation>Modelo especular (0 Phong, 1 Blinn-Phong)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Projection (0 perspective, 1 parallel)</source>
+        <translation>Projeção (0 perspetiva, 1 paralela)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Lighting on (1) or off (0)</source>
+        <translation>Iluminação ligada (1) ou desligada (0)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Vertex colours on (1) or off (0)</source>
+        <translation>Cores dos vértices ligadas (1) ou desligadas (0)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Texture on (1) or off (0)</source>
+        <translation>Textura ligada (1) ou desligada (0)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The object&apos;s texture (unit 0)</source>
+        <translation>A textura do objeto (unidade 0)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Attenuation (kc, kl, kq)</source>
+        <translation>Atenuação (kc, kl, kq)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Spot&apos;s axis, in the light&apos;s frame</source>
+        <translation>Eixo do foco, no referencial da luz</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Spot&apos;s cut-off angle (degrees)</source>
+        <translation>Ângulo de corte do foco (graus)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Cosine of the spot&apos;s cut-off angle</source>
+        <translation>Cosseno do ângulo de corte do foco</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Spot&apos;s exponent</source>
+        <translation>Expoente do foco</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Ambient term on (1) or off (0)</source>
+        <translation>Termo ambiente ligado (1) ou desligado (0)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Diffuse term on (1) or off (0)</source>
+        <translation>Termo difuso ligado (1) ou desligado (0)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Specular term on (1) or off (0)</source>
+        <translation>Termo especular ligado (1) ou desligado (0)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Show choice (0 the colour, 1 N, 2 L...)</source>
+        <translation>Escolha do que mostrar (0 a cor, 1 N, 2 L...)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Model matrix (world from object)</source>
+        <translation>Matriz do modelo (mundo a partir do objeto)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Model&apos;s normal matrix (inverse transpose of model)</source>
+        <translation>Matriz das normais do modelo (inversa transposta do modelo)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Projection times view</source>
+        <translation>Projeção vezes vista</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Projection times model-view (MVP)</source>
+        <translation>Projeção vezes modelview (MVP)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Light position (world coordinates)</source>
+        <translation>Posição da luz (coordenadas do mundo)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Direction the light shines (world)</source>
+        <translation>Direção em que a luz brilha (mundo)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Direction towards the light (world, unit)</source>
+        <translation>Direção para a luz (mundo, unitária)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Camera position (world coordinates)</source>
+        <translation>Posição da câmara (coordenadas do mundo)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Ia times Ka</source>
+        <translation>Ia vezes Ka</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Id times Kd</source>
+        <translation>Id vezes Kd</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Is times Ks</source>
+        <translation>Is vezes Ks</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Attenuation&apos;s constant factor kc</source>
+        <translation>Fator constante da atenuação kc</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Attenuation&apos;s linear factor kl</source>
+        <translation>Fator linear da atenuação kl</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Attenuation&apos;s quadratic factor kq</source>
+        <translation>Fator quadrático da atenuação kq</translation>
+    </message>
+    <message>
+        <location line="+125"/>
+        <source>the binding %1=%2 is not used: %1 is not of the type that %2 gives (a matrix, numbers, a texture)</source>
+        <extracomment>%1 the uniform&apos;s name, %2 the key chosen for it (model-view, light-diffuse)</extracomment>
+        <translation>a ligação %1=%2 não é usada: %1 não é do tipo que %2 dá (uma matriz, números, uma textura)</translation>
+    </message>
+</context>
+<context>
     <name>lb::BoundedRead</name>
     <message>
         <location filename="../../render/model/io/bounded_read.cpp" line="+35"/>
@@ -1029,6 +1352,19 @@
         <location line="+20"/>
         <source>a settings file</source>
         <translation>um ficheiro de definições</translation>
+    </message>
+</context>
+<context>
+    <name>lb::FrameLook</name>
+    <message>
+        <location filename="../../render/model/measure/frame_look.cpp" line="+50"/>
+        <source>your program draws nothing: every pixel of the frame is the background (the object is outside the view, or a matrix fed nothing collapses it; the Bindings tab shows what feeds each input)</source>
+        <translation>o seu programa não desenha nada: cada píxel da imagem é o fundo (o objeto está fora da vista, ou uma matriz não alimentada colapsa-o; o separador Ligações mostra o que alimenta cada entrada)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>your program draws the object all black: if it is not meant to be, a light or colour input it reads may be fed nothing (the Bindings tab shows what feeds each input)</source>
+        <translation>o seu programa desenha o objeto todo preto: se não for essa a intenção, talvez nada alimente uma entrada de luz ou de cor que ele lê (o separador Ligações mostra o que alimenta cada entrada)</translation>
     </message>
 </context>
 <context>
@@ -2096,7 +2432,7 @@
 <context>
     <name>lb::MainWindow</name>
     <message>
-        <location filename="../../app/window/main_window.cpp" line="+83"/>
+        <location filename="../../app/window/main_window.cpp" line="+85"/>
         <source>Light</source>
         <translation>Luz</translation>
     </message>
@@ -2119,6 +2455,11 @@
         <location line="+1"/>
         <source>Uniforms</source>
         <translation>Uniforms</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Bindings</source>
+        <translation>Ligações</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -2184,7 +2525,7 @@
         <translation>O programa no editor (%1) usa sombreamento de Phong (por fragmento), seja qual for a escolha aqui. Carregue uma predefinição ou use Repor Tudo para mudar o sombreamento.</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+37"/>
         <source>%1, step %2</source>
         <translation>%1, passo %2</translation>
     </message>
@@ -3890,7 +4231,7 @@
         <translation>o fragment shader não compila (o controlador não indicou o motivo)</translation>
     </message>
     <message>
-        <location line="+282"/>
+        <location line="+280"/>
         <source>the program does not link (no reason given)</source>
         <translation>a ligação (link) do programa falhou (sem motivo indicado)</translation>
     </message>
@@ -3905,7 +4246,7 @@
         <translation>o fragment shader não escreve nenhuma cor: atribua gl_FragColor (sem #version, #version 100) ou declare um out vec4 (#version 300 es, 330 e posteriores)</translation>
     </message>
     <message>
-        <location line="+49"/>
+        <location line="+55"/>
         <source>a global variable initialised from a uniform or another variable: GLSL ES 1.00 asks for a constant, browsers run it (WebGL warns); lightbench runs this program translated to GLSL 3.30 (the driver said: %1)</source>
         <translation>uma variável global inicializada a partir de um uniform ou de outra variável: o GLSL ES 1.00 exige uma constante, os browsers executam-na (o WebGL avisa); o lightbench executa este programa traduzido para GLSL 3.30 (o driver disse: %1)</translation>
     </message>
@@ -4020,7 +4361,7 @@
 <context>
     <name>lb::Scene</name>
     <message>
-        <location filename="../../render/model/scene/scene.cpp" line="+412"/>
+        <location filename="../../render/model/scene/scene.cpp" line="+413"/>
         <source>cube</source>
         <translation>cubo</translation>
     </message>
@@ -4405,7 +4746,12 @@
         <translation>kc, kl e kq todos a 0</translation>
     </message>
     <message>
-        <location line="+126"/>
+        <location line="+80"/>
+        <source>not one of the values the scene feeds (%1)</source>
+        <translation>não é nenhum dos valores que a cena alimenta (%1)</translation>
+    </message>
+    <message>
+        <location line="+76"/>
         <location line="+33"/>
         <source>not an array</source>
         <translation>não é um array</translation>
@@ -4442,12 +4788,14 @@
         <translation>objeto inexistente; é usado o primeiro</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="-159"/>
+        <location line="+187"/>
         <source>too many: %1 more than the %2 kept</source>
         <translation>demasiados: %1 além dos %2 mantidos</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="-180"/>
+        <location line="+187"/>
         <source>not a uniform&apos;s name</source>
         <translation>não é o nome de um uniform</translation>
     </message>
@@ -5232,16 +5580,22 @@
 <context>
     <name>lb::UnfedInputs</name>
     <message>
-        <location filename="../../render/glsl/unfed_inputs.cpp" line="+68"/>
-        <source>the scene feeds nothing to the matrix %1: it stays all zeros, and whatever it multiplies collapses to nothing on screen; the matrices fed have these names: %2</source>
-        <extracomment>%1 the uniform&apos;s name; %2 the names of the matrices the workbench feeds</extracomment>
-        <translation>a cena não alimenta a matriz %1: fica toda a zeros, e tudo o que ela multiplica reduz-se a nada no ecrã; as matrizes alimentadas têm estes nomes: %2</translation>
+        <location filename="../../render/glsl/unfed_inputs.cpp" line="+95"/>
+        <source>the scene feeds nothing to the matrix %1: it stays all zeros, and whatever it multiplies collapses to nothing on screen; bind it to one of %2 (the Bindings tab, or --bind %1=KEY)</source>
+        <extracomment>%1 the uniform&apos;s name; %2 the keys it could be bound to (model-view, projection)</extracomment>
+        <translation>a cena não alimenta a matriz %1: fica toda a zeros, e o que ela multiplica colapsa em nada no ecrã; ligue-a a um de %2 (o separador Ligações, ou --bind %1=KEY)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>the scene feeds nothing to %1: it stays 0 unless you set it in the Uniforms panel; bind it to one of %2 (the Bindings tab, or --bind %1=KEY)</source>
+        <extracomment>%1 the uniform&apos;s name; %2 the keys it could be bound to (light-position-world)</extracomment>
+        <translation>a cena não alimenta %1: fica a 0 a menos que o defina no painel Uniforms; ligue-o a um de %2 (o separador Ligações, ou --bind %1=KEY)</translation>
     </message>
 </context>
 <context>
     <name>lb::UniformPanel</name>
     <message>
-        <location filename="../../widgets/uniform_panel.cpp" line="+80"/>
+        <location filename="../../widgets/uniform_panel.cpp" line="+70"/>
         <source>The program has no uniforms of its own. A uniform that no panel feeds gets a control here.</source>
         <translation>O programa não tem uniforms próprios. Um uniform que nenhum painel alimenta recebe aqui um controlo.</translation>
     </message>
@@ -5359,7 +5713,7 @@
         <translation>desenhar um fotograma com este programa demoraria cerca de %1 a %2x%3 (o orçamento é %4): um ciclo infinito ou muito longo?</translation>
     </message>
     <message>
-        <location filename="../../widgets/viewport.cpp" line="+78"/>
+        <location filename="../../widgets/viewport.cpp" line="+94"/>
         <source>The renderer could not start:
 %1</source>
         <translation>Não foi possível iniciar o renderizador:

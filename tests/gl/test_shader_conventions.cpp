@@ -551,10 +551,10 @@ private slots:
         }
         const ProgramBuild unbound = m_offscreen.useProgram(vertex, fragment);
         QVERIFY2(unbound.ok(), qPrintable(unbound.log()));
-        for (const char *named :
-             {"uObjToWorld", "uWorldToView", "uViewToClip", "uEye=KEY", "uLampColour=KEY"})
+        for (const char *named : {"uObjToWorld", "uWorldToView", "uViewToClip", "uEye=KEY",
+                                  "uLamp=KEY", "uLampColour=KEY"})
             QVERIFY2(unbound.log().contains(named), qPrintable(unbound.log()));
-        QCOMPARE(unbound.diagnostics.size(), std::size_t(5));
+        QCOMPARE(unbound.diagnostics.size(), std::size_t(6));
         const Scene scene = basicLightingScene(lightIn(testScene(), LightFrame::World));
         // The frame, collapsed by the zero matrices, is said to show nothing.
         m_offscreen.renderer().lookAtNextFrame();
