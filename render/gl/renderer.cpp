@@ -309,10 +309,11 @@ void Renderer::drawView(const Scene &scene, const BuiltProgram &program, QRect v
 
     const float aspect = float(view.width()) / float(view.height());
     drawObjects(scene, program, aspect);
-    if (m_lookPending && &program == &m_user && view == clip &&
+    // Looked at once every visible object is there to draw (a mesh still loading is no
+    // program's fault) and at least one is.
+    if (m_lookPending && &program == &m_user && view == clip && drawsEveryVisibleObject(scene) &&
         scene.compare.mode == CompareMode::Off) {
         std::vector<std::uint8_t> rgba(std::size_t(view.width()) * std::size_t(view.height()) * 4);
-        glPixelStorei(GL_PACK_ALIGNMENT, 1);
         glReadPixels(view.x(), frameHeight - view.y() - view.height(), view.width(), view.height(),
                      GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
         m_frameLook = lb::frameLook(rgba.data(), rgba.size() / 4);
@@ -331,6 +332,20 @@ void Renderer::drawView(const Scene &scene, const BuiltProgram &program, QRect v
                 m_overlays.drawLightMarker(*this, scene.lights[std::size_t(i)], i, frames);
     }
     glDisable(GL_DEPTH_TEST);
+}
+
+bool Renderer::drawsEveryVisibleObject(const Scene &scene) const
+{
+    if (m_objects.size() < scene.objects.size())
+        return false;
+    bool any = false;
+    for (std::size_t i = 0; i < scene.objects.size(); ++i)
+        if (scene.objects[i].visible) {
+            if (!m_objects[i]->gpu.hasTriangles())
+                return false;
+            any = true;
+        }
+    return any;
 }
 
 void Renderer::drawObjects(const Scene &scene, const BuiltProgram &program, float aspect)

@@ -151,6 +151,7 @@ private:
     // The objects of `scene`, each with its own matrices, material and texture.
     void drawObjects(const Scene &scene, const BuiltProgram &program, float aspect);
     void drawNormalLines(const Scene &scene, float aspect); // the objects' that show them
+    bool drawsEveryVisibleObject(const Scene &scene) const;
     glm::ivec3 readPixel(QPoint framePixel, int frameHeight);
     void readSideBAtProbe(const Scene &scene, QSize pixels);
     // One side: cleared and drawn in `view` (top-left origin in a frame `frameHeight` high),
