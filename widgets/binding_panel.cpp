@@ -4,9 +4,9 @@
 #include "unfed_inputs.h"
 
 #include <QComboBox>
-#include <QMetaObject>
 #include <QFormLayout>
 #include <QLabel>
+#include <QMetaObject>
 
 #include <algorithm>
 
@@ -62,8 +62,24 @@ QComboBox *BindingPanel::choiceFor(const QString &uniform) const
     return nullptr;
 }
 
+BindingPanel::Shown BindingPanel::shownOf(const ProgramBuild &build, bool choosable)
+{
+    Shown shown;
+    for (const ActiveUniform &u : build.uniforms)
+        shown.uniforms.emplace_back(u.name, int(u.kind), u.width, u.size, u.semantic, u.byName,
+                                    u.bound);
+    for (const ActiveInput &a : build.attributes)
+        shown.attributes.emplace_back(a.name, a.location);
+    shown.choosable = choosable;
+    return shown;
+}
+
 void BindingPanel::setProgram(const ProgramBuild &build, bool choosable)
 {
+    Shown shown = shownOf(build, choosable);
+    if (m_shown && *m_shown == shown)
+        return;
+    m_shown = std::move(shown);
     // Each list under its declaration, the dock's whole width: the declarations are long and so
     // are the entries (the value, its frame and its key).
     m_form->setRowWrapPolicy(QFormLayout::WrapAllRows);

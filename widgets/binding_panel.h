@@ -11,6 +11,9 @@
 
 #include <QWidget>
 
+#include <optional>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 class QComboBox;
@@ -34,6 +37,21 @@ public:
     int unfedCount() const { return m_unfed; }
 
 private:
+    // What the rows show: a build whose inputs are the same ones, fed the same way, keeps them
+    // (a typed edit builds the program again with the same inputs, many times a minute).
+    struct Shown
+    {
+        std::vector<std::tuple<QString, int, int, int, std::optional<Semantic>,
+                               std::optional<Semantic>, bool>>
+            uniforms;
+        std::vector<std::pair<QString, int>> attributes;
+        bool choosable = true;
+        bool operator==(const Shown &o) const
+        {
+            return uniforms == o.uniforms && attributes == o.attributes && choosable == o.choosable;
+        }
+    };
+    static Shown shownOf(const ProgramBuild &build, bool choosable);
     void addUniform(const ActiveUniform &u, bool choosable);
     void choose(const QString &uniform, int index, QComboBox *list);
 
@@ -43,6 +61,7 @@ private:
     std::vector<QWidget *> m_rows;
     std::vector<std::pair<QString, QComboBox *>> m_lists;
     int m_unfed = 0;
+    std::optional<Shown> m_shown;
 };
 
 } // namespace lb

@@ -6,6 +6,7 @@
 #include "window_fixture.h"
 
 #include <QComboBox>
+#include <QDockWidget>
 #include <QElapsedTimer>
 #include <QFile>
 #include <QLabel>
@@ -540,6 +541,7 @@ private slots:
         QVERIFY(listed("uToClip") && listed("uTurnNormals"));
         QTRY_VERIFY_WITH_TIMEOUT(listed("draws nothing"), 10000);
         BindingPanel *b = m_window->bindingPanel();
+        m_window->findChild<QDockWidget *>("bindingDock")->raise(); // as a click on its tab
         QCOMPARE(b->unfedCount(), 2);
         QVERIFY(b->findChild<QLabel *>()->text().contains("2"));
         const auto choose = [b](const char *name, const char *key) {
