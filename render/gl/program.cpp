@@ -415,8 +415,20 @@ BuiltProgram buildTranslatedOrNot(QOpenGLExtraFunctions &gl, const QString &vert
     if (build.hasErrors())
         return result;
     build.linked = true;
-    for (const ActiveAttribute &a : attributes)
+    std::vector<PlacedInput> placed;
+    for (const ActiveAttribute &a : attributes) {
         build.attributes.push_back({a.name, int(a.location)});
+        const auto &table = attributeBindings();
+        const auto known = std::find_if(table.begin(), table.end(), [&](const AttributeBinding &b) {
+            return a.name == QLatin1String(b.name);
+        });
+        const std::optional<AttributeSlot> slot = known != table.end()
+                                                      ? std::optional<AttributeSlot>(known->slot)
+                                                      : slotByNameParts(a.name);
+        placed.push_back({a.name, int(a.location), slot ? int(*slot) : -1});
+    }
+    for (const Diagnostic &d : misplacedInputWarnings(placed, vertexSource))
+        build.diagnostics.push_back(d);
     build.uniforms = activeUniforms(gl, program.id());
     for (const Diagnostic &d : applyBindings(build.uniforms, bindings))
         build.diagnostics.push_back(d);

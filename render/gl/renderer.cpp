@@ -350,6 +350,10 @@ bool Renderer::drawsEveryVisibleObject(const Scene &scene) const
 
 void Renderer::drawObjects(const Scene &scene, const BuiltProgram &program, float aspect)
 {
+    // The view is opaque, as a desktop window's framebuffer is: the colour a program writes is
+    // the colour shown, whatever its alpha. opengl-tutorial.org's `out vec3 color` leaves alpha
+    // undefined (llvmpipe writes 0), and a frame read as premultiplied was black there.
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);
     const int count = std::min(int(scene.objects.size()), int(m_objects.size()));
     for (int i = 0; i < count; ++i) {
         const ObjectSettings &object = scene.objects[std::size_t(i)];
@@ -372,6 +376,7 @@ void Renderer::drawObjects(const Scene &scene, const BuiltProgram &program, floa
         glFrontFace(GL_CCW);
         glBindTexture(GL_TEXTURE_2D, 0);
     }
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 }
 
 void Renderer::drawNormalLines(const Scene &scene, float aspect)

@@ -144,6 +144,15 @@ const Entry kTable[] = {
     {"u_light", S::LightPositionWorld, Sh::Number, C::GlslViewer},
     {"u_camera", S::CameraPositionWorld, Sh::Number, C::GlslViewer},
 
+    // opengl-tutorial.org (its MVP is the Cookbook's, above): the matrices by one letter, the
+    // light in world space; its layout puts the texture coordinates at 1 and the normal at 2,
+    // the other way round from LearnOpenGL's (the build says so: misplacedInputWarnings).
+    {"M", S::Model, Sh::Matrix, C::OpenGlTutorial},
+    {"V", S::View, Sh::Matrix, C::OpenGlTutorial},
+    {"P", S::Projection, Sh::Matrix, C::OpenGlTutorial},
+    {"LightPosition_worldspace", S::LightPositionWorld, Sh::Number, C::OpenGlTutorial},
+    {"myTextureSampler", S::Sampler, Sh::Sampler, C::OpenGlTutorial},
+
     // The course's uProjection above is the int switch; declared as a mat4 (a name many
     // students give the projection matrix) it is the matrix.
     {"uProjection", S::Projection, Sh::Matrix, C::Course},

@@ -76,6 +76,7 @@ enum class Convention {
     AngelThreeJs,      // Angel's textbook (MV.js) and three.js: vPosition, modelViewMatrix
     Cookbook,          // the OpenGL 4 Shading Language Cookbook: VertexPosition, Light.Position
     GlslViewer,        // glslViewer: a_position, u_modelViewProjectionMatrix, u_light
+    OpenGlTutorial,    // opengl-tutorial.org: MVP, M, V, LightPosition_worldspace
 };
 
 // The shape a uniform is declared with, for names that mean different things by type

@@ -19,10 +19,12 @@ struct UnfedMessages
     Q_DECLARE_TR_FUNCTIONS(lb::UnfedInputs)
 };
 
-// The 1-based line of `name`'s uniform declaration in `source`, or 0.
-int declarationLine(const QString &source, const QString &name)
+// The 1-based line of `name`'s declaration as a `qualifier` (uniform; in or attribute) in
+// `source`, or 0.
+int declarationLine(const QString &source, const QString &name,
+                    const QString &qualifier = "uniform")
 {
-    const QRegularExpression declaration("\\buniform\\b[^;{}]*\\b" +
+    const QRegularExpression declaration("\\b(" + qualifier + ")\\b[^;{}]*\\b" +
                                          QRegularExpression::escape(name) + "\\b");
     const QString text = withoutComments(source);
     const QRegularExpressionMatch m = declaration.match(text);
@@ -56,6 +58,38 @@ bool allZero(const std::vector<float> &values)
 }
 
 } // namespace
+
+std::vector<Diagnostic> misplacedInputWarnings(const std::vector<PlacedInput> &inputs,
+                                               const QString &vertexSource)
+{
+    // The arrays as the messages name them, by slot.
+    const QString arrays[] = {UnfedMessages::tr("the positions"), UnfedMessages::tr("the normals"),
+                              UnfedMessages::tr("the texture coordinates"),
+                              UnfedMessages::tr("the vertex colours")};
+    std::vector<Diagnostic> warnings;
+    for (const PlacedInput &in : inputs) {
+        if (in.slotOfName < 0 || in.slotOfName > 3 || in.location < 0 ||
+            in.location == in.slotOfName)
+            continue;
+        Diagnostic d;
+        d.severity = Diagnostic::Severity::Warning;
+        d.stage = ShaderStage::Vertex;
+        d.line = declarationLine(vertexSource, in.name, "in|attribute");
+        const QString there =
+            in.location <= 3 ? arrays[in.location] : UnfedMessages::tr("no array of the mesh");
+        //: %1 the input's name; %2 its location; %3 what the mesh gives there; %4 what its
+        //: name says; %5 the location that has it
+        d.message = UnfedMessages::tr("%1 is at location %2, where the mesh gives %3, though its "
+                                      "name says %4 (at location %5 here): write "
+                                      "layout(location = %5) to read them")
+                        .arg(in.name)
+                        .arg(in.location)
+                        .arg(there, arrays[in.slotOfName])
+                        .arg(in.slotOfName);
+        warnings.push_back(d);
+    }
+    return warnings;
+}
 
 bool isUnfed(const ActiveUniform &u)
 {

@@ -18,6 +18,19 @@
 
 namespace lb {
 
+// A vertex input whose name says one mesh array (`slotOfName`: program.h's slots, 0 positions,
+// 1 normals, 2 texture coordinates, 3 colours) but that its layout(location = N) puts at
+// another: it reads that other array (opengl-tutorial.org's normal at 2 reads the texture
+// coordinates). Named on its declaration's line.
+struct PlacedInput
+{
+    QString name;
+    int location = -1;
+    int slotOfName = -1;
+};
+std::vector<Diagnostic> misplacedInputWarnings(const std::vector<PlacedInput> &inputs,
+                                               const QString &vertexSource);
+
 // Whether `u` is an input the scene feeds nothing that decides the picture (above).
 bool isUnfed(const ActiveUniform &u);
 

@@ -123,7 +123,7 @@
         <translation>Nichts: das Mesh hat kein Array an location %1</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+60"/>
         <source>A vertex input is fed by its location: layout(location = N), or the slot its name gives (aPos, a_normal, inTexCoord...).</source>
         <translation>Ein Vertex-Eingang wird über seine location gespeist: layout(location = N) oder der Platz, den sein Name sagt (aPos, a_normal, inTexCoord...).</translation>
     </message>
@@ -4246,7 +4246,7 @@
         <translation>der Fragment-Shader schreibt keine Farbe: Weisen Sie gl_FragColor zu (ohne #version, #version 100) oder deklarieren Sie ein out vec4 (#version 300 es, 330 und neuer)</translation>
     </message>
     <message>
-        <location line="+55"/>
+        <location line="+67"/>
         <source>a global variable initialised from a uniform or another variable: GLSL ES 1.00 asks for a constant, browsers run it (WebGL warns); lightbench runs this program translated to GLSL 3.30 (the driver said: %1)</source>
         <translation>eine globale Variable, die aus einer Uniform oder einer anderen Variable initialisiert wird: GLSL ES 1.00 verlangt eine Konstante, Browser führen es aus (WebGL warnt); lightbench führt dieses Programm nach GLSL 3.30 übersetzt aus (der Treiber sagte: %1)</translation>
     </message>
@@ -5580,7 +5580,38 @@
 <context>
     <name>lb::UnfedInputs</name>
     <message>
-        <location filename="../../render/glsl/unfed_inputs.cpp" line="+95"/>
+        <location filename="../../render/glsl/unfed_inputs.cpp" line="+66"/>
+        <source>the positions</source>
+        <translation>die Positionen</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>the normals</source>
+        <translation>die Normalen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the texture coordinates</source>
+        <translation>die Texturkoordinaten</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the vertex colours</source>
+        <translation>die Vertex-Farben</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>no array of the mesh</source>
+        <translation>kein Array des Meshes</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 is at location %2, where the mesh gives %3, though its name says %4 (at location %5 here): write layout(location = %5) to read them</source>
+        <extracomment>%1 the input&apos;s name; %2 its location; %3 what the mesh gives there; %4 what its name says; %5 the location that has it</extracomment>
+        <translation>%1 liegt an location %2, wo das Mesh %3 gibt, obwohl sein Name %4 sagt (hier an location %5): schreiben Sie layout(location = %5), um sie zu lesen</translation>
+    </message>
+    <message>
+        <location line="+47"/>
         <source>the scene feeds nothing to the matrix %1: it stays all zeros, and whatever it multiplies collapses to nothing on screen; bind it to one of %2 (the Bindings tab, or --bind %1=KEY)</source>
         <extracomment>%1 the uniform&apos;s name; %2 the keys it could be bound to (model-view, projection)</extracomment>
         <translation>die Szene speist nichts in die Matrix %1: sie bleibt ganz null, und was sie multipliziert, fällt auf dem Bildschirm zu nichts zusammen; binden Sie sie an eines von %2 (der Tab Bindungen oder --bind %1=KEY)</translation>

@@ -123,7 +123,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+60"/>
         <source>A vertex input is fed by its location: layout(location = N), or the slot its name gives (aPos, a_normal, inTexCoord...).</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4238,7 +4238,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+55"/>
+        <location line="+67"/>
         <source>a global variable initialised from a uniform or another variable: GLSL ES 1.00 asks for a constant, browsers run it (WebGL warns); lightbench runs this program translated to GLSL 3.30 (the driver said: %1)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5568,7 +5568,38 @@
 <context>
     <name>lb::UnfedInputs</name>
     <message>
-        <location filename="../../render/glsl/unfed_inputs.cpp" line="+95"/>
+        <location filename="../../render/glsl/unfed_inputs.cpp" line="+66"/>
+        <source>the positions</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>the normals</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the texture coordinates</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the vertex colours</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>no array of the mesh</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 is at location %2, where the mesh gives %3, though its name says %4 (at location %5 here): write layout(location = %5) to read them</source>
+        <extracomment>%1 the input&apos;s name; %2 its location; %3 what the mesh gives there; %4 what its name says; %5 the location that has it</extracomment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+47"/>
         <source>the scene feeds nothing to the matrix %1: it stays all zeros, and whatever it multiplies collapses to nothing on screen; bind it to one of %2 (the Bindings tab, or --bind %1=KEY)</source>
         <extracomment>%1 the uniform&apos;s name; %2 the keys it could be bound to (model-view, projection)</extracomment>
         <translation type="unfinished"></translation>

@@ -123,7 +123,7 @@
         <translation>Nada: a malha não tem array na location %1</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+60"/>
         <source>A vertex input is fed by its location: layout(location = N), or the slot its name gives (aPos, a_normal, inTexCoord...).</source>
         <translation>Uma entrada de vértice é alimentada pela sua location: layout(location = N), ou o lugar que o seu nome indica (aPos, a_normal, inTexCoord...).</translation>
     </message>
@@ -4246,7 +4246,7 @@
         <translation>o fragment shader não escreve nenhuma cor: atribua gl_FragColor (sem #version, #version 100) ou declare um out vec4 (#version 300 es, 330 e posteriores)</translation>
     </message>
     <message>
-        <location line="+55"/>
+        <location line="+67"/>
         <source>a global variable initialised from a uniform or another variable: GLSL ES 1.00 asks for a constant, browsers run it (WebGL warns); lightbench runs this program translated to GLSL 3.30 (the driver said: %1)</source>
         <translation>uma variável global inicializada a partir de um uniform ou de outra variável: o GLSL ES 1.00 exige uma constante, os browsers executam-na (o WebGL avisa); o lightbench executa este programa traduzido para GLSL 3.30 (o driver disse: %1)</translation>
     </message>
@@ -5580,7 +5580,38 @@
 <context>
     <name>lb::UnfedInputs</name>
     <message>
-        <location filename="../../render/glsl/unfed_inputs.cpp" line="+95"/>
+        <location filename="../../render/glsl/unfed_inputs.cpp" line="+66"/>
+        <source>the positions</source>
+        <translation>as posições</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>the normals</source>
+        <translation>as normais</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the texture coordinates</source>
+        <translation>as coordenadas de textura</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the vertex colours</source>
+        <translation>as cores dos vértices</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>no array of the mesh</source>
+        <translation>nenhum array da malha</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 is at location %2, where the mesh gives %3, though its name says %4 (at location %5 here): write layout(location = %5) to read them</source>
+        <extracomment>%1 the input&apos;s name; %2 its location; %3 what the mesh gives there; %4 what its name says; %5 the location that has it</extracomment>
+        <translation>%1 está na location %2, onde a malha dá %3, embora o seu nome diga %4 (aqui na location %5): escreva layout(location = %5) para as ler</translation>
+    </message>
+    <message>
+        <location line="+47"/>
         <source>the scene feeds nothing to the matrix %1: it stays all zeros, and whatever it multiplies collapses to nothing on screen; bind it to one of %2 (the Bindings tab, or --bind %1=KEY)</source>
         <extracomment>%1 the uniform&apos;s name; %2 the keys it could be bound to (model-view, projection)</extracomment>
         <translation>a cena não alimenta a matriz %1: fica toda a zeros, e o que ela multiplica colapsa em nada no ecrã; ligue-a a um de %2 (o separador Ligações, ou --bind %1=KEY)</translation>

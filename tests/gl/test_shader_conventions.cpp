@@ -600,6 +600,63 @@ private slots:
         QCOMPARE(objectColor->byName, std::optional<Semantic>(Semantic::MaterialDiffuse));
     }
 
+    // opengl-tutorial.org's names (M, V, MVP, LightPosition_worldspace) are fed; its layout puts
+    // the normal at location 2, where the mesh gives texture coordinates: the build says so on
+    // the normal's line, and at location 1 (as the warning says) the surface is lit.
+    void openGlTutorialNamesAndItsLayout()
+    {
+        const QString vertex = R"(#version 330 core
+layout(location = 0) in vec3 vertexPosition_modelspace;
+layout(location = 2) in vec3 vertexNormal_modelspace;
+out vec3 normalCamera;
+out vec3 toLightCamera;
+uniform mat4 MVP;
+uniform mat4 V;
+uniform mat4 M;
+uniform vec3 LightPosition_worldspace;
+void main() {
+    gl_Position = MVP * vec4(vertexPosition_modelspace, 1.0);
+    vec3 p = (V * M * vec4(vertexPosition_modelspace, 1.0)).xyz;
+    toLightCamera = (V * vec4(LightPosition_worldspace, 1.0)).xyz - p;
+    normalCamera = (V * M * vec4(vertexNormal_modelspace, 0.0)).xyz;
+}
+)";
+        const QString fragment = R"(#version 330 core
+in vec3 normalCamera;
+in vec3 toLightCamera;
+out vec3 color;
+void main() {
+    color = vec3(0.8, 0.3, 0.2) * clamp(dot(normalize(normalCamera), normalize(toLightCamera)), 0.0, 1.0);
+}
+)";
+        const ProgramBuild misplaced = m_offscreen.useProgram(vertex, fragment);
+        QVERIFY2(misplaced.ok(), qPrintable(misplaced.log()));
+        for (const ActiveUniform &u : misplaced.uniforms)
+            QVERIFY2(u.semantic, qPrintable(u.name + " is fed nothing"));
+        QCOMPARE(misplaced.diagnostics.size(), std::size_t(1));
+        const Diagnostic &d = misplaced.diagnostics.front();
+        QCOMPARE(d.line, 3);
+        QVERIFY2(d.message.contains("vertexNormal_modelspace") &&
+                     d.message.contains("layout(location = 1)"),
+                 qPrintable(d.message));
+
+        QString moved = vertex;
+        moved.replace("layout(location = 2)", "layout(location = 1)");
+        const ProgramBuild placed = m_offscreen.useProgram(moved, fragment);
+        QVERIFY2(placed.ok() && placed.diagnostics.empty(), qPrintable(placed.log()));
+        // Lit as the reference's diffuse term with the fragment's colour as Kd: its normals go
+        // through V * M itself, so the object is turned, not squashed.
+        Scene scene = lightIn(testScene(), LightFrame::World);
+        scene.objects[0].scale = glm::vec3(1.0f);
+        scene.objects[0].material.kd = glm::vec3(0.8f, 0.3f, 0.2f);
+        scene.lights[0].colors.ia = glm::vec3(0.0f);
+        scene.lights[0].colors.id = glm::vec3(1.0f); // the program has no light colour
+        scene.shading.terms.specular = false;
+        const QString failure =
+            checkAgainstReference(m_offscreen, scene, "opengl-tutorial", 100, 0, kTolerance);
+        QVERIFY2(failure.isEmpty(), qPrintable(failure));
+    }
+
     // What a name in no table says about its slot ("vertex" names the stage, not the input).
     void attributeNamesSayTheirSlot()
     {
