@@ -1,6 +1,7 @@
 #include "program.h"
 
 #include "dialect.h"
+#include "legacy_builtins.h"
 #include "loops.h"
 #include "macro_expansion.h"
 #include "presets.h"
@@ -60,9 +61,13 @@ void addMessage(ProgramBuild &build, ShaderStage stage, const QString &message,
     build.diagnostics.push_back(d);
 }
 
+// What the driver is handed: the source as written (WebGL 1 under "#version 100"), WebGL 1
+// translated to GLSL 3.30, or a fixed-function era program translated (legacyProgram()).
+enum class Translation { None, WebGl1, Legacy };
+
 // Returns the shader, or none; the driver's messages go into `build` on the user's lines.
 GlShader compile(QOpenGLExtraFunctions &gl, ShaderStage stage, const QString &source,
-                 bool translate, ProgramBuild &build)
+                 Translation translation, ProgramBuild &build)
 {
     const bool vertex = stage == ShaderStage::Vertex; // compiled: vertex or fragment
     if (source.trimmed().isEmpty()) {
@@ -90,7 +95,10 @@ GlShader compile(QOpenGLExtraFunctions &gl, ShaderStage stage, const QString &so
         build.diagnostics.push_back(*refusal);
         return {};
     }
-    const PreparedSource prepared = prepareSource(source, stage, translate);
+    const PreparedSource prepared =
+        translation == Translation::Legacy
+            ? prepareLegacySource(source, stage)
+            : prepareSource(source, stage, translation == Translation::WebGl1);
     GlShader shader(
         gl.glCreateShader(stage == ShaderStage::Vertex ? GL_VERTEX_SHADER : GL_FRAGMENT_SHADER));
     const QByteArray utf8 = prepared.text.toUtf8();
@@ -100,9 +108,11 @@ GlShader compile(QOpenGLExtraFunctions &gl, ShaderStage stage, const QString &so
     gl.glCompileShader(shader.id());
     GLint status = GL_FALSE;
     gl.glGetShaderiv(shader.id(), GL_COMPILE_STATUS, &status);
-    for (const Diagnostic &d :
-         parseDriverLog(shaderLog(gl, shader.id()), stage, prepared.linesAdded))
+    for (Diagnostic d : parseDriverLog(shaderLog(gl, shader.id()), stage, prepared.linesAdded)) {
+        if (translation == Translation::Legacy)
+            d.message = withLegacyNames(d.message);
         build.diagnostics.push_back(d);
+    }
     if (status != GL_TRUE) {
         // Some drivers fail without a word; the user still needs one.
         if (!build.hasErrors())
@@ -358,9 +368,9 @@ double rawBuildMilliseconds(QOpenGLExtraFunctions &gl, const QString &vertexSour
 
 namespace {
 
-// buildProgram(), with WebGL 1 sources translated to GLSL 3.30 or not.
+// buildProgram(), with the sources translated to GLSL 3.30 or not.
 BuiltProgram buildTranslatedOrNot(QOpenGLExtraFunctions &gl, const QString &vertexSource,
-                                  const QString &fragmentSource, bool translate,
+                                  const QString &fragmentSource, Translation translate,
                                   const UniformBindings &bindings)
 {
     BuiltProgram result;
@@ -457,9 +467,15 @@ std::vector<const Diagnostic *> globalInitialiserErrors(const ProgramBuild &buil
 BuiltProgram buildProgram(QOpenGLExtraFunctions &gl, const QString &vertexSource,
                           const QString &fragmentSource, const UniformBindings &bindings)
 {
+    // GLSL 1.20's built-ins are fed as the names of the semantic table (legacy_builtins.h),
+    // whatever the driver's profile: Mesa's core context compiles them and leaves them unfed.
+    if (legacyProgram(vertexSource, fragmentSource))
+        return buildTranslatedOrNot(gl, vertexSource, fragmentSource, Translation::Legacy,
+                                    bindings);
     const bool translate = translatesWebGl1();
     BuiltProgram built =
-        buildTranslatedOrNot(gl, vertexSource, fragmentSource, translate, bindings);
+        buildTranslatedOrNot(gl, vertexSource, fragmentSource,
+                             translate ? Translation::WebGl1 : Translation::None, bindings);
     const std::vector<const Diagnostic *> initialisers = globalInitialiserErrors(built.build);
     if (built.build.ok() || translate || initialisers.empty() ||
         prepareSource(vertexSource).version != "100" ||
@@ -469,7 +485,7 @@ BuiltProgram buildProgram(QOpenGLExtraFunctions &gl, const QString &vertexSource
     // translated (both stages: an ES 1.00 stage does not link with a 3.30 one), and each line
     // the driver refused gets a warning instead.
     BuiltProgram translated =
-        buildTranslatedOrNot(gl, vertexSource, fragmentSource, true, bindings);
+        buildTranslatedOrNot(gl, vertexSource, fragmentSource, Translation::WebGl1, bindings);
     if (!translated.build.ok())
         return built;
     for (const Diagnostic *refused : initialisers) {

@@ -111,6 +111,11 @@ const SemanticRow kSemantics[] = {
      QT_TRANSLATE_NOOP("lb::Bindings", "Attenuation's linear factor kl")},
     {S::AttenuationQuadratic, "attenuation-quadratic", Sh::Number,
      QT_TRANSLATE_NOOP("lb::Bindings", "Attenuation's quadratic factor kq")},
+    {S::SpotDirectionEye, "spot-direction-camera", Sh::Number,
+     QT_TRANSLATE_NOOP("lb::Bindings", "Spot's axis (camera coordinates)")},
+    {S::HalfVectorEye, "half-vector-camera", Sh::Number,
+     QT_TRANSLATE_NOOP("lb::Bindings",
+                       "Half vector of a viewer far along +z (camera coordinates)")},
 };
 static_assert(std::size(kSemantics) == std::size_t(kLastSemantic) + 1,
               "one row for every semantic");

@@ -1,5 +1,6 @@
 #include "dialect.h"
 
+#include "legacy_builtins.h"
 #include "webgl1_translation.h"
 
 #include <QRegularExpression>
@@ -60,6 +61,27 @@ PreparedSource prepareSource(const QString &source, ShaderStage stage, bool tran
     p.dialect = Dialect::WebGL1Translated;
     p.version = "330 core";
     return p;
+}
+
+PreparedSource prepareLegacySource(const QString &source, ShaderStage stage)
+{
+    const TranslatedSource t = translateLegacyGlsl(source, stage);
+    PreparedSource p;
+    p.text = t.text;
+    p.linesAdded = t.linesAdded;
+    p.dialect = Dialect::LegacyTranslated;
+    p.version = "330 core";
+    return p;
+}
+
+bool legacyProgram(const QString &vertexSource, const QString &fragmentSource)
+{
+    for (const QString *source : {&vertexSource, &fragmentSource}) {
+        const QString version = prepareSource(*source).version;
+        if (version != "100" && version != "110" && version != "120" && version != "130")
+            return false;
+    }
+    return usesLegacyBuiltins(vertexSource) || usesLegacyBuiltins(fragmentSource);
 }
 
 } // namespace lb

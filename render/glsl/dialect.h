@@ -19,6 +19,7 @@ enum class Dialect {
     WebGL1Implicit,   // no #version: "#version 100" in front
     Versioned,        // as written
     WebGL1Translated, // no #version or "#version 100", rewritten as GLSL 3.30 core
+    LegacyTranslated, // GLSL 1.10 to 1.30 with fixed-function built-ins, as GLSL 3.30 core
 };
 
 struct PreparedSource
@@ -33,6 +34,14 @@ PreparedSource prepareSource(const QString &source);
 // The same, translated (webgl1_translation.h) when `translateWebGl1` and the source is WebGL 1
 // (no #version, or "#version 100").
 PreparedSource prepareSource(const QString &source, ShaderStage stage, bool translateWebGl1);
+// The same for one stage of a program that uses the fixed-function pipeline's built-ins
+// (legacyProgram()): translated to GLSL 3.30 with them declared (legacy_builtins.h).
+PreparedSource prepareLegacySource(const QString &source, ShaderStage stage);
+
+// Whether a program is desktop GLSL of the fixed-function era: either stage uses its built-ins
+// (gl_Vertex, gl_ModelViewMatrix, gl_LightSource...) and each has no #version, or 110, 120 or
+// 130. Both stages are then translated, so that they link with each other.
+bool legacyProgram(const QString &vertexSource, const QString &fragmentSource);
 
 // The source with comments blanked out (line structure kept), for simple textual checks.
 QString withoutComments(const QString &source);

@@ -153,6 +153,32 @@ const Entry kTable[] = {
     {"LightPosition_worldspace", S::LightPositionWorld, Sh::Number, C::OpenGlTutorial},
     {"myTextureSampler", S::Sampler, Sh::Sampler, C::OpenGlTutorial},
 
+    // GLSL 1.10 to 1.30's built-ins as the legacy translation names them (legacy_builtins.h):
+    // eye space, as the fixed-function pipeline computes; one light per array element.
+    {"lb_ModelViewMatrix", S::ModelView, Sh::Matrix, C::FixedFunction},
+    {"lb_ProjectionMatrix", S::Projection, Sh::Matrix, C::FixedFunction},
+    {"lb_ModelViewProjectionMatrix", S::ModelViewProjection, Sh::Matrix, C::FixedFunction},
+    {"lb_NormalMatrix", S::Normals, Sh::Matrix, C::FixedFunction},
+    {"lb_LightSource_position", S::LightPositionEye, Sh::Number, C::FixedFunction},
+    {"lb_LightSource_ambient", S::LightAmbient, Sh::Number, C::FixedFunction},
+    {"lb_LightSource_diffuse", S::LightDiffuse, Sh::Number, C::FixedFunction},
+    {"lb_LightSource_specular", S::LightSpecular, Sh::Number, C::FixedFunction},
+    {"lb_LightSource_halfVector", S::HalfVectorEye, Sh::Number, C::FixedFunction},
+    {"lb_LightSource_spotDirection", S::SpotDirectionEye, Sh::Number, C::FixedFunction},
+    {"lb_LightSource_spotExponent", S::SpotExponent, Sh::Number, C::FixedFunction},
+    {"lb_LightSource_spotCutoff", S::SpotCutoff, Sh::Number, C::FixedFunction},
+    {"lb_LightSource_spotCosCutoff", S::SpotCosCutoff, Sh::Number, C::FixedFunction},
+    {"lb_LightSource_constantAttenuation", S::AttenuationConstant, Sh::Number, C::FixedFunction},
+    {"lb_LightSource_linearAttenuation", S::AttenuationLinear, Sh::Number, C::FixedFunction},
+    {"lb_LightSource_quadraticAttenuation", S::AttenuationQuadratic, Sh::Number, C::FixedFunction},
+    {"lb_FrontLightProduct_ambient", S::AmbientProduct, Sh::Number, C::FixedFunction},
+    {"lb_FrontLightProduct_diffuse", S::DiffuseProduct, Sh::Number, C::FixedFunction},
+    {"lb_FrontLightProduct_specular", S::SpecularProduct, Sh::Number, C::FixedFunction},
+    {"lb_FrontMaterial_ambient", S::MaterialAmbient, Sh::Number, C::FixedFunction},
+    {"lb_FrontMaterial_diffuse", S::MaterialDiffuse, Sh::Number, C::FixedFunction},
+    {"lb_FrontMaterial_specular", S::MaterialSpecular, Sh::Number, C::FixedFunction},
+    {"lb_FrontMaterial_shininess", S::Shininess, Sh::Number, C::FixedFunction},
+
     // The course's uProjection above is the int switch; declared as a mat4 (a name many
     // students give the projection matrix) it is the matrix.
     {"uProjection", S::Projection, Sh::Matrix, C::Course},
@@ -206,6 +232,10 @@ std::vector<Semantic> controlledBy(Semantic semantic)
         return {S::LightPosition, S::LightPositionEye};
     case S::LightDirectionWorld:
         return {S::LightPosition, S::LightPositionEye, S::SpotDirection};
+    case S::SpotDirectionEye:
+        return {S::SpotDirection};
+    case S::HalfVectorEye:
+        return {S::LightPosition, S::LightPositionEye};
     case S::AmbientProduct:
         return {S::LightAmbient, S::MaterialAmbient};
     case S::DiffuseProduct:
@@ -249,6 +279,8 @@ bool isPerLight(Semantic semantic)
     case Semantic::AttenuationConstant:
     case Semantic::AttenuationLinear:
     case Semantic::AttenuationQuadratic:
+    case Semantic::SpotDirectionEye:
+    case Semantic::HalfVectorEye:
         return true;
     default:
         return false;

@@ -63,8 +63,11 @@ enum class Semantic {
     AttenuationConstant,   // float: light.constant, kc of lightAttenuation
     AttenuationLinear,     // float: light.linear, kl
     AttenuationQuadratic,  // float: light.quadratic, kq
+    SpotDirectionEye,      // vec3: gl_LightSource[i].spotDirection, the spot's axis (camera)
+    HalfVectorEye,         // vec4: gl_LightSource[i].halfVector, normalize(L + (0, 0, 1)) with L
+                           // towards the light from the camera (the infinite viewer's H)
 };
-constexpr Semantic kLastSemantic = Semantic::AttenuationQuadratic;
+constexpr Semantic kLastSemantic = Semantic::HalfVectorEye;
 
 // Whose names these are: the course's (the slides', the exercise's, the built-in shaders'
 // switches; MDN's WebGL tutorial uses the exercise's) and the tutorials and books students
@@ -77,6 +80,7 @@ enum class Convention {
     Cookbook,          // the OpenGL 4 Shading Language Cookbook: VertexPosition, Light.Position
     GlslViewer,        // glslViewer: a_position, u_modelViewProjectionMatrix, u_light
     OpenGlTutorial,    // opengl-tutorial.org: MVP, M, V, LightPosition_worldspace
+    FixedFunction,     // GLSL 1.20's built-ins, translated (legacy_builtins.h): gl_LightSource
 };
 
 // The shape a uniform is declared with, for names that mean different things by type

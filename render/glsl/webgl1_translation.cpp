@@ -1,6 +1,7 @@
 #include "webgl1_translation.h"
 
 #include "glsl_lexer.h"
+#include "legacy_builtins.h"
 
 #include <QHash>
 
@@ -56,9 +57,81 @@ const QHash<QString, QString> &commonNames()
     return names;
 }
 
-} // namespace
+// Spaces and tabs from `i` on (a newline ends the skip, so that lines stay where they are).
+int skipBlanks(const QString &source, int i)
+{
+    while (i < source.size() && (source[i] == ' ' || source[i] == '\t'))
+        ++i;
+    return i;
+}
 
-TranslatedSource translateWebGl1(const QString &source, ShaderStage stage)
+int identifierEnd(const QString &source, int i)
+{
+    while (i < source.size() && (source[i].isLetterOrNumber() || source[i] == '_'))
+        ++i;
+    return i;
+}
+
+// A fixed-function built-in at `word` (legacy_builtins.h) written as its 3.30 name into `out`,
+// its declarations added to `declarations`; the end of what it replaced, or -1 for a word
+// that is none (or a block not followed by [index].member, left for the driver).
+int translateLegacyWord(const QString &source, int wordEnd, const QString &word, ShaderStage stage,
+                        QString &out, QStringList &declarations)
+{
+    const auto declare = [&](const QString &declaration) {
+        if (!declaration.isEmpty() && !declarations.contains(declaration))
+            declarations << declaration;
+    };
+    bool indexed = false;
+    if (isLegacyBlock(word, indexed)) {
+        int j = skipBlanks(source, wordEnd);
+        QString index;
+        if (indexed) {
+            if (j >= source.size() || source[j] != '[')
+                return -1;
+            int depth = 0, close = j;
+            for (; close < source.size(); ++close) {
+                depth += source[close] == '[' ? 1 : source[close] == ']' ? -1 : 0;
+                if (depth == 0 || source[close] == '\n')
+                    break;
+            }
+            if (close >= source.size() || source[close] != ']')
+                return -1;
+            index = source.mid(j + 1, close - j - 1);
+            j = skipBlanks(source, close + 1);
+        }
+        if (j >= source.size() || source[j] != '.')
+            return -1;
+        const int memberStart = skipBlanks(source, j + 1);
+        const int memberEnd = identifierEnd(source, memberStart);
+        const std::optional<LegacyName> member =
+            legacyMember(word, source.mid(memberStart, memberEnd - memberStart));
+        if (!member)
+            return -1;
+        out += member->replacement + (indexed ? "[" + index + "]" : QString());
+        declare(member->declaration);
+        return memberEnd;
+    }
+    const std::optional<LegacyName> name = legacyWord(word, stage);
+    if (!name)
+        return -1;
+    if (word == QLatin1String("ftransform")) {
+        const int open = skipBlanks(source, wordEnd);
+        const int close =
+            open < source.size() && source[open] == '(' ? skipBlanks(source, open + 1) : -1;
+        if (close < 0 || close >= source.size() || source[close] != ')')
+            return -1;
+        for (const char *used : {"gl_ModelViewProjectionMatrix", "gl_Vertex"})
+            declare(legacyWord(used, stage)->declaration);
+        out += name->replacement;
+        return close + 1;
+    }
+    out += name->replacement;
+    declare(name->declaration);
+    return wordEnd;
+}
+
+TranslatedSource translate(const QString &source, ShaderStage stage, bool legacy)
 {
     const bool fragment = stage == ShaderStage::Fragment;
     QHash<QString, QString> names = commonNames();
@@ -69,6 +142,7 @@ TranslatedSource translateWebGl1(const QString &source, ShaderStage stage)
         names.insert("gl_FragData", "lb_FragData");
     }
     bool usesFragColor = false, usesFragData = false;
+    QStringList declarations; // the legacy built-ins' (legacy_builtins.h)
 
     QString out;
     out.reserve(source.size() + 64);
@@ -107,10 +181,16 @@ TranslatedSource translateWebGl1(const QString &source, ShaderStage stage)
         if (!c.isSpace())
             lineHasCode = true;
         if (startsIdentifier(c)) {
-            int end = i;
-            while (end < n && (source[end].isLetterOrNumber() || source[end] == '_'))
-                ++end;
+            const int end = identifierEnd(source, i);
             const QString word = source.mid(i, end - i);
+            if (legacy) {
+                const int replaced =
+                    translateLegacyWord(source, end, word, stage, out, declarations);
+                if (replaced >= 0) {
+                    i = replaced;
+                    continue;
+                }
+            }
             usesFragColor |= fragment && word == "gl_FragColor";
             usesFragData |= fragment && word == "gl_FragData";
             out += names.value(word, word);
@@ -135,7 +215,20 @@ TranslatedSource translateWebGl1(const QString &source, ShaderStage stage)
         outputs += "out vec4 lb_FragColor;";
     if (usesFragData)
         outputs += " out vec4 lb_FragData[gl_MaxDrawBuffers];";
+    outputs += " " + declarations.join(' ');
     return {"#version 330 core\n" + outputs.trimmed() + "\n" + out, 2};
+}
+
+} // namespace
+
+TranslatedSource translateWebGl1(const QString &source, ShaderStage stage)
+{
+    return translate(source, stage, false);
+}
+
+TranslatedSource translateLegacyGlsl(const QString &source, ShaderStage stage)
+{
+    return translate(source, stage, true);
 }
 
 bool webGl1TranslationForced()

@@ -25,6 +25,9 @@ struct TranslatedSource
 
 // `source` without #version, or with "#version 100" (which is blanked).
 TranslatedSource translateWebGl1(const QString &source, ShaderStage stage);
+// The same for desktop GLSL 1.10 to 1.30 (#version blanked), and its fixed-function built-ins
+// as legacy_builtins.h names them, declared in the header's second line.
+TranslatedSource translateLegacyGlsl(const QString &source, ShaderStage stage);
 
 // Whether WebGL 1 sources are translated rather than handed over under "#version 100":
 // forced by the switch, or because this process's driver refused "#version 100" (the

@@ -411,7 +411,17 @@
         <translation>Quadratischer Faktor der Abschwächung kq</translation>
     </message>
     <message>
-        <location line="+125"/>
+        <location line="+2"/>
+        <source>Spot&apos;s axis (camera coordinates)</source>
+        <translation>Achse des Spots (Kamerakoordinaten)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Half vector of a viewer far along +z (camera coordinates)</source>
+        <translation>Halbvektor eines fernen Betrachters auf +z (Kamerakoordinaten)</translation>
+    </message>
+    <message>
+        <location line="+126"/>
         <source>the binding %1=%2 is not used: %1 is not of the type that %2 gives (a matrix, numbers, a texture)</source>
         <extracomment>%1 the uniform&apos;s name, %2 the key chosen for it (model-view, light-diffuse)</extracomment>
         <translation>die Bindung %1=%2 wird nicht verwendet: %1 hat nicht den Typ, den %2 gibt (eine Matrix, Zahlen, eine Textur)</translation>
@@ -4201,7 +4211,7 @@
 <context>
     <name>lb::Program</name>
     <message>
-        <location filename="../../render/gl/program.cpp" line="+70"/>
+        <location filename="../../render/gl/program.cpp" line="+75"/>
         <source>the vertex shader is empty</source>
         <translation>der Vertex-Shader ist leer</translation>
     </message>
@@ -4221,7 +4231,7 @@
         <translation>der Fragment-Shader ist %1 KiB groß; lightbench kompiliert Quelltexte bis %2 KiB</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+36"/>
         <source>the vertex shader does not compile (the driver gave no reason)</source>
         <translation>der Vertex-Shader lässt sich nicht kompilieren (der Treiber nennt keinen Grund)</translation>
     </message>
@@ -4246,7 +4256,7 @@
         <translation>der Fragment-Shader schreibt keine Farbe: Weisen Sie gl_FragColor zu (ohne #version, #version 100) oder deklarieren Sie ein out vec4 (#version 300 es, 330 und neuer)</translation>
     </message>
     <message>
-        <location line="+67"/>
+        <location line="+73"/>
         <source>a global variable initialised from a uniform or another variable: GLSL ES 1.00 asks for a constant, browsers run it (WebGL warns); lightbench runs this program translated to GLSL 3.30 (the driver said: %1)</source>
         <translation>eine globale Variable, die aus einer Uniform oder einer anderen Variable initialisiert wird: GLSL ES 1.00 verlangt eine Konstante, Browser führen es aus (WebGL warnt); lightbench führt dieses Programm nach GLSL 3.30 übersetzt aus (der Treiber sagte: %1)</translation>
     </message>

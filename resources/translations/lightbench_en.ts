@@ -411,7 +411,17 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+125"/>
+        <location line="+2"/>
+        <source>Spot&apos;s axis (camera coordinates)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Half vector of a viewer far along +z (camera coordinates)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+126"/>
         <source>the binding %1=%2 is not used: %1 is not of the type that %2 gives (a matrix, numbers, a texture)</source>
         <extracomment>%1 the uniform&apos;s name, %2 the key chosen for it (model-view, light-diffuse)</extracomment>
         <translation type="unfinished"></translation>
@@ -4193,7 +4203,7 @@
 <context>
     <name>lb::Program</name>
     <message>
-        <location filename="../../render/gl/program.cpp" line="+70"/>
+        <location filename="../../render/gl/program.cpp" line="+75"/>
         <source>the vertex shader is empty</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4213,7 +4223,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+36"/>
         <source>the vertex shader does not compile (the driver gave no reason)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4238,7 +4248,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+67"/>
+        <location line="+73"/>
         <source>a global variable initialised from a uniform or another variable: GLSL ES 1.00 asks for a constant, browsers run it (WebGL warns); lightbench runs this program translated to GLSL 3.30 (the driver said: %1)</source>
         <translation type="unfinished"></translation>
     </message>

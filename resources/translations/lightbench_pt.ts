@@ -411,7 +411,17 @@
         <translation>Fator quadrático da atenuação kq</translation>
     </message>
     <message>
-        <location line="+125"/>
+        <location line="+2"/>
+        <source>Spot&apos;s axis (camera coordinates)</source>
+        <translation>Eixo do foco (coordenadas da câmara)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Half vector of a viewer far along +z (camera coordinates)</source>
+        <translation>Vetor médio de um observador distante ao longo de +z (coordenadas da câmara)</translation>
+    </message>
+    <message>
+        <location line="+126"/>
         <source>the binding %1=%2 is not used: %1 is not of the type that %2 gives (a matrix, numbers, a texture)</source>
         <extracomment>%1 the uniform&apos;s name, %2 the key chosen for it (model-view, light-diffuse)</extracomment>
         <translation>a ligação %1=%2 não é usada: %1 não é do tipo que %2 dá (uma matriz, números, uma textura)</translation>
@@ -4201,7 +4211,7 @@
 <context>
     <name>lb::Program</name>
     <message>
-        <location filename="../../render/gl/program.cpp" line="+70"/>
+        <location filename="../../render/gl/program.cpp" line="+75"/>
         <source>the vertex shader is empty</source>
         <translation>o vertex shader está vazio</translation>
     </message>
@@ -4221,7 +4231,7 @@
         <translation>o fragment shader tem %1 KiB; o lightbench compila código-fonte até %2 KiB</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+36"/>
         <source>the vertex shader does not compile (the driver gave no reason)</source>
         <translation>o vertex shader não compila (o controlador não indicou o motivo)</translation>
     </message>
@@ -4246,7 +4256,7 @@
         <translation>o fragment shader não escreve nenhuma cor: atribua gl_FragColor (sem #version, #version 100) ou declare um out vec4 (#version 300 es, 330 e posteriores)</translation>
     </message>
     <message>
-        <location line="+67"/>
+        <location line="+73"/>
         <source>a global variable initialised from a uniform or another variable: GLSL ES 1.00 asks for a constant, browsers run it (WebGL warns); lightbench runs this program translated to GLSL 3.30 (the driver said: %1)</source>
         <translation>uma variável global inicializada a partir de um uniform ou de outra variável: o GLSL ES 1.00 exige uma constante, os browsers executam-na (o WebGL avisa); o lightbench executa este programa traduzido para GLSL 3.30 (o driver disse: %1)</translation>
     </message>

@@ -309,6 +309,57 @@ void main()
 }
 )";
 
+// GLSL 1.20 with the fixed-function pipeline's built-ins, per fragment: eye space, the
+// light's products with the material, ftransform().
+const char *kFixedFunctionVertex = R"(#version 120
+varying vec3 eyeNormal;
+varying vec3 eyePosition;
+void main()
+{
+    eyePosition = vec3(gl_ModelViewMatrix * gl_Vertex);
+    eyeNormal = gl_NormalMatrix * gl_Normal;
+    gl_Position = ftransform();
+}
+)";
+const char *kFixedFunctionFragment = R"(#version 120
+varying vec3 eyeNormal;
+varying vec3 eyePosition;
+void main()
+{
+    vec3 n = normalize(eyeNormal);
+    vec3 l = normalize(gl_LightSource[0].position.xyz - eyePosition);
+    float nDotL = max(dot(n, l), 0.0);
+    vec4 colour = gl_FrontLightModelProduct.sceneColor + gl_FrontLightProduct[0].ambient +
+                  gl_FrontLightProduct[0].diffuse * nDotL;
+    if (nDotL > 0.0) {
+        vec3 r = reflect(-l, n);
+        float rDotV = max(dot(r, normalize(-eyePosition)), 0.0);
+        colour += gl_FrontLightProduct[0].specular * pow(rDotV, gl_FrontMaterial.shininess);
+    }
+    gl_FragColor = colour;
+}
+)";
+// GLSL 1.10 without #version, per vertex: a directional light, Blinn-Phong with the light's
+// half vector (the viewer far along +z: the model's H under a parallel projection), the
+// colour through gl_FrontColor to the fragment's gl_Color.
+const char *kFixedFunctionGouraudVertex = R"(void main()
+{
+    vec3 n = normalize(gl_NormalMatrix * gl_Normal);
+    vec3 l = normalize(gl_LightSource[0].position.xyz);
+    float nDotL = max(dot(n, l), 0.0);
+    vec4 c = gl_LightSource[0].ambient * gl_FrontMaterial.ambient +
+             gl_LightSource[0].diffuse * gl_FrontMaterial.diffuse * nDotL;
+    if (nDotL > 0.0) {
+        float nDotH = max(dot(n, normalize(gl_LightSource[0].halfVector.xyz)), 0.0);
+        c += gl_LightSource[0].specular * gl_FrontMaterial.specular *
+             pow(nDotH, gl_FrontMaterial.shininess);
+    }
+    gl_FrontColor = c;
+    gl_Position = gl_ModelViewProjectionMatrix * gl_Vertex;
+}
+)";
+const char *kFixedFunctionGouraudFragment = "void main() { gl_FragColor = gl_Color; }\n";
+
 // glslViewer's names: world space, the light and the camera as positions; Lambert only.
 const char *kGlslViewerVertex = R"(#ifdef GL_ES
 precision mediump float;
@@ -505,6 +556,22 @@ private slots:
             QTest::newRow("attributes p, n at layout(location = 0, 1)")
                 << kLocationsVertex << kCourseDiffuseFragment330 << s << 0 << kTolerance;
         }
+        {
+            Scene s = lightIn(testScene(), LightFrame::Camera);
+            s.shading.specular = SpecularModel::Phong;
+            QTest::newRow("GLSL 1.20 built-ins, per fragment")
+                << kFixedFunctionVertex << kFixedFunctionFragment << s << 5 << kTolerance;
+        }
+        {
+            Scene s = lightIn(testScene(), LightFrame::Camera);
+            s.lights[0].position.w = 0.0f;
+            s.shading.shading = Shading::Gouraud;
+            s.shading.specular = SpecularModel::Blinn;
+            s.shading.projection = Projection::Orthographic;
+            QTest::newRow("GLSL 1.10 built-ins, per vertex, half vector")
+                << kFixedFunctionGouraudVertex << kFixedFunctionGouraudFragment << s << 5
+                << kTolerance;
+        }
     }
 
     void drawsAsPasted()
@@ -655,6 +722,38 @@ void main() {
         const QString failure =
             checkAgainstReference(m_offscreen, scene, "opengl-tutorial", 100, 0, kTolerance);
         QVERIFY2(failure.isEmpty(), qPrintable(failure));
+    }
+
+    // A GLSL 1.20 program's errors land on the user's lines, with the built-ins' own names;
+    // every built-in it uses is fed.
+    void fixedFunctionErrorsOnTheirLine()
+    {
+        QString fragment = kFixedFunctionFragment;
+        fragment.replace("float nDotL = max(dot(n, l), 0.0);",
+                         "float nDotL = max(dot(n, gl_LightSource[0].position), 0.0);");
+        const ProgramBuild broken = m_offscreen.useProgram(kFixedFunctionVertex, fragment);
+        QVERIFY(!broken.ok());
+        const auto error = std::find_if(
+            broken.diagnostics.begin(), broken.diagnostics.end(),
+            [](const Diagnostic &d) { return d.severity == Diagnostic::Severity::Error; });
+        QVERIFY(error != broken.diagnostics.end());
+        QCOMPARE(error->stage, ShaderStage::Fragment);
+        QCOMPARE(error->line, 8);
+        QVERIFY2(!broken.log().contains("lb_"), qPrintable(broken.log()));
+
+        const ProgramBuild built =
+            m_offscreen.useProgram(kFixedFunctionVertex, kFixedFunctionFragment);
+        QVERIFY2(built.ok() && built.diagnostics.empty(), qPrintable(built.log()));
+        QStringList fed;
+        for (const ActiveUniform &u : built.uniforms) {
+            QVERIFY2(u.semantic, qPrintable(u.name + " is fed nothing"));
+            fed << u.name;
+        }
+        fed.sort();
+        QCOMPARE(fed, QStringList({"lb_FrontLightProduct_ambient", "lb_FrontLightProduct_diffuse",
+                                   "lb_FrontLightProduct_specular", "lb_FrontMaterial_shininess",
+                                   "lb_LightSource_position", "lb_ModelViewMatrix",
+                                   "lb_ModelViewProjectionMatrix", "lb_NormalMatrix"}));
     }
 
     // What a name in no table says about its slot ("vertex" names the stage, not the input).

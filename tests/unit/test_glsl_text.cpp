@@ -3,6 +3,7 @@
 #include "bindings.h"
 #include "diagnostics.h"
 #include "dialect.h"
+#include "legacy_builtins.h"
 #include "loops.h"
 #include "presets.h"
 #include "unfed_inputs.h"
@@ -272,6 +273,64 @@ private slots:
         QCOMPARE(prepareSource(fragment, ShaderStage::Fragment, false).version, QString("100"));
         const QString es3 = "#version 300 es\nprecision mediump float;\nout vec4 c;\n";
         QCOMPARE(prepareSource(es3, ShaderStage::Fragment, true).text, es3);
+    }
+
+    // GLSL 1.20's built-ins become names the semantic table feeds, declared in the header's
+    // second line; lines stay where they are; a block used whole is left for the driver.
+    void legacyTranslation()
+    {
+        const QString vertex =
+            "#version 120\n"
+            "varying vec3 n; // gl_Normal in a comment stays\n"
+            "void main() { n = gl_NormalMatrix * gl_Normal;\n"
+            "  vec4 l = gl_LightSource[ 0 ].position + gl_LightSource[i].halfVector;\n"
+            "  gl_FrontColor = gl_BackMaterial.diffuse * l;\n"
+            "  gl_Position = ftransform(); }\n";
+        TranslatedSource t = translateLegacyGlsl(vertex, ShaderStage::Vertex);
+        QCOMPARE(t.linesAdded, 2);
+        const QStringList lines = t.text.split('\n');
+        QCOMPARE(lines.size(), vertex.count('\n') + 1 + t.linesAdded);
+        QCOMPARE(lines[0], QString("#version 330 core"));
+        for (const char *declared :
+             {"uniform mat3 lb_NormalMatrix;", "layout(location = 1) in vec3 lb_Normal;",
+              "uniform vec4 lb_LightSource_position[4];",
+              "uniform vec4 lb_LightSource_halfVector[4];", "out vec4 lb_FrontColor;",
+              "uniform vec4 lb_FrontMaterial_diffuse;",
+              "uniform mat4 lb_ModelViewProjectionMatrix;",
+              "layout(location = 0) in vec4 lb_Vertex;"})
+            QVERIFY2(lines[1].contains(declared), qPrintable(lines[1]));
+        QCOMPARE(lines[2], QString());
+        QCOMPARE(lines[3], QString("out vec3 n; // gl_Normal in a comment stays"));
+        QCOMPARE(lines[4], QString("void main() { n = lb_NormalMatrix * lb_Normal;"));
+        QCOMPARE(lines[5], QString("  vec4 l = lb_LightSource_position[ 0 ] + "
+                                   "lb_LightSource_halfVector[i];"));
+        QCOMPARE(lines[6], QString("  lb_FrontColor = lb_FrontMaterial_diffuse * l;"));
+        QCOMPARE(lines[7],
+                 QString("  gl_Position = (lb_ModelViewProjectionMatrix * lb_Vertex); }"));
+
+        // The fragment's gl_Color is what the vertex stage wrote; a block passed whole, or a
+        // member the pipeline never had, stays for the driver to name.
+        t = translateLegacyGlsl("void main() { gl_FragColor = gl_Color + f(gl_LightSource[0]) + "
+                                "gl_FrontMaterial.glow; }\n",
+                                ShaderStage::Fragment);
+        QVERIFY2(t.text.contains("in vec4 lb_FrontColor;") &&
+                     t.text.contains("lb_FragColor = lb_FrontColor + f(gl_LightSource[0]) + "
+                                     "gl_FrontMaterial.glow;"),
+                 qPrintable(t.text));
+        QCOMPARE(withLegacyNames("'lb_LightSource_position' undeclared; lb_Vertex, lb_FrontColor, "
+                                 "lb_FrontMaterial_diffuse"),
+                 QString("'gl_LightSource[].position' undeclared; gl_Vertex, gl_FrontColor, "
+                         "gl_FrontMaterial.diffuse"));
+
+        // A program of that era: either stage uses a built-in, neither says a later version.
+        const QString plain = "void main() { gl_FragColor = vec4(1.0); }\n";
+        QVERIFY(legacyProgram(vertex, plain));
+        QVERIFY(legacyProgram("void main() { gl_Position = ftransform(); }", plain));
+        QVERIFY(!legacyProgram("attribute vec4 p; void main() { gl_Position = p; }", plain));
+        QVERIFY(
+            !legacyProgram("#version 330 core\nvoid main() { gl_Position = gl_Vertex; }", plain));
+        QVERIFY(!legacyProgram("// gl_Vertex\nattribute vec4 p; void main() { gl_Position = p; }",
+                               plain));
     }
 
     void fragmentOutputs()

@@ -1,11 +1,15 @@
 #include "uniform_values.h"
 
+#include "legacy_builtins.h"
+
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
 #include <algorithm>
 
 namespace lb {
+
+static_assert(kLegacyLights == kMaxLights, "gl_LightSource holds the scene's lights");
 
 namespace {
 
@@ -138,6 +142,15 @@ UniformValue uniformValue(Semantic semantic, const Scene &scene, const Frames &f
         return UniformValue::ofNumber(l.attenuation.y);
     case Semantic::AttenuationQuadratic:
         return UniformValue::ofNumber(l.attenuation.z);
+    case Semantic::SpotDirectionEye:
+        return UniformValue::ofVector(
+            lightInEye(frames, light, glm::vec4(l.spot.direction, 0.0f), l.frame));
+    case Semantic::HalfVectorEye: {
+        // The fixed-function pipeline's state: the light's direction from the camera's origin
+        // (its position, for a point light) plus the viewer's, far along +z.
+        const glm::vec3 towards = unit(glm::vec3(lightInEye(frames, light, l.position, l.frame)));
+        return UniformValue::ofVector(glm::vec4(unit(towards + glm::vec3(0.0f, 0.0f, 1.0f)), 0.0f));
+    }
     }
     return {};
 }
