@@ -203,17 +203,22 @@ std::vector<ActiveAttribute> activeAttributes(QOpenGLExtraFunctions &gl, GLuint 
     return attributes;
 }
 
+// The slot of an attribute name in the table (attributeBindings()); none for another name.
+std::optional<AttributeSlot> tableSlot(const QString &name)
+{
+    const auto &table = attributeBindings();
+    const auto known = std::find_if(table.begin(), table.end(), [&](const AttributeBinding &b) {
+        return name == QLatin1String(b.name);
+    });
+    return known != table.end() ? std::optional<AttributeSlot>(known->slot) : std::nullopt;
+}
+
 // Binds each active attribute of a name in no table to the slot its name says, where that
 // slot is free and it is not there yet; whether any was (the program must link again).
 bool bindByNameParts(QOpenGLExtraFunctions &gl, GLuint program)
 {
     const std::vector<ActiveAttribute> attributes = activeAttributes(gl, program);
-    const auto known = [](const QString &name) {
-        const auto &table = attributeBindings();
-        return std::any_of(table.begin(), table.end(), [&](const AttributeBinding &b) {
-            return name == QLatin1String(b.name);
-        });
-    };
+    const auto known = [](const QString &name) { return tableSlot(name).has_value(); };
     std::vector<GLint> taken; // by a known name, or by one bound here
     for (const ActiveAttribute &a : attributes)
         if (known(a.name))
@@ -428,13 +433,9 @@ BuiltProgram buildTranslatedOrNot(QOpenGLExtraFunctions &gl, const QString &vert
     std::vector<PlacedInput> placed;
     for (const ActiveAttribute &a : attributes) {
         build.attributes.push_back({a.name, int(a.location)});
-        const auto &table = attributeBindings();
-        const auto known = std::find_if(table.begin(), table.end(), [&](const AttributeBinding &b) {
-            return a.name == QLatin1String(b.name);
-        });
-        const std::optional<AttributeSlot> slot = known != table.end()
-                                                      ? std::optional<AttributeSlot>(known->slot)
-                                                      : slotByNameParts(a.name);
+        std::optional<AttributeSlot> slot = tableSlot(a.name);
+        if (!slot)
+            slot = slotByNameParts(a.name);
         placed.push_back({a.name, int(a.location), slot ? int(*slot) : -1});
     }
     for (const Diagnostic &d : misplacedInputWarnings(placed, vertexSource))
