@@ -89,13 +89,16 @@ int translateLegacyWord(const QString &source, int wordEnd, const QString &word,
         if (indexed) {
             if (j >= source.size() || source[j] != '[')
                 return -1;
+            // An index is short: a longer one (or none closed on its line) is left for the
+            // driver, and no run of "gl_LightSource[" scans the rest of its line each time.
+            constexpr int kLongestIndex = 256;
             int depth = 0, close = j;
-            for (; close < source.size(); ++close) {
+            for (; close < source.size() && close - j < kLongestIndex; ++close) {
                 depth += source[close] == '[' ? 1 : source[close] == ']' ? -1 : 0;
                 if (depth == 0 || source[close] == '\n')
                     break;
             }
-            if (close >= source.size() || source[close] != ']')
+            if (close >= source.size() || close - j >= kLongestIndex || source[close] != ']')
                 return -1;
             index = source.mid(j + 1, close - j - 1);
             j = skipBlanks(source, close + 1);

@@ -322,6 +322,13 @@ private slots:
                  QString("'gl_LightSource[].position' undeclared; gl_Vertex, gl_FrontColor, "
                          "gl_FrontMaterial.diffuse"));
 
+        // A hostile run of unclosed indices is left as written, each read no further than an
+        // index can be long (it scanned the rest of the line each time: 1 MB took the 15 s trial).
+        const QString unclosed = QString("gl_LightSource[").repeated(20000);
+        t = translateLegacyGlsl("void main() { vec4 a = " + unclosed + "\n}\n",
+                                ShaderStage::Vertex);
+        QVERIFY(t.text.contains(unclosed));
+
         // A program of that era: either stage uses a built-in, neither says a later version.
         const QString plain = "void main() { gl_FragColor = vec4(1.0); }\n";
         QVERIFY(legacyProgram(vertex, plain));
