@@ -5,7 +5,6 @@
 #include "viewport.h"
 
 #include <QCoreApplication>
-#include <QElapsedTimer>
 #include <QOpenGLContext>
 #include <QOpenGLFramebufferObject>
 #include <QOpenGLFunctions>
@@ -63,11 +62,7 @@ double Viewport::timeFrame(QSize pixels)
     if (!fbo.isValid())
         return 0.0;
     fbo.bind();
-    QElapsedTimer clock;
-    clock.start();
-    m_renderer.render(m_document->scene(), pixels);
-    context()->functions()->glFinish();
-    const double ms = double(clock.nsecsElapsed()) * 1e-6;
+    const double ms = m_renderer.renderTimed(m_document->scene(), pixels);
     fbo.release();
     return ms;
 }

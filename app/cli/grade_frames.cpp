@@ -133,7 +133,7 @@ GradeFailure drawReference(OffscreenRenderer &offscreen, const Exercise &exercis
     OffscreenProgramHost host(offscreen, cases.front());
     const ProgramVerdict verdict = buildAndTryWithin(
         host, {vertex, fragment, cases.front().bindings},
-        {exercise.grading.size, kGradingTrialBudgetMs},
+        {exercise.grading.size, exercise.grading.frameBudgetMs(), kGradingTrial},
         [&](const Diagnostic &d) {
             stop("reference refused", exerciseProgramText("reference", d));
         },
@@ -204,7 +204,7 @@ int preparationTimeLimitMs(const GradingSpec &spec, int mistakes)
     const int asked = qEnvironmentVariableIntValue("LIGHTBENCH_GRADE_TIME_LIMIT_MS");
     // A trial and a frame of every case for the reference and for each mistake.
     const double frames = double(1 + mistakes) * double(spec.cases + 1);
-    return asked > 0 ? asked : int(std::min(30000 + kGradingTrialBudgetMs * frames, 3600000.0));
+    return asked > 0 ? asked : int(std::min(30000 + spec.frameBudgetMs() * frames, 3600000.0));
 }
 
 bool preparationWorthIt(const GradingSpec &spec, int mistakes, std::size_t submissions,

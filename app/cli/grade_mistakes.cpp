@@ -41,7 +41,7 @@ GradeFailure useMistakeProgram(OffscreenRenderer &offscreen, const Exercise &exe
     OffscreenProgramHost host(offscreen, firstCase);
     const ProgramVerdict verdict = buildAndTryWithin(
         host, {vertex, fragment, firstCase.bindings},
-        {exercise.grading.size, kGradingTrialBudgetMs},
+        {exercise.grading.size, exercise.grading.frameBudgetMs(), kGradingTrial},
         [&](const Diagnostic &d) { stop("mistake refused", mistakeText(index, m, d)); }, 0);
     if (const Diagnostic *refusal = verdict.refusal()) {
         out.status = "mistake refused";

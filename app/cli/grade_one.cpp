@@ -95,7 +95,8 @@ int runGradeOne(const CommandLine &cl)
     // batch's time limit ends one that hangs anyway); the frames below are that limit's.
     OffscreenProgramHost host(offscreen, cases.front());
     const ProgramVerdict verdict = buildAndTryWithin(
-        host, {s.vertex, s.fragment, cases.front().bindings}, {spec.size, kGradingTrialBudgetMs},
+        host, {s.vertex, s.fragment, cases.front().bindings},
+        {spec.size, spec.frameBudgetMs(), kGradingTrial},
         [&](const Diagnostic &d) { finish("refused", diagnosticText(d, s)); }, 0);
     if (const Diagnostic *refusal = verdict.refusal())
         return finish("refused", diagnosticText(*refusal, s));

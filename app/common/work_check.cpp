@@ -25,11 +25,11 @@ QString gradingChildProgram()
 int gradingTimeLimitMs(const GradingSpec &spec, int mistakes)
 {
     const int asked = qEnvironmentVariableIntValue("LIGHTBENCH_GRADE_TIME_LIMIT_MS");
-    // Two frames a case (reference and student), each within the trial's budget; for a
+    // Two frames a case (reference and student), each within the exercise's frame budget
+    // (processor time: about the wall time two busy programs leave llvmpipe's threads); for a
     // failing submission, each known mistake's trial and its frames of the failing cases.
     const int mistakeFrames = mistakes * (std::min(spec.cases, kMaxMistakeCases) + 1);
-    return asked > 0 ? asked
-                     : int(30000 + kGradingTrialBudgetMs * (2 * spec.cases + mistakeFrames));
+    return asked > 0 ? asked : int(30000 + spec.frameBudgetMs() * (2 * spec.cases + mistakeFrames));
 }
 
 QString endedWithoutReport(const QProcess &child)

@@ -23,8 +23,6 @@ namespace lb {
 // The program a grading child runs: $LIGHTBENCH_GRADE_PROGRAM (a test's stand-in, or the
 // workbench itself for a test's window), else this program.
 QString gradingChildProgram();
-// One frame at the grading size, at most: the loop trial's budget in a grading child.
-constexpr double kGradingTrialBudgetMs = 2000.0;
 // How long one submission may take: its process, its trial and its frames, and the known
 // mistakes drawn for a failing one.
 // $LIGHTBENCH_GRADE_TIME_LIMIT_MS overrides.

@@ -4,7 +4,6 @@
 #include "texture_file.h"
 
 #include <QCoreApplication>
-#include <QElapsedTimer>
 #include <QOpenGLFunctions>
 
 namespace lb {
@@ -229,11 +228,7 @@ double OffscreenRenderer::timeFrame(const Scene &scene, QSize size)
     format.setInternalTextureFormat(GL_RGBA8);
     QOpenGLFramebufferObject fbo(size, format);
     fbo.bind();
-    QElapsedTimer timer;
-    timer.start();
-    m_renderer.render(scene, size);
-    m_context.functions()->glFinish();
-    const double ms = double(timer.nsecsElapsed()) * 1e-6;
+    const double ms = m_renderer.renderTimed(scene, size);
     fbo.release();
     return ms;
 }

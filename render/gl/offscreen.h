@@ -40,8 +40,8 @@ public:
                             const UniformBindings &bindings = {});
     // Draws `frames` frames and waits for the GPU; for the benchmarks.
     void renderFrames(const Scene &scene, int frames);
-    // Milliseconds to draw one frame of `scene` at `size` and wait for it, in a framebuffer of
-    // its own (a program's trial at a small size).
+    // What one frame of `scene` at `size` costs, waited for, in a framebuffer of its own (a
+    // program's trial at a small size): milliseconds as Renderer::renderTimed counts them.
     double timeFrame(const Scene &scene, QSize size);
     // The user program's trial (program_trial.h) on frames of `scene` drawn here, the
     // built-in program's as the reference.

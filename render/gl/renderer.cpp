@@ -2,12 +2,28 @@
 
 #include "frames.h"
 #include "gpu_texture.h"
+#include "process_time.h"
 #include "uniform_upload.h"
 #include "webgl1_translation.h"
+
+#include <QElapsedTimer>
 
 #include <algorithm>
 
 namespace lb {
+
+namespace {
+// Mesa's software rasterizers (llvmpipe, softpipe, swrast) and Google's SwiftShader name
+// themselves so in GL_RENDERER.
+bool drawsOnProcessor(const char *renderer)
+{
+    const QByteArray name = QByteArray(renderer ? renderer : "").toLower();
+    for (const char *word : {"llvmpipe", "softpipe", "swrast", "software", "swiftshader"})
+        if (name.contains(word))
+            return true;
+    return false;
+}
+} // namespace
 
 void Renderer::setViewportRect(QRect rect, int height)
 {
@@ -34,8 +50,21 @@ QString Renderer::initialize()
     screen.positions = {{-1.0f, -1.0f, 0.0f}, {3.0f, -1.0f, 0.0f}, {-1.0f, 3.0f, 0.0f}};
     screen.indices = {0, 1, 2};
     m_screenTriangle.upload(*this, screen);
+    m_timesProcessor = drawsOnProcessor(reinterpret_cast<const char *>(glGetString(GL_RENDERER))) &&
+                       processorTimeMs() >= 0.0;
     m_initialized = true;
     return {};
+}
+
+double Renderer::renderTimed(const Scene &scene, QSize pixels)
+{
+    QElapsedTimer wall;
+    wall.start();
+    const double processorStart = m_timesProcessor ? processorTimeMs() : 0.0;
+    render(scene, pixels);
+    glFinish();
+    return m_timesProcessor ? processorTimeMs() - processorStart
+                            : double(wall.nsecsElapsed()) * 1e-6;
 }
 
 void Renderer::cleanup()

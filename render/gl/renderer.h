@@ -46,6 +46,13 @@ public:
     // Draws into the bound framebuffer, which is `pixels` large: one view, or two sides of
     // a comparison (compare.h) side by side, across a wipe, or as their difference.
     void render(const Scene &scene, QSize pixels);
+    // The same, waited for (a program's trial): what the frame cost in milliseconds. Where a
+    // software rasterizer draws (llvmpipe: on this process's threads), the processor time they
+    // used, which other programs busy on the same cores do not stretch as they stretch the
+    // wall clock (a slow submission refused under load, issue 47); elsewhere the wall clock.
+    double renderTimed(const Scene &scene, QSize pixels);
+    // Whether renderTimed() counts processor time (the driver draws on the processor).
+    bool timesProcessor() const { return m_timesProcessor; }
     // The probe's arrows, drawn over every view (no depth test: they stay visible), and the
     // frame pixel whose colour render() reads back (none: x < 0): the surface's, read before
     // the light markers, normal lines and arrows are drawn over it.
@@ -165,6 +172,7 @@ private:
     void measureDifference(QSize pixels);
 
     bool m_initialized = false;
+    bool m_timesProcessor = false;
     // The built-in programs, by variant (builtInProgram), built when first needed.
     std::map<BuiltInVariant, BuiltProgram> m_builtIns;
     BuiltProgram m_differenceProgram, m_user, m_candidate, m_sideB;

@@ -45,7 +45,8 @@ public:
     // back and the build reports the diagnostic, not linked (Renderer::setUserProgram).
     virtual ProgramBuild use(const ProgramSources &sources,
                              const std::function<std::optional<Diagnostic>()> &trial = {}) = 0;
-    // One frame at `pixels` with the program in use, waited for (ms); the same with the
+    // One frame at `pixels` with the program in use, waited for: its cost in ms (processor
+    // time where the driver draws on the processor, Renderer::renderTimed); the same with the
     // built-in program in its place (what the scene costs anyway).
     virtual double timeFrame(QSize pixels) = 0;
     virtual double timeBuiltInFrame(QSize pixels) = 0;

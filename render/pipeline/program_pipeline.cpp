@@ -107,15 +107,8 @@ QString ProgramPipeline::tooSlowAt(QSize pixels) const
     if (!m_goodTrial || !m_host->drawsUserProgram() ||
         !m_goodTrial->overBudgetAt(area, m_frameBudgetMs))
         return {};
-    //: %1 a duration (0.8 s); %2x%3 the view's size in pixels; %4 the frame budget
-    return QCoreApplication::translate(
-               "lb::Viewport",
-               "drawing one frame with this program would take about %1 at %2x%3 (the budget "
-               "is %4): an endless or very long loop?")
-        .arg(durationText(m_goodTrial->estimateAt(area)))
-        .arg(pixels.width())
-        .arg(pixels.height())
-        .arg(durationText(m_frameBudgetMs));
+    return slowFrameMessage(m_goodTrial->estimateAt(area), pixels, m_frameBudgetMs, m_good.vertex,
+                            m_good.fragment);
 }
 
 trialwire::TryRequest ProgramPipeline::request(const ProgramSources &sources)

@@ -17,28 +17,6 @@ struct ProgramTrialMessages
     Q_DECLARE_TR_FUNCTIONS(lb::ProgramTrial)
 };
 
-// Why a program is refused for its frame's cost (`loops`: the program has loops).
-QString slowFrameMessage(double estimatedMs, QSize target, double measuredMs, QSize measured,
-                         double budgetMs, bool loops)
-{
-    const QString args[] = {durationText(estimatedMs),
-                            QString::number(target.width()),
-                            QString::number(target.height()),
-                            durationText(measuredMs),
-                            QString::number(measured.width()),
-                            QString::number(measured.height()),
-                            durationText(budgetMs)};
-    //: %1 the estimate at %2x%3 pixels, %4 the time measured at %5x%6, %7 the budget
-    return (loops ? ProgramTrialMessages::tr(
-                        "drawing one frame with this program would take about %1 at %2x%3 "
-                        "(measured %4 at %5x%6; the budget is %7): an endless or very long "
-                        "loop?")
-                  : ProgramTrialMessages::tr(
-                        "drawing one frame with this program would take about %1 at %2x%3 "
-                        "(measured %4 at %5x%6; the budget is %7): too much work for every "
-                        "pixel?"))
-        .arg(args[0], args[1], args[2], args[3], args[4], args[5], args[6]);
-}
 } // namespace
 
 QString durationText(double ms)
@@ -67,6 +45,32 @@ Diagnostic refusalAt(const QString &vertex, const QString &fragment, const QStri
         }
     }
     return d;
+}
+
+QString slowFrameMessage(double estimatedMs, QSize target, double budgetMs, const QString &vertex,
+                         const QString &fragment)
+{
+    const bool loops = !loopPlaces(vertex, ShaderStage::Vertex).empty() ||
+                       !loopPlaces(fragment, ShaderStage::Fragment).empty();
+    const QString budget = durationText(budgetMs);
+    //: %1 the budget of one frame ("2.0 s")
+    const QString over =
+        estimatedMs > 100.0 * budgetMs
+            ? ProgramTrialMessages::tr("more than 100 times its budget of %1").arg(budget)
+        : estimatedMs > 10.0 * budgetMs
+            //: %1 the budget of one frame ("2.0 s")
+            ? ProgramTrialMessages::tr("more than 10 times its budget of %1").arg(budget)
+            //: %1 the budget of one frame ("2.0 s")
+            : ProgramTrialMessages::tr("more than its budget of %1").arg(budget);
+    const QString width = QString::number(target.width()),
+                  height = QString::number(target.height());
+    //: %1x%2 the frame's size in pixels, %3 how far over its budget ("more than its budget of 2.0
+    //: s")
+    return (loops ? ProgramTrialMessages::tr("drawing one frame with this program at %1x%2 would "
+                                             "take %3: an endless or very long loop?")
+                  : ProgramTrialMessages::tr("drawing one frame with this program at %1x%2 would "
+                                             "take %3: too much work for every pixel?"))
+        .arg(width, height, over);
 }
 
 double TrialResult::estimateAt(double pixels) const
@@ -113,8 +117,18 @@ TrialResult tryProgram(const QString &vertex, const QString &fragment, QSize tar
         return first > sizes.lightMs ? first : std::min(first, timeFrame(size));
     };
     auto pixelsOf = [](QSize size) { return double(size.width()) * double(size.height()); };
-    const double small = quickest(sizes.small);
-    const double large = quickest(sizes.large);
+    // Each frame as many pixels as its size says, in the target's shape: the camera's aspect
+    // decides how much of a frame the object covers (a square frame of a 4:3 target holds
+    // a third more of the object, each pixel cost a third more).
+    const double aspect = double(target.width()) / double(std::max(1, target.height()));
+    auto shaped = [&](double pixels) {
+        return QSize(std::max(1, int(std::lround(std::sqrt(pixels * aspect)))),
+                     std::max(1, int(std::lround(std::sqrt(pixels / aspect)))));
+    };
+    const QSize smallSize = shaped(pixelsOf(sizes.small)),
+                largeSize = shaped(pixelsOf(sizes.large));
+    const double small = quickest(smallSize);
+    double large = quickest(largeSize);
     const double targetPixels = pixelsOf(target);
     auto fit = [&](double pixels, double ms) {
         if (ms <= small) {
@@ -124,40 +138,60 @@ TrialResult tryProgram(const QString &vertex, const QString &fragment, QSize tar
             r.perPixelMs = ms / pixels;
             r.fixedMs = 0.0;
         } else {
-            r.perPixelMs = (ms - small) / (pixels - pixelsOf(sizes.small));
-            r.fixedMs = std::max(0.0, small - r.perPixelMs * pixelsOf(sizes.small));
+            r.perPixelMs = (ms - small) / (pixels - pixelsOf(smallSize));
+            r.fixedMs = std::max(0.0, small - r.perPixelMs * pixelsOf(smallSize));
         }
         r.estimatedMs = r.fixedMs + r.perPixelMs * targetPixels;
     };
-    fit(pixelsOf(sizes.large), large);
+    fit(pixelsOf(largeSize), large);
     if (r.estimatedMs <= budgetMs)
         return r;
     if (large < sizes.lightMs) {
         r.light = true;
         return r;
     }
-    // Over the budget from two tiny frames: their difference is a few milliseconds, and a
-    // stall in one is multiplied by thousands. A bigger frame confirms it, as big as about
-    // 150 ms of per-pixel work by the estimate allows (and no bigger than the target).
-    const double confirmPixels =
-        std::min(targetPixels, std::max(2.0 * pixelsOf(sizes.large),
-                                        std::min(budgetMs, 150.0) / std::max(r.perPixelMs, 1e-9)));
-    const int side = std::max(1, int(std::lround(std::sqrt(confirmPixels))));
-    const QSize confirm(side, side);
-    // A second sample only where the first could be a light frame's stall.
-    double confirmed = timeFrame(confirm);
-    if (confirmed < 10.0 * sizes.lightMs)
-        confirmed = std::min(confirmed, timeFrame(confirm));
-    // The steeper of the slopes from the two small sizes: a stall in either flattens its own.
-    r.perPixelMs = 0.0;
-    for (const auto &[size, ms] : {std::pair{sizes.small, small}, std::pair{sizes.large, large}})
-        if (pixelsOf(size) < pixelsOf(confirm)) // (a tiny view's confirming frame may be smaller)
-            r.perPixelMs =
-                std::max(r.perPixelMs, (confirmed - ms) / (pixelsOf(confirm) - pixelsOf(size)));
-    if (r.perPixelMs <= 0.0)
-        r.perPixelMs = confirmed / pixelsOf(confirm); // as above: all per pixel
-    r.fixedMs = std::max(0.0, confirmed - r.perPixelMs * pixelsOf(confirm));
-    r.estimatedMs = r.fixedMs + r.perPixelMs * targetPixels;
+    // Far over the budget (a loop that runs until the driver cuts it short): the large frame
+    // measured a second time says so again, and no bigger frame is drawn for it (a runaway's
+    // would take most of a second). Small frames overestimate what each pixel costs (partly
+    // covered blocks are shaded whole), but by a factor of about 2 on the example exercise,
+    // far from this one.
+    if (r.estimatedMs > kFarOverBudget * budgetMs) {
+        large = std::min(large, timeFrame(largeSize));
+        fit(pixelsOf(largeSize), large);
+        if (r.estimatedMs > kFarOverBudget * budgetMs) {
+            r.refusal =
+                refusalAt(vertex, fragment,
+                          slowFrameMessage(r.estimatedMs, target, budgetMs, vertex, fragment));
+            return r;
+        }
+    }
+    // Over the budget from two tiny frames. Their difference is a few milliseconds (a stall in
+    // one would be multiplied by thousands on the wall clock), and tiny frames shade more
+    // pixels than they cover (llvmpipe shades 4x4 blocks whole: the heavy 5000-step loop of
+    // issue 47 costs 31 us a pixel at 62x62 and 17 at 320x240). Bigger frames confirm it, each
+    // with 4 times the pixels of the one before, and what a pixel costs is the difference
+    // between the last two: drawn while the estimate stays over the budget, the target is not
+    // reached and the next frame would cost less than the cap (half the budget, at most 1 s).
+    const double capMs = std::clamp(budgetMs / 2.0, 150.0, 1000.0);
+    QSize before = largeSize, confirm = largeSize;
+    double beforeMs = large, confirmed = large;
+    do {
+        confirm = shaped(std::min(targetPixels, 4.0 * pixelsOf(before)));
+        if (pixelsOf(confirm) <= pixelsOf(before)) // (a tiny view: the large frame was its size)
+            break;
+        // A second sample only where the first could be a light frame's stall.
+        confirmed = timeFrame(confirm);
+        if (confirmed < 10.0 * sizes.lightMs)
+            confirmed = std::min(confirmed, timeFrame(confirm));
+        r.perPixelMs = (confirmed - beforeMs) / (pixelsOf(confirm) - pixelsOf(before));
+        if (r.perPixelMs <= 0.0) // a stall in the frame before: all per pixel, the worst case
+            r.perPixelMs = confirmed / pixelsOf(confirm);
+        r.fixedMs = std::max(0.0, confirmed - r.perPixelMs * pixelsOf(confirm));
+        r.estimatedMs = r.fixedMs + r.perPixelMs * targetPixels;
+        before = confirm;
+        beforeMs = confirmed;
+    } while (r.estimatedMs > budgetMs && pixelsOf(confirm) < targetPixels &&
+             4.0 * confirmed < capMs);
     if (timeReference && r.estimatedMs > budgetMs) {
         // What the built-in program takes on the same frame is the scene's cost: only the
         // rest grows with the pixels this program shades.
@@ -172,11 +206,8 @@ TrialResult tryProgram(const QString &vertex, const QString &fragment, QSize tar
         }
     }
     if (r.estimatedMs > budgetMs)
-        r.refusal =
-            refusalAt(vertex, fragment,
-                      slowFrameMessage(r.estimatedMs, target, confirmed, confirm, budgetMs,
-                                       !loopPlaces(vertex, ShaderStage::Vertex).empty() ||
-                                           !loopPlaces(fragment, ShaderStage::Fragment).empty()));
+        r.refusal = refusalAt(vertex, fragment,
+                              slowFrameMessage(r.estimatedMs, target, budgetMs, vertex, fragment));
     return r;
 }
 

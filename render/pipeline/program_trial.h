@@ -2,10 +2,13 @@
 // A user's program tried before it is used: a loop with no way out refuses it at once; every
 // other program is timed, loops or not (25,000 lines of sin() without one took 4 minutes a
 // frame): two small frames separate what a frame costs anyway from what
-// each pixel costs, and the frame at the size it will be drawn is estimated; over the budget,
-// a bigger frame confirms it (a stall in a tiny frame would be multiplied by thousands) and
-// it is refused with a diagnostic on its first loop's line. The frames are drawn by the
-// caller (the window's context, or the command line's), so this holds no GL.
+// each pixel costs, and the frame at the size it will be drawn is estimated; far over the
+// budget, the larger small frame drawn again confirms it; over it, a bigger frame confirms it
+// (a stall in a tiny frame would be multiplied by thousands) and it is refused with a
+// diagnostic on its first loop's line, which says how far over in orders of magnitude, never
+// a measured figure. The frames are drawn and timed by the caller (the window's context, or
+// the command line's; processor time on a software rasterizer, Renderer::renderTimed, so that
+// a busy machine does not change the verdict), so this holds no GL.
 
 #include "diagnostics.h"
 
@@ -26,6 +29,11 @@ struct TrialSizes
 // loop ~360 ms) and the window's, smaller so that a slow program blocks it briefly.
 constexpr TrialSizes kCommandLineTrial{QSize(32, 32), QSize(64, 64), 2.0};
 constexpr TrialSizes kWindowTrial{QSize(16, 16), QSize(32, 32), 1.0};
+// Grading's: a submission's frame is small (320x240), and a class may hold many runaways,
+// each of which pays for the frames that measure it (at 32x32, 0.2 s on llvmpipe).
+constexpr TrialSizes kGradingTrial = kWindowTrial;
+// An estimate this many times the budget is refused without a bigger frame.
+constexpr double kFarOverBudget = 4.0;
 
 struct TrialResult
 {
@@ -60,6 +68,13 @@ TrialResult tryProgram(const QString &vertex, const QString &fragment, QSize tar
                        const std::function<double(QSize)> &timeFrame,
                        const std::function<double(QSize)> &timeReference = {});
 
+// Why a program is refused for its frame's cost, `estimatedMs` at `target`: the estimate as its
+// order of magnitude against the budget, never the figure measured, so that a report graded
+// twice, on a quiet machine or a busy one, says the same words ("... would take more than 10
+// times its budget of 2.0 s: an endless or very long loop?", the loop's question where the
+// program has one).
+QString slowFrameMessage(double estimatedMs, QSize target, double budgetMs, const QString &vertex,
+                         const QString &fragment);
 // Where a refusal points: the fragment shader's first loop, else the vertex shader's, else
 // the fragment shader with no line.
 Diagnostic refusalAt(const QString &vertex, const QString &fragment, const QString &message);

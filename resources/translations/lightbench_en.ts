@@ -856,7 +856,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+83"/>
+        <location line="+84"/>
         <source>%1 (%2)</source>
         <extracomment>a field of an exercise as the file spells it (%1, &quot;exercise.grading.cases&quot;) and why it was not used (%2)</extracomment>
         <translation type="unfinished"></translation>
@@ -904,7 +904,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+17"/>
         <source>not [width, height] in whole pixels, 16 to %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3625,7 +3625,7 @@
 <context>
     <name>lb::Offscreen</name>
     <message>
-        <location filename="../../render/gl/offscreen.cpp" line="+48"/>
+        <location filename="../../render/gl/offscreen.cpp" line="+47"/>
         <source>cannot create an OpenGL context (is there an X server with OpenGL?)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4233,7 +4233,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+280"/>
+        <location line="+285"/>
         <source>the program does not link (no reason given)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4248,7 +4248,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+73"/>
+        <location line="+69"/>
         <source>a global variable initialised from a uniform or another variable: GLSL ES 1.00 asks for a constant, browsers run it (WebGL warns); lightbench runs this program translated to GLSL 3.30 (the driver said: %1)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4283,18 +4283,7 @@
 <context>
     <name>lb::ProgramTrial</name>
     <message>
-        <location filename="../../render/pipeline/program_trial.cpp" line="+32"/>
-        <source>drawing one frame with this program would take about %1 at %2x%3 (measured %4 at %5x%6; the budget is %7): an endless or very long loop?</source>
-        <extracomment>%1 the estimate at %2x%3 pixels, %4 the time measured at %5x%6, %7 the budget</extracomment>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>drawing one frame with this program would take about %1 at %2x%3 (measured %4 at %5x%6; the budget is %7): too much work for every pixel?</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+12"/>
+        <location filename="../../render/pipeline/program_trial.cpp" line="+26"/>
         <source>%1 s</source>
         <extracomment>a duration in seconds</extracomment>
         <translation type="unfinished"></translation>
@@ -4303,6 +4292,34 @@
         <location line="+2"/>
         <source>%1 ms</source>
         <extracomment>a duration in milliseconds</extracomment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+31"/>
+        <source>more than 100 times its budget of %1</source>
+        <extracomment>%1 the budget of one frame (&quot;2.0 s&quot;)</extracomment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>more than 10 times its budget of %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>more than its budget of %1</source>
+        <extracomment>%1 the budget of one frame (&quot;2.0 s&quot;)</extracomment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>drawing one frame with this program at %1x%2 would take %3: an endless or very long loop?</source>
+        <extracomment>%1x%2 the frame&apos;s size in pixels, %3 how far over its budget (&quot;more than its budget of 2.0 s&quot;)</extracomment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>drawing one frame with this program at %1x%2 would take %3: too much work for every pixel?</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -5733,12 +5750,6 @@
     <message>
         <location filename="../../render/pipeline/program_pipeline.cpp" line="+53"/>
         <source>the OpenGL context was lost while this program drew (the driver reset the GPU: an endless or very long loop?)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+58"/>
-        <source>drawing one frame with this program would take about %1 at %2x%3 (the budget is %4): an endless or very long loop?</source>
-        <extracomment>%1 a duration (0.8 s); %2x%3 the view&apos;s size in pixels; %4 the frame budget</extracomment>
         <translation type="unfinished"></translation>
     </message>
     <message>

@@ -856,7 +856,7 @@
         <translation>%1 valores para %2 casos (um por caso)</translation>
     </message>
     <message>
-        <location line="+83"/>
+        <location line="+84"/>
         <source>%1 (%2)</source>
         <extracomment>a field of an exercise as the file spells it (%1, &quot;exercise.grading.cases&quot;) and why it was not used (%2)</extracomment>
         <translation>%1 (%2)</translation>
@@ -904,7 +904,7 @@
         <translation>fora do intervalo, ajustado ao limite</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+17"/>
         <source>not [width, height] in whole pixels, 16 to %1</source>
         <translation>não é [largura, altura] em píxeis inteiros, de 16 a %1</translation>
     </message>
@@ -3632,7 +3632,7 @@
 <context>
     <name>lb::Offscreen</name>
     <message>
-        <location filename="../../render/gl/offscreen.cpp" line="+48"/>
+        <location filename="../../render/gl/offscreen.cpp" line="+47"/>
         <source>cannot create an OpenGL context (is there an X server with OpenGL?)</source>
         <translation>não é possível criar um contexto OpenGL (existe um servidor X com OpenGL?)</translation>
     </message>
@@ -4241,7 +4241,7 @@
         <translation>o fragment shader não compila (o controlador não indicou o motivo)</translation>
     </message>
     <message>
-        <location line="+280"/>
+        <location line="+285"/>
         <source>the program does not link (no reason given)</source>
         <translation>a ligação (link) do programa falhou (sem motivo indicado)</translation>
     </message>
@@ -4256,7 +4256,7 @@
         <translation>o fragment shader não escreve nenhuma cor: atribua gl_FragColor (sem #version, #version 100) ou declare um out vec4 (#version 300 es, 330 e posteriores)</translation>
     </message>
     <message>
-        <location line="+73"/>
+        <location line="+69"/>
         <source>a global variable initialised from a uniform or another variable: GLSL ES 1.00 asks for a constant, browsers run it (WebGL warns); lightbench runs this program translated to GLSL 3.30 (the driver said: %1)</source>
         <translation>uma variável global inicializada a partir de um uniform ou de outra variável: o GLSL ES 1.00 exige uma constante, os browsers executam-na (o WebGL avisa); o lightbench executa este programa traduzido para GLSL 3.30 (o driver disse: %1)</translation>
     </message>
@@ -4293,18 +4293,7 @@
 <context>
     <name>lb::ProgramTrial</name>
     <message>
-        <location filename="../../render/pipeline/program_trial.cpp" line="+32"/>
-        <source>drawing one frame with this program would take about %1 at %2x%3 (measured %4 at %5x%6; the budget is %7): an endless or very long loop?</source>
-        <extracomment>%1 the estimate at %2x%3 pixels, %4 the time measured at %5x%6, %7 the budget</extracomment>
-        <translation>desenhar um fotograma com este programa demoraria cerca de %1 a %2x%3 (medido: %4 a %5x%6; o orçamento é %7): um ciclo infinito ou muito longo?</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>drawing one frame with this program would take about %1 at %2x%3 (measured %4 at %5x%6; the budget is %7): too much work for every pixel?</source>
-        <translation>desenhar um fotograma com este programa demoraria cerca de %1 a %2x%3 (medido: %4 a %5x%6; o orçamento é %7): demasiado trabalho por píxel?</translation>
-    </message>
-    <message>
-        <location line="+12"/>
+        <location filename="../../render/pipeline/program_trial.cpp" line="+26"/>
         <source>%1 s</source>
         <extracomment>a duration in seconds</extracomment>
         <translation>%1 s</translation>
@@ -4314,6 +4303,34 @@
         <source>%1 ms</source>
         <extracomment>a duration in milliseconds</extracomment>
         <translation>%1 ms</translation>
+    </message>
+    <message>
+        <location line="+31"/>
+        <source>more than 100 times its budget of %1</source>
+        <extracomment>%1 the budget of one frame (&quot;2.0 s&quot;)</extracomment>
+        <translation>mais de 100 vezes o seu orçamento de %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>more than 10 times its budget of %1</source>
+        <translation>mais de 10 vezes o seu orçamento de %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>more than its budget of %1</source>
+        <extracomment>%1 the budget of one frame (&quot;2.0 s&quot;)</extracomment>
+        <translation>mais do que o seu orçamento de %1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>drawing one frame with this program at %1x%2 would take %3: an endless or very long loop?</source>
+        <extracomment>%1x%2 the frame&apos;s size in pixels, %3 how far over its budget (&quot;more than its budget of 2.0 s&quot;)</extracomment>
+        <translation>desenhar um fotograma com este programa a %1x%2 demoraria %3: um ciclo infinito ou muito longo?</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>drawing one frame with this program at %1x%2 would take %3: too much work for every pixel?</source>
+        <translation>desenhar um fotograma com este programa a %1x%2 demoraria %3: demasiado trabalho por píxel?</translation>
     </message>
 </context>
 <context>
@@ -5746,12 +5763,6 @@
         <location filename="../../render/pipeline/program_pipeline.cpp" line="+53"/>
         <source>the OpenGL context was lost while this program drew (the driver reset the GPU: an endless or very long loop?)</source>
         <translation>o contexto OpenGL perdeu-se enquanto este programa desenhava (o controlador reiniciou a GPU: um ciclo infinito ou muito longo?)</translation>
-    </message>
-    <message>
-        <location line="+58"/>
-        <source>drawing one frame with this program would take about %1 at %2x%3 (the budget is %4): an endless or very long loop?</source>
-        <extracomment>%1 a duration (0.8 s); %2x%3 the view&apos;s size in pixels; %4 the frame budget</extracomment>
-        <translation>desenhar um fotograma com este programa demoraria cerca de %1 a %2x%3 (o orçamento é %4): um ciclo infinito ou muito longo?</translation>
     </message>
     <message>
         <location filename="../../widgets/viewport.cpp" line="+94"/>

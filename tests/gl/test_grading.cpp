@@ -500,8 +500,9 @@ private slots:
                                 "  vec3 c = v;\n  for (int i = 0; i < 200000; i++)\n"
                                 "    c = sin(c + v);\n  gl_FragColor = vec4(c, 1.0);\n}"}})
             // On a loaded machine the trial's wall-clock bound can come first: refused too.
-            << "reference refused: reference fragment:5: drawing one frame with this program would "
-               "take about || reference refused: reference fragment:5: compiling this program "
+            << "reference refused: reference fragment:5: drawing one frame with this program at "
+               "320x240 would take more than || reference refused: reference fragment:5: compiling "
+               "this program "
                "and drawing it on small frames took more than";
     }
 

@@ -378,10 +378,13 @@ private slots:
                        100.0, kWindowTrial, [](QSize s) { return 2e-3 * s.width() * s.height(); });
         QVERIFY(r.refusal);
         QVERIFY2(r.refusal->message.startsWith(
-                     marked("lb::ProgramTrial", "drawing one frame with this program would take "
-                                                "about ")
+                     marked("lb::ProgramTrial",
+                            "drawing one frame with this program at %1x%2 would take ")
+                         .arg(640)
+                         .arg(480)
                          .chopped(1) +
-                     marked("lb::ProgramTrial", "%1 ms").arg(614)),
+                     marked("lb::ProgramTrial", "more than its budget of %1")
+                         .arg(marked("lb::ProgramTrial", "%1 ms").arg(100))),
                  qPrintable(r.refusal->message));
         QVERIFY2(r.refusal->message.endsWith("too much work for every pixel?\u00bb"),
                  qPrintable(r.refusal->message));

@@ -151,7 +151,8 @@ QJsonObject exerciseJson(const Exercise &exercise)
                                 {"passShare", g.passShare},
                                 {"vary", vary},
                                 {"points", g.casePoints.empty() ? QJsonValue(g.points)
-                                                                : QJsonValue(casePoints)}}}};
+                                                                : QJsonValue(casePoints)},
+                                {"frameBudget", g.frameBudget}}}};
     if (!exercise.mistakes.empty())
         json["mistakes"] = exerciseMistakesJson(exercise.mistakes);
     return json;
@@ -249,6 +250,7 @@ ExerciseRead readExerciseSection(const QJsonValue &json, QStringList *ignored)
     number("cases", 1, kMaxCases, spec.cases);
     number("tolerance", 0, 255, spec.tolerance);
     number("passShare", 0.0, 1.0, spec.passShare);
+    number("frameBudget", kMinFrameBudget, kMaxFrameBudget, spec.frameBudget);
     if (g.contains("size")) {
         const QJsonArray a = g.value("size").toArray();
         if (a.size() == 2 && a[0].isDouble() && a[1].isDouble() &&

@@ -11,7 +11,8 @@
 //    "grading": {"cases": 20, "size": [320, 240], "tolerance": 2, "passShare": 0.99,
 //                "vary": ["light", "lightW", "lightFrame", "lightColour", "material",
 //                         "camera", "projection", "scale"],
-//                "points": 100},     (the total in equal shares, or [p0, p1, ...]: one per case)
+//                "points": 100,      (the total in equal shares, or [p0, p1, ...]: one per case)
+//                "frameBudget": 2},  (seconds one frame at "size" may take, program_trial.h)
 //    "mistakes": [...]}                 (known mistakes and their hints: exercise_mistakes.h)
 
 #include "exercise_mistakes.h"
@@ -64,7 +65,15 @@ struct GradingSpec
     // case's own (then it has one per case). A submission scores the points of its passed cases.
     double points = 100.0;
     std::vector<double> casePoints;
+    // What one frame at `size` may cost a submission (and the reference, and each known
+    // mistake), in seconds: processor time where a software rasterizer draws, so that the
+    // machine's load does not move it (Renderer::renderTimed). A teacher whose exercise asks
+    // for heavy work raises it.
+    double frameBudget = 2.0;
+    double frameBudgetMs() const { return frameBudget * 1000.0; }
 };
+// The range of GradingSpec::frameBudget, as --frame-budget's.
+constexpr double kMinFrameBudget = 0.01, kMaxFrameBudget = 60.0;
 // The points of each case, `spec.cases` of them.
 std::vector<double> pointsPerCase(const GradingSpec &spec);
 
