@@ -107,8 +107,7 @@ QString ProgramPipeline::tooSlowAt(QSize pixels) const
     if (!m_goodTrial || !m_host->drawsUserProgram() ||
         !m_goodTrial->overBudgetAt(area, m_frameBudgetMs))
         return {};
-    return slowFrameMessage(m_goodTrial->estimateAt(area), pixels, m_frameBudgetMs, m_good.vertex,
-                            m_good.fragment);
+    return slowFrameMessage(pixels, m_frameBudgetMs, m_good.vertex, m_good.fragment);
 }
 
 trialwire::TryRequest ProgramPipeline::request(const ProgramSources &sources)

@@ -47,30 +47,20 @@ Diagnostic refusalAt(const QString &vertex, const QString &fragment, const QStri
     return d;
 }
 
-QString slowFrameMessage(double estimatedMs, QSize target, double budgetMs, const QString &vertex,
+QString slowFrameMessage(QSize target, double budgetMs, const QString &vertex,
                          const QString &fragment)
 {
     const bool loops = !loopPlaces(vertex, ShaderStage::Vertex).empty() ||
                        !loopPlaces(fragment, ShaderStage::Fragment).empty();
-    const QString budget = durationText(budgetMs);
-    //: %1 the budget of one frame ("2.0 s")
-    const QString over =
-        estimatedMs > 100.0 * budgetMs
-            ? ProgramTrialMessages::tr("more than 100 times its budget of %1").arg(budget)
-        : estimatedMs > 10.0 * budgetMs
-            //: %1 the budget of one frame ("2.0 s")
-            ? ProgramTrialMessages::tr("more than 10 times its budget of %1").arg(budget)
-            //: %1 the budget of one frame ("2.0 s")
-            : ProgramTrialMessages::tr("more than its budget of %1").arg(budget);
-    const QString width = QString::number(target.width()),
-                  height = QString::number(target.height());
-    //: %1x%2 the frame's size in pixels, %3 how far over its budget ("more than its budget of 2.0
-    //: s")
+    //: %1x%2 the frame's size in pixels, %3 the budget of one frame ("2.0 s")
     return (loops ? ProgramTrialMessages::tr("drawing one frame with this program at %1x%2 would "
-                                             "take %3: an endless or very long loop?")
+                                             "take more than its budget of %3: an endless or "
+                                             "very long loop?")
                   : ProgramTrialMessages::tr("drawing one frame with this program at %1x%2 would "
-                                             "take %3: too much work for every pixel?"))
-        .arg(width, height, over);
+                                             "take more than its budget of %3: too much work for "
+                                             "every pixel?"))
+        .arg(QString::number(target.width()), QString::number(target.height()),
+             durationText(budgetMs));
 }
 
 double TrialResult::estimateAt(double pixels) const
@@ -160,8 +150,7 @@ TrialResult tryProgram(const QString &vertex, const QString &fragment, QSize tar
         fit(pixelsOf(largeSize), large);
         if (r.estimatedMs > kFarOverBudget * budgetMs) {
             r.refusal =
-                refusalAt(vertex, fragment,
-                          slowFrameMessage(r.estimatedMs, target, budgetMs, vertex, fragment));
+                refusalAt(vertex, fragment, slowFrameMessage(target, budgetMs, vertex, fragment));
             return r;
         }
     }
@@ -206,8 +195,8 @@ TrialResult tryProgram(const QString &vertex, const QString &fragment, QSize tar
         }
     }
     if (r.estimatedMs > budgetMs)
-        r.refusal = refusalAt(vertex, fragment,
-                              slowFrameMessage(r.estimatedMs, target, budgetMs, vertex, fragment));
+        r.refusal =
+            refusalAt(vertex, fragment, slowFrameMessage(target, budgetMs, vertex, fragment));
     return r;
 }
 

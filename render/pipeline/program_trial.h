@@ -5,10 +5,10 @@
 // each pixel costs, and the frame at the size it will be drawn is estimated; far over the
 // budget, the larger small frame drawn again confirms it; over it, a bigger frame confirms it
 // (a stall in a tiny frame would be multiplied by thousands) and it is refused with a
-// diagnostic on its first loop's line, which says how far over in orders of magnitude, never
-// a measured figure. The frames are drawn and timed by the caller (the window's context, or
-// the command line's; processor time on a software rasterizer, Renderer::renderTimed, so that
-// a busy machine does not change the verdict), so this holds no GL.
+// diagnostic on its first loop's line, which names the budget, never a measured figure. The frames
+// are drawn and timed by the caller (the window's context, or the command line's; processor time on
+// a software rasterizer, Renderer::renderTimed, so that a busy machine does not change the
+// verdict), so this holds no GL.
 
 #include "diagnostics.h"
 
@@ -68,12 +68,11 @@ TrialResult tryProgram(const QString &vertex, const QString &fragment, QSize tar
                        const std::function<double(QSize)> &timeFrame,
                        const std::function<double(QSize)> &timeReference = {});
 
-// Why a program is refused for its frame's cost, `estimatedMs` at `target`: the estimate as its
-// order of magnitude against the budget, never the figure measured, so that a report graded
-// twice, on a quiet machine or a busy one, says the same words ("... would take more than 10
-// times its budget of 2.0 s: an endless or very long loop?", the loop's question where the
-// program has one).
-QString slowFrameMessage(double estimatedMs, QSize target, double budgetMs, const QString &vertex,
+// Why a program is refused for its frame's cost at `target`: over the budget, which it names,
+// never by how much. An estimate has the machine's noise in it (a runaway's was 5 to 10 times
+// the budget from one run to the next): a report graded twice, on a quiet machine or a busy
+// one, says the same words. The loop's question where the program has one.
+QString slowFrameMessage(QSize target, double budgetMs, const QString &vertex,
                          const QString &fragment);
 // Where a refusal points: the fragment shader's first loop, else the vertex shader's, else
 // the fragment shader with no line.

@@ -4305,32 +4305,15 @@
         <translation>%1 ms</translation>
     </message>
     <message>
-        <location line="+31"/>
-        <source>more than 100 times its budget of %1</source>
-        <extracomment>%1 the budget of one frame (&quot;2.0 s&quot;)</extracomment>
-        <translation>mehr als das Hundertfache seines Budgets von %1</translation>
+        <location line="+28"/>
+        <source>drawing one frame with this program at %1x%2 would take more than its budget of %3: an endless or very long loop?</source>
+        <extracomment>%1x%2 the frame&apos;s size in pixels, %3 the budget of one frame (&quot;2.0 s&quot;)</extracomment>
+        <translation>ein Bild mit diesem Programm bei %1x%2 zu zeichnen würde länger dauern als sein Budget von %3: eine Endlosschleife oder sehr lange Schleife?</translation>
     </message>
     <message>
         <location line="+3"/>
-        <source>more than 10 times its budget of %1</source>
-        <translation>mehr als das Zehnfache seines Budgets von %1</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>more than its budget of %1</source>
-        <extracomment>%1 the budget of one frame (&quot;2.0 s&quot;)</extracomment>
-        <translation>mehr als sein Budget von %1</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>drawing one frame with this program at %1x%2 would take %3: an endless or very long loop?</source>
-        <extracomment>%1x%2 the frame&apos;s size in pixels, %3 how far over its budget (&quot;more than its budget of 2.0 s&quot;)</extracomment>
-        <translation>ein Bild mit diesem Programm bei %1x%2 zu zeichnen würde %3 dauern: eine Endlosschleife oder sehr lange Schleife?</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>drawing one frame with this program at %1x%2 would take %3: too much work for every pixel?</source>
-        <translation>ein Bild mit diesem Programm bei %1x%2 zu zeichnen würde %3 dauern: zu viel Rechenarbeit pro Pixel?</translation>
+        <source>drawing one frame with this program at %1x%2 would take more than its budget of %3: too much work for every pixel?</source>
+        <translation>ein Bild mit diesem Programm bei %1x%2 zu zeichnen würde länger dauern als sein Budget von %3: zu viel Rechenarbeit pro Pixel?</translation>
     </message>
 </context>
 <context>

@@ -4295,31 +4295,14 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+31"/>
-        <source>more than 100 times its budget of %1</source>
-        <extracomment>%1 the budget of one frame (&quot;2.0 s&quot;)</extracomment>
+        <location line="+28"/>
+        <source>drawing one frame with this program at %1x%2 would take more than its budget of %3: an endless or very long loop?</source>
+        <extracomment>%1x%2 the frame&apos;s size in pixels, %3 the budget of one frame (&quot;2.0 s&quot;)</extracomment>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location line="+3"/>
-        <source>more than 10 times its budget of %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>more than its budget of %1</source>
-        <extracomment>%1 the budget of one frame (&quot;2.0 s&quot;)</extracomment>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>drawing one frame with this program at %1x%2 would take %3: an endless or very long loop?</source>
-        <extracomment>%1x%2 the frame&apos;s size in pixels, %3 how far over its budget (&quot;more than its budget of 2.0 s&quot;)</extracomment>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>drawing one frame with this program at %1x%2 would take %3: too much work for every pixel?</source>
+        <source>drawing one frame with this program at %1x%2 would take more than its budget of %3: too much work for every pixel?</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -4305,32 +4305,15 @@
         <translation>%1 ms</translation>
     </message>
     <message>
-        <location line="+31"/>
-        <source>more than 100 times its budget of %1</source>
-        <extracomment>%1 the budget of one frame (&quot;2.0 s&quot;)</extracomment>
-        <translation>mais de 100 vezes o seu orçamento de %1</translation>
+        <location line="+28"/>
+        <source>drawing one frame with this program at %1x%2 would take more than its budget of %3: an endless or very long loop?</source>
+        <extracomment>%1x%2 the frame&apos;s size in pixels, %3 the budget of one frame (&quot;2.0 s&quot;)</extracomment>
+        <translation>desenhar um fotograma com este programa a %1x%2 demoraria mais do que o seu orçamento de %3: um ciclo infinito ou muito longo?</translation>
     </message>
     <message>
         <location line="+3"/>
-        <source>more than 10 times its budget of %1</source>
-        <translation>mais de 10 vezes o seu orçamento de %1</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>more than its budget of %1</source>
-        <extracomment>%1 the budget of one frame (&quot;2.0 s&quot;)</extracomment>
-        <translation>mais do que o seu orçamento de %1</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>drawing one frame with this program at %1x%2 would take %3: an endless or very long loop?</source>
-        <extracomment>%1x%2 the frame&apos;s size in pixels, %3 how far over its budget (&quot;more than its budget of 2.0 s&quot;)</extracomment>
-        <translation>desenhar um fotograma com este programa a %1x%2 demoraria %3: um ciclo infinito ou muito longo?</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>drawing one frame with this program at %1x%2 would take %3: too much work for every pixel?</source>
-        <translation>desenhar um fotograma com este programa a %1x%2 demoraria %3: demasiado trabalho por píxel?</translation>
+        <source>drawing one frame with this program at %1x%2 would take more than its budget of %3: too much work for every pixel?</source>
+        <translation>desenhar um fotograma com este programa a %1x%2 demoraria mais do que o seu orçamento de %3: demasiado trabalho por píxel?</translation>
     </message>
 </context>
 <context>

@@ -236,7 +236,7 @@ private slots:
             QCOMPARE(o["score"].toDouble(), sum);
             QCOMPARE(most, 100.0);
             QCOMPARE(o["score"].toDouble() == 100.0, correct);
-            QVERIFY(o["execution_time"].isDouble() && o["output"].isString());
+            QVERIFY(!o.contains("execution_time") && o["output"].isString());
             QVERIFY(o["output"].toString().contains("lightbench " + kVersion + " with seed 1"));
             QCOMPARE(o["tests"].toArray().size(), graded ? 20 : 1);
         }

@@ -90,11 +90,6 @@ QJsonObject object(const QByteArray &bytes)
     return doc.object();
 }
 
-bool isWhole(double v)
-{
-    return std::abs(v - std::round(v)) < 1e-9;
-}
-
 } // namespace
 
 class TestGradingFormats : public QObject
@@ -196,8 +191,9 @@ private slots:
         double sum = 0;
         for (const QJsonValue &v : tests) {
             const QJsonObject t = v.toObject();
-            for (const char *key : {"name", "status", "message", "test_code", "execution_time"})
+            for (const char *key : {"name", "status", "message", "test_code"})
                 QVERIFY2(t[key].isString(), key);
+            QVERIFY(!t.contains("execution_time")); // the same bytes on a busy machine
             QVERIFY(t["score"].isDouble() && t["line_no"].isDouble());
             QCOMPARE(t["line_no"].toInt(), 0); // the reporter prints "- line N" unless 0
             QVERIFY(t["status"] == "pass" || t["status"] == "fail");
@@ -270,8 +266,7 @@ private slots:
     {
         for (const GradedSubmission &row : {failing(), passing(), notCompiling()}) {
             const QJsonObject r = object(lb::gradescopeResults(sampleRun(), {row}));
-            QVERIFY(r["score"].isDouble() && r["execution_time"].isDouble());
-            QVERIFY(isWhole(r["execution_time"].toDouble()));
+            QVERIFY(r["score"].isDouble() && !r.contains("execution_time"));
             QVERIFY(r["output"].toString().contains("lightbench 9.8.7 with seed 7"));
             QCOMPARE(r["visibility"].toString(), QString("visible"));
             QVERIFY(r["stdout_visibility"].isString());

@@ -201,31 +201,23 @@ private slots:
                      qPrintable(QString("%1x%2").arg(drawn[i].width()).arg(drawn[i].height())));
     }
 
-    // The refusal says how far over the budget in orders of magnitude, never the figure
-    // measured: two runs of one program, 20% apart (a busy machine), say the same words.
-    void theMessageSaysTheOrderNotTheFigure_data()
+    // The refusal names the budget, never the figure measured: two runs of one program, 20%
+    // apart (a busy machine), and programs 1.5 to 300 times over the budget, say the same words.
+    void theMessageSaysNoFigure()
     {
-        QTest::addColumn<double>("msPerPixel");
-        QTest::addColumn<QString>("words");
-        QTest::newRow("1.5 times") << 3e-3 << "would take more than its budget of 1.0 s: an";
-        QTest::newRow("30 times") << 6e-2 << "would take more than 10 times its budget of 1.0 s:";
-        QTest::newRow("300 times") << 6e-1 << "would take more than 100 times its budget of 1.0 s:";
-    }
-    void theMessageSaysTheOrderNotTheFigure()
-    {
-        QFETCH(double, msPerPixel);
-        QFETCH(QString, words);
         QStringList messages;
-        for (double load : {1.0, 1.2}) {
-            const TrialResult r =
-                tryProgram(kVertex, kFragment, kTarget, 1000.0, kWindowTrial,
-                           [&](QSize s) { return load * msPerPixel * pixelsOf(s); });
-            QVERIFY(r.refusal);
-            messages << r.refusal->message;
-        }
-        QCOMPARE(messages[0], messages[1]);
-        QVERIFY2(messages[0].contains(words), qPrintable(messages[0]));
-        QVERIFY(messages[0].startsWith("drawing one frame with this program at 800x600 would"));
+        for (double msPerPixel : {3e-3, 6e-2, 6e-1})
+            for (double load : {1.0, 1.2}) {
+                const TrialResult r =
+                    tryProgram(kVertex, kFragment, kTarget, 1000.0, kWindowTrial,
+                               [&](QSize s) { return load * msPerPixel * pixelsOf(s); });
+                QVERIFY(r.refusal);
+                messages << r.refusal->message;
+            }
+        messages.removeDuplicates();
+        QCOMPARE(messages, QStringList{"drawing one frame with this program at 800x600 would take "
+                                       "more than its budget of 1.0 s: an endless or very long "
+                                       "loop?"});
     }
 };
 
