@@ -2,6 +2,7 @@
 
 #include "choice_labels.h"
 #include "message_text.h"
+#include "program_trial.h"
 
 #include <QHeaderView>
 #include <QLabel>
@@ -198,7 +199,12 @@ void ExercisePanel::setExercise(const std::optional<Exercise> &exercise)
                          .arg(g.size.height())
                          .arg(percent(g.passShare))
                          .arg(g.tolerance)
-                         .arg(variedText(g.vary)));
+                         .arg(variedText(g.vary)) +
+                     " " +
+                     //: %1 a duration ("2.0 s"): the exercise's frame budget
+                     tr("One frame of your program may take at most %1; a program that would "
+                        "take longer is refused.")
+                         .arg(durationText(g.frameBudgetMs())));
     m_check->setEnabled(exercise->unread.isUndefined());
 }
 

@@ -978,7 +978,7 @@
 <context>
     <name>lb::ExercisePanel</name>
     <message>
-        <location filename="../../widgets/exercise_panel.cpp" line="+34"/>
+        <location filename="../../widgets/exercise_panel.cpp" line="+35"/>
         <source>light position</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1024,12 +1024,12 @@
     </message>
     <message>
         <location line="+30"/>
-        <location line="+136"/>
+        <location line="+141"/>
         <source>Check my work</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-135"/>
+        <location line="-140"/>
         <source>Draws the exercise&apos;s cases with the program in the editor and with the reference, as the teacher&apos;s grading does, and lists each case (F9)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1120,7 +1120,12 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+10"/>
+        <source>One frame of your program may take at most %1; a program that would take longer is refused.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>Cancel the check</source>
         <translation type="unfinished"></translation>
     </message>

@@ -978,7 +978,7 @@
 <context>
     <name>lb::ExercisePanel</name>
     <message>
-        <location filename="../../widgets/exercise_panel.cpp" line="+34"/>
+        <location filename="../../widgets/exercise_panel.cpp" line="+35"/>
         <source>light position</source>
         <translation>posição da luz</translation>
     </message>
@@ -1024,12 +1024,12 @@
     </message>
     <message>
         <location line="+30"/>
-        <location line="+136"/>
+        <location line="+141"/>
         <source>Check my work</source>
         <translation>Verificar o meu trabalho</translation>
     </message>
     <message>
-        <location line="-135"/>
+        <location line="-140"/>
         <source>Draws the exercise&apos;s cases with the program in the editor and with the reference, as the teacher&apos;s grading does, and lists each case (F9)</source>
         <translation>Desenha os casos do exercício com o programa do editor e com a referência, como faz a avaliação do professor, e lista cada caso (F9)</translation>
     </message>
@@ -1120,7 +1120,12 @@
         <translation>%1 casos a %2 x %3 píxeis; um caso passa quando %4 dos seus píxeis diferem no máximo %5/255. Os casos variam: %6.</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+10"/>
+        <source>One frame of your program may take at most %1; a program that would take longer is refused.</source>
+        <translation>Um fotograma do seu programa pode demorar no máximo %1; um programa que demore mais é recusado.</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>Cancel the check</source>
         <translation>Cancelar a verificação</translation>
     </message>
