@@ -5,6 +5,7 @@
 #include "command_line_grade.h"
 #include "command_line_plot.h"
 #include "command_line_scene.h"
+#include "exercise.h"
 #include "lesson.h"
 #include "option_values.h"
 
@@ -108,7 +109,7 @@ void parseInto(const QCommandLineParser &parser, CommandLine &cl)
         cl.saveScenePath = output("save-scene");
     if (given("frame-budget")) {
         const float v = numbers("frame-budget", value("frame-budget"), 1, "seconds")[0];
-        checkRange("frame-budget", v, 0.01f, 60.0f);
+        checkRange("frame-budget", v, float(kMinFrameBudget), float(kMaxFrameBudget));
         cl.frameBudgetSeconds = double(v);
     }
     cl.presentation = given("presentation");

@@ -72,7 +72,7 @@ struct GradingSpec
     double frameBudget = 2.0;
     double frameBudgetMs() const { return frameBudget * 1000.0; }
 };
-// The range of GradingSpec::frameBudget, as --frame-budget's.
+// The range of GradingSpec::frameBudget and of --frame-budget.
 constexpr double kMinFrameBudget = 0.01, kMaxFrameBudget = 60.0;
 // The points of each case, `spec.cases` of them.
 std::vector<double> pointsPerCase(const GradingSpec &spec);
