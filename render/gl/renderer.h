@@ -51,8 +51,6 @@ public:
     // used, which other programs busy on the same cores do not stretch as they stretch the
     // wall clock (a slow submission refused under load, issue 47); elsewhere the wall clock.
     double renderTimed(const Scene &scene, QSize pixels);
-    // Whether renderTimed() counts processor time (the driver draws on the processor).
-    bool timesProcessor() const { return m_timesProcessor; }
     // The probe's arrows, drawn over every view (no depth test: they stay visible), and the
     // frame pixel whose colour render() reads back (none: x < 0): the surface's, read before
     // the light markers, normal lines and arrows are drawn over it.
@@ -172,7 +170,7 @@ private:
     void measureDifference(QSize pixels);
 
     bool m_initialized = false;
-    bool m_timesProcessor = false;
+    bool m_timesProcessor = false; // renderTimed() counts processor time
     // The built-in programs, by variant (builtInProgram), built when first needed.
     std::map<BuiltInVariant, BuiltProgram> m_builtIns;
     BuiltProgram m_differenceProgram, m_user, m_candidate, m_sideB;
