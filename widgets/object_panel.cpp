@@ -130,6 +130,15 @@ ObjectPanel::ObjectPanel(SceneDocument *document, QWidget *parent)
     connect(m_normals, &QComboBox::currentIndexChanged, this,
             [this](int i) { edit([&](Scene &s) { s.selectedObject().normals = NormalMode(i); }); });
     form->addRow(tr("Normals"), m_normals);
+    m_faces = makeCombo({tr("Outward"), tr("As in the file"), tr("Flipped"), tr("Both sides lit")},
+                        tr("Which way a mesh file's faces look. Outward: a closed part wound "
+                           "inwards (lit from inside) is turned, with its normals, and the "
+                           "status line says so; as in the file; every face flipped; or both "
+                           "sides lit, each with the normal facing the camera (for open "
+                           "meshes: a sheet, a scan with holes)"));
+    connect(m_faces, &QComboBox::currentIndexChanged, this,
+            [this](int i) { edit([&](Scene &s) { s.selectedObject().faces = Faces(i); }); });
+    form->addRow(tr("Faces"), m_faces);
     m_crease = makeSpin(0.0, double(limits::kMaxCreaseDegrees), 0, 5.0,
                         tr("Generated smooth normals average only triangles that meet at less "
                            "than this angle: 0 is flat, 180 smooths every edge"));
@@ -267,7 +276,7 @@ void ObjectPanel::refresh(const Scene &scene)
     refreshList(scene);
     const ObjectSettings &o = scene.selectedObject();
     const QSignalBlocker b1(m_shape), b2(m_tessellation), b3(m_autoRotate), b6(m_normals),
-        b7(m_crease), b8(m_showNormals), b9(m_adoptMaterial), b10(m_cullBackFaces);
+        b7(m_crease), b11(m_faces), b8(m_showNormals), b9(m_adoptMaterial), b10(m_cullBackFaces);
     while (m_shape->count() > kShapeCount)
         m_shape->removeItem(kShapeCount);
     if (o.meshPath.isEmpty()) {
@@ -294,6 +303,7 @@ void ObjectPanel::refresh(const Scene &scene)
     m_tessellation->setEnabled(o.meshPath.isEmpty() && o.shape != Shape::Cube);
     m_autoRotate->setChecked(o.autoRotate);
     m_normals->setCurrentIndex(int(o.normals));
+    m_faces->setCurrentIndex(int(o.faces));
     m_crease->setValue(double(o.creaseDegrees));
     m_crease->setEnabled(o.normals != NormalMode::Flat);
     m_showNormals->setChecked(o.showNormals);

@@ -41,6 +41,7 @@ public:
     TextureControls *texture() const { return m_texture; }
     QCheckBox *autoRotateCheck() const { return m_autoRotate; }
     QComboBox *normalsCombo() const { return m_normals; }
+    QComboBox *facesCombo() const { return m_faces; }
     QDoubleSpinBox *creaseBox() const { return m_crease; }
     QCheckBox *showNormalsCheck() const { return m_showNormals; }
     QCheckBox *cullBackFacesCheck() const { return m_cullBackFaces; }
@@ -81,6 +82,7 @@ private:
     TextureControls *m_texture;
     QCheckBox *m_autoRotate;
     QComboBox *m_normals;
+    QComboBox *m_faces;
     QDoubleSpinBox *m_crease;
     QCheckBox *m_showNormals;
     QCheckBox *m_cullBackFaces;

@@ -138,6 +138,10 @@ std::vector<OptionInfo> visibleOptions()
              "Draw a mesh file (any format Assimp reads) instead of the shape."),
         words("normals", normalModeNames(),
               "Normals: the mesh's own (generated smooth when it has none), smooth or flat."),
+        words("faces", facesNames(),
+              "Which way a mesh file's faces look: outward (closed parts wound inwards are "
+              "turned; the default), as in the file, flipped, or two-sided (each face lit from "
+              "both sides)."),
         value("crease-angle", "DEGREES",
               "Generated smooth normals stop at sharper edges (0 to 180)."),
         words("show-normals", onOffNames(), "Draw each vertex normal as a short line."),

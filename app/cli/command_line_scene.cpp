@@ -66,6 +66,10 @@ void parseSceneOptions(const QCommandLineParser &parser, CommandLine &cl)
         const NormalMode v = word("normals", value("normals"), parseNormalMode, normalModeNames());
         add([v](Scene &s) { s.selectedObject().normals = v; });
     }
+    if (given("faces")) {
+        const Faces v = word("faces", value("faces"), parseFaces, facesNames());
+        add([v](Scene &s) { s.selectedObject().faces = v; });
+    }
     if (given("crease-angle")) {
         const float v = numbers("crease-angle", value("crease-angle"), 1, "a number")[0];
         checkRange("crease-angle", v, 0.0f, limits::kMaxCreaseDegrees);
@@ -188,8 +192,9 @@ void parseSceneOptions(const QCommandLineParser &parser, CommandLine &cl)
             bool unbound = false;
             const std::optional<Semantic> semantic = semanticFromKey(key, &unbound);
             if (!semantic && !unbound)
-                fail("bind", QString("\"%1\" is not what the scene gives; KEY is one of: %2")
-                                 .arg(echoed(key), QStringList(semanticKeys() << kUnboundKey).join(", ")));
+                fail("bind",
+                     QString("\"%1\" is not what the scene gives; KEY is one of: %2")
+                         .arg(echoed(key), QStringList(semanticKeys() << kUnboundKey).join(", ")));
             bindings[name] = semantic;
         }
         if (int(bindings.size()) > limits::kMaxBindings)

@@ -9,6 +9,7 @@
 #include "resident_memory.h"
 #include "safe_write.h"
 #include "scene_budget.h"
+#include "view_coverage.h"
 
 #include <QElapsedTimer>
 #include <QEventLoop>
@@ -301,6 +302,20 @@ int runHeadless(const CommandLine &cl, const Scene &requested)
             return 1;
         if (cl.check)
             return 0;
+    }
+
+    for (const QString &turned : offscreen.facesRemarks(scene))
+        printLine("lightbench: " + turned.toUtf8(), stderr);
+    // A file that loads but draws nothing in view, or only its back, says why.
+    for (int i = 0; i < int(scene.objects.size()); ++i) {
+        const ObjectSettings &o = scene.objects[std::size_t(i)];
+        if (o.meshPath.isEmpty())
+            continue;
+        if (const QString why = viewProblem(scene, i, offscreen.objectMesh(scene, i), cl.size);
+            !why.isEmpty())
+            printLine(("lightbench: " + escapedName(QFileInfo(o.meshPath).fileName()) + " " + why)
+                          .toUtf8(),
+                      stderr);
     }
 
     // Past here only pixels are needed, except by the probe: a big mesh's frame holds one

@@ -142,14 +142,19 @@ void MeshActions::showSummary()
         m_summary->setFullText(problem);
         return;
     }
-    const QString triangles = interfaceLocale().toString(qulonglong(mesh->triangleCount()));
-    // A file says how long it took to read, in the same sentence.
-    m_summary->setText(
-        file ? tr("%1: %2 triangles, %3 s")
-                   .arg(QFileInfo(file->path).fileName(), triangles,
-                        QString::number(file->seconds, 'f', 2))
-             : tr("%1: %2 triangles")
-                   .arg(displayName(m_document->scene().selectedObject()), triangles));
+    // A two-sided mesh draws each triangle twice: the object's own are counted.
+    const std::size_t copies = object.faces == Faces::TwoSided ? 2 : 1;
+    const QString triangles =
+        interfaceLocale().toString(qulonglong(mesh->triangleCount() / copies));
+    // A file says how long it took to read, in the same sentence, and what was turned.
+    QString text = file ? tr("%1: %2 triangles, %3 s")
+                              .arg(QFileInfo(file->path).fileName(), triangles,
+                                   QString::number(file->seconds, 'f', 2))
+                        : tr("%1: %2 triangles").arg(displayName(object), triangles);
+    if (const QString turned = m_loader->facesRemark(); !turned.isEmpty())
+        //: a mesh's short summary (%1) and what was turned in it (%2: "faces turned: ...")
+        text = tr("%1; %2").arg(text, turned);
+    m_summary->setText(text);
     m_summary->setFullText(m_loader->summary());
 }
 

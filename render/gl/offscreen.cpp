@@ -1,9 +1,11 @@
 #include "offscreen.h"
 
+#include "message_text.h"
 #include "program_route.h"
 #include "texture_file.h"
 
 #include <QCoreApplication>
+#include <QFileInfo>
 #include <QOpenGLFunctions>
 
 namespace lb {
@@ -125,7 +127,9 @@ const Mesh &OffscreenRenderer::objectMesh(const Scene &scene, int index)
     if (const auto image = m_textures.find(object.textureFile); image != m_textures.end())
         texture = image->second;
     if (key != built || !m_renderer.objectMesh(index)) {
-        m_renderer.setObject(index, buildObjectMesh(object, file), texture);
+        m_remarks.resize(m_keys.size());
+        m_renderer.setObject(
+            index, buildObjectMesh(object, file, nullptr, &m_remarks[std::size_t(index)]), texture);
         built = key;
     } else {
         m_renderer.setObject(index, m_renderer.sharedObjectMesh(index), texture);
@@ -148,6 +152,21 @@ void OffscreenRenderer::prepareObjects(const Scene &scene)
     m_keys.resize(scene.objects.size());
     for (int i = 0; i < int(scene.objects.size()); ++i)
         objectMesh(scene, i);
+}
+
+QStringList OffscreenRenderer::facesRemarks(const Scene &scene)
+{
+    prepareObjects(scene);
+    QStringList lines;
+    for (std::size_t i = 0; i < scene.objects.size() && i < m_remarks.size(); ++i) {
+        if (m_remarks[i].isEmpty())
+            continue;
+        const QString line =
+            escapedName(QFileInfo(scene.objects[i].meshPath).fileName()) + ": " + m_remarks[i];
+        if (!lines.contains(line))
+            lines << line;
+    }
+    return lines;
 }
 
 void OffscreenRenderer::dropCpuMeshes(const Scene &scene)

@@ -62,6 +62,9 @@ public:
     // The mesh drawn for object `index` of `scene`, built when its settings ask for another
     // one. Not after dropCpuMeshes().
     const Mesh &objectMesh(const Scene &scene, int index = 0);
+    // What the Faces choice turned in the meshes of `scene`'s objects, built as objectMesh()
+    // builds them: "bunny.ply: faces turned: the file winds them clockwise", one line a file.
+    QStringList facesRemarks(const Scene &scene);
     // What the probe needs of every object of `scene` (probe.h), built as objectMesh() builds.
     ProbedObjects probedObjects(const Scene &scene);
     // For frames that need only pixels from now on (the command line without --probe): the
@@ -83,6 +86,7 @@ private:
     std::map<QString, std::shared_ptr<const MeshFile>> m_files;   // by path
     std::map<QString, std::shared_ptr<const Texture>> m_textures; // by path
     std::vector<std::optional<ObjectMeshKey>> m_keys;             // by object
+    std::vector<QString> m_remarks; // by object: buildObjectMesh's remark
     bool m_meshGiven = false;
     bool m_gpuOnly = false; // dropCpuMeshes() was called
     // Builds the objects' meshes for `scene` unless given or only on the GPU.

@@ -395,7 +395,7 @@ void Renderer::drawObjects(const Scene &scene, const BuiltProgram &program, floa
         glActiveTexture(GL_TEXTURE0);
         glBindTexture(GL_TEXTURE_2D, o.textureGl ? o.textureGl->id() : m_checkerTexture.id());
         applySampling(*this, object.sampling); // objects sharing the checker differ in this
-        if (object.cullBackFaces) {
+        if (object.culls()) {
             glEnable(GL_CULL_FACE);
             glCullFace(GL_BACK);
             glFrontFace(mirrors(frames) ? GL_CW : GL_CCW);

@@ -15,6 +15,8 @@
 #include <memory>
 #include <new>
 #include <sstream>
+#include <string>
+#include <vector>
 
 namespace lb {
 
@@ -70,6 +72,25 @@ std::pair<std::uint64_t, std::string> fileByteLimit(long long memoryLimitMB)
     return {std::uint64_t(machineMB) << 20, "the machine's memory"};
 }
 
+// "the file holds no meshes: only an animation and 2 cameras": what it holds instead.
+std::string noMeshes(const aiScene &scene)
+{
+    std::vector<std::string> held;
+    auto count = [&held](unsigned n, const char *one, const char *many) {
+        if (n == 1)
+            held.push_back(one);
+        else if (n > 1)
+            held.push_back(std::to_string(n) + " " + many);
+    };
+    count(scene.mNumAnimations, "an animation", "animations");
+    count(scene.mNumCameras, "a camera", "cameras");
+    count(scene.mNumLights, "a light", "lights");
+    std::string s = "the file holds no meshes";
+    for (std::size_t i = 0; i < held.size(); ++i)
+        s += (i == 0 ? ": only " : i + 1 == held.size() ? " and " : ", ") + held[i];
+    return s;
+}
+
 } // namespace
 
 int importToStream(const std::string &path, wire::Writer &out, long long memoryLimitMB)
@@ -111,7 +132,7 @@ int importToStream(const std::string &path, wire::Writer &out, long long memoryL
             return out.fail(error);
         }
         if (!scene->mMeshes || scene->mNumMeshes == 0)
-            return out.fail("the file holds no meshes");
+            return out.fail(noMeshes(*scene));
         // Assimp did without them (a material library: the default material instead).
         for (const std::string &problem : files->problems())
             out.text(Record::Warning, problem);

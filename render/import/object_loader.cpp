@@ -50,6 +50,12 @@ ObjectLoader::~ObjectLoader()
     m_pool.waitForDone();
 }
 
+QString ObjectLoader::facesRemark(int index) const
+{
+    index = resolve(index);
+    return index < int(m_slots.size()) ? m_slots[std::size_t(index)].remark : QString();
+}
+
 int ObjectLoader::resolve(int index) const
 {
     return index < 0 ? m_document->scene().selected : index;
@@ -113,7 +119,11 @@ QString ObjectLoader::summary() const
     const MeshFile *loaded = file();
     const QString name = loaded ? QFileInfo(loaded->path).fileName()
                                 : shapeLabel(m_document->scene().selectedObject().shape);
-    return meshSummary(name, drawn->vertexCount(), drawn->triangleCount(), loaded);
+    // A two-sided mesh draws each triangle twice; the summary counts the object's own.
+    const std::size_t copies =
+        m_document->scene().selectedObject().faces == Faces::TwoSided ? 2 : 1;
+    return meshSummary(name, drawn->vertexCount() / copies, drawn->triangleCount() / copies, loaded,
+                       facesRemark());
 }
 
 void ObjectLoader::open(const QString &path)
@@ -331,7 +341,9 @@ void ObjectLoader::startBuild(int index, const ObjectSettings &object,
     m_job = job;
     const auto build = [job] { // nothing escapes: an exception would end the process
         ObjectMeshBuild b = tryBuildObjectMesh(job->object, job->file.get(), &job->cancel);
-        std::tie(job->mesh, job->error) = std::pair(std::move(b.mesh), std::move(b.error));
+        job->mesh = std::move(b.mesh);
+        job->error = std::move(b.error);
+        job->remark = std::move(b.remark);
     };
     if (objectMeshWork(job->object, job->file.get()) <= kBuildInlineWork) {
         build();
@@ -378,8 +390,8 @@ void ObjectLoader::finishBuild(const std::shared_ptr<Job> &job)
     if (built) {
         if (int(m_slots.size()) <= index)
             m_slots.resize(std::size_t(index) + 1);
-        m_slots[std::size_t(index)] = {job->file, job->mesh,
-                                       job->file ? job->file->texture : nullptr, job->key};
+        m_slots[std::size_t(index)] = {
+            job->file, job->mesh, job->file ? job->file->texture : nullptr, job->key, job->remark};
     }
     if (job->commit) {
         m_loading = false;

@@ -63,6 +63,9 @@ public:
     // Why object `index`'s mesh file is not drawn ("FILE: no such file", ...; its shape is
     // drawn instead), or empty.
     QString meshProblem(int index = -1) const;
+    // What the Faces choice turned in object `index`'s mesh ("faces turned: the file winds
+    // them clockwise"), or empty.
+    QString facesRemark(int index = -1) const;
     int objectCount() const { return int(m_slots.size()); }
     // "teapot.obj: 6,320 vertices, 12,288 triangles, loaded in 0.21 s", or the shape's, for
     // the selected object.
@@ -102,7 +105,8 @@ private:
         bool commit = false; // the last step of open(): the file becomes the object's mesh
         std::atomic_bool cancel{false};
         std::shared_ptr<const Mesh> mesh;
-        QString error; // why there is no mesh: tryBuildObjectMesh's
+        QString error;  // why there is no mesh: tryBuildObjectMesh's
+        QString remark; // what the Faces choice turned
     };
     // What one object draws, and what it was built from.
     struct Slot
@@ -111,6 +115,7 @@ private:
         std::shared_ptr<const Mesh> mesh;
         std::shared_ptr<const Texture> texture;
         ObjectMeshKey key;
+        QString remark; // what the Faces choice turned ("faces turned: ...")
     };
 
     void sync();

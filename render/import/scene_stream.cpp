@@ -165,6 +165,30 @@ void plan(Instance &in, Counts &counts)
     }
 }
 
+// Whether any kept triangle has an area worth a pixel at any size the workbench draws (a
+// millionth of the largest extent on each side): a file whose triangles all collapse to
+// lines or points draws nothing at all. Stops at the first such triangle.
+bool anyArea(const std::vector<Instance> &list, double largestExtent)
+{
+    const double tiny = 1e-12 * largestExtent * largestExtent;
+    for (const Instance &in : list) {
+        if (!in.used())
+            continue;
+        const aiMesh &m = *in.mesh;
+        for (unsigned f = 0; f < m.mNumFaces; ++f) {
+            const aiFace &face = m.mFaces[f];
+            if (!isTriangle(face, m.mNumVertices) || !in.kept(face.mIndices[0]) ||
+                !in.kept(face.mIndices[1]) || !in.kept(face.mIndices[2]))
+                continue;
+            const glm::dvec3 a = position(in, face.mIndices[0]), b = position(in, face.mIndices[1]),
+                             c = position(in, face.mIndices[2]);
+            if (glm::length(glm::cross(b - a, c - a)) > tiny)
+                return true;
+        }
+    }
+    return false;
+}
+
 // The file's normals are used only when every drawn mesh has them and they are all usable;
 // `nonFinite` counts those that are NaN or infinite.
 bool usableNormals(const std::vector<Instance> &list, std::uint64_t &nonFinite)
@@ -290,13 +314,23 @@ int writeScene(const aiScene &scene, wire::Writer &out, const ImportProgress &pr
     }
     if (vertexCount > wire::kMaxVertices)
         return out.fail("too many vertices for 32-bit indices");
+    const glm::dvec3 centre = 0.5 * (counts.lo + counts.hi);
+    const glm::dvec3 extent = counts.hi - counts.lo;
+    const double largestExtent = std::max(extent.x, std::max(extent.y, extent.z));
+    if (!(largestExtent > 0.0) || !anyArea(list, largestExtent)) {
+        std::ostringstream s;
+        s << "nothing to draw: the file's " << triangleCount
+          << (triangleCount == 1 ? " triangle has" : " triangles have") << " no area ("
+          << (largestExtent == 0.0 ? "every vertex is at the same point"
+              : triangleCount == 1 ? "its corners lie on a line"
+                                   : "the corners of each lie on a line")
+          << ")";
+        return out.fail(s.str());
+    }
     progress(0.85f, "converting");
 
     std::uint64_t nonFiniteNormals = 0;
     const bool normals = usableNormals(list, nonFiniteNormals);
-    const glm::dvec3 centre = 0.5 * (counts.lo + counts.hi);
-    const glm::dvec3 extent = counts.hi - counts.lo;
-    const double largestExtent = std::max(extent.x, std::max(extent.y, extent.z));
     const double scale = largestExtent > 0.0
                              ? 2.0 / largestExtent
                              : 1.0; // fit in the cube [-1, 1], as the built-in shapes do

@@ -3194,7 +3194,7 @@
         <translation>%1 nicht geladen (%2 gezeichnet)</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+10"/>
         <source>%1: %2 triangles, %3 s</source>
         <translation>%1: %2 Dreiecke, %3 s</translation>
     </message>
@@ -3202,6 +3202,12 @@
         <location line="+3"/>
         <source>%1: %2 triangles</source>
         <translation>%1: %2 Dreiecke</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1; %2</source>
+        <extracomment>a mesh&apos;s short summary (%1) and what was turned in it (%2: &quot;faces turned: ...&quot;)</extracomment>
+        <translation>%1; %2</translation>
     </message>
     <message>
         <location line="+10"/>
@@ -3292,10 +3298,33 @@
         <translation>%1: %2 Vertices, %3 Dreiecke, geladen in %4 s, Normalen erzeugt (die Datei hat keine)</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+9"/>
         <source>%1 (%2)</source>
         <extracomment>a mesh&apos;s summary (%1) and what was skipped or not used in its file (%2, a list)</extracomment>
         <translation>%1 (%2)</translation>
+    </message>
+</context>
+<context>
+    <name>lb::MeshOrientation</name>
+    <message>
+        <location filename="../../render/model/mesh/mesh_orientation.cpp" line="+217"/>
+        <source>faces turned: the file winds them clockwise</source>
+        <translation>Flächen gewendet: die Datei ordnet sie im Uhrzeigersinn an</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>faces of %1 of %2 closed parts turned: the file winds them clockwise</source>
+        <translation>Flächen von %1 der %2 geschlossenen Teile gewendet: die Datei ordnet sie im Uhrzeigersinn an</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>normals turned: the file&apos;s point inwards</source>
+        <translation>Normalen gewendet: die der Datei zeigen nach innen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>normals of %1 of %2 closed parts turned: the file&apos;s point inwards</source>
+        <translation>Normalen von %1 der %2 geschlossenen Teile gewendet: die der Datei zeigen nach innen</translation>
     </message>
 </context>
 <context>
@@ -3351,7 +3380,7 @@
         <translation>%1 (die Objekte, die diese Datei nennen, zeigen die Textur der Mesh-Datei oder das Schachbrettmuster und behalten den Dateinamen für den Fall, dass die Datei wieder da ist)</translation>
     </message>
     <message>
-        <location filename="../../render/import/object_loader.cpp" line="+163"/>
+        <location filename="../../render/import/object_loader.cpp" line="+173"/>
         <source>%1: not used: its object was removed</source>
         <translation>%1: nicht verwendet: sein Objekt wurde entfernt</translation>
     </message>
@@ -3368,12 +3397,12 @@
     <message>
         <location filename="../../app/window/mesh_actions.cpp" line="-25"/>
         <location filename="../../render/import/object_loader.cpp" line="+2"/>
-        <location line="+184"/>
+        <location line="+187"/>
         <source>Loading cancelled</source>
         <translation>Laden abgebrochen</translation>
     </message>
     <message>
-        <location filename="../../render/import/object_loader.cpp" line="-62"/>
+        <location filename="../../render/import/object_loader.cpp" line="-63"/>
         <source>building</source>
         <translation>wird erstellt</translation>
     </message>
@@ -3381,7 +3410,7 @@
 <context>
     <name>lb::ObjectMesh</name>
     <message>
-        <location filename="../../render/model/mesh/object_mesh.cpp" line="+32"/>
+        <location filename="../../render/model/mesh/object_mesh.cpp" line="+33"/>
         <source>out of memory building %1&apos;s normals (%2 triangles)</source>
         <translation>nicht genug Speicher zum Erzeugen der Normalen von %1 (%2 Dreiecke)</translation>
     </message>
@@ -3407,7 +3436,7 @@
     </message>
     <message>
         <location line="+3"/>
-        <location line="+69"/>
+        <location line="+98"/>
         <source>out of memory building a mesh</source>
         <translation>nicht genug Speicher zum Erstellen eines Meshes</translation>
     </message>
@@ -3530,6 +3559,36 @@
         <translation>Normalen</translation>
     </message>
     <message>
+        <location line="+1"/>
+        <source>Outward</source>
+        <translation>Nach außen</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>As in the file</source>
+        <translation>Wie in der Datei</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Flipped</source>
+        <translation>Umgedreht</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Both sides lit</source>
+        <translation>Beide Seiten beleuchtet</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Which way a mesh file&apos;s faces look. Outward: a closed part wound inwards (lit from inside) is turned, with its normals, and the status line says so; as in the file; every face flipped; or both sides lit, each with the normal facing the camera (for open meshes: a sheet, a scan with holes)</source>
+        <translation>Wohin die Flächen einer Mesh-Datei schauen. Nach außen: ein geschlossener Teil, der nach innen zeigt (von innen beleuchtet), wird samt Normalen gewendet, und die Statuszeile sagt es; wie in der Datei; jede Fläche umgedreht; oder beide Seiten beleuchtet, jede mit der Normalen zur Kamera (für offene Meshes: eine Fläche, ein Scan mit Löchern)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Faces</source>
+        <translation>Flächen</translation>
+    </message>
+    <message>
         <location line="+2"/>
         <source>Generated smooth normals average only triangles that meet at less than this angle: 0 is flat, 180 smooths every edge</source>
         <translation>Erzeugte glatte Normalen mitteln nur über Dreiecke, die sich unter weniger als diesem Winkel treffen: 0 ist flach, 180 glättet jede Kante</translation>
@@ -3637,7 +3696,7 @@
 <context>
     <name>lb::Offscreen</name>
     <message>
-        <location filename="../../render/gl/offscreen.cpp" line="+47"/>
+        <location filename="../../render/gl/offscreen.cpp" line="+49"/>
         <source>cannot create an OpenGL context (is there an X server with OpenGL?)</source>
         <translation>OpenGL-Kontext kann nicht erstellt werden (gibt es einen X-Server mit OpenGL?)</translation>
     </message>
@@ -4376,7 +4435,7 @@
 <context>
     <name>lb::Scene</name>
     <message>
-        <location filename="../../render/model/scene/scene.cpp" line="+413"/>
+        <location filename="../../render/model/scene/scene.cpp" line="+429"/>
         <source>cube</source>
         <translation>Würfel</translation>
     </message>
@@ -4745,7 +4804,7 @@
 <context>
     <name>lb::SceneJson</name>
     <message>
-        <location filename="../../render/model/scene/scene_json.cpp" line="+110"/>
+        <location filename="../../render/model/scene/scene_json.cpp" line="+111"/>
         <source>w must be 0 or 1</source>
         <translation>w muss 0 oder 1 sein</translation>
     </message>
@@ -4761,7 +4820,7 @@
         <translation>kc, kl und kq alle 0</translation>
     </message>
     <message>
-        <location line="+80"/>
+        <location line="+81"/>
         <source>not one of the values the scene feeds (%1)</source>
         <translation>keiner der Werte, die die Szene speist (%1)</translation>
     </message>
@@ -5738,6 +5797,40 @@
         <location line="+5"/>
         <source>Discard</source>
         <translation>Verwerfen</translation>
+    </message>
+</context>
+<context>
+    <name>lb::ViewCoverage</name>
+    <message>
+        <location filename="../../render/model/measure/view_coverage.cpp" line="+86"/>
+        <source>draws nothing in view: every face in view turns its back to the camera, and back faces are culled</source>
+        <translation>zeichnet nichts im Bild: jede Fläche im Bild kehrt der Kamera den Rücken zu, und Rückseiten werden weggelassen</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>is seen from behind: every face in view turns its back to the camera, lit as from behind (dark); Faces: Both sides lit shows that side lit</source>
+        <translation>wird von hinten gesehen: jede Fläche im Bild kehrt der Kamera den Rücken zu und ist wie von hinten beleuchtet (dunkel); Flächen: Beide Seiten beleuchtet zeigt diese Seite beleuchtet</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>draws nothing in view: it lies outside the view</source>
+        <translation>zeichnet nichts im Bild: es liegt außerhalb des Bildes</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>draws nothing in view: every face in view turns away from the camera and back faces are culled</source>
+        <translation>zeichnet nichts im Bild: jede Fläche im Bild ist von der Kamera abgewandt, und Rückseiten werden weggelassen</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>draws nothing in view: it is flat (in the %1 plane) and seen edge-on: turn it or the camera</source>
+        <extracomment>%1: the plane the mesh lies in (YZ, XZ, XY)</extracomment>
+        <translation>zeichnet nichts im Bild: es ist flach (in der %1-Ebene) und wird von der Kante gesehen: drehen Sie es oder die Kamera</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>draws nothing in view: it covers less than a pixel</source>
+        <translation>zeichnet nichts im Bild: es bedeckt weniger als ein Pixel</translation>
     </message>
 </context>
 <context>

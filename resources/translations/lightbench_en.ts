@@ -3187,13 +3187,19 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+10"/>
         <source>%1: %2 triangles, %3 s</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location line="+3"/>
         <source>%1: %2 triangles</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1; %2</source>
+        <extracomment>a mesh&apos;s short summary (%1) and what was turned in it (%2: &quot;faces turned: ...&quot;)</extracomment>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -3285,9 +3291,32 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+9"/>
         <source>%1 (%2)</source>
         <extracomment>a mesh&apos;s summary (%1) and what was skipped or not used in its file (%2, a list)</extracomment>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>lb::MeshOrientation</name>
+    <message>
+        <location filename="../../render/model/mesh/mesh_orientation.cpp" line="+217"/>
+        <source>faces turned: the file winds them clockwise</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>faces of %1 of %2 closed parts turned: the file winds them clockwise</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>normals turned: the file&apos;s point inwards</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>normals of %1 of %2 closed parts turned: the file&apos;s point inwards</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -3340,8 +3369,8 @@
     <name>lb::ObjectLoader</name>
     <message>
         <location filename="../../app/window/mesh_actions.cpp" line="-25"/>
-        <location filename="../../render/import/object_loader.cpp" line="+220"/>
-        <location line="+184"/>
+        <location filename="../../render/import/object_loader.cpp" line="+230"/>
+        <location line="+187"/>
         <source>Loading cancelled</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3351,7 +3380,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../render/import/object_loader.cpp" line="-241"/>
+        <location filename="../../render/import/object_loader.cpp" line="-244"/>
         <source>%1: not used: its object was removed</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3366,7 +3395,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+124"/>
+        <location line="+126"/>
         <source>building</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3374,7 +3403,7 @@
 <context>
     <name>lb::ObjectMesh</name>
     <message>
-        <location filename="../../render/model/mesh/object_mesh.cpp" line="+32"/>
+        <location filename="../../render/model/mesh/object_mesh.cpp" line="+33"/>
         <source>out of memory building %1&apos;s normals (%2 triangles)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3400,7 +3429,7 @@
     </message>
     <message>
         <location line="+3"/>
-        <location line="+69"/>
+        <location line="+98"/>
         <source>out of memory building a mesh</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3523,6 +3552,36 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location line="+1"/>
+        <source>Outward</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>As in the file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Flipped</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Both sides lit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Which way a mesh file&apos;s faces look. Outward: a closed part wound inwards (lit from inside) is turned, with its normals, and the status line says so; as in the file; every face flipped; or both sides lit, each with the normal facing the camera (for open meshes: a sheet, a scan with holes)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Faces</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location line="+2"/>
         <source>Generated smooth normals average only triangles that meet at less than this angle: 0 is flat, 180 smooths every edge</source>
         <translation type="unfinished"></translation>
@@ -3630,7 +3689,7 @@
 <context>
     <name>lb::Offscreen</name>
     <message>
-        <location filename="../../render/gl/offscreen.cpp" line="+47"/>
+        <location filename="../../render/gl/offscreen.cpp" line="+49"/>
         <source>cannot create an OpenGL context (is there an X server with OpenGL?)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4366,7 +4425,7 @@
 <context>
     <name>lb::Scene</name>
     <message>
-        <location filename="../../render/model/scene/scene.cpp" line="+413"/>
+        <location filename="../../render/model/scene/scene.cpp" line="+429"/>
         <source>cube</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4735,7 +4794,7 @@
 <context>
     <name>lb::SceneJson</name>
     <message>
-        <location filename="../../render/model/scene/scene_json.cpp" line="+110"/>
+        <location filename="../../render/model/scene/scene_json.cpp" line="+111"/>
         <source>w must be 0 or 1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4751,7 +4810,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+80"/>
+        <location line="+81"/>
         <source>not one of the values the scene feeds (%1)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5725,6 +5784,40 @@
     <message>
         <location line="+5"/>
         <source>Discard</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>lb::ViewCoverage</name>
+    <message>
+        <location filename="../../render/model/measure/view_coverage.cpp" line="+86"/>
+        <source>draws nothing in view: every face in view turns its back to the camera, and back faces are culled</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>is seen from behind: every face in view turns its back to the camera, lit as from behind (dark); Faces: Both sides lit shows that side lit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>draws nothing in view: it lies outside the view</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>draws nothing in view: every face in view turns away from the camera and back faces are culled</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>draws nothing in view: it is flat (in the %1 plane) and seen edge-on: turn it or the camera</source>
+        <extracomment>%1: the plane the mesh lies in (YZ, XZ, XY)</extracomment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>draws nothing in view: it covers less than a pixel</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

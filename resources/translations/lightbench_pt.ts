@@ -3194,7 +3194,7 @@
         <translation>%1 não carregado (desenha-se %2)</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+10"/>
         <source>%1: %2 triangles, %3 s</source>
         <translation>%1: %2 triângulos, %3 s</translation>
     </message>
@@ -3202,6 +3202,12 @@
         <location line="+3"/>
         <source>%1: %2 triangles</source>
         <translation>%1: %2 triângulos</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1; %2</source>
+        <extracomment>a mesh&apos;s short summary (%1) and what was turned in it (%2: &quot;faces turned: ...&quot;)</extracomment>
+        <translation>%1; %2</translation>
     </message>
     <message>
         <location line="+10"/>
@@ -3292,10 +3298,33 @@
         <translation>%1: %2 vértices, %3 triângulos, carregado em %4 s, normais geradas (o ficheiro não tem nenhuma)</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+9"/>
         <source>%1 (%2)</source>
         <extracomment>a mesh&apos;s summary (%1) and what was skipped or not used in its file (%2, a list)</extracomment>
         <translation>%1 (%2)</translation>
+    </message>
+</context>
+<context>
+    <name>lb::MeshOrientation</name>
+    <message>
+        <location filename="../../render/model/mesh/mesh_orientation.cpp" line="+217"/>
+        <source>faces turned: the file winds them clockwise</source>
+        <translation>faces viradas: o ficheiro ordena-as no sentido dos ponteiros do relógio</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>faces of %1 of %2 closed parts turned: the file winds them clockwise</source>
+        <translation>faces de %1 de %2 partes fechadas viradas: o ficheiro ordena-as no sentido dos ponteiros do relógio</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>normals turned: the file&apos;s point inwards</source>
+        <translation>normais viradas: as do ficheiro apontam para dentro</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>normals of %1 of %2 closed parts turned: the file&apos;s point inwards</source>
+        <translation>normais de %1 de %2 partes fechadas viradas: as do ficheiro apontam para dentro</translation>
     </message>
 </context>
 <context>
@@ -3351,7 +3380,7 @@
         <translation>%1 (os objetos que o referem mostram a textura do ficheiro da malha ou o xadrez, e guardam o seu nome para quando o ficheiro voltar)</translation>
     </message>
     <message>
-        <location filename="../../render/import/object_loader.cpp" line="+163"/>
+        <location filename="../../render/import/object_loader.cpp" line="+173"/>
         <source>%1: not used: its object was removed</source>
         <translation>%1: não usado: o seu objeto foi removido</translation>
     </message>
@@ -3368,12 +3397,12 @@
     <message>
         <location filename="../../app/window/mesh_actions.cpp" line="-25"/>
         <location filename="../../render/import/object_loader.cpp" line="+2"/>
-        <location line="+184"/>
+        <location line="+187"/>
         <source>Loading cancelled</source>
         <translation>Carregamento cancelado</translation>
     </message>
     <message>
-        <location filename="../../render/import/object_loader.cpp" line="-62"/>
+        <location filename="../../render/import/object_loader.cpp" line="-63"/>
         <source>building</source>
         <translation>a construir</translation>
     </message>
@@ -3381,7 +3410,7 @@
 <context>
     <name>lb::ObjectMesh</name>
     <message>
-        <location filename="../../render/model/mesh/object_mesh.cpp" line="+32"/>
+        <location filename="../../render/model/mesh/object_mesh.cpp" line="+33"/>
         <source>out of memory building %1&apos;s normals (%2 triangles)</source>
         <translation>sem memória para construir as normais de %1 (%2 triângulos)</translation>
     </message>
@@ -3407,7 +3436,7 @@
     </message>
     <message>
         <location line="+3"/>
-        <location line="+69"/>
+        <location line="+98"/>
         <source>out of memory building a mesh</source>
         <translation>sem memória para construir uma malha</translation>
     </message>
@@ -3530,6 +3559,36 @@
         <translation>Normais</translation>
     </message>
     <message>
+        <location line="+1"/>
+        <source>Outward</source>
+        <translation>Para fora</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>As in the file</source>
+        <translation>Como no ficheiro</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Flipped</source>
+        <translation>Invertidas</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Both sides lit</source>
+        <translation>Ambos os lados iluminados</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Which way a mesh file&apos;s faces look. Outward: a closed part wound inwards (lit from inside) is turned, with its normals, and the status line says so; as in the file; every face flipped; or both sides lit, each with the normal facing the camera (for open meshes: a sheet, a scan with holes)</source>
+        <translation>Para onde olham as faces de um ficheiro de malha. Para fora: uma parte fechada orientada para dentro (iluminada por dentro) é virada, com as suas normais, e a linha de estado di-lo; como no ficheiro; todas as faces invertidas; ou ambos os lados iluminados, cada um com a normal virada para a câmara (para malhas abertas: uma folha, um scan com buracos)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Faces</source>
+        <translation>Faces</translation>
+    </message>
+    <message>
         <location line="+2"/>
         <source>Generated smooth normals average only triangles that meet at less than this angle: 0 is flat, 180 smooths every edge</source>
         <translation>As normais suaves geradas só fazem a média de triângulos que se encontram a menos deste ângulo: 0 é plano, 180 suaviza todas as arestas</translation>
@@ -3637,7 +3696,7 @@
 <context>
     <name>lb::Offscreen</name>
     <message>
-        <location filename="../../render/gl/offscreen.cpp" line="+47"/>
+        <location filename="../../render/gl/offscreen.cpp" line="+49"/>
         <source>cannot create an OpenGL context (is there an X server with OpenGL?)</source>
         <translation>não é possível criar um contexto OpenGL (existe um servidor X com OpenGL?)</translation>
     </message>
@@ -4376,7 +4435,7 @@
 <context>
     <name>lb::Scene</name>
     <message>
-        <location filename="../../render/model/scene/scene.cpp" line="+413"/>
+        <location filename="../../render/model/scene/scene.cpp" line="+429"/>
         <source>cube</source>
         <translation>cubo</translation>
     </message>
@@ -4745,7 +4804,7 @@
 <context>
     <name>lb::SceneJson</name>
     <message>
-        <location filename="../../render/model/scene/scene_json.cpp" line="+110"/>
+        <location filename="../../render/model/scene/scene_json.cpp" line="+111"/>
         <source>w must be 0 or 1</source>
         <translation>w tem de ser 0 ou 1</translation>
     </message>
@@ -4761,7 +4820,7 @@
         <translation>kc, kl e kq todos a 0</translation>
     </message>
     <message>
-        <location line="+80"/>
+        <location line="+81"/>
         <source>not one of the values the scene feeds (%1)</source>
         <translation>não é nenhum dos valores que a cena alimenta (%1)</translation>
     </message>
@@ -5738,6 +5797,40 @@
         <location line="+5"/>
         <source>Discard</source>
         <translation>Descartar</translation>
+    </message>
+</context>
+<context>
+    <name>lb::ViewCoverage</name>
+    <message>
+        <location filename="../../render/model/measure/view_coverage.cpp" line="+86"/>
+        <source>draws nothing in view: every face in view turns its back to the camera, and back faces are culled</source>
+        <translation>não desenha nada à vista: todas as faces à vista voltam as costas à câmara, e as faces de trás são omitidas</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>is seen from behind: every face in view turns its back to the camera, lit as from behind (dark); Faces: Both sides lit shows that side lit</source>
+        <translation>é visto por trás: todas as faces à vista voltam as costas à câmara, iluminadas como por trás (escuras); Faces: Ambos os lados iluminados mostra esse lado iluminado</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>draws nothing in view: it lies outside the view</source>
+        <translation>não desenha nada à vista: está fora da vista</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>draws nothing in view: every face in view turns away from the camera and back faces are culled</source>
+        <translation>não desenha nada à vista: todas as faces à vista estão viradas para longe da câmara e as faces de trás são omitidas</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>draws nothing in view: it is flat (in the %1 plane) and seen edge-on: turn it or the camera</source>
+        <extracomment>%1: the plane the mesh lies in (YZ, XZ, XY)</extracomment>
+        <translation>não desenha nada à vista: é plano (no plano %1) e visto de perfil: rode-o ou à câmara</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>draws nothing in view: it covers less than a pixel</source>
+        <translation>não desenha nada à vista: cobre menos de um píxel</translation>
     </message>
 </context>
 <context>

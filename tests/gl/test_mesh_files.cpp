@@ -110,6 +110,61 @@ private slots:
                  qPrintable(QString::number(topLeft, 16)));
     }
 
+    // A sphere of our own wound clockwise (as the Stanford bunny's bun_zipper.ply is), in an
+    // OBJ without normals: each Faces choice drawn by the built-in shaders matches the CPU
+    // reference (the probe's) on the same mesh, and the outward and two-sided ones are lit
+    // from outside: brighter than the file's inside-out surface (issue 48).
+    void insideOutFileMatchesTheReference_data()
+    {
+        QTest::addColumn<int>("faces");
+        QTest::addColumn<int>("shading");
+        QTest::addColumn<bool>("litOutside");
+        for (int f = 0; f < 4; ++f)
+            for (int sh = 0; sh < 2; ++sh)
+                QTest::newRow(
+                    qPrintable(QString("%1 %2").arg(toName(Faces(f)), toName(Shading(sh)))))
+                    << f << sh << (Faces(f) != Faces::File);
+    }
+    void insideOutFileMatchesTheReference()
+    {
+        QFETCH(int, faces);
+        QFETCH(int, shading);
+        QFETCH(bool, litOutside);
+        const QString path = m_dir.filePath("inside_out.obj");
+        if (!QFile::exists(path)) {
+            const Mesh sphere = makeSphere(32, 16);
+            QByteArray text;
+            for (const glm::vec3 &p : sphere.positions)
+                text += QByteArray("v ") + QByteArray::number(p.x) + ' ' + QByteArray::number(p.y) +
+                        ' ' + QByteArray::number(p.z) + '\n';
+            for (std::size_t t = 0; t < sphere.triangleCount(); ++t) // clockwise: 1, 3, 2
+                text += "f " + QByteArray::number(sphere.indices[3 * t] + 1) + ' ' +
+                        QByteArray::number(sphere.indices[3 * t + 2] + 1) + ' ' +
+                        QByteArray::number(sphere.indices[3 * t + 1] + 1) + '\n';
+            QFile obj(path);
+            QVERIFY(obj.open(QIODevice::WriteOnly));
+            QCOMPARE(obj.write(text), qint64(text.size()));
+        }
+        Scene s = sceneWith(path);
+        s.objects[0].faces = Faces(faces);
+        s.shading.shading = Shading(shading);
+        s.lights[0].position = glm::vec4(1.0f, 2.0f, 3.0f, 1.0f);
+        s.objects[0].material.shininess = 10;
+        const QString failure = checkAgainstReference(m_offscreen, s, QTest::currentDataTag(), 400,
+                                                      litOutside ? 20 : 0);
+        QVERIFY2(failure.isEmpty(), qPrintable(failure));
+        // The middle of the view, against the same file drawn as it is.
+        auto centre = [&](const Scene &scene) {
+            const QRgb p = m_offscreen.render(scene).pixel(kSize.width() / 2, kSize.height() / 2);
+            return qRed(p) + qGreen(p) + qBlue(p);
+        };
+        Scene asIs = s;
+        asIs.objects[0].faces = Faces::File;
+        if (litOutside)
+            QVERIFY2(centre(s) > centre(asIs) + 60,
+                     qPrintable(QString("%1 against %2").arg(centre(s)).arg(centre(asIs))));
+    }
+
     void normalLinesAreDrawnWhenAsked()
     {
         Scene s = sceneWith(kCorpus + "/PLY/cube.ply");

@@ -272,7 +272,8 @@ private slots:
     }
 
     // Where a mesh is built is decided on the work: the file's own normals are no work at
-    // any size; generated ones are a triangle's worth each, crowded or not (linear above).
+    // any size as the file has them; generated ones, and the outward check of a file's
+    // faces, are a triangle's worth each, crowded or not (linear above).
     void buildWorkCountsGeneratedNormals()
     {
         auto withNormals = std::make_shared<Mesh>(makeTorus(40, 20));
@@ -280,6 +281,8 @@ private slots:
         file.mesh = withNormals;
         ObjectSettings object;
         object.normals = NormalMode::File;
+        QCOMPARE(objectMeshWork(object, &file), withNormals->triangleCount()); // outward
+        object.faces = Faces::File;
         QCOMPARE(objectMeshWork(object, &file), std::size_t(0));
         object.normals = NormalMode::Smooth;
         QCOMPARE(objectMeshWork(object, &file), withNormals->triangleCount());

@@ -144,7 +144,7 @@ ProbeResult probePixel(const Scene &scene, const ProbedObjects &objects, QSize s
         eyePositions.resize(mesh->vertexCount());
         for (std::size_t i = 0; i < mesh->vertexCount(); ++i)
             eyePositions[i] = glm::vec3(frames.modelView * glm::vec4(mesh->positions[i], 1.0f));
-        const float front = !object.cullBackFaces ? 0.0f : mirrors(frames) ? -1.0f : 1.0f;
+        const float front = !object.culls() ? 0.0f : mirrors(frames) ? -1.0f : 1.0f;
         for (std::size_t tri = 0; tri < mesh->triangleCount(); ++tri) {
             const std::uint32_t *idx = &mesh->indices[tri * 3];
             const auto hit = intersect(origin, dir, eyePositions[idx[0]], eyePositions[idx[1]],

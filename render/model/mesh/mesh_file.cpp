@@ -56,7 +56,7 @@ QStringList MeshFile::remarks() const
 }
 
 QString meshSummary(const QString &name, qulonglong vertices, qulonglong triangles,
-                    const MeshFile *loaded)
+                    const MeshFile *loaded, const QString &turned)
 {
     const QLocale locale;
     const QString v = locale.toString(vertices), t = locale.toString(triangles);
@@ -75,7 +75,10 @@ QString meshSummary(const QString &name, qulonglong vertices, qulonglong triangl
                 "%1: %2 vertices, %3 triangles, loaded in %4 s, normals generated (the "
                 "file has none)")
                 .arg(name, v, t, seconds);
-    if (const QStringList remarks = loaded->remarks(); !remarks.isEmpty())
+    QStringList remarks = loaded->remarks();
+    if (!turned.isEmpty())
+        remarks.prepend(turned);
+    if (!remarks.isEmpty())
         //: a mesh's summary (%1) and what was skipped or not used in its file (%2, a list)
         s = MeshFileMessages::tr("%1 (%2)").arg(s, remarks.join("; "));
     return s;

@@ -52,8 +52,9 @@ struct MeshFile
 
 // What is drawn, for the status bar: "teapot.obj: 1,202 vertices, 2,256 triangles, loaded in
 // 0.12 s, normals generated (remarks)". `loaded`: the file drawn, or nullptr for the shape
-// called `name`; the counts as the window's locale writes them.
+// called `name`; the counts as the window's locale writes them. `turned`: what the Faces
+// choice turned (buildObjectMesh's remark), the first remark.
 QString meshSummary(const QString &name, qulonglong vertices, qulonglong triangles,
-                    const MeshFile *loaded);
+                    const MeshFile *loaded, const QString &turned = {});
 
 } // namespace lb

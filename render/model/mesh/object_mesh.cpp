@@ -1,6 +1,7 @@
 #include "object_mesh.h"
 
 #include "mesh_normals.h"
+#include "mesh_orientation.h"
 #include "message_text.h"
 
 #include <QCoreApplication>
@@ -52,7 +53,7 @@ QString outOfMemory(const ObjectSettings &object, const MeshFile *file)
 bool ObjectMeshKey::operator==(const ObjectMeshKey &o) const
 {
     return shape == o.shape && tessellation == o.tessellation && meshPath == o.meshPath &&
-           normals == o.normals && creaseDegrees == o.creaseDegrees;
+           normals == o.normals && faces == o.faces && creaseDegrees == o.creaseDegrees;
 }
 
 ObjectMeshKey objectMeshKey(const ObjectSettings &object, const MeshFile *file)
@@ -65,6 +66,8 @@ ObjectMeshKey objectMeshKey(const ObjectSettings &object, const MeshFile *file)
         key.tessellation = object.shape == Shape::Cube ? 0 : object.tessellation;
     }
     key.normals = object.normals;
+    // A shape is outward already: outward and as-is draw it the same.
+    key.faces = !file && object.faces == Faces::Outward ? Faces::File : object.faces;
     key.creaseDegrees = creaseOf(object);
     return key;
 }
@@ -73,24 +76,49 @@ std::size_t objectMeshWork(const ObjectSettings &object, const MeshFile *file)
 {
     if (!file)
         return shapeTriangleCount(object.shape, object.tessellation);
-    if (object.normals == NormalMode::File && !file->mesh->normals.empty())
+    if (object.normals == NormalMode::File && !file->mesh->normals.empty() &&
+        object.faces == Faces::File)
         return 0;
     return file->mesh->triangleCount();
 }
 
 std::shared_ptr<const Mesh> buildObjectMesh(const ObjectSettings &object, const MeshFile *file,
-                                            const std::atomic_bool *cancel)
+                                            const std::atomic_bool *cancel, QString *remark)
 {
+    if (remark)
+        remark->clear();
     try {
         std::shared_ptr<const Mesh> base =
             file ? file->mesh
                  : std::make_shared<const Mesh>(makeShape(object.shape, object.tessellation));
-        if (object.normals == NormalMode::File && !base->normals.empty())
-            return base;
-        std::optional<Mesh> generated = withGeneratedNormals(*base, creaseOf(object), cancel);
-        if (!generated)
-            return nullptr;
-        return std::make_shared<const Mesh>(std::move(*generated));
+        const bool fileNormals = object.normals == NormalMode::File && !base->normals.empty();
+        // Which way the faces look first: generated normals follow the winding.
+        if (object.faces == Faces::Flipped) {
+            base = std::make_shared<const Mesh>(flippedMesh(*base));
+        } else if (object.faces == Faces::Outward && file) { // the shapes are outward
+            std::optional<OrientationCheck> check = checkOrientation(*base, cancel);
+            if (!check)
+                return nullptr;
+            if (!fileNormals) { // the file's normals are not drawn: nothing to say of them
+                check->turnedNormals = 0;
+                for (std::uint8_t &p : check->part)
+                    p &= ~OrientationCheck::kTurnNormals;
+            }
+            if (check->changes()) {
+                base = std::make_shared<const Mesh>(orientedMesh(*base, *check));
+                if (remark)
+                    *remark = orientationRemark(*check);
+            }
+        }
+        if (!fileNormals) {
+            std::optional<Mesh> generated = withGeneratedNormals(*base, creaseOf(object), cancel);
+            if (!generated)
+                return nullptr;
+            base = std::make_shared<const Mesh>(std::move(*generated));
+        }
+        if (object.faces == Faces::TwoSided)
+            base = std::make_shared<const Mesh>(twoSidedMesh(*base));
+        return base;
     } catch (const ObjectMeshOutOfMemory &) {
         throw;
     } catch (const std::bad_alloc &) {
@@ -105,19 +133,21 @@ ObjectMeshBuild tryBuildObjectMesh(const ObjectSettings &object, const MeshFile 
                                    const std::atomic_bool *cancel) noexcept
 {
     try {
-        return {buildObjectMesh(object, file, cancel), {}};
+        ObjectMeshBuild b;
+        b.mesh = buildObjectMesh(object, file, cancel, &b.remark);
+        return b;
     } catch (const std::exception &e) {
         try {
-            return {nullptr, QString::fromUtf8(e.what())};
+            return {nullptr, QString::fromUtf8(e.what()), {}};
         } catch (...) { // not even the message fits: a shorter one below
         }
     } catch (...) {
     }
     try {
-        return {nullptr, ObjectMeshMessages::tr("out of memory building a mesh")};
+        return {nullptr, ObjectMeshMessages::tr("out of memory building a mesh"), {}};
     } catch (...) { // not even that fits: the QString is made of a literal (no allocation)
     }
-    return {nullptr, QStringLiteral("out of memory building a mesh")};
+    return {nullptr, QStringLiteral("out of memory building a mesh"), {}};
 }
 
 } // namespace lb

@@ -22,6 +22,7 @@ struct ObjectMeshKey
     int tessellation = 0;
     QString meshPath; // the file drawn; empty for the shape
     NormalMode normals = NormalMode::File;
+    Faces faces = Faces::Outward;
     float creaseDegrees = 0.0f;
     bool operator==(const ObjectMeshKey &o) const;
     bool operator!=(const ObjectMeshKey &o) const { return !(*this == o); }
@@ -50,8 +51,11 @@ private:
 };
 
 // Returns nullptr only when `cancel` was set; throws ObjectMeshOutOfMemory when memory runs out.
+// `remark`, when given, is set to what the Faces choice turned ("faces turned: the file winds
+// them clockwise"; mesh_orientation.h), or cleared.
 std::shared_ptr<const Mesh> buildObjectMesh(const ObjectSettings &object, const MeshFile *file,
-                                            const std::atomic_bool *cancel = nullptr);
+                                            const std::atomic_bool *cancel = nullptr,
+                                            QString *remark = nullptr);
 
 // The same for worker threads, where nothing may escape (Qt's thread pool aborts the process
 // on an exception): `error` says why there is no mesh ("out of memory building ...").
@@ -59,6 +63,7 @@ struct ObjectMeshBuild
 {
     std::shared_ptr<const Mesh> mesh; // nullptr: cancelled, or `error`
     QString error;
+    QString remark; // what the Faces choice turned, as buildObjectMesh says
 };
 ObjectMeshBuild tryBuildObjectMesh(const ObjectSettings &object, const MeshFile *file,
                                    const std::atomic_bool *cancel = nullptr) noexcept;

@@ -35,6 +35,10 @@ constexpr NameTable<Shape, 4> kShapes{{{Shape::Cube, "cube"},
                                        {Shape::Plane, "plane"}}};
 constexpr NameTable<NormalMode, 3> kNormalModes{
     {{NormalMode::File, "file"}, {NormalMode::Smooth, "smooth"}, {NormalMode::Flat, "flat"}}};
+constexpr NameTable<Faces, 4> kFaces{{{Faces::Outward, "outward"},
+                                      {Faces::File, "file"},
+                                      {Faces::Flipped, "flipped"},
+                                      {Faces::TwoSided, "two-sided"}}};
 constexpr NameTable<CompareMode, 4> kCompareModes{{{CompareMode::Off, "off"},
                                                    {CompareMode::SideBySide, "side-by-side"},
                                                    {CompareMode::Wipe, "wipe"},
@@ -84,11 +88,11 @@ template <typename E, std::size_t N> QStringList namesOf(const NameTable<E, N> &
 bool sameExceptMaterial(const ObjectSettings &a, const ObjectSettings &b)
 {
     return std::tie(a.name, a.visible, a.shape, a.tessellation, a.meshPath, a.normals,
-                    a.creaseDegrees, a.showNormals, a.cullBackFaces, a.adoptFileMaterial,
+                    a.creaseDegrees, a.faces, a.showNormals, a.cullBackFaces, a.adoptFileMaterial,
                     a.rotationDegrees, a.scale, a.translation, a.autoRotate, a.texture,
                     a.textureFile, a.sampling) ==
            std::tie(b.name, b.visible, b.shape, b.tessellation, b.meshPath, b.normals,
-                    b.creaseDegrees, b.showNormals, b.cullBackFaces, b.adoptFileMaterial,
+                    b.creaseDegrees, b.faces, b.showNormals, b.cullBackFaces, b.adoptFileMaterial,
                     b.rotationDegrees, b.scale, b.translation, b.autoRotate, b.texture,
                     b.textureFile, b.sampling);
 }
@@ -118,6 +122,10 @@ QString toName(Shape v)
 QString toName(NormalMode v)
 {
     return nameOf(kNormalModes, v);
+}
+QString toName(Faces v)
+{
+    return nameOf(kFaces, v);
 }
 QString toName(CompareMode v)
 {
@@ -159,6 +167,10 @@ std::optional<NormalMode> parseNormalMode(const QString &s)
 {
     return valueOf(kNormalModes, s);
 }
+std::optional<Faces> parseFaces(const QString &s)
+{
+    return valueOf(kFaces, s);
+}
 std::optional<CompareMode> parseCompareMode(const QString &s)
 {
     return valueOf(kCompareModes, s);
@@ -198,6 +210,10 @@ QStringList shapeNames()
 QStringList normalModeNames()
 {
     return namesOf(kNormalModes);
+}
+QStringList facesNames()
+{
+    return namesOf(kFaces);
 }
 QStringList compareModeNames()
 {

@@ -35,6 +35,14 @@ enum class Shape { Cube, Sphere, Torus, Plane };
 // Where the object's normals come from: the mesh's own (generated smooth when it has none),
 // or generated smooth (within the crease angle) or flat, whatever the mesh has.
 enum class NormalMode { File, Smooth, Flat };
+// Which way a mesh file's faces look. Outward: each closed part wound inwards (negative
+// signed volume) is turned, winding and normals, and normals that point against an outward
+// winding are turned too; parts that enclose no volume (open sheets) stay as the file has
+// them. File: as the file has them. Flipped: every face turned. TwoSided: as the file has
+// them, and each face also seen from behind, lit with its normal reversed (a reversed copy
+// of every triangle, with back faces culled: any program lights both sides). Shapes are
+// outward already: only TwoSided and Flipped change them.
+enum class Faces { Outward, File, Flipped, TwoSided };
 // Two programs on one camera: A (the editor's program) and B (a built-in one).
 enum class CompareMode { Off, SideBySide, Wipe, Difference };
 
@@ -83,10 +91,13 @@ struct ObjectSettings
     QString meshPath;      // a mesh file drawn instead of the shape; empty: the shape
     NormalMode normals = NormalMode::File;
     float creaseDegrees = 30.0f; // generated smooth normals don't blend across sharper edges
-    bool showNormals = false;    // draw each vertex normal as a short line
+    Faces faces = Faces::Outward;
+    bool showNormals = false; // draw each vertex normal as a short line
     // Triangles facing away from the camera are not drawn (nor probed): right for closed
     // meshes and about twice as fast to draw; an open mesh loses its inside faces.
     bool cullBackFaces = false;
+    // Culled in fact: asked for, or lighting both sides (the reversed copy is the back face).
+    bool culls() const { return cullBackFaces || faces == Faces::TwoSided; }
     bool adoptFileMaterial = false; // a mesh file's material replaces Ka, Kd, Ks, shininess
     glm::vec3 rotationDegrees{0.0f};
     glm::vec3 scale{1.0f};
@@ -221,6 +232,7 @@ QString toName(SpecularModel v);
 QString toName(Projection v);
 QString toName(Shape v);
 QString toName(NormalMode v);
+QString toName(Faces v);
 QString toName(CompareMode v);
 QString toName(ShowChoice v);
 QString toName(TextureWrap v);
@@ -231,6 +243,7 @@ std::optional<SpecularModel> parseSpecularModel(const QString &s);
 std::optional<Projection> parseProjection(const QString &s);
 std::optional<Shape> parseShape(const QString &s);
 std::optional<NormalMode> parseNormalMode(const QString &s);
+std::optional<Faces> parseFaces(const QString &s);
 std::optional<CompareMode> parseCompareMode(const QString &s);
 std::optional<ShowChoice> parseShowChoice(const QString &s);
 std::optional<TextureWrap> parseTextureWrap(const QString &s);
@@ -241,6 +254,7 @@ QStringList specularModelNames();
 QStringList projectionNames();
 QStringList shapeNames();
 QStringList normalModeNames();
+QStringList facesNames();
 QStringList compareModeNames();
 QStringList showChoiceNames();
 QStringList textureWrapNames();

@@ -70,6 +70,7 @@ QJsonObject objectJson(const ObjectSettings &object)
     ob["autoRotate"] = object.autoRotate;
     ob["mesh"] = object.meshPath;
     ob["normals"] = toName(object.normals);
+    ob["faces"] = toName(object.faces);
     ob["creaseAngle"] = double(object.creaseDegrees);
     ob["showNormals"] = object.showNormals;
     ob["cullBackFaces"] = object.cullBackFaces;
@@ -166,6 +167,7 @@ void readObject(SceneJsonReader &r, const QJsonObject &ob, const QString &path,
     r.boolean(ob, "autoRotate", path, object.autoRotate);
     r.text(ob, "mesh", path, object.meshPath);
     r.word(ob, "normals", path, parseNormalMode, object.normals);
+    r.word(ob, "faces", path, parseFaces, object.faces);
     r.number(ob, "creaseAngle", path, object.creaseDegrees, 0.0f, limits::kMaxCreaseDegrees);
     r.boolean(ob, "showNormals", path, object.showNormals);
     r.boolean(ob, "cullBackFaces", path, object.cullBackFaces);
