@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Writes a binary little-endian PLY torus with about N triangles (default 1,000,000):
-float x, y, z (and nx, ny, nz with --normals) per vertex, uchar-count int faces.
-Usage: make_ply.py OUT.ply [TRIANGLES] [--normals]"""
+float x, y, z (and nx, ny, nz with --normals) per vertex, uchar-count int faces, wound
+counter-clockwise seen from outside (--clockwise: the other way, as the Stanford bunny's are).
+Usage: make_ply.py OUT.ply [TRIANGLES] [--normals] [--clockwise]"""
 import math
 import os
 import struct
@@ -11,6 +12,7 @@ import sys
 def main():
     args = [a for a in sys.argv[1:] if not a.startswith("--")]
     normals = "--normals" in sys.argv
+    clockwise = "--clockwise" in sys.argv
     out = args[0]
     triangles = int(args[1]) if len(args) > 1 else 1_000_000
     # rings x tubes quads, two triangles each, rings = 2 * tubes
@@ -56,8 +58,12 @@ def main():
             for t in range(tubes):
                 t1 = (t + 1) % tubes
                 a, b, c, d = r * tubes + t, r1 * tubes + t, r1 * tubes + t1, r * tubes + t1
-                buf += face.pack(3, a, c, b)
-                buf += face.pack(3, a, d, c)
+                if clockwise:
+                    buf += face.pack(3, a, b, c)
+                    buf += face.pack(3, a, c, d)
+                else:
+                    buf += face.pack(3, a, c, b)
+                    buf += face.pack(3, a, d, c)
             if len(buf) > 1 << 22:
                 f.write(buf)
                 buf = bytearray()

@@ -134,6 +134,7 @@ MainWindow::MainWindow(QSettings &settings, QWidget *parent)
     });
 
     m_meshActions = new MeshActions(this, &m_document, m_loader, m_settings, m_status);
+    m_meshActions->setViewSize([this] { return m_viewport->size(); });
     connect(m_meshActions, &MeshActions::imageDropped, this,
             [this](const QString &path, QPoint globalPos) {
                 const QPoint local = m_viewport->mapFromGlobal(globalPos);

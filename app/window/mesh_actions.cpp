@@ -8,6 +8,7 @@
 #include "preferences_dialog.h"
 #include "recent_files.h"
 #include "status_line.h"
+#include "view_coverage.h"
 
 #include <QDragEnterEvent>
 #include <QDropEvent>
@@ -151,11 +152,21 @@ void MeshActions::showSummary()
                               .arg(QFileInfo(file->path).fileName(), triangles,
                                    QString::number(file->seconds, 'f', 2))
                         : tr("%1: %2 triangles").arg(displayName(object), triangles);
-    if (const QString turned = m_loader->facesRemark(); !turned.isEmpty())
-        //: a mesh's short summary (%1) and what was turned in it (%2: "faces turned: ...")
-        text = tr("%1; %2").arg(text, turned);
+    QString remarks = m_loader->facesRemark();
+    // A file that draws nothing in view, or only its back, says so (as the view is now).
+    if (file && m_viewSize)
+        if (const QString problem =
+                viewProblem(m_document->scene(), m_document->scene().selected, *mesh, m_viewSize());
+            !problem.isEmpty())
+            remarks = remarks.isEmpty() ? problem : tr("%1; %2").arg(remarks, problem);
+    if (!remarks.isEmpty())
+        //: a mesh's short summary (%1) and what was turned in it or why it draws nothing
+        //: (%2: "faces turned: ...", "draws nothing in view: ...")
+        text = tr("%1; %2").arg(text, remarks);
     m_summary->setText(text);
-    m_summary->setFullText(m_loader->summary());
+    const QString full = m_loader->summary();
+    m_summary->setFullText(
+        remarks.isEmpty() || full.contains(remarks) ? full : tr("%1; %2").arg(full, remarks));
 }
 
 QString MeshActions::fileFilter() const

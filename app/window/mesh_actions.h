@@ -10,6 +10,9 @@
 #include <QMessageBox>
 #include <QObject>
 #include <QPointer>
+#include <QSize>
+
+#include <functional>
 
 class QMainWindow;
 class QMenu;
@@ -41,6 +44,10 @@ public:
     double frameBudgetSeconds() const;
     // Limits for this session only (--import-memory-limit): the preferences keep theirs.
     void setSessionLimits(const ImportLimits &limits) { m_loader->setLimits(limits); }
+
+    // Where the status line learns the view's size, to say when a loaded file draws nothing
+    // in view (view_coverage.h).
+    void setViewSize(std::function<QSize()> size) { m_viewSize = std::move(size); }
 
     LoadProgress *progress() const { return m_progress; }
     RecentFiles *recent() const { return m_recent; }
@@ -75,6 +82,7 @@ private:
     QPointer<QMessageBox> m_errorBox;
     QString m_pendingPath;   // the file being loaded, for the recent list
     int m_summaryObject = 0; // the object the status bar's summary describes
+    std::function<QSize()> m_viewSize;
 };
 
 } // namespace lb

@@ -229,7 +229,8 @@ Mesh withNormals(const Mesh &mesh, std::vector<glm::vec3> normals, std::size_t c
 } // namespace
 
 std::optional<Mesh> withGeneratedNormals(const Mesh &mesh, float creaseDegrees,
-                                         const std::atomic_bool *cancel)
+                                         const std::atomic_bool *cancel,
+                                         const std::vector<std::uint32_t> *weld)
 {
     auto cancelled = [cancel] { return cancel && cancel->load(std::memory_order_relaxed); };
     const std::size_t vertexCount = mesh.vertexCount();
@@ -269,7 +270,10 @@ std::optional<Mesh> withGeneratedNormals(const Mesh &mesh, float creaseDegrees,
     // A small tolerance keeps coplanar triangles together at 0 degrees despite rounding.
     const float threshold = std::cos(glm::radians(std::clamp(creaseDegrees, 0.0f, 180.0f))) - 1e-5f;
     const float halfThreshold = halfCreaseCosine(creaseDegrees);
-    std::vector<std::uint32_t> position = weldPositions(mesh.positions);
+    std::vector<std::uint32_t> ownWeld; // unless the caller welded them already
+    if (!weld || weld->size() != vertexCount)
+        ownWeld = weldPositions(mesh.positions);
+    const std::vector<std::uint32_t> &position = ownWeld.empty() ? *weld : ownWeld;
     if (std::optional<std::vector<glm::vec3>> smooth =
             withoutSplits(mesh, position, faceNormal, angle, threshold, halfThreshold, parts)) {
         if (cancelled())
@@ -278,7 +282,7 @@ std::optional<Mesh> withGeneratedNormals(const Mesh &mesh, float creaseDegrees,
         // before the mesh is copied with its normals.
         std::vector<glm::vec3>().swap(faceNormal);
         std::vector<float>().swap(angle);
-        std::vector<std::uint32_t>().swap(position);
+        std::vector<std::uint32_t>().swap(ownWeld);
         return withNormals(mesh, std::move(*smooth), cornerCount);
     }
     if (cancelled())

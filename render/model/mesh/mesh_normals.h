@@ -17,8 +17,10 @@ namespace lb {
 // end up with different normals is split. Every index must be below the vertex count.
 // Linear in the corners: a position with more than 64 corners (a fan, bad data all at the
 // origin) compares bins of about 3 degrees of normals instead of every pair of corners.
-// Returns nothing when `cancel` was set.
+// Returns nothing when `cancel` was set. `weld`: weldPositions() of the mesh's positions, when
+// the caller has it already (the outward check's), else made here.
 std::optional<Mesh> withGeneratedNormals(const Mesh &mesh, float creaseDegrees,
-                                         const std::atomic_bool *cancel = nullptr);
+                                         const std::atomic_bool *cancel = nullptr,
+                                         const std::vector<std::uint32_t> *weld = nullptr);
 
 } // namespace lb

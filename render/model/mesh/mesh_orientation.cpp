@@ -1,14 +1,17 @@
 #include "mesh_orientation.h"
 
 #include "mesh_weld.h"
+#include "parallel_for.h"
 
 #include <QCoreApplication>
 
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <thread>
 
 namespace lb {
 
@@ -79,14 +82,18 @@ Mesh copyOf(const Mesh &mesh, std::size_t copies)
 
 } // namespace
 
-std::optional<OrientationCheck> checkOrientation(const Mesh &mesh, const std::atomic_bool *cancel)
+std::optional<OrientationCheck> checkOrientation(const Mesh &mesh, const std::atomic_bool *cancel,
+                                                 const std::vector<std::uint32_t> *givenWeld)
 {
     auto cancelled = [cancel] { return cancel && cancel->load(std::memory_order_relaxed); };
     const std::size_t triangles = mesh.triangleCount();
     OrientationCheck check;
     if (triangles == 0)
         return check;
-    const std::vector<std::uint32_t> weld = weldPositions(mesh.positions);
+    std::vector<std::uint32_t> ownWeld;
+    if (!givenWeld || givenWeld->size() != mesh.vertexCount())
+        ownWeld = weldPositions(mesh.positions);
+    const std::vector<std::uint32_t> &weld = ownWeld.empty() ? *givenWeld : ownWeld;
     if (cancelled())
         return std::nullopt;
     const std::uint32_t *index = mesh.indices.data();
@@ -102,33 +109,57 @@ std::optional<OrientationCheck> checkOrientation(const Mesh &mesh, const std::at
     constexpr std::uint32_t kNone = 0xffffffffu;
     std::vector<std::uint32_t> partOf(mesh.vertexCount(), kNone);
     std::vector<std::uint32_t> triPart(triangles);
-    std::vector<PartSums> sums;
-    const bool normals = mesh.normals.size() == mesh.vertexCount();
+    std::uint32_t partCount = 0;
     for (std::size_t t = 0; t < triangles; ++t) {
         const std::uint32_t root = sets.find(weld[index[3 * t]]);
-        if (partOf[root] == kNone) {
-            partOf[root] = std::uint32_t(sums.size());
-            sums.emplace_back();
-        }
+        if (partOf[root] == kNone)
+            partOf[root] = partCount++;
         triPart[t] = partOf[root];
-        PartSums &s = sums[partOf[root]];
-        const glm::dvec3 a = mesh.positions[index[3 * t]], b = mesh.positions[index[3 * t + 1]],
-                         c = mesh.positions[index[3 * t + 2]];
-        const glm::dvec3 e = glm::cross(b - a, c - a);
-        const double area = glm::length(e);
-        if (!std::isfinite(area))
-            continue;
-        s.net += e;
-        s.area += area;
-        s.volume += glm::dot(a, glm::cross(b, c));
-        s.centre += area * (a + b + c);
-        if (normals)
-            s.normals +=
-                glm::dot(e, glm::dvec3(mesh.normals[index[3 * t]] + mesh.normals[index[3 * t + 1]] +
-                                       mesh.normals[index[3 * t + 2]]));
-        if ((t & 0xffff) == 0 && cancelled())
-            return std::nullopt;
     }
+    if (cancelled())
+        return std::nullopt;
+    // The sums, each slice of triangles into its own table of parts, added up after (a
+    // triangle soup's many parts cost a table per slice: the slices are few).
+    const bool normals = mesh.normals.size() == mesh.vertexCount();
+    const std::size_t slices =
+        triangles < 200'000 ? 1
+                            : std::clamp<std::size_t>(std::thread::hardware_concurrency(), 1, 8);
+    std::vector<std::vector<PartSums>> sliceSums(slices);
+    parallelFor(triangles, slices, [&](std::size_t first, std::size_t last, std::size_t slice) {
+        std::vector<PartSums> &sums = sliceSums[slice];
+        sums.resize(partCount);
+        for (std::size_t t = first; t < last; ++t) {
+            PartSums &s = sums[triPart[t]];
+            const glm::dvec3 a = mesh.positions[index[3 * t]], b = mesh.positions[index[3 * t + 1]],
+                             c = mesh.positions[index[3 * t + 2]];
+            const glm::dvec3 e = glm::cross(b - a, c - a);
+            const double area = glm::length(e);
+            if (!std::isfinite(area))
+                continue;
+            s.net += e;
+            s.area += area;
+            s.volume += glm::dot(a, glm::cross(b, c));
+            s.centre += area * (a + b + c);
+            if (normals)
+                s.normals += glm::dot(e, glm::dvec3(mesh.normals[index[3 * t]] +
+                                                    mesh.normals[index[3 * t + 1]] +
+                                                    mesh.normals[index[3 * t + 2]]));
+            if ((t & 0xffff) == 0 && cancelled())
+                return;
+        }
+    });
+    if (cancelled())
+        return std::nullopt;
+    std::vector<PartSums> sums = std::move(sliceSums[0]);
+    for (std::size_t slice = 1; slice < slices; ++slice)
+        for (std::size_t p = 0; p < partCount; ++p) {
+            const PartSums &o = sliceSums[slice][p];
+            sums[p].net += o.net;
+            sums[p].centre += o.centre;
+            sums[p].area += o.area;
+            sums[p].volume += o.volume;
+            sums[p].normals += o.normals;
+        }
     check.parts = sums.size();
     std::vector<std::uint8_t> turn(sums.size(), 0);
     for (std::size_t p = 0; p < sums.size(); ++p) {

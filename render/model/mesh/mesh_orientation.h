@@ -31,9 +31,12 @@ struct OrientationCheck
 };
 
 // Looks at `mesh` (its normals too, when it has them); nothing when `cancel` was set.
-// Linear in the triangles.
+// Linear in the triangles; the sums run on the machine's cores for big meshes. `weld`:
+// weldPositions() of the mesh's positions when the caller has it (normal generation takes
+// the same), else made here.
 std::optional<OrientationCheck> checkOrientation(const Mesh &mesh,
-                                                 const std::atomic_bool *cancel = nullptr);
+                                                 const std::atomic_bool *cancel = nullptr,
+                                                 const std::vector<std::uint32_t> *weld = nullptr);
 
 // `mesh` with what `check` found turned: the winding of the triangles marked kTurnFaces
 // reversed, the normals of those marked kTurnNormals negated.

@@ -2,6 +2,7 @@
 
 #include "mesh_normals.h"
 #include "mesh_orientation.h"
+#include "mesh_weld.h"
 #include "message_text.h"
 
 #include <QCoreApplication>
@@ -92,11 +93,14 @@ std::shared_ptr<const Mesh> buildObjectMesh(const ObjectSettings &object, const 
             file ? file->mesh
                  : std::make_shared<const Mesh>(makeShape(object.shape, object.tessellation));
         const bool fileNormals = object.normals == NormalMode::File && !base->normals.empty();
+        std::vector<std::uint32_t> weld;
         // Which way the faces look first: generated normals follow the winding.
         if (object.faces == Faces::Flipped) {
             base = std::make_shared<const Mesh>(flippedMesh(*base));
         } else if (object.faces == Faces::Outward && file) { // the shapes are outward
-            std::optional<OrientationCheck> check = checkOrientation(*base, cancel);
+            // Welded once for the check and the normals (turning changes no position).
+            weld = weldPositions(base->positions);
+            std::optional<OrientationCheck> check = checkOrientation(*base, cancel, &weld);
             if (!check)
                 return nullptr;
             if (!fileNormals) { // the file's normals are not drawn: nothing to say of them
@@ -111,9 +115,11 @@ std::shared_ptr<const Mesh> buildObjectMesh(const ObjectSettings &object, const 
             }
         }
         if (!fileNormals) {
-            std::optional<Mesh> generated = withGeneratedNormals(*base, creaseOf(object), cancel);
+            std::optional<Mesh> generated = withGeneratedNormals(*base, creaseOf(object), cancel,
+                                                                 weld.empty() ? nullptr : &weld);
             if (!generated)
                 return nullptr;
+            std::vector<std::uint32_t>().swap(weld);
             base = std::make_shared<const Mesh>(std::move(*generated));
         }
         if (object.faces == Faces::TwoSided)
