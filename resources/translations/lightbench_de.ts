@@ -2497,7 +2497,7 @@
         <translation>Shader-Editor</translation>
     </message>
     <message>
-        <location line="+39"/>
+        <location line="+40"/>
         <location filename="../../app/window/main_window_menus.cpp" line="+53"/>
         <location filename="../../app/window/main_window_unsaved.cpp" line="+92"/>
         <location line="+13"/>
@@ -3122,7 +3122,7 @@
 <context>
     <name>lb::MeshActions</name>
     <message>
-        <location filename="../../app/window/mesh_actions.cpp" line="+67"/>
+        <location filename="../../app/window/mesh_actions.cpp" line="+68"/>
         <source>Open &amp;Recent Mesh</source>
         <translation>Zuletzt geöffnetes M&amp;esh</translation>
     </message>
@@ -3204,13 +3204,15 @@
         <translation>%1: %2 Dreiecke</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+7"/>
+        <location line="+4"/>
+        <location line="+4"/>
         <source>%1; %2</source>
-        <extracomment>a mesh&apos;s short summary (%1) and what was turned in it (%2: &quot;faces turned: ...&quot;)</extracomment>
+        <extracomment>a mesh&apos;s short summary (%1) and what was turned in it or why it draws nothing (%2: &quot;faces turned: ...&quot;, &quot;draws nothing in view: ...&quot;)</extracomment>
         <translation>%1; %2</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+8"/>
         <source>Meshes Assimp reads (%1);;</source>
         <translation>Von Assimp lesbare Meshes (%1);;</translation>
     </message>
@@ -3307,7 +3309,7 @@
 <context>
     <name>lb::MeshOrientation</name>
     <message>
-        <location filename="../../render/model/mesh/mesh_orientation.cpp" line="+217"/>
+        <location filename="../../render/model/mesh/mesh_orientation.cpp" line="+248"/>
         <source>faces turned: the file winds them clockwise</source>
         <translation>Flächen gewendet: die Datei ordnet sie im Uhrzeigersinn an</translation>
     </message>
@@ -3397,12 +3399,12 @@
     <message>
         <location filename="../../app/window/mesh_actions.cpp" line="-25"/>
         <location filename="../../render/import/object_loader.cpp" line="+2"/>
-        <location line="+187"/>
+        <location line="+186"/>
         <source>Loading cancelled</source>
         <translation>Laden abgebrochen</translation>
     </message>
     <message>
-        <location filename="../../render/import/object_loader.cpp" line="-63"/>
+        <location filename="../../render/import/object_loader.cpp" line="-62"/>
         <source>building</source>
         <translation>wird erstellt</translation>
     </message>
@@ -3410,7 +3412,7 @@
 <context>
     <name>lb::ObjectMesh</name>
     <message>
-        <location filename="../../render/model/mesh/object_mesh.cpp" line="+33"/>
+        <location filename="../../render/model/mesh/object_mesh.cpp" line="+34"/>
         <source>out of memory building %1&apos;s normals (%2 triangles)</source>
         <translation>nicht genug Speicher zum Erzeugen der Normalen von %1 (%2 Dreiecke)</translation>
     </message>
@@ -3436,7 +3438,7 @@
     </message>
     <message>
         <location line="+3"/>
-        <location line="+98"/>
+        <location line="+103"/>
         <source>out of memory building a mesh</source>
         <translation>nicht genug Speicher zum Erstellen eines Meshes</translation>
     </message>

@@ -2491,7 +2491,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+39"/>
+        <location line="+40"/>
         <location filename="../../app/window/main_window_menus.cpp" line="+53"/>
         <location filename="../../app/window/main_window_unsaved.cpp" line="+92"/>
         <location line="+13"/>
@@ -3115,7 +3115,7 @@
 <context>
     <name>lb::MeshActions</name>
     <message>
-        <location filename="../../app/window/mesh_actions.cpp" line="+67"/>
+        <location filename="../../app/window/mesh_actions.cpp" line="+68"/>
         <source>Open &amp;Recent Mesh</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3197,13 +3197,15 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+7"/>
+        <location line="+4"/>
+        <location line="+4"/>
         <source>%1; %2</source>
-        <extracomment>a mesh&apos;s short summary (%1) and what was turned in it (%2: &quot;faces turned: ...&quot;)</extracomment>
+        <extracomment>a mesh&apos;s short summary (%1) and what was turned in it or why it draws nothing (%2: &quot;faces turned: ...&quot;, &quot;draws nothing in view: ...&quot;)</extracomment>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+8"/>
         <source>Meshes Assimp reads (%1);;</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3300,7 +3302,7 @@
 <context>
     <name>lb::MeshOrientation</name>
     <message>
-        <location filename="../../render/model/mesh/mesh_orientation.cpp" line="+217"/>
+        <location filename="../../render/model/mesh/mesh_orientation.cpp" line="+248"/>
         <source>faces turned: the file winds them clockwise</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3370,7 +3372,7 @@
     <message>
         <location filename="../../app/window/mesh_actions.cpp" line="-25"/>
         <location filename="../../render/import/object_loader.cpp" line="+230"/>
-        <location line="+187"/>
+        <location line="+186"/>
         <source>Loading cancelled</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3380,7 +3382,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../render/import/object_loader.cpp" line="-244"/>
+        <location filename="../../render/import/object_loader.cpp" line="-243"/>
         <source>%1: not used: its object was removed</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3403,7 +3405,7 @@
 <context>
     <name>lb::ObjectMesh</name>
     <message>
-        <location filename="../../render/model/mesh/object_mesh.cpp" line="+33"/>
+        <location filename="../../render/model/mesh/object_mesh.cpp" line="+34"/>
         <source>out of memory building %1&apos;s normals (%2 triangles)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3429,7 +3431,7 @@
     </message>
     <message>
         <location line="+3"/>
-        <location line="+98"/>
+        <location line="+103"/>
         <source>out of memory building a mesh</source>
         <translation type="unfinished"></translation>
     </message>
