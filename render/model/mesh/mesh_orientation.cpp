@@ -91,9 +91,10 @@ std::optional<OrientationCheck> checkOrientation(const Mesh &mesh, const std::at
     if (triangles == 0)
         return check;
     std::vector<std::uint32_t> ownWeld;
-    if (!givenWeld || givenWeld->size() != mesh.vertexCount())
+    const bool given = givenWeld && givenWeld->size() == mesh.vertexCount();
+    if (!given)
         ownWeld = weldPositions(mesh.positions);
-    const std::vector<std::uint32_t> &weld = ownWeld.empty() ? *givenWeld : ownWeld;
+    const std::vector<std::uint32_t> &weld = given ? *givenWeld : ownWeld;
     if (cancelled())
         return std::nullopt;
     const std::uint32_t *index = mesh.indices.data();
