@@ -271,10 +271,7 @@ std::optional<Mesh> withGeneratedNormals(const Mesh &mesh, float creaseDegrees,
     const float threshold = std::cos(glm::radians(std::clamp(creaseDegrees, 0.0f, 180.0f))) - 1e-5f;
     const float halfThreshold = halfCreaseCosine(creaseDegrees);
     std::vector<std::uint32_t> ownWeld; // unless the caller welded them already
-    const bool given = weld && weld->size() == vertexCount;
-    if (!given)
-        ownWeld = weldPositions(mesh.positions);
-    const std::vector<std::uint32_t> &position = given ? *weld : ownWeld;
+    const std::vector<std::uint32_t> &position = givenOrOwnWeld(mesh.positions, weld, ownWeld);
     if (std::optional<std::vector<glm::vec3>> smooth =
             withoutSplits(mesh, position, faceNormal, angle, threshold, halfThreshold, parts)) {
         if (cancelled())

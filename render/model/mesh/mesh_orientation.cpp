@@ -91,10 +91,7 @@ std::optional<OrientationCheck> checkOrientation(const Mesh &mesh, const std::at
     if (triangles == 0)
         return check;
     std::vector<std::uint32_t> ownWeld;
-    const bool given = givenWeld && givenWeld->size() == mesh.vertexCount();
-    if (!given)
-        ownWeld = weldPositions(mesh.positions);
-    const std::vector<std::uint32_t> &weld = given ? *givenWeld : ownWeld;
+    const std::vector<std::uint32_t> &weld = givenOrOwnWeld(mesh.positions, givenWeld, ownWeld);
     if (cancelled())
         return std::nullopt;
     const std::uint32_t *index = mesh.indices.data();

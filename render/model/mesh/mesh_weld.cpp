@@ -40,4 +40,14 @@ std::vector<std::uint32_t> weldPositions(const std::vector<glm::vec3> &positions
     return first;
 }
 
+const std::vector<std::uint32_t> &givenOrOwnWeld(const std::vector<glm::vec3> &positions,
+                                                 const std::vector<std::uint32_t> *given,
+                                                 std::vector<std::uint32_t> &own)
+{
+    if (given && given->size() == positions.size())
+        return *given;
+    own = weldPositions(positions);
+    return own;
+}
+
 } // namespace lb

@@ -12,4 +12,10 @@ namespace lb {
 // Index of the first vertex at each vertex's position (exact float equality; -0 equals 0).
 std::vector<std::uint32_t> weldPositions(const std::vector<glm::vec3> &positions);
 
+// `given` when the caller welded these positions already (one of the right size), else a
+// weld made into `own`: one weld per mesh build, shared by the normals and the outward check.
+const std::vector<std::uint32_t> &givenOrOwnWeld(const std::vector<glm::vec3> &positions,
+                                                 const std::vector<std::uint32_t> *given,
+                                                 std::vector<std::uint32_t> &own);
+
 } // namespace lb
