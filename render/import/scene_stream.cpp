@@ -32,10 +32,10 @@ glm::mat4 toGlm(const aiMatrix4x4 &m)
                      m.b4, m.c4, m.d4);
 }
 
-// One mesh as a node draws it, and what of it is drawn.
+// One part as it is drawn, and what of it is drawn.
 struct Instance
 {
-    const aiMesh *mesh;
+    const StreamMesh *mesh;
     glm::mat4 transform;
     glm::mat3 normalTransform;
     // Empty: every vertex is kept. Else each vertex's index among the kept ones, or kDropped
@@ -46,6 +46,7 @@ struct Instance
 
     bool used() const { return triangles > 0; }
     bool kept(unsigned v) const { return remap.empty() || remap[v] != kDropped; }
+    bool kept(const std::uint32_t (&c)[3]) const { return kept(c[0]) && kept(c[1]) && kept(c[2]); }
 };
 
 bool finite(const glm::vec3 &v)
@@ -53,44 +54,29 @@ bool finite(const glm::vec3 &v)
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
 
-std::vector<Instance> instances(const aiScene &scene, std::size_t &skippedMeshRefs)
+// Face `f`'s corners, when it is a triangle whose corners are all vertices of the mesh.
+bool triangle(const StreamMesh &m, std::uint32_t f, std::uint32_t (&c)[3])
 {
-    std::vector<Instance> result;
-    std::vector<std::pair<const aiNode *, glm::mat4>> stack;
-    if (scene.mRootNode)
-        stack.emplace_back(scene.mRootNode, glm::mat4(1.0f));
-    constexpr std::size_t kMaxNodes = 10'000'000; // a broken file's node graph may loop
-    std::size_t visited = 0;
-    while (!stack.empty() && ++visited < kMaxNodes) {
-        const auto [node, parent] = stack.back();
-        stack.pop_back();
-        const glm::mat4 global = parent * toGlm(node->mTransformation);
-        for (unsigned i = 0; i < node->mNumMeshes; ++i) {
-            const unsigned index = node->mMeshes[i];
-            if (index >= scene.mNumMeshes || !scene.mMeshes[index]) {
-                ++skippedMeshRefs;
-                continue;
-            }
-            result.push_back(
-                {scene.mMeshes[index], global, glm::inverseTranspose(glm::mat3(global)), {}, 0, 0});
-        }
-        for (unsigned i = 0; i < node->mNumChildren; ++i)
-            if (node->mChildren[i])
-                stack.emplace_back(node->mChildren[i], global);
+    if (m.triangles) {
+        const std::uint32_t *t = m.triangles + 3 * std::size_t(f);
+        c[0] = t[0];
+        c[1] = t[1];
+        c[2] = t[2];
+    } else {
+        const aiFace &face = m.faces[f];
+        if (face.mNumIndices != 3)
+            return false;
+        c[0] = face.mIndices[0];
+        c[1] = face.mIndices[1];
+        c[2] = face.mIndices[2];
     }
-    return result;
-}
-
-bool isTriangle(const aiFace &face, unsigned vertexCount)
-{
-    return face.mNumIndices == 3 && face.mIndices[0] < vertexCount &&
-           face.mIndices[1] < vertexCount && face.mIndices[2] < vertexCount;
+    return c[0] < m.vertexCount && c[1] < m.vertexCount && c[2] < m.vertexCount;
 }
 
 glm::vec3 position(const Instance &in, unsigned v)
 {
-    const aiVector3D &p = in.mesh->mVertices[v];
-    return glm::vec3(in.transform * glm::vec4(p.x, p.y, p.z, 1.0f));
+    const float *p = in.mesh->positions + 3 * std::size_t(v);
+    return glm::vec3(in.transform * glm::vec4(p[0], p[1], p[2], 1.0f));
 }
 
 // What is kept of one instance, and its kept vertices' bounds (in double: finite floats near
@@ -103,15 +89,15 @@ struct Counts
 
 void plan(Instance &in, Counts &counts)
 {
-    const aiMesh &m = *in.mesh;
-    if (!m.mVertices) {
-        counts.skippedFaces += m.mNumFaces;
+    const StreamMesh &m = *in.mesh;
+    if (!m.positions) {
+        counts.skippedFaces += m.faceCount;
         return;
     }
     // The corners that are not finite: most meshes have none, and then this pass is all
     // there is (the bounds come with it).
     glm::dvec3 lo = counts.lo, hi = counts.hi;
-    for (unsigned v = 0; v < m.mNumVertices; ++v) {
+    for (unsigned v = 0; v < m.vertexCount; ++v) {
         const glm::vec3 t = position(in, v);
         if (finite(t)) {
             lo = glm::min(lo, glm::dvec3(t));
@@ -119,35 +105,34 @@ void plan(Instance &in, Counts &counts)
             continue;
         }
         if (in.remap.empty())
-            in.remap.assign(m.mNumVertices, 0); // 0: finite, not yet used
+            in.remap.assign(m.vertexCount, 0); // 0: finite, not yet used
         in.remap[v] = kDropped;
         ++counts.droppedVertices;
     }
     constexpr std::uint32_t kUsed = 1;
     std::uint64_t dropped = 0;
-    for (unsigned f = 0; f < m.mNumFaces; ++f) {
-        const aiFace &face = m.mFaces[f];
-        if (!isTriangle(face, m.mNumVertices)) {
+    std::uint32_t c[3];
+    for (std::uint32_t f = 0; f < m.faceCount; ++f) {
+        if (!triangle(m, f, c)) {
             ++counts.skippedFaces;
-        } else if (in.kept(face.mIndices[0]) && in.kept(face.mIndices[1]) &&
-                   in.kept(face.mIndices[2])) {
+        } else if (in.kept(c)) {
             ++in.triangles;
             if (!in.remap.empty())
-                for (unsigned c = 0; c < 3; ++c)
-                    in.remap[face.mIndices[c]] = kUsed;
+                for (std::uint32_t k : c)
+                    in.remap[k] = kUsed;
         } else {
             ++dropped;
         }
     }
     counts.droppedTriangles += dropped;
-    in.keptVertices = m.mNumVertices;
+    in.keptVertices = m.vertexCount;
     if (!in.remap.empty()) {
         // Only the corners of the triangles kept stay, so that the frame is what is drawn:
         // a file read without joining vertices has a copy of each corner per face.
         lo = counts.lo;
         hi = counts.hi;
         std::uint32_t next = 0;
-        for (unsigned v = 0; v < m.mNumVertices; ++v) {
+        for (unsigned v = 0; v < m.vertexCount; ++v) {
             if (in.remap[v] != kUsed) {
                 in.remap[v] = kDropped;
                 continue;
@@ -174,14 +159,11 @@ bool anyArea(const std::vector<Instance> &list, double largestExtent)
     for (const Instance &in : list) {
         if (!in.used())
             continue;
-        const aiMesh &m = *in.mesh;
-        for (unsigned f = 0; f < m.mNumFaces; ++f) {
-            const aiFace &face = m.mFaces[f];
-            if (!isTriangle(face, m.mNumVertices) || !in.kept(face.mIndices[0]) ||
-                !in.kept(face.mIndices[1]) || !in.kept(face.mIndices[2]))
+        std::uint32_t k[3];
+        for (std::uint32_t f = 0; f < in.mesh->faceCount; ++f) {
+            if (!triangle(*in.mesh, f, k) || !in.kept(k))
                 continue;
-            const glm::dvec3 a = position(in, face.mIndices[0]), b = position(in, face.mIndices[1]),
-                             c = position(in, face.mIndices[2]);
+            const glm::dvec3 a = position(in, k[0]), b = position(in, k[1]), c = position(in, k[2]);
             if (glm::length(glm::cross(b - a, c - a)) > tiny)
                 return true;
         }
@@ -197,13 +179,13 @@ bool usableNormals(const std::vector<Instance> &list, std::uint64_t &nonFinite)
     for (const Instance &in : list) {
         if (!in.used())
             continue;
-        if (!in.mesh->mNormals) {
+        if (!in.mesh->normals) {
             usable = false;
             continue;
         }
-        for (unsigned v = 0; v < in.mesh->mNumVertices; ++v) {
-            const aiVector3D &n = in.mesh->mNormals[v];
-            const glm::vec3 g(n.x, n.y, n.z);
+        for (unsigned v = 0; v < in.mesh->vertexCount; ++v) {
+            const float *n = in.mesh->normals + 3 * std::size_t(v);
+            const glm::vec3 g(n[0], n[1], n[2]);
             if (!in.kept(v))
                 continue;
             if (!finite(g))
@@ -280,14 +262,18 @@ template <typename T> void sendChunk(std::vector<T> &chunk, wire::Writer &out)
 
 } // namespace
 
-int writeScene(const aiScene &scene, wire::Writer &out, const ImportProgress &progress,
-               double readSeconds)
+int writeParts(const std::vector<StreamPart> &parts, const StreamExtras &extras, wire::Writer &out,
+               const ImportProgress &progress, double readSeconds)
 {
-    std::size_t skippedMeshRefs = 0;
-    std::vector<Instance> list = instances(scene, skippedMeshRefs);
+    std::vector<Instance> list;
+    list.reserve(parts.size());
+    for (const StreamPart &p : parts)
+        list.push_back(
+            {&p.mesh, p.transform, glm::inverseTranspose(glm::mat3(p.transform)), {}, 0, 0});
 
     // Pass 1: what is kept, the counts and the bounding box of the kept positions.
     Counts counts;
+    counts.skippedFaces = extras.skippedFaces;
     std::uint64_t vertexCount = 0, triangleCount = 0;
     bool colors = false, uvs = false;
     const Instance *largest = nullptr;
@@ -299,8 +285,8 @@ int writeScene(const aiScene &scene, wire::Writer &out, const ImportProgress &pr
             largest = &in;
         vertexCount += in.keptVertices;
         triangleCount += in.triangles;
-        colors = colors || in.mesh->mColors[0];
-        uvs = uvs || in.mesh->mTextureCoords[0];
+        colors = colors || in.mesh->colors;
+        uvs = uvs || in.mesh->uvs;
     }
     if (triangleCount == 0) {
         std::ostringstream s;
@@ -355,7 +341,7 @@ int writeScene(const aiScene &scene, wire::Writer &out, const ImportProgress &pr
         for (const Instance &in : list) {
             if (!in.used())
                 continue;
-            for (unsigned v = 0; v < in.mesh->mNumVertices; ++v) {
+            for (unsigned v = 0; v < in.mesh->vertexCount; ++v) {
                 if (in.kept(v))
                     perVertexValue(in, v, chunk);
                 if (chunk.size() >= kChunkValues)
@@ -370,8 +356,8 @@ int writeScene(const aiScene &scene, wire::Writer &out, const ImportProgress &pr
     });
     if (normals)
         emit([&](const Instance &in, unsigned v, std::vector<float> &c) {
-            const aiVector3D &n = in.mesh->mNormals[v];
-            glm::vec3 t = in.normalTransform * glm::vec3(n.x, n.y, n.z);
+            const float *n = in.mesh->normals + 3 * std::size_t(v);
+            glm::vec3 t = in.normalTransform * glm::vec3(n[0], n[1], n[2]);
             const float length = glm::length(t);
             t = length > 0.0f && std::isfinite(length) ? t / length : glm::vec3(0, 0, 1);
             c.insert(c.end(), {t.x, t.y, t.z});
@@ -379,8 +365,10 @@ int writeScene(const aiScene &scene, wire::Writer &out, const ImportProgress &pr
     if (colors)
         emit([&](const Instance &in, unsigned v, std::vector<float> &c) {
             glm::vec3 t(1.0f);
-            if (const aiColor4D *col = in.mesh->mColors[0])
-                t = glm::clamp(glm::vec3(col[v].r, col[v].g, col[v].b), 0.0f, 1.0f);
+            if (const float *col = in.mesh->colors) {
+                col += in.mesh->colorStride * v;
+                t = glm::clamp(glm::vec3(col[0], col[1], col[2]), 0.0f, 1.0f);
+            }
             if (!finite(t))
                 t = glm::vec3(1.0f);
             c.insert(c.end(), {t.x, t.y, t.z});
@@ -388,9 +376,10 @@ int writeScene(const aiScene &scene, wire::Writer &out, const ImportProgress &pr
     if (uvs)
         emit([&](const Instance &in, unsigned v, std::vector<float> &c) {
             float s = 0.0f, t = 0.0f;
-            if (const aiVector3D *uv = in.mesh->mTextureCoords[0]) {
-                s = std::isfinite(uv[v].x) ? uv[v].x : 0.0f;
-                t = std::isfinite(uv[v].y) ? uv[v].y : 0.0f;
+            if (const float *uv = in.mesh->uvs) {
+                uv += in.mesh->uvStride * v;
+                s = std::isfinite(uv[0]) ? uv[0] : 0.0f;
+                t = std::isfinite(uv[1]) ? uv[1] : 0.0f;
             }
             c.insert(c.end(), {s, t});
         });
@@ -400,14 +389,11 @@ int writeScene(const aiScene &scene, wire::Writer &out, const ImportProgress &pr
     for (const Instance &in : list) {
         if (!in.used())
             continue;
-        const aiMesh &m = *in.mesh;
         auto index = [&](unsigned i) { return base + (in.remap.empty() ? i : in.remap[i]); };
-        for (unsigned f = 0; f < m.mNumFaces; ++f) {
-            const aiFace &face = m.mFaces[f];
-            if (isTriangle(face, m.mNumVertices) && in.kept(face.mIndices[0]) &&
-                in.kept(face.mIndices[1]) && in.kept(face.mIndices[2]))
-                indices.insert(indices.end(), {index(face.mIndices[0]), index(face.mIndices[1]),
-                                               index(face.mIndices[2])});
+        std::uint32_t c[3];
+        for (std::uint32_t f = 0; f < in.mesh->faceCount; ++f) {
+            if (triangle(*in.mesh, f, c) && in.kept(c))
+                indices.insert(indices.end(), {index(c[0]), index(c[1]), index(c[2])});
             if (indices.size() >= kChunkValues)
                 sendChunk(indices, out);
         }
@@ -415,20 +401,82 @@ int writeScene(const aiScene &scene, wire::Writer &out, const ImportProgress &pr
     }
     sendChunk(indices, out);
 
-    if (largest)
-        sendMaterial(scene, *largest->mesh, out);
+    if (largest && extras.sendMaterial)
+        extras.sendMaterial(std::size_t(largest - list.data()), out);
     std::ostringstream info;
     info << "meshes=" << list.size() << "\nskippedFaces=" << counts.skippedFaces
          << "\nnonFinite=" << counts.droppedVertices
          << "\ndroppedTriangles=" << counts.droppedTriangles
-         << "\nnonFiniteNormals=" << nonFiniteNormals << "\nskippedMeshRefs=" << skippedMeshRefs
-         << "\nfileNormals=" << (normals ? 1 : 0) << "\nseconds=" << readSeconds
+         << "\nnonFiniteNormals=" << nonFiniteNormals
+         << "\nskippedMeshRefs=" << extras.skippedMeshRefs << "\nfileNormals=" << (normals ? 1 : 0)
+         << "\nseconds=" << readSeconds << "\nreader=" << extras.reader
          << "\npeakKB=" << peakResidentKB() << "\n";
     out.text(Record::Info, info.str());
     progress(1.0f, "done");
     out.record(Record::End, nullptr, 0);
     out.flush();
     return out.ok() ? 0 : wire::kExitFailed;
+}
+
+namespace {
+
+// Each node's meshes with the node's transform, walked from the root.
+std::vector<StreamPart> sceneParts(const aiScene &scene, std::vector<const aiMesh *> &meshes,
+                                   std::size_t &skippedMeshRefs)
+{
+    std::vector<StreamPart> parts;
+    std::vector<std::pair<const aiNode *, glm::mat4>> stack;
+    if (scene.mRootNode)
+        stack.emplace_back(scene.mRootNode, glm::mat4(1.0f));
+    constexpr std::size_t kMaxNodes = 10'000'000; // a broken file's node graph may loop
+    std::size_t visited = 0;
+    while (!stack.empty() && ++visited < kMaxNodes) {
+        const auto [node, parent] = stack.back();
+        stack.pop_back();
+        const glm::mat4 global = parent * toGlm(node->mTransformation);
+        for (unsigned i = 0; i < node->mNumMeshes; ++i) {
+            const unsigned index = node->mMeshes[i];
+            if (index >= scene.mNumMeshes || !scene.mMeshes[index]) {
+                ++skippedMeshRefs;
+                continue;
+            }
+            const aiMesh &m = *scene.mMeshes[index];
+            StreamMesh s;
+            // aiVector3D and aiColor4D are plain floats in a row (ai_real is float here).
+            static_assert(sizeof(aiVector3D) == 3 * sizeof(float));
+            static_assert(sizeof(aiColor4D) == 4 * sizeof(float));
+            s.vertexCount = m.mNumVertices;
+            s.positions = reinterpret_cast<const float *>(m.mVertices);
+            s.normals = reinterpret_cast<const float *>(m.mNormals);
+            s.colors = reinterpret_cast<const float *>(m.mColors[0]);
+            s.colorStride = 4;
+            s.uvs = reinterpret_cast<const float *>(m.mTextureCoords[0]);
+            s.uvStride = 3;
+            s.faceCount = m.mFaces ? m.mNumFaces : 0;
+            s.faces = m.mFaces;
+            parts.push_back({s, global});
+            meshes.push_back(&m);
+        }
+        for (unsigned i = 0; i < node->mNumChildren; ++i)
+            if (node->mChildren[i])
+                stack.emplace_back(node->mChildren[i], global);
+    }
+    return parts;
+}
+
+} // namespace
+
+int writeScene(const aiScene &scene, wire::Writer &out, const ImportProgress &progress,
+               double readSeconds)
+{
+    std::vector<const aiMesh *> meshes; // each part's
+    StreamExtras extras;
+    const std::vector<StreamPart> parts = sceneParts(scene, meshes, extras.skippedMeshRefs);
+    extras.reader = "assimp";
+    extras.sendMaterial = [&](std::size_t part, wire::Writer &w) {
+        sendMaterial(scene, *meshes[part], w);
+    };
+    return writeParts(parts, extras, out, progress, readSeconds);
 }
 
 } // namespace lb
