@@ -240,6 +240,7 @@ int runHeadless(const CommandLine &cl, const Scene &requested)
                      });
     double loadSeconds = 0.0;
     qint64 helperPeakKB = 0;
+    QStringList readers;     // who read each file: "assimp", "ply", "stl"
     MeshFileSizes fileSizes; // for the scene budget
     for (int i = 0; i < int(paths.size()); ++i) {
         if (i > 0)
@@ -259,6 +260,7 @@ int runHeadless(const CommandLine &cl, const Scene &requested)
         const Mesh &m = *imported.file->mesh;
         fileSizes[imported.file->path] = {m.vertexCount(), m.triangleCount(), !m.normals.empty()};
         helperPeakKB = std::max(helperPeakKB, imported.file->helperPeakKB);
+        readers << imported.file->reader;
     }
     if (!paths.isEmpty())
         phases.mark("import");
@@ -343,6 +345,7 @@ int runHeadless(const CommandLine &cl, const Scene &requested)
         if (!paths.isEmpty()) {
             o["loadSeconds"] = loadSeconds;
             o["helperPeakMB"] = double(helperPeakKB) / 1024.0;
+            o["readers"] = readers.join(',');
         }
         printLine(QJsonDocument(o).toJson(QJsonDocument::Compact), stdout);
     }

@@ -1,6 +1,7 @@
 #include "assimp_import.h"
 
 #include "confined_io_system.h"
+#include "fast_mesh_readers.h"
 #include "resident_memory.h"
 #include "scene_stream.h"
 
@@ -10,10 +11,14 @@
 #include <assimp/scene.h>
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
+#include <cstdlib>
 #include <cstring>
+#include <functional>
 #include <memory>
 #include <new>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -91,11 +96,76 @@ std::string noMeshes(const aiScene &scene)
     return s;
 }
 
+// Which fast reader reads `path`, by its extension; none when the user asked for Assimp only
+// (LIGHTBENCH_IMPORT_READER=assimp: for the tests and bench/mesh.sh that compare the two).
+const char *fastReaderFor(const std::string &path)
+{
+    const char *only = std::getenv("LIGHTBENCH_IMPORT_READER");
+    if (only && std::strcmp(only, "assimp") == 0)
+        return nullptr;
+    std::string ext = path.size() >= 4 ? path.substr(path.size() - 4) : std::string();
+    for (char &c : ext)
+        c = char(std::tolower(static_cast<unsigned char>(c)));
+    return ext == ".ply" ? "ply" : ext == ".stl" ? "stl" : nullptr;
+}
+
+// The file read by a fast reader and sent, or the file refused; nothing when the fast readers
+// decline it (or it cannot be opened: Assimp then says why, as for any file).
+std::optional<int> importFast(const std::string &path, wire::Writer &out, long long memoryLimitMB)
+{
+    const char *reader = fastReaderFor(path);
+    if (!reader)
+        return std::nullopt;
+    const auto [maxBytes, why] = fileByteLimit(memoryLimitMB);
+    ConfinedIOSystem files(path, maxBytes, why);
+    std::unique_ptr<Assimp::IOStream, std::function<void(Assimp::IOStream *)>> file(
+        files.Open(path.c_str(), "rb"), [&files](Assimp::IOStream *s) { files.Close(s); });
+    if (!file)
+        return std::nullopt;
+    Progress progress(out);
+    const ReadProgress reading = [&progress, &out](float fraction) {
+        progress.send(0.8f * std::min(fraction, 1.0f), "reading");
+        return out.ok();
+    };
+    FastMesh mesh;
+    std::string problem;
+    const auto start = std::chrono::steady_clock::now();
+    const FastRead read = std::strcmp(reader, "ply") == 0
+                              ? readPly(*file, mesh, problem, reading)
+                              : readBinaryStl(*file, mesh, problem, reading);
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    file.reset();
+    if (read == FastRead::Declined)
+        return std::nullopt;
+    if (read == FastRead::Failed)
+        return out.fail(problem);
+    StreamPart part;
+    part.mesh.vertexCount = std::uint32_t(mesh.positions.size() / 3);
+    part.mesh.positions = mesh.positions.data();
+    part.mesh.normals = mesh.normals.empty() ? nullptr : mesh.normals.data();
+    part.mesh.colors = mesh.colors.empty() ? nullptr : mesh.colors.data();
+    part.mesh.faceCount = std::uint32_t(mesh.triangles.size() / 3);
+    part.mesh.triangles = mesh.triangles.data();
+    StreamExtras extras;
+    extras.skippedFaces = mesh.skippedFaces;
+    extras.reader = reader;
+    extras.sendMaterial = [&mesh](std::size_t, wire::Writer &w) {
+        w.record(Record::Material, &mesh.material, sizeof mesh.material);
+    };
+    return writeParts(
+        {part}, extras, out,
+        [&progress](float fraction, const char *stage) { progress.send(fraction, stage); },
+        seconds);
+}
+
 } // namespace
 
 int importToStream(const std::string &path, wire::Writer &out, long long memoryLimitMB)
 {
     try {
+        if (const std::optional<int> fast = importFast(path, out, memoryLimitMB))
+            return *fast;
         // Not deleted in the normal build: the helper exits right after this, and the system
         // takes the pages back faster than the importer frees a big scene's million small
         // face arrays. The sanitizer build deletes it, so its leak check has nothing to excuse.

@@ -302,6 +302,7 @@ std::shared_ptr<MeshFile> ImportProcess::meshFile()
     for (const QString &warning : m_reader->warnings()) // names from a stranger's file
         file->sideFileProblems << echoedValue(warning, 400);
     file->readSeconds = info.value("seconds").toDouble();
+    file->reader = echoedValue(info.value("reader"), 40);
     file->helperPeakKB = info.value("peakKB").toLongLong();
 
     if (const auto &m = m_reader->material()) {

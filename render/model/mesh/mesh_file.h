@@ -41,9 +41,10 @@ struct MeshFile
     qint64 droppedTriangles = 0;            // ...the triangles using them
     qint64 nonFiniteNormals = 0;            // NaN or infinite normals: the file's normals not used
     QStringList sideFileProblems;           // files the mesh names that were not used, and why
-    double readSeconds = 0;                 // Assimp's reading, inside the helper
-    double seconds = 0;                     // the whole load as the workbench saw it
-    qint64 helperPeakKB = 0;                // the helper's peak resident memory
+    double readSeconds = 0;                 // the file's reading, inside the helper
+    QString reader;          // who read it: "assimp", or "ply" / "stl" (fast_mesh_readers.h)
+    double seconds = 0;      // the whole load as the workbench saw it
+    qint64 helperPeakKB = 0; // the helper's peak resident memory
 
     bool hasNormals() const { return mesh && !mesh->normals.empty(); }
     // Short remarks for the status bar: what was skipped or could not be used.
