@@ -15,6 +15,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <sstream>
 
 namespace lb {
@@ -224,6 +225,17 @@ VertexLayout layout(const Element &vertex)
     return l;
 }
 
+// A double as float, out-of-range values as infinities (as the processor's conversion gives
+// them, and Assimp's cast; the cast itself would be undefined for them).
+float toFloat(double v)
+{
+    if (v > double(std::numeric_limits<float>::max()))
+        return std::numeric_limits<float>::infinity();
+    if (v < -double(std::numeric_limits<float>::max()))
+        return -std::numeric_limits<float>::infinity();
+    return float(v); // NaN stays NaN
+}
+
 // Assimp's NormalizeColorValue, in float as it computes it.
 float colourValue(Type t, double v)
 {
@@ -250,10 +262,10 @@ void storeVertex(const VertexLayout &l, const Element &e, const double *values, 
                  FastMesh &mesh)
 {
     for (int c = 0; c < 3; ++c)
-        mesh.positions[3 * v + c] = float(values[l.position[c]]);
+        mesh.positions[3 * v + c] = toFloat(values[l.position[c]]);
     if (l.normals)
         for (int c = 0; c < 3; ++c)
-            mesh.normals[3 * v + c] = l.normal[c] >= 0 ? float(values[l.normal[c]]) : 0.0f;
+            mesh.normals[3 * v + c] = l.normal[c] >= 0 ? toFloat(values[l.normal[c]]) : 0.0f;
     if (l.colours)
         for (int c = 0; c < 3; ++c)
             mesh.colors[3 * v + c] =
