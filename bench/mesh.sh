@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
-# Mesh files: load plus first frame of a generated 1M-triangle binary PLY at 1920x1080,
-# lightbench against f3d (Debian's f3d package), alternating runs inside one Xvfb, wall time
-# and peak memory (GNU time's maximum resident set: the process or its largest child); then
+# Mesh files: load plus first frame of generated binary PLYs (1M triangles, 1M with normals,
+# 10M: a big scan) at 1920x1080, lightbench against f3d (Debian's f3d package), alternating
+# runs inside one Xvfb, wall time and peak memory (GNU time's maximum resident set: the process
+# or its largest child); lightbench twice: as it comes (the import helper's own PLY reader) and
+# with LIGHTBENCH_IMPORT_READER=assimp (Assimp's reader, as before the helper had its own); then
 # a 5M-triangle file: its load and the frame rate at 1280x720; then a 10M-triangle file (a big
 # scan): load and first frame at 1920x1080, and the memory of the workbench and of its import
 # helper together (bench/tree_peak.py samples both). The tori are closed, so
@@ -41,30 +43,38 @@ timed() {
     sed -n 's/^phases: //p' "$out/err" >>"$out/$name.phases"
 }
 
+echo "load average before: $(cut -d' ' -f1-3 /proc/loadavg)"
 echo "| file | tool | median wall (s) | median peak (MB) | wall runs (s) |"
 echo "|---|---|---|---|---|"
-for file in torus-1m.ply torus-1m-normals.ply; do
-    for ((i = 0; i < RUNS; i++)); do # alternating, so drifts hit both alike
+for file in torus-1m.ply torus-1m-normals.ply torus-10m.ply; do
+    for ((i = 0; i < RUNS; i++)); do # alternating, so drifts hit all alike
         LIGHTBENCH_PHASES=1 timed "lb-$file" "$exe" --mesh "$DATA/$file" --render "$out/lb.png" \
             --size 1920x1080 --cull-back-faces on
+        LIGHTBENCH_IMPORT_READER=assimp timed "assimp-$file" "$exe" --mesh "$DATA/$file" \
+            --render "$out/lb.png" --size 1920x1080 --cull-back-faces on
         timed "f3d-$file" f3d --output="$out/f3d.png" --resolution=1920,1080 "$DATA/$file"
     done
-    for tool in lb f3d; do
+    for tool in lb assimp f3d; do
         s=$(awk '{print $1}' "$out/$tool-$file" | median)
         m=$(awk '{print $2}' "$out/$tool-$file" | median)
-        printf '| %s | %s | %.2f | %.0f | %s |\n' "$file" "$([[ $tool == lb ]] && echo lightbench || echo f3d)" \
+        name=$([[ $tool == lb ]] && echo lightbench || ([[ $tool == assimp ]] && echo "lightbench, Assimp's reader" || echo f3d))
+        printf '| %s | %s | %.2f | %.0f | %s |\n' "$file" "$name" \
             "$s" "$(echo "$m / 1024" | bc -l)" "$(awk '{printf "%s ", $1}' "$out/$tool-$file")"
     done
-    ls=$(awk '{print $1}' "$out/lb-$file" | median); fs=$(awk '{print $1}' "$out/f3d-$file" | median)
-    lm=$(awk '{print $2}' "$out/lb-$file" | median); fm=$(awk '{print $2}' "$out/f3d-$file" | median)
-    printf '| %s | ratio lightbench / f3d | %.2fx | %.2fx | |\n' "$file" \
-        "$(echo "$ls / $fs" | bc -l)" "$(echo "$lm / $fm" | bc -l)"
+    fs=$(awk '{print $1}' "$out/f3d-$file" | median); fm=$(awk '{print $2}' "$out/f3d-$file" | median)
+    for tool in lb assimp; do
+        ls=$(awk '{print $1}' "$out/$tool-$file" | median); lm=$(awk '{print $2}' "$out/$tool-$file" | median)
+        printf '| %s | ratio %s / f3d | %.2fx | %.2fx | |\n' "$file" \
+            "$([[ $tool == lb ]] && echo lightbench || echo "Assimp's reader")" \
+            "$(echo "$ls / $fs" | bc -l)" "$(echo "$lm / $fm" | bc -l)"
+    done
 done
+echo "load average after: $(cut -d' ' -f1-3 /proc/loadavg)"
 
 echo
 echo "lightbench's phases (ms since its run began, and its resident MB then; medians; wall"
 echo "includes start and exit):"
-for file in torus-1m.ply torus-1m-normals.ply; do
+for file in torus-1m.ply torus-1m-normals.ply torus-10m.ply; do
     line="$file:"
     for key in openGl import meshToGpu frame png; do
         v=$(sed -E "s/.*\"$key\":([0-9.]+).*/\1/" "$out/lb-$file.phases" | median)
@@ -81,7 +91,10 @@ for ((i = 0; i < RUNS; i++)); do
     /usr/bin/time -f "%e" -o "$out/t" "$BUILD_DIR/app/lightbench-import" "$DATA/torus-1m.ply" \
         >"$out/stream" 2>"$out/err" || { cat "$out/err" >&2; exit 1; }
     cat "$out/t" >>"$out/helper-1m"
-    # Of which Assimp's ReadFile: the stream's info record says it ("seconds=").
+    # Of which the file's reading: the stream's info record says it ("seconds=").
+    strings -n 6 "$out/stream" | sed -n 's/^seconds=//p' >>"$out/read-1m"
+    LIGHTBENCH_IMPORT_READER=assimp "$BUILD_DIR/app/lightbench-import" "$DATA/torus-1m.ply" \
+        >"$out/stream" 2>"$out/err" || { cat "$out/err" >&2; exit 1; }
     strings -n 6 "$out/stream" | sed -n 's/^seconds=//p' >>"$out/assimp-1m"
     "$exe" --mesh "$DATA/torus-1m.ply" --size 1920x1080 --bench-frames 10 \
         --cull-back-faces on >"$out/frames" 2>"$out/err" || { cat "$out/err" >&2; exit 1; }
@@ -90,12 +103,13 @@ done
 helper=$(median <"$out/helper-1m")
 frame=$(awk '{print 1 / $1}' "$out/fps-1m" | median)
 f3d=$(awk '{print $1}' "$out/f3d-torus-1m.ply" | median)
+read=$(median <"$out/read-1m")
 assimp=$(median <"$out/assimp-1m")
 printf 'floor of torus-1m.ply: helper alone %.3f s (runs: %s) + one frame %.3f s = %.3f s, %.2fx f3d'"'"'s %.2f s\n' \
     "$helper" "$(xargs <"$out/helper-1m")" "$frame" "$(echo "$helper + $frame" | bc -l)" \
     "$(echo "($helper + $frame) / $f3d" | bc -l)" "$f3d"
-printf '  (Assimp'"'"'s ReadFile alone %.3f s of the helper'"'"'s: with the frame %.2fx f3d'"'"'s)\n' \
-    "$assimp" "$(echo "($assimp + $frame) / $f3d" | bc -l)"
+printf '  (the helper'"'"'s PLY reader alone %.3f s of it; Assimp'"'"'s ReadFile on the same file %.3f s)\n' \
+    "$read" "$assimp"
 
 echo
 echo "5M triangles, 1280x720, $RUNS runs (--bench-frames 20 after the load), culling off and on:"
