@@ -84,6 +84,12 @@ void StatusLine::showMessage(const QString &text, int milliseconds)
 {
     m_message->setText(text);
     m_message->setVisible(!text.isEmpty());
+    // A message is news and goes away by itself: while it shows, it has the most room (the
+    // program's line, the mesh and the driver are in their tooltips).
+    const bool news = !text.isEmpty();
+    m_row->setStretchFactor(m_program, news ? 3 : 4);
+    m_row->setStretchFactor(m_message, news ? 6 : 4);
+    m_row->setStretchFactor(m_driver, news ? 1 : 2);
     if (milliseconds > 0)
         m_clear.start(milliseconds);
     else

@@ -163,6 +163,13 @@ void MeshActions::showSummary()
         //: a mesh's short summary (%1) and what was turned in it or why it draws nothing
         //: (%2: "faces turned: ...", "draws nothing in view: ...")
         text = tr("%1; %2").arg(text, remarks);
+    // A new remark is also said where messages go, which has room for it when the mesh's
+    // place is narrow (a 1024-pixel window elides it after the load time); once, not at
+    // every redraw of the summary.
+    if (!remarks.isEmpty() && remarks != m_saidRemarks && file)
+        showStatusMessage(m_window, tr("%1: %2").arg(QFileInfo(file->path).fileName(), remarks),
+                          15000);
+    m_saidRemarks = remarks;
     m_summary->setText(text);
     const QString full = m_loader->summary();
     m_summary->setFullText(

@@ -81,6 +81,7 @@ private:
     RecentFiles *m_recent;
     QPointer<QMessageBox> m_errorBox;
     QString m_pendingPath;   // the file being loaded, for the recent list
+    QString m_saidRemarks;   // the summary's remarks last said as a message
     int m_summaryObject = 0; // the object the status bar's summary describes
     std::function<QSize()> m_viewSize;
 };

@@ -1699,7 +1699,7 @@
         <translation>der Import-Helfer hat sich beendet (Exit-Code %1), bevor er das ganze Mesh gesendet hatte: %2</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+41"/>
         <source>embedded texture unreadable: %1</source>
         <translation>eingebettete Textur nicht lesbar: %1</translation>
     </message>
@@ -3206,13 +3206,18 @@
     <message>
         <location line="+7"/>
         <location line="+4"/>
-        <location line="+4"/>
+        <location line="+11"/>
         <source>%1; %2</source>
         <extracomment>a mesh&apos;s short summary (%1) and what was turned in it or why it draws nothing (%2: &quot;faces turned: ...&quot;, &quot;draws nothing in view: ...&quot;)</extracomment>
         <translation>%1; %2</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="-6"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>Meshes Assimp reads (%1);;</source>
         <translation>Von Assimp lesbare Meshes (%1);;</translation>
     </message>
@@ -3309,7 +3314,7 @@
 <context>
     <name>lb::MeshOrientation</name>
     <message>
-        <location filename="../../render/model/mesh/mesh_orientation.cpp" line="+248"/>
+        <location filename="../../render/model/mesh/mesh_orientation.cpp" line="+246"/>
         <source>faces turned: the file winds them clockwise</source>
         <translation>Flächen gewendet: die Datei ordnet sie im Uhrzeigersinn an</translation>
     </message>

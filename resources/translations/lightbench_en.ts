@@ -1693,7 +1693,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+41"/>
         <source>embedded texture unreadable: %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3199,13 +3199,18 @@
     <message>
         <location line="+7"/>
         <location line="+4"/>
-        <location line="+4"/>
+        <location line="+11"/>
         <source>%1; %2</source>
         <extracomment>a mesh&apos;s short summary (%1) and what was turned in it or why it draws nothing (%2: &quot;faces turned: ...&quot;, &quot;draws nothing in view: ...&quot;)</extracomment>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="-6"/>
+        <source>%1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>Meshes Assimp reads (%1);;</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3302,7 +3307,7 @@
 <context>
     <name>lb::MeshOrientation</name>
     <message>
-        <location filename="../../render/model/mesh/mesh_orientation.cpp" line="+248"/>
+        <location filename="../../render/model/mesh/mesh_orientation.cpp" line="+246"/>
         <source>faces turned: the file winds them clockwise</source>
         <translation type="unfinished"></translation>
     </message>

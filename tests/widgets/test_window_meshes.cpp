@@ -1,6 +1,9 @@
 // Mesh files in the window: open, refuse, normals, progress and cancel, drops, restart.
 #include "window_fixture.h"
 
+#include <QFile>
+#include <QTemporaryDir>
+
 using namespace lb;
 using namespace lb::test;
 
@@ -28,6 +31,31 @@ private slots:
         // The status bar has the short form; the whole summary is the tooltip.
         QVERIFY(!m_window->meshActions()->summaryLabel()->text().contains("vertices"));
         QVERIFY(m_window->meshActions()->summaryLabel()->toolTip().contains("vertices"));
+    }
+
+    // A closed mesh wound inwards (as the Stanford bunny is) is turned, and the status line
+    // says so where a narrow window still shows it: the message place, which has the most
+    // room while it shows; the mesh's own place keeps it too.
+    void turnedFacesAreSaidWhereThereIsRoom()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("inward.ply");
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write("ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+                "property float z\nelement face 4\nproperty list uchar int vertex_indices\n"
+                "end_header\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n3 0 3 1\n3 0 2 3\n3 1 3 2\n");
+        f.close();
+        m_window->resize(1024, 768);
+        const auto [ok, message] = openMesh(path);
+        QVERIFY2(ok, qPrintable(message));
+        StatusLine *line = m_window->statusLine();
+        QTRY_VERIFY(line->messageLabel()->isVisible());
+        QVERIFY2(line->message().startsWith("inward.ply: faces turned: the file winds them"),
+                 qPrintable(line->message()));
+        QVERIFY(line->meshLabel()->text().contains("faces turned"));
+        QTRY_VERIFY(line->messageLabel()->width() > line->programLabel()->width());
+        QVERIFY(line->messageLabel()->width() > 2 * line->meshLabel()->width());
     }
 
     void badMeshKeepsThePreviousOneAndSaysWhy()
