@@ -6,7 +6,9 @@
 // a point cloud, ASCII STL) read by Assimp; files cut short refused with what is missing.
 #include "import_process.h"
 
+#include <QDirIterator>
 #include <QFile>
+#include <QFileInfo>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -374,6 +376,37 @@ private slots:
         QCOMPARE(r.file->reader, QString("ply"));
         QCOMPARE(r.file->mesh->triangleCount(), std::size_t(2));
         QCOMPARE(r.file->skippedFaces, 1);
+    }
+
+    // Debian's corpus: every PLY and STL gives on the default route what Assimp alone gives
+    // (the same mesh, or the same refusal), whichever reader took it.
+    void corpusAsAssimpGivesIt()
+    {
+        const QString corpus = "/usr/share/assimp/models";
+        if (!QFileInfo(corpus).isDir())
+            QSKIP("the assimp-testmodels package is missing (scripts/setup.sh installs it)");
+        QDirIterator it(corpus, {"*.ply", "*.PLY", "*.stl", "*.STL"}, QDir::Files,
+                        QDirIterator::Subdirectories);
+        int files = 0, fastOnes = 0;
+        while (it.hasNext()) {
+            const QString path = it.next();
+            ++files;
+            const ImportResult fast = importWith(path, false), assimp = importWith(path, true);
+            QVERIFY2(fast.ok() == assimp.ok(), qPrintable(path + ": " + fast.error + assimp.error));
+            if (!fast.ok()) {
+                QCOMPARE(fast.error, assimp.error);
+                continue;
+            }
+            fastOnes += fast.file->reader != "assimp";
+            const Mesh &a = *fast.file->mesh, &b = *assimp.file->mesh;
+            QVERIFY2(nearArrays(a.positions, b.positions) && nearArrays(a.normals, b.normals) &&
+                         nearArrays(a.colors, b.colors) && a.indices == b.indices &&
+                         a.uvs.size() == b.uvs.size(),
+                     qPrintable(path));
+        }
+        qInfo("corpus: %d PLY and STL files, %d read by the fast readers", files, fastOnes);
+        QVERIFY(files > 10);
+        QVERIFY(fastOnes >= 4); // cube_binary.ply, float-color.ply, three binary STLs
     }
 
     // A point cloud (no face element) is Assimp's, and refused as it was: no triangles.
