@@ -9,6 +9,8 @@
 #include "run_command_line.h"
 #include "run_window.h"
 #include "safe_write.h"
+#include "standard_output.h"
+#include "stream_output.h"
 #include "webgl1_translation.h"
 
 #include <QCoreApplication>
@@ -37,14 +39,17 @@ QStringList rawArguments(int argc, char **argv)
 
 int main(int argc, char **argv)
 {
+    // Before anything opens a file or a socket: a closed 0, 1 or 2 is opened on /dev/null,
+    // and a result asked for on a stdout that was closed is an error, not lost.
+    lb::setStandardOutputWasClosed(lb::platform::reopenClosedStandardStreams() & 2u);
     lb::reportFileSizeLimitAsError(); // `ulimit -f`: a message and an exit code, not a kill
     // The command line is checked before Qt starts, so a bad one answers even with no display.
     const lb::CommandLineResult parsed = lb::parseCommandLine(rawArguments(argc, argv));
     if (!parsed.commandLine) {
         if (parsed.exitCode == 0) { // --help, --version: a full disk is said
-            std::fputs(qPrintable(parsed.message), stdout);
-            if (std::fflush(stdout) != 0 || std::ferror(stdout)) {
-                std::fputs("lightbench: could not write to standard output\n", stderr);
+            if (const QString why = lb::writeStandardOutput(parsed.message.toLocal8Bit());
+                !why.isEmpty()) {
+                std::fprintf(stderr, "lightbench: %s\n", qPrintable(why));
                 return 1;
             }
         } else

@@ -1,4 +1,5 @@
 #include "grade_frames.h"
+#include "standard_output.h"
 
 #include "grade.h"
 #include "grading.h"
@@ -242,8 +243,10 @@ int runGradePrepare(const CommandLine &cl)
         QJsonObject o{{"status", status}};
         if (!diagnostic.isEmpty())
             o["diagnostic"] = diagnostic;
-        printLine(QString::fromUtf8(QJsonDocument(o).toJson(QJsonDocument::Compact)), stdout);
-        return 0;
+        // Read by the batch from a pipe: what did not get there whole fails this child.
+        return writeStandardOutput(QJsonDocument(o).toJson(QJsonDocument::Compact) + '\n').isEmpty()
+                   ? 0
+                   : 1;
     };
     OffscreenRenderer offscreen;
     const GradingStart start = startGrading(cl, offscreen);

@@ -2,6 +2,7 @@
 // frames, then the student's program built and tried within bounds, then its frames measured
 // against the reference's, case by case. Whatever happens, one line of JSON on stdout says it.
 #include "grade.h"
+#include "standard_output.h"
 
 #include "grade_frames.h"
 #include "grade_mistakes.h"
@@ -57,10 +58,10 @@ int runGradeOne(const CommandLine &cl)
     const auto finish = [&](const QString &status, const QString &diagnostic = {}) {
         out.status = status;
         out.diagnostic = diagnostic;
-        printLine(
-            QString::fromUtf8(QJsonDocument(gradingReportJson(out)).toJson(QJsonDocument::Compact)),
-            stdout);
-        return 0;
+        // Read by the batch or the window from a pipe: what did not get there whole fails it.
+        const QByteArray json =
+            QJsonDocument(gradingReportJson(out)).toJson(QJsonDocument::Compact);
+        return writeStandardOutput(json + '\n').isEmpty() ? 0 : 1;
     };
     const Submission s = readSubmission(cl.gradeOne);
     const QString name = cl.gradeName.isEmpty() ? s.name : cl.gradeName;

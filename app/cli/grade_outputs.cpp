@@ -1,5 +1,7 @@
 #include "grade_outputs.h"
 
+#include "standard_output.h"
+
 #include "bounded_read.h"
 #include "grading_progress.h"
 #include "safe_write.h"
@@ -45,10 +47,7 @@ QString BatchReport::write(const std::vector<GradedSubmission> &rows, bool final
         return writeFileSafely(m_path, bytes);
     if (!final) // a stream cannot be rewritten: it gets the whole report once
         return {};
-    const bool written = std::fwrite(bytes.constData(), 1, std::size_t(bytes.size()), stdout) ==
-                             std::size_t(bytes.size()) &&
-                         std::fflush(stdout) == 0;
-    return written ? QString() : QString("standard output: could not be written");
+    return writeStandardOutput(bytes);
 }
 
 void BatchReport::writeBatchError(const QString &error)

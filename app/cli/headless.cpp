@@ -9,6 +9,7 @@
 #include "resident_memory.h"
 #include "safe_write.h"
 #include "scene_budget.h"
+#include "standard_output.h"
 #include "view_coverage.h"
 
 #include <QElapsedTimer>
@@ -67,6 +68,16 @@ void printLine(const QByteArray &line, FILE *stream)
     std::fputs(line.constData(), stream);
     std::fputc('\n', stream);
     std::fflush(stream);
+}
+
+// A run's result as a JSON line on standard output; false, with the reason on stderr, when
+// it did not get there whole (a closed stdout, a full disk).
+bool printResult(const QJsonObject &o)
+{
+    const QString why = writeStandardOutput(QJsonDocument(o).toJson(QJsonDocument::Compact) + '\n');
+    if (!why.isEmpty())
+        printLine(("lightbench: " + why).toUtf8(), stderr);
+    return why.isEmpty();
 }
 
 // With LIGHTBENCH_PHASES set, a run's parts as one JSON line on stderr: for each, the
@@ -347,7 +358,8 @@ int runHeadless(const CommandLine &cl, const Scene &requested)
             o["helperPeakMB"] = double(helperPeakKB) / 1024.0;
             o["readers"] = readers.join(',');
         }
-        printLine(QJsonDocument(o).toJson(QJsonDocument::Compact), stdout);
+        if (!printResult(o))
+            return leave(1);
     }
 
     if (cl.probe) // its pixel is read as the frame is drawn, before the light's marker
@@ -387,7 +399,8 @@ int runHeadless(const CommandLine &cl, const Scene &requested)
         o["differing"] = std::round(d.differing * 1e6) / 1e6;
         o["shareWithin"] = std::round(d.shareWithin * 1e6) / 1e6; // of the pixels drawn
         o["tolerance"] = d.tolerance;
-        printLine(QJsonDocument(o).toJson(QJsonDocument::Compact), stdout);
+        if (!printResult(o))
+            return leave(1);
     }
     if (cl.probe) {
         PixelView view;
@@ -400,7 +413,8 @@ int runHeadless(const CommandLine &cl, const Scene &requested)
                                   *cl.probe, sceneOfSide(scene, view.sideB));
         if (scene.compare.mode != CompareMode::Off)
             o["side"] = view.sideB ? "B" : "A";
-        printLine(QJsonDocument(o).toJson(QJsonDocument::Compact), stdout);
+        if (!printResult(o))
+            return leave(1);
         if (cl.plot) // the curves with the probed point marked (in the scene of its side)
             return leave(writePlotOutputs(cl, sceneOfSide(scene, view.sideB), &probe));
     }

@@ -180,6 +180,38 @@ private slots:
         QVERIFY2(saved.contains("12.5"), saved.constData());
     }
 
+    // --probe's JSON and --help on a stdout that was closed (`>&-`) or is full: exit 1 with
+    // the reason, not exit 0 with the result gone.
+    void resultsOnAClosedOrFullStandardOutputFail_data()
+    {
+        QTest::addColumn<QString>("redirect");
+        QTest::addColumn<QStringList>("args");
+        QTest::addColumn<QString>("said");
+        const QStringList probe{"--probe", "50,50", "--size", "100x100"};
+        QTest::newRow("probe, closed") << ">&-" << probe << "standard output is closed";
+        QTest::newRow("probe, full")
+            << ">/dev/full" << probe << "standard output: could not be written";
+        QTest::newRow("help, closed")
+            << ">&-" << QStringList{"--help"} << "standard output is closed";
+        QTest::newRow("bench frames, closed")
+            << ">&-" << QStringList{"--bench-frames", "2", "--size", "64x64"}
+            << "standard output is closed";
+    }
+
+    void resultsOnAClosedOrFullStandardOutputFail()
+    {
+        QFETCH(QString, redirect);
+        QFETCH(QStringList, args);
+        QFETCH(QString, said);
+        QProcess p;
+        p.start("/bin/sh",
+                QStringList{"-c", "exec \"$0\" \"$@\" " + redirect, LIGHTBENCH_EXE} + args);
+        QVERIFY(p.waitForFinished(60000));
+        const QByteArray err = p.readAllStandardError();
+        QCOMPARE(p.exitCode(), 1);
+        QVERIFY2(err.contains(said.toUtf8()), err.constData());
+    }
+
     void savedSceneRendersTheSameFrame()
     {
         // Options -> --save-scene -> --scene: the same picture, the program included.

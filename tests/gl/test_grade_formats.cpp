@@ -398,6 +398,31 @@ private slots:
         QVERIFY2(r.err.contains("correct: passed, 20/20") && r.err.contains("syntax: does not"),
                  r.err.constData());
     }
+
+    // A report asked for on a stdout that was closed (`>&-`: descriptor 1 would be the X
+    // server's socket, and the batch hung writing into it) or that is full (/dev/full): an
+    // error with the reason, not exit 0 with the report lost.
+    void aReportOnAClosedOrFullStandardOutputFails_data()
+    {
+        QTest::addColumn<QString>("redirect");
+        QTest::addColumn<QString>("said");
+        QTest::newRow("closed") << ">&-"
+                                << "standard output is closed";
+        QTest::newRow("full") << ">/dev/full"
+                              << "standard output: could not be written";
+    }
+
+    void aReportOnAClosedOrFullStandardOutputFails()
+    {
+        QFETCH(QString, redirect);
+        QFETCH(QString, said);
+        const Run r = runProgram("/bin/sh",
+                                 {"-c", "exec \"$0\" \"$@\" " + redirect, LIGHTBENCH_EXE, "--grade",
+                                  kData + "/correct", "--exercise", kExercise, "--report", "-"},
+                                 300000);
+        QVERIFY2(r.exitCode != 0, r.err.constData());
+        QVERIFY2(r.err.contains(said.toUtf8()), r.err.constData());
+    }
 };
 
 QTEST_GUILESS_MAIN(TestGradeFormats)

@@ -26,6 +26,11 @@ void useBinaryStandardStreams()
 #endif
 }
 
+unsigned reopenClosedStandardStreams()
+{
+    return 0; // standard C++ cannot tell a closed descriptor
+}
+
 StreamOutput::StreamOutput() : m_channel(new Channel)
 {
     useBinaryStandardStreams();
