@@ -4414,6 +4414,11 @@
         <translation>keine reguläre Datei (ein Gerät, eine Pipe oder ein Ordner); nicht ersetzt</translation>
     </message>
     <message>
+        <location line="+6"/>
+        <source>read-only (mode %1); not replaced</source>
+        <translation>schreibgeschützt (Modus %1); nicht ersetzt</translation>
+    </message>
+    <message>
         <location line="+13"/>
         <source>the folder %1 does not exist</source>
         <translation>der Ordner %1 existiert nicht</translation>

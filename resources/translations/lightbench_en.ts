@@ -4404,6 +4404,11 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location line="+6"/>
+        <source>read-only (mode %1); not replaced</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location line="+13"/>
         <source>the folder %1 does not exist</source>
         <translation type="unfinished"></translation>

@@ -4414,6 +4414,11 @@
         <translation>não é um ficheiro regular (é um dispositivo, um pipe ou uma pasta); não foi substituído</translation>
     </message>
     <message>
+        <location line="+6"/>
+        <source>read-only (mode %1); not replaced</source>
+        <translation>só de leitura (modo %1); não foi substituído</translation>
+    </message>
+    <message>
         <location line="+13"/>
         <source>the folder %1 does not exist</source>
         <translation>a pasta %1 não existe</translation>

@@ -183,6 +183,32 @@ private slots:
         QCOMPARE(contents(dir.filePath("real/new.json")), QByteArray("made"));
     }
 
+    // A read-only file in a writable folder is refused, as cp refuses it: `--report ro.csv`
+    // and `--plot-data` over a 0444 file replaced it with exit 0 (issue 49). Through a link
+    // too; a writable one beside it is still replaced, and a new file is made.
+    void readOnlyFilesAreNotReplaced()
+    {
+        QTemporaryDir tmp;
+        const QDir dir(tmp.path());
+        const QString ro = dir.filePath("ro.csv");
+        QCOMPARE(writeFileSafely(ro, "the teacher's"), QString());
+        QVERIFY(QFile::setPermissions(ro, QFile::ReadOwner | QFile::ReadGroup | QFile::ReadOther));
+        const QString error = writeFileSafely(ro, "a student's");
+        QVERIFY2(error.contains("ro.csv: read-only (mode 0444); not replaced"), qPrintable(error));
+        QCOMPARE(contents(ro), QByteArray("the teacher's"));
+        QVERIFY(QFile::link("ro.csv", dir.filePath("link.csv")));
+        QVERIFY(writeFileSafely(dir.filePath("link.csv"), "x").contains("read-only"));
+        QVERIFY(unwritableTarget(ro).contains("read-only"));
+        QCOMPARE(contents(ro), QByteArray("the teacher's"));
+        const QString sheet = dir.filePath("sheet.png");
+        QCOMPARE(writeFileSafely(sheet, "old"), QString());
+        QVERIFY(QFile::setPermissions(sheet, QFile::ReadOwner));
+        QVERIFY(writeImageSafely(sheet, QImage(2, 2, QImage::Format_RGB32)).contains("read-only"));
+        QCOMPARE(contents(sheet), QByteArray("old"));
+        QCOMPARE(entries(dir), (QStringList{"link.csv", "ro.csv", "sheet.png"})); // no temporary
+        QCOMPARE(writeFileSafely(dir.filePath("new.csv"), "made"), QString());
+    }
+
     // Reading names a loop as a loop (it said "no such file") and a link to nothing as that.
     void readsNameLinksThatLeadNowhere()
     {

@@ -72,6 +72,12 @@ Target resolveTarget(const QString &given)
         if (st.kind != FileKind::Regular)
             return fail(SafeWriteMessages::tr(
                 "not a regular file (a device, a pipe or a folder); not replaced"));
+        // A read-only file is not replaced, as cp and QSaveFile refuse it: the rename would
+        // (only the folder's permissions count for it). Read-only: no write bit for its owner
+        // when that is us, or none at all (root, for whom the bits do not bind, too).
+        if ((st.ownedByThisUser && !(st.permissions & 0200)) || !(st.permissions & 0222))
+            return fail(SafeWriteMessages::tr("read-only (mode %1); not replaced")
+                            .arg(st.permissions & 0777, 4, 8, QChar('0')));
         t.exists = true;
         t.permissions = st.permissions;
         break;
