@@ -64,14 +64,12 @@ QString Viewport::compareText() const
         // The share within the tolerance of the pixels drawn, as Check My Work counts a case.
         return tr("|A - B|, A: %7, %1: largest %2/255 at (%3, %4); %5% of the drawn pixels "
                   "within %8/255; scale 0 (black) to %6/255 (white)")
-            .arg(b)
-            .arg(d.largest)
-            .arg(d.at.x())
-            .arg(d.at.y())
-            .arg(std::floor(d.shareWithin * 1000.0) / 10.0, 0, 'f', 1)
-            .arg(int(std::lround(kDifferenceScale * 255.0f)))
-            .arg(m_programName.isEmpty() ? tr("the program on screen") : m_programName)
-            .arg(d.tolerance);
+            .arg(b, QString::number(d.largest), QString::number(d.at.x()),
+                 QString::number(d.at.y()),
+                 QString::number(std::floor(d.shareWithin * 1000.0) / 10.0, 'f', 1),
+                 QString::number(int(std::lround(kDifferenceScale * 255.0f))),
+                 m_programName.isEmpty() ? tr("the program on screen") : m_programName,
+                 QString::number(d.tolerance));
     }
     }
     return {};

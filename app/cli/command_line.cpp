@@ -88,7 +88,7 @@ void parseInto(const QCommandLineParser &parser, CommandLine &cl)
         const LessonStep &step = read.lesson->steps[std::size_t(cl.lessonStep - 1)];
         if (!step.error.isEmpty())
             fail("step", QString("%1: %2").arg(echoed(cl.lessonPath), step.error));
-        cl.scenePath = QString("%1 (step %2)").arg(cl.lessonPath).arg(cl.lessonStep);
+        cl.scenePath = cl.lessonPath + QString(" (step %1)").arg(cl.lessonStep);
         cl.sceneFile = step.scene;
         // What the lesson and this step ignored; the other steps' notes are theirs.
         const QString here = QString("step %1: ").arg(cl.lessonStep);

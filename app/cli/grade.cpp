@@ -51,7 +51,7 @@ QStringList uniqueNames(const QStringList &names)
             name = "submission";
         QString candidate = name;
         for (int n = 2; taken.contains(candidate); ++n)
-            candidate = QString("%1-%2").arg(name).arg(n);
+            candidate = name + QString("-%1").arg(n);
         taken.insert(candidate);
         unique << candidate;
     }

@@ -44,7 +44,7 @@ QString diagnosticText(const Diagnostic &d, const Submission &s)
             escapedName(QFileInfo(d.stage == ShaderStage::Fragment ? s.fragmentPath : s.vertexPath)
                             .fileName()) +
             (scene ? QString(" (%1)").arg(stageName(d.stage)) : QString());
-    return d.line > 0 ? QString("%1:%2: %3").arg(where).arg(d.line).arg(d.message)
+    return d.line > 0 ? QString("%1:%2: %3").arg(where, QString::number(d.line), d.message)
                       : QString("%1: %2").arg(where, d.message);
 }
 

@@ -32,7 +32,7 @@ QString exerciseProgramText(const QString &who, const Diagnostic &d)
     const QString where = d.stage == ShaderStage::Link
                               ? QString("%1 (link)").arg(who)
                               : QString("%1 %2").arg(who, stageName(d.stage));
-    return d.line > 0 ? QString("%1:%2: %3").arg(where).arg(d.line).arg(d.message)
+    return d.line > 0 ? QString("%1:%2: %3").arg(where, QString::number(d.line), d.message)
                       : QString("%1: %2").arg(where, d.message);
 }
 

@@ -176,10 +176,8 @@ QString formatDiagnostic(const Diagnostic &d, const CommandLine &cl)
     const QString &file = d.stage == ShaderStage::Fragment ? cl.fragmentPath : cl.vertexPath;
     const QString prefix = d.stage == ShaderStage::Link ? "link: " : "";
     return QString("%1:%2:%3: %4: %5%6")
-        .arg(file)
-        .arg(d.line)
-        .arg(d.column)
-        .arg(d.severity == Diagnostic::Severity::Error ? "error" : "warning", prefix, d.message);
+        .arg(file, QString::number(d.line), QString::number(d.column),
+             d.severity == Diagnostic::Severity::Error ? "error" : "warning", prefix, d.message);
 }
 
 namespace {

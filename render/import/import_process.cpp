@@ -250,10 +250,10 @@ void ImportProcess::processFinished(int exitCode, QProcess::ExitStatus status)
     if (m_cancelled) {
         finish({nullptr, tr("%1: cancelled").arg(name), true});
     } else if (m_timedOut) {
-        finish(
-            {nullptr,
-             tr("%1: gave up after %2 s (the import time limit)").arg(name).arg(m_limits.seconds),
-             false});
+        finish({nullptr,
+                tr("%1: gave up after %2 s (the import time limit)")
+                    .arg(name, QString::number(m_limits.seconds)),
+                false});
     } else if (status == QProcess::NormalExit && exitCode == 0 && m_reader->complete()) {
         finish({meshFile(), {}, false});
     } else {

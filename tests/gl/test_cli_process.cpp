@@ -212,6 +212,26 @@ private slots:
         QVERIFY2(err.contains(said.toUtf8()), err.constData());
     }
 
+    // A file name with %N in it is printed as it is: the messages' chained arg() took a
+    // name's "%4" for the next argument (`--check` on %4%5%6.frag printed "errorsyntax
+    // error..."; a lesson L%2.json was called L1.json).
+    void fileNamesWithPercentSignsArePrintedAsTheyAre()
+    {
+        const QString vert = m_dir.filePath("%1v.vert"), frag = m_dir.filePath("%4%5%6.frag");
+        QVERIFY(writeFile(vert,
+                          "attribute vec4 vPosition;\nvoid main() { gl_Position = vPosition; }\n"));
+        QVERIFY(writeFile(frag, "void main() { gl_FragColor = vec4(1.0) }\n"));
+        const Run check = run({"--check", "--vertex", vert, "--fragment", frag});
+        QVERIFY2(check.out.contains("%4%5%6.frag:1:") && check.out.contains(": error: "),
+                 check.out.constData());
+        const QString lesson = m_dir.filePath("L%2.json");
+        QVERIFY(writeFile(lesson, R"({"format": "lightbench-lesson", "version": 1,
+            "steps": [{"title": "one", "scene": {"unknownField%3": 1}}]})"));
+        const Run step =
+            run({"--lesson", lesson, "--step", "1", "--render", m_dir.filePath("l.png")});
+        QVERIFY2(step.err.contains("L%2.json (step 1)"), step.err.constData());
+    }
+
     void savedSceneRendersTheSameFrame()
     {
         // Options -> --save-scene -> --scene: the same picture, the program included.

@@ -117,15 +117,14 @@ QString summaryLine(const GradingRun &run, const GradedSubmission &row)
             .arg(escapedName(row.name), r.status,
                  diagnostic.isEmpty() ? QString() : ": " + diagnostic);
     const int passed = r.passedCount(), cases = int(r.cases.size());
-    QString line = QString("%1: %2, %3/%4 cases passed (%5/%6 points), largest difference "
-                           "%7/255, %8% of pixels within tolerance%9")
-                       .arg(escapedName(row.name), passed == cases ? "passed" : "failed")
-                       .arg(passed)
-                       .arg(cases)
-                       .arg(pointsText(score(run, r)), pointsText(maxPoints(run)))
-                       .arg(r.largest())
-                       .arg(100.0 * r.meanShare(), 0, 'f', 1)
-                       .arg(diagnostic.isEmpty() ? QString() : " (" + diagnostic + ")");
+    QString line =
+        QString("%1: %2, %3/%4 cases passed (%5/%6 points), largest difference "
+                "%7/255, %8% of pixels within tolerance%9")
+            .arg(escapedName(row.name), passed == cases ? "passed" : "failed",
+                 QString::number(passed), QString::number(cases), pointsText(score(run, r)),
+                 pointsText(maxPoints(run)), QString::number(r.largest()),
+                 QString::number(100.0 * r.meanShare(), 'f', 1),
+                 diagnostic.isEmpty() ? QString() : " (" + diagnostic + ")");
     if (r.mistake)
         line += "; hint: " + escapedControls(r.mistake->hint.simplified());
     return line;

@@ -68,9 +68,8 @@ QString fitMessage(const Scene &scene, const BudgetFit &fit, const MeshBudget &b
 {
     QStringList names;
     for (const int i : fit.lowered)
-        names << QString("%1 #%2")
-                     .arg(echoedValue(displayName(scene.objects[std::size_t(i)]), 60))
-                     .arg(i + 1);
+        names << QString("%1 #%2").arg(echoedValue(displayName(scene.objects[std::size_t(i)]), 60),
+                                       QString::number(i + 1));
     const char *context = "lb::SceneBudget";
     //: what a scene asks for; %n the objects in the scene
     const QString asked =

@@ -134,8 +134,7 @@ LessonRead parseLesson(const QByteArray &bytes, const QDir &dir, const QString &
     if (parseError.error != QJsonParseError::NoError) {
         //: %1 a path, %2 Qt's JSON parser's reason
         read.error = LessonMessages::tr("%1: not a lesson file: %2 at byte %3")
-                         .arg(name, parseError.errorString())
-                         .arg(parseError.offset);
+                         .arg(name, parseError.errorString(), QString::number(parseError.offset));
         return read;
     }
     const QJsonObject root = document.object();
@@ -167,9 +166,8 @@ LessonRead parseLesson(const QByteArray &bytes, const QDir &dir, const QString &
     }
     if (steps.toArray().size() > kMaxLessonSteps) {
         read.error = LessonMessages::tr("%1: %2 steps; a lesson may have at most %3")
-                         .arg(name)
-                         .arg(steps.toArray().size())
-                         .arg(kMaxLessonSteps);
+                         .arg(name, QString::number(steps.toArray().size()),
+                              QString::number(kMaxLessonSteps));
         return read;
     }
     Lesson lesson;

@@ -92,8 +92,7 @@ SceneFileRead parseSceneFile(const QByteArray &bytes, const QDir &dir, const QSt
     if (parseError.error != QJsonParseError::NoError) {
         //: %1 a path, %2 Qt's JSON parser's reason
         read.error = SceneFileMessages::tr("%1: not a scene file: %2 at byte %3")
-                         .arg(name, parseError.errorString())
-                         .arg(parseError.offset);
+                         .arg(name, parseError.errorString(), QString::number(parseError.offset));
         return read;
     }
     if (!document.isObject()) {

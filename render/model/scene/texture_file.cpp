@@ -50,10 +50,8 @@ TextureFileRead readTextureFile(const QString &path)
     if (size.width() > kMaxTextureFileSide || size.height() > kMaxTextureFileSide) {
         read.error =
             TextureFileMessages::tr("%1: %2 x %3 texels is more than a texture may have (%4 x %4)")
-                .arg(name)
-                .arg(size.width())
-                .arg(size.height())
-                .arg(kMaxTextureFileSide);
+                .arg(name, QString::number(size.width()), QString::number(size.height()),
+                     QString::number(kMaxTextureFileSide));
         return read;
     }
     // The largest image allowed decodes to 1 GiB of RGBA; Qt refuses more than 256 MiB unless
@@ -96,17 +94,14 @@ TextureFileRead readTextureFile(const QString &path)
     const QString fileName = QFileInfo(path).fileName();
     if (shown.isValid() && shown != drawn.size())
         //: %1 a file's name, %2 x %3 the texels drawn, %4 x %5 the image's own size
-        read.summary = TextureFileMessages::tr("%1: %2 x %3 texels (scaled from %4 x %5)")
-                           .arg(fileName)
-                           .arg(drawn.width())
-                           .arg(drawn.height())
-                           .arg(shown.width())
-                           .arg(shown.height());
+        read.summary =
+            TextureFileMessages::tr("%1: %2 x %3 texels (scaled from %4 x %5)")
+                .arg(fileName, QString::number(drawn.width()), QString::number(drawn.height()),
+                     QString::number(shown.width()), QString::number(shown.height()));
     else
-        read.summary = TextureFileMessages::tr("%1: %2 x %3 texels")
-                           .arg(fileName)
-                           .arg(drawn.width())
-                           .arg(drawn.height());
+        read.summary =
+            TextureFileMessages::tr("%1: %2 x %3 texels")
+                .arg(fileName, QString::number(drawn.width()), QString::number(drawn.height()));
     read.texture = std::move(texture);
     return read;
 }
