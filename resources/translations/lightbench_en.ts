@@ -1331,7 +1331,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../render/model/scene/lesson.cpp" line="+205"/>
+        <location filename="../../render/model/scene/lesson.cpp" line="+203"/>
         <location line="+42"/>
         <source>a lesson file</source>
         <translation type="unfinished"></translation>
@@ -1342,7 +1342,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../render/model/scene/scene_file.cpp" line="+164"/>
+        <location filename="../../render/model/scene/scene_file.cpp" line="+163"/>
         <location line="+15"/>
         <source>a scene file</source>
         <translation type="unfinished"></translation>
@@ -1662,12 +1662,12 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+3"/>
         <source>%1: gave up after %2 s (the import time limit)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+17"/>
         <source>gave up after %1 s of CPU time (the import time limit)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1762,7 +1762,7 @@
 <context>
     <name>lb::Lesson</name>
     <message>
-        <location filename="../../render/model/scene/lesson.cpp" line="-215"/>
+        <location filename="../../render/model/scene/lesson.cpp" line="-213"/>
         <source>%1 (%2)</source>
         <extracomment>a field of a lesson file (%1, &quot;step 2: caption.de&quot;) and why it was not used (%2)</extracomment>
         <translation type="unfinished"></translation>
@@ -1796,7 +1796,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+8"/>
         <source>%1: a scene file, not a lesson (open it with File &gt; Open Scene)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1826,7 +1826,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+11"/>
         <source>step %1</source>
         <extracomment>where in a lesson file a message is about: &quot;step 3: title (not text)&quot;</extracomment>
         <translation type="unfinished"></translation>
@@ -4703,7 +4703,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message numerus="yes">
-        <location line="+16"/>
+        <location line="+15"/>
         <source>%n object(s) at tessellation %1 would make %2 triangles (~%3)</source>
         <extracomment>what a scene asks for; %n the objects in the scene</extracomment>
         <translation>
@@ -4756,7 +4756,7 @@
 <context>
     <name>lb::SceneFile</name>
     <message>
-        <location filename="../../render/model/scene/scene_file.cpp" line="-140"/>
+        <location filename="../../render/model/scene/scene_file.cpp" line="-139"/>
         <source>not true or false; read as false</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4767,7 +4767,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+6"/>
         <source>%1: not a scene file: the JSON is not an object</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5611,19 +5611,19 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+30"/>
         <location line="+6"/>
         <source>%1: could not be read as an image: %2</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+10"/>
         <source>%1: %2 x %3 texels (scaled from %4 x %5)</source>
         <extracomment>%1 a file&apos;s name, %2 x %3 the texels drawn, %4 x %5 the image&apos;s own size</extracomment>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+5"/>
         <source>%1: %2 x %3 texels</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5935,12 +5935,12 @@
     </message>
     <message>
         <location line="+1"/>
-        <location line="+14"/>
+        <location line="+12"/>
         <source>the program on screen</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-10"/>
+        <location line="-8"/>
         <source>|A - B|: not drawn yet</source>
         <translation type="unfinished"></translation>
     </message>

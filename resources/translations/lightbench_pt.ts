@@ -1331,7 +1331,7 @@
         <translation>o limite de memória da importação</translation>
     </message>
     <message>
-        <location filename="../../render/model/scene/lesson.cpp" line="+205"/>
+        <location filename="../../render/model/scene/lesson.cpp" line="+203"/>
         <location line="+42"/>
         <source>a lesson file</source>
         <translation>um ficheiro de lição</translation>
@@ -1342,7 +1342,7 @@
         <translation>a lição</translation>
     </message>
     <message>
-        <location filename="../../render/model/scene/scene_file.cpp" line="+164"/>
+        <location filename="../../render/model/scene/scene_file.cpp" line="+163"/>
         <location line="+15"/>
         <source>a scene file</source>
         <translation>um ficheiro de cena</translation>
@@ -1668,12 +1668,12 @@
         <translation>%1: cancelado</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+3"/>
         <source>%1: gave up after %2 s (the import time limit)</source>
         <translation>%1: abandonado após %2 s (o limite de tempo da importação)</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+17"/>
         <source>gave up after %1 s of CPU time (the import time limit)</source>
         <translation>abandonado após %1 s de tempo de CPU (o limite de tempo da importação)</translation>
     </message>
@@ -1768,7 +1768,7 @@
 <context>
     <name>lb::Lesson</name>
     <message>
-        <location filename="../../render/model/scene/lesson.cpp" line="-215"/>
+        <location filename="../../render/model/scene/lesson.cpp" line="-213"/>
         <source>%1 (%2)</source>
         <extracomment>a field of a lesson file (%1, &quot;step 2: caption.de&quot;) and why it was not used (%2)</extracomment>
         <translation>%1 (%2)</translation>
@@ -1802,7 +1802,7 @@
         <translation>%1: não é um ficheiro de lição: %2 no byte %3</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+8"/>
         <source>%1: a scene file, not a lesson (open it with File &gt; Open Scene)</source>
         <translation>%1: é um ficheiro de cena, não uma lição (abra-o com Ficheiro &gt; Abrir Cena)</translation>
     </message>
@@ -1832,7 +1832,7 @@
         <translation>%1: %2 passos; uma lição pode ter no máximo %3</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+11"/>
         <source>step %1</source>
         <extracomment>where in a lesson file a message is about: &quot;step 3: title (not text)&quot;</extracomment>
         <translation>passo %1</translation>
@@ -4713,7 +4713,7 @@
         <translation>%1 milhões</translation>
     </message>
     <message numerus="yes">
-        <location line="+16"/>
+        <location line="+15"/>
         <source>%n object(s) at tessellation %1 would make %2 triangles (~%3)</source>
         <extracomment>what a scene asks for; %n the objects in the scene</extracomment>
         <translation>
@@ -4766,7 +4766,7 @@
 <context>
     <name>lb::SceneFile</name>
     <message>
-        <location filename="../../render/model/scene/scene_file.cpp" line="-140"/>
+        <location filename="../../render/model/scene/scene_file.cpp" line="-139"/>
         <source>not true or false; read as false</source>
         <translation>não é true nem false; lido como false</translation>
     </message>
@@ -4777,7 +4777,7 @@
         <translation>%1: não é um ficheiro de cena: %2 no byte %3</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+6"/>
         <source>%1: not a scene file: the JSON is not an object</source>
         <translation>%1: não é um ficheiro de cena: o JSON não é um objeto</translation>
     </message>
@@ -5623,19 +5623,19 @@
         <translation>%1: %2 x %3 texels é mais do que uma textura pode ter (%4 x %4)</translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+30"/>
         <location line="+6"/>
         <source>%1: could not be read as an image: %2</source>
         <translation>%1: não foi possível ler como imagem: %2</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+10"/>
         <source>%1: %2 x %3 texels (scaled from %4 x %5)</source>
         <extracomment>%1 a file&apos;s name, %2 x %3 the texels drawn, %4 x %5 the image&apos;s own size</extracomment>
         <translation>%1: %2 x %3 texels (redimensionado a partir de %4 x %5)</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+5"/>
         <source>%1: %2 x %3 texels</source>
         <translation>%1: %2 x %3 texels</translation>
     </message>
@@ -5948,12 +5948,12 @@
     </message>
     <message>
         <location line="+1"/>
-        <location line="+14"/>
+        <location line="+12"/>
         <source>the program on screen</source>
         <translation>o programa no ecrã</translation>
     </message>
     <message>
-        <location line="-10"/>
+        <location line="-8"/>
         <source>|A - B|: not drawn yet</source>
         <translation>|A - B|: ainda não desenhado</translation>
     </message>
