@@ -1,6 +1,7 @@
 // Scene files: what is saved opens as the same scene; mangled files never crash and never
 // give values outside the model's limits.
 #include "dialect.h"
+#include "lesson.h"
 #include "safe_write.h"
 #include "scene_file.h"
 
@@ -332,6 +333,36 @@ private slots:
         QVERIFY(read.ignored[0].startsWith("version 7 (newer"));
         QVERIFY(read.ignored.join(' ').contains("hologram (unknown field)"));
         QVERIFY(read.ignored.join(' ').contains("program (needs vertex and fragment"));
+    }
+
+    // Unknown fields' names are the file's: shown escaped (issue 49: a name with ESC [2J
+    // cleared the terminal, one with a line break made a line of its own, U+202E reversed
+    // what followed); a lesson's too.
+    void namesOfUnknownFieldsAreEscaped()
+    {
+        QJsonObject json = QJsonDocument::fromJson(sceneFileBytes(SceneFile{}, QDir())).object();
+        json[QString("\x1b[2J\x1b]0;owned\x07")] = 1;
+        json[QString("a\nlightbench: all passed")] = 2;
+        json[QString(QChar(0x202e)) + "evil"] = 3;
+        const SceneFileRead read = parseSceneFile(QJsonDocument(json).toJson(), QDir(), "x.json");
+        QVERIFY(read.file);
+        const QString said = read.ignored.join('|');
+        for (const QChar c : said)
+            QVERIFY2(c.unicode() >= 0x20 && c.unicode() != 0x7f && c.unicode() != 0x202e,
+                     qPrintable(said));
+        QVERIFY2(said.contains("\\x1b[2J") && said.contains("a\\nlightbench") &&
+                     said.contains("\\u202eevil"),
+                 qPrintable(said));
+        const LessonRead lesson = parseLesson(
+            QJsonDocument(
+                QJsonObject{{"format", "lightbench-lesson"},
+                            {"version", 1},
+                            {"steps", QJsonArray{QJsonObject{
+                                          {"scene", QJsonObject{{QString("t\x1b[31m"), 1}}}}}}})
+                .toJson(),
+            QDir(), "l.json");
+        QVERIFY2(lesson.ignored.join('|').contains("\\x1b[31m"),
+                 qPrintable(lesson.ignored.join('|')));
     }
 
     void thousandsOfMangledFilesNeverCrash()

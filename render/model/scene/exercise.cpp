@@ -1,5 +1,7 @@
 #include "exercise.h"
 
+#include "message_text.h"
+
 #include <QCoreApplication>
 #include <QJsonArray>
 
@@ -179,7 +181,8 @@ ExerciseRead readExerciseSection(const QJsonValue &json, QStringList *ignored)
         if (ignored)
             //: a field of an exercise as the file spells it (%1, "exercise.grading.cases") and
             //: why it was not used (%2)
-            ignored->append(ExerciseMessages::tr("%1 (%2)").arg("exercise." + path, why));
+            ignored->append(ExerciseMessages::tr("%1 (%2)").arg(
+                escapedName(elidedForMessage("exercise." + path)), why));
     };
     // The sections' names in the errors are the file's words: arguments, never translated.
     if (!json.isObject()) {

@@ -28,7 +28,7 @@ const char *kLessonFormat = "lightbench-lesson";
 void note(QStringList &ignored, const QString &where, const QString &why)
 {
     //: a field of a lesson file (%1, "step 2: caption.de") and why it was not used (%2)
-    ignored << LessonMessages::tr("%1 (%2)").arg(where, why);
+    ignored << LessonMessages::tr("%1 (%2)").arg(escapedName(elidedForMessage(where)), why);
 }
 
 // "a title", "a caption", in one language or several (localized_text.h).

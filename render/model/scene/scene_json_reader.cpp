@@ -1,5 +1,7 @@
 #include "scene_json_reader.h"
 
+#include "message_text.h"
+
 namespace lb {
 
 void SceneJsonReader::ignore(const QString &path, const QString &why)
@@ -7,7 +9,9 @@ void SceneJsonReader::ignore(const QString &path, const QString &why)
     if (m_ignored)
         //: a field of a scene file as the file spells it (%1, "lights[2].frame", never
         //: translated) and why it was not used (%2)
-        m_ignored->append(tr("%1 (%2)").arg(path, why));
+        // The name is the file's: escaped, so that an escape sequence or a line break in a
+        // field's name reaches no terminal (values were escaped already; names were not).
+        m_ignored->append(tr("%1 (%2)").arg(escapedName(elidedForMessage(path)), why));
 }
 
 QJsonObject SceneJsonReader::object(const QJsonObject &o, const QString &key, const QString &path)
