@@ -6,6 +6,7 @@
 
 #include <QDir>
 #include <QFileInfo>
+#include <QRegularExpression>
 
 namespace lb {
 
@@ -79,7 +80,14 @@ Submission readSubmission(const QString &given)
         if (!read.file) {
             s.error = read.error;
         } else if (!read.file->program) {
-            s.error = Submission::tr("%1: the scene file has no program").arg(path);
+            // A program the reader refused is named with its reason, not as none at all.
+            const QStringList refused = read.ignored.filter(QRegularExpression("^program \\("));
+            s.error = refused.isEmpty()
+                          ? Submission::tr("%1: the scene file has no program").arg(path)
+                          //: %2 why the scene's program was not used ("program (the vertex
+                          //: shader has ... characters, ...)")
+                          : Submission::tr("%1: the scene file's program cannot be used: %2")
+                                .arg(path, refused.first());
         } else {
             s.vertexPath = s.fragmentPath = path;
             s.vertex = read.file->program->vertex;

@@ -839,7 +839,7 @@
 <context>
     <name>lb::Exercise</name>
     <message>
-        <location filename="../../render/model/scene/exercise.cpp" line="+82"/>
+        <location filename="../../render/model/scene/exercise.cpp" line="+84"/>
         <source>not a number of points from 0 to %1, nor a list of one per case</source>
         <extracomment>%1 the largest number of points (&quot;1000000&quot;)</extracomment>
         <translation>weder eine Punktzahl von 0 bis %1 noch eine Liste mit einer pro Fall</translation>
@@ -862,7 +862,7 @@
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>%1: not an object</source>
         <translation>%1: kein JSON-Objekt</translation>
     </message>
@@ -1342,7 +1342,7 @@
         <translation>die Lektion</translation>
     </message>
     <message>
-        <location filename="../../render/model/scene/scene_file.cpp" line="+163"/>
+        <location filename="../../render/model/scene/scene_file.cpp" line="+177"/>
         <location line="+15"/>
         <source>a scene file</source>
         <translation>eine Szenendatei</translation>
@@ -4766,7 +4766,7 @@
 <context>
     <name>lb::SceneFile</name>
     <message>
-        <location filename="../../render/model/scene/scene_file.cpp" line="-139"/>
+        <location filename="../../render/model/scene/scene_file.cpp" line="-153"/>
         <source>not true or false; read as false</source>
         <translation>nicht true oder false; als false gelesen</translation>
     </message>
@@ -4802,7 +4802,19 @@
         <translation>braucht Vertex- und Fragment-Quelltext als Zeichenketten</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
+        <source>the vertex shader has %1 characters, more than a shader may have (%2)</source>
+        <extracomment>%1 the shader&apos;s characters; %2 the most a shader may have</extracomment>
+        <translation>der Vertex-Shader hat %1 Zeichen, mehr als ein Shader haben darf (%2)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>the fragment shader has %1 characters, more than a shader may have (%2)</source>
+        <extracomment>%1 the shader&apos;s characters; %2 the most a shader may have</extracomment>
+        <translation>der Fragment-Shader hat %1 Zeichen, mehr als ein Shader haben darf (%2)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>not an object</source>
         <translation>kein JSON-Objekt</translation>
     </message>
@@ -4849,7 +4861,7 @@
     </message>
     <message>
         <location line="+2"/>
-        <location filename="../../render/model/scene/scene_json_reader.cpp" line="+19"/>
+        <location filename="../../render/model/scene/scene_json_reader.cpp" line="+23"/>
         <source>not an object</source>
         <translation>kein JSON-Objekt</translation>
     </message>
@@ -5500,17 +5512,23 @@
 <context>
     <name>lb::Submission</name>
     <message>
-        <location filename="../../app/common/submission.cpp" line="+69"/>
+        <location filename="../../app/common/submission.cpp" line="+70"/>
         <source>%1: a folder needs one NAME.vert and one NAME.frag (it has %2 and %3)</source>
         <translation>%1: Ein Ordner braucht genau eine NAME.vert und eine NAME.frag (er enthält %2 .vert und %3 .frag)</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+16"/>
         <source>%1: the scene file has no program</source>
         <translation>%1: Die Szenendatei enthält kein Programm</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+3"/>
+        <source>%1: the scene file&apos;s program cannot be used: %2</source>
+        <extracomment>%2 why the scene&apos;s program was not used (&quot;program (the vertex shader has ... characters, ...)&quot;)</extracomment>
+        <translation>%1: das Programm der Szenendatei ist nicht verwendbar: %2</translation>
+    </message>
+    <message>
+        <location line="+22"/>
         <source>%1: no %2 beside it (a submission is NAME.vert and NAME.frag)</source>
         <translation>%1: %2 fehlt im selben Ordner (eine Abgabe besteht aus NAME.vert und NAME.frag)</translation>
     </message>

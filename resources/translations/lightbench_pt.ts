@@ -839,7 +839,7 @@
 <context>
     <name>lb::Exercise</name>
     <message>
-        <location filename="../../render/model/scene/exercise.cpp" line="+82"/>
+        <location filename="../../render/model/scene/exercise.cpp" line="+84"/>
         <source>not a number of points from 0 to %1, nor a list of one per case</source>
         <extracomment>%1 the largest number of points (&quot;1000000&quot;)</extracomment>
         <translation>nem um número de pontos de 0 a %1, nem uma lista com um por caso</translation>
@@ -862,7 +862,7 @@
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>%1: not an object</source>
         <translation>%1: não é um objeto</translation>
     </message>
@@ -1342,7 +1342,7 @@
         <translation>a lição</translation>
     </message>
     <message>
-        <location filename="../../render/model/scene/scene_file.cpp" line="+163"/>
+        <location filename="../../render/model/scene/scene_file.cpp" line="+177"/>
         <location line="+15"/>
         <source>a scene file</source>
         <translation>um ficheiro de cena</translation>
@@ -4766,7 +4766,7 @@
 <context>
     <name>lb::SceneFile</name>
     <message>
-        <location filename="../../render/model/scene/scene_file.cpp" line="-139"/>
+        <location filename="../../render/model/scene/scene_file.cpp" line="-153"/>
         <source>not true or false; read as false</source>
         <translation>não é true nem false; lido como false</translation>
     </message>
@@ -4802,7 +4802,19 @@
         <translation>precisa do código-fonte do vertex shader e do fragment shader como strings</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
+        <source>the vertex shader has %1 characters, more than a shader may have (%2)</source>
+        <extracomment>%1 the shader&apos;s characters; %2 the most a shader may have</extracomment>
+        <translation>o vertex shader tem %1 caracteres, mais do que um shader pode ter (%2)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>the fragment shader has %1 characters, more than a shader may have (%2)</source>
+        <extracomment>%1 the shader&apos;s characters; %2 the most a shader may have</extracomment>
+        <translation>o fragment shader tem %1 caracteres, mais do que um shader pode ter (%2)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>not an object</source>
         <translation>não é um objeto</translation>
     </message>
@@ -4849,7 +4861,7 @@
     </message>
     <message>
         <location line="+2"/>
-        <location filename="../../render/model/scene/scene_json_reader.cpp" line="+19"/>
+        <location filename="../../render/model/scene/scene_json_reader.cpp" line="+23"/>
         <source>not an object</source>
         <translation>não é um objeto</translation>
     </message>
@@ -5500,17 +5512,23 @@
 <context>
     <name>lb::Submission</name>
     <message>
-        <location filename="../../app/common/submission.cpp" line="+69"/>
+        <location filename="../../app/common/submission.cpp" line="+70"/>
         <source>%1: a folder needs one NAME.vert and one NAME.frag (it has %2 and %3)</source>
         <translation>%1: uma pasta precisa de um NAME.vert e de um NAME.frag (tem %2 e %3)</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+16"/>
         <source>%1: the scene file has no program</source>
         <translation>%1: o ficheiro de cena não tem programa</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+3"/>
+        <source>%1: the scene file&apos;s program cannot be used: %2</source>
+        <extracomment>%2 why the scene&apos;s program was not used (&quot;program (the vertex shader has ... characters, ...)&quot;)</extracomment>
+        <translation>%1: o programa do ficheiro de cena não pode ser usado: %2</translation>
+    </message>
+    <message>
+        <location line="+22"/>
         <source>%1: no %2 beside it (a submission is NAME.vert and NAME.frag)</source>
         <translation>%1: não há nenhum %2 ao lado (uma submissão é NAME.vert e NAME.frag)</translation>
     </message>

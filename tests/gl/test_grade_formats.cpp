@@ -399,6 +399,26 @@ private slots:
                  r.err.constData());
     }
 
+    // A scene submitted whose program is over 1 MiB: refused with that reason (it was "the
+    // scene file has no program").
+    void aSceneWithAProgramTooLongSaysSo()
+    {
+        QJsonObject scene{
+            {"format", "lightbench-scene"},
+            {"version", 1},
+            {"program", QJsonObject{{"vertex", QString(1100000, ' ') + "void main() {}"},
+                                    {"fragment", "void main() {}"}}}};
+        const QString path = m_dir.filePath("big.json");
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(QJsonDocument(scene).toJson());
+        f.close();
+        const Run r = run({"--grade", path, "--exercise", kExercise});
+        QVERIFY2(r.err.contains("the scene file's program cannot be used: program (the vertex "
+                                "shader has 1100014 characters"),
+                 r.err.constData());
+    }
+
     // A report asked for on a stdout that was closed (`>&-`: descriptor 1 would be the X
     // server's socket, and the batch hung writing into it) or that is full (/dev/full): an
     // error with the reason, not exit 0 with the report lost.

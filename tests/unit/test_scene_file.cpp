@@ -335,6 +335,21 @@ private slots:
         QVERIFY(read.ignored.join(' ').contains("program (needs vertex and fragment"));
     }
 
+    // A program over the 1 MiB a shader may have is refused as too long (it was "needs vertex
+    // and fragment sources as strings", which they were).
+    void aProgramTooLongIsSaidToBeTooLong()
+    {
+        QJsonObject json = QJsonDocument::fromJson(sceneFileBytes(SceneFile{}, QDir())).object();
+        json["program"] =
+            QJsonObject{{"vertex", QString(1100000, 'x')}, {"fragment", "void main() {}"}};
+        const SceneFileRead read = parseSceneFile(QJsonDocument(json).toJson(), QDir(), "big.json");
+        QVERIFY(read.file && !read.file->program);
+        QVERIFY2(read.ignored.join('|').contains(
+                     "program (the vertex shader has 1100000 characters, more than a shader may "
+                     "have (1048576))"),
+                 qPrintable(read.ignored.join('|')));
+    }
+
     // Unknown fields' names are the file's: shown escaped (issue 49: a name with ESC [2J
     // cleared the terminal, one with a line break made a line of its own, U+202E reversed
     // what followed); a lesson's too.

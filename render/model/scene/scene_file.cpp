@@ -128,13 +128,27 @@ SceneFileRead parseSceneObject(QJsonObject root, const QDir &dir)
     if (program.isObject()) {
         const QJsonObject p = program.toObject();
         const QJsonValue vertex = p["vertex"], fragment = p["fragment"];
-        if (vertex.isString() && fragment.isString() &&
-            vertex.toString().size() <= kMaxSourceCharacters &&
-            fragment.toString().size() <= kMaxSourceCharacters)
-            file.program = programText(p, read.ignored);
-        else
+        // Too long is said as too long (it was "needs ... sources as strings", which they were).
+        const auto tooLong = [](const QJsonValue &v) {
+            return v.toString().size() > kMaxSourceCharacters;
+        };
+        if (!vertex.isString() || !fragment.isString())
             fields.ignore("program",
                           SceneFileMessages::tr("needs vertex and fragment sources as strings"));
+        else if (tooLong(vertex))
+            //: %1 the shader's characters; %2 the most a shader may have
+            fields.ignore("program", SceneFileMessages::tr("the vertex shader has %1 characters, "
+                                                           "more than a shader may have (%2)")
+                                         .arg(QString::number(vertex.toString().size()),
+                                              QString::number(kMaxSourceCharacters)));
+        else if (tooLong(fragment))
+            //: %1 the shader's characters; %2 the most a shader may have
+            fields.ignore("program", SceneFileMessages::tr("the fragment shader has %1 characters, "
+                                                           "more than a shader may have (%2)")
+                                         .arg(QString::number(fragment.toString().size()),
+                                              QString::number(kMaxSourceCharacters)));
+        else
+            file.program = programText(p, read.ignored);
     } else if (!program.isUndefined() && !program.isNull()) {
         fields.ignore("program", SceneFileMessages::tr("not an object"));
     }
