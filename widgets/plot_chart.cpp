@@ -296,7 +296,9 @@ QString plotGapText(PlotGap gap, bool translated)
                                            "is not attenuated."),
         QT_TRANSLATE_NOOP("lb::PlotChart", "No spotlight: every light that is on has a cutoff "
                                            "of 180°. Set a cutoff in the Light panel."),
-        QT_TRANSLATE_NOOP("lb::PlotChart", "No light is on.")};
+        QT_TRANSLATE_NOOP("lb::PlotChart", "No light is on."),
+        QT_TRANSLATE_NOOP("lb::PlotChart", "No lobe: the light is at the surface's point, where "
+                                           "L has no direction. Move the light off the surface.")};
     const char *text = texts[int(gap)];
     if (!*text)
         return {};

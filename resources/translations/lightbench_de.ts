@@ -3801,7 +3801,12 @@
         <translation>Kein Licht ist an.</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+1"/>
+        <source>No lobe: the light is at the surface&apos;s point, where L has no direction. Move the light off the surface.</source>
+        <translation>Keine Keule: das Licht liegt im Punkt der Oberfläche, wo L keine Richtung hat. Rücken Sie das Licht von der Oberfläche weg.</translation>
+    </message>
+    <message>
+        <location line="+20"/>
         <source>Ambient</source>
         <translation>Ambient</translation>
     </message>

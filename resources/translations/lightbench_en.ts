@@ -3794,7 +3794,12 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+1"/>
+        <source>No lobe: the light is at the surface&apos;s point, where L has no direction. Move the light off the surface.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+20"/>
         <source>Ambient</source>
         <translation type="unfinished"></translation>
     </message>

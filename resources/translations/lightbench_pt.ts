@@ -3801,7 +3801,12 @@
         <translation>Nenhuma luz está ligada.</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+1"/>
+        <source>No lobe: the light is at the surface&apos;s point, where L has no direction. Move the light off the surface.</source>
+        <translation>Sem lóbulo: a luz está no ponto da superfície, onde L não tem direção. Afaste a luz da superfície.</translation>
+    </message>
+    <message>
+        <location line="+20"/>
         <source>Ambient</source>
         <translation>Ambiente</translation>
     </message>

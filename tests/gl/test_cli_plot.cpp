@@ -270,6 +270,18 @@ private slots:
         QVERIFY2(r.err.contains("No spotlight"), r.err.constData());
         QCOMPARE(readCsv(path("spot.csv")).header, QList<QByteArray>({"angle_degrees"}));
     }
+
+    // The lobe with the light at the point itself (issue 49): 361 rows of NaN and 724
+    // warnings before; now said, with the CSV's header alone.
+    void noLobeWhereTheLightIsAtThePoint()
+    {
+        const ProgramRun r =
+            plot({"--plot", "lobe", "--light", "0,0,0,1", "--plot-data", path("at.csv")});
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        QVERIFY2(r.err.contains("No lobe: the light is at the surface's point"), r.err.constData());
+        QVERIFY2(!r.err.contains("nan") && r.err.count('\n') == 1, r.err.constData());
+        QCOMPARE(readCsv(path("at.csv")).header, QList<QByteArray>({"angle_degrees"}));
+    }
 };
 
 QTEST_GUILESS_MAIN(TestCliPlot)

@@ -278,6 +278,12 @@ Plot lobePlot(const Scene &scene, const PlotSubject &s, int samples)
         if (in.lightEye.w != 0.0f)
             distance = glm::length(glm::vec3(in.lightEye) - centre);
     }
+    // A point light at the point itself: L has no direction, so neither has any term but the
+    // ambient; every sample was NaN (and each drawn one a warning). Said, not drawn.
+    if (!(glm::length(L) > 0.5f) || (in.lightEye.w != 0.0f && !(distance > 1e-6f))) {
+        plot.gap = PlotGap::LightAtPoint;
+        return plot;
+    }
     // The plane of incidence: N and the part of L across it (any direction across N where L
     // is along N).
     glm::vec3 across = L - glm::dot(L, N) * N;

@@ -53,7 +53,8 @@ struct PlotMarker
 };
 
 // Why a plot has no curve to draw.
-enum class PlotGap { None, NoPointLight, NoSpotlight, NoLight };
+// LightAtPoint: the lobe's point light is at the point itself, where L has no direction.
+enum class PlotGap { None, NoPointLight, NoSpotlight, NoLight, LightAtPoint };
 
 struct Plot
 {
