@@ -51,6 +51,16 @@ void LessonActions::addViewAsStep()
         newLesson();
         return;
     }
+    // The reader opens at most kMaxLessonSteps: a step past them would be saved ("Saved")
+    // into a lesson that cannot be opened again.
+    if (int(m_lesson.steps.size()) >= kMaxLessonSteps) {
+        showStatusMessage(m_window,
+                          tr("A lesson has at most %1 steps and this one has them all: the view "
+                             "was not added")
+                              .arg(kMaxLessonSteps),
+                          10000);
+        return;
+    }
     keepWorkingCopy();
     LessonStep step;
     step.scene = currentView();

@@ -1995,7 +1995,7 @@
     <message>
         <location line="+116"/>
         <location filename="../../app/window/lesson_authoring.cpp" line="+35"/>
-        <location line="+24"/>
+        <location line="+34"/>
         <source>Step %1</source>
         <extracomment>a new step&apos;s title, until the teacher renames it (saved in the lesson file)</extracomment>
         <translation>Schritt %1</translation>
@@ -2012,13 +2012,18 @@
     </message>
     <message>
         <location line="+9"/>
-        <location filename="../../app/window/lesson_authoring.cpp" line="-27"/>
+        <location filename="../../app/window/lesson_authoring.cpp" line="-37"/>
         <source>Lesson</source>
         <extracomment>a new lesson&apos;s title, until the teacher renames it (saved in the lesson file)</extracomment>
         <translation>Lektion</translation>
     </message>
     <message>
-        <location filename="../../app/window/lesson_authoring.cpp" line="+56"/>
+        <location filename="../../app/window/lesson_authoring.cpp" line="+26"/>
+        <source>A lesson has at most %1 steps and this one has them all: the view was not added</source>
+        <translation>Eine Lektion hat höchstens %1 Schritte, und diese hat sie alle: die Ansicht wurde nicht hinzugefügt</translation>
+    </message>
+    <message>
+        <location line="+40"/>
         <source>The step keeps its title.</source>
         <translation>Der Schritt behält seinen Titel.</translation>
     </message>

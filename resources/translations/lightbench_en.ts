@@ -1989,7 +1989,7 @@
     <message>
         <location line="+116"/>
         <location filename="../../app/window/lesson_authoring.cpp" line="+35"/>
-        <location line="+24"/>
+        <location line="+34"/>
         <source>Step %1</source>
         <extracomment>a new step&apos;s title, until the teacher renames it (saved in the lesson file)</extracomment>
         <translation type="unfinished"></translation>
@@ -2006,13 +2006,18 @@
     </message>
     <message>
         <location line="+9"/>
-        <location filename="../../app/window/lesson_authoring.cpp" line="-27"/>
+        <location filename="../../app/window/lesson_authoring.cpp" line="-37"/>
         <source>Lesson</source>
         <extracomment>a new lesson&apos;s title, until the teacher renames it (saved in the lesson file)</extracomment>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../app/window/lesson_authoring.cpp" line="+56"/>
+        <location filename="../../app/window/lesson_authoring.cpp" line="+26"/>
+        <source>A lesson has at most %1 steps and this one has them all: the view was not added</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+40"/>
         <source>The step keeps its title.</source>
         <translation type="unfinished"></translation>
     </message>

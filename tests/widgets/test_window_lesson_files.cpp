@@ -129,6 +129,24 @@ private slots:
         QCOMPARE(localized(read.lesson->steps[2].caption, "pt"), QString("A *shiny* sphere"));
     }
 
+    // The 501st step is refused when added (issue 49: it was added, saved with "Saved", and
+    // the lesson could not be opened again); the 500 are saved and open again.
+    void aLessonKeepsToTheStepsItMayHave()
+    {
+        lessons()->newLesson();
+        while (int(lessons()->lesson().steps.size()) < kMaxLessonSteps)
+            lessons()->addViewAsStep();
+        lessons()->addViewAsStep();
+        QCOMPARE(int(lessons()->lesson().steps.size()), kMaxLessonSteps);
+        QVERIFY2(m_window->statusLine()->message().contains("at most 500 steps"),
+                 qPrintable(m_window->statusLine()->message()));
+        const QString path = m_dir.filePath("full.json");
+        QVERIFY(lessons()->saveAs(path));
+        const LessonRead read = readLessonFile(path);
+        QVERIFY2(read.lesson, qPrintable(read.error));
+        QCOMPARE(int(read.lesson->steps.size()), kMaxLessonSteps);
+    }
+
     // The caption dialog: one field per language; too long is refused with a message.
     void theCaptionDialogKeepsOtherLanguages()
     {
