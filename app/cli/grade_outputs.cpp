@@ -1,10 +1,10 @@
 #include "grade_outputs.h"
 
-#include "standard_output.h"
-
 #include "bounded_read.h"
 #include "grading_progress.h"
+#include "qt_paths.h"
 #include "safe_write.h"
+#include "standard_output.h"
 #include "terminal.h"
 
 #include <QDir>
@@ -14,6 +14,8 @@
 #include <QJsonObject>
 
 #include <algorithm>
+#include <filesystem>
+#include <system_error>
 
 namespace lb {
 
@@ -136,12 +138,24 @@ QString finishSheetList(const QString &dir, const QStringList &lastRun, const QS
         return std::any_of(names.begin(), names.end(),
                            [&](const QString &n) { return key(n) == key(name); });
     };
+    // A last-run sheet written again under another case (Alice.png, now alice.png) is the same
+    // file where names are folded (macOS, Windows): kept; where they are not, it is a sheet of
+    // its own that nothing else would ever clean up: stale.
+    const auto sameFile = [&](const QString &a, const QString &b) {
+        std::error_code error;
+        return std::filesystem::equivalent(platform::nativePath(QDir(dir).filePath(a)),
+                                           platform::nativePath(QDir(dir).filePath(b)), error);
+    };
     QStringList stale, listed = written;
     for (const QString &name : lastRun) {
-        if (among(name, failed))
+        if (among(name, failed)) {
             listed << name;
-        else if (!among(name, written))
-            stale << name;
+        } else if (!written.contains(name)) {
+            const auto again = std::find_if(written.begin(), written.end(),
+                                            [&](const QString &n) { return key(n) == key(name); });
+            if (again == written.end() || !sameFile(name, *again))
+                stale << name;
+        }
     }
     removeSheets(dir, stale);
     return writeSheetList(dir, listed);

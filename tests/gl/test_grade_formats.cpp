@@ -385,6 +385,26 @@ private slots:
         QVERIFY(QFileInfo(sheets.filePath("link.png")).isSymLink());
     }
 
+    // A student graded as Correct, then as correct: on a file system that tells the two
+    // apart, last run's Correct.png is cleaned up like any other stale sheet (it stayed for
+    // ever, the list having dropped it); where the names are one file, it is kept.
+    void sheetsDifferingByCaseAreCleanedUp()
+    {
+        const QDir sheets(m_dir.filePath("case-sheets"));
+        const QDir upper(m_dir.filePath("case/Correct"));
+        QVERIFY(upper.mkpath("."));
+        for (const char *f : {"lighting.vert", "lighting.frag"})
+            QVERIFY(QFile::copy(kData + "/correct/" + f, upper.filePath(f)));
+        Run r = run({"--grade", upper.path(), "--exercise", kExercise, "--sheets", sheets.path()});
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        QVERIFY(sheets.exists("Correct.png"));
+        r = run(
+            {"--grade", kData + "/correct", "--exercise", kExercise, "--sheets", sheets.path()});
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        QVERIFY(sheets.exists("correct.png"));
+        QVERIFY(!QDir(sheets.path()).entryList(QDir::Files).contains("Correct.png"));
+    }
+
     // --report -: the report alone on standard output, the summary lines on stderr.
     void aReportOnStandardOutput()
     {
