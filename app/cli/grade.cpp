@@ -59,7 +59,7 @@ QStringList uniqueNames(const QStringList &names)
 }
 
 // "--report: PATH: why" when a result of the batch could not be written; empty when all can.
-QString outputsUnwritable(const CommandLine &cl, const QStringList &names)
+QString outputsUnwritable(const CommandLine &cl)
 {
     if (!cl.reportPath.isEmpty() && cl.reportPath != "-")
         if (const QString why = unwritableTarget(cl.reportPath); !why.isEmpty())
@@ -70,10 +70,8 @@ QString outputsUnwritable(const CommandLine &cl, const QStringList &names)
         return QString("--sheets: %1: cannot make the folder").arg(cl.sheetsDir);
     if (const QString why = unwritableTarget(sheetListPath(cl.sheetsDir)); !why.isEmpty())
         return "--sheets: " + why;
-    for (const QString &name : names)
-        if (const QString why = unwritableTarget(gradingSheetPath(cl.sheetsDir, name));
-            !why.isEmpty())
-            return "--sheets: " + why;
+    // Each student's sheet is that student's: one that cannot be written (a FIFO in its
+    // place) fails that sheet when it is written, said on its line, never the class.
     return {};
 }
 
@@ -166,7 +164,7 @@ int runGrade(const CommandLine &cl)
 
     // Where the results go is checked before the first submission is graded: a FIFO, a
     // device or a folder in their place, or a folder that cannot take them, ends the batch.
-    if (const QString error = outputsUnwritable(cl, names); !error.isEmpty())
+    if (const QString error = outputsUnwritable(cl); !error.isEmpty())
         return batchError(error);
     // The sheet folder is to hold this run's sheets alone: the list names the last run's and
     // this run's while it goes on, and only a run that finishes removes the last run's it did

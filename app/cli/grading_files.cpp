@@ -1,8 +1,11 @@
 #include "grading_files.h"
 
 #include "message_text.h"
+#include "safe_write.h"
 
+#include <QCryptographicHash>
 #include <QDir>
+#include <QFile>
 
 namespace lb {
 
@@ -38,7 +41,16 @@ QString exerciseProgramText(const QString &who, const Diagnostic &d)
 
 QString gradingSheetPath(const QString &folder, const QString &name)
 {
-    return QDir(folder).filePath(name + ".png");
+    // A file name has at most 255 bytes: a student folder of 253 ended the whole batch (its
+    // sheet's name would not do). A longer one is cut between characters and told apart from
+    // others cut the same way by the start of its whole name's hash.
+    constexpr int kMaxNameBytes = 255;
+    const QString whole = name + ".png";
+    if (QFile::encodeName(whole).size() <= kMaxNameBytes)
+        return QDir(folder).filePath(whole);
+    const QString hash = QString::fromLatin1(
+        QCryptographicHash::hash(name.toUtf8(), QCryptographicHash::Sha1).toHex().left(8));
+    return QDir(folder).filePath(leftInBytes(name, kMaxNameBytes - 13) + "-" + hash + ".png");
 }
 
 void printLine(const QString &line, FILE *stream)

@@ -183,6 +183,24 @@ private slots:
         QCOMPARE(contents(dir.filePath("real/new.json")), QByteArray("made"));
     }
 
+    // A name as long as the file system allows is written: the temporary beside it kept 200
+    // UTF-16 units of the name, over 255 bytes for 80 CJK characters (240 bytes + ".png").
+    void longNamesAreWritten()
+    {
+        QTemporaryDir tmp;
+        const QDir dir(tmp.path());
+        const QString emoji = QString::fromUcs4(U"\U0001F600"); // 4 bytes, two UTF-16 units
+        for (const QString &name : {QString(80, QChar(0x6f22)) + ".png", QString(251, 'x') + ".csv",
+                                    emoji.repeated(62) + ".png"}) {
+            QVERIFY(QFile::encodeName(name).size() <= 255);
+            QCOMPARE(writeFileSafely(dir.filePath(name), "bytes"), QString());
+            QCOMPARE(contents(dir.filePath(name)), QByteArray("bytes"));
+        }
+        QCOMPARE(entries(dir).size(), 3);                               // no temporary left
+        QCOMPARE(leftInBytes(emoji.repeated(3), 9), emoji.repeated(2)); // never half of one
+        QCOMPARE(leftInBytes("abc", 0), QString());
+    }
+
     // A read-only file in a writable folder is refused, as cp refuses it: `--report ro.csv`
     // and `--plot-data` over a 0444 file replaced it with exit 0 (issue 49). Through a link
     // too; a writable one beside it is still replaced, and a new file is made.

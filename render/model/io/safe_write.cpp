@@ -136,10 +136,11 @@ private:
         const QString folder = QFileInfo(m_target.path).absolutePath();
         platform::FileError error;
         for (int attempt = 0; attempt < 100; ++attempt) {
+            // At most 214 bytes whatever the target's name: "." 200 "." 8 ".tmp".
             const QString name =
-                QString(".%1.%2.tmp")
-                    .arg(base.left(200))
-                    .arg(QRandomGenerator::global()->generate(), 8, 16, QLatin1Char('0'));
+                "." + leftInBytes(base, 200) + "." +
+                QString("%1").arg(QRandomGenerator::global()->generate(), 8, 16, QLatin1Char('0')) +
+                ".tmp";
             error = m_file.create(QDir(folder).filePath(name));
             if (error.code != platform::FileError::Exists)
                 break;
@@ -163,6 +164,24 @@ void reportFileSizeLimitAsError()
 {
     static std::once_flag once;
     std::call_once(once, [] { platform::reportFileSizeLimitAsError(); });
+}
+
+QString leftInBytes(const QString &name, int maxBytes)
+{
+    qsizetype end = 0;
+    int bytes = 0;
+    while (end < name.size()) {
+        const qsizetype length =
+            name[end].isHighSurrogate() && end + 1 < name.size() && name[end + 1].isLowSurrogate()
+                ? 2
+                : 1;
+        const int more = int(QFile::encodeName(name.mid(end, length)).size());
+        if (bytes + more > maxBytes)
+            break;
+        bytes += more;
+        end += length;
+    }
+    return name.left(end);
 }
 
 QString unwritableTarget(const QString &path)

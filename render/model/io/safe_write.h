@@ -33,6 +33,11 @@ QString writeFilesSafely(const std::vector<std::pair<QString, QByteArray>> &file
 // An image in the format its suffix names (PNG without one), `quality` as QImageWriter's.
 QString writeImageSafely(const QString &path, const QImage &image, int quality = -1);
 
+// The longest start of `name` whose bytes in the file system's encoding (UTF-8) are at most
+// `maxBytes`, cut between characters: a file name may have 255 bytes, and 80 CJK characters
+// are 80 UTF-16 units but 240 bytes.
+QString leftInBytes(const QString &name, int maxBytes);
+
 // A write beyond the file size limit (`ulimit -f`, a quota) raises SIGXFSZ, which kills the
 // process without a word; ignored, the write fails with EFBIG ("File too large") and is
 // reported like any other failure. The writers call it; main() calls it first of all so that
