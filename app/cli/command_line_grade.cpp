@@ -48,6 +48,8 @@ QString parseGradeOptions(const QCommandLineParser &parser, CommandLine &cl)
     if (given("report") && cl.reportPath.isEmpty())
         return bad("report", "needs a file name, or - for standard output");
     cl.sheetsDir = value("sheets");
+    if (given("sheets") && cl.sheetsDir.isEmpty()) // it wrote no sheet and said nothing
+        return bad("sheets", "needs a folder");
     if (given("report-format")) {
         const QString word = value("report-format");
         const auto format = parseReportFormat(word);

@@ -64,8 +64,10 @@ Submission readSubmission(const QString &given)
     if (info.isDir()) {
         s.name = info.fileName();
         const QDir dir(path);
-        const QStringList verts = dir.entryList({"*.vert"}, QDir::Files);
-        const QStringList frags = dir.entryList({"*.frag"}, QDir::Files);
+        // System too: a FIFO or a device named lighting.frag is counted, and refused when it
+        // is read, by name ("not a regular file"), not left out of the count ("it has 1 and 0").
+        const QStringList verts = dir.entryList({"*.vert"}, QDir::Files | QDir::System);
+        const QStringList frags = dir.entryList({"*.frag"}, QDir::Files | QDir::System);
         if (verts.size() != 1 || frags.size() != 1) {
             s.error = Submission::tr("%1: a folder needs one NAME.vert and one NAME.frag (it has "
                                      "%2 and %3)")

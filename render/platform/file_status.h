@@ -61,5 +61,9 @@ bool canTellOwners();
 
 // Why this process may not create files in the folder `folder` (None when it may).
 FileError creatingFilesRefused(const std::filesystem::path &folder);
+// Why a file cannot be made in `folder` when one is tried (an empty one, removed at once): for
+// the checks before a long run only (a batch's sheet folder), where permission alone misleads
+// (/proc). The portable layer tries nothing and returns None.
+FileError fileCreationFails(const std::filesystem::path &folder);
 
 } // namespace lb::platform

@@ -4440,11 +4440,12 @@
     </message>
     <message>
         <location line="+2"/>
+        <location line="+98"/>
         <source>cannot write in %1: %2</source>
         <translation>in %1 kann nicht geschrieben werden: %2</translation>
     </message>
     <message>
-        <location line="+108"/>
+        <location line="+37"/>
         <source>no image to write</source>
         <translation>kein Bild zum Schreiben</translation>
     </message>
@@ -5522,7 +5523,7 @@
 <context>
     <name>lb::Submission</name>
     <message>
-        <location filename="../../app/common/submission.cpp" line="+70"/>
+        <location filename="../../app/common/submission.cpp" line="+72"/>
         <source>%1: a folder needs one NAME.vert and one NAME.frag (it has %2 and %3)</source>
         <translation>%1: Ein Ordner braucht genau eine NAME.vert und eine NAME.frag (er enthält %2 .vert und %3 .frag)</translation>
     </message>

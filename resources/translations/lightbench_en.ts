@@ -4430,11 +4430,12 @@
     </message>
     <message>
         <location line="+2"/>
+        <location line="+98"/>
         <source>cannot write in %1: %2</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+108"/>
+        <location line="+37"/>
         <source>no image to write</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5510,7 +5511,7 @@
 <context>
     <name>lb::Submission</name>
     <message>
-        <location filename="../../app/common/submission.cpp" line="+70"/>
+        <location filename="../../app/common/submission.cpp" line="+72"/>
         <source>%1: a folder needs one NAME.vert and one NAME.frag (it has %2 and %3)</source>
         <translation type="unfinished"></translation>
     </message>

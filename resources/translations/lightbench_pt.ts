@@ -4440,11 +4440,12 @@
     </message>
     <message>
         <location line="+2"/>
+        <location line="+98"/>
         <source>cannot write in %1: %2</source>
         <translation>não é possível escrever em %1: %2</translation>
     </message>
     <message>
-        <location line="+108"/>
+        <location line="+37"/>
         <source>no image to write</source>
         <translation>nenhuma imagem para escrever</translation>
     </message>
@@ -5522,7 +5523,7 @@
 <context>
     <name>lb::Submission</name>
     <message>
-        <location filename="../../app/common/submission.cpp" line="+70"/>
+        <location filename="../../app/common/submission.cpp" line="+72"/>
         <source>%1: a folder needs one NAME.vert and one NAME.frag (it has %2 and %3)</source>
         <translation>%1: uma pasta precisa de um NAME.vert e de um NAME.frag (tem %2 e %3)</translation>
     </message>

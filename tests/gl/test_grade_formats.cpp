@@ -304,6 +304,14 @@ private slots:
             << QStringList{kData + "/correct", "--exercise",
                            exerciseWith(QDir(m_dir.path()), "negative.json", "points", -100)}
             << "exercise.grading.points (not a number of points from 0 to 1000000";
+        // Issue 49: an empty --sheets wrote nothing and said nothing; /proc passed the check
+        // (root may write there) and then failed every sheet.
+        QTest::newRow("an empty --sheets")
+            << QStringList{kData + "/correct", "--exercise", kExercise, "--sheets", ""}
+            << "--sheets: needs a folder";
+        QTest::newRow("--sheets /proc")
+            << QStringList{kData + "/correct", "--exercise", kExercise, "--sheets", "/proc"}
+            << "--sheets: /proc/.lightbench-sheets: cannot write in /proc:";
     }
 
     void badInputIsNamed()

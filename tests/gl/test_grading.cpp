@@ -422,6 +422,7 @@ private slots:
         QTest::newRow("not an exercise") << "not an exercise";
         QTest::newRow("empty submission folder") << "empty folder";
         QTest::newRow("unreadable submission") << "fifo";
+        QTest::newRow("a FIFO lighting.frag in a folder") << "fifo in a folder";
     }
 
     void badInputIsNamed()
@@ -445,6 +446,15 @@ private slots:
             QVERIFY(QDir(m_dir.path()).mkpath("dave"));
             submissions << m_dir.filePath("dave");
             named = "dave: a folder needs one NAME.vert and one NAME.frag";
+        } else if (what == "fifo in a folder") { // it was "it has 1 and 0"
+            QVERIFY(QDir(m_dir.path()).mkpath("fay"));
+            QVERIFY(
+                QFile::copy(kData + "/correct/lighting.vert", m_dir.filePath("fay/lighting.vert")));
+            QCOMPARE(
+                mkfifo(QFile::encodeName(m_dir.filePath("fay/lighting.frag")).constData(), 0600),
+                0);
+            submissions << m_dir.filePath("fay");
+            named = "fay/lighting.frag: not a regular file";
         } else {
             QVERIFY(QFile::copy(kData + "/correct/lighting.vert", m_dir.filePath("erin.vert")));
             QCOMPARE(mkfifo(QFile::encodeName(m_dir.filePath("erin.frag")).constData(), 0600), 0);

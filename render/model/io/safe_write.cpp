@@ -186,7 +186,15 @@ QString leftInBytes(const QString &name, int maxBytes)
 
 QString unwritableTarget(const QString &path)
 {
-    return resolveTarget(path).error;
+    const Target t = resolveTarget(path);
+    if (!t.error.isEmpty())
+        return t.error;
+    const QString folder = QFileInfo(t.path).absolutePath();
+    if (const platform::FileError error = platform::fileCreationFails(platform::nativePath(folder)))
+        return QString("%1: %2").arg(echoedPath(path),
+                                     SafeWriteMessages::tr("cannot write in %1: %2")
+                                         .arg(echoedPath(folder), platform::errorText(error)));
+    return {};
 }
 
 QString writeFilesSafely(const std::vector<std::pair<QString, QByteArray>> &files)

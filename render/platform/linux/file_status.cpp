@@ -2,8 +2,12 @@
 
 #include "posix_file.h"
 
+#include <cerrno>
 #include <climits>
 #include <cstdlib>
+#include <string>
+
+#include <fcntl.h>
 
 #include <unistd.h>
 
@@ -58,6 +62,27 @@ FileError creatingFilesRefused(const std::filesystem::path &folder)
     // Writing a name in a folder takes write and search permission on it.
     if (::access(folder.c_str(), W_OK | X_OK) != 0)
         return errorFrom(errno);
+    return {};
+}
+
+FileError fileCreationFails(const std::filesystem::path &folder)
+{
+    // Permission is not all: root may "write" /proc and /sys, which take no files (--sheets
+    // /proc passed the permission check and then failed every sheet). An empty file made and
+    // removed at once says what the folder does.
+    for (int attempt = 0; attempt < 8; ++attempt) {
+        const std::filesystem::path probe =
+            folder / (".lightbench-probe-" + std::to_string(::getpid()) + "-" +
+                      std::to_string(std::rand() % 1000000));
+        const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
+        if (fd >= 0) {
+            ::close(fd);
+            ::unlink(probe.c_str());
+            return {};
+        }
+        if (errno != EEXIST)
+            return errorFrom(errno);
+    }
     return {};
 }
 

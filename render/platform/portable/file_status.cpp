@@ -2,6 +2,10 @@
 
 #include <QFileInfo>
 
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
 #include <system_error>
 
 // std::filesystem answers what lstat, stat, readlink and realpath answer, with the system's
@@ -101,6 +105,25 @@ FileError creatingFilesRefused(const fs::path &folder)
     if (QFileInfo(folder).isWritable())
         return {};
     return errorFrom(std::make_error_code(std::errc::permission_denied));
+}
+
+FileError fileCreationFails(const fs::path &folder)
+{
+    // C's "x" mode (C11; glibc, macOS and Microsoft's runtime have it): made new or not at all.
+    for (int attempt = 0; attempt < 8; ++attempt) {
+        const fs::path probe =
+            folder / (".lightbench-probe-" + std::to_string(std::rand() % 100000000));
+        errno = 0;
+        if (std::FILE *f = std::fopen(probe.string().c_str(), "wx")) {
+            std::fclose(f);
+            std::error_code ec;
+            fs::remove(probe, ec);
+            return {};
+        }
+        if (errno != EEXIST)
+            return errorFrom(std::error_code(errno ? errno : EACCES, std::generic_category()));
+    }
+    return {};
 }
 
 } // namespace lb::platform
