@@ -19,6 +19,7 @@
 #include <QElapsedTimer>
 #include <QEventLoop>
 #include <QFileInfo>
+#include <QLockFile>
 #include <QProcess>
 #include <QSet>
 #include <QThread>
@@ -166,6 +167,38 @@ int runGrade(const CommandLine &cl)
     // device or a folder in their place, or a folder that cannot take them, ends the batch.
     if (const QString error = outputsUnwritable(cl); !error.isEmpty())
         return batchError(error);
+    // Two batches writing one report (or one sheet folder) each rewrote it after every
+    // submission, and one's rows were lost with both exiting 0: while one runs, the other is
+    // refused. A lock whose batch is gone (killed) is taken over (QLockFile checks its pid).
+    std::vector<std::unique_ptr<QLockFile>> locks;
+    const auto lock = [&](const QString &option, const QString &target,
+                          const QString &lockPath) -> QString {
+        auto l = std::make_unique<QLockFile>(lockPath);
+        l->setStaleLockTime(0); // never by age: a class takes minutes
+        if (l->tryLock(0)) {
+            locks.push_back(std::move(l));
+            return {};
+        }
+        // A lock that cannot be made (a full disk) guards nothing, and stops nothing: the
+        // report's own write then says what is wrong, as it did.
+        if (l->error() != QLockFile::LockFailedError)
+            return {};
+        qint64 pid = 0;
+        QString host, app;
+        l->getLockInfo(&pid, &host, &app);
+        return QString("%1: %2 is being written by another batch (process %3); wait for it or "
+                       "choose another")
+            .arg(option, echoedPath(target), QString::number(pid));
+    };
+    if (!cl.reportPath.isEmpty() && cl.reportPath != "-")
+        if (const QString error = lock("--report", cl.reportPath, cl.reportPath + ".lock");
+            !error.isEmpty())
+            return batchError(error);
+    if (!cl.sheetsDir.isEmpty())
+        if (const QString error =
+                lock("--sheets", cl.sheetsDir, sheetListPath(cl.sheetsDir) + ".lock");
+            !error.isEmpty())
+            return batchError(error);
     // The sheet folder is to hold this run's sheets alone: the list names the last run's and
     // this run's while it goes on, and only a run that finishes removes the last run's it did
     // not write again (a faulty exercise found midway leaves them as they were). A list that

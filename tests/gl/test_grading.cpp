@@ -709,6 +709,34 @@ private slots:
                                    "difference 1/255, 100.0% of pixels within tolerance\n"));
     }
 
+    // Two batches writing one report (issue 49: both exited 0 and one's rows were lost): the
+    // second is refused while the first runs, and may write it once the first is gone.
+    void aSecondBatchOnTheSameReportIsRefused()
+    {
+        QTemporaryDir tmp;
+        const QDir dir(tmp.path());
+        const QString pidFile = dir.filePath("slow.pid"), starts = dir.filePath("starts");
+        const QString child = writeStandIn(dir.filePath("child.sh"), pidFile, starts);
+        const QString slow = correctCopy(dir, "slow_one"), amy = correctCopy(dir, "amy");
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.insert("LIGHTBENCH_GRADE_PROGRAM", child);
+        const QString report = dir.filePath("grades.csv");
+        QProcess first;
+        first.setProcessEnvironment(env);
+        first.start(LIGHTBENCH_EXE, {"--grade", slow, "--exercise", kExercise, "--report", report});
+        QTRY_VERIFY_WITH_TIMEOUT(QFileInfo::exists(pidFile), 30000); // it is grading
+        const Run second = run({"--grade", amy, "--exercise", kExercise, "--report", report}, env);
+        QCOMPARE(second.exitCode, 2);
+        QVERIFY2(second.err.contains("--report: ") &&
+                     second.err.contains("is being written by another batch (process"),
+                 second.err.constData());
+        first.terminate();
+        QVERIFY(first.waitForFinished(30000));
+        const Run third = run({"--grade", amy, "--exercise", kExercise, "--report", report}, env);
+        QVERIFY2(third.exitCode == 0, third.err.constData());
+        QVERIFY(!QFileInfo::exists(report + ".lock"));
+    }
+
     // One student's sheet that cannot be written (a FIFO in its place) fails that sheet, never
     // the class (issue 49): both are graded, the other's sheet is written, exit 1, the FIFO
     // stays a FIFO. Names as long as a file name may be (253 bytes; 80 CJK characters, 240
