@@ -1342,7 +1342,7 @@
         <translation>die Lektion</translation>
     </message>
     <message>
-        <location filename="../../render/model/scene/scene_file.cpp" line="+177"/>
+        <location filename="../../render/model/scene/scene_file.cpp" line="+185"/>
         <location line="+15"/>
         <source>a scene file</source>
         <translation>eine Szenendatei</translation>
@@ -4777,7 +4777,7 @@
 <context>
     <name>lb::SceneFile</name>
     <message>
-        <location filename="../../render/model/scene/scene_file.cpp" line="-153"/>
+        <location filename="../../render/model/scene/scene_file.cpp" line="-161"/>
         <source>not true or false; read as false</source>
         <translation>nicht true oder false; als false gelesen</translation>
     </message>
@@ -4793,7 +4793,12 @@
         <translation>%1: keine Szenendatei: Das JSON ist kein Objekt</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+7"/>
+        <source>%1: a lesson file, not a scene file (open it as a lesson)</source>
+        <translation>%1: eine Lektionsdatei, keine Szenendatei (als Lektion öffnen)</translation>
+    </message>
+    <message>
+        <location line="+15"/>
         <source>expected &quot;%1&quot;</source>
         <translation>erwartet: &quot;%1&quot;</translation>
     </message>

@@ -1342,7 +1342,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../render/model/scene/scene_file.cpp" line="+177"/>
+        <location filename="../../render/model/scene/scene_file.cpp" line="+185"/>
         <location line="+15"/>
         <source>a scene file</source>
         <translation type="unfinished"></translation>
@@ -4767,7 +4767,7 @@
 <context>
     <name>lb::SceneFile</name>
     <message>
-        <location filename="../../render/model/scene/scene_file.cpp" line="-153"/>
+        <location filename="../../render/model/scene/scene_file.cpp" line="-161"/>
         <source>not true or false; read as false</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4783,7 +4783,12 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+7"/>
+        <source>%1: a lesson file, not a scene file (open it as a lesson)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+15"/>
         <source>expected &quot;%1&quot;</source>
         <translation type="unfinished"></translation>
     </message>

@@ -1342,7 +1342,7 @@
         <translation>a lição</translation>
     </message>
     <message>
-        <location filename="../../render/model/scene/scene_file.cpp" line="+177"/>
+        <location filename="../../render/model/scene/scene_file.cpp" line="+185"/>
         <location line="+15"/>
         <source>a scene file</source>
         <translation>um ficheiro de cena</translation>
@@ -4777,7 +4777,7 @@
 <context>
     <name>lb::SceneFile</name>
     <message>
-        <location filename="../../render/model/scene/scene_file.cpp" line="-153"/>
+        <location filename="../../render/model/scene/scene_file.cpp" line="-161"/>
         <source>not true or false; read as false</source>
         <translation>não é true nem false; lido como false</translation>
     </message>
@@ -4793,7 +4793,12 @@
         <translation>%1: não é um ficheiro de cena: o JSON não é um objeto</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+7"/>
+        <source>%1: a lesson file, not a scene file (open it as a lesson)</source>
+        <translation>%1: um ficheiro de lição, não um ficheiro de cena (abra-o como lição)</translation>
+    </message>
+    <message>
+        <location line="+15"/>
         <source>expected &quot;%1&quot;</source>
         <translation>era esperado &quot;%1&quot;</translation>
     </message>

@@ -335,6 +335,17 @@ private slots:
         QVERIFY(read.ignored.join(' ').contains("program (needs vertex and fragment"));
     }
 
+    // A lesson where a scene is asked for (a lesson step naming a lesson file, --scene
+    // lesson.json): refused as a lesson, not drawn as the default scene with exit 0.
+    void aLessonIsNoScene()
+    {
+        const SceneFileRead read = parseSceneFile(
+            R"({"format": "lightbench-lesson", "version": 1, "steps": []})", QDir(), "l.json");
+        QVERIFY(!read.file);
+        QCOMPARE(read.error,
+                 QString("l.json: a lesson file, not a scene file (open it as a lesson)"));
+    }
+
     // A program over the 1 MiB a shader may have is refused as too long (it was "needs vertex
     // and fragment sources as strings", which they were).
     void aProgramTooLongIsSaidToBeTooLong()

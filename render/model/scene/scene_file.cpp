@@ -100,6 +100,14 @@ SceneFileRead parseSceneFile(const QByteArray &bytes, const QDir &dir, const QSt
             SceneFileMessages::tr("%1: not a scene file: the JSON is not an object").arg(name);
         return read;
     }
+    // A lesson where a scene is asked for (a step naming a lesson): read as a scene it drew
+    // the default scene with two lines of ignored fields and exit 0.
+    if (document.object()["format"] == QJsonValue("lightbench-lesson")) {
+        read.error =
+            SceneFileMessages::tr("%1: a lesson file, not a scene file (open it as a lesson)")
+                .arg(name);
+        return read;
+    }
     return parseSceneObject(document.object(), dir);
 }
 
