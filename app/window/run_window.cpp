@@ -13,6 +13,7 @@
 #include "settings_autosave.h"
 #include "settings_store.h"
 #include "shader_document.h"
+#include "stop_signals.h"
 #include "unsaved_work.h"
 #include "viewport.h"
 
@@ -122,6 +123,16 @@ int runWindow(int &argc, char **argv, const CommandLine &cl)
             window.close();
         });
     }
+    // A logout or `kill` (SIGTERM, SIGHUP) or Ctrl+C in the terminal is a quit with nobody to
+    // ask: the settings and the session are saved as at a close, unsaved work kept in the
+    // session (it comes back at the next start), the settings' scratch folder removed. It
+    // used to end the process where it stood: nothing saved, the scratch folder left in TMPDIR.
+    StopSignals stops;
+    QObject::connect(&stops, &StopSignals::stopRequested, &window, [&window](int signal) {
+        window.setUnsavedWorkAsker({});
+        window.close();
+        QCoreApplication::exit(StopSignals::exitCodeFor(signal));
+    });
     const int status = exitSaved(app.exec());
     // View > Language's restart: after the settings are saved, so the new one reads them.
     if (restartRequested() && !restartApplication()) {

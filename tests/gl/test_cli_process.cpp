@@ -232,6 +232,32 @@ private slots:
         QVERIFY2(step.err.contains("L%2.json (step 1)"), step.err.constData());
     }
 
+    // The window ended by SIGTERM (a logout, `kill`) quits as a close with nobody to ask
+    // (issue 49): the settings are saved and the settings' scratch folder is gone; it used to
+    // end where it stood, saving nothing and leaving lightbench-settings-XXXXXX in TMPDIR.
+    void aWindowEndedBySigtermSavesAndCleansUp()
+    {
+        QTemporaryDir home, tmp;
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.insert("HOME", home.path());
+        env.insert("XDG_CONFIG_HOME", home.filePath(".config"));
+        env.insert("TMPDIR", tmp.path());
+        QProcess window;
+        window.setProcessEnvironment(env);
+        window.start(LIGHTBENCH_EXE, {});
+        const QDir scratch(tmp.path());
+        QTRY_VERIFY_WITH_TIMEOUT(
+            !scratch.entryList({"lightbench-settings-*"}, QDir::Dirs).isEmpty(), 30000);
+        QTest::qWait(2000); // shown, its first frame drawn
+        window.terminate(); // SIGTERM
+        QVERIFY(window.waitForFinished(30000));
+        QCOMPARE(window.exitStatus(), QProcess::NormalExit);
+        QCOMPARE(window.exitCode(), 143);
+        QVERIFY2(scratch.entryList({"lightbench-settings-*"}, QDir::Dirs).isEmpty(),
+                 qPrintable(scratch.entryList(QDir::AllEntries | QDir::NoDotAndDotDot).join(", ")));
+        QVERIFY(QFileInfo::exists(home.filePath(".config/lightbench/lightbench.conf")));
+    }
+
     void savedSceneRendersTheSameFrame()
     {
         // Options -> --save-scene -> --scene: the same picture, the program included.
