@@ -27,9 +27,9 @@ QString writeStandardOutput(const QByteArray &bytes)
         return {};
     const int error = errno;
     std::clearerr(stdout);
-    return error ? QStringLiteral("standard output: could not be written (%1)")
+    return error ? QStringLiteral("could not write to standard output (%1)")
                        .arg(QString::fromLocal8Bit(std::strerror(error)))
-                 : QStringLiteral("standard output: could not be written");
+                 : QStringLiteral("could not write to standard output");
 }
 
 } // namespace lb

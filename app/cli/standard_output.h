@@ -13,7 +13,7 @@ namespace lb {
 void setStandardOutputWasClosed(bool closed);
 
 // `bytes` on standard output, flushed; empty when they all got there, else the reason:
-// "standard output is closed" or "standard output: could not be written (No space left on
+// "standard output is closed" or "could not write to standard output (No space left on
 // device)".
 QString writeStandardOutput(const QByteArray &bytes);
 

@@ -190,7 +190,7 @@ private slots:
         const QStringList probe{"--probe", "50,50", "--size", "100x100"};
         QTest::newRow("probe, closed") << ">&-" << probe << "standard output is closed";
         QTest::newRow("probe, full")
-            << ">/dev/full" << probe << "standard output: could not be written";
+            << ">/dev/full" << probe << "could not write to standard output";
         QTest::newRow("help, closed")
             << ">&-" << QStringList{"--help"} << "standard output is closed";
         QTest::newRow("bench frames, closed")

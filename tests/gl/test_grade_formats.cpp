@@ -457,7 +457,7 @@ private slots:
         QTest::newRow("closed") << ">&-"
                                 << "standard output is closed";
         QTest::newRow("full") << ">/dev/full"
-                              << "standard output: could not be written";
+                              << "could not write to standard output";
     }
 
     void aReportOnAClosedOrFullStandardOutputFails()
