@@ -15,6 +15,9 @@ namespace lb::platform {
 // there went into the X connection (the batch hung). Call first in main. The portable layer
 // can neither tell nor reopen a closed descriptor and returns 0.
 unsigned reopenClosedStandardStreams();
+// Whether reopenClosedStandardStreams() can (false in the portable layer): the tests of a closed
+// stdout skip where it cannot.
+bool canReopenStandardStreams();
 
 // Standard input and output carry bytes as they are, for the helpers' binary messages:
 // nothing to do on Linux (and macOS); Windows' C runtime would turn "\n" into "\r\n".

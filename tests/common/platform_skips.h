@@ -3,6 +3,7 @@
 // with the reason, in the portable layer's build (`scripts/test --portable`).
 
 #include "process_bounds.h"
+#include "stream_output.h"
 
 #include <QTest>
 
@@ -10,4 +11,11 @@
     do {                                                                                           \
         if (!lb::platform::canBoundMemory())                                                       \
             QSKIP("this build's platform layer cannot bound a process's memory");                  \
+    } while (false)
+
+// A closed stdout can be told and reopened on /dev/null (render/platform/stream_output.h).
+#define LB_SKIP_WITHOUT_STANDARD_STREAMS()                                                         \
+    do {                                                                                           \
+        if (!lb::platform::canReopenStandardStreams())                                             \
+            QSKIP("this build's platform layer cannot tell a closed standard output");             \
     } while (false)

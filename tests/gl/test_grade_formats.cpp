@@ -9,6 +9,7 @@
 // submissions, coderunner with a missing exercise and with two submissions, an exercise whose
 // points list is one short or negative, a sheet list naming "../outside.png", a text file and
 // a symbolic link.
+#include "platform_skips.h"
 #include "program_run.h"
 
 #include "csv_rows.h"
@@ -464,6 +465,8 @@ private slots:
     {
         QFETCH(QString, redirect);
         QFETCH(QString, said);
+        if (redirect == ">&-")
+            LB_SKIP_WITHOUT_STANDARD_STREAMS();
         const Run r = runProgram("/bin/sh",
                                  {"-c", "exec \"$0\" \"$@\" " + redirect, LIGHTBENCH_EXE, "--grade",
                                   kData + "/correct", "--exercise", kExercise, "--report", "-"},

@@ -14,6 +14,11 @@ struct StreamOutput::Channel
 
 void useBinaryStandardStreams() {} // POSIX streams are binary
 
+bool canReopenStandardStreams()
+{
+    return true;
+}
+
 unsigned reopenClosedStandardStreams()
 {
     unsigned closed = 0;

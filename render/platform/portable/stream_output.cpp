@@ -26,6 +26,11 @@ void useBinaryStandardStreams()
 #endif
 }
 
+bool canReopenStandardStreams()
+{
+    return false;
+}
+
 unsigned reopenClosedStandardStreams()
 {
     return 0; // standard C++ cannot tell a closed descriptor
