@@ -10,7 +10,7 @@
 #include "run_window.h"
 #include "safe_write.h"
 #include "standard_output.h"
-#include "stream_output.h"
+#include "standard_streams.h"
 #include "webgl1_translation.h"
 
 #include <QCoreApplication>

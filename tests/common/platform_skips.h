@@ -3,7 +3,7 @@
 // with the reason, in the portable layer's build (`scripts/test --portable`).
 
 #include "process_bounds.h"
-#include "stream_output.h"
+#include "standard_streams.h"
 
 #include <QTest>
 

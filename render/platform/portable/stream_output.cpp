@@ -26,16 +26,6 @@ void useBinaryStandardStreams()
 #endif
 }
 
-bool canReopenStandardStreams()
-{
-    return false;
-}
-
-unsigned reopenClosedStandardStreams()
-{
-    return 0; // standard C++ cannot tell a closed descriptor
-}
-
 StreamOutput::StreamOutput() : m_channel(new Channel)
 {
     useBinaryStandardStreams();
