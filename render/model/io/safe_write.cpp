@@ -37,7 +37,9 @@ struct Target
     QString error;            // "GIVEN: why"
 };
 
-Target resolveTarget(const QString &given)
+// `tryCreating`: a file is also made (and removed) in the folder, for the checks before a long
+// run, where permission alone misleads (root "may" write /proc).
+Target resolveTarget(const QString &given, bool tryCreating = false)
 {
     using platform::FileError;
     using platform::FileKind;
@@ -93,7 +95,10 @@ Target resolveTarget(const QString &given)
                 : QString("%1: %2").arg(echoedPath(folder), platform::errorText(st.error)));
     if (st.kind != FileKind::Folder)
         return fail(SafeWriteMessages::tr("%1 is not a folder").arg(echoedPath(folder)));
-    if (const FileError refused = platform::creatingFilesRefused(platform::nativePath(folder)))
+    FileError refused = platform::creatingFilesRefused(platform::nativePath(folder));
+    if (!refused && tryCreating)
+        refused = platform::fileCreationFails(platform::nativePath(folder));
+    if (refused)
         return fail(SafeWriteMessages::tr("cannot write in %1: %2")
                         .arg(echoedPath(folder), platform::errorText(refused)));
     t.path = path;
@@ -186,15 +191,7 @@ QString leftInBytes(const QString &name, int maxBytes)
 
 QString unwritableTarget(const QString &path)
 {
-    const Target t = resolveTarget(path);
-    if (!t.error.isEmpty())
-        return t.error;
-    const QString folder = QFileInfo(t.path).absolutePath();
-    if (const platform::FileError error = platform::fileCreationFails(platform::nativePath(folder)))
-        return QString("%1: %2").arg(echoedPath(path),
-                                     SafeWriteMessages::tr("cannot write in %1: %2")
-                                         .arg(echoedPath(folder), platform::errorText(error)));
-    return {};
+    return resolveTarget(path, true).error;
 }
 
 QString writeFilesSafely(const std::vector<std::pair<QString, QByteArray>> &files)

@@ -23,7 +23,8 @@
 
 namespace lb {
 
-// Why `path` may not be written ("PATH: why"); empty when it may.
+// Why `path` may not be written ("PATH: why"); empty when it may. It also makes and removes an
+// empty file in the folder: permission alone passes /proc for root.
 QString unwritableTarget(const QString &path);
 // Returns empty, or "PATH: why".
 QString writeFileSafely(const QString &path, const QByteArray &bytes);
