@@ -76,6 +76,31 @@ QString outputsUnwritable(const CommandLine &cl)
     return {};
 }
 
+// Locks `lockPath` for this batch's output `target` (into `locks`, held until they go); the
+// reason when another batch holds it. Two batches writing one report each rewrote it after
+// every submission, and one's rows were lost with both exiting 0. A lock whose batch is gone
+// (killed) is taken over (QLockFile checks its pid; never by age: a class takes minutes).
+QString lockOutput(const QString &option, const QString &target, const QString &lockPath,
+                   std::vector<std::unique_ptr<QLockFile>> &locks)
+{
+    auto l = std::make_unique<QLockFile>(lockPath);
+    l->setStaleLockTime(0);
+    if (l->tryLock(0)) {
+        locks.push_back(std::move(l));
+        return {};
+    }
+    // A lock that cannot be made (a full disk) guards nothing, and stops nothing: the
+    // report's own write then says what is wrong, as it did.
+    if (l->error() != QLockFile::LockFailedError)
+        return {};
+    qint64 pid = 0;
+    QString host, app;
+    l->getLockInfo(&pid, &host, &app);
+    return QString("%1: %2 is being written by another batch (process %3); wait for it or "
+                   "choose another")
+        .arg(option, echoedPath(target), QString::number(pid));
+}
+
 QString signalName(int signal)
 {
     switch (signal) {
@@ -167,28 +192,11 @@ int runGrade(const CommandLine &cl)
     // device or a folder in their place, or a folder that cannot take them, ends the batch.
     if (const QString error = outputsUnwritable(cl); !error.isEmpty())
         return batchError(error);
-    // Two batches writing one report (or one sheet folder) each rewrote it after every
-    // submission, and one's rows were lost with both exiting 0: while one runs, the other is
-    // refused. A lock whose batch is gone (killed) is taken over (QLockFile checks its pid).
+    // Two batches writing one report (or one sheet folder) would lose one's rows: while one
+    // runs, the other is refused.
     std::vector<std::unique_ptr<QLockFile>> locks;
-    const auto lock = [&](const QString &option, const QString &target,
-                          const QString &lockPath) -> QString {
-        auto l = std::make_unique<QLockFile>(lockPath);
-        l->setStaleLockTime(0); // never by age: a class takes minutes
-        if (l->tryLock(0)) {
-            locks.push_back(std::move(l));
-            return {};
-        }
-        // A lock that cannot be made (a full disk) guards nothing, and stops nothing: the
-        // report's own write then says what is wrong, as it did.
-        if (l->error() != QLockFile::LockFailedError)
-            return {};
-        qint64 pid = 0;
-        QString host, app;
-        l->getLockInfo(&pid, &host, &app);
-        return QString("%1: %2 is being written by another batch (process %3); wait for it or "
-                       "choose another")
-            .arg(option, echoedPath(target), QString::number(pid));
+    const auto lock = [&](const QString &option, const QString &target, const QString &lockPath) {
+        return lockOutput(option, target, lockPath, locks);
     };
     if (!cl.reportPath.isEmpty() && cl.reportPath != "-")
         if (const QString error = lock("--report", cl.reportPath, cl.reportPath + ".lock");
