@@ -159,37 +159,67 @@ struct VertexKeyHash
     }
 };
 
-// The common smooth mesh, quickly and with a third of the memory: every position has one
+// A triangle's unit normal (0 for a sliver whose area is rounding noise: it has no direction
+// worth averaging) and, when `angles` is given, the angle at each of its corners. One function
+// for both paths below, so that they add the same numbers.
+glm::vec3 triangleGeometry(const glm::vec3 &a, const glm::vec3 &b, const glm::vec3 &c,
+                           float *angles = nullptr)
+{
+    const glm::vec3 ab = b - a, bc = c - b, ca = a - c;
+    const glm::vec3 n = glm::cross(ab, c - a);
+    const float length = glm::length(n);
+    const float edge = std::max({glm::dot(ab, ab), glm::dot(bc, bc), glm::dot(ca, ca)});
+    if (angles) {
+        const float lab = glm::length(ab), lbc = glm::length(bc), lca = glm::length(ca);
+        angles[0] = cornerAngle(ab, lab, -ca, lca);
+        angles[1] = cornerAngle(bc, lbc, -ab, lab);
+        angles[2] = cornerAngle(ca, lca, -bc, lbc);
+    }
+    return length > 1e-6f * edge && std::isfinite(length) ? n / length : glm::vec3(0.0f);
+}
+
+// The common smooth mesh, quickly and with a fifth of the memory: every position has one
 // vertex, used by some triangle, and every position takes the fast path of the general loop
 // in withGeneratedNormals (its faces lie within half the crease of their mean). Then each
 // vertex keeps its place and gets the sum of its corners, added in the same order as the
 // general loop adds them: the same mesh, bit for bit, without grouping the corners (positions
-// of over 64 corners get the exact sum, where the general loop bins them). Returns the
-// normals, one a vertex, or nothing for any other mesh.
-std::optional<std::vector<glm::vec3>>
-withoutSplits(const Mesh &mesh, const std::vector<std::uint32_t> &position,
-              const std::vector<glm::vec3> &faceNormal, const std::vector<float> &angle,
-              float threshold, float halfThreshold, std::size_t parts)
+// of over 64 corners get the exact sum, where the general loop bins them). The triangles'
+// normals and angles are computed where they are added, never stored (on a 10M-triangle scan
+// the two arrays were 240 MB, written and read back: half of this function's time). Returns
+// the normals, one a vertex, or nothing for any other mesh.
+std::optional<std::vector<glm::vec3>> withoutSplits(const Mesh &mesh,
+                                                    const std::vector<std::uint32_t> &position,
+                                                    std::size_t cornerCount, float threshold,
+                                                    float halfThreshold, std::size_t parts)
 {
     const std::size_t vertexCount = mesh.vertexCount();
-    const std::size_t cornerCount = angle.size();
+    const std::size_t triangleCount = cornerCount / 3;
     if (halfThreshold >= 1.0f) // flat or nearly: only exactly coplanar corners would fit
         return std::nullopt;
     for (std::size_t v = 0; v < vertexCount; ++v)
         if (position[v] != v)
             return std::nullopt;
+    const std::uint32_t *index = mesh.indices.data();
+    const glm::vec3 *p = mesh.positions.data();
     std::vector<glm::vec3> normals(vertexCount, glm::vec3(0.0f));
     std::atomic_bool fits{true};
     // Each part sums the corners of its own vertices, in corner order (no two parts write
-    // the same vertex).
+    // the same vertex); a triangle with corners in two parts is computed by both.
     parallelFor(vertexCount, parts, [&](std::size_t first, std::size_t last, std::size_t) {
-        std::vector<std::uint8_t> used(last - first, 0);
-        for (std::size_t c = 0; c < cornerCount; ++c) {
-            const std::uint32_t v = mesh.indices[c];
-            if (v >= first && v < last) {
-                normals[v] += angle[c] * faceNormal[c / 3];
-                used[v - first] = 1;
-            }
+        const std::uint32_t span = std::uint32_t(last - first);
+        auto mine = [&](std::uint32_t v) { return v - std::uint32_t(first) < span; };
+        std::vector<std::uint8_t> used(span, 0);
+        for (std::size_t t = 0; t < triangleCount; ++t) {
+            const std::uint32_t *corner = index + 3 * t;
+            if (!mine(corner[0]) && !mine(corner[1]) && !mine(corner[2]))
+                continue;
+            float angle[3];
+            const glm::vec3 n = triangleGeometry(p[corner[0]], p[corner[1]], p[corner[2]], angle);
+            for (int k = 0; k < 3; ++k)
+                if (mine(corner[k])) {
+                    normals[corner[k]] += angle[k] * n;
+                    used[corner[k] - first] = 1;
+                }
         }
         for (std::size_t v = first; v < last; ++v) {
             if (!used[v - first] || (threshold > -1.0f && normals[v] == glm::vec3(0.0f)))
@@ -200,11 +230,15 @@ withoutSplits(const Mesh &mesh, const std::vector<std::uint32_t> &position,
     if (!fits)
         return std::nullopt;
     if (threshold > -1.0f)
-        parallelFor(cornerCount, parts, [&](std::size_t first, std::size_t last, std::size_t) {
-            for (std::size_t c = first; c < last && fits.load(std::memory_order_relaxed); ++c) {
-                const glm::vec3 &n = faceNormal[c / 3];
-                if (n != glm::vec3(0.0f) && glm::dot(n, normals[mesh.indices[c]]) < halfThreshold)
-                    fits = false;
+        parallelFor(triangleCount, parts, [&](std::size_t first, std::size_t last, std::size_t) {
+            for (std::size_t t = first; t < last && fits.load(std::memory_order_relaxed); ++t) {
+                const std::uint32_t *corner = index + 3 * t;
+                const glm::vec3 n = triangleGeometry(p[corner[0]], p[corner[1]], p[corner[2]]);
+                if (n == glm::vec3(0.0f))
+                    continue;
+                for (int k = 0; k < 3; ++k)
+                    if (glm::dot(n, normals[corner[k]]) < halfThreshold)
+                        fits = false;
             }
         });
     if (!fits)
@@ -242,47 +276,32 @@ std::optional<Mesh> withGeneratedNormals(const Mesh &mesh, float creaseDegrees,
         triangleCount < 50'000 ? 1
                                : std::clamp<std::size_t>(std::thread::hardware_concurrency(), 1, 8);
 
-    // Unit face normals and each corner's angle.
-    std::vector<glm::vec3> faceNormal(triangleCount);
-    std::vector<float> angle(cornerCount);
-    parallelFor(triangleCount, parts, [&](std::size_t first, std::size_t last, std::size_t) {
-        for (std::size_t t = first; t < last; ++t) {
-            const glm::vec3 &a = mesh.positions[mesh.indices[3 * t]];
-            const glm::vec3 &b = mesh.positions[mesh.indices[3 * t + 1]];
-            const glm::vec3 &c = mesh.positions[mesh.indices[3 * t + 2]];
-            const glm::vec3 n = glm::cross(b - a, c - a);
-            const float length = glm::length(n);
-            // A sliver whose area is rounding noise has no direction worth averaging.
-            const float edge =
-                std::max({glm::dot(b - a, b - a), glm::dot(c - b, c - b), glm::dot(a - c, a - c)});
-            faceNormal[t] =
-                length > 1e-6f * edge && std::isfinite(length) ? n / length : glm::vec3(0.0f);
-            const glm::vec3 ab = b - a, bc = c - b, ca = a - c;
-            const float lab = glm::length(ab), lbc = glm::length(bc), lca = glm::length(ca);
-            angle[3 * t] = cornerAngle(ab, lab, -ca, lca);
-            angle[3 * t + 1] = cornerAngle(bc, lbc, -ab, lab);
-            angle[3 * t + 2] = cornerAngle(ca, lca, -bc, lbc);
-        }
-    });
-    if (cancelled())
-        return std::nullopt;
-
     // A small tolerance keeps coplanar triangles together at 0 degrees despite rounding.
     const float threshold = std::cos(glm::radians(std::clamp(creaseDegrees, 0.0f, 180.0f))) - 1e-5f;
     const float halfThreshold = halfCreaseCosine(creaseDegrees);
     std::vector<std::uint32_t> ownWeld; // unless the caller welded them already
     const std::vector<std::uint32_t> &position = givenOrOwnWeld(mesh.positions, weld, ownWeld);
+    if (cancelled())
+        return std::nullopt;
     if (std::optional<std::vector<glm::vec3>> smooth =
-            withoutSplits(mesh, position, faceNormal, angle, threshold, halfThreshold, parts)) {
+            withoutSplits(mesh, position, cornerCount, threshold, halfThreshold, parts)) {
         if (cancelled())
             return std::nullopt;
-        // The face normals, the angles and the welding (a third of a big mesh's peak) go
-        // before the mesh is copied with its normals.
-        std::vector<glm::vec3>().swap(faceNormal);
-        std::vector<float>().swap(angle);
-        std::vector<std::uint32_t>().swap(ownWeld);
+        std::vector<std::uint32_t>().swap(ownWeld); // before the mesh is copied with its normals
         return withNormals(mesh, std::move(*smooth), cornerCount);
     }
+    if (cancelled())
+        return std::nullopt;
+
+    // Unit face normals and each corner's angle.
+    std::vector<glm::vec3> faceNormal(triangleCount);
+    std::vector<float> angle(cornerCount);
+    parallelFor(triangleCount, parts, [&](std::size_t first, std::size_t last, std::size_t) {
+        for (std::size_t t = first; t < last; ++t)
+            faceNormal[t] = triangleGeometry(
+                mesh.positions[mesh.indices[3 * t]], mesh.positions[mesh.indices[3 * t + 1]],
+                mesh.positions[mesh.indices[3 * t + 2]], &angle[3 * t]);
+    });
     if (cancelled())
         return std::nullopt;
 
