@@ -87,9 +87,16 @@ void LessonActions::restoreSession()
         std::clamp(m_settings.value(kStepKey, 1).toInt() - 1, 0, int(m_lesson.steps.size()) - 1);
     m_modified = false;
     // The scene the session kept is this step as the class left it (Reset Step: as authored).
-    m_shown = m_lesson.steps[std::size_t(m_current)].error.isEmpty();
-    if (m_shown)
+    const LessonStep &step = m_lesson.steps[std::size_t(m_current)];
+    m_shown = step.error.isEmpty();
+    if (m_shown) {
+        // An exercise step comes back whole: the student's edit with the step's exercise (the
+        // session keeps the scene and program, not the exercise: without it the Exercise tab
+        // was gone and Check My Work greyed until Reset Step threw the edit away).
+        if (step.scene.exercise)
+            m_window->sceneActions()->restoreExercise(step.scene);
         m_working[std::size_t(m_current)] = currentView();
+    }
     setOpen(true);
     showStep();
     emit changed();
@@ -356,11 +363,10 @@ void LessonActions::pointAtStep()
     const LessonStep &step = m_lesson.steps[std::size_t(m_current)];
     QTimer::singleShot(0, this, [this, panel = step.panel, highlight = step.highlight] {
         for (const QString &name : {panel, lessonHighlightPanel(highlight)})
-            if (QDockWidget *dock = lessonPanelDock(*m_window, name)) {
-                dock->show();
-                dock->raise();
-            }
-        if (!highlight.isEmpty()) // its controls have their places once the dock is up
+            m_window->bringForward(lessonPanelDock(*m_window, name));
+        // Its controls have their places once the dock is up; none while the panels wait
+        // behind F6 in presentation mode.
+        if (!highlight.isEmpty() && !m_window->panelsWaitBehindF6())
             QTimer::singleShot(0, this, [this, highlight] {
                 ControlHighlight::frame(lessonHighlightControls(*m_window, highlight));
             });

@@ -316,6 +316,13 @@ void SceneActions::setDocument(const QString &origin)
     m_settings.setValue(kCurrentSceneKey, origin);
 }
 
+void SceneActions::restoreExercise(const SceneFile &file)
+{
+    m_exercise = file.exercise;
+    m_exerciseScene = file.scene;
+    emit exerciseChanged();
+}
+
 void SceneActions::forgetFile()
 {
     setDocument({});

@@ -89,6 +89,10 @@ public:
     // The exercise's scene as its file has it: the base of its cases, whatever the student
     // changed since.
     const Scene &exerciseScene() const { return m_exerciseScene; }
+    // The exercise of `file` (and its scene, the base of its cases) without its scene or
+    // program: the session's scene and program are the student's, kept from the last
+    // session, and a lesson's step saves no exercise of its own (LessonActions::restoreSession).
+    void restoreExercise(const SceneFile &file);
 
 signals:
     void sceneOpened(const QString &origin); // apply()'s origin: empty for a lesson's step

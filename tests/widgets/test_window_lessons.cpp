@@ -148,6 +148,49 @@ private slots:
         QVERIFY(!m_window->unsavedWork().any());
     }
 
+    // An exercise step of the shipped exercise sheet, edited, comes back whole in the next
+    // session: the edit, the Exercise tab and Check My Work (F9); before, the tab was gone and
+    // F9 greyed until Reset Step threw the edit away (issue 49, item 12).
+    void anExerciseStepComesBackWhole()
+    {
+        m_settings->setValue(window_settings::kAnimateLessonsKey, false);
+        QVERIFY(lessons()->open(":/lessons/exercise_sheet.json"));
+        int exerciseStep = -1;
+        for (int i = 0; i < int(lessons()->lesson().steps.size()) && exerciseStep < 0; ++i)
+            if (lessons()->lesson().steps[std::size_t(i)].scene.exercise)
+                exerciseStep = i;
+        QVERIFY(exerciseStep > 0);
+        QVERIFY(lessons()->goTo(exerciseStep));
+        QTRY_VERIFY(m_window->exerciseDock()->isVisible());
+        auto checkAction = [this] {
+            for (QAction *a : m_window->findChildren<QAction *>())
+                if (a->text() == "Chec&k My Work")
+                    return a;
+            return static_cast<QAction *>(nullptr);
+        };
+        QVERIFY(checkAction() && checkAction()->isEnabled());
+        ShaderEditor *editor = m_window->editorPanel()->editor(ShaderStage::Fragment);
+        editor->setText(editor->text() + "\n// the student's answer\n");
+        QCoreApplication::processEvents();
+
+        m_window->close(); // saves the session
+        m_window = std::make_unique<MainWindow>(*m_settings);
+        m_window->show();
+        QVERIFY(lessons()->isOpen());
+        QCOMPARE(lessons()->currentStep(), exerciseStep);
+        editor = m_window->editorPanel()->editor(ShaderStage::Fragment);
+        QVERIFY(editor->text().contains("the student's answer"));
+        QTRY_VERIFY(m_window->exerciseDock()->isVisible());
+        QVERIFY(m_window->sceneActions()->exercise().has_value());
+        QVERIFY(checkAction() && checkAction()->isEnabled());
+        // Away and back: the working copy keeps the exercise too.
+        QVERIFY(lessons()->goTo(exerciseStep - 1));
+        QVERIFY(lessons()->goTo(exerciseStep));
+        QVERIFY(editor->text().contains("the student's answer"));
+        QVERIFY(m_window->sceneActions()->exercise().has_value());
+        QVERIFY(checkAction()->isEnabled());
+    }
+
     // The camera and the light glide to the step's places; the scene is the step's after.
     void stepsGlide()
     {
