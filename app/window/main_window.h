@@ -13,6 +13,7 @@
 #include "window_layout.h"
 
 #include <QMainWindow>
+#include <QPointer>
 #include <QStringList>
 
 #include <optional>
@@ -103,6 +104,12 @@ public:
     // keys, main_window_presentation.cpp).
     void setPresentationPanels(bool shown);
     bool presentationPanelsShown() const;
+    // Whether presentation mode keeps the panels behind F6 now: the view has the screen.
+    bool panelsWaitBehindF6() const { return m_presentation && !presentationPanelsShown(); }
+    // Shows `dock` in front (a lesson step's panel, the Exercise panel as an exercise opens);
+    // while the panels wait behind F6 it stays there, and is the one in front when F6 shows
+    // them: a step never takes the view's screen on its own (issue 49).
+    void bringForward(QDockWidget *dock);
     ScreenBlank *screenBlank() const { return m_blank; }
     // The UI scale of the current mode (1.0 to 2.5), kept per mode in the settings.
     void setUiScale(double scale);
@@ -226,6 +233,7 @@ private:
     QRect m_available; // the screen area the window was fitted to
     QAction *m_presentationAction = nullptr;
     QActionGroup *m_scaleGroup = nullptr;
+    QPointer<QDockWidget> m_forwardOnF6;    // bringForward()'s dock, while the panels wait
     QAction *m_panelsAction = nullptr;      // F6: the panels shown in presentation mode
     QAction *m_fadedArrowsAction = nullptr; // the probe's arrows faded over the surface
     ScreenBlank *m_blank = nullptr;

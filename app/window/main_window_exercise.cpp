@@ -113,9 +113,10 @@ void MainWindow::exerciseChanged()
     m_viewport->setDifferenceTolerance(exercise ? exercise->grading.tolerance : 2);
     if (m_checkAction)
         m_checkAction->setEnabled(exercise && exercise->unread.isUndefined());
-    m_exerciseDock->setVisible(exercise.has_value());
+    // In presentation mode with the panels behind F6 the Exercise panel waits there too.
+    m_exerciseDock->setVisible(exercise.has_value() && !panelsWaitBehindF6());
     if (exercise) // the task is the first thing to read (once its tab exists again)
-        QTimer::singleShot(0, m_exerciseDock, [dock = m_exerciseDock] { dock->raise(); });
+        QTimer::singleShot(0, m_exerciseDock, [this] { bringForward(m_exerciseDock); });
     if (m_presentation) // a tab more or less: the names' font is measured again
         QTimer::singleShot(0, this, &MainWindow::styleDockTabs);
     applySideB();

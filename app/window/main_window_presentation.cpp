@@ -41,8 +41,10 @@ void MainWindow::addPresentationActions(QMenu *view)
     m_presentationAction =
         view->addAction(tr("&Presentation Mode"), this, [this](bool on) { setPresentation(on); });
     m_presentationAction->setCheckable(true);
-    // F5: a clicker's start button; Esc (escapePressed) is its other half.
-    m_presentationAction->setShortcuts({QKeySequence(tr("F11")), QKeySequence(tr("F5"))});
+    // F5: a clicker's start button; Esc (escapePressed) is its other half. Shift+F5 is
+    // PowerPoint's "from the current slide": here every start is from the current step.
+    m_presentationAction->setShortcuts(
+        {QKeySequence(tr("F11")), QKeySequence(tr("F5")), QKeySequence(tr("Shift+F5"))});
     m_presentationAction->setToolTip(
         tr("Full screen, the presentation UI scale, the view large (F6: the panels)"));
 
@@ -96,6 +98,18 @@ bool MainWindow::presentationPanelsShown() const
     return m_panelsAction && m_panelsAction->isChecked();
 }
 
+void MainWindow::bringForward(QDockWidget *dock)
+{
+    if (!dock)
+        return;
+    if (panelsWaitBehindF6()) {
+        m_forwardOnF6 = dock;
+        return;
+    }
+    dock->show();
+    dock->raise();
+}
+
 void MainWindow::setPresentationPanels(bool shown)
 {
     if (m_panelsAction->isChecked() != shown)
@@ -122,6 +136,10 @@ void MainWindow::setPresentationPanels(bool shown)
                 .arg(m_editor->minimumSizeHint().width()));
     applyDockWidths();
     QTimer::singleShot(0, this, &MainWindow::styleDockTabs); // the tab bars made for them now
+    if (QDockWidget *forward = m_forwardOnF6.data()) {       // once its tab exists again
+        m_forwardOnF6.clear();
+        QTimer::singleShot(0, forward, [forward] { forward->raise(); });
+    }
 }
 
 QFont MainWindow::presentationTabFont(double share) const

@@ -3,7 +3,7 @@
 // the keys that moved away from them, the texts over the view growing with the UI scale, the
 // view keeping the screen at 200% on a 1024x768 or 1280x720 projector, and the probe's names
 // kept apart and gone with the view they belong to.
-#include "window_fixture.h"
+#include "lesson_fixture.h"
 
 #include "compare.h"
 #include "difference_scale_labels.h"
@@ -333,6 +333,51 @@ private slots:
             }
         QVERIFY2(fadedOff > 0 && fadedOff * 2 < fullOff,
                  qPrintable(QString("faded %1, full %2").arg(fadedOff).arg(fullOff)));
+    }
+
+    // In presentation mode a lesson's step that names a panel keeps the view whole: the panel
+    // waits behind F6 and is the one in front when F6 shows them; F6 hides them again, also
+    // for the next step; View > Show the Panels says what is shown. Shift+F5 (PowerPoint's
+    // "from the current slide") starts presenting too (issue 49, items 13 and 19).
+    void lessonStepsKeepTheScreen()
+    {
+        m_settings->setValue(window_settings::kAnimateLessonsKey, false);
+        const QString path = m_dir.filePath("lesson.json");
+        QVERIFY(writeLessonFile(path, fourSteps()).isEmpty());
+        QVERIFY(m_window->lessonActions()->open(path));
+        settle();
+        key(Qt::Key_F5, Qt::ShiftModifier);
+        QVERIFY(m_window->isPresentation());
+        presentAt(QSize(1024, 768), 2.0);
+        QVERIFY(!m_window->presentationPanelsShown());
+        const double whole = viewShare();
+        qInfo("presenting: view %.3f", whole);
+        QVERIFY(whole >= 0.9);
+        auto shownPanels = [this] {
+            int shown = 0;
+            for (QDockWidget *dock : m_window->panelDocks())
+                shown += dock->isVisible();
+            return shown + int(m_window->editorDock()->isVisible());
+        };
+        QDockWidget *material = m_window->findChild<QDockWidget *>("materialDock");
+        QVERIFY(material);
+        key(Qt::Key_PageDown); // step 2 names the Material panel and its shininess
+        QCOMPARE(m_window->lessonActions()->currentStep(), 1);
+        QCOMPARE(shownPanels(), 0);
+        QCOMPARE(viewShare(), whole);
+        key(Qt::Key_F6);
+        QVERIFY(m_window->presentationPanelsShown());
+        QTRY_VERIFY(material->isVisible() && !material->visibleRegion().isEmpty());
+        key(Qt::Key_F6);
+        QVERIFY(!m_window->presentationPanelsShown());
+        QCOMPARE(shownPanels(), 0);
+        key(Qt::Key_PageUp);
+        key(Qt::Key_PageDown);
+        QCOMPARE(m_window->lessonActions()->currentStep(), 1);
+        QCOMPARE(shownPanels(), 0);
+        QCOMPARE(viewShare(), whole);
+        key(Qt::Key_Escape);
+        QVERIFY(!m_window->isPresentation());
     }
 
     // At 200% on a 1024x768 and a 1280x720 projector the view keeps at least 60% of the
