@@ -380,8 +380,8 @@ void LessonActions::showStep()
     QString title = localized(step.title, language);
     if (title.isEmpty())
         title = tr("Step %1").arg(m_current + 1);
-    m_bar->showStep(m_current, int(m_lesson.steps.size()), title, localized(step.caption, language),
-                    step.error);
+    m_bar->showStep(m_current, int(m_lesson.steps.size()), title,
+                    withControlNames(*m_window, localized(step.caption, language)), step.error);
     updateActions();
 }
 

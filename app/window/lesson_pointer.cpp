@@ -7,12 +7,15 @@
 #include "material_panel.h"
 #include "object_panel.h"
 #include "shading_panel.h"
+#include "texture_controls.h"
 
+#include <QAction>
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QMap>
+#include <QRegularExpression>
 #include <QSlider>
 
 namespace lb {
@@ -22,9 +25,10 @@ QDockWidget *lessonPanelDock(const MainWindow &window, const QString &panel)
     if (panel == "editor")
         return window.editorDock();
     static const QMap<QString, QString> docks{
-        {"light", "lightDock"},      {"material", "materialDock"}, {"shading", "shadingDock"},
-        {"object", "objectDock"},    {"scene", "objectDock"},      {"probe", "probeDock"},
-        {"exercise", "exerciseDock"}};
+        {"light", "lightDock"},       {"material", "materialDock"}, {"shading", "shadingDock"},
+        {"object", "objectDock"},     {"scene", "objectDock"},      {"probe", "probeDock"},
+        {"exercise", "exerciseDock"}, {"uniforms", "uniformDock"},  {"bindings", "bindingDock"},
+        {"plots", "plotsDock"}};
     const QString name = docks.value(panel);
     for (QDockWidget *dock : window.panelDocks())
         if (!name.isEmpty() && dock->objectName() == name)
@@ -75,6 +79,57 @@ std::vector<QWidget *> lessonHighlightControls(const MainWindow &window, const Q
     if (highlight == "editor")
         return {window.editorPanel()};
     return {};
+}
+
+namespace {
+
+// A label as it reads: its mnemonic marks gone ("Chec&k" is "Check", "&&" one "&").
+QString shownText(QString text)
+{
+    text.replace(QLatin1String("&&"), QChar(0x1));
+    text.remove(QLatin1Char('&'));
+    return text.replace(QChar(0x1), QLatin1Char('&'));
+}
+
+QString controlName(const MainWindow &window, const QString &name)
+{
+    if (const QDockWidget *dock = lessonPanelDock(window, name))
+        return dock->windowTitle();
+    if (name == "check") {
+        const QAction *check = window.checkAction();
+        if (!check)
+            return {};
+        const QString key = check->shortcut().toString(QKeySequence::NativeText);
+        return key.isEmpty() ? shownText(check->text())
+                             : QString("%1 (%2)").arg(shownText(check->text()), key);
+    }
+    const QCheckBox *box = nullptr;
+    if (name == "object.texture")
+        box = window.objectPanel()->texture()->textureCheck();
+    else if (name == "shading.normalsByModelView")
+        box = window.shadingPanel()->normalsByModelViewCheck();
+    else if (name == "shading.lighting")
+        box = window.shadingPanel()->lightingCheck();
+    else if (name == "shading.vertexColors")
+        box = window.shadingPanel()->vertexColorsCheck();
+    return box ? shownText(box->text()) : QString();
+}
+
+} // namespace
+
+QString withControlNames(const MainWindow &window, const QString &caption)
+{
+    static const QRegularExpression placeholder(QStringLiteral("\\{ui:([A-Za-z.]+)\\}"));
+    QString out;
+    qsizetype from = 0;
+    for (QRegularExpressionMatchIterator it = placeholder.globalMatch(caption); it.hasNext();) {
+        const QRegularExpressionMatch m = it.next();
+        const QString name = controlName(window, m.captured(1));
+        out += caption.mid(from, m.capturedStart() - from);
+        out += name.isEmpty() ? m.captured(0) : name;
+        from = m.capturedEnd();
+    }
+    return out + caption.mid(from);
 }
 
 } // namespace lb

@@ -78,6 +78,7 @@ public:
     StatusLine *statusLine() const { return m_status; }
     ExercisePanel *exercisePanel() const { return m_exercisePanel; }
     QDockWidget *exerciseDock() const { return m_exerciseDock; }
+    QAction *checkAction() const { return m_checkAction; } // File > Check My Work (F9)
     WorkCheck *workCheck() const { return m_workCheck; }
     // Side B of the compare views draws the shader pair at `path` (NAME.vert/NAME.frag, either
     // file, or a scene file's program); empty: what it drew before (the exercise's reference

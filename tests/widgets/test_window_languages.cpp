@@ -7,6 +7,10 @@
 #include "language.h"
 #include "language_menu.h"
 #include "lesson.h"
+#include "lesson_actions.h"
+#include "lesson_bar.h"
+#include "lesson_pointer.h"
+#include "main_window_settings.h"
 #include "presets.h"
 
 #include <QAbstractButton>
@@ -186,6 +190,57 @@ private slots:
         QCOMPARE(standard.button(QMessageBox::Cancel)->text(), expected[6]);
         // Lessons and examples follow the window's language.
         QCOMPARE(lessonLanguage(), language);
+    }
+
+    // The shipped lessons' captions name controls as the window labels them in its language
+    // ({ui:NAME}), not by an English copy: in German the sheet's step 9 says "Arbeit prüfen"
+    // as the menu does, the slides' first step in Portuguese the Probe panel's tab "Sonda"
+    // (issue 49, item 16).
+    void captionsNameControlsAsTheWindowDoes_data()
+    {
+        QTest::addColumn<QString>("language");
+        QTest::addColumn<QString>("lesson");
+        QTest::addColumn<QString>("english"); // what the English window would say
+        QTest::newRow("de sheet") << "de"
+                                  << ":/lessons/exercise_sheet.json"
+                                  << "Check My Work";
+        QTest::newRow("pt slides") << "pt"
+                                   << ":/lessons/slides.json"
+                                   << "Probe panel";
+        QTest::newRow("en sheet") << "en"
+                                  << ":/lessons/exercise_sheet.json"
+                                  << "";
+    }
+    void captionsNameControlsAsTheWindowDoes()
+    {
+        QFETCH(QString, language);
+        QFETCH(QString, lesson);
+        QFETCH(QString, english);
+        showIn(language);
+        m_settings->setValue(window_settings::kAnimateLessonsKey, false);
+        LessonActions *lessons = m_window->lessonActions();
+        QVERIFY(lessons->open(lesson));
+        int placeholders = 0;
+        for (int i = 0; i < int(lessons->lesson().steps.size()); ++i) {
+            lessons->goTo(i);
+            QCoreApplication::processEvents();
+            const QString caption = lessons->bar()->captionLabel()->text();
+            QVERIFY2(!caption.contains("{ui:"), qPrintable(caption));
+            if (!english.isEmpty())
+                QVERIFY2(!caption.contains(english), qPrintable(caption));
+            for (const QString &text : lessons->lesson().steps[std::size_t(i)].caption)
+                placeholders += text.count("{ui:");
+        }
+        QVERIFY(placeholders > 0);
+        // What each name stands for, as the window shows it now.
+        QCOMPARE(withControlNames(*m_window, "{ui:probe}"), dock("probeDock")->windowTitle());
+        QString check = m_window->checkAction()->text().remove('&');
+        QCOMPARE(withControlNames(*m_window, "{ui:check}"), check + " (F9)");
+        QCOMPARE(withControlNames(*m_window, "{ui:nothing.known}"), QString("{ui:nothing.known}"));
+        if (language == "de")
+            QCOMPARE(check, QString("Arbeit prüfen"));
+        if (language == "pt")
+            QCOMPARE(dock("probeDock")->windowTitle(), QString("Sonda"));
     }
 
     // The trial helper tries a program in its own process: a refusal it writes (an endless
