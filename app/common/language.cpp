@@ -95,6 +95,15 @@ QLocale interfaceLocale()
     return catalogueLocale(g_language);
 }
 
+QString writtenCount(qulonglong count)
+{
+    const QLocale locale = interfaceLocale();
+    QString text = locale.toString(count);
+    if (locale.groupSeparator() == QLatin1String("."))
+        text.replace(QLatin1Char('.'), QChar(0x00a0));
+    return text;
+}
+
 QString installedLanguage()
 {
     return g_language;

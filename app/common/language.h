@@ -30,10 +30,14 @@ QString resolvedLanguage(const QString &setting);
 // QScintilla's) and returns the names of the catalogues that loaded. Call before the
 // window is built: the window reads its strings once (a change asks for a restart).
 QStringList installTranslators(QCoreApplication &app, const QString &language);
-// The window's language as a QLocale, for counts written in its sentences ("9.216 Dreiecke",
-// "9 216 triângulos"). Numbers with decimals keep the point in every language
-// (window/run_window.cpp).
+// The window's language as a QLocale.
 QLocale interfaceLocale();
+// A count as the window's sentences write it: grouped the language's way ("9,216 triangles",
+// "9 216 triângulos"), except that a language grouping with a point ("9.216 Dreiecke") groups
+// with a no-break space instead ("9 216 Dreiecke"): numbers with decimals keep the point in
+// every language (window/run_window.cpp), and 1.024 beside a field showing 1.024 read as two
+// numbers of one kind; one convention on screen.
+QString writtenCount(qulonglong count);
 // The language installTranslators() installed last ("en" before).
 QString installedLanguage();
 // Takes them off again (English from then on, for what is built after).

@@ -145,8 +145,7 @@ void MeshActions::showSummary()
     }
     // A two-sided mesh draws each triangle twice: the object's own are counted.
     const std::size_t copies = object.faces == Faces::TwoSided ? 2 : 1;
-    const QString triangles =
-        interfaceLocale().toString(qulonglong(mesh->triangleCount() / copies));
+    const QString triangles = writtenCount(qulonglong(mesh->triangleCount() / copies));
     // A file says how long it took to read, in the same sentence, and what was turned.
     QString text = file ? tr("%1: %2 triangles, %3 s")
                               .arg(QFileInfo(file->path).fileName(), triangles,
@@ -171,7 +170,7 @@ void MeshActions::showSummary()
                           15000);
     m_saidRemarks = remarks;
     m_summary->setText(text);
-    const QString full = m_loader->summary();
+    const QString full = m_loader->summary(writtenCount);
     m_summary->setFullText(
         remarks.isEmpty() || full.contains(remarks) ? full : tr("%1; %2").arg(full, remarks));
 }

@@ -111,7 +111,7 @@ std::shared_ptr<const MeshFile> ObjectLoader::loadedFile(const QString &path) co
     return found == m_files.end() ? nullptr : found->second;
 }
 
-QString ObjectLoader::summary() const
+QString ObjectLoader::summary(const std::function<QString(qulonglong)> &count) const
 {
     const std::shared_ptr<const Mesh> drawn = mesh();
     if (!drawn)
@@ -123,7 +123,7 @@ QString ObjectLoader::summary() const
     const std::size_t copies =
         m_document->scene().selectedObject().faces == Faces::TwoSided ? 2 : 1;
     return meshSummary(name, drawn->vertexCount() / copies, drawn->triangleCount() / copies, loaded,
-                       facesRemark());
+                       facesRemark(), count);
 }
 
 void ObjectLoader::open(const QString &path)

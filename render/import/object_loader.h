@@ -69,7 +69,8 @@ public:
     int objectCount() const { return int(m_slots.size()); }
     // "teapot.obj: 6,320 vertices, 12,288 triangles, loaded in 0.21 s", or the shape's, for
     // the selected object.
-    QString summary() const;
+    // `count` writes the counts (meshSummary()).
+    QString summary(const std::function<QString(qulonglong)> &count = {}) const;
     // True while a build runs on the worker thread (tests wait for it).
     bool isBuilding() const { return m_job != nullptr; }
     // Blocks until the build thread is idle, processing no events (its answer is delivered

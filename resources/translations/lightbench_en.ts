@@ -1729,7 +1729,7 @@
     </message>
     <message>
         <location line="+14"/>
-        <location filename="../../app/window/run_window.cpp" line="+131"/>
+        <location filename="../../app/window/run_window.cpp" line="+142"/>
         <source>Language</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1850,7 +1850,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+27"/>
         <source>Open &amp;Lesson...</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1987,7 +1987,7 @@
         </translation>
     </message>
     <message>
-        <location line="+116"/>
+        <location line="+115"/>
         <location filename="../../app/window/lesson_authoring.cpp" line="+35"/>
         <location line="+34"/>
         <source>Step %1</source>
@@ -2621,7 +2621,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+51"/>
+        <location line="+52"/>
         <location line="+16"/>
         <location line="+1"/>
         <location line="+1"/>
@@ -3006,13 +3006,18 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+5"/>
         <source>F11</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location line="+0"/>
         <source>F5</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Shift+F5</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -3057,7 +3062,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+38"/>
         <source>Presentation mode (F5) will show the panels (F6 hides them)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3192,7 +3197,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+9"/>
         <source>%1: %2 triangles, %3 s</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3283,7 +3288,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+17"/>
         <source>%1: %2 vertices, %3 triangles</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4403,7 +4408,7 @@
 <context>
     <name>lb::SafeWrite</name>
     <message>
-        <location filename="../../render/model/io/safe_write.cpp" line="+55"/>
+        <location filename="../../render/model/io/safe_write.cpp" line="+57"/>
         <location line="+14"/>
         <source>a loop of symbolic links</source>
         <translation type="unfinished"></translation>
@@ -4429,13 +4434,12 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+2"/>
-        <location line="+98"/>
+        <location line="+5"/>
         <source>cannot write in %1: %2</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+127"/>
         <source>no image to write</source>
         <translation type="unfinished"></translation>
     </message>

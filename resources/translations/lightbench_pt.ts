@@ -1735,7 +1735,7 @@
     </message>
     <message>
         <location line="+14"/>
-        <location filename="../../app/window/run_window.cpp" line="+131"/>
+        <location filename="../../app/window/run_window.cpp" line="+142"/>
         <source>Language</source>
         <translation>Idioma</translation>
     </message>
@@ -1856,7 +1856,7 @@
         <translation>Não foi possível voltar a abrir a última lição: %1</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+27"/>
         <source>Open &amp;Lesson...</source>
         <translation>Abrir &amp;Lição...</translation>
     </message>
@@ -1993,7 +1993,7 @@
         </translation>
     </message>
     <message>
-        <location line="+116"/>
+        <location line="+115"/>
         <location filename="../../app/window/lesson_authoring.cpp" line="+35"/>
         <location line="+34"/>
         <source>Step %1</source>
@@ -2627,7 +2627,7 @@
         <translation>Não verificado: o exercício tem um erro conhecido que não funciona</translation>
     </message>
     <message>
-        <location line="+80"/>
+        <location line="+81"/>
         <location line="+16"/>
         <location line="+1"/>
         <location line="+1"/>
@@ -3013,7 +3013,7 @@
         <translation>Modo de A&amp;presentação</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+5"/>
         <source>F11</source>
         <translation>F11</translation>
     </message>
@@ -3021,6 +3021,11 @@
         <location line="+0"/>
         <source>F5</source>
         <translation>F5</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Shift+F5</source>
+        <translation>Shift+F5</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -3064,7 +3069,7 @@
         <translation>B ou . escurece o ecrã no modo de apresentação (F5 ou F11); Phong / Blinn-Phong é Ctrl+B</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+38"/>
         <source>Presentation mode (F5) will show the panels (F6 hides them)</source>
         <translation>O modo de apresentação (F5) vai mostrar os painéis (F6 esconde-os)</translation>
     </message>
@@ -3199,7 +3204,7 @@
         <translation>%1 não carregado (desenha-se %2)</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+9"/>
         <source>%1: %2 triangles, %3 s</source>
         <translation>%1: %2 triângulos, %3 s</translation>
     </message>
@@ -3290,7 +3295,7 @@
         <translation>%1 normais com coordenadas não finitas: as normais do ficheiro não foram usadas</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+17"/>
         <source>%1: %2 vertices, %3 triangles</source>
         <translation>%1: %2 vértices, %3 triângulos</translation>
     </message>
@@ -4413,7 +4418,7 @@
 <context>
     <name>lb::SafeWrite</name>
     <message>
-        <location filename="../../render/model/io/safe_write.cpp" line="+55"/>
+        <location filename="../../render/model/io/safe_write.cpp" line="+57"/>
         <location line="+14"/>
         <source>a loop of symbolic links</source>
         <translation>um ciclo de ligações simbólicas</translation>
@@ -4439,13 +4444,12 @@
         <translation>%1 não é uma pasta</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <location line="+98"/>
+        <location line="+5"/>
         <source>cannot write in %1: %2</source>
         <translation>não é possível escrever em %1: %2</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+127"/>
         <source>no image to write</source>
         <translation>nenhuma imagem para escrever</translation>
     </message>

@@ -190,6 +190,14 @@ private slots:
         QCOMPARE(standard.button(QMessageBox::Cancel)->text(), expected[6]);
         // Lessons and examples follow the window's language.
         QCOMPARE(lessonLanguage(), language);
+        // Counts in sentences never group with the point the fields' decimals use (issue 49,
+        // item 18): German's "1.024.000 Dreiecke" is written "1 024 000".
+        const QString count = writtenCount(1024000);
+        QVERIFY2(!count.contains('.'), qPrintable(count));
+        if (language == "de")
+            QCOMPARE(count, QString("1\u00a0024\u00a0000"));
+        if (language == "en")
+            QCOMPARE(count, QString("1,024,000"));
     }
 
     // The shipped lessons' captions name controls as the window labels them in its language

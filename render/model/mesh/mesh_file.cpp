@@ -56,10 +56,12 @@ QStringList MeshFile::remarks() const
 }
 
 QString meshSummary(const QString &name, qulonglong vertices, qulonglong triangles,
-                    const MeshFile *loaded, const QString &turned)
+                    const MeshFile *loaded, const QString &turned,
+                    const std::function<QString(qulonglong)> &count)
 {
     const QLocale locale;
-    const QString v = locale.toString(vertices), t = locale.toString(triangles);
+    const auto written = [&](qulonglong n) { return count ? count(n) : locale.toString(n); };
+    const QString v = written(vertices), t = written(triangles);
     if (!loaded)
         return MeshFileMessages::tr("%1: %2 vertices, %3 triangles").arg(name, v, t);
     const QString seconds = QString::number(loaded->seconds, 'f', 2);

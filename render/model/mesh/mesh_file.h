@@ -12,6 +12,7 @@
 
 #include <glm/vec3.hpp>
 
+#include <functional>
 #include <memory>
 #include <optional>
 
@@ -55,7 +56,10 @@ struct MeshFile
 // 0.12 s, normals generated (remarks)". `loaded`: the file drawn, or nullptr for the shape
 // called `name`; the counts as the window's locale writes them. `turned`: what the Faces
 // choice turned (buildObjectMesh's remark), the first remark.
+// `count` writes the counts (the window's: writtenCount() of app/common/language.h); none:
+// QLocale()'s way.
 QString meshSummary(const QString &name, qulonglong vertices, qulonglong triangles,
-                    const MeshFile *loaded, const QString &turned = {});
+                    const MeshFile *loaded, const QString &turned = {},
+                    const std::function<QString(qulonglong)> &count = {});
 
 } // namespace lb
