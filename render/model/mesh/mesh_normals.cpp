@@ -178,7 +178,7 @@ glm::vec3 triangleGeometry(const glm::vec3 &a, const glm::vec3 &b, const glm::ve
     return length > 1e-6f * edge && std::isfinite(length) ? n / length : glm::vec3(0.0f);
 }
 
-// The common smooth mesh, quickly and with a fifth of the memory: every position has one
+// The common smooth mesh, quickly and without the general loop's arrays: every position has one
 // vertex, used by some triangle, and every position takes the fast path of the general loop
 // in withGeneratedNormals (its faces lie within half the crease of their mean). Then each
 // vertex keeps its place and gets the sum of its corners, added in the same order as the
