@@ -2474,7 +2474,7 @@
     <message>
         <location line="+1"/>
         <source>Uniforms</source>
-        <translation>Uniforms</translation>
+        <translation>Uniformes</translation>
     </message>
     <message>
         <location line="+1"/>

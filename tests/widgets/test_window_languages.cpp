@@ -198,6 +198,9 @@ private slots:
             QCOMPARE(count, QString("1\u00a0024\u00a0000"));
         if (language == "en")
             QCOMPARE(count, QString("1,024,000"));
+        // The Uniforms panel in Portuguese (issue 49, item 17); German keeps "Uniforms".
+        QCOMPARE(dock("uniformDock")->windowTitle(),
+                 QString(language == "pt" ? "Uniformes" : "Uniforms"));
     }
 
     // The shipped lessons' captions name controls as the window labels them in its language

@@ -509,7 +509,7 @@ private slots:
         // Read from the menus: each key beside its action.
         for (const char *row : {"<b>Ctrl+S</b></td><td>File &gt; Save Scene",
                                 "<b>Ctrl+O</b></td><td>File &gt; Open Scene",
-                                "<b>F11 or F5</b></td><td>View &gt; Presentation Mode",
+                                "<b>F11, F5 or Shift+F5</b></td><td>View &gt; Presentation Mode",
                                 "<b>Ctrl+B</b></td><td>Shading &gt; Toggle Phong / Blinn-Phong",
                                 "<b>F9</b></td><td>File &gt; Check My Work",
                                 "<b>B or .</b></td><td>View &gt; Blank the Screen",
