@@ -4,6 +4,7 @@
 #include "plot_chart.h"
 #include "probe_panel.h"
 #include "safe_write.h"
+#include "status_line.h"
 
 #include <QComboBox>
 #include <QDir>
@@ -12,6 +13,7 @@
 #include <QFileInfo>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QMainWindow>
 #include <QMessageBox>
 #include <QPushButton>
 #include <QSettings>
@@ -176,10 +178,19 @@ void PlotsPanel::exportPlot()
     if (QFileInfo(path).suffix().isEmpty())
         path += filter == svg ? ".svg" : filter == csv ? ".csv" : ".png";
     m_exportDir = QFileInfo(path).absolutePath(); // the window's next save keeps it
-    if (const QString error = exportTo(path); !error.isEmpty())
+    exportAndSay(path);
+}
+
+QString PlotsPanel::exportAndSay(const QString &path)
+{
+    const QString error = exportTo(path);
+    if (!error.isEmpty())
         QMessageBox::warning(
             this, tr("Export the plot"),
             tr("The plot could not be written; nothing was changed.\n%1").arg(error));
+    else if (auto *window = qobject_cast<QMainWindow *>(this->window()))
+        showStatusMessage(window, tr("Exported the plot to %1").arg(path), 5000);
+    return error;
 }
 
 void PlotsPanel::saveState(QSettings &settings) const

@@ -35,6 +35,9 @@ public:
     QLabel *noteLabel() const { return m_note; }
     // Writes the plot to `path`: PNG, SVG or (ending in .csv) the samples. Empty or the error.
     QString exportTo(const QString &path) const;
+    // Export... after its dialog: writes the plot to `path` and says so on the window's
+    // status line, or shows why it could not (a box); returns exportTo()'s answer.
+    QString exportAndSay(const QString &path);
     // The plot chosen, kept across sessions.
     void saveState(QSettings &settings) const;
     void restoreState(const QSettings &settings);

@@ -3839,7 +3839,7 @@
 <context>
     <name>lb::PlotsPanel</name>
     <message>
-        <location filename="../../widgets/plots_panel.cpp" line="+39"/>
+        <location filename="../../widgets/plots_panel.cpp" line="+41"/>
         <source>Specular: Phong and Blinn-Phong</source>
         <translation>Spiegelnd: Phong und Blinn-Phong</translation>
     </message>
@@ -3920,7 +3920,7 @@
     </message>
     <message>
         <location line="+4"/>
-        <location line="+9"/>
+        <location line="+15"/>
         <source>Export the plot</source>
         <translation>Diagramm exportieren</translation>
     </message>
@@ -3930,6 +3930,11 @@
 %1</source>
         <translation>Das Diagramm konnte nicht geschrieben werden; nichts wurde geändert.
 %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Exported the plot to %1</source>
+        <translation>Diagramm exportiert nach %1</translation>
     </message>
 </context>
 <context>

@@ -3832,7 +3832,7 @@
 <context>
     <name>lb::PlotsPanel</name>
     <message>
-        <location filename="../../widgets/plots_panel.cpp" line="+39"/>
+        <location filename="../../widgets/plots_panel.cpp" line="+41"/>
         <source>Specular: Phong and Blinn-Phong</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3913,7 +3913,7 @@
     </message>
     <message>
         <location line="+4"/>
-        <location line="+9"/>
+        <location line="+15"/>
         <source>Export the plot</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3921,6 +3921,11 @@
         <location line="+1"/>
         <source>The plot could not be written; nothing was changed.
 %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Exported the plot to %1</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -185,6 +185,12 @@ private slots:
         const QString png = m_dir.filePath("specular.png");
         QCOMPARE(panel()->exportTo(png), QString());
         QCOMPARE(QImage(png).size(), QSize(1200, 900));
+        // Export... confirms what it wrote on the status line (issue 49, item 19).
+        const QString confirmed = m_dir.filePath("confirmed.png");
+        QCOMPARE(panel()->exportAndSay(confirmed), QString());
+        QVERIFY(QFileInfo::exists(confirmed));
+        QVERIFY2(m_window->statusLine()->message().contains(confirmed),
+                 qPrintable(m_window->statusLine()->message()));
 
         // A FIFO and a folder that is not there: a message, and nothing written.
         const QString fifo = m_dir.filePath("pipe.png");
