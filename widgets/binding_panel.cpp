@@ -92,6 +92,7 @@ void BindingPanel::setProgram(const ProgramBuild &build, bool choosable)
         auto *label = new QLabel(inputLabel(a.location), this);
         label->setToolTip(tr("A vertex input is fed by its location: layout(location = N), or "
                              "the slot its name gives (aPos, a_normal, inTexCoord...)."));
+        label->setWordWrap(true); // a column of 38% at 200% is narrower than the words
         m_form->addRow(QString("in %1").arg(a.name), label);
         m_rows.push_back(label);
     }
@@ -161,6 +162,8 @@ void BindingPanel::addUniform(const ActiveUniform &u, bool choosable)
     connect(list, &QComboBox::activated, this,
             [this, name, list](int index) { choose(name, index, list); });
     m_form->addRow(QString("uniform %1").arg(declaration(u)), list);
+    if (auto *label = qobject_cast<QLabel *>(m_form->labelForField(list)))
+        label->setWordWrap(true); // between type and name where the column is narrow
     m_rows.push_back(list);
     m_lists.push_back({name, list});
 }

@@ -1,12 +1,14 @@
 #include "light_panel.h"
 
+#include "narrow_forms.h"
+
 #include "color_edit.h"
 
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QEvent>
 #include <QFormLayout>
-#include <QHBoxLayout>
 #include <QSignalBlocker>
 #include <QTabBar>
 
@@ -29,8 +31,10 @@ LightPanel::LightPanel(SceneDocument *document, QWidget *parent)
     m_tabs = new QTabBar(this);
     m_tabs->setExpanding(false);
     m_tabs->setDrawBase(false);
-    for (int i = 0; i < kMaxLights; ++i)
+    for (int i = 0; i < kMaxLights; ++i) {
         m_tabs->addTab(tr("Light %1").arg(i + 1));
+        m_tabs->setAccessibleTabName(i, m_tabs->tabText(i));
+    }
     m_tabs->setToolTip(tr("Up to four lights; their terms add up. A shader that declares one "
                           "light (not an array) reads light 1"));
     connect(m_tabs, &QTabBar::currentChanged, this, [this] { refreshNow(); });
@@ -53,7 +57,7 @@ LightPanel::LightPanel(SceneDocument *document, QWidget *parent)
     //: the row of the light's on/off switch
     form->addRow(tr("Light"), m_enabled);
     const char *axes[3] = {"x", "y", "z"};
-    auto *xyzRow = new QHBoxLayout;
+    auto *xyzRow = new WrapRow;
     for (int i = 0; i < 3; ++i) {
         QDoubleSpinBox *spin =
             makeSpin(-limits::kMaxCoordinate, limits::kMaxCoordinate, 2, 0.1,
@@ -125,7 +129,7 @@ LightPanel::LightPanel(SceneDocument *document, QWidget *parent)
 
     // OpenGL 2.1's attenuation and spotlight (issue 15): both scale all three terms.
     const char *kNames[3] = {"kc", "kl", "kq"};
-    auto *attenuationRow = new QHBoxLayout;
+    auto *attenuationRow = new WrapRow;
     for (int i = 0; i < 3; ++i) {
         QDoubleSpinBox *spin = makeSpin(
             0.0, limits::kMaxAttenuation, 2, 0.05,
@@ -150,7 +154,7 @@ LightPanel::LightPanel(SceneDocument *document, QWidget *parent)
     }
     form->addRow(tr("Atten. kc kl kq"), attenuationRow);
 
-    auto *axisRow = new QHBoxLayout;
+    auto *axisRow = new WrapRow;
     for (int i = 0; i < 3; ++i) {
         QDoubleSpinBox *spin =
             makeSpin(-limits::kMaxCoordinate, limits::kMaxCoordinate, 2, 0.1,
@@ -172,7 +176,7 @@ LightPanel::LightPanel(SceneDocument *document, QWidget *parent)
     }
     form->addRow(tr("Spot axis"), axisRow);
 
-    auto *spotRow = new QHBoxLayout;
+    auto *spotRow = new WrapRow;
     m_spotCutoff = makeSpin(0.0, limits::kMaxSpotCutoff, 1, 1.0,
                             tr("spotCutoff: the cone's half-angle; outside it the light adds "
                                "nothing, ambient included (180: no spot)"));
@@ -197,6 +201,32 @@ LightPanel::LightPanel(SceneDocument *document, QWidget *parent)
                       "world coordinates"),
                    [this](Scene &s) { current(s) = defaultLights()[std::size_t(currentLight())]; });
     refreshNow();
+}
+
+void LightPanel::resizeEvent(QResizeEvent *event)
+{
+    ScenePanel::resizeEvent(event);
+    nameTabs();
+}
+
+void LightPanel::changeEvent(QEvent *event)
+{
+    ScenePanel::changeEvent(event);
+    if (event->type() == QEvent::FontChange)
+        nameTabs();
+}
+
+void LightPanel::nameTabs()
+{
+    // "Light 1" to "Light 4" where all four fit, else their numbers: four tabs in sight, none
+    // behind the bar's arrows (a column of 38% at 200%).
+    for (int i = 0; i < kMaxLights; ++i)
+        m_tabs->setTabText(i, tr("Light %1").arg(i + 1));
+    const QMargins margins = layout()->contentsMargins();
+    if (m_tabs->sizeHint().width() <= width() - margins.left() - margins.right())
+        return;
+    for (int i = 0; i < kMaxLights; ++i)
+        m_tabs->setTabText(i, QString::number(i + 1)); // the accessible name stays whole
 }
 
 int LightPanel::currentLight() const

@@ -38,7 +38,12 @@ public:
 protected:
     void refresh(const Scene &scene) override;
 
+protected:
+    void resizeEvent(QResizeEvent *event) override;
+    void changeEvent(QEvent *event) override;
+
 private:
+    void nameTabs();
     // The "Of object" choices, when the objects' names changed.
     void refreshObjectNames(const Scene &scene);
     Light &current(Scene &scene) const { return scene.lights[std::size_t(currentLight())]; }

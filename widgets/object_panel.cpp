@@ -1,5 +1,6 @@
 #include "object_panel.h"
 
+#include "narrow_forms.h"
 #include "number_box.h"
 #include "texture_controls.h"
 
@@ -8,7 +9,6 @@
 #include <QDoubleSpinBox>
 #include <QFileInfo>
 #include <QFormLayout>
-#include <QHBoxLayout>
 #include <QListWidget>
 #include <QPushButton>
 #include <QSignalBlocker>
@@ -88,11 +88,10 @@ ObjectPanel::ObjectPanel(SceneDocument *document, QWidget *parent)
                             "frame go to the object before it"));
     connect(m_remove, &QPushButton::clicked, this,
             [this] { edit([](Scene &s) { removeObject(s, s.selected); }); });
-    auto *listButtons = new QHBoxLayout;
+    auto *listButtons = new WrapRow(WrapRow::Room::Left);
     listButtons->addWidget(m_add);
     listButtons->addWidget(m_duplicate);
     listButtons->addWidget(m_remove);
-    listButtons->addStretch();
     form->addRow(listButtons);
 
     m_shape = makeCombo({tr("Cube (flat faces)"), tr("Sphere (smooth)"), tr("Torus"), tr("Plane")},
@@ -109,8 +108,9 @@ ObjectPanel::ObjectPanel(SceneDocument *document, QWidget *parent)
     open->setToolTip(tr("Open a mesh file: any format Assimp reads (Ctrl+M; or drop a file on "
                         "the window)"));
     connect(open, &QPushButton::clicked, this, &ObjectPanel::openMeshRequested);
-    auto *shapeRow = new QHBoxLayout;
-    shapeRow->addWidget(m_shape, 1);
+    auto *shapeRow = new WrapRow(WrapRow::Room::Left);
+    m_shape->setSizePolicy(QSizePolicy::Expanding, m_shape->sizePolicy().verticalPolicy());
+    shapeRow->addWidget(m_shape);
     shapeRow->addWidget(open);
     form->addRow(tr("Shape"), shapeRow);
 
@@ -147,13 +147,13 @@ ObjectPanel::ObjectPanel(SceneDocument *document, QWidget *parent)
         edit([&](Scene &s) { s.selectedObject().creaseDegrees = float(v); });
     });
     form->addRow(tr("Crease angle"), m_crease);
-    m_showNormals = new QCheckBox(tr("Show normals as lines"), this);
+    m_showNormals = new WrapCheckBox(tr("Show normals as lines"), this);
     m_showNormals->setToolTip(tr("A short line along each vertex normal, transformed by "
                                  "mNormals as the shaders do (key N)"));
     connect(m_showNormals, &QCheckBox::toggled, this,
             [this](bool on) { edit([&](Scene &s) { s.selectedObject().showNormals = on; }); });
     form->addRow(m_showNormals);
-    m_cullBackFaces = new QCheckBox(tr("Cull back faces (closed meshes)"), this);
+    m_cullBackFaces = new WrapCheckBox(tr("Cull back faces (closed meshes)"), this);
     m_cullBackFaces->setToolTip(tr("Triangles facing away from the camera are not drawn: the "
                                    "same picture for a closed mesh, about twice as fast; an "
                                    "open mesh shows holes where its inside was"));
@@ -164,7 +164,7 @@ ObjectPanel::ObjectPanel(SceneDocument *document, QWidget *parent)
     connect(m_texture, &TextureControls::openImageRequested, this,
             &ObjectPanel::openImageRequested);
     form->addRow(m_texture);
-    m_adoptMaterial = new QCheckBox(tr("Use the mesh file's material"), this);
+    m_adoptMaterial = new WrapCheckBox(tr("Use the mesh file's material"), this);
     m_adoptMaterial->setToolTip(tr("The mesh file's ambient, diffuse and specular colours "
                                    "and shininess replace Ka, Kd, Ks and shininess: now, and "
                                    "whenever a file is loaded"));
@@ -173,13 +173,12 @@ ObjectPanel::ObjectPanel(SceneDocument *document, QWidget *parent)
     form->addRow(m_adoptMaterial);
 
     const char *axes[3] = {"X", "Y", "Z"};
-    auto *rotationRow = new QHBoxLayout;
-    auto *scaleRow = new QHBoxLayout;
-    auto *translationRow = new QHBoxLayout;
+    auto *rotationRow = new WrapRow;
+    auto *scaleRow = new WrapRow;
+    auto *translationRow = new WrapRow;
     // One spin box per axis of a model transform vector of the selected object.
-    const auto axisSpin = [this](QHBoxLayout *row, glm::vec3 ObjectSettings::*member, int i,
-                                 double lo, double hi, int decimals, double step,
-                                 const QString &tip) {
+    const auto axisSpin = [this](WrapRow *row, glm::vec3 ObjectSettings::*member, int i, double lo,
+                                 double hi, int decimals, double step, const QString &tip) {
         QDoubleSpinBox *spin = makeSpin(lo, hi, decimals, step, tip);
         connect(spin, &QDoubleSpinBox::valueChanged, this, [this, member, i](double v) {
             edit([&](Scene &s) { (s.selectedObject().*member)[i] = float(v); });
@@ -214,7 +213,7 @@ ObjectPanel::ObjectPanel(SceneDocument *document, QWidget *parent)
     //: the row of the object's translation along X, Y and Z
     form->addRow(tr("Move"), translationRow);
 
-    m_autoRotate = new QCheckBox(tr("Auto-rotate about Y"), this);
+    m_autoRotate = new WrapCheckBox(tr("Auto-rotate about Y"), this);
     m_autoRotate->setToolTip(tr("Turns the model: a light in the object frame turns with it "
                                 "(key Space)"));
     connect(m_autoRotate, &QCheckBox::toggled, this,

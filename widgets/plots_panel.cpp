@@ -122,8 +122,9 @@ void PlotsPanel::changeEvent(QEvent *event)
 
 void PlotsPanel::fitViewToFont()
 {
-    // Room for the axes' labels and a legible curve at any UI scale.
-    m_view->setMinimumSize(fontMetrics().height() * 12, fontMetrics().height() * 16);
+    // Room for the axes' labels and a legible curve at any UI scale; no wider than the column
+    // a 1024-pixel projector leaves the panels at 200% (10 lines: 280 px there).
+    m_view->setMinimumSize(fontMetrics().height() * 10, fontMetrics().height() * 16);
 }
 
 void PlotsPanel::rebuild()

@@ -1,5 +1,7 @@
 #include "shading_panel.h"
 
+#include "narrow_forms.h"
+
 #include <QCheckBox>
 #include <QComboBox>
 #include <QFormLayout>
@@ -50,7 +52,7 @@ ShadingPanel::ShadingPanel(SceneDocument *document, QWidget *parent)
 
     auto makeCheck = [this, form](const QString &label, const QString &tip,
                                   bool ShadingSettings::*member) {
-        auto *check = new QCheckBox(label, this);
+        auto *check = new WrapCheckBox(label, this);
         check->setToolTip(tip);
         connect(check, &QCheckBox::toggled, this,
                 [this, member](bool on) { edit([&](Scene &s) { s.shading.*member = on; }); });
@@ -77,7 +79,7 @@ ShadingPanel::ShadingPanel(SceneDocument *document, QWidget *parent)
                                tr("Multiply ambient and diffuse by the vertex colour (vColor)"),
                                &ShadingSettings::vertexColors);
     // The terms on one row: the model taken apart, each term alone or in pairs.
-    auto *termsRow = new QHBoxLayout;
+    auto *termsRow = new WrapRow(WrapRow::Room::Left);
     const std::tuple<QString, QString, bool TermSwitches::*, Semantic> terms[] = {
         {tr("Ambient"), tr("Ia·Ka: uEnableAmbient (key A)"), &TermSwitches::ambient,
          Semantic::EnableAmbient},
@@ -96,7 +98,6 @@ ShadingPanel::ShadingPanel(SceneDocument *document, QWidget *parent)
         termsRow->addWidget(check);
         m_terms[i] = check;
     }
-    termsRow->addStretch();
     //: the row of the ambient, diffuse and specular terms' switches
     form->addRow(tr("Terms"), termsRow);
     feeds(m_lighting, {Semantic::EnableLighting});
@@ -109,6 +110,7 @@ ShadingPanel::ShadingPanel(SceneDocument *document, QWidget *parent)
     feeds(m_normalsByModelView, {Semantic::Normals});
 
     auto *compareTitle = new QLabel(tr("<b>Compare</b> side A with side B"), this);
+    compareTitle->setWordWrap(true);
     compareTitle->setToolTip(tr("Side A is the program on screen (the editor's); side B is the "
                                 "built-in program with the choices below, a shader pair from "
                                 "files, or an open exercise's reference; one camera"));

@@ -1,10 +1,11 @@
 #include "texture_controls.h"
 
+#include "narrow_forms.h"
+
 #include <QCheckBox>
 #include <QComboBox>
 #include <QFileInfo>
 #include <QFormLayout>
-#include <QHBoxLayout>
 #include <QLabel>
 #include <QSignalBlocker>
 #include <QToolButton>
@@ -23,7 +24,7 @@ TextureControls::TextureControls(SceneDocument *document, QWidget *parent)
 
     // Two rows, so that the Object panel fits a 720-pixel-high screen without scrolling:
     // the switch, the image and its buttons; then the sampling.
-    auto *imageRow = new QHBoxLayout;
+    auto *imageRow = new WrapRow(WrapRow::Room::Left);
     m_texture = new QCheckBox(tr("Texture"), this);
     m_texture->setToolTip(tr("uEnableTexture: multiply ambient and diffuse by the texture "
                              "(uSampler): the image file, else the mesh file's diffuse "
@@ -34,7 +35,8 @@ TextureControls::TextureControls(SceneDocument *document, QWidget *parent)
     imageRow->addWidget(m_texture);
     m_image = new ElidedLabel(this); // a long name ends in "...", the whole path as tooltip
     m_image->setMinimumWidth(30);
-    imageRow->addWidget(m_image, 1);
+    m_image->setSizePolicy(QSizePolicy::Expanding, m_image->sizePolicy().verticalPolicy());
+    imageRow->addWidget(m_image);
     m_open = new QToolButton(this);
     m_open->setText(tr("Image..."));
     m_open->setToolTip(tr("Open a PNG, JPEG or any image Qt reads as this object's texture "
@@ -50,7 +52,7 @@ TextureControls::TextureControls(SceneDocument *document, QWidget *parent)
     imageRow->addWidget(m_clear);
     form->addRow(imageRow);
 
-    auto *samplingRow = new QHBoxLayout;
+    auto *samplingRow = new WrapRow(WrapRow::Room::Left);
     //: texture wrapping: GL_REPEAT or GL_CLAMP_TO_EDGE
     m_wrap = makeCombo({tr("Repeat"), tr("Clamp")},
                        tr("Texture coordinates outside 0 to 1: the image repeats (GL_REPEAT) or "

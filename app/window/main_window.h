@@ -173,6 +173,9 @@ private:
     void syncShadingWithProgram();
     void resetEverything();
     void applyScale();
+    // Whether the panels' forms stack their rows and wrap their switches (narrow_forms.h).
+    void stackPanelForms(bool on);
+    void placeStatusMessage(); // the status line, or the lesson bar in presentation mode
     void applyDockWidths();
     int panelsNeed() const; // the width the widest panel needs, without scrolling sideways
     void applyTabPositions();

@@ -4,6 +4,7 @@
 
 #include "editor_panel.h"
 #include "main_window_settings.h"
+#include "narrow_forms.h"
 #include "probe_panel.h"
 #include "scene_actions.h"
 #include "viewport.h"
@@ -162,10 +163,17 @@ void MainWindow::applyDockWidths()
         const int tabs = presentationTabsWidth();
         // The widest panel's form where that fits in 39.5% (with the tabs), so it does not
         // scroll sideways; never more: the view keeps 60%.
-        const int need =
-            panelsNeed() + 2 * column->style()->pixelMetric(QStyle::PM_DockWidgetFrameWidth);
+        const int frames = 2 * column->style()->pixelMetric(QStyle::PM_DockWidgetFrameWidth);
+        const int most = int(w * 0.395) - tabs;
+        // Narrower than that (200% on a 1024-pixel projector), the forms' rows of boxes stand
+        // one under another and their long switches wrap, rather than scroll sideways.
+        stackPanelForms(false);
+        const bool stacked = panelsNeed() + frames > most;
+        stackPanelForms(stacked); // and the column all it may have
         resizeDocks({column},
-                    {std::min(std::max(shares.editor - tabs, need), int(w * 0.395) - tabs)},
+                    {stacked
+                         ? most
+                         : std::min(std::max(shares.editor - tabs, panelsNeed() + frames), most)},
                     Qt::Horizontal);
         if (!presentationIsShort() && m_editorDock->isVisible())
             resizeDocks({m_editorDock, m_panelDocks[0]}, {h * 7 / 10, h * 3 / 10}, Qt::Vertical);
@@ -179,6 +187,12 @@ void MainWindow::applyDockWidths()
     const int panels = std::max(shares.panels, panelsNeed() + tabBar);
     const int editor = std::max(std::min(shares.editor, int(w * 0.53) - panels), int(w * 0.22));
     resizeDocks({m_panelDocks[0], m_editorDock}, {panels, editor}, Qt::Horizontal);
+}
+
+void MainWindow::stackPanelForms(bool on)
+{
+    for (QDockWidget *dock : m_panelDocks)
+        setFormsMayStack(qobject_cast<QScrollArea *>(dock->widget())->widget(), on);
 }
 
 int MainWindow::panelsNeed() const
@@ -227,6 +241,8 @@ void MainWindow::setPresentation(bool on)
         m_normalUnsized = m_widthsPending; // entered before the docks had their widths
     }
     m_presentation = on;
+    if (!on)
+        stackPanelForms(false);
     applyScale();
     if (on) {
         // The whole screen also where no window manager answers the full-screen request.
@@ -280,10 +296,7 @@ void MainWindow::applyScale()
     m_editor->setUiScale(scale);
     m_viewport->setUiScale(scale); // the texts over the view
     QTimer::singleShot(0, this, &MainWindow::styleDockTabs);
-    // The probe's equation (lines of 70 characters) in presentation mode at the 100% size,
-    // where the panels share 38% of the width: wrapped twice, not every 30 characters (it is
-    // the teacher's to read; the class reads the view).
-    m_probe->setEquationShare(m_presentation ? 1.0 / scale : 1.0);
+
     if (m_scaleGroup)
         for (QAction *a : m_scaleGroup->actions())
             a->setChecked(a->data().toInt() == int(std::lround(scale * 100.0)));
