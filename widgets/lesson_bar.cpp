@@ -1,5 +1,7 @@
 #include "lesson_bar.h"
 
+#include "status_line.h"
+
 #include <QEvent>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -76,7 +78,11 @@ LessonBar::LessonBar(QWidget *parent) : QFrame(parent)
     top->addWidget(m_previous);
     top->addWidget(m_position);
     top->addWidget(m_next);
-    top->addStretch(1);
+    m_message = new ElidedLabel(this);
+    m_message->setMinimumWidth(0);
+    m_message->hide();
+    top->addWidget(m_message, 1);
+    top->addStretch(0);
     top->addWidget(m_reset);
     top->addWidget(m_menu);
     top->addWidget(m_close);
@@ -128,11 +134,33 @@ void LessonBar::showCaption()
     fitCaption();
 }
 
+void LessonBar::setMessage(const QString &text)
+{
+    m_message->setText(text);
+    m_message->setVisible(!text.isEmpty());
+}
+
+QString LessonBar::message() const
+{
+    return m_message->isVisible() ? m_message->text() : QString();
+}
+
+void LessonBar::setVisible(bool visible)
+{
+    const bool was = isVisibleTo(parentWidget());
+    QFrame::setVisible(visible);
+    if (was != visible)
+        emit visibilityChanged(visible);
+}
+
 void LessonBar::fitCaption()
 {
     const int width = m_captionArea->viewport()->width();
     const int needed = m_caption->heightForWidth(width > 0 ? width : this->width());
-    const int most = fontMetrics().lineSpacing() * kCaptionLines;
+    // A fifth of the window: 9 lines at 100% on a 768-line screen (a step's caption whole in
+    // the column between the panels), 4 at 200%; whole lines.
+    const int line = std::max(fontMetrics().lineSpacing(), 1);
+    const int most = line * std::max(kCaptionLines, window()->height() / 5 / line);
     m_captionArea->setFixedHeight(std::max(0, std::min(needed, most)));
 }
 

@@ -12,6 +12,8 @@ class QToolButton;
 
 namespace lb {
 
+class ElidedLabel;
+
 class LessonBar : public QFrame
 {
     Q_OBJECT
@@ -22,6 +24,12 @@ public:
     void showStep(int index, int count, const QString &title, const QString &caption,
                   const QString &error);
     void setMenu(QMenu *menu); // the lesson's authoring menu, behind the bar's menu button
+    // The window's last message in the bar's first row, beside the buttons (presentation mode
+    // hides the status line under the bar: its empty row took the caption's room); empty:
+    // none.
+    void setMessage(const QString &text);
+    QString message() const;
+    void setVisible(bool visible) override;
 
     QLabel *positionLabel() const { return m_position; }
     QLabel *titleLabel() const { return m_title; }
@@ -40,17 +48,21 @@ signals:
     void nextRequested();
     void resetRequested();
     void closeRequested();
+    void visibilityChanged(bool visible);
 
 protected:
     void changeEvent(QEvent *event) override; // the UI scale: the caption follows the font
     void resizeEvent(QResizeEvent *event) override;
 
 private:
-    static constexpr int kCaptionLines = 3; // the most the caption takes; more scrolls
+    // The caption takes the lines its text needs, up to a fifth of the window's height and at
+    // least this many; more scrolls.
+    static constexpr int kCaptionLines = 3;
     void showCaption();
     void fitCaption(); // the caption's height for its text at the bar's width
 
     QLabel *m_position, *m_title, *m_caption;
+    ElidedLabel *m_message;
     QScrollArea *m_captionArea;
     QToolButton *m_previous, *m_next, *m_reset, *m_menu, *m_close;
     QString m_captionText, m_error;

@@ -43,9 +43,14 @@ QString rgb(const glm::ivec3 &c)
     return QString("(%1, %2, %3)").arg(c.r).arg(c.g).arg(c.b);
 }
 
-QString row(const QString &name, const QString &value)
+// A name and its value side by side, or (stacked: a narrow panel at 200%) the value under its
+// name, whole on its line, rather than wrapped over three beside a column of names.
+QString tableRow(const QString &name, const QString &value, bool stacked)
 {
-    return QString("<tr><td><b>%1</b></td><td>%2</td></tr>").arg(name, value);
+    return stacked ? QString("<tr><td><b>%1</b></td></tr><tr><td style='padding-left: "
+                             "1em'>%2</td></tr>")
+                         .arg(name, value)
+                   : QString("<tr><td><b>%1</b></td><td>%2</td></tr>").arg(name, value);
 }
 
 } // namespace
@@ -104,14 +109,6 @@ void ProbePanel::setReferenceNote(const QString &note)
     if (note == m_referenceNote)
         return;
     m_referenceNote = note;
-    showText();
-}
-
-void ProbePanel::setEquationShare(double share)
-{
-    if (share == m_equationShare)
-        return;
-    m_equationShare = share;
     showText();
 }
 
@@ -176,10 +173,28 @@ void ProbePanel::update()
     emit resultChanged();
 }
 
+bool ProbePanel::stacksRows() const
+{
+    // A vector's numbers and a name beside them; narrower, each value goes under its name.
+    const int vector = fontMetrics().horizontalAdvance(QStringLiteral("(-0.000, -0.000, -0.000)"));
+    return m_text->width() < vector * 17 / 10;
+}
+
+void ProbePanel::resizeEvent(QResizeEvent *event)
+{
+    QWidget::resizeEvent(event);
+    if (stacksRows() != m_stacked)
+        showText();
+}
+
 void ProbePanel::showText()
 {
     if (!m_point || !m_result.hit)
         return;
+    m_stacked = stacksRows();
+    const auto row = [stacked = m_stacked](const QString &name, const QString &value) {
+        return tableRow(name, value, stacked);
+    };
     m_gpu = m_viewport->renderer().probedColour();
     const Scene &scene = m_document->scene();
     const Scene side = sceneOfSide(scene, m_point->sideB);
@@ -319,10 +334,15 @@ void ProbePanel::showText()
     // The equation with the numbers, as the course writes it (also copied by the button).
     m_equation = equationForDisplay(lightingEquation(side, r));
     m_copyEquation->setEnabled(!m_equation.isEmpty());
-    const int equationPixels =
-        std::max(8, int(std::lround(QFontInfo(font()).pixelSize() * m_equationShare)));
+    // The monospace at the panel's size, which follows the UI scale: in presentation mode too,
+    // where the back row reads it (issue 49, item 15).
+    const int equationPixels = std::max(8, QFontInfo(font()).pixelSize());
     html += QString("<hr><b>%1</b><pre style='white-space: pre-wrap; font-size: %3px'>%2</pre>")
-                .arg(tr("The equation at this point"), m_equation.toHtmlEscaped())
+                // A product of symbols may break after each dot (a zero-width space): at
+                // 200% in a narrow column "att·spot·Id·Kd·max(N·L," is wider than the panel.
+                .arg(tr("The equation at this point"),
+                     m_equation.toHtmlEscaped().replace(QChar(0x00b7),
+                                                        QString::fromUtf8("\u00b7\u200b")))
                 .arg(equationPixels);
     if (!m_referenceNote.isEmpty())
         html += QString("<p><i>%1</i></p>").arg(m_referenceNote.toHtmlEscaped());

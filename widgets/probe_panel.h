@@ -40,8 +40,6 @@ public:
     // What the reference does not know about the program on screen ("it computes V =
     // (0,0,1)..."), shown under the numbers; empty for none.
     void setReferenceNote(const QString &note);
-    // The equation's monospace as a share of the panel's font (1: the same size).
-    void setEquationShare(double share);
     // The GPU's pixel at the point, once the viewport has drawn it: the surface's, never a
     // marker's, a normal line's or an arrow's.
     std::optional<glm::ivec3> gpuColour() const { return m_gpu; }
@@ -59,6 +57,9 @@ signals:
     // The probed point's numbers changed, or it was cleared (the Plots panel marks them).
     void resultChanged();
 
+protected:
+    void resizeEvent(QResizeEvent *event) override;
+
 private:
     struct Point
     {
@@ -67,8 +68,9 @@ private:
         glm::vec3 barycentric;
         bool sideB;
     };
-    void update();   // the model again at the point; arrows to the viewport
-    void showText(); // after the frame is drawn, with the GPU's pixel
+    void update();           // the model again at the point; arrows to the viewport
+    void showText();         // after the frame is drawn, with the GPU's pixel
+    bool stacksRows() const; // whether the panel is too narrow for names beside values
 
     SceneDocument *m_document;
     Viewport *m_viewport;
@@ -79,7 +81,7 @@ private:
     ProbeResult m_result;
     std::optional<glm::ivec3> m_gpu, m_reference;
     QString m_referenceNote, m_sideBReference, m_referenceName;
-    double m_equationShare = 1.0;
+    bool m_stacked = false; // the rows' values under their names (stacksRows)
 };
 
 } // namespace lb

@@ -94,6 +94,7 @@ void StatusLine::showMessage(const QString &text, int milliseconds)
         m_clear.start(milliseconds);
     else
         m_clear.stop();
+    emit messageChanged(text);
 }
 
 void showStatusMessage(QMainWindow *window, const QString &text, int milliseconds)

@@ -54,6 +54,9 @@ public:
     void showMessage(const QString &text, int milliseconds = 8000);
     QString message() const { return m_message->text(); }
 
+signals:
+    void messageChanged(const QString &text); // empty: the message went
+
 private:
     QHBoxLayout *m_row;
     ElidedLabel *m_program;

@@ -157,6 +157,8 @@ MainWindow::MainWindow(QSettings &settings, QWidget *parent)
     m_sceneActions->setMaySetAside(
         [this](const QString &target) { return maySetAside(SetAsideFor::OpeningScene, target); });
     m_lessons = new LessonActions(this, lessonBar, m_settings);
+    connect(lessonBar, &LessonBar::visibilityChanged, this, &MainWindow::placeStatusMessage);
+    connect(m_status, &StatusLine::messageChanged, this, &MainWindow::placeStatusMessage);
     m_lessons->setMaySetAside([this](SetAsideFor occasion, const QString &target) {
         return maySetAside(occasion, target);
     });

@@ -6,6 +6,8 @@
 #include "main_window.h"
 
 #include "editor_panel.h"
+#include "lesson_actions.h"
+#include "lesson_bar.h"
 #include "main_window_settings.h"
 #include "probe_panel.h"
 #include "scene_actions.h"
@@ -215,6 +217,16 @@ bool MainWindow::presentationEditorFits() const
            int(width() * 0.395);
 }
 
+void MainWindow::placeStatusMessage()
+{
+    // In presentation mode with a lesson the message is said in the lesson bar's first row and
+    // the status line goes: its row, mostly empty, took the caption's room at 200%.
+    LessonBar *bar = m_lessons->bar();
+    const bool inBar = m_presentation && bar->isVisibleTo(this);
+    statusBar()->setVisible(!inBar);
+    bar->setMessage(inBar ? m_status->message() : QString());
+}
+
 void MainWindow::presentationChanged()
 {
     // The status line's fixed places are fragments at 200% on a projector: in presentation
@@ -223,6 +235,7 @@ void MainWindow::presentationChanged()
                            static_cast<QWidget *>(m_status->meshLabel()),
                            static_cast<QWidget *>(m_status->driverLabel())})
         place->setVisible(!m_presentation);
+    placeStatusMessage();
     if (m_presentation)
         setPresentationPanels(m_panelsAction->isChecked());
     else

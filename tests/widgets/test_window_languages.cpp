@@ -15,6 +15,7 @@
 
 #include <QAbstractButton>
 #include <QDockWidget>
+#include <QLabel>
 #include <QMenuBar>
 #include <QScrollArea>
 #include <QTabBar>
@@ -252,6 +253,22 @@ private slots:
             QCOMPARE(check, QString("Arbeit prüfen"));
         if (language == "pt")
             QCOMPARE(dock("probeDock")->windowTitle(), QString("Sonda"));
+    }
+
+    // The exercise sheet's step 9 in German on a 1024x768 screen: its caption whole in the
+    // column between panels and editor, not three lines and a scrollbar (issue 49, item 14).
+    void aLongGermanCaptionIsWholeAt1024()
+    {
+        showIn("de");
+        m_window->fitToScreen(QRect(0, 0, 1024, 744));
+        QVERIFY(m_window->lessonActions()->open(":/lessons/exercise_sheet.json", 8));
+        settle();
+        const QLabel *caption = m_window->lessonActions()->bar()->captionLabel();
+        QVERIFY(caption->text().contains("Arbeit"));
+        QVERIFY2(caption->height() <= caption->parentWidget()->height() + 1,
+                 qPrintable(QString("caption %1 px in %2 px")
+                                .arg(caption->height())
+                                .arg(caption->parentWidget()->height())));
     }
 
     // The trial helper tries a program in its own process: a refusal it writes (an endless

@@ -8,12 +8,16 @@
 #include "compare.h"
 #include "difference_scale_labels.h"
 #include "exercise_panel.h"
+#include "lesson_actions.h"
+#include "lesson_bar.h"
 #include "screen_blank.h"
+#include "status_line.h"
 #include "work_check.h"
 
 #include <QDockWidget>
 #include <QFontInfo>
 #include <QJsonDocument>
+#include <QLabel>
 #include <QStatusBar>
 #include <QTabBar>
 
@@ -378,6 +382,71 @@ private slots:
         QCOMPARE(viewShare(), whole);
         key(Qt::Key_Escape);
         QVERIFY(!m_window->isPresentation());
+    }
+
+    // The probe read from the back row (issue 49, item 15): at 200% on a 1024x768 projector
+    // the equation has the panel's size, twice the 100% one, not the 100% size; each value
+    // stands whole under its name (not wrapped beside a column of names); nothing scrolls
+    // sideways, the long products of the equation broken after a dot.
+    void theProbeScalesWithThePresentation()
+    {
+        const int pixels100 = QFontInfo(m_window->probePanel()->font()).pixelSize();
+        presentAt(QSize(1024, 768), 2.0);
+        key(Qt::Key_F6);
+        QDockWidget *probe = m_window->findChild<QDockWidget *>("probeDock");
+        QVERIFY(probe);
+        probe->raise();
+        settle();
+        probeCentre();
+        settle();
+        const QLabel *text = m_window->probePanel()->textLabel();
+        const QString html = text->text();
+        const int pixels = QFontInfo(m_window->probePanel()->font()).pixelSize();
+        QVERIFY2(pixels >= 2 * pixels100 - 1, qPrintable(QString("%1 px").arg(pixels)));
+        QVERIFY2(html.contains(QString("font-size: %1px").arg(pixels)), qPrintable(html));
+        QVERIFY(html.contains("<tr><td><b>N</b></td></tr><tr><td style='padding-left: 1em'>("));
+        const QString sideways = docksNeedingSideways(*m_window);
+        QVERIFY2(sideways.isEmpty(), qPrintable("horizontal scrollbar in " + sideways));
+        // Back at 100% in a window, names and values side by side again.
+        key(Qt::Key_Escape);
+        settle();
+        QVERIFY(!m_window->isPresentation());
+        m_window->probePanel()->probeAt(QPoint(-1, -1)); // nothing there: cleared
+        probeCentre();
+        settle();
+        QVERIFY(text->text().contains("<tr><td><b>N</b></td><td>("));
+    }
+
+    // A lesson presented at 200% on a 1024x768 projector: the status line's row (empty but
+    // for a message now and then) goes, its message said in the lesson bar's first row, and
+    // no shipped caption scrolls (issue 49, item 14; the German sheet at 100%:
+    // test_window_languages).
+    void aPresentedLessonGivesTheCaptionTheStatusRow()
+    {
+        m_settings->setValue(window_settings::kAnimateLessonsKey, false);
+        LessonActions *lessons = m_window->lessonActions();
+        LessonBar *bar = lessons->bar();
+        auto captionScrolls = [bar] {
+            const QLabel *caption = bar->captionLabel();
+            return caption->height() > caption->parentWidget()->height() + 1;
+        };
+        QVERIFY(lessons->open(":/lessons/slides.json"));
+        settle();
+        presentAt(QSize(1024, 768), 2.0);
+        QVERIFY(!m_window->statusBar()->isVisible());
+        m_window->statusLine()->showMessage("Ambient off");
+        settle();
+        QCOMPARE(bar->message(), QString("Ambient off"));
+        for (int step = 0; step < int(lessons->lesson().steps.size()); ++step) {
+            lessons->goTo(step);
+            settle();
+            QVERIFY2(!captionScrolls(), qPrintable(QString("step %1 scrolls").arg(step + 1)));
+        }
+        key(Qt::Key_Escape);
+        QVERIFY(!m_window->isPresentation());
+        settle();
+        QVERIFY(m_window->statusBar()->isVisible());
+        QVERIFY(bar->message().isEmpty());
     }
 
     // At 200% on a 1024x768 and a 1280x720 projector the view keeps at least 60% of the
