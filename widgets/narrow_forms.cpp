@@ -121,8 +121,7 @@ void WrapRow::setGeometry(const QRect &rect)
             shown.push_back(item);
     if (shown.empty())
         return;
-    m_stacked = stacks(rect.width());
-    if (m_stacked) {
+    if (stacks(rect.width())) {
         int y = rect.y();
         for (QLayoutItem *item : shown) {
             const bool fills =
@@ -194,11 +193,6 @@ int WrapCheckBox::indicatorWidth() const
     initStyleOption(&option);
     return style()->pixelMetric(QStyle::PM_IndicatorWidth, &option, this) +
            style()->pixelMetric(QStyle::PM_CheckBoxLabelSpacing, &option, this);
-}
-
-QSize WrapCheckBox::sizeHint() const
-{
-    return QCheckBox::sizeHint();
 }
 
 QSize WrapCheckBox::minimumSizeHint() const

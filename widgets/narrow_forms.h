@@ -25,7 +25,6 @@ public:
     ~WrapRow() override;
 
     void setMayStack(bool on);
-    bool isStacked() const { return m_stacked; }
 
     void addItem(QLayoutItem *item) override;
     int count() const override { return int(m_items.size()); }
@@ -46,7 +45,6 @@ private:
     QList<QLayoutItem *> m_items;
     Room m_room;
     bool m_mayStack = false;
-    bool m_stacked = false;
 };
 
 // A check box whose text wraps where the form is narrower than it.
@@ -58,7 +56,6 @@ public:
 
     void setMayWrap(bool on);
 
-    QSize sizeHint() const override;
     QSize minimumSizeHint() const override;
     bool hasHeightForWidth() const override { return m_mayWrap; }
     int heightForWidth(int width) const override;
