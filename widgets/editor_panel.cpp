@@ -52,7 +52,7 @@ QString stageLabel(ShaderStage stage)
 
 QString programDisplayName(const ShaderOrigin &origin)
 {
-    QString name = origin.name;
+    QString name = origin.names.isEmpty() ? origin.name : localized(origin.names, lessonLanguage());
     // A preset's name is its key (scene files and settings keep it in English): shown, it is
     // the preset's title.
     if (origin.kind == ShaderOrigin::Kind::Preset)
@@ -72,14 +72,16 @@ EditorPanel::EditorPanel(ShaderDocument *document, QWidget *parent)
     layout->setContentsMargins(4, 4, 4, 4);
 
     auto *bar = new QHBoxLayout;
-    auto *presetButton = new QToolButton(this);
+    auto *presetButton = m_presetButton = new QToolButton(this);
     presetButton->setText(tr("Presets"));
+    presetButton->setAccessibleName(presetButton->text()); // also when it shows its symbol
     presetButton->setPopupMode(QToolButton::InstantPopup);
     m_presets = new QMenu(presetButton);
     for (const Preset &p : presets())
         m_presets->addAction(p.title(), this, [this, &p] { m_document->loadPreset(p); });
     presetButton->setMenu(m_presets);
-    presetButton->setToolTip(tr("The built-in programs, the slides' shaders as printed, toon"));
+    presetButton->setToolTip(
+        tr("Presets: the built-in programs, the slides' shaders as printed, toon"));
 
     auto *compile = new QToolButton(this);
     compile->setText(tr("Compile"));
@@ -129,6 +131,7 @@ EditorPanel::EditorPanel(ShaderDocument *document, QWidget *parent)
     // Presets sit before the stage tabs, where they cost no row and leave the bar narrow
     // (the editor fits beside a 1024-pixel screen's view with both tabs shown).
     m_tabs->setCornerWidget(presetButton, Qt::TopLeftCorner);
+    m_tabs->installEventFilter(this); // resized: the preset button's word may not fit
     m_list = new QListWidget(this);
     m_list->setToolTip(tr("Click a message to go to its line"));
     // The status line sits above the messages; its text never widens the dock (a dock that
@@ -197,7 +200,27 @@ bool EditorPanel::eventFilter(QObject *watched, QEvent *event)
             return true;
         }
     }
+    if (watched == m_tabs && event->type() == QEvent::Resize)
+        fitPresetButton();
     return QWidget::eventFilter(watched, event);
+}
+
+// The Presets button and both stage tabs share one row. In a narrow dock (a 1024-pixel
+// screen, Portuguese's "Predefinições" before "Vértices" and "Fragmentos") the button is its
+// menu symbol alone, named in full in its tooltip, so that the tabs stay whole.
+void EditorPanel::fitPresetButton()
+{
+    const QString word = tr("Presets");
+    const QString symbol = QString::fromUtf8("\u2630");
+    QToolButton probe;
+    probe.setText(word);
+    probe.setPopupMode(m_presetButton->popupMode());
+    probe.setMenu(m_presets);
+    probe.setFont(m_presetButton->font());
+    const int needed = m_tabs->tabBar()->sizeHint().width() + probe.sizeHint().width();
+    const QString text = needed <= m_tabs->width() ? word : symbol;
+    if (m_presetButton->text() != text)
+        m_presetButton->setText(text);
 }
 
 ShaderEditor *EditorPanel::editor(ShaderStage stage) const
@@ -262,6 +285,7 @@ void EditorPanel::updateTitles()
         m_tabs->setTabText(i, title);
         m_tabs->setTabToolTip(i, path);
     }
+    fitPresetButton();
 }
 
 void EditorPanel::saveState(QSettings &settings) const

@@ -18,6 +18,7 @@ class QMenu;
 class QSettings;
 class QSpinBox;
 class QTabWidget;
+class QToolButton;
 
 namespace lb {
 
@@ -85,7 +86,8 @@ signals:
     void compileRequested(const QString &vertex, const QString &fragment);
 
 protected:
-    bool eventFilter(QObject *watched, QEvent *event) override; // Esc in the find field
+    // Esc in the find field; the stage tabs' width (fitPresetButton)
+    bool eventFilter(QObject *watched, QEvent *event) override;
 
 private:
     void typed(ShaderStage stage);
@@ -93,6 +95,7 @@ private:
     void showDiskChange(ShaderStage stage, ShaderDocument::DiskChange change, const QString &path);
     void jumpTo(int row);
     void updateTitles();
+    void fitPresetButton();
     void applyZoom();
     void fitMessages();
     int scaleShare() const; // the points the UI scale adds
@@ -103,6 +106,7 @@ private:
     ShaderEditor *m_fragment;
     QListWidget *m_list;
     QMenu *m_presets;
+    QToolButton *m_presetButton;
     QCheckBox *m_live;
     QSpinBox *m_delay;
     QLabel *m_status;

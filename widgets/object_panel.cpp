@@ -52,8 +52,10 @@ ObjectPanel::ObjectPanel(SceneDocument *document, QWidget *parent)
                 return;
             ObjectSettings &o = s.objects[std::size_t(row)];
             o.visible = visible;
-            if (name != displayName(o)) // the shown name typed again keeps following the shape
-                o.name = name;
+            // The shown name typed again keeps following the shape (or the file's languages); a
+            // new one is the user's, in the language typed.
+            if (name != displayName(o))
+                o.name = plainText(name);
         });
         refreshNow(); // an emptied name shows the shape's or file's again
     });
@@ -79,7 +81,7 @@ ObjectPanel::ObjectPanel(SceneDocument *document, QWidget *parent)
             // The copy's name is the user's to edit, saved as shown: in the user's language.
             if (!copy.name.isEmpty())
                 //: the name of a duplicated object; %1 the original's name
-                copy.name = tr("%1 copy").arg(copy.name);
+                copy.name = plainText(tr("%1 copy").arg(displayName(copy)));
             addObject(s, copy);
         });
     });

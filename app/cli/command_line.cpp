@@ -164,7 +164,8 @@ std::optional<ProgramText> CommandLine::program() const
     if (programFromScene)
         return sceneFile->program;
     if (hasUserProgram())
-        return ProgramText{QFileInfo(vertexPath).completeBaseName(), vertexSource, fragmentSource};
+        return ProgramText{plainText(QFileInfo(vertexPath).completeBaseName()), vertexSource,
+                           fragmentSource};
     return std::nullopt;
 }
 

@@ -2,9 +2,105 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="de_DE">
 <context>
+    <name>QFileDialog</name>
+    <message>
+        <location filename="../../app/common/qt_standard_words.cpp" line="+47"/>
+        <source>Look in:</source>
+        <translation>Suchen in:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Go back</source>
+        <translation>Zurück</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Go forward</source>
+        <translation>Vor</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Go to the parent directory</source>
+        <translation>Gehe zum übergeordneten Verzeichnis</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Create a New Folder</source>
+        <translation>Neuen Ordner erstellen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Change to list view mode</source>
+        <translation>Wechsle zu Listenansicht</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Change to detail view mode</source>
+        <translation>Wechsle zu Detailansicht</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Sidebar</source>
+        <translation>Seitenleiste</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>List of places and bookmarks</source>
+        <translation>Liste der Orte und Lesezeichen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Files</source>
+        <translation>Dateien</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Recent Places</source>
+        <translation>Zuletzt besucht</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;New Folder</source>
+        <translation>&amp;Neues Verzeichnis</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Delete</source>
+        <translation>Löschen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Remove</source>
+        <translation>Löschen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Choose</source>
+        <translation>&amp;Auswählen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>All files (*)</source>
+        <translation>Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Are you sure you want to delete &apos;%1&apos;?</source>
+        <translation>Sind Sie sicher, dass Sie &apos;%1&apos; löschen möchten?</translation>
+    </message>
+</context>
+<context>
+    <name>QFileSystemModel</name>
+    <message>
+        <location line="+1"/>
+        <source>Computer</source>
+        <translation>Computer</translation>
+    </message>
+</context>
+<context>
     <name>QPlatformTheme</name>
     <message>
-        <location filename="../../app/common/qt_standard_words.cpp" line="+12"/>
+        <location line="-47"/>
         <source>OK</source>
         <translation>OK</translation>
     </message>
@@ -95,6 +191,69 @@
     </message>
 </context>
 <context>
+    <name>QShortcut</name>
+    <message>
+        <location line="+4"/>
+        <source>Space</source>
+        <translation>Leertaste</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Backspace</source>
+        <translation>Rücktaste</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>PgUp</source>
+        <translation>Bild aufwärts</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>PgDown</source>
+        <translation>Bild abwärts</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Left</source>
+        <translation>Links</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Right</source>
+        <translation>Rechts</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Up</source>
+        <translation>Hoch</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Down</source>
+        <translation>Herunter</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Ins</source>
+        <translation>Einfg</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Del</source>
+        <translation>Entf</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Return</source>
+        <translation>Return</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Print</source>
+        <translation>Druck</translation>
+    </message>
+</context>
+<context>
     <name>lb::BindingPanel</name>
     <message>
         <location filename="../../widgets/binding_panel.cpp" line="+24"/>
@@ -128,7 +287,7 @@
         <translation>Ein Vertex-Eingang wird über seine location gespeist: layout(location = N) oder der Platz, den sein Name sagt (aPos, a_normal, inTexCoord...).</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>The built-in program draws: its inputs are the panels&apos;. A program of your own shows each input here with what feeds it, and you can choose what does.</source>
         <translation>Das eingebaute Programm zeichnet: seine Eingänge sind die der Panels. Ein eigenes Programm zeigt hier jeden Eingang mit dem, was ihn speist, und Sie können es wählen.</translation>
     </message>
@@ -714,13 +873,14 @@
     </message>
     <message>
         <location line="+11"/>
+        <location line="+137"/>
         <source>Presets</source>
         <translation>Vorlagen</translation>
     </message>
     <message>
-        <location line="+6"/>
-        <source>The built-in programs, the slides&apos; shaders as printed, toon</source>
-        <translation>Die eingebauten Programme, die Shader der Folien wie abgedruckt, Toon</translation>
+        <location line="-129"/>
+        <source>Presets: the built-in programs, the slides&apos; shaders as printed, toon</source>
+        <translation>Vorlagen: die eingebauten Programme, die Shader der Folien wie abgedruckt, Toon</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -761,23 +921,23 @@
     </message>
     <message>
         <location line="+19"/>
-        <location line="+127"/>
+        <location line="+148"/>
         <source>Vertex</source>
         <translation>Vertex</translation>
     </message>
     <message>
-        <location line="-126"/>
-        <location line="+129"/>
+        <location line="-147"/>
+        <location line="+150"/>
         <source>Fragment</source>
         <translation>Fragment</translation>
     </message>
     <message>
-        <location line="-124"/>
+        <location line="-144"/>
         <source>Click a message to go to its line</source>
         <translation>Klicken Sie auf eine Meldung, um zu ihrer Zeile zu springen</translation>
     </message>
     <message>
-        <location line="+105"/>
+        <location line="+125"/>
         <source>%1 is gone from the disk; your text is kept</source>
         <translation>%1 ist nicht mehr auf der Festplatte; Ihr Text bleibt erhalten</translation>
     </message>
@@ -799,7 +959,7 @@
         <translation>Fragment - %1</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+31"/>
         <source>Your unsaved shader edits from the last session are back</source>
         <translation>Ihre ungespeicherten Shader-Änderungen aus der letzten Sitzung sind wieder da</translation>
     </message>
@@ -1342,7 +1502,7 @@
         <translation>die Lektion</translation>
     </message>
     <message>
-        <location filename="../../render/model/scene/scene_file.cpp" line="+185"/>
+        <location filename="../../render/model/scene/scene_file.cpp" line="+191"/>
         <location line="+15"/>
         <source>a scene file</source>
         <translation>eine Szenendatei</translation>
@@ -1353,7 +1513,7 @@
         <translation>die Szene</translation>
     </message>
     <message>
-        <location filename="../../render/model/scene/shader_document.cpp" line="+19"/>
+        <location filename="../../render/model/scene/shader_document.cpp" line="+21"/>
         <source>a shader</source>
         <translation>ein Shader</translation>
     </message>
@@ -2102,7 +2262,7 @@
 <context>
     <name>lb::LessonBar</name>
     <message>
-        <location filename="../../widgets/lesson_bar.cpp" line="+42"/>
+        <location filename="../../widgets/lesson_bar.cpp" line="+44"/>
         <source>The previous step (PageUp, Left)</source>
         <translation>Vorheriger Schritt (Bild auf, Links)</translation>
     </message>
@@ -2132,7 +2292,7 @@
         <translation>Lektion schließen (die Szene bleibt)</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+46"/>
         <source>Step %1 of %2</source>
         <extracomment>where the class is in the lesson: step %1 of %2 steps</extracomment>
         <translation>Schritt %1 von %2</translation>
@@ -2143,7 +2303,7 @@
         <translation>Dieser Schritt kann nicht angezeigt werden; die Szene bleibt, wie sie war. %1</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="+65"/>
         <source>[picture]</source>
         <extracomment>in a lesson&apos;s caption, where the markdown had an image (never shown there)</extracomment>
         <translation>[Bild]</translation>
@@ -2152,12 +2312,13 @@
 <context>
     <name>lb::LightPanel</name>
     <message>
-        <location filename="../../widgets/light_panel.cpp" line="+33"/>
+        <location filename="../../widgets/light_panel.cpp" line="+35"/>
+        <location line="+189"/>
         <source>Light %1</source>
         <translation>Licht %1</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-186"/>
         <source>Up to four lights; their terms add up. A shader that declares one light (not an array) reads light 1</source>
         <translation>Bis zu vier Lichter; ihre Anteile addieren sich. Ein Shader, der nur ein Licht deklariert (kein Array), liest Licht 1</translation>
     </message>
@@ -2510,7 +2671,7 @@
         <translation>Shader-Dateien</translation>
     </message>
     <message>
-        <location line="+70"/>
+        <location line="+72"/>
         <source>Unsaved shader edits from the last session are back</source>
         <translation>Ungespeicherte Shader-Änderungen aus der letzten Sitzung sind wieder da</translation>
     </message>
@@ -3008,7 +3169,7 @@
         <translation>&amp;Fenster an den Bildschirm anpassen</translation>
     </message>
     <message>
-        <location filename="../../app/window/main_window_presentation.cpp" line="+42"/>
+        <location filename="../../app/window/main_window_presentation.cpp" line="+44"/>
         <source>&amp;Presentation Mode</source>
         <translation>&amp;Präsentationsmodus</translation>
     </message>
@@ -3466,7 +3627,7 @@
         <translation>Die Objekte der Szene, jedes mit eigenem Mesh, eigener Transformation und eigenem Material: Wählen Sie eines aus, um es hier und im Bereich „Material“ zu bearbeiten (oder klicken Sie es in der Ansicht an). Haken entfernen zum Ausblenden; Doppelklick zum Umbenennen</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+32"/>
         <source>Add</source>
         <translation>Hinzufügen</translation>
     </message>
@@ -3501,7 +3662,7 @@
         <translation>Entfernt das ausgewählte Objekt (das letzte bleibt); Lichter in seinen Objektkoordinaten gehen an das Objekt davor</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+10"/>
         <source>Cube (flat faces)</source>
         <translation>Würfel (flache Seiten)</translation>
     </message>
@@ -3536,7 +3697,7 @@
         <translation>Mesh-Datei öffnen: jedes Format, das Assimp liest (Strg+M; oder eine Datei auf dem Fenster ablegen)</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>Shape</source>
         <translation>Form</translation>
     </message>
@@ -3646,7 +3807,7 @@
         <translation>Die ambiente, diffuse und spiegelnde Farbe und der Glanzexponent der Mesh-Datei ersetzen Ka, Kd, Ks und den Glanzexponenten: jetzt und bei jedem Laden einer Datei</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+24"/>
         <source>Rotation about %1 in degrees (model matrix; applied X, then Y, then Z)</source>
         <translation>Drehung um %1 in Grad (Modellmatrix; angewendet X, dann Y, dann Z)</translation>
     </message>
@@ -3879,7 +4040,7 @@
         <translation>Dieses Diagramm als PNG- oder SVG-Bild oder seine Stützstellen als CSV schreiben</translation>
     </message>
     <message>
-        <location line="+90"/>
+        <location line="+91"/>
         <source>No point probed: light %1&apos;s lobe where N faces the camera at the selected object&apos;s centre. Ctrl+click the surface to plot it at a point.</source>
         <translation>Kein Punkt gemessen: die Keule von Licht %1 dort, wo N in der Mitte des ausgewählten Objekts zur Kamera zeigt. Strg+Klick auf die Oberfläche zeichnet sie an einem Punkt.</translation>
     </message>
@@ -4088,7 +4249,7 @@
 <context>
     <name>lb::ProbePanel</name>
     <message>
-        <location filename="../../widgets/probe_panel.cpp" line="+63"/>
+        <location filename="../../widgets/probe_panel.cpp" line="+68"/>
         <source>Copy the Equation</source>
         <translation>Gleichung kopieren</translation>
     </message>
@@ -4103,12 +4264,12 @@
         <translation>Strg+Klick (oder Umschalt+Klick) auf die Oberfläche misst einen Punkt mit der Sonde: die Vektoren, N·L, den Winkel des spiegelnden Anteils und die drei Anteile, neben dem Pixel, das die GPU gezeichnet hat. Esc entfernt ihn.</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+30"/>
         <source>No surface at (%1, %2).</source>
         <translation>Keine Oberfläche bei (%1, %2).</translation>
     </message>
     <message>
-        <location line="+69"/>
+        <location line="+87"/>
         <source>pixel (%1, %2), %3, triangle %4</source>
         <extracomment>%1, %2 the pixel; %3 the object&apos;s name; %4 the triangle&apos;s number</extracomment>
         <translation>Pixel (%1, %2), %3, Dreieck %4</translation>
@@ -4284,12 +4445,12 @@
         <translation>%1 von 255</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+13"/>
         <source>The equation at this point</source>
         <translation>Die Gleichung an diesem Punkt</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+8"/>
         <source>This point is drawn by %1 (side B), which is itself the reference: it is compared with nothing. The numbers above are the built-in model&apos;s, which that program need not follow.</source>
         <translation>Diesen Punkt zeichnet %1 (Seite B), und Seite B ist selbst die Referenz: Er wird mit nichts verglichen. Die Zahlen oben stammen aus dem eingebauten Modell, dem dieses Programm nicht folgen muss.</translation>
     </message>
@@ -4786,12 +4947,12 @@
 <context>
     <name>lb::SceneFile</name>
     <message>
-        <location filename="../../render/model/scene/scene_file.cpp" line="-161"/>
+        <location filename="../../render/model/scene/scene_file.cpp" line="-163"/>
         <source>not true or false; read as false</source>
         <translation>nicht true oder false; als false gelesen</translation>
     </message>
     <message>
-        <location line="+56"/>
+        <location line="+58"/>
         <source>%1: not a scene file: %2 at byte %3</source>
         <extracomment>%1 a path, %2 Qt&apos;s JSON parser&apos;s reason</extracomment>
         <translation>%1: keine Szenendatei: %2 bei Byte %3</translation>
@@ -4869,7 +5030,7 @@
         <translation>kc, kl und kq alle 0</translation>
     </message>
     <message>
-        <location line="+81"/>
+        <location line="+84"/>
         <source>not one of the values the scene feeds (%1)</source>
         <translation>keiner der Werte, die die Szene speist (%1)</translation>
     </message>
@@ -5214,7 +5375,7 @@
 <context>
     <name>lb::ShadingPanel</name>
     <message>
-        <location filename="../../widgets/shading_panel.cpp" line="+25"/>
+        <location filename="../../widgets/shading_panel.cpp" line="+27"/>
         <source>Gouraud (per vertex)</source>
         <translation>Gouraud (pro Vertex)</translation>
     </message>
@@ -5384,7 +5545,7 @@
         <translation>Is·Ks·(R·V oder N·H)^n: uEnableSpecular (Taste S)</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+14"/>
         <source>Terms</source>
         <extracomment>the row of the ambient, diffuse and specular terms&apos; switches</extracomment>
         <translation>Anteile</translation>
@@ -5405,7 +5566,7 @@
         <translation>&lt;b&gt;Vergleich&lt;/b&gt; von Seite A mit Seite B</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Side A is the program on screen (the editor&apos;s); side B is the built-in program with the choices below, a shader pair from files, or an open exercise&apos;s reference; one camera</source>
         <translation>Seite A ist das Programm auf dem Bildschirm (das des Editors); Seite B ist das eingebaute Programm mit den Einstellungen unten, ein Shader-Paar aus Dateien oder die Referenz einer geöffneten Übung; eine gemeinsame Kamera</translation>
     </message>
@@ -5561,7 +5722,7 @@
 <context>
     <name>lb::TextureControls</name>
     <message>
-        <location filename="../../widgets/texture_controls.cpp" line="+27"/>
+        <location filename="../../widgets/texture_controls.cpp" line="+28"/>
         <source>Texture</source>
         <translation>Textur</translation>
     </message>
@@ -5571,7 +5732,7 @@
         <translation>uEnableTexture: ambienten und diffusen Anteil mit der Textur (uSampler) multiplizieren: die Bilddatei, sonst die diffuse Textur der Mesh-Datei, sonst das Schachbrettmuster</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source>Image...</source>
         <translation>Bild...</translation>
     </message>

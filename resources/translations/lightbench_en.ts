@@ -2,9 +2,105 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="en">
 <context>
+    <name>QFileDialog</name>
+    <message>
+        <location filename="../../app/common/qt_standard_words.cpp" line="+47"/>
+        <source>Look in:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Go back</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Go forward</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Go to the parent directory</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Create a New Folder</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Change to list view mode</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Change to detail view mode</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Sidebar</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>List of places and bookmarks</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Files</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Recent Places</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;New Folder</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Delete</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Remove</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Choose</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>All files (*)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Are you sure you want to delete &apos;%1&apos;?</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>QFileSystemModel</name>
+    <message>
+        <location line="+1"/>
+        <source>Computer</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>QPlatformTheme</name>
     <message>
-        <location filename="../../app/common/qt_standard_words.cpp" line="+12"/>
+        <location line="-47"/>
         <source>OK</source>
         <translation type="unfinished"></translation>
     </message>
@@ -95,6 +191,69 @@
     </message>
 </context>
 <context>
+    <name>QShortcut</name>
+    <message>
+        <location line="+4"/>
+        <source>Space</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Backspace</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>PgUp</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>PgDown</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Left</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Right</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Up</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Down</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Ins</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Del</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Return</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Print</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>lb::BindingPanel</name>
     <message>
         <location filename="../../widgets/binding_panel.cpp" line="+24"/>
@@ -128,7 +287,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>The built-in program draws: its inputs are the panels&apos;. A program of your own shows each input here with what feeds it, and you can choose what does.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -714,12 +873,13 @@
     </message>
     <message>
         <location line="+11"/>
+        <location line="+137"/>
         <source>Presets</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+6"/>
-        <source>The built-in programs, the slides&apos; shaders as printed, toon</source>
+        <location line="-129"/>
+        <source>Presets: the built-in programs, the slides&apos; shaders as printed, toon</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -761,23 +921,23 @@
     </message>
     <message>
         <location line="+19"/>
-        <location line="+127"/>
+        <location line="+148"/>
         <source>Vertex</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-126"/>
-        <location line="+129"/>
+        <location line="-147"/>
+        <location line="+150"/>
         <source>Fragment</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-124"/>
+        <location line="-144"/>
         <source>Click a message to go to its line</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+105"/>
+        <location line="+125"/>
         <source>%1 is gone from the disk; your text is kept</source>
         <translation type="unfinished"></translation>
     </message>
@@ -799,7 +959,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+31"/>
         <source>Your unsaved shader edits from the last session are back</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1342,7 +1502,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../render/model/scene/scene_file.cpp" line="+185"/>
+        <location filename="../../render/model/scene/scene_file.cpp" line="+191"/>
         <location line="+15"/>
         <source>a scene file</source>
         <translation type="unfinished"></translation>
@@ -1353,7 +1513,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../render/model/scene/shader_document.cpp" line="+19"/>
+        <location filename="../../render/model/scene/shader_document.cpp" line="+21"/>
         <source>a shader</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2096,7 +2256,7 @@
 <context>
     <name>lb::LessonBar</name>
     <message>
-        <location filename="../../widgets/lesson_bar.cpp" line="+42"/>
+        <location filename="../../widgets/lesson_bar.cpp" line="+44"/>
         <source>The previous step (PageUp, Left)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2126,7 +2286,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+46"/>
         <source>Step %1 of %2</source>
         <extracomment>where the class is in the lesson: step %1 of %2 steps</extracomment>
         <translation type="unfinished"></translation>
@@ -2137,7 +2297,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="+65"/>
         <source>[picture]</source>
         <extracomment>in a lesson&apos;s caption, where the markdown had an image (never shown there)</extracomment>
         <translation type="unfinished"></translation>
@@ -2146,12 +2306,13 @@
 <context>
     <name>lb::LightPanel</name>
     <message>
-        <location filename="../../widgets/light_panel.cpp" line="+33"/>
+        <location filename="../../widgets/light_panel.cpp" line="+35"/>
+        <location line="+189"/>
         <source>Light %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-186"/>
         <source>Up to four lights; their terms add up. A shader that declares one light (not an array) reads light 1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2504,7 +2665,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+70"/>
+        <location line="+72"/>
         <source>Unsaved shader edits from the last session are back</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3001,7 +3162,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../app/window/main_window_presentation.cpp" line="+42"/>
+        <location filename="../../app/window/main_window_presentation.cpp" line="+44"/>
         <source>&amp;Presentation Mode</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3459,7 +3620,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+32"/>
         <source>Add</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3494,7 +3655,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+10"/>
         <source>Cube (flat faces)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3529,7 +3690,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>Shape</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3639,7 +3800,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+24"/>
         <source>Rotation about %1 in degrees (model matrix; applied X, then Y, then Z)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3872,7 +4033,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+90"/>
+        <location line="+91"/>
         <source>No point probed: light %1&apos;s lobe where N faces the camera at the selected object&apos;s centre. Ctrl+click the surface to plot it at a point.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4080,7 +4241,7 @@
 <context>
     <name>lb::ProbePanel</name>
     <message>
-        <location filename="../../widgets/probe_panel.cpp" line="+63"/>
+        <location filename="../../widgets/probe_panel.cpp" line="+68"/>
         <source>Copy the Equation</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4095,12 +4256,12 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+30"/>
         <source>No surface at (%1, %2).</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+69"/>
+        <location line="+87"/>
         <source>pixel (%1, %2), %3, triangle %4</source>
         <extracomment>%1, %2 the pixel; %3 the object&apos;s name; %4 the triangle&apos;s number</extracomment>
         <translation type="unfinished"></translation>
@@ -4276,12 +4437,12 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+13"/>
         <source>The equation at this point</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+8"/>
         <source>This point is drawn by %1 (side B), which is itself the reference: it is compared with nothing. The numbers above are the built-in model&apos;s, which that program need not follow.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4776,12 +4937,12 @@
 <context>
     <name>lb::SceneFile</name>
     <message>
-        <location filename="../../render/model/scene/scene_file.cpp" line="-161"/>
+        <location filename="../../render/model/scene/scene_file.cpp" line="-163"/>
         <source>not true or false; read as false</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+56"/>
+        <location line="+58"/>
         <source>%1: not a scene file: %2 at byte %3</source>
         <extracomment>%1 a path, %2 Qt&apos;s JSON parser&apos;s reason</extracomment>
         <translation type="unfinished"></translation>
@@ -4859,7 +5020,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+81"/>
+        <location line="+84"/>
         <source>not one of the values the scene feeds (%1)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5202,7 +5363,7 @@
 <context>
     <name>lb::ShadingPanel</name>
     <message>
-        <location filename="../../widgets/shading_panel.cpp" line="+25"/>
+        <location filename="../../widgets/shading_panel.cpp" line="+27"/>
         <source>Gouraud (per vertex)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5372,7 +5533,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+14"/>
         <source>Terms</source>
         <extracomment>the row of the ambient, diffuse and specular terms&apos; switches</extracomment>
         <translation type="unfinished"></translation>
@@ -5393,7 +5554,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Side A is the program on screen (the editor&apos;s); side B is the built-in program with the choices below, a shader pair from files, or an open exercise&apos;s reference; one camera</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5549,7 +5710,7 @@
 <context>
     <name>lb::TextureControls</name>
     <message>
-        <location filename="../../widgets/texture_controls.cpp" line="+27"/>
+        <location filename="../../widgets/texture_controls.cpp" line="+28"/>
         <source>Texture</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5559,7 +5720,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source>Image...</source>
         <translation type="unfinished"></translation>
     </message>

@@ -2,9 +2,105 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="pt_PT">
 <context>
+    <name>QFileDialog</name>
+    <message>
+        <location filename="../../app/common/qt_standard_words.cpp" line="+47"/>
+        <source>Look in:</source>
+        <translation>Procurar em:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Go back</source>
+        <translation>Recuar</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Go forward</source>
+        <translation>Avançar</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Go to the parent directory</source>
+        <translation>Ir para a pasta acima</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Create a New Folder</source>
+        <translation>Criar uma pasta nova</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Change to list view mode</source>
+        <translation>Mostrar em lista</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Change to detail view mode</source>
+        <translation>Mostrar com detalhes</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Sidebar</source>
+        <translation>Barra lateral</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>List of places and bookmarks</source>
+        <translation>Lista de locais e marcadores</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Files</source>
+        <translation>Ficheiros</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Recent Places</source>
+        <translation>Locais recentes</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;New Folder</source>
+        <translation>&amp;Nova pasta</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Delete</source>
+        <translation>Apagar</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Remove</source>
+        <translation>Remover</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Choose</source>
+        <translation>&amp;Escolher</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>All files (*)</source>
+        <translation>Todos os ficheiros (*)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Are you sure you want to delete &apos;%1&apos;?</source>
+        <translation>Deseja mesmo apagar &apos;%1&apos;?</translation>
+    </message>
+</context>
+<context>
+    <name>QFileSystemModel</name>
+    <message>
+        <location line="+1"/>
+        <source>Computer</source>
+        <translation>Computador</translation>
+    </message>
+</context>
+<context>
     <name>QPlatformTheme</name>
     <message>
-        <location filename="../../app/common/qt_standard_words.cpp" line="+12"/>
+        <location line="-47"/>
         <source>OK</source>
         <translation>OK</translation>
     </message>
@@ -95,6 +191,69 @@
     </message>
 </context>
 <context>
+    <name>QShortcut</name>
+    <message>
+        <location line="+4"/>
+        <source>Space</source>
+        <translation>Espaço</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Backspace</source>
+        <translation>Retrocesso</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>PgUp</source>
+        <translation>Page Up</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>PgDown</source>
+        <translation>Page Down</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Left</source>
+        <translation>Seta Esquerda</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Right</source>
+        <translation>Seta Direita</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Up</source>
+        <translation>Seta Acima</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Down</source>
+        <translation>Seta Abaixo</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Ins</source>
+        <translation>Insert</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Del</source>
+        <translation>Delete</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Return</source>
+        <translation>Enter</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Print</source>
+        <translation>Print Screen</translation>
+    </message>
+</context>
+<context>
     <name>lb::BindingPanel</name>
     <message>
         <location filename="../../widgets/binding_panel.cpp" line="+24"/>
@@ -128,7 +287,7 @@
         <translation>Uma entrada de vértice é alimentada pela sua location: layout(location = N), ou o lugar que o seu nome indica (aPos, a_normal, inTexCoord...).</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>The built-in program draws: its inputs are the panels&apos;. A program of your own shows each input here with what feeds it, and you can choose what does.</source>
         <translation>O programa incluído desenha: as suas entradas são as dos painéis. Um programa seu mostra aqui cada entrada com o que a alimenta, e pode escolher o que a alimenta.</translation>
     </message>
@@ -683,13 +842,13 @@
         <location filename="../../widgets/editor_panel.cpp" line="+41"/>
         <source>vertex</source>
         <extracomment>the shader stage a message is about, before its line:column</extracomment>
-        <translation>vertex</translation>
+        <translation>vértices</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>fragment</source>
         <extracomment>the shader stage a message is about, before its line:column</extracomment>
-        <translation>fragment</translation>
+        <translation>fragmentos</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -714,13 +873,14 @@
     </message>
     <message>
         <location line="+11"/>
+        <location line="+137"/>
         <source>Presets</source>
         <translation>Predefinições</translation>
     </message>
     <message>
-        <location line="+6"/>
-        <source>The built-in programs, the slides&apos; shaders as printed, toon</source>
-        <translation>Os programas integrados, os shaders dos diapositivos tal como impressos, toon</translation>
+        <location line="-129"/>
+        <source>Presets: the built-in programs, the slides&apos; shaders as printed, toon</source>
+        <translation>Predefinições: os programas integrados, os shaders dos diapositivos tal como impressos, toon</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -761,23 +921,23 @@
     </message>
     <message>
         <location line="+19"/>
-        <location line="+127"/>
+        <location line="+148"/>
         <source>Vertex</source>
-        <translation>Vertex</translation>
+        <translation>Vértices</translation>
     </message>
     <message>
-        <location line="-126"/>
-        <location line="+129"/>
+        <location line="-147"/>
+        <location line="+150"/>
         <source>Fragment</source>
-        <translation>Fragment</translation>
+        <translation>Fragmentos</translation>
     </message>
     <message>
-        <location line="-124"/>
+        <location line="-144"/>
         <source>Click a message to go to its line</source>
         <translation>Clique numa mensagem para ir para a sua linha</translation>
     </message>
     <message>
-        <location line="+105"/>
+        <location line="+125"/>
         <source>%1 is gone from the disk; your text is kept</source>
         <translation>%1 desapareceu do disco; o seu texto é mantido</translation>
     </message>
@@ -790,16 +950,16 @@
         <location line="+14"/>
         <source>Vertex - %1</source>
         <extracomment>the vertex shader&apos;s tab; %1 its file&apos;s name</extracomment>
-        <translation>Vertex - %1</translation>
+        <translation>Vértices - %1</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Fragment - %1</source>
         <extracomment>the fragment shader&apos;s tab; %1 its file&apos;s name</extracomment>
-        <translation>Fragment - %1</translation>
+        <translation>Fragmentos - %1</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+31"/>
         <source>Your unsaved shader edits from the last session are back</source>
         <translation>As suas edições dos shaders por guardar da última sessão foram recuperadas</translation>
     </message>
@@ -1342,7 +1502,7 @@
         <translation>a lição</translation>
     </message>
     <message>
-        <location filename="../../render/model/scene/scene_file.cpp" line="+185"/>
+        <location filename="../../render/model/scene/scene_file.cpp" line="+191"/>
         <location line="+15"/>
         <source>a scene file</source>
         <translation>um ficheiro de cena</translation>
@@ -1353,7 +1513,7 @@
         <translation>a cena</translation>
     </message>
     <message>
-        <location filename="../../render/model/scene/shader_document.cpp" line="+19"/>
+        <location filename="../../render/model/scene/shader_document.cpp" line="+21"/>
         <source>a shader</source>
         <translation>um shader</translation>
     </message>
@@ -2102,7 +2262,7 @@
 <context>
     <name>lb::LessonBar</name>
     <message>
-        <location filename="../../widgets/lesson_bar.cpp" line="+42"/>
+        <location filename="../../widgets/lesson_bar.cpp" line="+44"/>
         <source>The previous step (PageUp, Left)</source>
         <translation>O passo anterior (Page Up, Seta Esquerda)</translation>
     </message>
@@ -2132,7 +2292,7 @@
         <translation>Fechar a lição (a cena mantém-se)</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+46"/>
         <source>Step %1 of %2</source>
         <extracomment>where the class is in the lesson: step %1 of %2 steps</extracomment>
         <translation>Passo %1 de %2</translation>
@@ -2143,7 +2303,7 @@
         <translation>Este passo não pode ser mostrado; a cena está como estava. %1</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="+65"/>
         <source>[picture]</source>
         <extracomment>in a lesson&apos;s caption, where the markdown had an image (never shown there)</extracomment>
         <translation>[imagem]</translation>
@@ -2152,12 +2312,13 @@
 <context>
     <name>lb::LightPanel</name>
     <message>
-        <location filename="../../widgets/light_panel.cpp" line="+33"/>
+        <location filename="../../widgets/light_panel.cpp" line="+35"/>
+        <location line="+189"/>
         <source>Light %1</source>
         <translation>Luz %1</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-186"/>
         <source>Up to four lights; their terms add up. A shader that declares one light (not an array) reads light 1</source>
         <translation>Até quatro luzes; os seus termos somam-se. Um shader que declara uma só luz (não um array) lê a luz 1</translation>
     </message>
@@ -2510,7 +2671,7 @@
         <translation>Ficheiros de shader</translation>
     </message>
     <message>
-        <location line="+70"/>
+        <location line="+72"/>
         <source>Unsaved shader edits from the last session are back</source>
         <translation>As edições dos shaders por guardar da última sessão foram recuperadas</translation>
     </message>
@@ -3008,7 +3169,7 @@
         <translation>Ajustar a &amp;Janela ao Ecrã</translation>
     </message>
     <message>
-        <location filename="../../app/window/main_window_presentation.cpp" line="+42"/>
+        <location filename="../../app/window/main_window_presentation.cpp" line="+44"/>
         <source>&amp;Presentation Mode</source>
         <translation>Modo de A&amp;presentação</translation>
     </message>
@@ -3466,7 +3627,7 @@
         <translation>Os objetos da cena, cada um com a sua malha, transformação e material: selecione um para o editar aqui e no painel Material (ou clique nele na vista). Desmarque para esconder; duplo clique para mudar o nome</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+32"/>
         <source>Add</source>
         <translation>Adicionar</translation>
     </message>
@@ -3501,7 +3662,7 @@
         <translation>Remove o objeto selecionado (o último fica); as luzes no seu referencial passam para o objeto anterior</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+10"/>
         <source>Cube (flat faces)</source>
         <translation>Cubo (faces planas)</translation>
     </message>
@@ -3536,7 +3697,7 @@
         <translation>Abrir um ficheiro de malha: qualquer formato que o Assimp leia (Ctrl+M; ou largue um ficheiro na janela)</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>Shape</source>
         <translation>Forma</translation>
     </message>
@@ -3646,7 +3807,7 @@
         <translation>As cores ambiente, difusa e especular e o brilho do ficheiro da malha substituem Ka, Kd, Ks e o brilho: agora, e sempre que um ficheiro for carregado</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+24"/>
         <source>Rotation about %1 in degrees (model matrix; applied X, then Y, then Z)</source>
         <translation>Rotação em torno de %1 em graus (matriz de modelo; aplicada em X, depois Y, depois Z)</translation>
     </message>
@@ -3879,7 +4040,7 @@
         <translation>Gravar este gráfico como imagem PNG ou SVG, ou as suas amostras como CSV</translation>
     </message>
     <message>
-        <location line="+90"/>
+        <location line="+91"/>
         <source>No point probed: light %1&apos;s lobe where N faces the camera at the selected object&apos;s centre. Ctrl+click the surface to plot it at a point.</source>
         <translation>Nenhum ponto sondado: o lóbulo da luz %1 onde N aponta para a câmara no centro do objeto selecionado. Ctrl+clique na superfície para o desenhar num ponto.</translation>
     </message>
@@ -4088,7 +4249,7 @@
 <context>
     <name>lb::ProbePanel</name>
     <message>
-        <location filename="../../widgets/probe_panel.cpp" line="+63"/>
+        <location filename="../../widgets/probe_panel.cpp" line="+68"/>
         <source>Copy the Equation</source>
         <translation>Copiar a Equação</translation>
     </message>
@@ -4103,12 +4264,12 @@
         <translation>Ctrl+clique (ou Shift+clique) na superfície para sondar um ponto: os vetores, N·L, o ângulo especular e os três termos, ao lado do píxel que a GPU desenhou. Esc limpa-o.</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+30"/>
         <source>No surface at (%1, %2).</source>
         <translation>Nenhuma superfície em (%1, %2).</translation>
     </message>
     <message>
-        <location line="+69"/>
+        <location line="+87"/>
         <source>pixel (%1, %2), %3, triangle %4</source>
         <extracomment>%1, %2 the pixel; %3 the object&apos;s name; %4 the triangle&apos;s number</extracomment>
         <translation>píxel (%1, %2), %3, triângulo %4</translation>
@@ -4284,12 +4445,12 @@
         <translation>%1 de 255</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+13"/>
         <source>The equation at this point</source>
         <translation>A equação neste ponto</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+8"/>
         <source>This point is drawn by %1 (side B), which is itself the reference: it is compared with nothing. The numbers above are the built-in model&apos;s, which that program need not follow.</source>
         <translation>Este ponto é desenhado por %1 (lado B), que é ele próprio a referência: não é comparado com nada. Os números acima são os do modelo integrado, que esse programa não tem de seguir.</translation>
     </message>
@@ -4786,12 +4947,12 @@
 <context>
     <name>lb::SceneFile</name>
     <message>
-        <location filename="../../render/model/scene/scene_file.cpp" line="-161"/>
+        <location filename="../../render/model/scene/scene_file.cpp" line="-163"/>
         <source>not true or false; read as false</source>
         <translation>não é true nem false; lido como false</translation>
     </message>
     <message>
-        <location line="+56"/>
+        <location line="+58"/>
         <source>%1: not a scene file: %2 at byte %3</source>
         <extracomment>%1 a path, %2 Qt&apos;s JSON parser&apos;s reason</extracomment>
         <translation>%1: não é um ficheiro de cena: %2 no byte %3</translation>
@@ -4869,7 +5030,7 @@
         <translation>kc, kl e kq todos a 0</translation>
     </message>
     <message>
-        <location line="+81"/>
+        <location line="+84"/>
         <source>not one of the values the scene feeds (%1)</source>
         <translation>não é nenhum dos valores que a cena alimenta (%1)</translation>
     </message>
@@ -5214,7 +5375,7 @@
 <context>
     <name>lb::ShadingPanel</name>
     <message>
-        <location filename="../../widgets/shading_panel.cpp" line="+25"/>
+        <location filename="../../widgets/shading_panel.cpp" line="+27"/>
         <source>Gouraud (per vertex)</source>
         <translation>Gouraud (por vértice)</translation>
     </message>
@@ -5384,7 +5545,7 @@
         <translation>Is·Ks·(R·V ou N·H)^n: uEnableSpecular (tecla S)</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+14"/>
         <source>Terms</source>
         <extracomment>the row of the ambient, diffuse and specular terms&apos; switches</extracomment>
         <translation>Termos</translation>
@@ -5405,7 +5566,7 @@
         <translation>&lt;b&gt;Comparar&lt;/b&gt; o lado A com o lado B</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Side A is the program on screen (the editor&apos;s); side B is the built-in program with the choices below, a shader pair from files, or an open exercise&apos;s reference; one camera</source>
         <translation>O lado A é o programa no ecrã (o do editor); o lado B é o programa integrado com as escolhas abaixo, um par de shaders de ficheiros ou a referência de um exercício aberto; uma só câmara</translation>
     </message>
@@ -5561,7 +5722,7 @@
 <context>
     <name>lb::TextureControls</name>
     <message>
-        <location filename="../../widgets/texture_controls.cpp" line="+27"/>
+        <location filename="../../widgets/texture_controls.cpp" line="+28"/>
         <source>Texture</source>
         <translation>Textura</translation>
     </message>
@@ -5571,7 +5732,7 @@
         <translation>uEnableTexture: multiplicar os termos ambiente e difuso pela textura (uSampler): o ficheiro de imagem, senão a textura difusa do ficheiro da malha, senão o xadrez</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source>Image...</source>
         <translation>Imagem...</translation>
     </message>

@@ -38,7 +38,7 @@ private slots:
     {
         SceneFile f;
         f.exercise = sample();
-        f.program = ProgramText{"start", "void main() {}", "void main() {}", false};
+        f.program = ProgramText{plainText("start"), "void main() {}", "void main() {}", false};
         const SceneFileRead read =
             parseSceneFile(sceneFileBytes(f, QDir("/tmp")), QDir("/tmp"), "lesson.json");
         QVERIFY2(read.ignored.isEmpty(), qPrintable(read.ignored.join(", ")));

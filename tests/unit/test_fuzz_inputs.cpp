@@ -263,7 +263,7 @@ QList<QByteArray> sceneSeeds()
             seeds << f.readAll();
     }
     SceneFile file;
-    file.program = ProgramText{"mine", "void main() {}", "void main() {}", true};
+    file.program = ProgramText{plainText("mine"), "void main() {}", "void main() {}", true};
     seeds << sceneFileBytes(file, QDir::temp());
     return seeds;
 }

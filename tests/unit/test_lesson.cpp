@@ -86,7 +86,8 @@ private slots:
         inlineStep.caption = {{"en", "Per vertex."}, {"de", "Pro Vertex."}};
         inlineStep.scene.scene.shading.shading = Shading::Gouraud;
         inlineStep.scene.scene.objects[0].meshPath = dir.filePath("meshes/bunny.ply");
-        inlineStep.scene.program = ProgramText{"mine", "void main(){}", "void main(){}", true};
+        inlineStep.scene.program =
+            ProgramText{plainText("mine"), "void main(){}", "void main(){}", true};
         inlineStep.panel = "shading";
         inlineStep.highlight = "shading.shading";
         LessonStep fileStep;

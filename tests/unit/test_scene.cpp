@@ -96,7 +96,7 @@ private slots:
         row("rotation", P::Object, [](Scene &s) { s.objects[0].rotationDegrees.z = 12; });
         row("scale", P::Object, [](Scene &s) { s.objects[0].scale.y = 0.5f; });
         row("auto-rotate", P::Object, [](Scene &s) { s.objects[0].autoRotate = true; });
-        row("name", P::Object, [](Scene &s) { s.objects[0].name = "teapot"; });
+        row("name", P::Object, [](Scene &s) { s.objects[0].name = plainText("teapot"); });
         row("visible", P::Object, [](Scene &s) { s.objects[0].visible = false; });
         row("translation", P::Object, [](Scene &s) { s.objects[0].translation.z = -2; });
         row("second object", P::Object | P::Material,
@@ -313,10 +313,10 @@ private slots:
     void objectListEditsKeepAttachments()
     {
         Scene s;
-        s.objects[0].name = "a";
+        s.objects[0].name = plainText("a");
         for (const char *name : {"b", "c", "d"}) {
             ObjectSettings o;
-            o.name = name;
+            o.name = plainText(name);
             QVERIFY(addObject(s, o));
         }
         QCOMPARE(s.selected, 3);
@@ -326,10 +326,10 @@ private slots:
         s.selected = 3;
         QVERIFY(removeObject(s, 2));
         QCOMPARE(int(s.objects.size()), 3);
-        QCOMPARE(s.objects[s.lights[0].object].name, QString("d"));
-        QCOMPARE(s.objects[s.lights[1].object].name, QString("b"));
-        QCOMPARE(s.objects[s.lights[2].object].name, QString("a"));
-        QCOMPARE(s.selectedObject().name, QString("d"));
+        QCOMPARE(displayName(s.objects[s.lights[0].object]), QString("d"));
+        QCOMPARE(displayName(s.objects[s.lights[1].object]), QString("b"));
+        QCOMPARE(displayName(s.objects[s.lights[2].object]), QString("a"));
+        QCOMPARE(displayName(s.selectedObject()), QString("d"));
         QVERIFY(!removeObject(s, 3));
         QVERIFY(removeObject(s, 0) && removeObject(s, 0));
         QVERIFY(!removeObject(s, 0)); // the last one stays

@@ -38,7 +38,7 @@ SceneFile sampleFile(const QDir &dir)
     f.scene.camera.orbit(30, -10);
     f.scene.compare.mode = CompareMode::SideBySide;
     f.scene.shaderValues["bands"] = {4.0f};
-    f.program = ProgramText{"toon", "void main() { gl_Position = vec4(0.0); }",
+    f.program = ProgramText{plainText("toon"), "void main() { gl_Position = vec4(0.0); }",
                             "void main() { gl_FragColor = vec4(1.0); }", true};
     return f;
 }
@@ -208,7 +208,7 @@ private slots:
         program["edited"] = false;
         old["program"] = program;
         read = parseSceneFile(QJsonDocument(old).toJson(), dir, "new.json");
-        QCOMPARE(read.file->program->name, QString("my (edited)"));
+        QCOMPARE(read.file->program->name, plainText("my (edited)"));
         QVERIFY(!read.file->program->edited);
         program["edited"] = "yes";
         old["program"] = program;
@@ -274,7 +274,7 @@ private slots:
             f.scene.shaderValues[longest + QString::asprintf("%08d", i)] = {-3.4e38f, 1.0f / 3.0f,
                                                                             1e-30f, 7.0f};
         const QString source(kMaxSourceCharacters, QChar(1));
-        f.program = ProgramText{"at the limits", source, source, true};
+        f.program = ProgramText{plainText("at the limits"), source, source, true};
         const QString path = tmp.filePath("limits.json");
         QCOMPARE(writeSceneFile(path, f), QString());
         QVERIFY2(QFileInfo(path).size() <= kMaxSceneFileBytes,

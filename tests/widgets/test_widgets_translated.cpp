@@ -56,7 +56,7 @@ private slots:
     void scenePanels()
     {
         SceneDocument document;
-        document.edit([](Scene &s) { s.selectedObject().name = "Teapot lid"; });
+        document.edit([](Scene &s) { s.selectedObject().name = plainText("Teapot lid"); });
         LightPanel light(&document);
         MaterialPanel material(&document);
         ObjectPanel object(&document);
@@ -82,7 +82,7 @@ private slots:
 
         // A duplicate's name is one translatable pattern around the original's.
         object.duplicateButton()->click();
-        const QString copy = document.scene().selectedObject().name;
+        const QString copy = displayName(document.scene().selectedObject());
         QVERIFY2(oneSentence(copy) && copy.contains("Teapot lid"), qPrintable(copy));
     }
 

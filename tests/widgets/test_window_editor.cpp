@@ -677,7 +677,7 @@ private slots:
         QCOMPARE(e->programName(), QString("%1 (edited)").arg(toon.name));
         const std::optional<ProgramText> program = e->program();
         QVERIFY(program);
-        QCOMPARE(program->name, toon.name);
+        QCOMPARE(program->name, plainText(toon.name));
         QVERIFY(program->edited);
 
         QTRY_VERIFY(m_settings->value("editor/fragment").toString().contains("// mine"));

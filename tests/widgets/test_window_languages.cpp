@@ -4,6 +4,7 @@
 // every tab name whole; View > Language keeps the choice and offers the restart it needs.
 #include "window_fixture.h"
 
+#include "help.h"
 #include "language.h"
 #include "language_menu.h"
 #include "lesson.h"
@@ -11,12 +12,17 @@
 #include "lesson_bar.h"
 #include "lesson_pointer.h"
 #include "main_window_settings.h"
+#include "object_panel.h"
 #include "presets.h"
+#include "scene_actions.h"
 
 #include <QAbstractButton>
 #include <QDockWidget>
+#include <QFileDialog>
 #include <QLabel>
+#include <QListWidget>
 #include <QMenuBar>
+#include <QRegularExpression>
 #include <QScrollArea>
 #include <QTabBar>
 #include <QTimer>
@@ -204,6 +210,74 @@ private slots:
                  QString(language == "pt" ? "Uniformes" : "Uniforms"));
     }
 
+    // What was still English in the translated window (issue 49, item 17): the stage tabs and
+    // the message list's stage, key names in the help, the file dialog's "Look in:", and the
+    // names the shipped examples give their objects and program.
+    void keysFilesAndNamesSpeakTheLanguage_data()
+    {
+        QTest::addColumn<QString>("language");
+        // The fragment tab, the help's key for the next step, the file dialog's "Look in:",
+        // the example's sphere, its textured cube, its program
+        QTest::addColumn<QStringList>("expected");
+        QTest::newRow("pt") << "pt"
+                            << QStringList{"Fragmentos",       "Page Down",
+                                           "Procurar em:",     "esfera",
+                                           "cubo com textura", "exercício (a sua resposta)"};
+        QTest::newRow("de") << "de"
+                            << QStringList{
+                                   "Fragment", "Bild abwärts",        "Suchen in:",
+                                   "Kugel",    "texturierter Würfel", "Aufgabe (Ihre Lösung)"};
+        QTest::newRow("en") << "en" << QStringList{"Fragment",      "PgDown",
+                                                   "Look in:",      "sphere",
+                                                   "textured cube", "exercise (your answer)"};
+    }
+    void keysFilesAndNamesSpeakTheLanguage()
+    {
+        QFETCH(QString, language);
+        QFETCH(QStringList, expected);
+        showIn(language);
+        auto *tabs = m_window->editorPanel()->findChild<QTabWidget *>();
+        QVERIFY(tabs);
+        QCOMPARE(tabs->tabText(1), expected[0]);
+        // Key names as the help and the menus write them (a lesson's keys are in its menu
+        // while it runs); the help's completion key is Ctrl and Space's.
+        const auto named = [](QKeySequence key) { return key.toString(QKeySequence::NativeText); };
+        QCOMPARE(named(QKeySequence(Qt::Key_PageDown)), expected[1]);
+        const QString help = shortcutsHtml(m_window->menuBar());
+        const QString completion = named(QKeySequence(Qt::CTRL | Qt::Key_Space));
+        QVERIFY2(help.contains(completion), qPrintable(completion));
+        if (language == "pt") {
+            QCOMPARE(completion, QString("Ctrl+Espaço"));
+            for (Qt::Key key : {Qt::Key_PageUp, Qt::Key_Backspace, Qt::Key_Right})
+                QVERIFY2(
+                    !QRegularExpression("^(PgUp|Backspace|Right)$").match(named(key)).hasMatch(),
+                    qPrintable(named(key)));
+        }
+        // Qt's own file dialog, as the window opens it where the desktop has none.
+        QFileDialog dialog(m_window.get());
+        dialog.setOption(QFileDialog::DontUseNativeDialog);
+        auto *lookIn = dialog.findChild<QLabel *>("lookInLabel");
+        QVERIFY(lookIn);
+        QCOMPARE(lookIn->text(), expected[2]);
+        // The exercise example names its objects and program in each language.
+        m_window->sceneActions()->open(":/examples/exercise_lighting.json");
+        settle();
+        QListWidget *objects = m_window->objectPanel()->objectList();
+        QCOMPARE(objects->count(), 2);
+        QCOMPARE(objects->item(0)->text(), expected[3]);
+        QCOMPARE(objects->item(1)->text(), expected[4]);
+        QVERIFY2(m_window->editorPanel()->programName().startsWith(expected[5]),
+                 qPrintable(m_window->editorPanel()->programName()));
+        // Saved again, the file keeps every language's name (what the user renames is one).
+        const QString saved = m_dir.filePath("exercise.json");
+        QCOMPARE(m_window->sceneActions()->save(saved), QString());
+        QFile file(saved);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        const QByteArray bytes = file.readAll();
+        for (const char *name : {"cubo com textura", "texturierter Würfel", "exercício (a sua"})
+            QVERIFY2(bytes.contains(name), name);
+    }
+
     // The shipped lessons' captions name controls as the window labels them in its language
     // ({ui:NAME}), not by an English copy: in German the sheet's step 9 says "Arbeit prüfen"
     // as the menu does, the slides' first step in Portuguese the Probe panel's tab "Sonda"
@@ -329,6 +403,26 @@ private slots:
             cut << controlsCut(*d, *m_window);
         }
         QVERIFY2(cut.isEmpty(), qPrintable(cut.join("\n")));
+        // A stage with a message gets its mark ("Fragmentos ●"): the tabs stay whole and the
+        // Presets button (its symbol where its word does not fit) beside them, not over them.
+        EditorPanel *e = m_window->editorPanel();
+        QString fragment = e->source(ShaderStage::Fragment);
+        fragment.replace("void main", "vec3 typo = vec3(1.0) +;\nvoid main");
+        const std::optional<ProgramBuild> b =
+            buildAfter([&] { e->editor(ShaderStage::Fragment)->setText(fragment); });
+        QVERIFY(b && !b->ok());
+        auto *tabs = e->findChild<QTabWidget *>();
+        QVERIFY(tabs && tabs->tabText(1).endsWith(QString::fromUtf8("\u25cf")));
+        e->parentWidget()->raise();
+        settle();
+        QVERIFY2(tabsCut(*m_window).isEmpty(), qPrintable(tabsCut(*m_window).join("\n")));
+        const QWidget *presets = tabs->cornerWidget(Qt::TopLeftCorner);
+        const QRect stageTabs(tabs->tabBar()->mapTo(tabs, QPoint()), tabs->tabBar()->size());
+        QVERIFY2(!presets->geometry().intersects(stageTabs.adjusted(1, 0, 0, 0)),
+                 qPrintable(QString("Presets %1 over the tabs %2")
+                                .arg(presets->geometry().x())
+                                .arg(stageTabs.x())));
+        QCOMPARE(presets->accessibleName(), EditorPanel::tr("Presets"));
     }
 
     // View > Language: the choice is kept; "Later" leaves the window as it is, "Restart Now"

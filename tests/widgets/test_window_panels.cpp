@@ -331,7 +331,7 @@ private slots:
         expectNewImage([&] { p->objectList()->item(1)->setCheckState(Qt::Unchecked); }, "hidden");
         QVERIFY(!scene().objects[1].visible);
         p->objectList()->item(1)->setText("moon");
-        QCOMPARE(scene().objects[1].name, QString("moon"));
+        QCOMPARE(scene().objects[1].name, plainText("moon"));
         p->objectList()->setCurrentRow(1);
         QCOMPARE(scene().selected, 1);
         p->removeButton()->click();

@@ -31,7 +31,7 @@ LocalizedText readLocalizedText(const QJsonValue &value, const QString &where, i
             ignore(at, LocalizedTextMessages::tr("%1 characters; at most %2")
                            .arg(v.toString().size())
                            .arg(maxCharacters));
-        else
+        else if (!v.toString().isEmpty())
             text[language.isEmpty() ? QString("en") : language] = v.toString();
     };
     if (value.isUndefined() || value.isNull())
@@ -50,6 +50,11 @@ LocalizedText readLocalizedText(const QJsonValue &value, const QString &where, i
             take(it.key(), it.value());
     }
     return text;
+}
+
+LocalizedText plainText(const QString &english)
+{
+    return english.isEmpty() ? LocalizedText{} : LocalizedText{{QString("en"), english}};
 }
 
 QJsonValue localizedTextJson(const LocalizedText &text)

@@ -19,9 +19,12 @@ using LocalizedText = QMap<QString, QString>;
 // the first there is; empty when there is none.
 QString localized(const LocalizedText &text, const QString &language);
 
-// Reads a string or a {language: string} object. What cannot be used (not text, longer than
-// `maxCharacters`, a key that is no language code) is left out and told to `ignore` with
-// where it was ("title.de") and why; `where` names the field itself.
+// English alone (a name the user typed, a file's plain string); empty for an empty one.
+LocalizedText plainText(const QString &english);
+
+// Reads a string or a {language: string} object; empty strings are left out. What cannot be used
+// (not text, longer than `maxCharacters`, a key that is no language code) is left out and told to
+// `ignore` with where it was ("title.de") and why; `where` names the field itself.
 LocalizedText
 readLocalizedText(const QJsonValue &value, const QString &where, int maxCharacters,
                   const std::function<void(const QString &, const QString &)> &ignore);

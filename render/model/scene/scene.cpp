@@ -416,7 +416,7 @@ void frameScene(Scene &scene)
 QString displayName(const ObjectSettings &object)
 {
     if (!object.name.isEmpty())
-        return object.name;
+        return localized(object.name, lessonLanguage());
     if (!object.meshPath.isEmpty())
         return QFileInfo(object.meshPath).fileName();
     return shapeLabel(object.shape);

@@ -5,6 +5,7 @@
 #include "bindings.h"
 #include "camera.h"
 #include "lighting.h"
+#include "localized_text.h"
 #include "texture_sampling.h"
 
 #include <QFlags>
@@ -84,7 +85,9 @@ struct ShadingSettings
 
 struct ObjectSettings
 {
-    QString name;        // as the Object panel lists it; empty: named after its shape or file
+    // As the Object panel lists it, by language (a shipped example names its objects in each
+    // language; a name typed in the panel is plainText); empty: named after its shape or file.
+    LocalizedText name;
     bool visible = true; // a hidden object is neither drawn nor probed
     Shape shape = Shape::Sphere;
     int tessellation = 16; // coarse on purpose: Gouraud and Phong visibly differ
@@ -223,6 +226,7 @@ constexpr float kMinDirectionLength = 1e-6f; // shorter spot axes are refused (n
 constexpr int kMaxShaderValues = 16384;
 constexpr int kMaxShaderValueName = 1024; // GLSL ES's longest identifier
 constexpr int kMaxBindings = 1024;        // far more than a program has uniforms
+constexpr int kMaxNameCharacters = 4096;  // an object's or a program's name, in each language
 } // namespace limits
 
 // Names used on the command line, in JSON and in the panels' combo boxes.

@@ -29,15 +29,19 @@ const QLatin1String kLegacyEditedSuffix(" (edited)");
 // A "program" object whose sources are known to be good.
 ProgramText programText(const QJsonObject &p, QStringList &ignored)
 {
-    ProgramText text{p["name"].toString(), p["vertex"].toString(), p["fragment"].toString()};
+    SceneJsonReader reader(&ignored);
+    ProgramText text{readLocalizedText(p["name"], "program.name", limits::kMaxNameCharacters,
+                                       [&](const QString &where, const QString &why) {
+                                           reader.ignore(where, why);
+                                       }),
+                     p["vertex"].toString(), p["fragment"].toString()};
     const QJsonValue edited = p["edited"];
     if (edited.isBool()) {
         text.edited = edited.toBool();
     } else if (!edited.isUndefined()) {
-        SceneJsonReader(&ignored).ignore("program.edited",
-                                         SceneFileMessages::tr("not true or false; read as false"));
-    } else if (text.name.endsWith(kLegacyEditedSuffix)) {
-        text.name.chop(kLegacyEditedSuffix.size());
+        reader.ignore("program.edited", SceneFileMessages::tr("not true or false; read as false"));
+    } else if (text.name.value("en").endsWith(kLegacyEditedSuffix)) {
+        text.name["en"].chop(kLegacyEditedSuffix.size());
         text.edited = true;
     }
     return text;
@@ -77,7 +81,9 @@ QJsonObject sceneFileJson(const SceneFile &file, const QDir &dir)
                                ? QJsonValue(exerciseJson(*file.exercise))
                                : file.exercise->unread;
     if (file.program)
-        root["program"] = QJsonObject{{"name", file.program->name},
+        root["program"] = QJsonObject{{"name", file.program->name.isEmpty()
+                                                   ? QJsonValue("")
+                                                   : localizedTextJson(file.program->name)},
                                       {"edited", file.program->edited},
                                       {"vertex", file.program->vertex},
                                       {"fragment", file.program->fragment}};

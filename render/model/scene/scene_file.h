@@ -23,12 +23,13 @@ constexpr int kSceneFileVersion = 3; // 1: the settings' single-light scene, no 
 constexpr qint64 kMaxSceneFileBytes = 64 * 1024 * 1024;
 
 // The program drawn with: where it came from (a preset's or a file's name, as data: never
-// translated text), whether it was edited since, and both sources. Written as
+// translated text; a shipped example's by language), whether it was edited since, and both
+// sources. Written as
 // "program": {"name": ..., "edited": true/false, "vertex": ..., "fragment": ...}; files from
 // before the "edited" field carry it as the name's English suffix " (edited)", read as edited.
 struct ProgramText
 {
-    QString name;
+    LocalizedText name;
     QString vertex, fragment;
     bool edited = false;
     bool operator==(const ProgramText &o) const

@@ -8,6 +8,8 @@
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QSettings>
 
 namespace lb {
@@ -313,7 +315,8 @@ std::optional<ProgramText> ShaderDocument::program() const
     if (showsBuiltIn())
         return std::nullopt;
     const ShaderOrigin o = origin();
-    return ProgramText{o.name, m_stages[0].text, m_stages[1].text, o.edited};
+    return ProgramText{o.names.isEmpty() ? plainText(o.name) : o.names, m_stages[0].text,
+                       m_stages[1].text, o.edited};
 }
 
 void ShaderDocument::setProgram(const std::optional<ProgramText> &program, bool gouraud)
@@ -325,7 +328,9 @@ void ShaderDocument::setProgram(const std::optional<ProgramText> &program, bool 
     const Snapshot before = snapshot();
     take(m_stages[0], program->vertex, {});
     take(m_stages[1], program->fragment, {});
-    loaded(before, {ShaderOrigin::Kind::Scene, program->name, program->edited});
+    loaded(before, {ShaderOrigin::Kind::Scene, localized(program->name, "en"), program->edited,
+                    program->name.size() > 1 || !program->name.contains("en") ? program->name
+                                                                              : LocalizedText{}});
 }
 
 void ShaderDocument::saveState(QSettings &settings) const
@@ -342,6 +347,11 @@ void ShaderDocument::saveState(QSettings &settings) const
     const ShaderOrigin o = origin();
     settings.setValue("originKind", kindName(o.kind));
     settings.setValue("origin", o.name);
+    settings.setValue("originNames",
+                      o.names.isEmpty()
+                          ? QString()
+                          : QString::fromUtf8(QJsonDocument(localizedTextJson(o.names).toObject())
+                                                  .toJson(QJsonDocument::Compact)));
     settings.setValue("edited", o.edited);
     settings.endGroup();
 }
@@ -360,9 +370,12 @@ bool ShaderDocument::restoreState(QSettings &settings)
         stages[i].unsaved = settings.value(keys[i][2]).toBool();
     }
     // Sessions from before "originKind" kept no origin: their text reads as nameless.
-    const ShaderOrigin origin{kindNamed(settings.value("originKind").toString()),
-                              settings.value("origin").toString(),
-                              settings.value("edited").toBool()};
+    const ShaderOrigin origin{
+        kindNamed(settings.value("originKind").toString()), settings.value("origin").toString(),
+        settings.value("edited").toBool(),
+        readLocalizedText(
+            QJsonDocument::fromJson(settings.value("originNames").toString().toUtf8()).object(),
+            "originNames", limits::kMaxNameCharacters, [](const QString &, const QString &) {})};
     settings.endGroup(); // before anything is announced: a listener may write settings
     if (saved && !builtIn.isEmpty()) {
         loadPreset(builtInPreset(builtIn == "gouraud"));

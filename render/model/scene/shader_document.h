@@ -46,9 +46,12 @@ struct ShaderOrigin
     Kind kind = Kind::Text;
     QString name;
     bool edited = false; // changed since it came from there
+    // A scene's program: its name in each language its file gives (`name` is the English);
+    // the editor shows the one of the lessons' language.
+    LocalizedText names;
     bool operator==(const ShaderOrigin &o) const
     {
-        return kind == o.kind && name == o.name && edited == o.edited;
+        return kind == o.kind && name == o.name && edited == o.edited && names == o.names;
     }
 };
 
