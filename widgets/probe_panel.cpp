@@ -76,7 +76,7 @@ ProbePanel::ProbePanel(SceneDocument *document, Viewport *viewport, QWidget *par
     connect(viewport, &Viewport::objectChanged, this, &ProbePanel::clear);
     connect(viewport, &Viewport::textureChanged, this, &ProbePanel::update);
     // A new view size moves the point's pixel: read the GPU where the point now is.
-    connect(viewport, &Viewport::resized, this, &ProbePanel::update);
+    connect(viewport, &Viewport::resized, this, &ProbePanel::followResize);
     connect(viewport, &QOpenGLWidget::frameSwapped, this, &ProbePanel::showText);
 }
 
@@ -124,6 +124,28 @@ void ProbePanel::probeAt(QPoint framePixel)
         return;
     }
     m_point = Point{r.object, r.triangle, r.barycentric, view.sideB};
+    update();
+}
+
+// The point kept over a new view size (presentation mode, a dock moved) lies somewhere in its
+// new pixel, while the GPU's colour there is the pixel centre's: on a highlight the two differ
+// by several 255ths (7 after leaving presentation mode). The probe moves to the surface point
+// at that pixel's centre, as a click there would have put it.
+void ProbePanel::followResize()
+{
+    update();
+    if (!m_point || !m_result.hit)
+        return;
+    const QSize frame = m_viewport->size() * m_viewport->devicePixelRatio();
+    const QRect view = viewRect(m_document->scene(), frame, m_point->sideB);
+    const QPoint pixel = view.topLeft() + QPoint(int(std::floor(m_result.pixel.x())),
+                                                 int(std::floor(m_result.pixel.y())));
+    PixelView at;
+    const ProbeResult r = probeFramePixel(
+        m_document->scene(), m_viewport->renderer().probedObjects(), frame, pixel, &at);
+    if (!r.hit || r.object != m_point->object || at.sideB != m_point->sideB)
+        return; // another object in front there now: the point stays where it was
+    m_point = Point{r.object, r.triangle, r.barycentric, at.sideB};
     update();
 }
 

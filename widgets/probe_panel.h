@@ -69,6 +69,7 @@ private:
         bool sideB;
     };
     void update();           // the model again at the point; arrows to the viewport
+    void followResize();     // the point moved to its new pixel's centre, then update()
     void showText();         // after the frame is drawn, with the GPU's pixel
     bool stacksRows() const; // whether the panel is too narrow for names beside values
 

@@ -10,6 +10,7 @@
 #include "exercise_panel.h"
 #include "lesson_actions.h"
 #include "lesson_bar.h"
+#include "probe_panel.h"
 #include "screen_blank.h"
 #include "status_line.h"
 #include "work_check.h"
@@ -20,6 +21,10 @@
 #include <QLabel>
 #include <QStatusBar>
 #include <QTabBar>
+
+#include <glm/common.hpp>
+
+#include <algorithm>
 
 using namespace lb;
 using namespace lb::test;
@@ -415,6 +420,46 @@ private slots:
         probeCentre();
         settle();
         QVERIFY(text->text().contains("<tr><td><b>N</b></td><td>("));
+    }
+
+    // A point probed in presentation mode, the view then smaller: the model at the point and
+    // the GPU's pixel agree as they did, on the steep side of the highlight too (issue 49, item
+    // 19: they read 7 of 255 apart after leaving presentation mode, 0 once probed again).
+    void aProbedPointFollowsTheViewsNewSize()
+    {
+        // A small sharp highlight: within a pixel the colour changes most at its edge.
+        m_window->document().edit([](Scene &s) {
+            s.selectedObject().material.shininess = 400.0f;
+            s.selectedObject().tessellation = 64;
+        });
+        presentAt(QSize(1024, 768), 2.0);
+        Viewport *v = m_window->viewport();
+        int worst = 0;
+        for (const QPointF at :
+             {QPointF(-0.05, -0.1), QPointF(-0.04, -0.11), QPointF(-0.03, -0.12),
+              QPointF(-0.02, -0.13), QPointF(-0.06, -0.09), QPointF(-0.03, -0.09)}) {
+            if (!m_window->isPresentation())
+                presentAt(QSize(1024, 768), 2.0);
+            settle();
+            const QPoint click =
+                v->rect().center() + QPoint(int(at.x() * v->width()), int(at.y() * v->height()));
+            QTest::mouseClick(v, Qt::LeftButton, Qt::ControlModifier, click);
+            settle();
+            if (!m_window->probePanel()->isActive())
+                continue;
+            key(Qt::Key_Escape);
+            settle();
+            QVERIFY(!m_window->isPresentation());
+            const ProbePanel *panel = m_window->probePanel();
+            QVERIFY(panel->isActive() && panel->gpuColour());
+            const glm::ivec3 model = glm::ivec3(glm::round(panel->result().reference * 255.0f));
+            const glm::ivec3 apart = glm::abs(model - *panel->gpuColour());
+            qInfo("at (%.2f, %.2f): %d of 255 apart", at.x(), at.y(),
+                  std::max({apart.r, apart.g, apart.b}));
+            worst = std::max({worst, apart.r, apart.g, apart.b});
+            m_window->probePanel()->clear();
+        }
+        QVERIFY2(worst <= 2, qPrintable(QString("%1 of 255 apart").arg(worst)));
     }
 
     // A lesson presented at 200% on a 1024x768 projector: the status line's row (empty but
