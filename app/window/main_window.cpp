@@ -98,10 +98,7 @@ MainWindow::MainWindow(QSettings &settings, QWidget *parent)
     connect(m_viewport, &Viewport::clicked, this, &MainWindow::selectObjectAt);
     connect(m_viewport, &Viewport::probeRequested, this, [this, probeDock](QPoint pixel) {
         m_probe->probeAt(pixel);
-        if (m_presentation && !presentationPanelsShown())
-            return; // the view keeps the screen: the numbers wait behind F6
-        probeDock->show();
-        probeDock->raise();
+        bringForward(probeDock); // in presentation mode the numbers wait behind F6
     });
 
     m_editor = new EditorPanel(&m_shaders);

@@ -243,8 +243,7 @@ void MainWindow::checkWork()
         m_workCheck->cancel();
         m_exercisePanel->setChecking(false);
     }
-    m_exerciseDock->show();
-    m_exerciseDock->raise();
+    bringForward(m_exerciseDock); // the results come there
     // What the editor holds, as it would be handed in (not the last program that drew).
     m_checkedProgram.emplace(m_shaders.source(ShaderStage::Vertex),
                              m_shaders.source(ShaderStage::Fragment));

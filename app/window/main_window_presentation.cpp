@@ -35,6 +35,16 @@ namespace lb {
 namespace {
 const char *const kPanelsKey = "ui/presentationPanels";
 const char *const kFadedArrowsKey = "ui/fadedProbeArrows";
+
+// A tabbed dock's tab becomes current when raise() changes its place among its siblings
+// (QDockWidget acts on the ZOrderChange): the Exercise panel, raised last as its exercise
+// opened and left by a click on the Light panel's tab, stayed behind when F9 raised it again.
+void makeCurrent(QDockWidget *dock)
+{
+    dock->show();
+    dock->lower();
+    dock->raise();
+}
 } // namespace
 
 void MainWindow::addPresentationActions(QMenu *view)
@@ -108,8 +118,7 @@ void MainWindow::bringForward(QDockWidget *dock)
         m_forwardOnF6 = dock;
         return;
     }
-    dock->show();
-    dock->raise();
+    makeCurrent(dock);
 }
 
 void MainWindow::setPresentationPanels(bool shown)
@@ -140,7 +149,7 @@ void MainWindow::setPresentationPanels(bool shown)
     QTimer::singleShot(0, this, &MainWindow::styleDockTabs); // the tab bars made for them now
     if (QDockWidget *forward = m_forwardOnF6.data()) {       // once its tab exists again
         m_forwardOnF6.clear();
-        QTimer::singleShot(0, forward, [forward] { forward->raise(); });
+        QTimer::singleShot(0, forward, [forward] { makeCurrent(forward); });
     }
 }
 

@@ -12,6 +12,7 @@
 #include <QJsonObject>
 #include <QPushButton>
 #include <QRegularExpression>
+#include <QTabBar>
 #include <QToolButton>
 #include <QTreeWidget>
 
@@ -99,6 +100,44 @@ private slots:
         // The example in the menu is the exercise.
         QVERIFY(m_window->sceneActions()->open(":/examples/exercise_lighting.json"));
         QVERIFY(m_window->exerciseDock()->isVisible());
+    }
+
+    // F9 with another panel in front of the Exercise panel brings the results forward (issue
+    // 49, item 19: the check ran behind the Light panel, nothing on screen said so).
+    void checkMyWorkBringsTheResultsForward()
+    {
+        m_window->fitToScreen(QRect(0, 0, 1024, 744)); // every panel a tab down the left edge
+        QVERIFY(m_window->sceneActions()->open(exerciseFile(4)));
+        QTRY_VERIFY(m_window->exerciseDock()->isVisible());
+        const QList<QDockWidget *> others = m_window->tabifiedDockWidgets(m_window->exerciseDock());
+        QVERIFY(others.size() >= 2);
+        m_window->exerciseDock()->raise(); // as opening the exercise left it
+        for (QDockWidget *dock : {others.first(), others.last()}) {
+            // The user clicks another panel's tab (no dock is raised by that).
+            bool clicked = false;
+            for (QTabBar *bar : m_window->findChildren<QTabBar *>())
+                for (int i = 0; i < bar->count() && !clicked; ++i)
+                    if (bar->tabText(i) == dock->windowTitle()) {
+                        bar->setCurrentIndex(i);
+                        clicked = true;
+                    }
+            QVERIFY(clicked);
+            QTRY_VERIFY(m_window->exerciseDock()->visibleRegion().isEmpty());
+            QSignalSpy done(m_window->workCheck(), &WorkCheck::finished);
+            QTest::mouseClick(m_window->viewport(), Qt::LeftButton, {},
+                              m_window->viewport()->rect().center());
+            QTest::keyClick(m_window->viewport(), Qt::Key_F9);
+            QVERIFY(m_window->workCheck()->isRunning());
+            QTRY_VERIFY(!m_window->exerciseDock()->visibleRegion().isEmpty());
+            QVERIFY(done.wait(120000));
+            QVERIFY(!m_window->exerciseDock()->visibleRegion().isEmpty());
+            QTreeWidget *list = m_window->exercisePanel()->caseList();
+            QVERIFY2(!list->visibleRegion().isEmpty(),
+                     qPrintable(QString("%1 %2 %3")
+                                    .arg(list->isVisible())
+                                    .arg(list->height())
+                                    .arg(m_window->exercisePanel()->summaryLabel()->text())));
+        }
     }
 
     void checkMyWorkListsTheCasesAndAClickShowsOne()
