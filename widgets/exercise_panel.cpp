@@ -287,6 +287,7 @@ void ExercisePanel::showReport(const GradingReport &report)
                                   .arg(cases)
                                   .arg(report.largest())) +
                        "\n" + tr("Click a case to see it in the difference view."));
+    m_results = report.cases;
     for (int k = 0; k < cases; ++k) {
         const CaseResult &r = report.cases[std::size_t(k)];
         auto *item = new QTreeWidgetItem(m_cases);
@@ -332,6 +333,24 @@ void ExercisePanel::showHint(const GradingReport &report)
            "of their pixels, far more than they match the reference")
             .arg(escapedName(report.mistake->name), percent(report.mistake->shareWithin)));
     m_hint->show();
+}
+
+QString ExercisePanel::caseMeasured(int index) const
+{
+    // The list goes with its exercise (cleared): its results with it.
+    if (index < 0 || index >= m_cases->topLevelItemCount() || index >= int(m_results.size()))
+        return {};
+    const CaseResult &r = m_results[std::size_t(index)];
+    //: the difference view's caption for a case of the list; %1 x %2 the check's frame
+    return r.compared > 0 ? tr("Check My Work, at %1 x %2: largest %3/255, %4 within %5/255")
+                                .arg(m_size.width())
+                                .arg(m_size.height())
+                                .arg(r.largest)
+                                .arg(percent(r.shareWithin))
+                                .arg(m_tolerance)
+                          : tr("Check My Work, at %1 x %2: nothing drawn")
+                                .arg(m_size.width())
+                                .arg(m_size.height());
 }
 
 void ExercisePanel::markShownCase(int index)

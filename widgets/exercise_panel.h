@@ -34,6 +34,10 @@ public:
     void showProblem(const QString &text);
     // The case shown in the view is marked in the list; -1: none (the student's own scene).
     void markShownCase(int index);
+    // What the last check measured for case `index`, in words for the difference view's
+    // caption ("Check My Work, at 320 x 240: largest 104/255, 84.6% within 2/255"); empty
+    // for no such case.
+    QString caseMeasured(int index) const;
     // The program in the editor is no longer the one the listed outcome was checked with
     // (false again when the edit is undone): the outcome says so.
     void setOutOfDate(bool outOfDate);
@@ -75,6 +79,7 @@ private:
     double m_passShare = 0.99;
     int m_tolerance = 2;
     QSize m_size;
+    std::vector<CaseResult> m_results;         // the last report's cases
     std::vector<LocalizedText> m_mistakeHints; // the exercise's, by the report's index
 };
 

@@ -70,6 +70,9 @@ public:
     void setProbeArrowsFaded(bool faded);
     // The name of the program on screen, for side A's words ("Toon (edited)").
     void setProgramName(const QString &name);
+    // What Check My Work measured for the case on screen, said after the difference view's
+    // own figures (its frame is the exercise's size, the view's another); empty: none.
+    void setCaseNote(const QString &note);
     // Side B of the compare views draws this program (an exercise's reference; `name` for
     // the words) instead of the built-in one; empty sources: the built-in one again. Kept
     // across a new context. Returns what the build said (linked when there is no context yet).
@@ -169,6 +172,7 @@ private:
     Renderer m_renderer;
     QString m_error;
     QString m_programName;
+    QString m_caseNote;
     ProgramPipeline *m_pipeline;
     QLabel *m_banner;
     QLabel *m_compareLabel;

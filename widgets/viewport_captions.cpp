@@ -62,17 +62,32 @@ QString Viewport::compareText() const
         if (!d.valid)
             return tr("|A - B|: not drawn yet");
         // The share within the tolerance of the pixels drawn, as Check My Work counts a case.
-        return tr("|A - B|, A: %7, %1: largest %2/255 at (%3, %4); %5% of the drawn pixels "
-                  "within %8/255; scale 0 (black) to %6/255 (white)")
-            .arg(b, QString::number(d.largest), QString::number(d.at.x()),
-                 QString::number(d.at.y()),
-                 QString::number(std::floor(d.shareWithin * 1000.0) / 10.0, 'f', 1),
-                 QString::number(int(std::lround(kDifferenceScale * 255.0f))),
-                 m_programName.isEmpty() ? tr("the program on screen") : m_programName,
-                 QString::number(d.tolerance));
+        const QString figures =
+            tr("|A - B|, A: %7, %1: largest %2/255 at (%3, %4); %5% of the drawn pixels "
+               "within %8/255; scale 0 (black) to %6/255 (white)")
+                .arg(b, QString::number(d.largest), QString::number(d.at.x()),
+                     QString::number(d.at.y()),
+                     QString::number(std::floor(d.shareWithin * 1000.0) / 10.0, 'f', 1),
+                     QString::number(int(std::lround(kDifferenceScale * 255.0f))),
+                     m_programName.isEmpty() ? tr("the program on screen") : m_programName,
+                     QString::number(d.tolerance));
+        if (m_caseNote.isEmpty())
+            return figures;
+        const QSize frame = size() * devicePixelRatio();
+        //: %1 the difference view's figures; %2 x %3 the view's size in pixels; %4 what
+        //: Check My Work measured for the case (its own frame size and figures)
+        return tr("%1 (this view, %2 x %3 pixels); %4")
+            .arg(figures, QString::number(frame.width()), QString::number(frame.height()),
+                 m_caseNote);
     }
     }
     return {};
+}
+
+void Viewport::setCaseNote(const QString &note)
+{
+    m_caseNote = note;
+    updateCompareLabel();
 }
 
 void Viewport::setProgramName(const QString &name)

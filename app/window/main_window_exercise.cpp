@@ -76,7 +76,8 @@ void MainWindow::setUpExercise()
     connect(m_workCheck, &WorkCheck::finished, this, [this](const GradingReport &report) {
         m_exercisePanel->setChecking(false);
         m_exercisePanel->showReport(report);
-        markCheckOutOfDate(); // edited while the check ran
+        m_viewport->setCaseNote({}); // a case shown is of the list before
+        markCheckOutOfDate();        // edited while the check ran
         m_status->showMessage(report.graded() ? tr("Checked: %1 of %2 cases pass")
                                                     .arg(report.passedCount())
                                                     .arg(report.cases.size())
@@ -103,6 +104,7 @@ void MainWindow::exerciseChanged()
 {
     m_workCheck->cancel();
     m_ownScene.reset();
+    m_viewport->setCaseNote({});
     const std::optional<Exercise> &exercise = m_sceneActions->exercise();
     if (exercise) // its reference is side B now, not files chosen before
         m_sideBPath.clear();
@@ -281,6 +283,8 @@ void MainWindow::showCase(int index)
     m_probe->clear(); // its arrows and names belonged to the view left behind
     m_document.set(shown);
     m_exercisePanel->markShownCase(index);
+    // The list's figures are the check's, at the exercise's size; the view's are its own.
+    m_viewport->setCaseNote(m_exercisePanel->caseMeasured(index));
     //: "Back to my scene" is the Exercise panel's button: its name as translated there
     m_status->showMessage(tr("Case %1 in the difference view (key C: the other compare views; "
                              "\"Back to my scene\" in the Exercise panel)")
@@ -301,6 +305,7 @@ void MainWindow::showOwnScene()
     }
     m_ownScene.reset();
     m_exercisePanel->markShownCase(-1);
+    m_viewport->setCaseNote({});
 }
 
 } // namespace lb

@@ -1368,13 +1368,24 @@
         <translation>Nicht geprüft: %1</translation>
     </message>
     <message>
-        <location line="+66"/>
+        <location line="+67"/>
         <source>Your failing cases match the exercise&apos;s known mistake &quot;%1&quot; in %2 of their pixels, far more than they match the reference</source>
         <extracomment>%1 the mistake&apos;s name as the exercise gives it (data, English); %2 a share (&quot;98.5%&quot;)</extracomment>
         <translation>Ihre fehlgeschlagenen Fälle stimmen in %2 ihrer Pixel mit dem bekannten Fehler „%1“ der Übung überein, weit mehr als mit der Referenz</translation>
     </message>
     <message>
-        <location line="-73"/>
+        <location line="+13"/>
+        <source>Check My Work, at %1 x %2: largest %3/255, %4 within %5/255</source>
+        <extracomment>the difference view&apos;s caption for a case of the list; %1 x %2 the check&apos;s frame</extracomment>
+        <translation>Arbeit prüfen, bei %1 x %2: größte %3/255, %4 innerhalb %5/255</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Check My Work, at %1 x %2: nothing drawn</source>
+        <translation>Arbeit prüfen, bei %1 x %2: nichts gezeichnet</translation>
+    </message>
+    <message>
+        <location line="-93"/>
         <source>The check took too long (%1) and was stopped</source>
         <extracomment>%1 how long it was given</extracomment>
         <translation>Die Prüfung dauerte zu lange (%1) und wurde abgebrochen</translation>
@@ -1395,7 +1406,7 @@
         <translation>Klicken Sie auf einen Fall, um ihn in der Differenzansicht zu sehen.</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>%1 (as given)</source>
         <extracomment>case 0 of the list: the exercise&apos;s scene as it is, not varied</extracomment>
         <translation>%1 (wie vorgegeben)</translation>
@@ -2658,7 +2669,7 @@
         <translation>Übung</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+9"/>
         <source>Shader editor</source>
         <translation>Shader-Editor</translation>
     </message>
@@ -2731,12 +2742,12 @@
         <translation>Prüfung abgebrochen.</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>Checked: %1 of %2 cases pass</source>
         <translation>Geprüft: %1 von %2 Fällen bestanden</translation>
     </message>
     <message>
-        <location line="-21"/>
+        <location line="-22"/>
         <source>Not checked: %1</source>
         <extracomment>a check that graded nothing, for a reason this version does not know (%1, in English)</extracomment>
         <translation>Nicht geprüft: %1</translation>
@@ -2788,7 +2799,7 @@
         <translation>Nicht geprüft: Die Übung enthält einen fehlerhaften bekannten Fehler</translation>
     </message>
     <message>
-        <location line="+81"/>
+        <location line="+83"/>
         <location line="+16"/>
         <location line="+1"/>
         <location line="+1"/>
@@ -2861,12 +2872,12 @@
         <translation>Shader-Paare und Szenendateien (*.vert *.frag *.json *.lbscene);;Alle Dateien (*)</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+21"/>
         <source>The check could not start: %1</source>
         <translation>Die Prüfung konnte nicht starten: %1</translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+34"/>
         <source>Case %1 in the difference view (key C: the other compare views; &quot;Back to my scene&quot; in the Exercise panel)</source>
         <extracomment>&quot;Back to my scene&quot; is the Exercise panel&apos;s button: its name as translated there</extracomment>
         <translation>Fall %1 in der Differenzansicht (Taste C: die anderen Vergleichsansichten; „Zurück zu meiner Szene“ im Bereich „Übung“)</translation>
@@ -3169,7 +3180,7 @@
         <translation>&amp;Fenster an den Bildschirm anpassen</translation>
     </message>
     <message>
-        <location filename="../../app/window/main_window_presentation.cpp" line="+44"/>
+        <location filename="../../app/window/main_window_presentation.cpp" line="+54"/>
         <source>&amp;Presentation Mode</source>
         <translation>&amp;Präsentationsmodus</translation>
     </message>
@@ -3230,7 +3241,7 @@
         <translation>B oder . schaltet den Bildschirm im Präsentationsmodus (F5 oder F11) schwarz; Phong / Blinn-Phong ist Strg+B</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+37"/>
         <source>Presentation mode (F5) will show the panels (F6 hides them)</source>
         <translation>Der Präsentationsmodus (F5) zeigt die Bereiche an (F6 blendet sie aus)</translation>
     </message>
@@ -4269,7 +4280,7 @@
         <translation>Keine Oberfläche bei (%1, %2).</translation>
     </message>
     <message>
-        <location line="+87"/>
+        <location line="+109"/>
         <source>pixel (%1, %2), %3, triangle %4</source>
         <extracomment>%1, %2 the pixel; %3 the object&apos;s name; %4 the triangle&apos;s number</extracomment>
         <translation>Pixel (%1, %2), %3, Dreieck %4</translation>
@@ -6152,19 +6163,25 @@
     </message>
     <message>
         <location line="+1"/>
-        <location line="+12"/>
+        <location line="+13"/>
         <source>the program on screen</source>
         <translation>das Programm auf dem Bildschirm</translation>
     </message>
     <message>
-        <location line="-8"/>
+        <location line="-9"/>
         <source>|A - B|: not drawn yet</source>
         <translation>|A - B|: noch nicht gezeichnet</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>|A - B|, A: %7, %1: largest %2/255 at (%3, %4); %5% of the drawn pixels within %8/255; scale 0 (black) to %6/255 (white)</source>
         <translation>|A - B|, A: %7, %1: größte Differenz %2/255 bei (%3, %4); %5 % der gezeichneten Pixel innerhalb von %8/255; Skala 0 (schwarz) bis %6/255 (weiß)</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>%1 (this view, %2 x %3 pixels); %4</source>
+        <extracomment>%1 the difference view&apos;s figures; %2 x %3 the view&apos;s size in pixels; %4 what Check My Work measured for the case (its own frame size and figures)</extracomment>
+        <translation>%1 (diese Ansicht, %2 x %3 Pixel); %4</translation>
     </message>
 </context>
 <context>

@@ -1383,7 +1383,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>%1 (as given)</source>
         <extracomment>case 0 of the list: the exercise&apos;s scene as it is, not varied</extracomment>
         <translation type="unfinished"></translation>
@@ -1417,6 +1417,17 @@
         <location line="+22"/>
         <source>Your failing cases match the exercise&apos;s known mistake &quot;%1&quot; in %2 of their pixels, far more than they match the reference</source>
         <extracomment>%1 the mistake&apos;s name as the exercise gives it (data, English); %2 a share (&quot;98.5%&quot;)</extracomment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Check My Work, at %1 x %2: largest %3/255, %4 within %5/255</source>
+        <extracomment>the difference view&apos;s caption for a case of the list; %1 x %2 the check&apos;s frame</extracomment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Check My Work, at %1 x %2: nothing drawn</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -2652,7 +2663,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+9"/>
         <source>Shader editor</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2777,12 +2788,12 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>Checked: %1 of %2 cases pass</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+52"/>
+        <location line="+53"/>
         <location line="+16"/>
         <location line="+1"/>
         <location line="+1"/>
@@ -2854,12 +2865,12 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+21"/>
         <source>The check could not start: %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+34"/>
         <source>Case %1 in the difference view (key C: the other compare views; &quot;Back to my scene&quot; in the Exercise panel)</source>
         <extracomment>&quot;Back to my scene&quot; is the Exercise panel&apos;s button: its name as translated there</extracomment>
         <translation type="unfinished"></translation>
@@ -3162,7 +3173,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../app/window/main_window_presentation.cpp" line="+44"/>
+        <location filename="../../app/window/main_window_presentation.cpp" line="+54"/>
         <source>&amp;Presentation Mode</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3223,7 +3234,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+37"/>
         <source>Presentation mode (F5) will show the panels (F6 hides them)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4261,7 +4272,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+87"/>
+        <location line="+109"/>
         <source>pixel (%1, %2), %3, triangle %4</source>
         <extracomment>%1, %2 the pixel; %3 the object&apos;s name; %4 the triangle&apos;s number</extracomment>
         <translation type="unfinished"></translation>
@@ -6139,18 +6150,24 @@
     </message>
     <message>
         <location line="+1"/>
-        <location line="+12"/>
+        <location line="+13"/>
         <source>the program on screen</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-8"/>
+        <location line="-9"/>
         <source>|A - B|: not drawn yet</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>|A - B|, A: %7, %1: largest %2/255 at (%3, %4); %5% of the drawn pixels within %8/255; scale 0 (black) to %6/255 (white)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>%1 (this view, %2 x %3 pixels); %4</source>
+        <extracomment>%1 the difference view&apos;s figures; %2 x %3 the view&apos;s size in pixels; %4 what Check My Work measured for the case (its own frame size and figures)</extracomment>
         <translation type="unfinished"></translation>
     </message>
 </context>
