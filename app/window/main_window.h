@@ -177,7 +177,8 @@ private:
     void stackPanelForms(bool on);
     void placeStatusMessage(); // the status line, or the lesson bar in presentation mode
     void applyDockWidths();
-    int panelsNeed() const; // the width the widest panel needs, without scrolling sideways
+    void keepTheViewsShare(); // applyDockWidths() where a restored state leaves the view < 45%
+    int panelsNeed() const;   // the width the widest panel needs, without scrolling sideways
     void applyTabPositions();
     bool presentationIsShort() const; // a screen under 900 lines: panels beside the editor
     void keepInsideScreen();

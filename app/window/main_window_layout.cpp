@@ -227,6 +227,16 @@ void MainWindow::showEvent(QShowEvent *event)
     QTimer::singleShot(200, this, &MainWindow::keepInsideScreen); // the frame has come by then
     if (m_widthsPending)
         QTimer::singleShot(0, this, &MainWindow::applyDockWidths);
+    else // the last session's own dock sizes, unless they leave the view too little
+        QTimer::singleShot(0, this, &MainWindow::keepTheViewsShare);
+}
+
+// A restored state can leave the view a third of the width: a 1366-pixel window reopened
+// with an exercise had its panel column grow to the Exercise panel's wrapped task (33%).
+void MainWindow::keepTheViewsShare()
+{
+    if (!m_presentation && isVisible() && m_viewport->width() < kMinViewShare * width())
+        applyDockWidths();
 }
 
 void MainWindow::setPresentation(bool on)

@@ -26,6 +26,9 @@ struct DockWidths
     int editor;
 };
 DockWidths dockWidths(DockLayout layout, int windowWidth);
+// The least share of the width the view keeps below presentation mode, whatever a saved
+// state's dock sizes say (the README's promise).
+constexpr double kMinViewShare = 0.45;
 
 // The UI scale: the application's font (panels, menus, status bar, banner, probe names and,
 // through EditorPanel::setUiScale, the editor) grown from the size Qt started with.
