@@ -177,6 +177,7 @@ private:
     void stackPanelForms(bool on);
     void placeStatusMessage(); // the status line, or the lesson bar in presentation mode
     void applyDockWidths();
+    void scaleDockTitles();   // their titles in the panels' font (at every UI scale)
     void keepTheViewsShare(); // applyDockWidths() where a restored state leaves the view < 45%
     int panelsNeed() const;   // the width the widest panel needs, without scrolling sideways
     void applyTabPositions();

@@ -11,6 +11,7 @@
 
 #include <QAction>
 #include <QActionGroup>
+#include <QApplication>
 #include <QDockWidget>
 #include <QFormLayout>
 #include <QMenuBar>
@@ -294,6 +295,21 @@ void MainWindow::setUiScale(double scale)
     QTimer::singleShot(0, this, &MainWindow::applyDockWidths);
 }
 
+// A dock writes its title in the font QApplication::font("QDockWidgetTitle") had when the
+// dock was made, as long as its own font is the QDockWidget class's: at 200% in presentation
+// mode the titles stayed at 9 points. Given the panels' font as their own, with the class's
+// set apart (it is drawn nowhere: every dock has its own), the docks write their titles in it.
+void MainWindow::scaleDockTitles()
+{
+    QFont apart = QApplication::font();
+    apart.setUnderline(!apart.underline()); // (QFont's == ignores its style strategy)
+    QApplication::setFont(apart, "QDockWidget");
+    QFont own = QApplication::font();
+    own.setUnderline(own.underline()); // set, so that the class's is not taken for it
+    for (QDockWidget *dock : findChildren<QDockWidget *>())
+        dock->setFont(own);
+}
+
 double MainWindow::uiScale() const
 {
     return m_presentation ? m_presentationScale : m_scale;
@@ -303,6 +319,7 @@ void MainWindow::applyScale()
 {
     const double scale = uiScale();
     applyUiScale(scale);
+    scaleDockTitles();
     m_editor->setUiScale(scale);
     m_viewport->setUiScale(scale); // the texts over the view
     QTimer::singleShot(0, this, &MainWindow::styleDockTabs);

@@ -15,8 +15,10 @@
 #include "status_line.h"
 #include "work_check.h"
 
+#include <QApplication>
 #include <QDockWidget>
 #include <QFontInfo>
+#include <QFontMetrics>
 #include <QJsonDocument>
 #include <QLabel>
 #include <QStatusBar>
@@ -412,6 +414,24 @@ private slots:
         QVERIFY(html.contains("<tr><td><b>N</b></td></tr><tr><td style='padding-left: 1em'>("));
         const QString sideways = docksNeedingSideways(*m_window);
         QVERIFY2(sideways.isEmpty(), qPrintable("horizontal scrollbar in " + sideways));
+        // The dock's title is written as large as the panels' words (it stayed at the 9 points
+        // the dock was made with: issue 49, item 19): the rows its dark text takes, in the left
+        // half of the title bar (the buttons are on the right).
+        const int title = probe->widget()->geometry().top();
+        const QImage bar = probe->grab(QRect(0, 0, probe->width() / 2, title)).toImage();
+        int first = -1, last = -1;
+        for (int y = 0; y < bar.height(); ++y)
+            for (int x = 0; x < bar.width(); ++x)
+                if (qGray(bar.pixel(x, y)) < 100) {
+                    first = first < 0 ? y : first;
+                    last = y;
+                    break;
+                }
+        const int ascent = QFontMetrics(QApplication::font()).ascent();
+        QVERIFY2(first >= 0 && last - first + 1 >= ascent * 6 / 10,
+                 qPrintable(QString("title text %1 rows high for a %2 px ascent")
+                                .arg(last - first + 1)
+                                .arg(ascent)));
         // Back at 100% in a window, names and values side by side again.
         key(Qt::Key_Escape);
         settle();
