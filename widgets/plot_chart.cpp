@@ -5,6 +5,7 @@
 
 #include <QBuffer>
 #include <QCoreApplication>
+#include <QFontMetrics>
 #include <QGraphicsScene>
 #include <QPainter>
 #include <QSvgGenerator>
@@ -328,6 +329,30 @@ QString plotSeriesName(const Plot &plot, const PlotSeries &s)
     return k; // L, R, V
 }
 
+void fitPlotTitle(QChart *chart, int width)
+{
+    // plotTitle()'s form: a first line, then the details in <small> (measured in the title's
+    // own bold font: a little wider than they are drawn, so a line never overflows).
+    const QString title = chart->property("lbTitle").toString();
+    const int details = int(title.indexOf(QLatin1String("<br><small>")));
+    if (details < 0 || !title.endsWith(QLatin1String("</small>"))) {
+        chart->setTitle(title);
+        return;
+    }
+    const QFontMetrics metrics(chart->titleFont());
+    const int room = std::max(width - 16, metrics.averageCharWidth() * 8);
+    const QString words = title.mid(details + 11, title.size() - details - 11 - 8);
+    QStringList lines{QString()};
+    for (const QString &word : words.split(QLatin1Char(' '), Qt::SkipEmptyParts)) {
+        const QString longer = lines.last().isEmpty() ? word : lines.last() + ' ' + word;
+        if (!lines.last().isEmpty() && metrics.horizontalAdvance(longer) > room)
+            lines << word;
+        else
+            lines.last() = longer;
+    }
+    chart->setTitle(title.left(details) + "<br><small>" + lines.join("<br>") + "</small>");
+}
+
 QChart *makePlotChart(const Plot &plot, const QFont &font)
 {
     QChart *chart = plot.polar ? new QPolarChart : new QChart;
@@ -340,6 +365,7 @@ QChart *makePlotChart(const Plot &plot, const QFont &font)
     title.setBold(true);
     chart->setTitleFont(title);
     chart->setTitleBrush(kText);
+    chart->setProperty("lbTitle", plotTitle(plot.kind)); // fitPlotTitle() breaks its lines
     chart->setTitle(plotTitle(plot.kind));
     chart->legend()->setFont(font);
     chart->legend()->setLabelColor(kText);
@@ -357,6 +383,7 @@ QString writePlotImage(const Plot &plot, QSize size, const QString &path, const 
     QChart *chart = makePlotChart(plot, font);
     scene.addItem(chart); // the scene owns it
     chart->resize(size);
+    fitPlotTitle(chart, size.width());
     scene.setSceneRect(QRectF(QPointF(0, 0), size));
     const QRectF area(QPointF(0, 0), size);
     if (path.endsWith(QLatin1String(".svg"), Qt::CaseInsensitive)) {

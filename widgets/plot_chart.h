@@ -24,6 +24,9 @@ QString plotSeriesName(const Plot &plot, const PlotSeries &series);
 // A new chart for `plot` (the caller owns it), its texts in `font` and its lines as thick as
 // that font asks, for a projector as for a panel.
 QChart *makePlotChart(const Plot &plot, const QFont &font);
+// The chart's title with its details broken into lines of at most `width` pixels: Qt Charts
+// elides a title wider than the chart ("Blinn-Phong (N·H)^n; das..." in a narrow panel).
+void fitPlotTitle(QChart *chart, int width);
 
 // The chart at `size` into `path`: SVG where the name ends in .svg, else PNG; written through
 // the safe writer. Returns an empty string, or what went wrong.

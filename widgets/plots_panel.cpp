@@ -55,6 +55,7 @@ PlotsPanel::PlotsPanel(SceneDocument *document, ProbePanel *probe, QWidget *pare
 
     m_view = new QChartView;
     m_view->setRenderHint(QPainter::Antialiasing);
+    m_view->installEventFilter(this); // resized: the title's lines again
     fitViewToFont();
     m_view->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Expanding);
     m_note = new QLabel;
@@ -110,6 +111,13 @@ void PlotsPanel::showEvent(QShowEvent *event)
         schedule();
 }
 
+bool PlotsPanel::eventFilter(QObject *watched, QEvent *event)
+{
+    if (watched == m_view && event->type() == QEvent::Resize && m_view->chart())
+        fitPlotTitle(m_view->chart(), m_view->width());
+    return QWidget::eventFilter(watched, event);
+}
+
 void PlotsPanel::changeEvent(QEvent *event)
 {
     QWidget::changeEvent(event);
@@ -136,6 +144,7 @@ void PlotsPanel::rebuild()
     m_plot = computePlot(kind(), sceneOfSide(m_document->scene(), m_probe->onSideB()), probed);
     QChart *old = m_view->chart();
     m_view->setChart(makePlotChart(m_plot, font()));
+    fitPlotTitle(m_view->chart(), m_view->width());
     delete old; // setChart() hands the old one back instead of deleting it
     QString note = plotGapText(m_plot.gap);
     if (note.isEmpty() && m_plot.kind == PlotKind::Lobe && !m_plot.probed)
