@@ -127,12 +127,16 @@ ShadingPanel::ShadingPanel(SceneDocument *document, QWidget *parent)
     m_sideBClear->setText(QString::fromUtf8("\u00d7"));
     m_sideBClear->setToolTip(tr("Stop using these files: side B draws what it drew before them"));
     connect(m_sideBClear, &QToolButton::clicked, this, &ShadingPanel::sideBClearRequested);
-    auto *sideBRow = new QHBoxLayout;
+    // In a widget of its own: as a nested layout, the form gave the row the buttons' height
+    // and cut a description that wraps (at 200%, "the exercise's reference" in two lines).
+    auto *sideB = new QWidget(this);
+    auto *sideBRow = new QHBoxLayout(sideB);
+    sideBRow->setContentsMargins(0, 0, 0, 0);
     sideBRow->addWidget(m_sideB, 1);
     sideBRow->addWidget(m_sideBFiles);
     sideBRow->addWidget(m_sideBClear);
     //: the program side B of the compare view draws (A and B are the two sides)
-    form->addRow(tr("B program"), sideBRow);
+    form->addRow(tr("B program"), sideB);
     //: the compare view is off (A alone)
     m_compareMode = makeCombo({tr("Off"), tr("Side by side"), tr("Wipe"), tr("Difference |A - B|")},
                               tr("Side by side: A left, B right; wipe: drag the line in the view; "

@@ -9,6 +9,7 @@
 
 #include <QCheckBox>
 #include <QDockWidget>
+#include <QLabel>
 #include <QMenuBar>
 #include <QPainter>
 #include <QProgressBar>
@@ -129,6 +130,8 @@ private slots:
         // left beside the view's 60%: on a 1280x720 and a 1024x768 projector their rows of
         // boxes stand one under another and long switches wrap; nothing scrolls sideways and
         // the four lights' tabs are in sight (issue 49, item 14).
+        // Side B is the exercise's reference: its description wraps.
+        QVERIFY(m_window->sceneActions()->open(":/examples/exercise_lighting.json"));
         for (const QSize screen : {QSize(1280, 720), QSize(1024, 768)}) {
             m_window->setGeometry(QRect(QPoint(0, 0), screen));
             m_window->arrangeDocks(DockLayout::Presentation);
@@ -152,6 +155,17 @@ private slots:
                     QVERIFY2(check->height() >= check->heightForWidth(check->width()) &&
                                  check->height() > check->sizeHint().height(),
                              qPrintable(check->text() + " is cut"));
+            // A wrapped label is given the height of its lines ("B program": the exercise's
+            // reference in two lines had one line's room, cut above and below).
+            m_window->panelDocks()[2]->raise();
+            settle();
+            for (QLabel *label : m_window->panelDocks()[2]->findChildren<QLabel *>())
+                if (label->isVisible() && label->wordWrap() && !label->text().isEmpty())
+                    QVERIFY2(label->height() >= label->heightForWidth(label->width()),
+                             qPrintable(QString("\"%1\": %2 px for %3")
+                                            .arg(label->text())
+                                            .arg(label->height())
+                                            .arg(label->heightForWidth(label->width()))));
         }
         // The scale is kept per mode; leaving presentation brings back the window as it was.
         m_window->setPresentation(false);
