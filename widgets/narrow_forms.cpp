@@ -4,6 +4,7 @@
 #include <QPaintEvent>
 #include <QStyle>
 #include <QStyleOptionButton>
+#include <QStyleOptionComboBox>
 #include <QStylePainter>
 #include <QVariant>
 #include <QWidget>
@@ -275,6 +276,32 @@ void setFormsMayStack(QWidget *panel, bool on)
     for (WrapCheckBox *check : panel->findChildren<WrapCheckBox *>())
         check->setMayWrap(on);
     panel->updateGeometry();
+}
+
+QRect ElidingComboBox::textField(const QStyleOptionComboBox &option) const
+{
+    return style()->subControlRect(QStyle::CC_ComboBox, &option, QStyle::SC_ComboBoxEditField,
+                                   this);
+}
+
+QString ElidingComboBox::shownText() const
+{
+    QStyleOptionComboBox option;
+    initStyleOption(&option);
+    return fontMetrics().elidedText(option.currentText, Qt::ElideRight, textField(option).width());
+}
+
+// QComboBox's own painting, its label's text elided to the field.
+void ElidingComboBox::paintEvent(QPaintEvent *)
+{
+    QStylePainter painter(this);
+    painter.setPen(palette().color(QPalette::Text));
+    QStyleOptionComboBox option;
+    initStyleOption(&option);
+    painter.drawComplexControl(QStyle::CC_ComboBox, option);
+    if (!isEditable())
+        option.currentText = shownText();
+    painter.drawControl(QStyle::CE_ComboBoxLabel, option);
 }
 
 } // namespace lb

@@ -6,6 +6,7 @@
 // a QHBoxLayout and a QCheckBox do, and the window gives it.
 
 #include <QCheckBox>
+#include <QComboBox>
 #include <QLayout>
 #include <QList>
 
@@ -68,6 +69,22 @@ private:
     int indicatorWidth() const; // the box and the space before the text
     QSizePolicy m_linePolicy;   // QCheckBox's own
     bool m_mayWrap = false;
+};
+
+// A combo box narrower than its choice's words ends them with "…" (the style cuts them
+// off mid-letter: "World: fixed in the sce"); the list it opens shows them whole.
+class ElidingComboBox : public QComboBox
+{
+    Q_OBJECT
+public:
+    using QComboBox::QComboBox;
+    QString shownText() const; // the current choice as drawn
+
+protected:
+    void paintEvent(QPaintEvent *event) override;
+
+private:
+    QRect textField(const QStyleOptionComboBox &option) const;
 };
 
 // Lets every WrapRow and WrapCheckBox under `panel` stack and wrap (or not).

@@ -1,6 +1,7 @@
 #include "plots_panel.h"
 
 #include "compare.h"
+#include "narrow_forms.h"
 #include "plot_chart.h"
 #include "probe_panel.h"
 #include "safe_write.h"
@@ -37,7 +38,7 @@ const QSize kExportSize(1200, 900);
 PlotsPanel::PlotsPanel(SceneDocument *document, ProbePanel *probe, QWidget *parent)
     : QWidget(parent), m_document(document), m_probe(probe)
 {
-    m_kind = new QComboBox;
+    m_kind = new ElidingComboBox; // beside Export in a narrow column
     m_kind->addItem(tr("Specular: Phong and Blinn-Phong"), int(PlotKind::Specular));
     m_kind->addItem(tr("Diffuse: max(N·L, 0)"), int(PlotKind::Diffuse));
     m_kind->addItem(tr("Attenuation with distance"), int(PlotKind::Attenuation));

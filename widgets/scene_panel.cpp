@@ -1,5 +1,7 @@
 #include "scene_panel.h"
 
+#include "narrow_forms.h"
+
 #include <QAbstractScrollArea>
 #include <QComboBox>
 #include <QCoreApplication>
@@ -51,7 +53,7 @@ bool ScenePanel::eventFilter(QObject *watched, QEvent *event)
 
 QComboBox *ScenePanel::makeCombo(const QStringList &labels, const QString &toolTip)
 {
-    auto *combo = new QComboBox(this);
+    auto *combo = new ElidingComboBox(this); // a narrow column ends its words with "…"
     combo->addItems(labels);
     combo->setToolTip(toolTip);
     return combo;

@@ -6,8 +6,10 @@
 
 #include "compare.h"
 #include "help.h"
+#include "narrow_forms.h"
 
 #include <QCheckBox>
+#include <QComboBox>
 #include <QDockWidget>
 #include <QLabel>
 #include <QMenuBar>
@@ -149,6 +151,17 @@ private slots:
                 QVERIFY2(lights->rect().contains(lights->tabRect(i)),
                          qPrintable(QString("light %1's tab out of sight").arg(i + 1)));
             QCOMPARE(lights->accessibleTabName(3), QString("Light 4"));
+            // A choice wider than its box ends with "…", not cut mid-letter ("World: fixed in
+            // the sce"); the whole words are in its list.
+            for (QComboBox *combo : m_window->lightPanel()->findChildren<QComboBox *>()) {
+                auto *eliding = qobject_cast<ElidingComboBox *>(combo);
+                QVERIFY2(eliding, qPrintable(combo->currentText()));
+                const QString shown = eliding->shownText();
+                QVERIFY2(shown == combo->currentText() || shown.endsWith(QChar(0x2026)),
+                         qPrintable(shown));
+                if (screen.width() == 1024 && combo->currentText().startsWith("World"))
+                    QVERIFY2(shown.endsWith(QChar(0x2026)), qPrintable(shown));
+            }
             // A switch wider than its text's line is wrapped, whole, over more lines.
             for (QCheckBox *check : m_window->panelDocks()[2]->findChildren<QCheckBox *>())
                 if (check->isVisible() && check->width() < check->sizeHint().width())
