@@ -42,8 +42,10 @@ LocalizedText readLocalizedText(const QJsonValue &value, const QString &where, i
     }
     const QJsonObject o = value.toObject();
     for (auto it = o.begin(); it != o.end(); ++it) {
-        // A language code, as QLocale names it: "pt", "de", "pt_BR".
-        if (it.key().size() < 2 || it.key().size() > 8)
+        // A language code, as QLocale names it: "pt", "de", "pt_BR" (not "\e[2J", which has
+        // a code's length).
+        static const QRegularExpression code("^[A-Za-z]{2,3}([_-][A-Za-z0-9]{2,8})?$");
+        if (!code.match(it.key()).hasMatch())
             ignore(QString("%1.%2").arg(where, echoedValue(it.key(), 40)),
                    LocalizedTextMessages::tr("not a language code"));
         else
