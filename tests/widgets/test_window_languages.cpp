@@ -254,11 +254,13 @@ private slots:
                     qPrintable(named(key)));
         }
         // Qt's own file dialog, as the window opens it where the desktop has none.
-        QFileDialog dialog(m_window.get());
-        dialog.setOption(QFileDialog::DontUseNativeDialog);
-        auto *lookIn = dialog.findChild<QLabel *>("lookInLabel");
-        QVERIFY(lookIn);
-        QCOMPARE(lookIn->text(), expected[2]);
+        {
+            QFileDialog dialog(m_window.get()); // gone before the window below is
+            dialog.setOption(QFileDialog::DontUseNativeDialog);
+            auto *lookIn = dialog.findChild<QLabel *>("lookInLabel");
+            QVERIFY(lookIn);
+            QCOMPARE(lookIn->text(), expected[2]);
+        }
         // The exercise example names its objects and program in each language.
         m_window->sceneActions()->open(":/examples/exercise_lighting.json");
         settle();
@@ -268,6 +270,7 @@ private slots:
         QCOMPARE(objects->item(1)->text(), expected[4]);
         QVERIFY2(m_window->editorPanel()->programName().startsWith(expected[5]),
                  qPrintable(m_window->editorPanel()->programName()));
+        QVERIFY(!m_window->sceneActions()->isModified()); // the names as read are the file's
         // Saved again, the file keeps every language's name (what the user renames is one).
         const QString saved = m_dir.filePath("exercise.json");
         QCOMPARE(m_window->sceneActions()->save(saved), QString());
@@ -276,6 +279,12 @@ private slots:
         const QByteArray bytes = file.readAll();
         for (const char *name : {"cubo com textura", "texturierter Würfel", "exercício (a sua"})
             QVERIFY2(bytes.contains(name), name);
+        // The next start names the program as this one did (the session keeps its languages).
+        m_window->saveSettings();
+        m_window.reset();
+        m_window = std::make_unique<MainWindow>(*m_settings);
+        QVERIFY2(m_window->editorPanel()->programName().startsWith(expected[5]),
+                 qPrintable(m_window->editorPanel()->programName()));
     }
 
     // The shipped lessons' captions name controls as the window labels them in its language
