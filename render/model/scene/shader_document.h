@@ -48,7 +48,7 @@ struct ShaderOrigin
     bool edited = false; // changed since it came from there
     // A scene's program: its name in each language its file gives (`name` is the English);
     // the editor shows the one of the lessons' language.
-    LocalizedText names;
+    LocalizedText names{};
     bool operator==(const ShaderOrigin &o) const
     {
         return kind == o.kind && name == o.name && edited == o.edited && names == o.names;
