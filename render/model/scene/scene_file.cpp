@@ -30,11 +30,8 @@ const QLatin1String kLegacyEditedSuffix(" (edited)");
 ProgramText programText(const QJsonObject &p, QStringList &ignored)
 {
     SceneJsonReader reader(&ignored);
-    ProgramText text{readLocalizedText(p["name"], "program.name", limits::kMaxNameCharacters,
-                                       [&](const QString &where, const QString &why) {
-                                           reader.ignore(where, why);
-                                       }),
-                     p["vertex"].toString(), p["fragment"].toString()};
+    ProgramText text{{}, p["vertex"].toString(), p["fragment"].toString()};
+    reader.name(p, "name", "program", text.name);
     const QJsonValue edited = p["edited"];
     if (edited.isBool()) {
         text.edited = edited.toBool();
@@ -81,9 +78,7 @@ QJsonObject sceneFileJson(const SceneFile &file, const QDir &dir)
                                ? QJsonValue(exerciseJson(*file.exercise))
                                : file.exercise->unread;
     if (file.program)
-        root["program"] = QJsonObject{{"name", file.program->name.isEmpty()
-                                                   ? QJsonValue("")
-                                                   : localizedTextJson(file.program->name)},
+        root["program"] = QJsonObject{{"name", SceneJsonReader::nameJson(file.program->name)},
                                       {"edited", file.program->edited},
                                       {"vertex", file.program->vertex},
                                       {"fragment", file.program->fragment}};

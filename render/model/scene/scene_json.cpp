@@ -60,7 +60,7 @@ QJsonObject materialJson(const Material &material)
 QJsonObject objectJson(const ObjectSettings &object)
 {
     QJsonObject ob;
-    ob["name"] = object.name.isEmpty() ? QJsonValue("") : localizedTextJson(object.name);
+    ob["name"] = SceneJsonReader::nameJson(object.name);
     ob["visible"] = object.visible;
     ob["shape"] = toName(object.shape);
     ob["tessellation"] = object.tessellation;
@@ -155,10 +155,7 @@ void readObject(SceneJsonReader &r, const QJsonObject &ob, const QString &path,
                 ObjectSettings &object)
 {
     r.unknownKeys(ob, objectJson(object), path);
-    if (ob.contains("name"))
-        object.name = readLocalizedText(
-            ob.value("name"), SceneJsonReader::join(path, "name"), limits::kMaxNameCharacters,
-            [&](const QString &where, const QString &why) { r.ignore(where, why); });
+    r.name(ob, "name", path, object.name);
     r.boolean(ob, "visible", path, object.visible);
     r.word(ob, "shape", path, parseShape, object.shape);
     r.number(ob, "tessellation", path, object.tessellation, limits::kMinTessellation,

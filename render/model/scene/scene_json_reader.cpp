@@ -1,6 +1,7 @@
 #include "scene_json_reader.h"
 
 #include "message_text.h"
+#include "scene.h"
 
 namespace lb {
 
@@ -75,6 +76,20 @@ void SceneJsonReader::text(const QJsonObject &o, const QString &key, const QStri
         v = j.toString();
     else if (!j.isUndefined())
         ignore(join(path, key), tr("not a string"));
+}
+
+void SceneJsonReader::name(const QJsonObject &o, const QString &key, const QString &path,
+                           LocalizedText &v)
+{
+    if (!o.contains(key))
+        return;
+    v = readLocalizedText(o.value(key), join(path, key), limits::kMaxNameCharacters,
+                          [this](const QString &where, const QString &why) { ignore(where, why); });
+}
+
+QJsonValue SceneJsonReader::nameJson(const LocalizedText &name)
+{
+    return name.isEmpty() ? QJsonValue(QString()) : localizedTextJson(name);
 }
 
 } // namespace lb

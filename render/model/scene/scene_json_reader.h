@@ -4,6 +4,8 @@
 // "lights[2].frame (unknown value)". The path is the file's own spelling (data, never
 // translated); the reason after it is a message, translated in the context lb::SceneJson.
 
+#include "localized_text.h"
+
 #include <QCoreApplication>
 #include <QJsonArray>
 #include <QJsonObject>
@@ -72,6 +74,11 @@ public:
     }
 
     void text(const QJsonObject &o, const QString &key, const QString &path, QString &v);
+    // An object's or a program's name: a string or {language: string}, each at most
+    // kMaxNameCharacters (readLocalizedText); an absent key leaves `v`.
+    void name(const QJsonObject &o, const QString &key, const QString &path, LocalizedText &v);
+    // As a name is written: "" when there is none, else localizedTextJson().
+    static QJsonValue nameJson(const LocalizedText &name);
 
     static QString join(const QString &path, const QString &key)
     {
