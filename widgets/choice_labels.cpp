@@ -38,15 +38,8 @@ QString shadingLabel(Shading shading)
 
 QString specularLabel(SpecularModel specular)
 {
-    switch (specular) {
-    case SpecularModel::Phong:
-        //: Phong's specular term (R.V)^n, as in "phong specular"
-        return QCoreApplication::translate("lb::ChoiceLabels", "phong", "specular");
-    case SpecularModel::Blinn:
-        //: Blinn-Phong's specular term (N.H)^n, as in "blinn specular"
-        return QCoreApplication::translate("lb::ChoiceLabels", "blinn", "specular");
-    }
-    return toName(specular);
+    const TranslatableText &label = specularModel(specular).label;
+    return QCoreApplication::translate("lb::ChoiceLabels", label.source, label.comment);
 }
 
 QString showLabel(ShowChoice show)

@@ -21,7 +21,12 @@ namespace lb {
 namespace {
 glm::vec3 LightColors::*const kLightColours[3] = {&LightColors::ia, &LightColors::id,
                                                   &LightColors::is};
+// The light's row of the lighting model's table (lighting_parameters.h).
+const LightingParameter &row(const char *key)
+{
+    return *lightingParameter(ParameterOwner::Light, key);
 }
+} // namespace
 
 LightPanel::LightPanel(SceneDocument *document, QWidget *parent)
     : ScenePanel(document, ScenePart::Lights, parent)
@@ -60,13 +65,12 @@ LightPanel::LightPanel(SceneDocument *document, QWidget *parent)
     auto *xyzRow = new WrapRow;
     for (int i = 0; i < 3; ++i) {
         QDoubleSpinBox *spin =
-            makeSpin(-limits::kMaxCoordinate, limits::kMaxCoordinate, 2, 0.1,
-                     tr("lightPosition.%1: the light's %1 in the chosen frame").arg(axes[i]));
+            makeSpin(row("position"), row("position").toolTipText().arg(axes[i]));
         connect(spin, &QDoubleSpinBox::valueChanged, this, [this, i](double v) {
             edit([&](Scene &s) { current(s).position[i] = float(v); });
         });
         m_xyz[std::size_t(i)] = spin;
-        feeds(spin, {Semantic::LightPosition, Semantic::LightPositionEye});
+        feeds(spin, row("position").semantics);
         xyzRow->addWidget(spin);
     }
     form->addRow(tr("Position"), xyzRow);
@@ -108,35 +112,26 @@ LightPanel::LightPanel(SceneDocument *document, QWidget *parent)
     //: the object whose frame an object-frame light is given in
     form->addRow(tr("Of object"), m_frameObject);
 
-    const char *symbols[3] = {"Ia", "Id", "Is"};
-    const Semantic semantics[3] = {Semantic::LightAmbient, Semantic::LightDiffuse,
-                                   Semantic::LightSpecular};
-    // Whole sentences, one a term: the term's word is not slotted into one sentence for three.
-    //: %1 the symbol (Ia, Id, Is); %2 the uniforms that carry it
-    const QString tips[3] = {tr("%1 (%2): the light's ambient intensity"),
-                             tr("%1 (%2): the light's diffuse intensity"),
-                             tr("%1 (%2): the light's specular intensity")};
+    const char *colourKeys[3] = {"ia", "id", "is"};
     for (int i = 0; i < 3; ++i) {
-        auto *colour = new ColorEdit(symbols[i], this);
-        colour->setToolTip(tips[i].arg(symbols[i], namesOf({semantics[i]})));
+        const LightingParameter &p = row(colourKeys[i]);
+        const QString symbol = QString::fromLatin1(p.symbol);
+        auto *colour = new ColorEdit(symbol, this);
+        colour->setToolTip(p.toolTipText().arg(symbol, namesOf(p.semantics)));
         connect(colour, &ColorEdit::colorChanged, this, [this, i](const glm::vec3 &c) {
             edit([&](Scene &s) { current(s).colors.*kLightColours[i] = c; });
         });
         m_colors[std::size_t(i)] = colour;
-        feeds(colour, {semantics[i]});
-        form->addRow(symbols[i], colour);
+        feeds(colour, p.semantics);
+        form->addRow(symbol, colour);
     }
 
     // OpenGL 2.1's attenuation and spotlight (issue 15): both scale all three terms.
     const char *kNames[3] = {"kc", "kl", "kq"};
     auto *attenuationRow = new WrapRow;
     for (int i = 0; i < 3; ++i) {
-        QDoubleSpinBox *spin = makeSpin(
-            0.0, limits::kMaxAttenuation, 2, 0.05,
-            tr("lightAttenuation.%1 (%2): a point light's terms are divided by kc + kl·d + "
-               "kq·d², d its distance to the surface (1, 0, 0: none; a directional "
-               "light is never attenuated)")
-                .arg(axes[i], kNames[i]));
+        QDoubleSpinBox *spin =
+            makeSpin(row("attenuation"), row("attenuation").toolTipText().arg(axes[i], kNames[i]));
         connect(spin, &QDoubleSpinBox::valueChanged, this, [this, i](double v) {
             edit([&](Scene &s) {
                 glm::vec3 k = current(s).attenuation;
@@ -149,7 +144,7 @@ LightPanel::LightPanel(SceneDocument *document, QWidget *parent)
             refreshNow(); // a refused edit changes nothing: show the value that holds
         });
         m_attenuation[std::size_t(i)] = spin;
-        feeds(spin, {Semantic::LightAttenuation});
+        feeds(spin, row("attenuation").semantics);
         attenuationRow->addWidget(spin);
     }
     form->addRow(tr("Atten. kc kl kq"), attenuationRow);
@@ -157,40 +152,33 @@ LightPanel::LightPanel(SceneDocument *document, QWidget *parent)
     auto *axisRow = new WrapRow;
     for (int i = 0; i < 3; ++i) {
         QDoubleSpinBox *spin =
-            makeSpin(-limits::kMaxCoordinate, limits::kMaxCoordinate, 2, 0.1,
-                     tr("spotDirection.%1: the spotlight's axis, from the light, in the light's "
-                        "frame")
-                         .arg(axes[i]));
+            makeSpin(row("spot.direction"), row("spot.direction").toolTipText().arg(axes[i]));
         connect(spin, &QDoubleSpinBox::valueChanged, this, [this, i](double v) {
             edit([&](Scene &s) {
                 glm::vec3 d = current(s).spot.direction;
                 d[i] = float(v);
-                if (glm::length(d) >= limits::kMinDirectionLength) // an axis needs a direction
+                if (row("spot.direction").refusal(&d.x).isEmpty()) // an axis needs a direction
                     current(s).spot.direction = d;
             });
             refreshNow();
         });
         m_spotAxis[std::size_t(i)] = spin;
-        feeds(spin, {Semantic::SpotDirection});
+        feeds(spin, row("spot.direction").semantics);
         axisRow->addWidget(spin);
     }
     form->addRow(tr("Spot axis"), axisRow);
 
     auto *spotRow = new WrapRow;
-    m_spotCutoff = makeSpin(0.0, limits::kMaxSpotCutoff, 1, 1.0,
-                            tr("spotCutoff: the cone's half-angle; outside it the light adds "
-                               "nothing, ambient included (180: no spot)"));
+    m_spotCutoff = makeSpin(row("spot.cutoff"), row("spot.cutoff").toolTipText());
     m_spotCutoff->setSuffix(QString::fromUtf8("°"));
     connect(m_spotCutoff, &QDoubleSpinBox::valueChanged, this, [this](double v) {
         edit([&](Scene &s) { current(s).spot.cutoffDegrees = float(v); });
     });
-    feeds(m_spotCutoff, {Semantic::SpotCutoff, Semantic::SpotCosCutoff});
-    m_spotExponent = makeSpin(0.0, limits::kMaxSpotExponent, 1, 1.0,
-                              tr("spotExponent: inside the cone the terms are scaled by "
-                                 "max(-L·D, 0)^exponent, brighter towards the axis"));
+    feeds(m_spotCutoff, row("spot.cutoff").semantics);
+    m_spotExponent = makeSpin(row("spot.exponent"), row("spot.exponent").toolTipText());
     connect(m_spotExponent, &QDoubleSpinBox::valueChanged, this,
             [this](double v) { edit([&](Scene &s) { current(s).spot.exponent = float(v); }); });
-    feeds(m_spotExponent, {Semantic::SpotExponent});
+    feeds(m_spotExponent, row("spot.exponent").semantics);
     spotRow->addWidget(m_spotCutoff);
     spotRow->addWidget(m_spotExponent);
     //: the spotlight's cutoff angle and exponent

@@ -33,39 +33,35 @@ MaterialPanel::MaterialPanel(SceneDocument *document, QWidget *parent)
 {
     auto *form = new QFormLayout(this);
     form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
-    const char *symbols[3] = {"Ka", "Kd", "Ks"};
-    const Semantic semantics[3] = {Semantic::MaterialAmbient, Semantic::MaterialDiffuse,
-                                   Semantic::MaterialSpecular};
-    // Whole sentences, one a term (the term's word was slotted in untranslated).
-    //: %1 the symbol (Ka, Kd, Ks); %2 the uniforms that carry it
-    const QString tips[3] = {tr("%1 (%2): the material's ambient reflection coefficients"),
-                             tr("%1 (%2): the material's diffuse reflection coefficients"),
-                             tr("%1 (%2): the material's specular reflection coefficients")};
+    // The material's rows of the lighting model's table (lighting_parameters.h).
+    const char *colourKeys[3] = {"ka", "kd", "ks"};
     for (int i = 0; i < 3; ++i) {
-        auto *colour = new ColorEdit(symbols[i], this);
-        colour->setToolTip(tips[i].arg(symbols[i], namesOf({semantics[i]})));
+        const LightingParameter &p = *lightingParameter(ParameterOwner::Material, colourKeys[i]);
+        const QString symbol = QString::fromLatin1(p.symbol);
+        auto *colour = new ColorEdit(symbol, this);
+        colour->setToolTip(p.toolTipText().arg(symbol, namesOf(p.semantics)));
         connect(colour, &ColorEdit::colorChanged, this, [this, i](const glm::vec3 &c) {
             edit([&](Scene &s) { s.selectedObject().material.*kMaterialColours[i] = c; });
         });
         m_colors[std::size_t(i)] = colour;
-        feeds(colour, {semantics[i]});
-        form->addRow(symbols[i], colour);
+        feeds(colour, p.semantics);
+        form->addRow(symbol, colour);
     }
 
-    const QString tip = tr("shininess: the specular exponent n in (R.V)^n or (N.H)^n; higher "
-                           "gives a smaller, sharper highlight");
+    const LightingParameter &shininess = *lightingParameter(ParameterOwner::Material, "shininess");
+    const QString tip = shininess.toolTipText();
     m_slider = new QSlider(Qt::Horizontal, this);
     m_slider->setRange(0, kSliderSteps);
     m_slider->setToolTip(tip);
-    m_box = makeSpin(limits::kMinShininess, limits::kMaxShininess, 1, 1.0, tip);
+    m_box = makeSpin(shininess, tip);
     connect(m_slider, &QSlider::valueChanged, this, [this](int position) {
         edit([&](Scene &s) { s.selectedObject().material.shininess = shininessAt(position); });
     });
     connect(m_box, &QDoubleSpinBox::valueChanged, this, [this](double v) {
         edit([&](Scene &s) { s.selectedObject().material.shininess = float(v); });
     });
-    feeds(m_slider, {Semantic::Shininess});
-    feeds(m_box, {Semantic::Shininess});
+    feeds(m_slider, shininess.semantics);
+    feeds(m_box, shininess.semantics);
     auto *row = new QHBoxLayout;
     row->addWidget(m_slider, 1);
     row->addWidget(m_box);

@@ -19,8 +19,7 @@ constexpr glm::vec3 kMirror{1.0f, 0.35f, 1.0f};  // magenta: R (Phong) or H (Bli
 constexpr glm::vec3 kAmbient{0.55f, 0.62f, 0.85f};
 constexpr glm::vec3 kDiffuse{1.0f, 0.55f, 0.2f};
 constexpr glm::vec3 kSpecular = kMirror;
-// Blinn-Phong's curves beside Phong's magenta ones in the Plots panel: a green.
-constexpr glm::vec3 kBlinn{0.45f, 0.9f, 0.4f};
+// Each specular model's curves have its own colour (SpecularModelRow::curveColour).
 
 // L's arrow: the light's diffuse colour at full brightness, never darker than 0.3 (a dark
 // light's arrow stays visible).

@@ -42,8 +42,9 @@ QColor seriesColour(const PlotSeries &s)
     case PlotRole::Diffuse:
         return colours::toQColor(colours::kDiffuse);
     case PlotRole::Specular:
-        return colours::toQColor(s.key.startsWith(QLatin1String("blinn")) ? colours::kBlinn
-                                                                          : colours::kSpecular);
+        if (const SpecularModelRow *model = specularModelOfCurve(s.key))
+            return colours::toQColor(model->curveColour);
+        return colours::toQColor(colours::kSpecular);
     case PlotRole::Light:
         return colours::toQColor(colours::lightArrow(s.lightDiffuse));
     case PlotRole::Direction:
@@ -311,12 +312,10 @@ QString plotSeriesName(const Plot &plot, const PlotSeries &s)
 {
     // Short: the legend of a narrow panel has a row for them all. The title names the models.
     const QString &k = s.key;
-    if (k == QLatin1String("phong"))
-        return QStringLiteral("(R·V)^") + number(plot.shininess);
-    if (k == QLatin1String("blinn"))
-        return QStringLiteral("(N·H)^") + number(plot.shininess);
-    if (k == QLatin1String("blinn_4n"))
-        return QStringLiteral("(N·H)^") + number(4.0f * plot.shininess);
+    const SpecularPlotCurve *curve = nullptr;
+    if (const SpecularModelRow *model = specularModelOfCurve(k, &curve))
+        return QString("(%1)^%2").arg(QString::fromUtf8(model->angle),
+                                      number(curve->exponentTimes * plot.shininess));
     if (k == QLatin1String("ambient"))
         return QCoreApplication::translate("lb::PlotChart", "Ambient");
     if (k == QLatin1String("diffuse"))

@@ -182,10 +182,8 @@ void ProbePanel::update()
     for (const ProbeLight &l : m_result.lights) {
         const QString n = several ? QString::number(l.index + 1) : QString();
         add(l.terms.L, colours::lightArrow(scene.lights[std::size_t(l.index)].colors.id), "L" + n);
-        if (scene.shading.specular == SpecularModel::Blinn)
-            add(l.terms.H, colours::kMirror, "H" + n);
-        else
-            add(l.terms.R, colours::kMirror, "R" + n);
+        const SpecularModelRow &model = specularModel(scene.shading.specular);
+        add(l.terms.*model.vectorOf, colours::kMirror, QString::fromLatin1(model.vector) + n);
     }
     const QPoint pixel = view.topLeft() + QPoint(int(std::floor(m_result.pixel.x())),
                                                  int(std::floor(m_result.pixel.y())));
@@ -221,7 +219,7 @@ void ProbePanel::showText()
     const Scene &scene = m_document->scene();
     const Scene side = sceneOfSide(scene, m_point->sideB);
     const ProbeResult &r = m_result;
-    const bool blinn = side.shading.specular == SpecularModel::Blinn;
+    const SpecularModelRow &specular = specularModel(side.shading.specular);
     const QSize frame = m_viewport->size() * m_viewport->devicePixelRatio();
     const QRect view = viewRect(scene, frame, m_point->sideB);
     const Frames frames = computeFrames(side, float(view.width()) / float(view.height()), r.object);
@@ -274,7 +272,7 @@ void ProbePanel::showText()
                              .arg("<b>" + tr("Light %1").arg(l.index + 1) + "</b>",
                                   frameLabel(light.frame)));
         html += row("L", vec(t.L));
-        html += row(blinn ? "H" : "R", vec(blinn ? t.H : t.R));
+        html += row(QString::fromLatin1(specular.vector), vec(t.*specular.vectorOf));
         // The light's own frame: the way lightInEye() came, undone.
         if (light.frame != LightFrame::Camera) {
             const glm::vec4 p =
@@ -286,7 +284,7 @@ void ProbePanel::showText()
                         vec(glm::vec3(p)) + ", " + vec(glm::normalize(glm::vec3(towards))));
         }
         html += row(QString("N\u00b7L"), QString::number(double(t.nDotL), 'f', 4));
-        html += row(blinn ? QString("N\u00b7H") : QString("R\u00b7V"),
+        html += row(QString::fromUtf8(specular.angle),
                     QString::number(double(t.specularAngle), 'f', 4));
         if (light.position.w != 0.0f)
             html += row(tr("distance, attenuation"), QString("%1, %2")

@@ -51,6 +51,11 @@ bool ScenePanel::eventFilter(QObject *watched, QEvent *event)
     return QWidget::eventFilter(watched, event);
 }
 
+NumberBox *ScenePanel::makeSpin(const LightingParameter &p, const QString &toolTip)
+{
+    return makeSpin(double(p.lo), double(p.hi), p.decimals, p.step, toolTip);
+}
+
 QComboBox *ScenePanel::makeCombo(const QStringList &labels, const QString &toolTip)
 {
     auto *combo = new ElidingComboBox(this); // a narrow column ends its words with "…"

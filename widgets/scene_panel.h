@@ -44,6 +44,8 @@ protected:
     template <typename F> void edit(F &&change) { m_document->edit(std::forward<F>(change)); }
 
     NumberBox *makeSpin(double lo, double hi, int decimals, double step, const QString &toolTip);
+    // A box for one number of a row of the lighting model's table: its range, decimals, step.
+    NumberBox *makeSpin(const LightingParameter &p, const QString &toolTip);
     QComboBox *makeCombo(const QStringList &labels, const QString &toolTip);
     // A "Reset ..." button at the bottom of the panel that applies `reset` to the scene.
     void addResetButton(QFormLayout *form, const QString &text, const QString &toolTip,

@@ -34,11 +34,23 @@ ShadingPanel::ShadingPanel(SceneDocument *document, QWidget *parent)
     form->addRow(tr("Shading"), m_shading);
     m_shadingTip = m_shading->toolTip();
 
-    m_specular = makeCombo({tr("Phong: (R\u00b7V)^n"), tr("Blinn-Phong: (N\u00b7H)^n")},
-                           tr("R = reflect(-L, N), the mirrored light direction; "
-                              "H = normalize(L + V), the half vector (key B)"));
-    connect(m_specular, &QComboBox::currentIndexChanged, this,
-            [this](int i) { edit([&](Scene &s) { s.shading.specular = SpecularModel(i); }); });
+    // The models in their table's order (lighting_models.h), each item's data its model.
+    const auto modelItems = [](QComboBox *combo, QString (*label)(SpecularModel)) {
+        for (const SpecularModelRow &row : specularModels())
+            combo->addItem(label(row.model), int(row.model));
+    };
+    m_specular = makeCombo({}, tr("R = reflect(-L, N), the mirrored light direction; "
+                                  "H = normalize(L + V), the half vector (key B)"));
+    modelItems(m_specular, [](SpecularModel model) {
+        const SpecularModelRow &row = specularModel(model);
+        //: the specular model's name and its factor: "Phong: (R·V)^n"
+        return tr("%1: %2").arg(QString::fromUtf8(row.name), QString::fromUtf8(row.factor));
+    });
+    connect(m_specular, &QComboBox::currentIndexChanged, this, [this] {
+        edit([&](Scene &s) {
+            s.shading.specular = SpecularModel(m_specular->currentData().toInt());
+        });
+    });
     feeds(m_specular, {Semantic::SpecularModel});
     //: the row of the specular term's choice (Phong or Blinn-Phong)
     form->addRow(tr("Specular"), m_specular);
@@ -152,11 +164,16 @@ ShadingPanel::ShadingPanel(SceneDocument *document, QWidget *parent)
             [this](int i) { edit([&](Scene &s) { s.compare.shading = Shading(i); }); });
     //: side B's shading (B is the compare view's second side)
     form->addRow(tr("B shading"), m_compareShading);
-    m_compareSpecular =
-        //: side B's specular term (B is the compare view's second side)
-        makeCombo({tr("B: Phong (R·V)"), tr("B: Blinn-Phong (N·H)")}, tr("Side B's specular term"));
-    connect(m_compareSpecular, &QComboBox::currentIndexChanged, this,
-            [this](int i) { edit([&](Scene &s) { s.compare.specular = SpecularModel(i); }); });
+    m_compareSpecular = makeCombo({}, tr("Side B's specular term"));
+    modelItems(m_compareSpecular, [](SpecularModel model) {
+        //: side B's specular model (B is the compare view's second side): "B: Phong (R·V)"
+        return tr("B: %1").arg(specularModelTitle(model));
+    });
+    connect(m_compareSpecular, &QComboBox::currentIndexChanged, this, [this] {
+        edit([&](Scene &s) {
+            s.compare.specular = SpecularModel(m_compareSpecular->currentData().toInt());
+        });
+    });
     //: side B's specular term (B is the compare view's second side)
     form->addRow(tr("B specular"), m_compareSpecular);
     for (QComboBox *combo : {m_compareShading, m_compareSpecular})
@@ -203,7 +220,7 @@ void ShadingPanel::refresh(const Scene &scene)
         b15(m_show);
     m_show->setCurrentIndex(int(scene.shading.show));
     m_shading->setCurrentIndex(int(scene.shading.shading));
-    m_specular->setCurrentIndex(int(scene.shading.specular));
+    m_specular->setCurrentIndex(m_specular->findData(int(scene.shading.specular)));
     m_projection->setCurrentIndex(int(scene.shading.projection));
     m_lighting->setChecked(scene.shading.lighting);
     m_terms[0]->setChecked(scene.shading.terms.ambient);
@@ -215,7 +232,7 @@ void ShadingPanel::refresh(const Scene &scene)
     m_normalsByModelView->setChecked(scene.shading.normalsByModelView);
     m_compareMode->setCurrentIndex(int(scene.compare.mode));
     m_compareShading->setCurrentIndex(int(scene.compare.shading));
-    m_compareSpecular->setCurrentIndex(int(scene.compare.specular));
+    m_compareSpecular->setCurrentIndex(m_compareSpecular->findData(int(scene.compare.specular)));
     m_wipe->setValue(int(std::lround(scene.compare.wipe * 1000.0f)));
     const bool comparing = scene.compare.mode != CompareMode::Off;
     m_compareShading->setEnabled(comparing && m_sideBFixed.isEmpty());

@@ -47,8 +47,7 @@ QString Viewport::compareText() const
                   .arg(s.compare.shading == Shading::Gouraud ? tr("Gouraud")
                        : s.compare.shading == Shading::Flat  ? tr("flat")
                                                              : tr("Phong"),
-                       s.compare.specular == SpecularModel::Blinn ? tr("Blinn-Phong (N\u00b7H)")
-                                                                  : tr("Phong (R\u00b7V)"));
+                       specularModelTitle(s.compare.specular));
     switch (s.compare.mode) {
     case CompareMode::Off:
         return {};

@@ -24,6 +24,15 @@ OptionInfo value(const char *name, const char *valueName, const QString &help)
     return o;
 }
 
+// "Specular exponent (1 to 1000)."
+QString parameterHelp(const LightingParameter &p)
+{
+    return QString(p.count == 1 ? "%1 (%2 to %3)." : "%1 (each %2 to %3).")
+        .arg(QString::fromUtf8(p.description))
+        .arg(double(p.lo))
+        .arg(double(p.hi));
+}
+
 OptionInfo flag(const char *name, const QString &help)
 {
     return value(name, "", help);
@@ -98,7 +107,7 @@ std::vector<OptionInfo> visibleOptions()
     help.names.prepend("h");
     OptionInfo version = flag("version", "Print the version and exit.");
     version.names.prepend("v");
-    return {
+    std::vector<OptionInfo> options{
         help,
         version,
         file("scene", "FILE.json", kSceneSuffixes,
@@ -165,100 +174,101 @@ std::vector<OptionInfo> visibleOptions()
         words("frame", lightFrameNames(), "Frame the light position is given in."),
         value("light-object", "INDEX",
               "The object (0 for the first) whose frame an object-frame light 1 is given in."),
-        value("light", "X,Y,Z,W", "Light position (W = 1) or direction towards the light (W = 0)."),
-        value("attenuation", "KC,KL,KQ",
-              "Attenuation of light 1 when it is a point: 1 / (KC + KL*d + KQ*d^2) (each "
-              "0 to 1000, not all 0; default 1,0,0: none)."),
-        value("spot", "DX,DY,DZ,CUTOFF,EXPONENT",
-              "Make light 1 a spotlight: the cone's axis in the light's frame, its "
-              "half-angle in degrees (0 to 180; 180: no spot) and its exponent (0 to "
-              "128)."),
-        value("ia", "R,G,B", "Ambient intensity of the light, Ia (0 to 1)."),
-        value("id", "R,G,B", "Diffuse intensity of the light, Id (0 to 1)."),
-        value("is", "R,G,B", "Specular intensity of the light, Is (0 to 1)."),
-        value("ka", "R,G,B", "Ambient reflection of the material, Ka (0 to 1)."),
-        value("kd", "R,G,B", "Diffuse reflection of the material, Kd (0 to 1)."),
-        value("ks", "R,G,B", "Specular reflection of the material, Ks (0 to 1)."),
-        value("shininess", "S", "Specular exponent (1 to 1000)."),
-        words("projection", projectionNames(), "Projection; V = -posC or (0,0,1) to match."),
-        value("camera-orbit", "YAW,PITCH", "Camera orbit in degrees (pitch -89 to 89)."),
-        value("model-rotate", "X,Y,Z", "Model rotation in degrees about X, then Y, then Z."),
-        value("model-scale", "X,Y,Z", "Model scale per axis (0.01 to 100)."),
-        value("model-translate", "X,Y,Z",
-              "Where the object's centre lies in the world (-1000 to 1000)."),
-        words("lighting", onOffNames(), "Lighting model on, or the diffuse colour unlit."),
-        words("vertex-colors", onOffNames(), "Modulate ambient and diffuse by the vertex colours."),
-        words("texture", onOffNames(),
-              "Modulate ambient and diffuse by the texture: the image file, else the "
-              "mesh file's own, else the checker."),
-        file("texture-file", "FILE", {},
-             "An image (PNG, JPEG, any format Qt reads; at most 16384 x 16384, drawn at "
-             "most 4096 on a side) as the texture; switches the texture on."),
-        words("texture-wrap", textureWrapNames(),
-              "Texture coordinates outside 0 to 1 repeat or clamp."),
-        words("texture-filter", textureFilterNames(),
-              "The nearest texel or the four around, weighted."),
-        words("texture-mipmaps", onOffNames(),
-              "Read smaller copies of the texture where it is minified (trilinear with "
-              "the linear filter)."),
-        words("show-light", onOffNames(), "Draw the light's marker."),
-        file("screenshot", "FILE.png", {"png"},
-             "Open the window, save a screenshot once it has drawn, exit."),
-        flag("presentation",
-             "Open the window in presentation mode: full screen, the presentation UI scale (F11)."),
-        value("ui-scale", "PERCENT",
-              "UI scale of the window (or of presentation mode with --presentation), 100 "
-              "to 250; kept."),
-        words("language", commandLineLanguages(),
-              "The window's language for this run, and --plot's picture's (View > Language "
-              "keeps one; the command line's own output is English)."),
-        value("bench-frames", "N", "Draw N frames offscreen and print the frame rate as JSON."),
-        value("bench-edits", "N",
-              "Open the window, time N shader edits to the screen, print JSON, exit."),
-        file("vertex", "FILE", {},
-             "Vertex shader to draw with instead of the built-in one (with --fragment)."),
-        file("fragment", "FILE", {}, "Fragment shader to draw with (with --vertex)."),
-        value("frame-budget", "SECONDS",
-              "Refuse your program when one frame at --size would take longer (default "
-              "1; 0.01 to 60)."),
-        value("bind", "NAME=KEY",
-              "Feed the uniform NAME with KEY, one of what the scene gives (model-view, "
-              "projection, light-position-world, material-diffuse...; a KEY it does not know "
-              "lists them all), or none: its own value; repeatable; saved with --save-scene."),
-        flag("translate-webgl1",
-             "Run WebGL 1 shaders (no #version) translated to GLSL 3.30 core instead of "
-             "under \"#version 100\" (automatic where the driver refuses #version 100)."),
-        flag("grade", "Grade submissions (the arguments after the options: NAME.vert + "
-                      "NAME.frag, a folder with one such pair, or a scene file with a program) "
-                      "against --exercise; one line per submission, and a progress line on a "
-                      "terminal; exit 0, 2 when one could not be read (the others are graded), "
-                      "1 when the report or a sheet could not be written, 3 with "
-                      "--report-format github when the submission did not pass every case."),
-        file("exercise", "FILE.json", kSceneSuffixes,
-             "The exercise to grade against: a scene file with an \"exercise\" section "
-             "(reference program, cases, tolerance)."),
-        file("report", "FILE", {"csv", "xml", "json"},
-             "With --grade: the report, written again whole after each submission (one CSV "
-             "row per submission unless --report-format says otherwise); - writes it to "
-             "standard output once the batch ends, and the summary lines to standard error."),
-        words("report-format", reportFormatNames(),
-              "With --report: csv (default; points, seed and version in columns), junit (XML, "
-              "one testsuite per submission, as GitLab and Jenkins read it), or one "
-              "submission's file for a platform: gradescope (results.json), github (GitHub "
-              "Classroom's runner result: base64 it into the step's result output; exit 3 "
-              "unless every case passed) or coderunner (CodeRunner's combinator grader JSON; "
-              "nothing on standard error, a batch error goes into the JSON)."),
-        folder("sheets", "DIR",
-               "With --grade: one PNG per submission (its worst case: student, reference, "
-               "difference); the sheets of the previous run there (listed in "
-               "DIR/.lightbench-sheets) are removed first."),
-        value("seed", "N",
-              "With --grade: the cases' random parameters (default 1; the same seed "
-              "gives the same cases)."),
-        flag("check", "Compile and link --vertex and --fragment and try them on small frames, "
-                      "print each diagnostic as FILE:LINE:COLUMN: error|warning: message; exit 0 "
-                      "if the program links and passes the trial (see --frame-budget), 1 if not."),
     };
+    // Light 1's and the selected object's numbers, as the lighting model's table declares
+    // them (lighting_parameters.h), with their ranges.
+    for (const LightingParameter &p : lightingParameters())
+        if (p.option)
+            options.push_back(value(p.option, p.metavar, parameterHelp(p)));
+    options.insert(
+        options.end(),
+        {
+            value("spot", "DX,DY,DZ,CUTOFF,EXPONENT",
+                  "Make light 1 a spotlight: the cone's axis in the light's frame, its "
+                  "half-angle in degrees (0 to 180; 180: no spot) and its exponent (0 to "
+                  "128)."),
+            words("projection", projectionNames(), "Projection; V = -posC or (0,0,1) to match."),
+            value("camera-orbit", "YAW,PITCH", "Camera orbit in degrees (pitch -89 to 89)."),
+            value("model-rotate", "X,Y,Z", "Model rotation in degrees about X, then Y, then Z."),
+            value("model-scale", "X,Y,Z", "Model scale per axis (0.01 to 100)."),
+            value("model-translate", "X,Y,Z",
+                  "Where the object's centre lies in the world (-1000 to 1000)."),
+            words("lighting", onOffNames(), "Lighting model on, or the diffuse colour unlit."),
+            words("vertex-colors", onOffNames(),
+                  "Modulate ambient and diffuse by the vertex colours."),
+            words("texture", onOffNames(),
+                  "Modulate ambient and diffuse by the texture: the image file, else the "
+                  "mesh file's own, else the checker."),
+            file("texture-file", "FILE", {},
+                 "An image (PNG, JPEG, any format Qt reads; at most 16384 x 16384, drawn at "
+                 "most 4096 on a side) as the texture; switches the texture on."),
+            words("texture-wrap", textureWrapNames(),
+                  "Texture coordinates outside 0 to 1 repeat or clamp."),
+            words("texture-filter", textureFilterNames(),
+                  "The nearest texel or the four around, weighted."),
+            words("texture-mipmaps", onOffNames(),
+                  "Read smaller copies of the texture where it is minified (trilinear with "
+                  "the linear filter)."),
+            words("show-light", onOffNames(), "Draw the light's marker."),
+            file("screenshot", "FILE.png", {"png"},
+                 "Open the window, save a screenshot once it has drawn, exit."),
+            flag("presentation", "Open the window in presentation mode: full screen, the "
+                                 "presentation UI scale (F11)."),
+            value("ui-scale", "PERCENT",
+                  "UI scale of the window (or of presentation mode with --presentation), 100 "
+                  "to 250; kept."),
+            words("language", commandLineLanguages(),
+                  "The window's language for this run, and --plot's picture's (View > Language "
+                  "keeps one; the command line's own output is English)."),
+            value("bench-frames", "N", "Draw N frames offscreen and print the frame rate as JSON."),
+            value("bench-edits", "N",
+                  "Open the window, time N shader edits to the screen, print JSON, exit."),
+            file("vertex", "FILE", {},
+                 "Vertex shader to draw with instead of the built-in one (with --fragment)."),
+            file("fragment", "FILE", {}, "Fragment shader to draw with (with --vertex)."),
+            value("frame-budget", "SECONDS",
+                  "Refuse your program when one frame at --size would take longer (default "
+                  "1; 0.01 to 60)."),
+            value("bind", "NAME=KEY",
+                  "Feed the uniform NAME with KEY, one of what the scene gives (model-view, "
+                  "projection, light-position-world, material-diffuse...; a KEY it does not know "
+                  "lists them all), or none: its own value; repeatable; saved with --save-scene."),
+            flag("translate-webgl1",
+                 "Run WebGL 1 shaders (no #version) translated to GLSL 3.30 core instead of "
+                 "under \"#version 100\" (automatic where the driver refuses #version 100)."),
+            flag("grade", "Grade submissions (the arguments after the options: NAME.vert + "
+                          "NAME.frag, a folder with one such pair, or a scene file with a program) "
+                          "against --exercise; one line per submission, and a progress line on a "
+                          "terminal; exit 0, 2 when one could not be read (the others are graded), "
+                          "1 when the report or a sheet could not be written, 3 with "
+                          "--report-format github when the submission did not pass every case."),
+            file("exercise", "FILE.json", kSceneSuffixes,
+                 "The exercise to grade against: a scene file with an \"exercise\" section "
+                 "(reference program, cases, tolerance)."),
+            file("report", "FILE", {"csv", "xml", "json"},
+                 "With --grade: the report, written again whole after each submission (one CSV "
+                 "row per submission unless --report-format says otherwise); - writes it to "
+                 "standard output once the batch ends, and the summary lines to standard error."),
+            words("report-format", reportFormatNames(),
+                  "With --report: csv (default; points, seed and version in columns), junit (XML, "
+                  "one testsuite per submission, as GitLab and Jenkins read it), or one "
+                  "submission's file for a platform: gradescope (results.json), github (GitHub "
+                  "Classroom's runner result: base64 it into the step's result output; exit 3 "
+                  "unless every case passed) or coderunner (CodeRunner's combinator grader JSON; "
+                  "nothing on standard error, a batch error goes into the JSON)."),
+            folder("sheets", "DIR",
+                   "With --grade: one PNG per submission (its worst case: student, reference, "
+                   "difference); the sheets of the previous run there (listed in "
+                   "DIR/.lightbench-sheets) are removed first."),
+            value("seed", "N",
+                  "With --grade: the cases' random parameters (default 1; the same seed "
+                  "gives the same cases)."),
+            flag("check",
+                 "Compile and link --vertex and --fragment and try them on small frames, "
+                 "print each diagnostic as FILE:LINE:COLUMN: error|warning: message; exit 0 "
+                 "if the program links and passes the trial (see --frame-budget), 1 if not."),
+        });
+    return options;
 }
 
 } // namespace lb

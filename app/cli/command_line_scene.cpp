@@ -102,38 +102,32 @@ void parseSceneOptions(const QCommandLineParser &parser, CommandLine &cl)
         const LightFrame v = word("frame", value("frame"), parseLightFrame, lightFrameNames());
         add([v](Scene &s) { s.lights[0].frame = v; });
     }
-    if (given("light")) {
-        const auto v = numbers("light", value("light"), 4, "X,Y,Z,W");
-        for (int i = 0; i < 3; ++i)
-            checkRange("light", v[std::size_t(i)], -limits::kMaxCoordinate, limits::kMaxCoordinate);
-        if (v[3] != 0.0f && v[3] != 1.0f)
-            fail("light", QString("W must be 0 (directional) or 1 (point), got %1").arg(v[3]));
-        if (v[3] == 0.0f && v[0] == 0.0f && v[1] == 0.0f && v[2] == 0.0f)
-            fail("light", "a directional light (W = 0) needs a non-zero direction");
-        const glm::vec4 p(v[0], v[1], v[2], v[3]);
-        add([p](Scene &s) { s.lights[0].position = p; });
-    }
-    if (given("attenuation")) {
-        const auto v = numbers("attenuation", value("attenuation"), 3, "KC,KL,KQ");
-        for (float x : v)
-            checkRange("attenuation", x, 0.0f, limits::kMaxAttenuation);
-        const glm::vec3 k(v[0], v[1], v[2]);
-        if (k == glm::vec3(0.0f))
-            fail("attenuation", "KC, KL and KQ cannot all be 0 (the light would be infinite)");
-        add([k](Scene &s) { s.lights[0].attenuation = k; });
+    // Light 1's and the selected object's numbers, each row of the lighting model's table
+    // that has an option (lighting_parameters.h): its count, range and refusal.
+    for (const LightingParameter &p : lightingParameters()) {
+        if (!p.option || !given(p.option))
+            continue;
+        const std::vector<float> v = parameterOption(p, p.option, value(p.option));
+        add([v, row = &p](Scene &s) {
+            float *to = row->owner == ParameterOwner::Light
+                            ? row->numbers(s.lights[0])
+                            : row->numbers(s.selectedObject().material);
+            std::copy(v.begin(), v.end(), to);
+        });
     }
     if (given("spot")) {
+        // The spot's three rows in one option: DX,DY,DZ then the cutoff and the exponent.
         const auto v = numbers("spot", value("spot"), 5, "DX,DY,DZ,CUTOFF,EXPONENT");
-        for (int i = 0; i < 3; ++i)
-            checkRange("spot", v[std::size_t(i)], -limits::kMaxCoordinate, limits::kMaxCoordinate);
-        if (glm::length(glm::vec3(v[0], v[1], v[2])) < limits::kMinDirectionLength)
-            fail("spot", "the direction DX,DY,DZ cannot be 0,0,0 (or nearly)");
-        if (v[3] < 0.0f || v[3] > limits::kMaxSpotCutoff)
-            fail("spot", QString("the cutoff %1 is outside 0 to 180 degrees").arg(v[3]));
-        if (v[4] < 0.0f || v[4] > limits::kMaxSpotExponent)
-            fail("spot", QString("the exponent %1 is outside 0 to 128").arg(v[4]));
-        const Spot spot{{v[0], v[1], v[2]}, v[3], v[4]};
-        add([spot](Scene &s) { s.lights[0].spot = spot; });
+        Light light;
+        std::size_t at = 0;
+        for (const char *key : {"spot.direction", "spot.cutoff", "spot.exponent"}) {
+            const LightingParameter &p = *lightingParameter(ParameterOwner::Light, key);
+            std::vector<float> part(v.begin() + long(at), v.begin() + long(at) + p.count);
+            checkParameter(p, "spot", part);
+            std::copy(part.begin(), part.end(), p.numbers(light));
+            at += std::size_t(p.count);
+        }
+        add([spot = light.spot](Scene &s) { s.lights[0].spot = spot; });
     }
     if (given("show")) {
         const ShowChoice v = word("show", value("show"), parseShowChoice, showChoiceNames());
@@ -155,27 +149,6 @@ void parseSceneOptions(const QCommandLineParser &parser, CommandLine &cl)
                                   .arg(echoed(word)));
         }
         add([terms](Scene &s) { s.shading.terms = terms; });
-    }
-    const std::pair<const char *, glm::vec3 LightColors::*> lightColours[] = {
-        {"ia", &LightColors::ia}, {"id", &LightColors::id}, {"is", &LightColors::is}};
-    for (const auto &[name, member] : lightColours) {
-        if (given(name)) {
-            const glm::vec3 c = colourOption(name, value(name));
-            add([c, member = member](Scene &s) { s.lights[0].colors.*member = c; });
-        }
-    }
-    const std::pair<const char *, glm::vec3 Material::*> materialColours[] = {
-        {"ka", &Material::ka}, {"kd", &Material::kd}, {"ks", &Material::ks}};
-    for (const auto &[name, member] : materialColours) {
-        if (given(name)) {
-            const glm::vec3 c = colourOption(name, value(name));
-            add([c, member = member](Scene &s) { s.selectedObject().material.*member = c; });
-        }
-    }
-    if (given("shininess")) {
-        const float v = numbers("shininess", value("shininess"), 1, "a number")[0];
-        checkRange("shininess", v, limits::kMinShininess, limits::kMaxShininess);
-        add([v](Scene &s) { s.selectedObject().material.shininess = v; });
     }
     if (given("bind")) {
         UniformBindings bindings;

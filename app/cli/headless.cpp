@@ -148,8 +148,7 @@ QJsonObject probeJson(const ProbeResult &probe, const glm::ivec3 &gpu, QPoint pi
         l["H"] = array(t.H);
         l["R"] = array(t.R);
         l["NdotL"] = rounded(t.nDotL);
-        l[scene.shading.specular == SpecularModel::Blinn ? "NdotH" : "RdotV"] =
-            rounded(t.specularAngle);
+        l[QLatin1String(specularModel(scene.shading.specular).angleKey)] = rounded(t.specularAngle);
         l["distance"] = rounded(t.distance); // 0 for a directional light
         l["attenuation"] = rounded(t.attenuation);
         l["spot"] = rounded(t.spot);

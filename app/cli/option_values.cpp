@@ -52,12 +52,22 @@ glm::vec3 vec3Option(const QString &option, const QString &text, float lo, float
     return glm::vec3(v[0], v[1], v[2]);
 }
 
-glm::vec3 colourOption(const QString &option, const QString &text)
+std::vector<float> parameterOption(const LightingParameter &p, const QString &option,
+                                   const QString &text)
 {
-    const auto v = numbers(option, text, 3, "R,G,B");
+    const std::vector<float> v =
+        numbers(option, text, p.count, p.count == 1 ? "a number" : p.metavar);
+    checkParameter(p, option, v);
+    return v;
+}
+
+void checkParameter(const LightingParameter &p, const QString &option, const std::vector<float> &v)
+{
     for (float x : v)
-        checkRange(option, x, 0.0f, 1.0f);
-    return glm::vec3(v[0], v[1], v[2]);
+        checkRange(option, x, p.lo, p.hi);
+    const QString refused = p.refusalInEnglish(v.data());
+    if (!refused.isEmpty())
+        fail(option, refused);
 }
 
 bool onOff(const QString &option, const QString &text)

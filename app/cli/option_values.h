@@ -3,6 +3,8 @@
 // returns the value or throws BadOption with the option's name and what was wrong, which
 // parseCommandLine() turns into its one-line message.
 
+#include "lighting_parameters.h"
+
 #include <QString>
 #include <QStringList>
 
@@ -28,7 +30,11 @@ std::vector<float> numbers(const QString &option, const QString &text, int count
                            const char *shape);
 void checkRange(const QString &option, float v, float lo, float hi);
 glm::vec3 vec3Option(const QString &option, const QString &text, float lo, float hi);
-glm::vec3 colourOption(const QString &option, const QString &text); // each 0 to 1
+// A row of the lighting model's table (lighting_parameters.h): its numbers, each within the
+// row's range, refused as a whole where the row refuses them.
+std::vector<float> parameterOption(const LightingParameter &p, const QString &option,
+                                   const QString &text);
+void checkParameter(const LightingParameter &p, const QString &option, const std::vector<float> &v);
 bool onOff(const QString &option, const QString &text);
 int integer(const QString &option, const QString &text, int lo, int hi);
 QString readShader(const char *option, const QString &path); // the file's text

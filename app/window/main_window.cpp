@@ -249,12 +249,12 @@ void MainWindow::syncShadingWithProgram()
                        "differ away from the middle of the view. The orthographic projection "
                        "(key P) makes them agree.")
                   : QString());
-    if (fixed.gouraud || fixed.blinn)
+    if (fixed.gouraud || fixed.specular)
         m_document.edit([&](Scene &s) {
             if (fixed.gouraud)
                 s.shading.shading = *fixed.gouraud ? Shading::Gouraud : Shading::Phong;
-            if (fixed.blinn)
-                s.shading.specular = *fixed.blinn ? SpecularModel::Blinn : SpecularModel::Phong;
+            if (fixed.specular)
+                s.shading.specular = *fixed.specular;
         });
     if (!fixed.gouraud) {
         // Only the built-in program follows the choice (it is two programs, switched); any

@@ -96,7 +96,7 @@ void MainWindow::buildMenus()
     // Ctrl+B, not B: a clicker's "blank screen" key is B (blankPressed()).
     addItem(
         shading, tr("Toggle Phong / &Blinn-Phong specular"), QKeySequence(tr("Ctrl+B")), [this] {
-            if (m_shaders.fixedModel().blinn) {
+            if (m_shaders.fixedModel().specular) {
                 m_status->showMessage(tr("The program in the editor (%1) computes its own specular "
                                          "term: load a preset or Reset Everything to switch it.")
                                           .arg(m_editor->programName()));
@@ -106,11 +106,8 @@ void MainWindow::buildMenus()
                 m_status->showMessage(m_shading->specularCombo()->toolTip());
                 return;
             }
-            m_document.edit([](Scene &s) {
-                s.shading.specular = s.shading.specular == SpecularModel::Blinn
-                                         ? SpecularModel::Phong
-                                         : SpecularModel::Blinn;
-            });
+            m_document.edit(
+                [](Scene &s) { s.shading.specular = nextSpecularModel(s.shading.specular); });
         });
     addItem(shading, tr("Toggle &Perspective / Orthographic"), QKeySequence(tr("P", "shortcut")),
             [this] {

@@ -94,9 +94,8 @@ QString statusDescription(const Scene &s, const QString &programName, bool built
     if (builtInProgram && s.shading.show != ShowChoice::Colour)
         clauses << translated(kShowing, s.shading.show);
     if (builtInProgram) // the Shading panel's specular choice applies
-        clauses << (s.shading.specular == SpecularModel::Blinn
-                        ? ScenePhrases::tr("Blinn-Phong specular (N\u00b7H)")
-                        : ScenePhrases::tr("Phong specular (R\u00b7V)"));
+        //: %1 the specular model's name and cosine: "Blinn-Phong (N·H)"
+        clauses << ScenePhrases::tr("%1 specular").arg(specularModelTitle(s.shading.specular));
     QString program = clauses.takeFirst();
     for (const QString &clause : clauses)
         //: joins the status line's clauses about the program: "Program: toon.vert, drawn flat"

@@ -39,9 +39,9 @@ const std::vector<Preset> &presets()
         {QT_TRANSLATE_NOOP("lb::Presets", "Built-in: Gouraud shading (per vertex)"),
          ":/shaders/gouraud", true},
         {QT_TRANSLATE_NOOP("lb::Presets", "Slides: Gouraud, WebGL 1 as printed"),
-         ":/shaders/presets/slides_gouraud", true, true, true},
+         ":/shaders/presets/slides_gouraud", true, "blinn", true},
         {QT_TRANSLATE_NOOP("lb::Presets", "Slides: Phong shading, WebGL 1 as printed"),
-         ":/shaders/presets/slides_phong", false, true, true},
+         ":/shaders/presets/slides_phong", false, "blinn", true},
         {QT_TRANSLATE_NOOP("lb::Presets", "Toon (the exercise's \"like Zelda\"), GLSL 3.30"),
          ":/shaders/presets/toon"},
     };

@@ -16,10 +16,11 @@ struct Preset
     QString name;
     QString resource; // ":/shaders/NAME" without the .vert/.frag suffix
     // The course model the program computes, where its text fixes it: Gouraud (true) or
-    // Phong shading, Blinn-Phong (true) or Phong specular; none where it follows a uniform
-    // or is a model of its own (toon). The probe's reference and the panels follow these.
+    // Phong shading, and the specular model by its word ("blinn", lighting_models.h); none
+    // where it follows a uniform or is a model of its own (toon). The probe's reference and
+    // the panels follow these.
     std::optional<bool> gouraud{};
-    std::optional<bool> blinn{};
+    const char *specular = nullptr;
     // The text computes V = (0,0,1), the parallel view vector, whatever the projection.
     bool parallelView = false;
     QString vertexSource() const;

@@ -727,21 +727,7 @@
         <translation>flach</translation>
     </message>
     <message>
-        <location line="+10"/>
-        <source>phong</source>
-        <comment>specular</comment>
-        <extracomment>Phong&apos;s specular term (R.V)^n, as in &quot;phong specular&quot;</extracomment>
-        <translation>Phong</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>blinn</source>
-        <comment>specular</comment>
-        <extracomment>Blinn-Phong&apos;s specular term (N.H)^n, as in &quot;blinn specular&quot;</extracomment>
-        <translation>Blinn-Phong</translation>
-    </message>
-    <message>
-        <location line="+10"/>
+        <location line="+16"/>
         <source>colour</source>
         <comment>show</comment>
         <translation>Farbe</translation>
@@ -801,6 +787,20 @@
         <comment>show</comment>
         <extracomment>the attenuation drawn as grey</extracomment>
         <translation>Abschwächung</translation>
+    </message>
+    <message>
+        <location filename="../../render/model/lighting/lighting_models.cpp" line="+29"/>
+        <source>phong</source>
+        <comment>specular</comment>
+        <extracomment>Phong&apos;s specular term (R.V)^n, as in &quot;phong specular&quot;</extracomment>
+        <translation>Phong</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>blinn</source>
+        <comment>specular</comment>
+        <extracomment>Blinn-Phong&apos;s specular term (N.H)^n, as in &quot;blinn specular&quot;</extracomment>
+        <translation>Blinn-Phong</translation>
     </message>
 </context>
 <context>
@@ -1502,7 +1502,7 @@
         <translation>die Speichergrenze für den Import</translation>
     </message>
     <message>
-        <location filename="../../render/model/scene/lesson.cpp" line="+203"/>
+        <location filename="../../render/model/scene/lesson.cpp" line="+208"/>
         <location line="+42"/>
         <source>a lesson file</source>
         <translation>eine Lektionsdatei</translation>
@@ -1513,7 +1513,7 @@
         <translation>die Lektion</translation>
     </message>
     <message>
-        <location filename="../../render/model/scene/scene_file.cpp" line="+191"/>
+        <location filename="../../render/model/scene/scene_file.cpp" line="+186"/>
         <location line="+15"/>
         <source>a scene file</source>
         <translation>eine Szenendatei</translation>
@@ -1939,7 +1939,7 @@
 <context>
     <name>lb::Lesson</name>
     <message>
-        <location filename="../../render/model/scene/lesson.cpp" line="-213"/>
+        <location filename="../../render/model/scene/lesson.cpp" line="-218"/>
         <source>%1 (%2)</source>
         <extracomment>a field of a lesson file (%1, &quot;step 2: caption.de&quot;) and why it was not used (%2)</extracomment>
         <translation>%1 (%2)</translation>
@@ -1967,7 +1967,7 @@
         <translation>%1: keine Szene (&quot;scene&quot; muss ein Szenenobjekt oder der Name einer Szenendatei sein)</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+45"/>
         <source>%1: not a lesson file: %2 at byte %3</source>
         <extracomment>%1 a path, %2 Qt&apos;s JSON parser&apos;s reason</extracomment>
         <translation>%1: keine Lektionsdatei: %2 bei Byte %3</translation>
@@ -2323,13 +2323,13 @@
 <context>
     <name>lb::LightPanel</name>
     <message>
-        <location filename="../../widgets/light_panel.cpp" line="+35"/>
-        <location line="+189"/>
+        <location filename="../../widgets/light_panel.cpp" line="+40"/>
+        <location line="+172"/>
         <source>Light %1</source>
         <translation>Licht %1</translation>
     </message>
     <message>
-        <location line="-186"/>
+        <location line="-169"/>
         <source>Up to four lights; their terms add up. A shader that declares one light (not an array) reads light 1</source>
         <translation>Bis zu vier Lichter; ihre Anteile addieren sich. Ein Shader, der nur ein Licht deklariert (kein Array), liest Licht 1</translation>
     </message>
@@ -2351,12 +2351,7 @@
         <translation>Licht</translation>
     </message>
     <message>
-        <location line="+6"/>
-        <source>lightPosition.%1: the light&apos;s %1 in the chosen frame</source>
-        <translation>lightPosition.%1: die %1-Koordinate des Lichts im gewählten Koordinatensystem</translation>
-    </message>
-    <message>
-        <location line="+8"/>
+        <location line="+13"/>
         <source>Position</source>
         <translation>Position</translation>
     </message>
@@ -2420,53 +2415,17 @@
         <translation>Bezugsobjekt</translation>
     </message>
     <message>
-        <location line="+7"/>
-        <source>%1 (%2): the light&apos;s ambient intensity</source>
-        <extracomment>%1 the symbol (Ia, Id, Is); %2 the uniforms that carry it</extracomment>
-        <translation>%1 (%2): die ambiente Intensität des Lichts</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>%1 (%2): the light&apos;s diffuse intensity</source>
-        <translation>%1 (%2): die diffuse Intensität des Lichts</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>%1 (%2): the light&apos;s specular intensity</source>
-        <translation>%1 (%2): die spiegelnde Intensität des Lichts</translation>
-    </message>
-    <message>
-        <location line="+18"/>
-        <source>lightAttenuation.%1 (%2): a point light&apos;s terms are divided by kc + kl·d + kq·d², d its distance to the surface (1, 0, 0: none; a directional light is never attenuated)</source>
-        <translation>lightAttenuation.%1 (%2): Die Anteile eines Punktlichts werden durch kc + kl·d + kq·d² geteilt, d ist sein Abstand zur Oberfläche (1, 0, 0: keine; ein gerichtetes Licht wird nie abgeschwächt)</translation>
-    </message>
-    <message>
-        <location line="+19"/>
+        <location line="+37"/>
         <source>Atten. kc kl kq</source>
         <translation>Abschw. kc kl kq</translation>
     </message>
     <message>
-        <location line="+6"/>
-        <source>spotDirection.%1: the spotlight&apos;s axis, from the light, in the light&apos;s frame</source>
-        <translation>spotDirection.%1: die Achse des Spotlichts, vom Licht aus, im Koordinatensystem des Lichts</translation>
-    </message>
-    <message>
-        <location line="+16"/>
+        <location line="+19"/>
         <source>Spot axis</source>
         <translation>Spot-Achse</translation>
     </message>
     <message>
-        <location line="+4"/>
-        <source>spotCutoff: the cone&apos;s half-angle; outside it the light adds nothing, ambient included (180: no spot)</source>
-        <translation>spotCutoff: der halbe Öffnungswinkel des Kegels; außerhalb trägt das Licht nichts bei, auch nicht ambient (180: kein Spot)</translation>
-    </message>
-    <message>
-        <location line="+8"/>
-        <source>spotExponent: inside the cone the terms are scaled by max(-L·D, 0)^exponent, brighter towards the axis</source>
-        <translation>spotExponent: Innerhalb des Kegels werden die Anteile mit max(-L·D, 0)^exponent skaliert, zur Achse hin heller</translation>
-    </message>
-    <message>
-        <location line="+8"/>
+        <location line="+16"/>
         <source>Spot cutoff, exp</source>
         <extracomment>the spotlight&apos;s cutoff angle and exponent</extracomment>
         <translation>Spot-Winkel, Exp.</translation>
@@ -2480,6 +2439,92 @@
         <location line="+1"/>
         <source>This light&apos;s defaults; light 1&apos;s are the slides&apos; (0, 1.8, 1.3, 1) in world coordinates</source>
         <translation>Die Standardwerte dieses Lichts; die von Licht 1 sind die der Folien: (0, 1.8, 1.3, 1) in Weltkoordinaten</translation>
+    </message>
+</context>
+<context>
+    <name>lb::LightingParameters</name>
+    <message>
+        <location filename="../../render/model/lighting/lighting_parameters.cpp" line="+16"/>
+        <source>w must be 0 (directional) or 1 (point)</source>
+        <translation>w muss 0 (gerichtet) oder 1 (Punkt) sein</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>a directional light (w = 0) with the direction 0, 0, 0</source>
+        <translation>ein gerichtetes Licht (w = 0) mit der Richtung 0, 0, 0</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>kc, kl and kq all 0 (the light would be infinite)</source>
+        <translation>kc, kl und kq alle 0 (das Licht wäre unendlich hell)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>a direction of length 0</source>
+        <translation>eine Richtung der Länge 0</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>lightPosition.%1: the light&apos;s %1 in the chosen frame</source>
+        <translation>lightPosition.%1: die %1-Koordinate des Lichts im gewählten Koordinatensystem</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1 (%2): the light&apos;s ambient intensity</source>
+        <extracomment>%1 the symbol (Ia, Id, Is); %2 the uniforms that carry it</extracomment>
+        <translation>%1 (%2): die ambiente Intensität des Lichts</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 (%2): the light&apos;s diffuse intensity</source>
+        <translation>%1 (%2): die diffuse Intensität des Lichts</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 (%2): the light&apos;s specular intensity</source>
+        <translation>%1 (%2): die spiegelnde Intensität des Lichts</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>lightAttenuation.%1 (%2): a point light&apos;s terms are divided by kc + kl·d + kq·d², d its distance to the surface (1, 0, 0: none; a directional light is never attenuated)</source>
+        <extracomment>%1 the axis (x, y, z); %2 its name (kc, kl, kq)</extracomment>
+        <translation>lightAttenuation.%1 (%2): Die Anteile eines Punktlichts werden durch kc + kl·d + kq·d² geteilt, d ist sein Abstand zur Oberfläche (1, 0, 0: keine; ein gerichtetes Licht wird nie abgeschwächt)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>spotDirection.%1: the spotlight&apos;s axis, from the light, in the light&apos;s frame</source>
+        <translation>spotDirection.%1: die Achse des Spotlichts, vom Licht aus, im Koordinatensystem des Lichts</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>spotCutoff: the cone&apos;s half-angle; outside it the light adds nothing, ambient included (180: no spot)</source>
+        <translation>spotCutoff: der halbe Öffnungswinkel des Kegels; außerhalb trägt das Licht nichts bei, auch nicht ambient (180: kein Spot)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>spotExponent: inside the cone the terms are scaled by max(-L·D, 0)^exponent, brighter towards the axis</source>
+        <translation>spotExponent: Innerhalb des Kegels werden die Anteile mit max(-L·D, 0)^exponent skaliert, zur Achse hin heller</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1 (%2): the material&apos;s ambient reflection coefficients</source>
+        <extracomment>%1 the symbol (Ka, Kd, Ks); %2 the uniforms that carry it</extracomment>
+        <translation>%1 (%2): die ambienten Reflexionskoeffizienten des Materials</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1 (%2): the material&apos;s diffuse reflection coefficients</source>
+        <translation>%1 (%2): die diffusen Reflexionskoeffizienten des Materials</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1 (%2): the material&apos;s specular reflection coefficients</source>
+        <translation>%1 (%2): die spiegelnden Reflexionskoeffizienten des Materials</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>shininess: the specular exponent n in (R.V)^n or (N.H)^n; higher gives a smaller, sharper highlight</source>
+        <translation>shininess: der Glanzexponent n in (R.V)^n oder (N.H)^n; ein größerer Wert ergibt ein kleineres, schärferes Glanzlicht</translation>
     </message>
 </context>
 <context>
@@ -2518,7 +2563,7 @@
         <translation>%1 Zeichen; höchstens %2</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+19"/>
         <source>not a language code</source>
         <translation>kein Sprachcode</translation>
     </message>
@@ -3007,7 +3052,7 @@
         <translation>G</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+26"/>
         <source>P</source>
         <comment>shortcut</comment>
         <translation>P</translation>
@@ -3031,7 +3076,7 @@
         <translation>R</translation>
     </message>
     <message>
-        <location line="-56"/>
+        <location line="-53"/>
         <source>Toggle Phong / &amp;Blinn-Phong specular</source>
         <translation>Spiegelnden Anteil Phong / &amp;Blinn-Phong umschalten</translation>
     </message>
@@ -3046,7 +3091,7 @@
         <translation>Das Programm im Editor (%1) berechnet seinen eigenen spiegelnden Anteil: Laden Sie eine Vorlage oder wählen Sie „Alles zurücksetzen“, um ihn umzuschalten.</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+12"/>
         <source>Toggle &amp;Perspective / Orthographic</source>
         <translation>&amp;Perspektivisch / orthografisch umschalten</translation>
     </message>
@@ -3265,28 +3310,7 @@
 <context>
     <name>lb::MaterialPanel</name>
     <message>
-        <location filename="../../widgets/material_panel.cpp" line="+41"/>
-        <source>%1 (%2): the material&apos;s ambient reflection coefficients</source>
-        <extracomment>%1 the symbol (Ka, Kd, Ks); %2 the uniforms that carry it</extracomment>
-        <translation>%1 (%2): die ambienten Reflexionskoeffizienten des Materials</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>%1 (%2): the material&apos;s diffuse reflection coefficients</source>
-        <translation>%1 (%2): die diffusen Reflexionskoeffizienten des Materials</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>%1 (%2): the material&apos;s specular reflection coefficients</source>
-        <translation>%1 (%2): die spiegelnden Reflexionskoeffizienten des Materials</translation>
-    </message>
-    <message>
-        <location line="+12"/>
-        <source>shininess: the specular exponent n in (R.V)^n or (N.H)^n; higher gives a smaller, sharper highlight</source>
-        <translation>shininess: der Glanzexponent n in (R.V)^n oder (N.H)^n; ein größerer Wert ergibt ein kleineres, schärferes Glanzlicht</translation>
-    </message>
-    <message>
-        <location line="+17"/>
+        <location filename="../../widgets/material_panel.cpp" line="+68"/>
         <source>Shininess</source>
         <translation>Glanzexponent</translation>
     </message>
@@ -3908,7 +3932,7 @@
 <context>
     <name>lb::PlotChart</name>
     <message>
-        <location filename="../../widgets/plot_chart.cpp" line="+173"/>
+        <location filename="../../widgets/plot_chart.cpp" line="+175"/>
         <source>Angle between R and V (°)</source>
         <translation>Winkel zwischen R und V (°)</translation>
     </message>
@@ -3988,7 +4012,7 @@
         <translation>Keine Keule: das Licht liegt im Punkt der Oberfläche, wo L keine Richtung hat. Rücken Sie das Licht von der Oberfläche weg.</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+18"/>
         <source>Ambient</source>
         <translation>Ambient</translation>
     </message>
@@ -4011,7 +4035,7 @@
 <context>
     <name>lb::PlotsPanel</name>
     <message>
-        <location filename="../../widgets/plots_panel.cpp" line="+41"/>
+        <location filename="../../widgets/plots_panel.cpp" line="+42"/>
         <source>Specular: Phong and Blinn-Phong</source>
         <translation>Spiegelnd: Phong und Blinn-Phong</translation>
     </message>
@@ -4051,7 +4075,7 @@
         <translation>Dieses Diagramm als PNG- oder SVG-Bild oder seine Stützstellen als CSV schreiben</translation>
     </message>
     <message>
-        <location line="+91"/>
+        <location line="+100"/>
         <source>No point probed: light %1&apos;s lobe where N faces the camera at the selected object&apos;s centre. Ctrl+click the surface to plot it at a point.</source>
         <translation>Kein Punkt gemessen: die Keule von Licht %1 dort, wo N in der Mitte des ausgewählten Objekts zur Kamera zeigt. Strg+Klick auf die Oberfläche zeichnet sie an einem Punkt.</translation>
     </message>
@@ -4280,7 +4304,7 @@
         <translation>Keine Oberfläche bei (%1, %2).</translation>
     </message>
     <message>
-        <location line="+109"/>
+        <location line="+107"/>
         <source>pixel (%1, %2), %3, triangle %4</source>
         <extracomment>%1, %2 the pixel; %3 the object&apos;s name; %4 the triangle&apos;s number</extracomment>
         <translation>Pixel (%1, %2), %3, Dreieck %4</translation>
@@ -4639,7 +4663,7 @@
 <context>
     <name>lb::Scene</name>
     <message>
-        <location filename="../../render/model/scene/scene.cpp" line="+429"/>
+        <location filename="../../render/model/scene/scene.cpp" line="+391"/>
         <source>cube</source>
         <translation>Würfel</translation>
     </message>
@@ -4958,12 +4982,12 @@
 <context>
     <name>lb::SceneFile</name>
     <message>
-        <location filename="../../render/model/scene/scene_file.cpp" line="-163"/>
+        <location filename="../../render/model/scene/scene_file.cpp" line="-161"/>
         <source>not true or false; read as false</source>
         <translation>nicht true oder false; als false gelesen</translation>
     </message>
     <message>
-        <location line="+58"/>
+        <location line="+56"/>
         <source>%1: not a scene file: %2 at byte %3</source>
         <extracomment>%1 a path, %2 Qt&apos;s JSON parser&apos;s reason</extracomment>
         <translation>%1: keine Szenendatei: %2 bei Byte %3</translation>
@@ -5025,23 +5049,7 @@
 <context>
     <name>lb::SceneJson</name>
     <message>
-        <location filename="../../render/model/scene/scene_json.cpp" line="+111"/>
-        <source>w must be 0 or 1</source>
-        <translation>w muss 0 oder 1 sein</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <location line="+19"/>
-        <source>a direction of length 0</source>
-        <translation>eine Richtung der Länge 0</translation>
-    </message>
-    <message>
-        <location line="-9"/>
-        <source>kc, kl and kq all 0</source>
-        <translation>kc, kl und kq alle 0</translation>
-    </message>
-    <message>
-        <location line="+84"/>
+        <location filename="../../render/model/scene/scene_json.cpp" line="+230"/>
         <source>not one of the values the scene feeds (%1)</source>
         <translation>keiner der Werte, die die Szene speist (%1)</translation>
     </message>
@@ -5058,7 +5066,7 @@
     </message>
     <message>
         <location line="+2"/>
-        <location filename="../../render/model/scene/scene_json_reader.cpp" line="+23"/>
+        <location filename="../../render/model/scene/scene_json_reader.cpp" line="+24"/>
         <source>not an object</source>
         <translation>kein JSON-Objekt</translation>
     </message>
@@ -5112,7 +5120,7 @@
     </message>
     <message>
         <location line="+14"/>
-        <location filename="../../render/model/scene/scene_json_reader.h" line="+47"/>
+        <location filename="../../render/model/scene/scene_json_reader.h" line="+49"/>
         <source>not a number</source>
         <translation>keine Zahl</translation>
     </message>
@@ -5151,7 +5159,7 @@
 <context>
     <name>lb::ScenePanel</name>
     <message>
-        <location filename="../../widgets/scene_panel.cpp" line="+77"/>
+        <location filename="../../widgets/scene_panel.cpp" line="+84"/>
         <source>%1 or %2</source>
         <extracomment>uniform names, one of which a shader may declare: %1 the first ones, comma-separated; %2 the last</extracomment>
         <translation>%1 oder %2</translation>
@@ -5279,13 +5287,9 @@
     </message>
     <message>
         <location line="+5"/>
-        <source>Blinn-Phong specular (N·H)</source>
-        <translation>spiegelnder Anteil nach Blinn-Phong (N·H)</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Phong specular (R·V)</source>
-        <translation>spiegelnder Anteil nach Phong (R·V)</translation>
+        <source>%1 specular</source>
+        <extracomment>%1 the specular model&apos;s name and cosine: &quot;Blinn-Phong (N·H)&quot;</extracomment>
+        <translation>spiegelnder Anteil nach %1</translation>
     </message>
     <message>
         <location line="+4"/>
@@ -5354,7 +5358,7 @@
 <context>
     <name>lb::ShaderDocument</name>
     <message>
-        <location filename="../../render/model/scene/shader_document.cpp" line="+201"/>
+        <location filename="../../render/model/scene/shader_document.cpp" line="+204"/>
         <source>Cannot open %1</source>
         <translation>%1 kann nicht geöffnet werden</translation>
     </message>
@@ -5411,22 +5415,18 @@
         <translation>Schattierung</translation>
     </message>
     <message>
-        <location line="+3"/>
-        <source>Phong: (R·V)^n</source>
-        <translation>Phong: (R·V)^n</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>Blinn-Phong: (N·H)^n</source>
-        <translation>Blinn-Phong: (N·H)^n</translation>
-    </message>
-    <message>
-        <location line="+1"/>
+        <location line="+8"/>
         <source>R = reflect(-L, N), the mirrored light direction; H = normalize(L + V), the half vector (key B)</source>
         <translation>R = reflect(-L, N), die gespiegelte Lichtrichtung; H = normalize(L + V), der Halbvektor (Taste B)</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+5"/>
+        <source>%1: %2</source>
+        <extracomment>the specular model&apos;s name and its factor: &quot;Phong: (R·V)^n&quot;</extracomment>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <location line="+44"/>
         <source>Specular</source>
         <extracomment>the row of the specular term&apos;s choice (Phong or Blinn-Phong)</extracomment>
@@ -5597,7 +5597,7 @@
         <translation>Diese Dateien nicht mehr verwenden: Seite B zeichnet wieder, was sie vorher gezeichnet hat</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+11"/>
         <source>B program</source>
         <extracomment>the program side B of the compare view draws (A and B are the two sides)</extracomment>
         <translation>B-Programm</translation>
@@ -5615,13 +5615,13 @@
     </message>
     <message>
         <location line="+0"/>
-        <location line="+29"/>
+        <location line="+34"/>
         <source>Wipe</source>
         <extracomment>the row of the slider that places the wipe&apos;s dividing line</extracomment>
         <translation>Wischblende</translation>
     </message>
     <message>
-        <location line="-29"/>
+        <location line="-34"/>
         <source>Difference |A - B|</source>
         <translation>Differenz |A - B|</translation>
     </message>
@@ -5664,23 +5664,18 @@
         <translation>B-Schattierung</translation>
     </message>
     <message>
-        <location line="+3"/>
-        <source>B: Phong (R·V)</source>
-        <extracomment>side B&apos;s specular term (B is the compare view&apos;s second side)</extracomment>
-        <translation>B: Phong (R·V)</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>B: Blinn-Phong (N·H)</source>
-        <translation>B: Blinn-Phong (N·H)</translation>
-    </message>
-    <message>
-        <location line="+0"/>
+        <location line="+1"/>
         <source>Side B&apos;s specular term</source>
         <translation>Spiegelnder Anteil von Seite B</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+3"/>
+        <source>B: %1</source>
+        <extracomment>side B&apos;s specular model (B is the compare view&apos;s second side): &quot;B: Phong (R·V)&quot;</extracomment>
+        <translation>B: %1</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>B specular</source>
         <extracomment>side B&apos;s specular term (B is the compare view&apos;s second side)</extracomment>
         <translation>B-Spiegelanteil</translation>
@@ -6146,17 +6141,7 @@
         <translation>Phong</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>Blinn-Phong (N·H)</source>
-        <translation>Blinn-Phong (N·H)</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Phong (R·V)</source>
-        <translation>Phong (R·V)</translation>
-    </message>
-    <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>A (left): %1  |  %2 (right)</source>
         <extracomment>side A (left) names its program; %2 says side B&apos;s (&quot;B: ...&quot;), on the right</extracomment>
         <translation>A (links): %1  |  %2 (rechts)</translation>

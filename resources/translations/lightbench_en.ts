@@ -727,21 +727,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+10"/>
-        <source>phong</source>
-        <comment>specular</comment>
-        <extracomment>Phong&apos;s specular term (R.V)^n, as in &quot;phong specular&quot;</extracomment>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>blinn</source>
-        <comment>specular</comment>
-        <extracomment>Blinn-Phong&apos;s specular term (N.H)^n, as in &quot;blinn specular&quot;</extracomment>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+10"/>
+        <location line="+16"/>
         <source>colour</source>
         <comment>show</comment>
         <translation type="unfinished"></translation>
@@ -800,6 +786,20 @@
         <source>attenuation</source>
         <comment>show</comment>
         <extracomment>the attenuation drawn as grey</extracomment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../render/model/lighting/lighting_models.cpp" line="+29"/>
+        <source>phong</source>
+        <comment>specular</comment>
+        <extracomment>Phong&apos;s specular term (R.V)^n, as in &quot;phong specular&quot;</extracomment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>blinn</source>
+        <comment>specular</comment>
+        <extracomment>Blinn-Phong&apos;s specular term (N.H)^n, as in &quot;blinn specular&quot;</extracomment>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -1502,7 +1502,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../render/model/scene/lesson.cpp" line="+203"/>
+        <location filename="../../render/model/scene/lesson.cpp" line="+208"/>
         <location line="+42"/>
         <source>a lesson file</source>
         <translation type="unfinished"></translation>
@@ -1513,7 +1513,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../../render/model/scene/scene_file.cpp" line="+191"/>
+        <location filename="../../render/model/scene/scene_file.cpp" line="+186"/>
         <location line="+15"/>
         <source>a scene file</source>
         <translation type="unfinished"></translation>
@@ -1933,7 +1933,7 @@
 <context>
     <name>lb::Lesson</name>
     <message>
-        <location filename="../../render/model/scene/lesson.cpp" line="-213"/>
+        <location filename="../../render/model/scene/lesson.cpp" line="-218"/>
         <source>%1 (%2)</source>
         <extracomment>a field of a lesson file (%1, &quot;step 2: caption.de&quot;) and why it was not used (%2)</extracomment>
         <translation type="unfinished"></translation>
@@ -1961,7 +1961,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+45"/>
         <source>%1: not a lesson file: %2 at byte %3</source>
         <extracomment>%1 a path, %2 Qt&apos;s JSON parser&apos;s reason</extracomment>
         <translation type="unfinished"></translation>
@@ -2317,13 +2317,13 @@
 <context>
     <name>lb::LightPanel</name>
     <message>
-        <location filename="../../widgets/light_panel.cpp" line="+35"/>
-        <location line="+189"/>
+        <location filename="../../widgets/light_panel.cpp" line="+40"/>
+        <location line="+172"/>
         <source>Light %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-186"/>
+        <location line="-169"/>
         <source>Up to four lights; their terms add up. A shader that declares one light (not an array) reads light 1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2345,12 +2345,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+6"/>
-        <source>lightPosition.%1: the light&apos;s %1 in the chosen frame</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+8"/>
+        <location line="+13"/>
         <source>Position</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2414,53 +2409,17 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+7"/>
-        <source>%1 (%2): the light&apos;s ambient intensity</source>
-        <extracomment>%1 the symbol (Ia, Id, Is); %2 the uniforms that carry it</extracomment>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>%1 (%2): the light&apos;s diffuse intensity</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>%1 (%2): the light&apos;s specular intensity</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+18"/>
-        <source>lightAttenuation.%1 (%2): a point light&apos;s terms are divided by kc + kl·d + kq·d², d its distance to the surface (1, 0, 0: none; a directional light is never attenuated)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+19"/>
+        <location line="+37"/>
         <source>Atten. kc kl kq</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+6"/>
-        <source>spotDirection.%1: the spotlight&apos;s axis, from the light, in the light&apos;s frame</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+16"/>
+        <location line="+19"/>
         <source>Spot axis</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+4"/>
-        <source>spotCutoff: the cone&apos;s half-angle; outside it the light adds nothing, ambient included (180: no spot)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+8"/>
-        <source>spotExponent: inside the cone the terms are scaled by max(-L·D, 0)^exponent, brighter towards the axis</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+8"/>
+        <location line="+16"/>
         <source>Spot cutoff, exp</source>
         <extracomment>the spotlight&apos;s cutoff angle and exponent</extracomment>
         <translation type="unfinished"></translation>
@@ -2473,6 +2432,92 @@
     <message>
         <location line="+1"/>
         <source>This light&apos;s defaults; light 1&apos;s are the slides&apos; (0, 1.8, 1.3, 1) in world coordinates</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>lb::LightingParameters</name>
+    <message>
+        <location filename="../../render/model/lighting/lighting_parameters.cpp" line="+16"/>
+        <source>w must be 0 (directional) or 1 (point)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>a directional light (w = 0) with the direction 0, 0, 0</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>kc, kl and kq all 0 (the light would be infinite)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>a direction of length 0</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>lightPosition.%1: the light&apos;s %1 in the chosen frame</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1 (%2): the light&apos;s ambient intensity</source>
+        <extracomment>%1 the symbol (Ia, Id, Is); %2 the uniforms that carry it</extracomment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 (%2): the light&apos;s diffuse intensity</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 (%2): the light&apos;s specular intensity</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>lightAttenuation.%1 (%2): a point light&apos;s terms are divided by kc + kl·d + kq·d², d its distance to the surface (1, 0, 0: none; a directional light is never attenuated)</source>
+        <extracomment>%1 the axis (x, y, z); %2 its name (kc, kl, kq)</extracomment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>spotDirection.%1: the spotlight&apos;s axis, from the light, in the light&apos;s frame</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>spotCutoff: the cone&apos;s half-angle; outside it the light adds nothing, ambient included (180: no spot)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>spotExponent: inside the cone the terms are scaled by max(-L·D, 0)^exponent, brighter towards the axis</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1 (%2): the material&apos;s ambient reflection coefficients</source>
+        <extracomment>%1 the symbol (Ka, Kd, Ks); %2 the uniforms that carry it</extracomment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1 (%2): the material&apos;s diffuse reflection coefficients</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1 (%2): the material&apos;s specular reflection coefficients</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>shininess: the specular exponent n in (R.V)^n or (N.H)^n; higher gives a smaller, sharper highlight</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -2512,7 +2557,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+19"/>
         <source>not a language code</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3015,7 +3060,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+12"/>
         <source>Toggle &amp;Perspective / Orthographic</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3258,28 +3303,7 @@
 <context>
     <name>lb::MaterialPanel</name>
     <message>
-        <location filename="../../widgets/material_panel.cpp" line="+41"/>
-        <source>%1 (%2): the material&apos;s ambient reflection coefficients</source>
-        <extracomment>%1 the symbol (Ka, Kd, Ks); %2 the uniforms that carry it</extracomment>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>%1 (%2): the material&apos;s diffuse reflection coefficients</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>%1 (%2): the material&apos;s specular reflection coefficients</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+12"/>
-        <source>shininess: the specular exponent n in (R.V)^n or (N.H)^n; higher gives a smaller, sharper highlight</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+17"/>
+        <location filename="../../widgets/material_panel.cpp" line="+68"/>
         <source>Shininess</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3901,7 +3925,7 @@
 <context>
     <name>lb::PlotChart</name>
     <message>
-        <location filename="../../widgets/plot_chart.cpp" line="+173"/>
+        <location filename="../../widgets/plot_chart.cpp" line="+175"/>
         <source>Angle between R and V (°)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3981,7 +4005,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+18"/>
         <source>Ambient</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4004,7 +4028,7 @@
 <context>
     <name>lb::PlotsPanel</name>
     <message>
-        <location filename="../../widgets/plots_panel.cpp" line="+41"/>
+        <location filename="../../widgets/plots_panel.cpp" line="+42"/>
         <source>Specular: Phong and Blinn-Phong</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4044,7 +4068,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+91"/>
+        <location line="+100"/>
         <source>No point probed: light %1&apos;s lobe where N faces the camera at the selected object&apos;s centre. Ctrl+click the surface to plot it at a point.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4272,7 +4296,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+109"/>
+        <location line="+107"/>
         <source>pixel (%1, %2), %3, triangle %4</source>
         <extracomment>%1, %2 the pixel; %3 the object&apos;s name; %4 the triangle&apos;s number</extracomment>
         <translation type="unfinished"></translation>
@@ -4629,7 +4653,7 @@
 <context>
     <name>lb::Scene</name>
     <message>
-        <location filename="../../render/model/scene/scene.cpp" line="+429"/>
+        <location filename="../../render/model/scene/scene.cpp" line="+391"/>
         <source>cube</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4948,12 +4972,12 @@
 <context>
     <name>lb::SceneFile</name>
     <message>
-        <location filename="../../render/model/scene/scene_file.cpp" line="-163"/>
+        <location filename="../../render/model/scene/scene_file.cpp" line="-161"/>
         <source>not true or false; read as false</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+58"/>
+        <location line="+56"/>
         <source>%1: not a scene file: %2 at byte %3</source>
         <extracomment>%1 a path, %2 Qt&apos;s JSON parser&apos;s reason</extracomment>
         <translation type="unfinished"></translation>
@@ -5015,23 +5039,7 @@
 <context>
     <name>lb::SceneJson</name>
     <message>
-        <location filename="../../render/model/scene/scene_json.cpp" line="+111"/>
-        <source>w must be 0 or 1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <location line="+19"/>
-        <source>a direction of length 0</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="-9"/>
-        <source>kc, kl and kq all 0</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+84"/>
+        <location filename="../../render/model/scene/scene_json.cpp" line="+230"/>
         <source>not one of the values the scene feeds (%1)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5048,7 +5056,7 @@
     </message>
     <message>
         <location line="+2"/>
-        <location filename="../../render/model/scene/scene_json_reader.cpp" line="+23"/>
+        <location filename="../../render/model/scene/scene_json_reader.cpp" line="+24"/>
         <source>not an object</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5102,7 +5110,7 @@
     </message>
     <message>
         <location line="+14"/>
-        <location filename="../../render/model/scene/scene_json_reader.h" line="+47"/>
+        <location filename="../../render/model/scene/scene_json_reader.h" line="+49"/>
         <source>not a number</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5141,7 +5149,7 @@
 <context>
     <name>lb::ScenePanel</name>
     <message>
-        <location filename="../../widgets/scene_panel.cpp" line="+77"/>
+        <location filename="../../widgets/scene_panel.cpp" line="+84"/>
         <source>%1 or %2</source>
         <extracomment>uniform names, one of which a shader may declare: %1 the first ones, comma-separated; %2 the last</extracomment>
         <translation type="unfinished"></translation>
@@ -5267,12 +5275,8 @@
     </message>
     <message>
         <location line="+5"/>
-        <source>Blinn-Phong specular (N·H)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Phong specular (R·V)</source>
+        <source>%1 specular</source>
+        <extracomment>%1 the specular model&apos;s name and cosine: &quot;Blinn-Phong (N·H)&quot;</extracomment>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -5342,7 +5346,7 @@
 <context>
     <name>lb::ShaderDocument</name>
     <message>
-        <location filename="../../render/model/scene/shader_document.cpp" line="+201"/>
+        <location filename="../../render/model/scene/shader_document.cpp" line="+204"/>
         <source>Cannot open %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5399,22 +5403,18 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+3"/>
-        <source>Phong: (R·V)^n</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>Blinn-Phong: (N·H)^n</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
+        <location line="+8"/>
         <source>R = reflect(-L, N), the mirrored light direction; H = normalize(L + V), the half vector (key B)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+5"/>
+        <source>%1: %2</source>
+        <extracomment>the specular model&apos;s name and its factor: &quot;Phong: (R·V)^n&quot;</extracomment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <location line="+44"/>
         <source>Specular</source>
         <extracomment>the row of the specular term&apos;s choice (Phong or Blinn-Phong)</extracomment>
@@ -5585,7 +5585,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+11"/>
         <source>B program</source>
         <extracomment>the program side B of the compare view draws (A and B are the two sides)</extracomment>
         <translation type="unfinished"></translation>
@@ -5603,13 +5603,13 @@
     </message>
     <message>
         <location line="+0"/>
-        <location line="+29"/>
+        <location line="+34"/>
         <source>Wipe</source>
         <extracomment>the row of the slider that places the wipe&apos;s dividing line</extracomment>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-29"/>
+        <location line="-34"/>
         <source>Difference |A - B|</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5652,23 +5652,18 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+3"/>
-        <source>B: Phong (R·V)</source>
-        <extracomment>side B&apos;s specular term (B is the compare view&apos;s second side)</extracomment>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>B: Blinn-Phong (N·H)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+0"/>
+        <location line="+1"/>
         <source>Side B&apos;s specular term</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+3"/>
+        <source>B: %1</source>
+        <extracomment>side B&apos;s specular model (B is the compare view&apos;s second side): &quot;B: Phong (R·V)&quot;</extracomment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>B specular</source>
         <extracomment>side B&apos;s specular term (B is the compare view&apos;s second side)</extracomment>
         <translation type="unfinished"></translation>
@@ -6133,17 +6128,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>Blinn-Phong (N·H)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Phong (R·V)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>A (left): %1  |  %2 (right)</source>
         <extracomment>side A (left) names its program; %2 says side B&apos;s (&quot;B: ...&quot;), on the right</extracomment>
         <translation type="unfinished"></translation>

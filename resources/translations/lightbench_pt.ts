@@ -727,21 +727,7 @@
         <translation>plano</translation>
     </message>
     <message>
-        <location line="+10"/>
-        <source>phong</source>
-        <comment>specular</comment>
-        <extracomment>Phong&apos;s specular term (R.V)^n, as in &quot;phong specular&quot;</extracomment>
-        <translation>Phong</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>blinn</source>
-        <comment>specular</comment>
-        <extracomment>Blinn-Phong&apos;s specular term (N.H)^n, as in &quot;blinn specular&quot;</extracomment>
-        <translation>Blinn-Phong</translation>
-    </message>
-    <message>
-        <location line="+10"/>
+        <location line="+16"/>
         <source>colour</source>
         <comment>show</comment>
         <translation>a cor iluminada</translation>
@@ -801,6 +787,20 @@
         <comment>show</comment>
         <extracomment>the attenuation drawn as grey</extracomment>
         <translation>a atenuação</translation>
+    </message>
+    <message>
+        <location filename="../../render/model/lighting/lighting_models.cpp" line="+29"/>
+        <source>phong</source>
+        <comment>specular</comment>
+        <extracomment>Phong&apos;s specular term (R.V)^n, as in &quot;phong specular&quot;</extracomment>
+        <translation>Phong</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>blinn</source>
+        <comment>specular</comment>
+        <extracomment>Blinn-Phong&apos;s specular term (N.H)^n, as in &quot;blinn specular&quot;</extracomment>
+        <translation>Blinn-Phong</translation>
     </message>
 </context>
 <context>
@@ -1502,7 +1502,7 @@
         <translation>o limite de memória da importação</translation>
     </message>
     <message>
-        <location filename="../../render/model/scene/lesson.cpp" line="+203"/>
+        <location filename="../../render/model/scene/lesson.cpp" line="+208"/>
         <location line="+42"/>
         <source>a lesson file</source>
         <translation>um ficheiro de lição</translation>
@@ -1513,7 +1513,7 @@
         <translation>a lição</translation>
     </message>
     <message>
-        <location filename="../../render/model/scene/scene_file.cpp" line="+191"/>
+        <location filename="../../render/model/scene/scene_file.cpp" line="+186"/>
         <location line="+15"/>
         <source>a scene file</source>
         <translation>um ficheiro de cena</translation>
@@ -1939,7 +1939,7 @@
 <context>
     <name>lb::Lesson</name>
     <message>
-        <location filename="../../render/model/scene/lesson.cpp" line="-213"/>
+        <location filename="../../render/model/scene/lesson.cpp" line="-218"/>
         <source>%1 (%2)</source>
         <extracomment>a field of a lesson file (%1, &quot;step 2: caption.de&quot;) and why it was not used (%2)</extracomment>
         <translation>%1 (%2)</translation>
@@ -1967,7 +1967,7 @@
         <translation>%1: sem cena (&quot;scene&quot; tem de ser um objeto de cena ou o nome de um ficheiro de cena)</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+45"/>
         <source>%1: not a lesson file: %2 at byte %3</source>
         <extracomment>%1 a path, %2 Qt&apos;s JSON parser&apos;s reason</extracomment>
         <translation>%1: não é um ficheiro de lição: %2 no byte %3</translation>
@@ -2323,13 +2323,13 @@
 <context>
     <name>lb::LightPanel</name>
     <message>
-        <location filename="../../widgets/light_panel.cpp" line="+35"/>
-        <location line="+189"/>
+        <location filename="../../widgets/light_panel.cpp" line="+40"/>
+        <location line="+172"/>
         <source>Light %1</source>
         <translation>Luz %1</translation>
     </message>
     <message>
-        <location line="-186"/>
+        <location line="-169"/>
         <source>Up to four lights; their terms add up. A shader that declares one light (not an array) reads light 1</source>
         <translation>Até quatro luzes; os seus termos somam-se. Um shader que declara uma só luz (não um array) lê a luz 1</translation>
     </message>
@@ -2351,12 +2351,7 @@
         <translation>Luz</translation>
     </message>
     <message>
-        <location line="+6"/>
-        <source>lightPosition.%1: the light&apos;s %1 in the chosen frame</source>
-        <translation>lightPosition.%1: a coordenada %1 da luz no referencial escolhido</translation>
-    </message>
-    <message>
-        <location line="+8"/>
+        <location line="+13"/>
         <source>Position</source>
         <translation>Posição</translation>
     </message>
@@ -2420,53 +2415,17 @@
         <translation>Do objeto</translation>
     </message>
     <message>
-        <location line="+7"/>
-        <source>%1 (%2): the light&apos;s ambient intensity</source>
-        <extracomment>%1 the symbol (Ia, Id, Is); %2 the uniforms that carry it</extracomment>
-        <translation>%1 (%2): a intensidade ambiente da luz</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>%1 (%2): the light&apos;s diffuse intensity</source>
-        <translation>%1 (%2): a intensidade difusa da luz</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>%1 (%2): the light&apos;s specular intensity</source>
-        <translation>%1 (%2): a intensidade especular da luz</translation>
-    </message>
-    <message>
-        <location line="+18"/>
-        <source>lightAttenuation.%1 (%2): a point light&apos;s terms are divided by kc + kl·d + kq·d², d its distance to the surface (1, 0, 0: none; a directional light is never attenuated)</source>
-        <translation>lightAttenuation.%1 (%2): os termos de uma luz pontual são divididos por kc + kl·d + kq·d², sendo d a sua distância à superfície (1, 0, 0: nenhuma; uma luz direcional nunca é atenuada)</translation>
-    </message>
-    <message>
-        <location line="+19"/>
+        <location line="+37"/>
         <source>Atten. kc kl kq</source>
         <translation>Aten. kc kl kq</translation>
     </message>
     <message>
-        <location line="+6"/>
-        <source>spotDirection.%1: the spotlight&apos;s axis, from the light, in the light&apos;s frame</source>
-        <translation>spotDirection.%1: o eixo do holofote, a partir da luz, no referencial da luz</translation>
-    </message>
-    <message>
-        <location line="+16"/>
+        <location line="+19"/>
         <source>Spot axis</source>
         <translation>Eixo do foco</translation>
     </message>
     <message>
-        <location line="+4"/>
-        <source>spotCutoff: the cone&apos;s half-angle; outside it the light adds nothing, ambient included (180: no spot)</source>
-        <translation>spotCutoff: o semiângulo do cone; fora dele a luz não contribui nada, incluindo o termo ambiente (180: sem foco)</translation>
-    </message>
-    <message>
-        <location line="+8"/>
-        <source>spotExponent: inside the cone the terms are scaled by max(-L·D, 0)^exponent, brighter towards the axis</source>
-        <translation>spotExponent: dentro do cone os termos são multiplicados por max(-L·D, 0)^exponent, mais brilhantes perto do eixo</translation>
-    </message>
-    <message>
-        <location line="+8"/>
+        <location line="+16"/>
         <source>Spot cutoff, exp</source>
         <extracomment>the spotlight&apos;s cutoff angle and exponent</extracomment>
         <translation>Corte do foco, exp</translation>
@@ -2480,6 +2439,92 @@
         <location line="+1"/>
         <source>This light&apos;s defaults; light 1&apos;s are the slides&apos; (0, 1.8, 1.3, 1) in world coordinates</source>
         <translation>Os valores predefinidos desta luz; os da luz 1 são os dos diapositivos, (0, 1.8, 1.3, 1) em coordenadas do mundo</translation>
+    </message>
+</context>
+<context>
+    <name>lb::LightingParameters</name>
+    <message>
+        <location filename="../../render/model/lighting/lighting_parameters.cpp" line="+16"/>
+        <source>w must be 0 (directional) or 1 (point)</source>
+        <translation>w tem de ser 0 (direcional) ou 1 (pontual)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>a directional light (w = 0) with the direction 0, 0, 0</source>
+        <translation>uma luz direcional (w = 0) com a direção 0, 0, 0</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>kc, kl and kq all 0 (the light would be infinite)</source>
+        <translation>kc, kl e kq todos a 0 (a luz seria infinita)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>a direction of length 0</source>
+        <translation>uma direção de comprimento 0</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>lightPosition.%1: the light&apos;s %1 in the chosen frame</source>
+        <translation>lightPosition.%1: a coordenada %1 da luz no referencial escolhido</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1 (%2): the light&apos;s ambient intensity</source>
+        <extracomment>%1 the symbol (Ia, Id, Is); %2 the uniforms that carry it</extracomment>
+        <translation>%1 (%2): a intensidade ambiente da luz</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 (%2): the light&apos;s diffuse intensity</source>
+        <translation>%1 (%2): a intensidade difusa da luz</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 (%2): the light&apos;s specular intensity</source>
+        <translation>%1 (%2): a intensidade especular da luz</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>lightAttenuation.%1 (%2): a point light&apos;s terms are divided by kc + kl·d + kq·d², d its distance to the surface (1, 0, 0: none; a directional light is never attenuated)</source>
+        <extracomment>%1 the axis (x, y, z); %2 its name (kc, kl, kq)</extracomment>
+        <translation>lightAttenuation.%1 (%2): os termos de uma luz pontual são divididos por kc + kl·d + kq·d², sendo d a sua distância à superfície (1, 0, 0: nenhuma; uma luz direcional nunca é atenuada)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>spotDirection.%1: the spotlight&apos;s axis, from the light, in the light&apos;s frame</source>
+        <translation>spotDirection.%1: o eixo do holofote, a partir da luz, no referencial da luz</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>spotCutoff: the cone&apos;s half-angle; outside it the light adds nothing, ambient included (180: no spot)</source>
+        <translation>spotCutoff: o semiângulo do cone; fora dele a luz não contribui nada, incluindo o termo ambiente (180: sem foco)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>spotExponent: inside the cone the terms are scaled by max(-L·D, 0)^exponent, brighter towards the axis</source>
+        <translation>spotExponent: dentro do cone os termos são multiplicados por max(-L·D, 0)^exponent, mais brilhantes perto do eixo</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1 (%2): the material&apos;s ambient reflection coefficients</source>
+        <extracomment>%1 the symbol (Ka, Kd, Ks); %2 the uniforms that carry it</extracomment>
+        <translation>%1 (%2): os coeficientes de reflexão ambiente do material</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1 (%2): the material&apos;s diffuse reflection coefficients</source>
+        <translation>%1 (%2): os coeficientes de reflexão difusa do material</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1 (%2): the material&apos;s specular reflection coefficients</source>
+        <translation>%1 (%2): os coeficientes de reflexão especular do material</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>shininess: the specular exponent n in (R.V)^n or (N.H)^n; higher gives a smaller, sharper highlight</source>
+        <translation>shininess: o expoente especular n em (R.V)^n ou (N.H)^n; maior dá um reflexo especular menor e mais nítido</translation>
     </message>
 </context>
 <context>
@@ -2518,7 +2563,7 @@
         <translation>%1 carateres; no máximo %2</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+19"/>
         <source>not a language code</source>
         <translation>não é um código de idioma</translation>
     </message>
@@ -3007,7 +3052,7 @@
         <translation>G</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+26"/>
         <source>P</source>
         <comment>shortcut</comment>
         <translation>P</translation>
@@ -3031,7 +3076,7 @@
         <translation>R</translation>
     </message>
     <message>
-        <location line="-56"/>
+        <location line="-53"/>
         <source>Toggle Phong / &amp;Blinn-Phong specular</source>
         <translation>Alternar Especular Phong / &amp;Blinn-Phong</translation>
     </message>
@@ -3046,7 +3091,7 @@
         <translation>O programa no editor (%1) calcula o seu próprio termo especular: carregue uma predefinição ou use Repor Tudo para o mudar.</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+12"/>
         <source>Toggle &amp;Perspective / Orthographic</source>
         <translation>Alternar Projeção &amp;Perspetiva / Ortográfica</translation>
     </message>
@@ -3265,28 +3310,7 @@
 <context>
     <name>lb::MaterialPanel</name>
     <message>
-        <location filename="../../widgets/material_panel.cpp" line="+41"/>
-        <source>%1 (%2): the material&apos;s ambient reflection coefficients</source>
-        <extracomment>%1 the symbol (Ka, Kd, Ks); %2 the uniforms that carry it</extracomment>
-        <translation>%1 (%2): os coeficientes de reflexão ambiente do material</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>%1 (%2): the material&apos;s diffuse reflection coefficients</source>
-        <translation>%1 (%2): os coeficientes de reflexão difusa do material</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>%1 (%2): the material&apos;s specular reflection coefficients</source>
-        <translation>%1 (%2): os coeficientes de reflexão especular do material</translation>
-    </message>
-    <message>
-        <location line="+12"/>
-        <source>shininess: the specular exponent n in (R.V)^n or (N.H)^n; higher gives a smaller, sharper highlight</source>
-        <translation>shininess: o expoente especular n em (R.V)^n ou (N.H)^n; maior dá um reflexo especular menor e mais nítido</translation>
-    </message>
-    <message>
-        <location line="+17"/>
+        <location filename="../../widgets/material_panel.cpp" line="+68"/>
         <source>Shininess</source>
         <translation>Brilho</translation>
     </message>
@@ -3908,7 +3932,7 @@
 <context>
     <name>lb::PlotChart</name>
     <message>
-        <location filename="../../widgets/plot_chart.cpp" line="+173"/>
+        <location filename="../../widgets/plot_chart.cpp" line="+175"/>
         <source>Angle between R and V (°)</source>
         <translation>Ângulo entre R e V (°)</translation>
     </message>
@@ -3988,7 +4012,7 @@
         <translation>Sem lóbulo: a luz está no ponto da superfície, onde L não tem direção. Afaste a luz da superfície.</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+18"/>
         <source>Ambient</source>
         <translation>Ambiente</translation>
     </message>
@@ -4011,7 +4035,7 @@
 <context>
     <name>lb::PlotsPanel</name>
     <message>
-        <location filename="../../widgets/plots_panel.cpp" line="+41"/>
+        <location filename="../../widgets/plots_panel.cpp" line="+42"/>
         <source>Specular: Phong and Blinn-Phong</source>
         <translation>Especular: Phong e Blinn-Phong</translation>
     </message>
@@ -4051,7 +4075,7 @@
         <translation>Gravar este gráfico como imagem PNG ou SVG, ou as suas amostras como CSV</translation>
     </message>
     <message>
-        <location line="+91"/>
+        <location line="+100"/>
         <source>No point probed: light %1&apos;s lobe where N faces the camera at the selected object&apos;s centre. Ctrl+click the surface to plot it at a point.</source>
         <translation>Nenhum ponto sondado: o lóbulo da luz %1 onde N aponta para a câmara no centro do objeto selecionado. Ctrl+clique na superfície para o desenhar num ponto.</translation>
     </message>
@@ -4280,7 +4304,7 @@
         <translation>Nenhuma superfície em (%1, %2).</translation>
     </message>
     <message>
-        <location line="+109"/>
+        <location line="+107"/>
         <source>pixel (%1, %2), %3, triangle %4</source>
         <extracomment>%1, %2 the pixel; %3 the object&apos;s name; %4 the triangle&apos;s number</extracomment>
         <translation>píxel (%1, %2), %3, triângulo %4</translation>
@@ -4639,7 +4663,7 @@
 <context>
     <name>lb::Scene</name>
     <message>
-        <location filename="../../render/model/scene/scene.cpp" line="+429"/>
+        <location filename="../../render/model/scene/scene.cpp" line="+391"/>
         <source>cube</source>
         <translation>cubo</translation>
     </message>
@@ -4958,12 +4982,12 @@
 <context>
     <name>lb::SceneFile</name>
     <message>
-        <location filename="../../render/model/scene/scene_file.cpp" line="-163"/>
+        <location filename="../../render/model/scene/scene_file.cpp" line="-161"/>
         <source>not true or false; read as false</source>
         <translation>não é true nem false; lido como false</translation>
     </message>
     <message>
-        <location line="+58"/>
+        <location line="+56"/>
         <source>%1: not a scene file: %2 at byte %3</source>
         <extracomment>%1 a path, %2 Qt&apos;s JSON parser&apos;s reason</extracomment>
         <translation>%1: não é um ficheiro de cena: %2 no byte %3</translation>
@@ -5025,23 +5049,7 @@
 <context>
     <name>lb::SceneJson</name>
     <message>
-        <location filename="../../render/model/scene/scene_json.cpp" line="+111"/>
-        <source>w must be 0 or 1</source>
-        <translation>w tem de ser 0 ou 1</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <location line="+19"/>
-        <source>a direction of length 0</source>
-        <translation>uma direção de comprimento 0</translation>
-    </message>
-    <message>
-        <location line="-9"/>
-        <source>kc, kl and kq all 0</source>
-        <translation>kc, kl e kq todos a 0</translation>
-    </message>
-    <message>
-        <location line="+84"/>
+        <location filename="../../render/model/scene/scene_json.cpp" line="+230"/>
         <source>not one of the values the scene feeds (%1)</source>
         <translation>não é nenhum dos valores que a cena alimenta (%1)</translation>
     </message>
@@ -5058,7 +5066,7 @@
     </message>
     <message>
         <location line="+2"/>
-        <location filename="../../render/model/scene/scene_json_reader.cpp" line="+23"/>
+        <location filename="../../render/model/scene/scene_json_reader.cpp" line="+24"/>
         <source>not an object</source>
         <translation>não é um objeto</translation>
     </message>
@@ -5112,7 +5120,7 @@
     </message>
     <message>
         <location line="+14"/>
-        <location filename="../../render/model/scene/scene_json_reader.h" line="+47"/>
+        <location filename="../../render/model/scene/scene_json_reader.h" line="+49"/>
         <source>not a number</source>
         <translation>não é um número</translation>
     </message>
@@ -5151,7 +5159,7 @@
 <context>
     <name>lb::ScenePanel</name>
     <message>
-        <location filename="../../widgets/scene_panel.cpp" line="+77"/>
+        <location filename="../../widgets/scene_panel.cpp" line="+84"/>
         <source>%1 or %2</source>
         <extracomment>uniform names, one of which a shader may declare: %1 the first ones, comma-separated; %2 the last</extracomment>
         <translation>%1 ou %2</translation>
@@ -5279,13 +5287,9 @@
     </message>
     <message>
         <location line="+5"/>
-        <source>Blinn-Phong specular (N·H)</source>
-        <translation>especular Blinn-Phong (N·H)</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Phong specular (R·V)</source>
-        <translation>especular Phong (R·V)</translation>
+        <source>%1 specular</source>
+        <extracomment>%1 the specular model&apos;s name and cosine: &quot;Blinn-Phong (N·H)&quot;</extracomment>
+        <translation>especular %1</translation>
     </message>
     <message>
         <location line="+4"/>
@@ -5354,7 +5358,7 @@
 <context>
     <name>lb::ShaderDocument</name>
     <message>
-        <location filename="../../render/model/scene/shader_document.cpp" line="+201"/>
+        <location filename="../../render/model/scene/shader_document.cpp" line="+204"/>
         <source>Cannot open %1</source>
         <translation>Não é possível abrir %1</translation>
     </message>
@@ -5411,22 +5415,18 @@
         <translation>Sombreamento</translation>
     </message>
     <message>
-        <location line="+3"/>
-        <source>Phong: (R·V)^n</source>
-        <translation>Phong: (R·V)^n</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>Blinn-Phong: (N·H)^n</source>
-        <translation>Blinn-Phong: (N·H)^n</translation>
-    </message>
-    <message>
-        <location line="+1"/>
+        <location line="+8"/>
         <source>R = reflect(-L, N), the mirrored light direction; H = normalize(L + V), the half vector (key B)</source>
         <translation>R = reflect(-L, N), a direção da luz espelhada; H = normalize(L + V), o vetor médio (tecla B)</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+5"/>
+        <source>%1: %2</source>
+        <extracomment>the specular model&apos;s name and its factor: &quot;Phong: (R·V)^n&quot;</extracomment>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <location line="+44"/>
         <source>Specular</source>
         <extracomment>the row of the specular term&apos;s choice (Phong or Blinn-Phong)</extracomment>
@@ -5597,7 +5597,7 @@
         <translation>Deixar de usar estes ficheiros: o lado B desenha o que desenhava antes deles</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+11"/>
         <source>B program</source>
         <extracomment>the program side B of the compare view draws (A and B are the two sides)</extracomment>
         <translation>Programa B</translation>
@@ -5615,13 +5615,13 @@
     </message>
     <message>
         <location line="+0"/>
-        <location line="+29"/>
+        <location line="+34"/>
         <source>Wipe</source>
         <extracomment>the row of the slider that places the wipe&apos;s dividing line</extracomment>
         <translation>Cortina</translation>
     </message>
     <message>
-        <location line="-29"/>
+        <location line="-34"/>
         <source>Difference |A - B|</source>
         <translation>Diferença |A - B|</translation>
     </message>
@@ -5664,23 +5664,18 @@
         <translation>Sombreamento B</translation>
     </message>
     <message>
-        <location line="+3"/>
-        <source>B: Phong (R·V)</source>
-        <extracomment>side B&apos;s specular term (B is the compare view&apos;s second side)</extracomment>
-        <translation>B: Phong (R·V)</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>B: Blinn-Phong (N·H)</source>
-        <translation>B: Blinn-Phong (N·H)</translation>
-    </message>
-    <message>
-        <location line="+0"/>
+        <location line="+1"/>
         <source>Side B&apos;s specular term</source>
         <translation>O termo especular do lado B</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+3"/>
+        <source>B: %1</source>
+        <extracomment>side B&apos;s specular model (B is the compare view&apos;s second side): &quot;B: Phong (R·V)&quot;</extracomment>
+        <translation>B: %1</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>B specular</source>
         <extracomment>side B&apos;s specular term (B is the compare view&apos;s second side)</extracomment>
         <translation>Especular B</translation>
@@ -6146,17 +6141,7 @@
         <translation>Phong</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>Blinn-Phong (N·H)</source>
-        <translation>Blinn-Phong (N·H)</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Phong (R·V)</source>
-        <translation>Phong (R·V)</translation>
-    </message>
-    <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>A (left): %1  |  %2 (right)</source>
         <extracomment>side A (left) names its program; %2 says side B&apos;s (&quot;B: ...&quot;), on the right</extracomment>
         <translation>A (esquerda): %1  |  %2 (direita)</translation>

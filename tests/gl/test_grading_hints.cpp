@@ -7,6 +7,7 @@
 // Each listed mistake's own program, submitted, is found as itself. An exercise whose mistake
 // does not build or loops stops the batch with its status; a built-in mistake is drawn by the
 // built-in program with its switches.
+#include "presets.h"
 #include "program_run.h"
 
 #include <QDir>
@@ -239,8 +240,8 @@ private slots:
                             {"builtIn", QJsonObject{{"shading", "gouraud"}}}}};
         });
         const QString stem = m_dir.filePath("gouraud");
-        QVERIFY(write(stem + ".vert", readBytes(LB_SHADERS_DIR "/gouraud.vert")));
-        QVERIFY(write(stem + ".frag", readBytes(LB_SHADERS_DIR "/gouraud.frag")));
+        QVERIFY(write(stem + ".vert", lb::builtInPreset(true).vertexSource().toUtf8()));
+        QVERIFY(write(stem + ".frag", lb::builtInPreset(true).fragmentSource().toUtf8()));
         const QJsonObject r = gradeOne(stem + ".vert", exercise);
         QCOMPARE(r["status"].toString(), QString("graded"));
         QVERIFY2(r["mistake"]["name"].toString() == "per vertex",

@@ -230,7 +230,7 @@ private slots:
         const QString all = ignored.join('\n');
         for (const char *path :
              {"lights[0].position", "lights[0].frame", "lights[0].ia", "lights[0].colour",
-              "lights[0].attenuation (kc, kl and kq all 0)",
+              "lights[0].attenuation (kc, kl and kq all 0 (the light would be infinite))",
               "lights[0].spot.direction (a direction of length 0)",
               "lights[0].spot.cutoff (out of range, clamped)", "lights[1] (not an object)",
               "lights[4]", "material.shininess", "object.tessellation", "object.scale",

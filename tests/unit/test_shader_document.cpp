@@ -64,7 +64,7 @@ private slots:
 
         d.loadPreset(presets()[2]); // the slides' Gouraud: fixes Gouraud, N.H and V
         QVERIFY(d.fixedModel().gouraud && *d.fixedModel().gouraud);
-        QVERIFY(d.fixedModel().blinn && *d.fixedModel().blinn);
+        QCOMPARE(d.fixedModel().specular, std::optional(SpecularModel::Blinn));
         QVERIFY(d.fixedModel().parallelView);
         QVERIFY(!d.otherStageAwaitsUndo(ShaderStage::Fragment));
         // The editor's Ctrl+Z on the fragment stage: the vertex stage should follow.

@@ -72,11 +72,11 @@ private slots:
         for (const char *source : {"%1 (%2): the material's ambient reflection coefficients",
                                    "%1 (%2): the material's diffuse reflection coefficients",
                                    "%1 (%2): the material's specular reflection coefficients"})
-            QVERIFY2(m_translator.asked("lb::MaterialPanel", source), source);
+            QVERIFY2(m_translator.asked("lb::LightingParameters", source), source);
         for (const char *source :
              {"%1 (%2): the light's ambient intensity", "%1 (%2): the light's diffuse intensity",
               "%1 (%2): the light's specular intensity"})
-            QVERIFY2(m_translator.asked("lb::LightPanel", source), source);
+            QVERIFY2(m_translator.asked("lb::LightingParameters", source), source);
         QVERIFY(m_translator.asked("lb::ScenePanel", "%1 or %2"));
         QVERIFY(!m_translator.asked("lb::ScenePanel", " or "));
 

@@ -163,7 +163,7 @@ private slots:
         QVERIFY2(status().startsWith("Zentralprojektion / Punktlicht im Weltsystem / "),
                  qPrintable(status()));
         QVERIFY2(
-            status().contains("; " + marked("lb::ScenePhrases", "Blinn-Phong specular (N\u00b7H)")),
+            status().contains("; " + marked("lb::ScenePhrases", "Blinn-Phong (N\u00b7H) specular")),
             qPrintable(status()));
         QVERIFY2(!hasWords(untranslated(status())), qPrintable(untranslated(status())));
         m_window->document().edit([](Scene &s) {

@@ -1,5 +1,7 @@
 #include "lighting.h"
 
+#include "lighting_models.h"
+
 #include <glm/exponential.hpp>
 #include <glm/geometric.hpp>
 
@@ -42,7 +44,7 @@ LightingTerms lightingTerms(const glm::vec3 &L, const glm::vec3 &N, const glm::v
     t.R = glm::reflect(-t.L, t.N);
 
     t.nDotL = glm::dot(t.L, t.N);
-    t.specularAngle = in.specular == SpecularModel::Blinn ? glm::dot(t.N, t.H) : glm::dot(t.R, t.V);
+    t.specularAngle = specularModel(in.specular).cosine(t);
     const Material &m = in.material;
     t.specularFactor = glm::pow(glm::max(t.specularAngle, 0.0f), m.shininess);
     if (t.nDotL < 0.0f) // light hits the back of the surface: no highlight (slides)

@@ -95,48 +95,41 @@ Plot specularPlot(const Scene &scene, const PlotSubject &s, int samples)
     plot.xMax = 180.0f;
     LightingInputs in = sweepInputs(scene, s);
     plot.shininess = in.material.shininess;
-    // L = N, so R = N and the angle of V from the mirror direction is its angle from N; in
-    // that plane N·H = cos(angle / 2), which is why Blinn-Phong needs about 4n to look like
-    // Phong's n.
-    struct Curve
-    {
-        const char *key;
-        SpecularModel model;
-        float exponent;
-        bool dashed;
-    };
-    const Curve curves[] = {{"phong", SpecularModel::Phong, 1.0f, false},
-                            {"blinn", SpecularModel::Blinn, 1.0f, false},
-                            {"blinn_4n", SpecularModel::Blinn, 4.0f, true}};
-    for (const Curve &c : curves) {
-        PlotSeries series{
-            QString::fromLatin1(c.key), PlotRole::Specular, -1, glm::vec3(1.0f), c.dashed, {}};
-        LightingInputs swept = in;
-        swept.specular = c.model;
-        swept.material.shininess = plot.shininess * c.exponent;
-        for (int i = 0; i < samples; ++i) {
-            const float angle = sampleAt(i, samples, plot.xMin, plot.xMax);
-            const LightingTerms t = lightingTerms(kNormal, kNormal, inPlane(angle), 0.0f, swept);
-            series.points.push_back({angle, t.specularFactor});
+    // L = N, so R = N and the angle of V from the mirror direction is its angle from N. Each
+    // model's curves, as its row lists them (lighting_models.h).
+    std::vector<SpecularModel> seriesModel; // the model of each series, for the markers
+    for (const SpecularModelRow &model : specularModels())
+        for (const SpecularPlotCurve &c : model.curves) {
+            PlotSeries series{
+                QString::fromLatin1(c.key), PlotRole::Specular, -1, glm::vec3(1.0f), c.dashed, {}};
+            LightingInputs swept = in;
+            swept.specular = model.model;
+            swept.material.shininess = plot.shininess * c.exponentTimes;
+            for (int i = 0; i < samples; ++i) {
+                const float angle = sampleAt(i, samples, plot.xMin, plot.xMax);
+                const LightingTerms t =
+                    lightingTerms(kNormal, kNormal, inPlane(angle), 0.0f, swept);
+                series.points.push_back({angle, t.specularFactor});
+            }
+            plot.series.push_back(std::move(series));
+            seriesModel.push_back(model.model);
         }
-        plot.series.push_back(std::move(series));
-    }
-    // Each probed light's own angle, in the model the probe used (side B's in a compare view):
-    // from R for Phong; for Blinn-Phong the in-plane angle that gives its N·H, 2·acos(N·H),
-    // so the mark sits on that model's curve. None where the light is behind the surface, or
-    // N·H < 0 (beyond 180 degrees; the factor is 0 there).
+    // Each probed light's own angle, in the model the probe used (side B's in a compare view),
+    // on that model's first curve at the in-plane angle that gives its cosine (the row's
+    // planeDegrees). None where the light is behind the surface or the cosine has no place.
     for (int light : s.lights) {
         const ProbeLight *p = probedLight(s, light);
         if (!p || p->terms.nDotL < 0.0f)
             continue;
-        const bool blinn = p->inputs.specular == SpecularModel::Blinn;
-        if (blinn && p->terms.specularAngle < 0.0f)
+        const SpecularModelRow &model = specularModel(p->inputs.specular);
+        const std::optional<float> angle = model.planeDegrees(p->terms.specularAngle);
+        const auto series = std::find(seriesModel.begin(), seriesModel.end(), model.model);
+        if (!angle || series == seriesModel.end())
             continue;
-        const float angle = degreesBetween(p->terms.specularAngle);
-        plot.markers.push_back({blinn ? 1 : 0,
+        plot.markers.push_back({int(series - seriesModel.begin()),
                                 light,
                                 p->inputs.colors.id,
-                                {blinn ? 2.0f * angle : angle, p->terms.specularFactor}});
+                                {*angle, p->terms.specularFactor}});
     }
     return plot;
 }

@@ -25,8 +25,7 @@ QString lightingEquation(const Scene &scene, const ProbeResult &probe)
     if (!probe.hit)
         return {};
     const TermSwitches &on = scene.shading.terms;
-    const bool blinn = scene.shading.specular == SpecularModel::Blinn;
-    const QString angle = blinn ? "N·H" : "R·V";
+    const QString angle = QString::fromUtf8(specularModel(scene.shading.specular).angle);
     const float n = scene.objects[std::size_t(probe.object)].material.shininess;
 
     // In symbols: OpenGL 2.1's fixed-function form, attenuation and spot scaling all three.

@@ -118,11 +118,16 @@ const QStringList &lessonPanels()
 
 const QStringList &lessonHighlights()
 {
-    static const QStringList controls{"light.position",  "light.w",          "light.frame",
-                                      "light.colours",   "material",         "material.shininess",
-                                      "shading.shading", "shading.specular", "shading.projection",
-                                      "shading.terms",   "compare",          "object.transform",
-                                      "editor"};
+    // The lighting model's numbers' controls (lighting_parameters.h), then the others.
+    static const QStringList controls = [] {
+        QStringList names;
+        for (const LightingParameter &p : lightingParameters())
+            if (p.highlight && !names.contains(QLatin1String(p.highlight)))
+                names << QString::fromLatin1(p.highlight);
+        return names + QStringList{"light.w",          "light.frame",        "shading.shading",
+                                   "shading.specular", "shading.projection", "shading.terms",
+                                   "compare",          "object.transform",   "editor"};
+    }();
     return controls;
 }
 

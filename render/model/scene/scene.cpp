@@ -25,8 +25,6 @@ constexpr NameTable<LightFrame, 3> kFrames{
     {{LightFrame::Camera, "camera"}, {LightFrame::World, "world"}, {LightFrame::Object, "object"}}};
 constexpr NameTable<Shading, 3> kShadings{
     {{Shading::Gouraud, "gouraud"}, {Shading::Phong, "phong"}, {Shading::Flat, "flat"}}};
-constexpr NameTable<SpecularModel, 2> kSpeculars{
-    {{SpecularModel::Phong, "phong"}, {SpecularModel::Blinn, "blinn"}}};
 constexpr NameTable<Projection, 2> kProjections{
     {{Projection::Perspective, "perspective"}, {Projection::Orthographic, "orthographic"}}};
 constexpr NameTable<Shape, 4> kShapes{{{Shape::Cube, "cube"},
@@ -107,10 +105,6 @@ QString toName(Shading v)
 {
     return nameOf(kShadings, v);
 }
-QString toName(SpecularModel v)
-{
-    return nameOf(kSpeculars, v);
-}
 QString toName(Projection v)
 {
     return nameOf(kProjections, v);
@@ -150,10 +144,6 @@ std::optional<LightFrame> parseLightFrame(const QString &s)
 std::optional<Shading> parseShading(const QString &s)
 {
     return valueOf(kShadings, s);
-}
-std::optional<SpecularModel> parseSpecularModel(const QString &s)
-{
-    return valueOf(kSpeculars, s);
 }
 std::optional<Projection> parseProjection(const QString &s)
 {
@@ -195,10 +185,6 @@ QStringList shadingNames()
 {
     return namesOf(kShadings);
 }
-QStringList specularModelNames()
-{
-    return namesOf(kSpeculars);
-}
 QStringList projectionNames()
 {
     return namesOf(kProjections);
@@ -232,31 +218,6 @@ QStringList textureFilterNames()
     return namesOf(kTextureFilters);
 }
 
-Lights defaultLights()
-{
-    Lights lights;
-    const LightColors none{glm::vec3(0.0f), glm::vec3(0.0f), glm::vec3(0.0f)};
-    for (std::size_t i = 1; i < lights.size(); ++i) {
-        lights[i].enabled = false;
-        lights[i].colors = none;
-    }
-    lights[1].position = {-2.5f, 0.5f, 1.0f, 1.0f};
-    lights[1].colors.id = {0.25f, 0.35f, 0.7f};
-    lights[1].colors.is = {0.4f, 0.5f, 0.9f};
-    lights[2].position = {2.0f, -1.2f, 1.5f, 1.0f};
-    lights[2].colors.id = {0.6f, 0.45f, 0.2f};
-    lights[2].colors.is = {0.6f, 0.5f, 0.3f};
-    lights[3].position = {0.0f, 0.0f, 1.0f, 0.0f}; // a headlight: along the view direction
-    // Made a spotlight, a point light aims at the object's centre from where it starts.
-    for (Light &l : lights)
-        if (l.position.w != 0.0f)
-            l.spot.direction = -glm::vec3(l.position);
-    lights[3].frame = LightFrame::Camera;
-    lights[3].colors.id = glm::vec3(0.3f);
-    lights[3].colors.is = glm::vec3(0.3f);
-    return lights;
-}
-
 // Every field of each struct: a field added to one of them must be added here too (the
 // scene test saves and reads back a scene that differs from the defaults in every field).
 bool operator==(const LightColors &a, const LightColors &b)
@@ -272,8 +233,9 @@ bool operator==(const Spot &a, const Spot &b)
 
 bool operator==(const Light &a, const Light &b)
 {
-    return std::tie(a.position, a.frame, a.colors, a.enabled, a.attenuation, a.spot, a.object) ==
-           std::tie(b.position, b.frame, b.colors, b.enabled, b.attenuation, b.spot, b.object);
+    // The numbers are the table's (lighting_parameters.h); the rest is the light's own.
+    return sameParameters(a, b) &&
+           std::tie(a.frame, a.enabled, a.object) == std::tie(b.frame, b.enabled, b.object);
 }
 
 bool operator==(const TermSwitches &a, const TermSwitches &b)
@@ -283,7 +245,7 @@ bool operator==(const TermSwitches &a, const TermSwitches &b)
 
 bool operator==(const Material &a, const Material &b)
 {
-    return std::tie(a.ka, a.kd, a.ks, a.shininess) == std::tie(b.ka, b.kd, b.ks, b.shininess);
+    return sameParameters(a, b); // all its members are the table's numbers
 }
 
 bool operator==(const ShadingSettings &a, const ShadingSettings &b)

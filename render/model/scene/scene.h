@@ -4,7 +4,10 @@
 
 #include "bindings.h"
 #include "camera.h"
+#include "light.h"
 #include "lighting.h"
+#include "lighting_models.h"
+#include "lighting_parameters.h"
 #include "localized_text.h"
 #include "texture_sampling.h"
 
@@ -23,7 +26,6 @@
 
 namespace lb {
 
-enum class LightFrame { Camera, World, Object };
 // Gouraud: the model at the vertices, interpolated; Phong: at every fragment; flat: at each
 // triangle's provoking (last) vertex, one colour per triangle, as GL's flat shading gives.
 enum class Shading { Gouraud, Phong, Flat };
@@ -46,28 +48,6 @@ enum class NormalMode { File, Smooth, Flat };
 enum class Faces { Outward, File, Flipped, TwoSided };
 // Two programs on one camera: A (the editor's program) and B (a built-in one).
 enum class CompareMode { Off, SideBySide, Wipe, Difference };
-
-struct Light
-{
-    glm::vec4 position{0.0f, 1.8f, 1.3f, 1.0f}; // the slides' lightPosition; w = 0 or 1
-    LightFrame frame = LightFrame::World;       // the slides' complete shaders use world (II)
-    LightColors colors;
-    bool enabled = true; // a light switched off adds nothing and goes to shaders as black
-    // kc, kl, kq of 1 / (kc + kl·d + kq·d²) for a point light; (1, 0, 0): none.
-    glm::vec3 attenuation{1.0f, 0.0f, 0.0f};
-    Spot spot; // its direction in the light's frame; cutoff 180: none
-    // The object whose frame an object-frame light is given in (an index into
-    // Scene::objects): the light turns and moves with that object, whichever it lights.
-    int object = 0;
-};
-
-// Up to four lights add up. Light 1 is the slides' light; a shader that declares one light
-// (lightPosition, not lightPosition[4]) reads light 1.
-constexpr int kMaxLights = 4;
-using Lights = std::array<Light, kMaxLights>;
-// Light 1 on with the slides' values; 2 to 4 off, placed and coloured so that switching one
-// on shows where it is (no ambient of their own: one ambient term is the slides' model).
-Lights defaultLights();
 
 struct ShadingSettings
 {
@@ -206,20 +186,14 @@ bool operator==(const ObjectSettings &a, const ObjectSettings &b);
 bool operator==(const OrbitCamera &a, const OrbitCamera &b);
 bool operator==(const CompareSettings &a, const CompareSettings &b);
 
-// Limits shared by the panels and the command line.
+// Limits shared by the panels and the command line (the lighting model's own:
+// lighting_parameters.h).
 namespace limits {
 constexpr int kMinTessellation = 3;
 constexpr int kMaxTessellation = 2000;
-constexpr float kMinShininess = 1.0f;
-constexpr float kMaxShininess = 1000.0f;
-constexpr float kMaxCoordinate = 1000.0f; // light positions, translations, the camera
 constexpr float kMinScale = 0.01f;
 constexpr float kMaxScale = 100.0f;
 constexpr float kMaxCreaseDegrees = 180.0f;
-constexpr float kMaxAttenuation = 1000.0f;   // each of kc, kl, kq, at least 0; not all 0
-constexpr float kMaxSpotCutoff = 180.0f;     // degrees; 180: no spot
-constexpr float kMaxSpotExponent = 128.0f;   // as OpenGL 2.1 allows
-constexpr float kMinDirectionLength = 1e-6f; // shorter spot axes are refused (normalize fails)
 // The program's own uniform values a scene keeps (Scene::shaderValues): far more than a program
 // has, few enough that a scene at every limit is smaller than a scene file may be
 // (kMaxSceneFileBytes), so what is saved can be opened again.
@@ -229,10 +203,10 @@ constexpr int kMaxBindings = 1024;        // far more than a program has uniform
 constexpr int kMaxNameCharacters = 4096;  // an object's or a program's name, in each language
 } // namespace limits
 
-// Names used on the command line, in JSON and in the panels' combo boxes.
+// Names used on the command line, in JSON and in the panels' combo boxes (the specular
+// models': lighting_models.h).
 QString toName(LightFrame v);
 QString toName(Shading v);
-QString toName(SpecularModel v);
 QString toName(Projection v);
 QString toName(Shape v);
 QString toName(NormalMode v);
@@ -243,7 +217,6 @@ QString toName(TextureWrap v);
 QString toName(TextureFilter v);
 std::optional<LightFrame> parseLightFrame(const QString &s);
 std::optional<Shading> parseShading(const QString &s);
-std::optional<SpecularModel> parseSpecularModel(const QString &s);
 std::optional<Projection> parseProjection(const QString &s);
 std::optional<Shape> parseShape(const QString &s);
 std::optional<NormalMode> parseNormalMode(const QString &s);
@@ -254,7 +227,6 @@ std::optional<TextureWrap> parseTextureWrap(const QString &s);
 std::optional<TextureFilter> parseTextureFilter(const QString &s);
 QStringList lightFrameNames();
 QStringList shadingNames();
-QStringList specularModelNames();
 QStringList projectionNames();
 QStringList shapeNames();
 QStringList normalModeNames();

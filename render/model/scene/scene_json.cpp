@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <type_traits>
 
 namespace lb {
@@ -26,32 +27,54 @@ QJsonArray toArray(const float *v, int n)
     return a;
 }
 
+// A row's key: "cutoff" in the object under "spot" for "spot.cutoff".
+struct ParameterKey
+{
+    QString object; // empty: the owner's own object
+    QString key;
+};
+
+ParameterKey keyOf(const LightingParameter &p)
+{
+    const QString key = QString::fromLatin1(p.key);
+    const int dot = int(key.indexOf('.'));
+    if (dot < 0)
+        return {{}, key};
+    return {key.left(dot), key.mid(dot + 1)};
+}
+
+// The numbers of the owner's rows (lighting_parameters.h): one number as a number, more as
+// an array.
+template <typename Owner> void writeParameters(QJsonObject &json, ParameterOwner of, const Owner &o)
+{
+    for (const LightingParameter *p : lightingParameters(of)) {
+        const ParameterKey k = keyOf(*p);
+        const QJsonValue v = p->count == 1 ? QJsonValue(double(*p->numbers(o)))
+                                           : QJsonValue(toArray(p->numbers(o), p->count));
+        if (k.object.isEmpty()) {
+            json[k.key] = v;
+        } else {
+            QJsonObject inner = json[k.object].toObject();
+            inner[k.key] = v;
+            json[k.object] = inner;
+        }
+    }
+}
+
 QJsonObject lightJson(const Light &light)
 {
     QJsonObject l;
     l["enabled"] = light.enabled;
-    l["position"] = toArray(&light.position.x, 4);
     l["frame"] = toName(light.frame);
-    l["ia"] = toArray(&light.colors.ia.x, 3);
-    l["id"] = toArray(&light.colors.id.x, 3);
-    l["is"] = toArray(&light.colors.is.x, 3);
-    l["attenuation"] = toArray(&light.attenuation.x, 3);
-    QJsonObject spot;
-    spot["direction"] = toArray(&light.spot.direction.x, 3);
-    spot["cutoff"] = light.spot.cutoffDegrees;
-    spot["exponent"] = light.spot.exponent;
-    l["spot"] = spot;
     l["object"] = light.object;
+    writeParameters(l, ParameterOwner::Light, light);
     return l;
 }
 
 QJsonObject materialJson(const Material &material)
 {
     QJsonObject m;
-    m["ka"] = toArray(&material.ka.x, 3);
-    m["kd"] = toArray(&material.kd.x, 3);
-    m["ks"] = toArray(&material.ks.x, 3);
-    m["shininess"] = double(material.shininess);
+    writeParameters(m, ParameterOwner::Material, material);
     return m;
 }
 
@@ -99,55 +122,56 @@ struct SceneJsonMessages
     Q_DECLARE_TR_FUNCTIONS(lb::SceneJson)
 };
 
+// Each row of the owner's (lighting_parameters.h) within its range; numbers the row refuses as
+// a whole keep what they were, named with the row's reason. The objects a row lies in ("spot")
+// are read once, their unknown keys named.
+template <typename Owner>
+void readParameters(SceneJsonReader &r, const QJsonObject &json, const QString &path,
+                    ParameterOwner of, Owner &o, const QJsonObject &known)
+{
+    std::map<QString, QJsonObject> inner;
+    for (const LightingParameter *p : lightingParameters(of)) {
+        const ParameterKey k = keyOf(*p);
+        QString where = path;
+        const QJsonObject *in = &json;
+        if (!k.object.isEmpty()) {
+            where = SceneJsonReader::join(path, k.object);
+            if (!inner.count(k.object)) {
+                inner[k.object] = r.object(json, k.object, where);
+                r.unknownKeys(inner[k.object], known[k.object].toObject(), where);
+            }
+            in = &inner[k.object];
+        }
+        float *v = p->numbers(o);
+        const std::vector<float> before(v, v + p->count);
+        if (p->count == 1)
+            r.number(*in, k.key, where, *v, p->lo, p->hi);
+        else
+            r.numbers(*in, k.key, where, v, p->count, p->lo, p->hi);
+        const QString refused = p->refusal(v);
+        if (!refused.isEmpty()) {
+            r.ignore(SceneJsonReader::join(where, k.key), refused);
+            std::copy(before.begin(), before.end(), v);
+        }
+    }
+}
+
 void readLight(SceneJsonReader &r, const QJsonObject &l, const QString &path, Light &light)
 {
-    r.unknownKeys(l, lightJson(light), path);
+    const QJsonObject known = lightJson(light);
+    r.unknownKeys(l, known, path);
     r.boolean(l, "enabled", path, light.enabled);
-    const float c = limits::kMaxCoordinate;
-    const Light before = light;
-    r.numbers(l, "position", path, &light.position.x, 4, -c, c);
-    if (light.position.w != 0.0f && light.position.w != 1.0f) {
-        r.ignore(SceneJsonReader::join(path, "position"),
-                 SceneJsonMessages::tr("w must be 0 or 1"));
-        light.position = before.position;
-    } else if (light.position == glm::vec4(0.0f)) {
-        r.ignore(SceneJsonReader::join(path, "position"),
-                 SceneJsonMessages::tr("a direction of length 0"));
-        light.position = before.position;
-    }
     r.word(l, "frame", path, parseLightFrame, light.frame);
-    r.numbers(l, "ia", path, &light.colors.ia.x, 3, 0.0f, 1.0f);
-    r.numbers(l, "id", path, &light.colors.id.x, 3, 0.0f, 1.0f);
-    r.numbers(l, "is", path, &light.colors.is.x, 3, 0.0f, 1.0f);
-    r.numbers(l, "attenuation", path, &light.attenuation.x, 3, 0.0f, limits::kMaxAttenuation);
-    if (light.attenuation == glm::vec3(0.0f)) {
-        r.ignore(SceneJsonReader::join(path, "attenuation"),
-                 SceneJsonMessages::tr("kc, kl and kq all 0"));
-        light.attenuation = before.attenuation;
-    }
-    const QString spotPath = SceneJsonReader::join(path, "spot");
-    const QJsonObject spot = r.object(l, "spot", spotPath);
-    r.unknownKeys(spot, lightJson(light)["spot"].toObject(), spotPath);
-    r.numbers(spot, "direction", spotPath, &light.spot.direction.x, 3, -c, c);
-    if (glm::length(light.spot.direction) < limits::kMinDirectionLength) {
-        r.ignore(SceneJsonReader::join(spotPath, "direction"),
-                 SceneJsonMessages::tr("a direction of length 0"));
-        light.spot.direction = before.spot.direction;
-    }
-    r.number(spot, "cutoff", spotPath, light.spot.cutoffDegrees, 0.0f, limits::kMaxSpotCutoff);
-    r.number(spot, "exponent", spotPath, light.spot.exponent, 0.0f, limits::kMaxSpotExponent);
+    readParameters(r, l, path, ParameterOwner::Light, light, known);
     // Checked against the objects once they are read (fromJson): one message, not two.
     r.number(l, "object", path, light.object, 0, std::numeric_limits<int>::max());
 }
 
 void readMaterial(SceneJsonReader &r, const QJsonObject &m, const QString &path, Material &material)
 {
-    r.unknownKeys(m, materialJson(material), path);
-    r.numbers(m, "ka", path, &material.ka.x, 3, 0.0f, 1.0f);
-    r.numbers(m, "kd", path, &material.kd.x, 3, 0.0f, 1.0f);
-    r.numbers(m, "ks", path, &material.ks.x, 3, 0.0f, 1.0f);
-    r.number(m, "shininess", path, material.shininess, limits::kMinShininess,
-             limits::kMaxShininess);
+    const QJsonObject known = materialJson(material);
+    r.unknownKeys(m, known, path);
+    readParameters(r, m, path, ParameterOwner::Material, material, known);
 }
 
 // One object; version 2's "object" is read by the same code (it has fewer fields).

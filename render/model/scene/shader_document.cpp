@@ -178,7 +178,10 @@ ShaderDocument::FixedModel ShaderDocument::fixedModel() const
         return {m_builtInGouraud, std::nullopt};
     if (m_origin.kind == ShaderOrigin::Kind::Preset)
         if (const Preset *p = presetNamed(m_origin.name))
-            return {p->gouraud, p->blinn, p->parallelView};
+            return {p->gouraud,
+                    p->specular ? parseSpecularModel(QString::fromLatin1(p->specular))
+                                : std::nullopt,
+                    p->parallelView};
     return {};
 }
 

@@ -83,13 +83,13 @@ public:
     // The built-in program the text started from (Gouraud: true), edited or not; none for a
     // file, a scene's program or text handed over. An edited built-in keeps its shading.
     std::optional<bool> builtInBase() const { return m_builtInGouraud; }
-    // The course model the text computes where it fixes it (Preset::gouraud, ::blinn): an
+    // The course model the text computes where it fixes it (Preset::gouraud, ::specular): an
     // edited built-in keeps its shading, the slides' presets their shading and N.H. Empty
     // while the untouched built-in program follows the panel, and for text of unknown origin.
     struct FixedModel
     {
         std::optional<bool> gouraud;
-        std::optional<bool> blinn;
+        std::optional<SpecularModel> specular;
         bool parallelView = false; // V = (0,0,1) whatever the projection
     };
     FixedModel fixedModel() const;

@@ -73,7 +73,7 @@ UniformValue uniformValue(Semantic semantic, const Scene &scene, const Frames &f
     case Semantic::Shininess:
         return UniformValue::ofNumber(m.shininess);
     case Semantic::SpecularModel:
-        return UniformValue::ofNumber(s.specular == SpecularModel::Blinn ? 1.0f : 0.0f);
+        return UniformValue::ofNumber(float(specularModel(s.specular).uniform));
     case Semantic::ProjectionKind:
         return UniformValue::ofNumber(s.projection == Projection::Perspective ? 0.0f : 1.0f);
     case Semantic::EnableLighting:

@@ -1,17 +1,7 @@
-#version 330 core
-// Gouraud shading (slides: "Iluminação nos vértices"): the lighting model is evaluated once
-// per vertex, in the camera frame, and the colours are interpolated over each triangle.
-
-in vec4 vPosition;  // vertex position in modelling coordinates
-in vec3 vNormal;    // vertex normal in modelling coordinates
-in vec3 vColor;     // vertex colour (used when the vertex colour switch is on)
-in vec2 vTexCoord;  // texture coordinate (used when the texture switch is on)
-
-uniform mat4 mModelView;   // model-view transformation
-uniform mat4 mNormals;     // inverse transpose of mModelView: carries normals
-uniform mat4 mView;        // world -> camera, from lookAt()
-uniform mat4 mViewNormals; // inverse transpose of mView
-uniform mat4 mProjection;  // projection matrix
+// The lighting model shared by both built-in programs: the Phong program's fragment stage
+// (phong.frag) and the Gouraud program's vertex stage (gouraud.vert) are each built with this
+// text in place of their "// @include lighting.glsl" line, so the text a student opens is
+// whole. Everything is in the camera frame, as in the slides.
 
 // Up to four lights; element i is light i + 1 of the Light panel. Their terms add up.
 #define MAX_LIGHTS 4
@@ -35,7 +25,11 @@ uniform vec3 materialAmb;   // Ka
 uniform vec3 materialDif;   // Kd
 uniform vec3 materialSpe;   // Ks
 uniform float shininess;
-uniform int uSpecularModel; // 0: Phong (R.V), 1: Blinn-Phong (N.H)
+// The specular models, numbered as the workbench's table of models numbers them
+// (render/model/lighting/lighting_models.cpp: each model's uniform value).
+#define SPECULAR_PHONG 0 // (R.V)^n
+#define SPECULAR_BLINN 1 // (N.H)^n, Blinn-Phong
+uniform int uSpecularModel;
 uniform int uProjection;    // 0: perspective, V = -posC; 1: parallel, V = (0,0,1)
 uniform bool uEnableAmbient;  // each term can be switched off to see the others alone
 uniform bool uEnableDiffuse;
@@ -45,22 +39,6 @@ uniform bool uEnableSpecular;
 // The workbench compiles this text with SHOW_CHOICES 0 while the colour is shown.
 #define SHOW_CHOICES 1
 uniform int uShow;
-
-// Ambient + diffuse and specular travel apart so that the fragment stage can modulate the
-// first by the vertex colour and the texture, as phong.frag does.
-// Flat shading is this program with FLAT_SHADING 1 (the workbench compiles it so for the
-// Flat choice): each triangle takes the values of its last vertex, GL's provoking vertex,
-// uninterpolated.
-#define FLAT_SHADING 0
-#if FLAT_SHADING
-flat out vec3 fAmbientDiffuse;
-flat out vec3 fSpecular;
-#else
-out vec3 fAmbientDiffuse;
-out vec3 fSpecular;
-#endif
-out vec3 fColor;
-out vec2 fTexCoord;
 
 // The light in the camera frame: variants I (camera), II (world) and III (object).
 // An inverse transpose carries the matrix's translation into w, so w is put back: a
@@ -118,6 +96,26 @@ float spotOf(int i, vec3 L)
 #endif
 }
 
+// The cosine the specular exponent raises, in the model uSpecularModel names. The slides
+// write reflect(L, N), but GLSL's reflect() mirrors an incident direction that points at the
+// surface; L points away from it, so the mirrored light ray is reflect(-L, N).
+float specularCosine(vec3 N, vec3 L, vec3 V)
+{
+    if (uSpecularModel == SPECULAR_PHONG)
+        return dot(reflect(-L, N), V); // R.V
+    if (uSpecularModel == SPECULAR_BLINN)
+        return dot(N, normalize(L + V)); // N.H, H the half vector
+    return -1.0; // a model this text does not know: no highlight (never another model's)
+}
+
+// max(cosine, 0)^shininess, and none where the light is on the back of the face.
+float specularFactor(vec3 N, vec3 L, vec3 V)
+{
+    if (dot(L, N) < 0.0)
+        return 0.0;
+    return pow(max(specularCosine(N, L, V), 0.0), shininess);
+}
+
 // What uShow asks for at P, from light 1.
 vec3 shown(vec3 P, vec3 N, vec3 V)
 {
@@ -131,10 +129,8 @@ vec3 shown(vec3 P, vec3 N, vec3 V)
     }
     if (uShow == 6)
         return vec3(dot(L, N)); // negative (the light behind) shows black
-    if (uShow == 7) {
-        float specularAngle = uSpecularModel == 1 ? dot(N, H) : dot(R, V);
-        return vec3(dot(L, N) < 0.0 ? 0.0 : pow(max(specularAngle, 0.0), shininess));
-    }
+    if (uShow == 7)
+        return vec3(specularFactor(N, L, V));
     return vec3(attenuationOf(0, light, P));
 }
 
@@ -144,18 +140,11 @@ void addLight(int i, vec3 P, vec3 N, vec3 V, inout vec3 ambientDiffuse, inout ve
     vec4 light = lightInCamera(i);
     vec3 L = light.w == 0.0 ? normalize(light.xyz) : normalize(light.xyz - P);
     float factor = attenuationOf(i, light, P) * spotOf(i, L); // scales all three terms
-    vec3 H = normalize(L + V);
-    // The slides write reflect(L, N), but GLSL's reflect() mirrors an incident direction that
-    // points at the surface; L points away from it, so the mirrored light ray is reflect(-L, N).
-    vec3 R = reflect(-L, N);
 
     vec3 ambient = lightAmb[i] * materialAmb;
     float diffuseFactor = max(dot(L, N), 0.0); // no light from behind
     vec3 diffuse = diffuseFactor * (lightDif[i] * materialDif);
-    float specularAngle = uSpecularModel == 1 ? dot(N, H) : dot(R, V);
-    vec3 spec = pow(max(specularAngle, 0.0), shininess) * (lightSpe[i] * materialSpe);
-    if (dot(L, N) < 0.0)
-        spec = vec3(0.0); // light on the back of the face: no highlight
+    vec3 spec = specularFactor(N, L, V) * (lightSpe[i] * materialSpe);
 
     if (uEnableAmbient)
         ambientDiffuse += factor * ambient;
@@ -163,29 +152,4 @@ void addLight(int i, vec3 P, vec3 N, vec3 V, inout vec3 ambientDiffuse, inout ve
         ambientDiffuse += factor * diffuse;
     if (uEnableSpecular)
         specular += factor * spec;
-}
-
-void main()
-{
-    vec3 posC = (mModelView * vPosition).xyz;
-
-    vec3 V = uProjection == 0 ? normalize(-posC) : vec3(0.0, 0.0, 1.0);
-    vec3 N = normalize((mNormals * vec4(vNormal, 0.0)).xyz);
-    vec3 ambientDiffuse = vec3(0.0);
-    vec3 specular = vec3(0.0);
-    for (int i = 0; i < MAX_LIGHTS; ++i)
-        if (uLightEnabled[i])
-            addLight(i, posC, N, V, ambientDiffuse, specular);
-#if SHOW_CHOICES
-    if (uShow != 0) { // what is shown instead, interpolated as the colour would be
-        ambientDiffuse = shown(posC, N, V);
-        specular = vec3(0.0);
-    }
-#endif
-
-    fAmbientDiffuse = ambientDiffuse;
-    fSpecular = specular;
-    fColor = vColor;
-    fTexCoord = vTexCoord;
-    gl_Position = mProjection * mModelView * vPosition;
 }
