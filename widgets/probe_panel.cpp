@@ -352,7 +352,7 @@ void ProbePanel::showText()
     }
     html += "</table>";
     // The equation with the numbers, as the course writes it (also copied by the button).
-    m_equation = equationForDisplay(lightingEquation(side, r));
+    m_equation = equationForDisplay(lightingEquationLines(side, r));
     m_copyEquation->setEnabled(!m_equation.isEmpty());
     // The monospace at the panel's size, which follows the UI scale: in presentation mode too,
     // where the back row reads it (issue 49, item 15).

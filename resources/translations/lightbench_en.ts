@@ -2443,7 +2443,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>a directional light (w = 0) with the direction 0, 0, 0</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2458,65 +2458,65 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+24"/>
         <source>lightPosition.%1: the light&apos;s %1 in the chosen frame</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+19"/>
         <source>%1 (%2): the light&apos;s ambient intensity</source>
         <extracomment>%1 the symbol (Ia, Id, Is); %2 the uniforms that carry it</extracomment>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+17"/>
         <source>%1 (%2): the light&apos;s diffuse intensity</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+17"/>
         <source>%1 (%2): the light&apos;s specular intensity</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+19"/>
         <source>lightAttenuation.%1 (%2): a point light&apos;s terms are divided by kc + kl·d + kq·d², d its distance to the surface (1, 0, 0: none; a directional light is never attenuated)</source>
         <extracomment>%1 the axis (x, y, z); %2 its name (kc, kl, kq)</extracomment>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+20"/>
         <source>spotDirection.%1: the spotlight&apos;s axis, from the light, in the light&apos;s frame</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+19"/>
         <source>spotCutoff: the cone&apos;s half-angle; outside it the light adds nothing, ambient included (180: no spot)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+19"/>
         <source>spotExponent: inside the cone the terms are scaled by max(-L·D, 0)^exponent, brighter towards the axis</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+20"/>
         <source>%1 (%2): the material&apos;s ambient reflection coefficients</source>
         <extracomment>%1 the symbol (Ka, Kd, Ks); %2 the uniforms that carry it</extracomment>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+18"/>
         <source>%1 (%2): the material&apos;s diffuse reflection coefficients</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+18"/>
         <source>%1 (%2): the material&apos;s specular reflection coefficients</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+18"/>
         <source>shininess: the specular exponent n in (R.V)^n or (N.H)^n; higher gives a smaller, sharper highlight</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4222,52 +4222,52 @@
 <context>
     <name>lb::ProbeEquation</name>
     <message>
-        <location filename="../../widgets/probe_equation_words.cpp" line="+24"/>
+        <location filename="../../render/model/measure/probe_equation.cpp" line="+150"/>
         <source>Lighting is off: the surface shows Kd times the base colour instead.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+4"/>
         <source>Flat shading draws the model at the triangle&apos;s last (provoking) vertex, one colour for the triangle; these numbers are the model at this point.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+5"/>
         <source>Gouraud shading draws the model at the triangle&apos;s vertices, interpolated; these numbers are the model at this point.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="-72"/>
         <source>(base multiplies ambient and diffuse only)</source>
         <extracomment>after the equation in symbols, where a texture&apos;s base colour multiplies it</extracomment>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+26"/>
         <source>(0: the light is behind the surface)</source>
         <extracomment>after the specular term&apos;s numbers, where N·L &lt; 0</extracomment>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-5"/>
         <source>[off]</source>
         <extracomment>before a term the Shading panel switched off</extracomment>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="-7"/>
         <source>light %1: %2</source>
         <extracomment>a light&apos;s line of the equation: %1 its number, %2 its factors (att·spot = ...)</extracomment>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+41"/>
         <source>pixel = %1 of 255 (clamped to 0..1)</source>
         <extracomment>%1 the pixel&apos;s red, green and blue, as (r, g, b)</extracomment>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+23"/>
         <source>The surface shows %1, not this colour.</source>
         <extracomment>%1 what the Shading panel&apos;s Show choice draws instead (normal, ndotl, ...)</extracomment>
         <translation type="unfinished"></translation>
@@ -5414,7 +5414,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+9"/>
         <location line="+44"/>
         <source>Specular</source>
         <extracomment>the row of the specular term&apos;s choice (Phong or Blinn-Phong)</extracomment>

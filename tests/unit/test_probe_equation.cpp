@@ -120,6 +120,27 @@ private slots:
                  glm::vec3(0.0f));
     }
 
+    // Issue 50: the lines are patterns with parts, filled in one pass: a part's own "%1" (a
+    // number's text never has one, a phrase might in another language) is not filled again,
+    // and the panel translates patterns and phrases instead of parsing English back.
+    void linesAreFilledOnce()
+    {
+        QCOMPARE(fillPattern("light %1: %2", {"%2", "x"}), QString("light %2: x"));
+        QCOMPARE(fillPattern("100% of %1%", {"a"}), QString("100% of a%"));
+        Scene s;
+        s.shading.terms.diffuse = false;
+        const std::vector<EquationLine> lines = lightingEquationLines(s, probe(s));
+        QStringList text;
+        for (const EquationLine &line : lines) {
+            text << equationLineText(line);
+            for (const EquationPart &part : line.parts)
+                if (part.kind == EquationPart::Kind::Phrase)
+                    QVERIFY(!part.text.isEmpty());
+        }
+        QCOMPARE(text.join('\n'), lightingEquation(s, probe(s)));
+        QVERIFY(lightingEquation(s, probe(s)).contains("  [off] att·spot·Id·Kd·max(N·L, 0) = "));
+    }
+
     // Issue 28: Copy the Equation gives the same text under a German default locale: its
     // numbers keep their points, as the probe, the JSON and the shaders write them.
     void numbersKeepTheirPointsInEveryLocale()
