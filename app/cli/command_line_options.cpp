@@ -33,6 +33,18 @@ QString parameterHelp(const LightingParameter &p)
         .arg(double(p.hi));
 }
 
+// "Specular term: phong, Phong's (R.V)^n; or blinn, Blinn-Phong's (N.H)^n.", from the models'
+// table (lighting_models.h).
+QString specularHelp()
+{
+    QStringList models;
+    for (const SpecularModelRow &row : specularModels())
+        models << QString("%1, %2's %3")
+                      .arg(QString::fromLatin1(row.word), QString::fromUtf8(row.name),
+                           QString::fromUtf8(row.factor).replace(QChar(0x00b7), '.'));
+    return "Specular term: " + models.join("; or ") + ".";
+}
+
 OptionInfo flag(const char *name, const QString &help)
 {
     return value(name, "", help);
@@ -163,7 +175,7 @@ std::vector<OptionInfo> visibleOptions()
         words("shading", shadingNames(),
               "Lighting per vertex (Gouraud), per fragment (Phong) or per triangle at "
               "its last vertex (flat)."),
-        words("specular", specularModelNames(), "Specular term: Phong (R.V) or Blinn-Phong (N.H)."),
+        words("specular", specularModelNames(), specularHelp()),
         words("show", showChoiceNames(),
               "What the surface shows: the lit colour, or N, L, V, H, R (as 0.5v + 0.5), "
               "N.L, the specular factor or the attenuation (as grey); L, H, R and the "
