@@ -1,7 +1,6 @@
-// The lighting model shared by both built-in programs: the Phong program's fragment stage
-// (phong.frag) and the Gouraud program's vertex stage (gouraud.vert) are each built with this
-// text in place of their "// @include lighting.glsl" line, so the text a student opens is
-// whole. Everything is in the camera frame, as in the slides.
+// The lighting model: the same text in the Phong program's fragment stage and the Gouraud
+// program's vertex stage (the workbench keeps it once, in shaders/lighting.glsl, and puts it
+// in both). Everything is in the camera frame, as in the slides.
 
 // Up to four lights; element i is light i + 1 of the Light panel. Their terms add up.
 #define MAX_LIGHTS 4
