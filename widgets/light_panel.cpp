@@ -13,16 +13,17 @@
 #include <QTabBar>
 
 #include <glm/geometric.hpp>
+#include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
 
 namespace lb {
 
 namespace {
-glm::vec3 LightColors::*const kLightColours[3] = {&LightColors::ia, &LightColors::id,
-                                                  &LightColors::is};
+// Ia, Id, Is: the rows the colour edits show and change.
+const char *const kLightColourKeys[3] = {"ia", "id", "is"};
 // The light's row of the lighting model's table (lighting_parameters.h).
-const LightingParameter &row(const char *key)
+const LightingParameter &lightRow(const char *key)
 {
     return *lightingParameter(ParameterOwner::Light, key);
 }
@@ -65,12 +66,12 @@ LightPanel::LightPanel(SceneDocument *document, QWidget *parent)
     auto *xyzRow = new WrapRow;
     for (int i = 0; i < 3; ++i) {
         QDoubleSpinBox *spin =
-            makeSpin(row("position"), row("position").toolTipText().arg(axes[i]));
+            makeSpin(lightRow("position"), lightRow("position").toolTipText().arg(axes[i]));
         connect(spin, &QDoubleSpinBox::valueChanged, this, [this, i](double v) {
             edit([&](Scene &s) { current(s).position[i] = float(v); });
         });
         m_xyz[std::size_t(i)] = spin;
-        feeds(spin, row("position").semantics);
+        feeds(spin, lightRow("position").semantics);
         xyzRow->addWidget(spin);
     }
     form->addRow(tr("Position"), xyzRow);
@@ -112,14 +113,15 @@ LightPanel::LightPanel(SceneDocument *document, QWidget *parent)
     //: the object whose frame an object-frame light is given in
     form->addRow(tr("Of object"), m_frameObject);
 
-    const char *colourKeys[3] = {"ia", "id", "is"};
     for (int i = 0; i < 3; ++i) {
-        const LightingParameter &p = row(colourKeys[i]);
+        const LightingParameter &p = lightRow(kLightColourKeys[i]);
         const QString symbol = QString::fromLatin1(p.symbol);
         auto *colour = new ColorEdit(symbol, this);
         colour->setToolTip(p.toolTipText().arg(symbol, namesOf(p.semantics)));
         connect(colour, &ColorEdit::colorChanged, this, [this, i](const glm::vec3 &c) {
-            edit([&](Scene &s) { current(s).colors.*kLightColours[i] = c; });
+            edit([&](Scene &s) {
+                std::copy(&c.x, &c.x + 3, lightRow(kLightColourKeys[i]).numbers(current(s)));
+            });
         });
         m_colors[std::size_t(i)] = colour;
         feeds(colour, p.semantics);
@@ -130,8 +132,8 @@ LightPanel::LightPanel(SceneDocument *document, QWidget *parent)
     const char *kNames[3] = {"kc", "kl", "kq"};
     auto *attenuationRow = new WrapRow;
     for (int i = 0; i < 3; ++i) {
-        QDoubleSpinBox *spin =
-            makeSpin(row("attenuation"), row("attenuation").toolTipText().arg(axes[i], kNames[i]));
+        QDoubleSpinBox *spin = makeSpin(
+            lightRow("attenuation"), lightRow("attenuation").toolTipText().arg(axes[i], kNames[i]));
         connect(spin, &QDoubleSpinBox::valueChanged, this, [this, i](double v) {
             edit([&](Scene &s) {
                 glm::vec3 k = current(s).attenuation;
@@ -144,41 +146,41 @@ LightPanel::LightPanel(SceneDocument *document, QWidget *parent)
             refreshNow(); // a refused edit changes nothing: show the value that holds
         });
         m_attenuation[std::size_t(i)] = spin;
-        feeds(spin, row("attenuation").semantics);
+        feeds(spin, lightRow("attenuation").semantics);
         attenuationRow->addWidget(spin);
     }
     form->addRow(tr("Atten. kc kl kq"), attenuationRow);
 
     auto *axisRow = new WrapRow;
     for (int i = 0; i < 3; ++i) {
-        QDoubleSpinBox *spin =
-            makeSpin(row("spot.direction"), row("spot.direction").toolTipText().arg(axes[i]));
+        QDoubleSpinBox *spin = makeSpin(lightRow("spot.direction"),
+                                        lightRow("spot.direction").toolTipText().arg(axes[i]));
         connect(spin, &QDoubleSpinBox::valueChanged, this, [this, i](double v) {
             edit([&](Scene &s) {
                 glm::vec3 d = current(s).spot.direction;
                 d[i] = float(v);
-                if (row("spot.direction").refusal(&d.x).isEmpty()) // an axis needs a direction
+                if (lightRow("spot.direction").refusal(&d.x).isEmpty()) // an axis needs a direction
                     current(s).spot.direction = d;
             });
             refreshNow();
         });
         m_spotAxis[std::size_t(i)] = spin;
-        feeds(spin, row("spot.direction").semantics);
+        feeds(spin, lightRow("spot.direction").semantics);
         axisRow->addWidget(spin);
     }
     form->addRow(tr("Spot axis"), axisRow);
 
     auto *spotRow = new WrapRow;
-    m_spotCutoff = makeSpin(row("spot.cutoff"), row("spot.cutoff").toolTipText());
+    m_spotCutoff = makeSpin(lightRow("spot.cutoff"), lightRow("spot.cutoff").toolTipText());
     m_spotCutoff->setSuffix(QString::fromUtf8("°"));
     connect(m_spotCutoff, &QDoubleSpinBox::valueChanged, this, [this](double v) {
         edit([&](Scene &s) { current(s).spot.cutoffDegrees = float(v); });
     });
-    feeds(m_spotCutoff, row("spot.cutoff").semantics);
-    m_spotExponent = makeSpin(row("spot.exponent"), row("spot.exponent").toolTipText());
+    feeds(m_spotCutoff, lightRow("spot.cutoff").semantics);
+    m_spotExponent = makeSpin(lightRow("spot.exponent"), lightRow("spot.exponent").toolTipText());
     connect(m_spotExponent, &QDoubleSpinBox::valueChanged, this,
             [this](double v) { edit([&](Scene &s) { current(s).spot.exponent = float(v); }); });
-    feeds(m_spotExponent, row("spot.exponent").semantics);
+    feeds(m_spotExponent, lightRow("spot.exponent").semantics);
     spotRow->addWidget(m_spotCutoff);
     spotRow->addWidget(m_spotExponent);
     //: the spotlight's cutoff angle and exponent
@@ -259,7 +261,8 @@ void LightPanel::refresh(const Scene &scene)
     for (int i = 0; i < 3; ++i) {
         const QSignalBlocker block(m_xyz[std::size_t(i)]);
         m_xyz[std::size_t(i)]->setValue(double(light.position[i]));
-        m_colors[std::size_t(i)]->setColor(light.colors.*kLightColours[i]);
+        m_colors[std::size_t(i)]->setColor(
+            glm::make_vec3(lightRow(kLightColourKeys[i]).numbers(light)));
     }
     for (int i = 0; i < 3; ++i) {
         const QSignalBlocker block(m_attenuation[std::size_t(i)]),

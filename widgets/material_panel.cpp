@@ -8,12 +8,20 @@
 #include <QSignalBlocker>
 #include <QSlider>
 
+#include <glm/gtc/type_ptr.hpp>
+
+#include <algorithm>
 #include <cmath>
 
 namespace lb {
 
 namespace {
-glm::vec3 Material::*const kMaterialColours[3] = {&Material::ka, &Material::kd, &Material::ks};
+// Ka, Kd, Ks: the material's rows of the lighting model's table (lighting_parameters.h).
+const char *const kMaterialColourKeys[3] = {"ka", "kd", "ks"};
+const LightingParameter &materialRow(const char *key)
+{
+    return *lightingParameter(ParameterOwner::Material, key);
+}
 const double kLogRange = std::log(double(limits::kMaxShininess) / limits::kMinShininess);
 } // namespace
 
@@ -33,22 +41,23 @@ MaterialPanel::MaterialPanel(SceneDocument *document, QWidget *parent)
 {
     auto *form = new QFormLayout(this);
     form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
-    // The material's rows of the lighting model's table (lighting_parameters.h).
-    const char *colourKeys[3] = {"ka", "kd", "ks"};
     for (int i = 0; i < 3; ++i) {
-        const LightingParameter &p = *lightingParameter(ParameterOwner::Material, colourKeys[i]);
+        const LightingParameter &p = materialRow(kMaterialColourKeys[i]);
         const QString symbol = QString::fromLatin1(p.symbol);
         auto *colour = new ColorEdit(symbol, this);
         colour->setToolTip(p.toolTipText().arg(symbol, namesOf(p.semantics)));
         connect(colour, &ColorEdit::colorChanged, this, [this, i](const glm::vec3 &c) {
-            edit([&](Scene &s) { s.selectedObject().material.*kMaterialColours[i] = c; });
+            edit([&](Scene &s) {
+                std::copy(&c.x, &c.x + 3,
+                          materialRow(kMaterialColourKeys[i]).numbers(s.selectedObject().material));
+            });
         });
         m_colors[std::size_t(i)] = colour;
         feeds(colour, p.semantics);
         form->addRow(symbol, colour);
     }
 
-    const LightingParameter &shininess = *lightingParameter(ParameterOwner::Material, "shininess");
+    const LightingParameter &shininess = materialRow("shininess");
     const QString tip = shininess.toolTipText();
     m_slider = new QSlider(Qt::Horizontal, this);
     m_slider->setRange(0, kSliderSteps);
@@ -77,7 +86,8 @@ MaterialPanel::MaterialPanel(SceneDocument *document, QWidget *parent)
 void MaterialPanel::refresh(const Scene &scene)
 {
     for (int i = 0; i < 3; ++i)
-        m_colors[std::size_t(i)]->setColor(scene.selectedObject().material.*kMaterialColours[i]);
+        m_colors[std::size_t(i)]->setColor(glm::make_vec3(
+            materialRow(kMaterialColourKeys[i]).numbers(scene.selectedObject().material)));
     const QSignalBlocker b1(m_slider), b2(m_box);
     m_slider->setValue(sliderPosition(scene.selectedObject().material.shininess));
     m_box->setValue(double(scene.selectedObject().material.shininess));

@@ -13,15 +13,13 @@ constexpr const char *kContext = "lb::ProbeEquation";
 
 QString partForDisplay(const EquationPart &part)
 {
-    if (part.text.isEmpty())
-        return {};
     QString text = part.text;
     if (part.kind == EquationPart::Kind::Phrase)
         text = QCoreApplication::translate(kContext, part.text.toUtf8().constData());
     else if (part.kind == EquationPart::Kind::ShowChoice)
         if (const std::optional<ShowChoice> show = parseShowChoice(part.text))
             text = showLabel(*show);
-    return part.before + text + part.after;
+    return part.beside(text);
 }
 
 } // namespace

@@ -4,6 +4,10 @@
 
 #include <glm/exponential.hpp>
 #include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+#include <algorithm>
+#include <cmath>
 
 namespace lb {
 
@@ -60,6 +64,11 @@ LightingTerms lightingTerms(const glm::vec3 &L, const glm::vec3 &N, const glm::v
     t.diffuse = scale * (diffuseFactor(t.nDotL) * (in.colors.id * m.kd)); // none from behind
     t.specular = scale * (t.specularFactor * (in.colors.is * m.ks));
     return t;
+}
+
+float degreesFromCosine(float cosine)
+{
+    return glm::degrees(std::acos(std::clamp(cosine, -1.0f, 1.0f)));
 }
 
 float attenuationFactor(const glm::vec4 &lightEye, float distance, const glm::vec3 &k)

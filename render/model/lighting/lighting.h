@@ -99,6 +99,8 @@ LightingTerms evaluateLighting(const glm::vec3 &positionEye, const glm::vec3 &no
 // one of the vectors through it (plots.h).
 LightingTerms lightingTerms(const glm::vec3 &L, const glm::vec3 &N, const glm::vec3 &V,
                             float distance, const LightingInputs &in);
+// The angle in degrees whose cosine is `cosine` (clamped to [-1, 1] first): the plots' x.
+float degreesFromCosine(float cosine);
 // The diffuse factor max(N·L, 0): no light from behind. As glm::max(nDotL, 0.0f) is (a NaN
 // passes through), so evaluateLighting gives what it gave before the plots shared it.
 inline float diffuseFactor(float nDotL)

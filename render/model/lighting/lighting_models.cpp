@@ -13,7 +13,7 @@ namespace {
 
 std::optional<float> degreesOf(float c)
 {
-    return glm::degrees(std::acos(std::clamp(c, -1.0f, 1.0f)));
+    return degreesFromCosine(c);
 }
 
 } // namespace
@@ -53,7 +53,7 @@ const std::vector<SpecularModelRow> &specularModels()
          [](float c) -> std::optional<float> {
              if (c < 0.0f) // beyond 180 degrees: the factor is 0 there
                  return std::nullopt;
-             return 2.0f * *degreesOf(c);
+             return 2.0f * degreesFromCosine(c);
          },
          {{"blinn", 1.0f, false}, {"blinn_4n", 4.0f, true}},
          {0.45f, 0.9f, 0.4f}}, // a green beside Phong's magenta

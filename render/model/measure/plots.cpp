@@ -22,11 +22,6 @@ glm::vec3 inPlane(float degrees)
     return {std::sin(a), 0.0f, std::cos(a)};
 }
 
-float degreesBetween(float cosine)
-{
-    return glm::degrees(std::acos(std::clamp(cosine, -1.0f, 1.0f)));
-}
-
 float sampleAt(int i, int samples, float from, float to)
 {
     return from + (to - from) * float(i) / float(samples - 1);
@@ -97,7 +92,6 @@ Plot specularPlot(const Scene &scene, const PlotSubject &s, int samples)
     plot.shininess = in.material.shininess;
     // L = N, so R = N and the angle of V from the mirror direction is its angle from N. Each
     // model's curves, as its row lists them (lighting_models.h).
-    std::vector<SpecularModel> seriesModel; // the model of each series, for the markers
     for (const SpecularModelRow &model : specularModels())
         for (const SpecularPlotCurve &c : model.curves) {
             PlotSeries series{
@@ -112,7 +106,6 @@ Plot specularPlot(const Scene &scene, const PlotSubject &s, int samples)
                 series.points.push_back({angle, t.specularFactor});
             }
             plot.series.push_back(std::move(series));
-            seriesModel.push_back(model.model);
         }
     // Each probed light's own angle, in the model the probe used (side B's in a compare view),
     // on that model's first curve at the in-plane angle that gives its cosine (the row's
@@ -123,10 +116,13 @@ Plot specularPlot(const Scene &scene, const PlotSubject &s, int samples)
             continue;
         const SpecularModelRow &model = specularModel(p->inputs.specular);
         const std::optional<float> angle = model.planeDegrees(p->terms.specularAngle);
-        const auto series = std::find(seriesModel.begin(), seriesModel.end(), model.model);
-        if (!angle || series == seriesModel.end())
+        const auto series =
+            std::find_if(plot.series.begin(), plot.series.end(), [&](const PlotSeries &ps) {
+                return specularModelOfCurve(ps.key) == &model;
+            });
+        if (!angle || series == plot.series.end())
             continue;
-        plot.markers.push_back({int(series - seriesModel.begin()),
+        plot.markers.push_back({int(series - plot.series.begin()),
                                 light,
                                 p->inputs.colors.id,
                                 {*angle, p->terms.specularFactor}});
@@ -152,7 +148,7 @@ Plot diffusePlot(const Scene &scene, const PlotSubject &s, int samples)
                 {0,
                  light,
                  p->inputs.colors.id,
-                 {degreesBetween(p->terms.nDotL), diffuseFactor(p->terms.nDotL)}});
+                 {degreesFromCosine(p->terms.nDotL), diffuseFactor(p->terms.nDotL)}});
     return plot;
 }
 
@@ -208,7 +204,7 @@ Plot spotPlot(const Scene &scene, const PlotSubject &s, int samples)
     // A cone under 80 degrees on 0 to 90, unless a probed point lies further out.
     const auto probedAngle = [&](int light) -> std::optional<float> {
         if (const ProbeLight *p = probedLight(s, light))
-            return degreesBetween(
+            return degreesFromCosine(
                 glm::dot(-p->terms.L, glm::normalize(p->inputs.spotDirectionEye)));
         return std::nullopt;
     };
@@ -308,7 +304,7 @@ Plot lobePlot(const Scene &scene, const PlotSubject &s, int samples)
     for (PlotSeries &t : terms)
         plot.series.push_back(std::move(t));
     // L, its mirror R and V as rays from the point, where they lie in front of the surface.
-    const float lightAngle = degreesBetween(glm::dot(L, N));
+    const float lightAngle = degreesFromCosine(glm::dot(L, N));
     const float viewAngle =
         glm::degrees(std::atan2(glm::dot(V, across), glm::dot(V, N))); // V across the plane
     const std::pair<const char *, float> rays[] = {

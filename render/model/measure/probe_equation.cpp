@@ -57,7 +57,7 @@ QString equationLineText(const EquationLine &line)
 {
     QStringList parts;
     for (const EquationPart &p : line.parts)
-        parts << (p.text.isEmpty() ? QString() : p.before + p.text + p.after);
+        parts << p.beside(p.text);
     return fillPattern(QString::fromUtf8(line.pattern), parts);
 }
 

@@ -20,6 +20,11 @@ struct EquationPart
     Kind kind = Kind::Symbols;
     QString text; // English
     QString before = {}, after = {};
+    // `text` as shown (English or translated) with what stands beside it; none for no text.
+    QString beside(const QString &shown) const
+    {
+        return text.isEmpty() ? QString() : before + shown + after;
+    }
 };
 
 // One line: a pattern whose %1, %2, ... are its parts, in English. `words`: the pattern has
